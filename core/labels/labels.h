@@ -1,0 +1,68 @@
+// labels.json: the affordance points of one object (schema "sagrid.labels/1", DESIGN.md).
+// Reading validates and names the file and field on error; the earlier, simpler form used in
+// shared/data/real-dev (object is a name, no schema) is read too. Writing is atomic and keeps
+// every field this version does not know about.
+#pragma once
+
+#include <array>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+#include <nlohmann/json.hpp>
+
+namespace sagrid {
+
+inline constexpr const char* kLabelsSchema = "sagrid.labels/1";
+
+enum class AffordanceStatus { Predicted, Accepted, Edited, Added };
+enum class ReviewState { Unreviewed, Done, Skipped };
+
+const char* toString(AffordanceStatus status);
+const char* toString(ReviewState state);
+std::optional<AffordanceStatus> parseAffordanceStatus(const std::string& text);
+std::optional<ReviewState> parseReviewState(const std::string& text);
+
+struct AffordancePoint {
+  std::string type;                    // "heatsource", "togglebutton", "fluidsource", ...
+  Eigen::Vector3f position = Eigen::Vector3f::Zero();  // mesh file's own coordinates
+  std::optional<Eigen::Vector3f> normal;
+  AffordanceStatus status = AffordanceStatus::Predicted;
+  std::optional<float> confidence;
+  std::string source;                  // e.g. "stove.heatsource@1a2b3c4d" or "human"
+  nlohmann::json extra = nlohmann::json::object();  // unknown fields, kept on rewrite
+};
+
+struct ObjectInfo {
+  std::string id;
+  std::string mesh;       // mesh file name relative to the labels file
+  std::string sha256;
+  std::string category;   // "stove", "sink", ...
+  std::string up = "z";   // the mesh file's up axis: "y" or "z"
+  nlohmann::json extra = nlohmann::json::object();
+};
+
+struct ObjectLabels {
+  ObjectInfo object;
+  std::vector<AffordancePoint> affordances;
+  ReviewState reviewState = ReviewState::Unreviewed;
+  std::string reviewUpdated;  // ISO 8601 UTC, e.g. "2026-11-21T10:00:00Z"
+  nlohmann::json extra = nlohmann::json::object();        // unknown top-level fields
+  nlohmann::json reviewExtra = nlohmann::json::object();  // unknown fields of "review"
+
+  std::vector<const AffordancePoint*> ofType(const std::string& type) const;
+};
+
+// Throws FileError naming the file and the field for every problem (missing file, invalid
+// UTF-8, not JSON, wrong types, missing fields, unknown schema version).
+ObjectLabels readLabels(const std::filesystem::path& path);
+ObjectLabels parseLabels(const nlohmann::json& json, const std::filesystem::path& pathForErrors);
+
+nlohmann::json toJson(const ObjectLabels& labels);
+void writeLabels(const std::filesystem::path& path, const ObjectLabels& labels);  // atomic
+
+std::string currentUtcTimestamp();
+
+}  // namespace sagrid

@@ -1,0 +1,78 @@
+#include "core/mesh/mesh.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace sagrid {
+
+namespace {
+Eigen::Vector3f texel(const Texture& t, int x, int y) {
+  x = ((x % t.width) + t.width) % t.width;
+  y = ((y % t.height) + t.height) % t.height;
+  const std::uint8_t* p = &t.rgba[(static_cast<std::size_t>(y) * t.width + x) * 4];
+  return Eigen::Vector3f(p[0], p[1], p[2]) / 255.0f;
+}
+}  // namespace
+
+Eigen::Vector3f Texture::sample(const Eigen::Vector2f& uv) const {
+  if (width <= 0 || height <= 0) return Eigen::Vector3f::Ones();
+  const float fx = uv.x() * width - 0.5f;
+  const float fy = (1.0f - uv.y()) * height - 0.5f;
+  const float x0 = std::floor(fx), y0 = std::floor(fy);
+  const float ax = fx - x0, ay = fy - y0;
+  const int ix = static_cast<int>(x0), iy = static_cast<int>(y0);
+  return (1 - ay) * ((1 - ax) * texel(*this, ix, iy) + ax * texel(*this, ix + 1, iy)) +
+         ay * ((1 - ax) * texel(*this, ix, iy + 1) + ax * texel(*this, ix + 1, iy + 1));
+}
+
+Eigen::AlignedBox3f Mesh::bounds() const {
+  Eigen::AlignedBox3f box;
+  for (const auto& t : triangles) {
+    for (int k = 0; k < 3; ++k) box.extend(positions[t[k]]);
+  }
+  return box;
+}
+
+Eigen::Vector3f Mesh::albedo(int tri, float u, float v) const {
+  const Eigen::Vector3i& t = triangles[tri];
+  const float w = 1.0f - u - v;
+  Eigen::Vector3f color = Eigen::Vector3f::Ones();
+  if (!colors.empty()) color = w * colors[t[0]] + u * colors[t[1]] + v * colors[t[2]];
+  if (!triangleMaterials.empty()) {
+    const int m = triangleMaterials[tri];
+    if (m >= 0 && m < static_cast<int>(materials.size())) {
+      const Material& mat = materials[m];
+      color = color.cwiseProduct(mat.baseColor);
+      if (mat.texture >= 0 && mat.texture < static_cast<int>(textures.size()) && !uvs.empty()) {
+        const Eigen::Vector2f uv = w * uvs[t[0]] + u * uvs[t[1]] + v * uvs[t[2]];
+        color = color.cwiseProduct(textures[mat.texture].sample(uv));
+      }
+    }
+  }
+  return color;
+}
+
+void Mesh::computeVertexNormals() {
+  normals.assign(positions.size(), Eigen::Vector3f::Zero());
+  for (const auto& t : triangles) {
+    const Eigen::Vector3f n =
+        (positions[t[1]] - positions[t[0]]).cross(positions[t[2]] - positions[t[0]]);
+    for (int k = 0; k < 3; ++k) normals[t[k]] += n;  // |n| = 2 * area: area weighting
+  }
+  for (auto& n : normals) {
+    const float len = n.norm();
+    n = len > 0 ? Eigen::Vector3f(n / len) : Eigen::Vector3f::UnitZ();
+  }
+}
+
+Eigen::Vector3f fileToZUp(const Eigen::Vector3f& p, UpAxis fileUp) {
+  if (fileUp == UpAxis::Z) return p;
+  return {p.x(), -p.z(), p.y()};
+}
+
+Eigen::Vector3f zUpToFile(const Eigen::Vector3f& p, UpAxis fileUp) {
+  if (fileUp == UpAxis::Z) return p;
+  return {p.x(), p.z(), -p.y()};
+}
+
+}  // namespace sagrid
