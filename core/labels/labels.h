@@ -63,6 +63,10 @@ ObjectLabels parseLabels(const nlohmann::json& json, const std::filesystem::path
 nlohmann::json toJson(const ObjectLabels& labels);
 void writeLabels(const std::filesystem::path& path, const ObjectLabels& labels);  // atomic
 
+// Metres per mesh unit: object.meters_per_unit, else object.units or (earlier form) the top-level
+// "units" ("m", "cm", "mm", "in", "ft"), else 1 (unknown units keep their numbers).
+double metersPerUnit(const ObjectLabels& labels);
+
 std::string currentUtcTimestamp();
 
 }  // namespace sagrid
