@@ -3,6 +3,9 @@
 // and inverse maps are kept so every point shown or written is in the mesh's own frame.
 #pragma once
 
+#include <optional>
+#include <string>
+
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
@@ -14,7 +17,7 @@ struct Normalization {
   Eigen::Vector3f center = Eigen::Vector3f::Zero();  // bounding-box centre, mesh frame
   float scale = 1.0f;                                // 1 / largest extent
 
-  static Normalization fromBounds(const Eigen::AlignedBox3f& box);  // throws on empty/flat box
+  static Normalization fromBounds(const Eigen::AlignedBox3f& box);  // throws Error, see below
   static Normalization fromMesh(const Mesh& mesh);
 
   Eigen::Vector3f toNormalized(const Eigen::Vector3f& meshPoint) const {
@@ -26,6 +29,11 @@ struct Normalization {
   // Distances: normalized length -> mesh-frame length.
   float lengthToMesh(float normalizedLength) const { return normalizedLength / scale; }
 };
+
+// Why a bounding box cannot be normalized meaningfully, or nullopt when it can: empty, not
+// finite, no extent (all vertices coincide), or so small against its distance from the origin
+// that float coordinates cannot resolve a 64^3 grid on it (e.g. a 1 m object at 1e9).
+std::optional<std::string> normalizationProblem(const Eigen::AlignedBox3f& box);
 
 // Returns a copy of `mesh` with positions mapped into the normalized frame.
 Mesh normalizedCopy(const Mesh& mesh, const Normalization& normalization);
