@@ -1,0 +1,22 @@
+// Small meshes with known geometry for tests: UV spheres, axis-aligned boxes and quads, with
+// exact normals and a plain colour.
+#pragma once
+
+#include <Eigen/Core>
+
+#include "core/mesh/mesh.h"
+
+namespace sagrid::test {
+
+// Sphere of `radius` around `centre`, `rings` latitude bands x 2*rings longitude segments.
+Mesh uvSphere(const Eigen::Vector3f& centre, float radius, int rings = 48);
+// Axis-aligned box from lo to hi, 12 outward-facing triangles.
+Mesh box(const Eigen::Vector3f& lo, const Eigen::Vector3f& hi);
+// Axis-aligned quad at height z over [lo, hi] in x and y, facing +z, with UVs over [0,1]^2.
+Mesh quadZ(const Eigen::Vector2f& lo, const Eigen::Vector2f& hi, float z);
+// Appends b to a (indices offset); materials and colours of b are kept when present.
+void append(Mesh& a, const Mesh& b);
+// Gives every vertex the colour `rgb`.
+void paint(Mesh& mesh, const Eigen::Vector3f& rgb);
+
+}  // namespace sagrid::test
