@@ -1,0 +1,149 @@
+#include "core/model/affordance_model.h"
+
+#include <cmath>
+#include <sstream>
+#include <thread>
+
+#include "core/common/atomic_file.h"
+#include "core/common/error.h"
+#include "core/common/sha256.h"
+#include "core/model/affordance_model_impl.h"
+
+namespace sagrid::model {
+namespace fs = std::filesystem;
+
+void configureTorchRuntime() {
+  static const bool configured = [] {
+    const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
+    torch::set_num_threads(static_cast<int>(cores));
+    return true;
+  }();
+  (void)configured;
+}
+
+bool cudaAvailable() { return torch::cuda::is_available(); }
+
+NetworkShape networkShapeOf(const ModelCard& card) {
+  NetworkShape shape;
+  shape.architecture = Architecture::parse(card.architecture);
+  shape.featureChannels = card.featureChannels;
+  shape.descriptorSize = card.descriptorSize;
+  shape.resolution = card.gridResolution;
+  return shape;
+}
+
+NetworkObject networkObjectOf(const FeatureGrid& f) {
+  NetworkObject o;
+  o.voxels = f.voxels;
+  o.features = f.values;
+  o.descriptor = f.descriptor;
+  return o;
+}
+
+std::string serializeWeights(SAGridNet& net) {
+  torch::serialize::OutputArchive archive;
+  for (const auto& p : net->named_parameters()) archive.write(p.key(), p.value().detach().cpu());
+  for (const auto& b : net->named_buffers()) archive.write(b.key(), b.value().cpu(), true);
+  std::ostringstream out;
+  archive.save_to(out);
+  return out.str();
+}
+
+void deserializeWeights(SAGridNet& net, const std::string& bytes, const std::string& name) {
+  torch::serialize::InputArchive archive;
+  try {
+    std::istringstream in(bytes);
+    archive.load_from(in);
+  } catch (const c10::Error& e) {
+    throw FileError(name, "weights file is truncated or not a SAGrid weights archive");
+  }
+  torch::NoGradGuard noGrad;
+  auto restore = [&](const std::string& key, torch::Tensor& target, bool isBuffer) {
+    torch::Tensor value;
+    try {
+      if (!archive.try_read(key, value, isBuffer))
+        throw ModelError(name + ": weights lack \"" + key + "\"; they do not belong to this card");
+    } catch (const c10::Error&) {
+      throw FileError(name, "weights file is corrupt (cannot read \"" + key + "\")");
+    }
+    if (value.sizes() != target.sizes())
+      throw ModelError(name + ": weights \"" + key + "\" have shape " +
+                       c10::str(value.sizes()) + " but the card's architecture needs " +
+                       c10::str(target.sizes()));
+    target.copy_(value);
+  };
+  for (auto& p : net->named_parameters()) restore(p.key(), p.value(), false);
+  for (auto& b : net->named_buffers()) restore(b.key(), b.value(), true);
+}
+
+AffordanceModel::AffordanceModel(std::unique_ptr<AffordanceModelImpl> impl)
+    : m_impl(std::move(impl)) {}
+
+AffordanceModel::AffordanceModel(ModelCard card, unsigned seed)
+    : m_impl(std::make_unique<AffordanceModelImpl>()) {
+  configureTorchRuntime();
+  m_impl->shape = networkShapeOf(card);
+  m_impl->mode = parseExecutionMode(card.mode);
+  card.architecture = m_impl->shape.architecture.toString();
+  m_impl->card = std::move(card);
+  torch::manual_seed(seed);
+  m_impl->net = SAGridNet(m_impl->shape);
+  if (torch::cuda::is_available()) m_impl->device = torch::Device(torch::kCUDA);
+  m_impl->net->to(m_impl->device);
+  m_impl->net->eval();
+}
+
+AffordanceModel::~AffordanceModel() = default;
+AffordanceModel::AffordanceModel(AffordanceModel&&) noexcept = default;
+AffordanceModel& AffordanceModel::operator=(AffordanceModel&&) noexcept = default;
+
+AffordanceModel AffordanceModel::load(const fs::path& cardFile) {
+  ModelCard card = readModelCard(cardFile);
+  const fs::path weightsPath = cardFile.parent_path() / card.weightsFile;
+  const std::string bytes = readFileBytes(weightsPath);
+  if (!card.weightsSha256.empty() && sha256Hex(bytes) != card.weightsSha256)
+    throw FileError(weightsPath, "weights sha256 differs from the model card " +
+                                     cardFile.filename().string() +
+                                     " (truncated, corrupt or replaced file)");
+  AffordanceModel model(card, 0);
+  auto net = model.m_impl->net;
+  net->to(torch::kCPU);
+  deserializeWeights(net, bytes, weightsPath.string());
+  net->to(model.m_impl->device);
+  net->eval();
+  return model;
+}
+
+void AffordanceModel::save(const fs::path& cardFile) {
+  const std::string name = cardFile.stem().string();
+  m_impl->card.weightsFile = name + ".pt";
+  const std::string bytes = serializeWeights(m_impl->net);
+  m_impl->card.weightsSha256 = sha256Hex(bytes);
+  if (!cardFile.parent_path().empty()) fs::create_directories(cardFile.parent_path());
+  writeFileAtomic(cardFile.parent_path() / m_impl->card.weightsFile, bytes);
+  writeModelCard(cardFile, m_impl->card);
+}
+
+const ModelCard& AffordanceModel::card() const { return m_impl->card; }
+ModelCard& AffordanceModel::card() { return m_impl->card; }
+
+std::vector<float> AffordanceModel::predictDistances(const FeatureGrid& features) const {
+  m_impl->card.checkFeatures(features);
+  if (features.voxels.empty()) return {};
+  torch::NoGradGuard noGrad;
+  m_impl->net->eval();
+  const NetworkObject object = networkObjectOf(features);
+  const NetworkBatch batch =
+      makeNetworkBatch({&object}, m_impl->shape, m_impl->mode, m_impl->device);
+  // The network regresses D = log(1 + distance); report distances.
+  const torch::Tensor d = torch::expm1(m_impl->net->forward(batch, m_impl->mode)).cpu().contiguous();
+  return std::vector<float>(d.data_ptr<float>(), d.data_ptr<float>() + d.numel());
+}
+
+std::int64_t AffordanceModel::parameterCount() const {
+  std::int64_t n = 0;
+  for (const auto& p : m_impl->net->parameters()) n += p.numel();
+  return n;
+}
+
+}  // namespace sagrid::model

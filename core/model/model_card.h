@@ -1,0 +1,69 @@
+// The model card: everything needed to use, check and reproduce one SAGrid model
+// (DESIGN.md "Model"): architecture and execution mode, the feature backend it was trained on
+// (name, config hash, channel counts), grid size, training data and command, metrics, the sha256
+// of its weights, the descriptor mean of its category (for retrieval) and the calibrated
+// point-extraction settings. Stored as <category>.<type>.json beside <category>.<type>.pt.
+// Plain C++ (no torch): annotate, filter and eval read cards without touching the network.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+namespace sagrid {
+struct FeatureGrid;
+}
+
+namespace sagrid::model {
+
+inline constexpr const char* kModelCardSchema = "sagrid.model/1";
+
+// Settings of the automatic instance count (local minima + non-maximum suppression), calibrated
+// on training objects after training (see point_extraction.h).
+struct ExtractionSettings {
+  float maxDistance = 0.04f;  // keep minima predicted closer than this (normalized units)
+  float nmsRadius = 0.08f;    // suppress minima within this distance of a better one
+  float confidenceScale = 0.02f;  // confidence = exp(-predicted distance / scale)
+};
+
+struct ModelCard {
+  std::string name;      // "<category>.<type>", e.g. "stove.heatsource"
+  std::string category;  // "stove"
+  std::string type;      // "heatsource"
+  std::string architecture;
+  std::string mode = "sparse";
+  std::string featureBackend;
+  std::string featureConfigHash;
+  int featureChannels = 0;
+  int descriptorSize = 0;
+  int gridResolution = 64;
+  std::string weightsFile;    // relative to the card
+  std::string weightsSha256;
+  std::vector<float> descriptorMean;  // mean descriptor of the category's training objects
+  std::vector<float> affordanceFeatureMean;  // mean voxel feature at training affordances
+  ExtractionSettings extraction;
+  nlohmann::json training = nlohmann::json::object();  // data, command, objects, epochs, time...
+  nlohmann::json metrics = nlohmann::json::object();
+  nlohmann::json extra = nlohmann::json::object();     // unknown fields, kept on rewrite
+
+  // Throws ModelError naming what differs when the features were not made the way the model
+  // was trained (backend, config hash, channel count, descriptor size, grid size).
+  void checkFeatures(const FeatureGrid& features) const;
+  std::string sourceTag() const;  // "stove.heatsource@<first 8 hex of weights sha256>"
+};
+
+// "stove.heatsource" -> {"stove", "heatsource"}; throws InvalidArgument otherwise.
+std::pair<std::string, std::string> splitModelName(const std::string& name);
+
+nlohmann::json toJson(const ModelCard& card);
+ModelCard modelCardFromJson(const nlohmann::json& json, const std::filesystem::path& pathForErrors);
+ModelCard readModelCard(const std::filesystem::path& cardFile);  // throws FileError
+void writeModelCard(const std::filesystem::path& cardFile, const ModelCard& card);  // atomic
+
+// Every *.json model card in a directory, sorted by name; throws FileError when the directory
+// is missing, ModelError when it holds no cards.
+std::vector<std::filesystem::path> listModelCards(const std::filesystem::path& directory);
+
+}  // namespace sagrid::model
