@@ -1,0 +1,32 @@
+// A minimal fork-join loop over [0, count) in contiguous chunks, one per hardware thread, for
+// batches of independent queries (ray casts, closest points). Small counts run inline.
+#pragma once
+
+#include <algorithm>
+#include <cstddef>
+#include <functional>
+#include <thread>
+#include <vector>
+
+namespace sagrid {
+
+inline void parallelFor(std::size_t count, std::size_t minParallelCount,
+                        const std::function<void(std::size_t begin, std::size_t end)>& body) {
+  const std::size_t threads =
+      std::min<std::size_t>(std::max(1u, std::thread::hardware_concurrency()),
+                            count / std::max<std::size_t>(1, minParallelCount / 2));
+  if (count < minParallelCount || threads <= 1) {
+    if (count > 0) body(0, count);
+    return;
+  }
+  std::vector<std::thread> workers;
+  const std::size_t chunk = (count + threads - 1) / threads;
+  for (std::size_t t = 1; t < threads; ++t) {
+    const std::size_t begin = t * chunk, end = std::min(count, begin + chunk);
+    if (begin < end) workers.emplace_back(body, begin, end);
+  }
+  body(0, std::min(count, chunk));
+  for (auto& w : workers) w.join();
+}
+
+}  // namespace sagrid
