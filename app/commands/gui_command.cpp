@@ -1,0 +1,80 @@
+// `sagrid gui [PATHS...]` (the annotation GUI) and `sagrid render MESH --screenshot out.png`
+// (the same frame, headless). Parsing only; the work is in ui/app.
+#include <CLI/CLI.hpp>
+
+#include "app/command_registry.h"
+#include "ui/app/app.h"
+#include "ui/app/headless_render.h"
+
+namespace {
+
+void setupGui(CLI::App& root) {
+  auto* cmd = root.add_subcommand("gui", "Open the annotation GUI: review, fix and export affordance points");
+  struct Options {
+    std::vector<std::string> paths;
+    std::string trainingSet = "training-set";
+    bool noPredict = false;
+    std::string size = "1440x900";
+  };
+  auto options = std::make_shared<Options>();
+  cmd->add_option("paths", options->paths, "Mesh files and/or folders (a folder becomes the review queue)");
+  cmd->add_option("--training-set", options->trainingSet, "Dataset folder for 'Add to training set'")
+      ->capture_default_str();
+  cmd->add_flag("--no-predict", options->noPredict, "Do not run SAGrid automatically when an object opens");
+  cmd->add_option("--size", options->size, "Window size WIDTHxHEIGHT")->capture_default_str();
+  cmd->callback([options] {
+    sagrid::ui::ContextOptions contextOptions;
+    sagrid::ui::parseSize(options->size, contextOptions.width, contextOptions.height);
+    contextOptions.title = "SAGrid";
+    auto context = sagrid::ui::createGlContext(sagrid::ui::GlBackend::Window, contextOptions);
+    sagrid::ui::AppOptions appOptions;
+    appOptions.recentFiles = sagrid::ui::RecentFiles::defaultStorage();
+    appOptions.trainingSet = options->trainingSet;
+    appOptions.autoPredict = !options->noPredict;
+    sagrid::ui::App app(*context, appOptions);
+    if (!options->paths.empty()) {
+      app.session().openPaths(std::vector<std::filesystem::path>(options->paths.begin(), options->paths.end()));
+    }
+    app.run();
+  });
+}
+
+void setupRender(CLI::App& root) {
+  auto* cmd = root.add_subcommand("render", "Render a mesh with its points (and distance field) to a PNG, "
+                                            "exactly as the GUI window draws it; headless with --backend egl");
+  struct Options {
+    sagrid::ui::RenderOptions render;
+    std::string mesh, labels, screenshot, backend = "egl", size = "1280x800", fieldType;
+    float yaw = 0, pitch = 0;
+  };
+  auto o = std::make_shared<Options>();
+  cmd->add_option("mesh", o->mesh, "Mesh file")->required();
+  cmd->add_option("--labels", o->labels, "labels.json (default: the one beside the mesh)");
+  cmd->add_flag("--field", o->render.showField, "Show the distance field (predicted, else of the labelled points)");
+  cmd->add_option("--field-type", o->fieldType, "Show only this affordance type's field");
+  cmd->add_option("--screenshot", o->screenshot, "PNG file to write")->required();
+  cmd->add_option("--backend", o->backend, "egl (headless) or window")->capture_default_str();
+  cmd->add_option("--size", o->size, "Image size WIDTHxHEIGHT")->capture_default_str();
+  cmd->add_flag("--no-panels", [o](std::int64_t) { o->render.showPanels = false; }, "Draw only the 3D view");
+  cmd->add_flag("--wireframe", o->render.wireframe, "Wireframe overlay");
+  auto* yaw = cmd->add_option("--yaw", o->yaw, "Camera azimuth in degrees about +z");
+  auto* pitch = cmd->add_option("--pitch", o->pitch, "Camera elevation in degrees");
+  cmd->callback([o, yaw, pitch] {
+    sagrid::ui::RenderOptions& r = o->render;
+    r.mesh = o->mesh;
+    r.labels = o->labels;
+    r.screenshot = o->screenshot;
+    r.backend = sagrid::ui::parseGlBackend(o->backend);
+    r.fieldType = o->fieldType;
+    if (!o->fieldType.empty()) r.showField = true;
+    sagrid::ui::parseSize(o->size, r.width, r.height);
+    if (yaw->count()) r.yawDegrees = o->yaw;
+    if (pitch->count()) r.pitchDegrees = o->pitch;
+    sagrid::ui::renderScreenshot(r);
+  });
+}
+
+}  // namespace
+
+SAGRID_REGISTER_COMMAND("gui", setupGui);
+SAGRID_REGISTER_COMMAND("render", setupRender);

@@ -1,0 +1,26 @@
+// Shared by the simulator exporters: the object's id, label positions in the simulator frame
+// (z up, metres), and copying the mesh with the files it references (OBJ materials, textures).
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "core/labels/labels.h"
+
+namespace sagrid::exportdetail {
+
+std::string objectId(const ObjectLabels& labels, const std::filesystem::path& meshPath);
+bool fileIsYUp(const ObjectLabels& labels);
+// Label position (mesh file frame) -> z-up metres.
+Eigen::Vector3f toSimulatorFrame(const ObjectLabels& labels, const Eigen::Vector3f& filePosition);
+// Copies `mesh` to dir/<newName or its own name> plus the .mtl files and textures an OBJ names
+// (kept at their relative paths). Returns the copied mesh's path.
+std::filesystem::path copyMeshWithDependencies(const std::filesystem::path& mesh,
+                                               const std::filesystem::path& dir,
+                                               const std::string& newName = "");
+std::string formatNumber(double value);
+
+}  // namespace sagrid::exportdetail

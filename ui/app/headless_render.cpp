@@ -1,0 +1,63 @@
+#include "ui/app/headless_render.h"
+
+#include <cmath>
+
+#include "core/common/error.h"
+#include "ui/app/app.h"
+#include "ui/document/review_queue.h"
+
+namespace sagrid::ui {
+
+void parseSize(const std::string& text, int& width, int& height) {
+  const auto x = text.find('x');
+  try {
+    if (x == std::string::npos) throw std::invalid_argument(text);
+    width = std::stoi(text.substr(0, x));
+    height = std::stoi(text.substr(x + 1));
+  } catch (const std::exception&) {
+    throw InvalidArgument("--size '" + text + "' is not WIDTHxHEIGHT, e.g. 640x480");
+  }
+  if (width < 16 || height < 16 || width > 8192 || height > 8192) {
+    throw InvalidArgument("--size '" + text + "' is out of range (16..8192 per side)");
+  }
+}
+
+void renderScreenshot(const RenderOptions& options) {
+  ContextOptions contextOptions;
+  contextOptions.width = options.width;
+  contextOptions.height = options.height;
+  contextOptions.visible = false;
+  auto context = createGlContext(options.backend, contextOptions);
+  AppOptions appOptions;
+  appOptions.autoPredict = false;
+  App app(*context, appOptions);
+  Session& session = app.session();
+  session.openObject(options.mesh, options.labels.empty() ? labelsPathFor(options.mesh) : options.labels);
+  if (!session.pendingErrors().empty()) throw Error(session.pendingErrors().front());
+  ViewSettings& view = session.view();
+  view.field.visible = options.showField;
+  view.showPanels = options.showPanels;
+  view.wireframe = options.wireframe;
+  // Two frames let ImGui settle its window sizes (auto-fit happens on the second frame).
+  app.frame({});
+  app.frame({});
+  if (!options.fieldType.empty()) {
+    const auto& types = app.scene().field().types();
+    std::uint32_t mask = 0;
+    for (std::size_t i = 0; i < types.size(); ++i) {
+      if (types[i] == options.fieldType) mask |= 1u << i;
+    }
+    if (!mask) throw InvalidArgument("--field-type " + options.fieldType + ": the object has no field of that type");
+    view.field.typeMask = mask;
+  }
+  if (options.yawDegrees || options.pitchDegrees) {
+    Camera& camera = session.camera();
+    const float yaw = options.yawDegrees ? *options.yawDegrees * float(M_PI) / 180.0f : camera.yaw();
+    const float pitch = options.pitchDegrees ? *options.pitchDegrees * float(M_PI) / 180.0f : camera.pitch();
+    camera.set(camera.target(), camera.distance(), yaw, pitch);
+  }
+  app.frame({});
+  writePng(options.screenshot, app.capture());
+}
+
+}  // namespace sagrid::ui

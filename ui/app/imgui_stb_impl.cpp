@@ -1,0 +1,18 @@
+// Debian's libimgui.a is built against the system stb instead of its bundled copies and leaves
+// stb_truetype / stb_rect_pack undefined; their implementations are compiled here, once, for the
+// UI only (core compiles stb_image/stb_image_write in core/common/stb_impl.cpp).
+#define STB_RECT_PACK_IMPLEMENTATION
+#define STB_TRUETYPE_IMPLEMENTATION
+
+#if defined(__GNUC__)
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wmissing-field-initializers"
+#pragma GCC diagnostic ignored "-Wsign-compare"
+#pragma GCC diagnostic ignored "-Wunused-function"
+#pragma GCC diagnostic ignored "-Wimplicit-fallthrough"
+#endif
+#include <stb_rect_pack.h>
+#include <stb_truetype.h>
+#if defined(__GNUC__)
+#pragma GCC diagnostic pop
+#endif

@@ -1,0 +1,278 @@
+#include "ui/app/session.h"
+
+#include <algorithm>
+
+#include "core/common/error.h"
+#include "core/common/log.h"
+#include "core/export/mjcf_export.h"
+#include "core/export/omnigibson_export.h"
+#include "core/export/training_set.h"
+#include "ui/document/object_loader.h"
+#include "ui/document/point_commands.h"
+
+namespace sagrid::ui {
+
+namespace fs = std::filesystem;
+
+Session::Session(fs::path recentFilesPath) : m_recent(std::move(recentFilesPath)) {}
+
+void Session::reportError(const std::string& message) {
+  logger()->error("{}", message);
+  m_errors.push_back(message);
+}
+
+void Session::dismissError() {
+  if (!m_errors.empty()) m_errors.erase(m_errors.begin());
+}
+
+void Session::openPaths(const std::vector<fs::path>& paths) {
+  try {
+    m_queue = ReviewQueue::open(paths);
+  } catch (const Error& e) {
+    reportError(e.what());
+    return;
+  }
+  for (const auto& p : paths) m_recent.add(p);
+  if (m_queue.empty()) {
+    reportError("no meshes found in the given paths (supported: glb, gltf, obj, fbx, ply, stl, off, dae, 3ds)");
+    m_document.reset();
+    return;
+  }
+  openEntry(m_queue.current());
+}
+
+void Session::addPaths(const std::vector<fs::path>& paths) {
+  int first = -1;
+  try {
+    first = m_queue.add(paths);
+  } catch (const Error& e) {
+    reportError(e.what());
+    return;
+  }
+  for (const auto& p : paths) m_recent.add(p);
+  if (first >= 0) openEntry(first);
+}
+
+void Session::openObject(const fs::path& mesh, const fs::path& labels) {
+  m_queue = ReviewQueue();
+  QueueEntry entry;
+  entry.mesh = mesh;
+  entry.labels = labels;
+  m_queue.addEntry(std::move(entry));
+  openEntry(0);
+}
+
+void Session::openEntry(int index) {
+  if (m_queue.empty()) return;
+  m_worker.cancel();
+  m_queue.setCurrent(index);
+  const std::size_t i = static_cast<std::size_t>(m_queue.current());
+  const QueueEntry& entry = m_queue.entry(i);
+  m_document.reset();
+  try {
+    m_document = openDocument(entry.mesh, entry.labels);
+    m_queue.setError(i, "");
+  } catch (const Error& e) {
+    // The queue goes on: the entry shows its error, the curator moves to the next one.
+    m_queue.setError(i, e.what());
+    reportError(e.what());
+    return;
+  }
+  logger()->info("opened {} ({} of {})", m_document->displayName(), i + 1, m_queue.size());
+  applyDefaultFieldSettings();
+  frameObject();
+  addModeArmed = false;
+  if (autoPredict) runPrediction();
+}
+
+bool Session::next() {
+  if (m_queue.current() + 1 >= static_cast<int>(m_queue.size())) return false;
+  openEntry(m_queue.current() + 1);
+  return true;
+}
+
+bool Session::previous() {
+  if (m_queue.current() <= 0) return false;
+  openEntry(m_queue.current() - 1);
+  return true;
+}
+
+void Session::execute(std::unique_ptr<Command> command) {
+  if (!m_document) return;
+  try {
+    m_document->execute(std::move(command));
+  } catch (const Error& e) {
+    reportError(e.what());
+  }
+  updateQueueState();
+}
+
+void Session::undo() {
+  if (!m_document) return;
+  try {
+    m_document->undo();
+  } catch (const Error& e) {
+    reportError(e.what());
+  }
+  updateQueueState();
+}
+
+void Session::redo() {
+  if (!m_document) return;
+  try {
+    m_document->redo();
+  } catch (const Error& e) {
+    reportError(e.what());
+  }
+  updateQueueState();
+}
+
+void Session::accept() {
+  if (!m_document) return;
+  if (m_document->selected() >= 0) {
+    execute(std::make_unique<AcceptPointCommand>(m_document->selected()));
+    return;
+  }
+  auto all = makeAcceptAllCommand(m_document->labels());
+  if (!all->empty()) execute(std::move(all));
+  try {
+    m_document->setReviewState(ReviewState::Done);
+  } catch (const Error& e) {
+    reportError(e.what());
+  }
+  if (!m_queue.empty()) {
+    const auto state = m_document->editedByHand() ? QueueState::Edited : QueueState::Accepted;
+    m_queue.setState(std::size_t(m_queue.current()), state);
+  }
+  next();
+}
+
+void Session::skip() {
+  if (!m_document) return;
+  try {
+    m_document->setReviewState(ReviewState::Skipped);
+  } catch (const Error& e) {
+    reportError(e.what());
+  }
+  if (!m_queue.empty()) m_queue.setState(std::size_t(m_queue.current()), QueueState::Skipped);
+  next();
+}
+
+void Session::deleteSelected() {
+  if (m_document && m_document->selected() >= 0) execute(std::make_unique<DeletePointCommand>(m_document->selected()));
+}
+
+void Session::changeSelectedType(const std::string& type) {
+  m_currentType = type;
+  if (m_document && m_document->selected() >= 0 &&
+      m_document->points()[std::size_t(m_document->selected())].type != type) {
+    execute(std::make_unique<ChangeTypeCommand>(m_document->selected(), type));
+  }
+}
+
+void Session::saveNow() {
+  if (!m_document) return;
+  try {
+    m_document->save();
+    logger()->info("saved {}", m_document->labelsPath().string());
+  } catch (const Error& e) {
+    reportError(e.what());
+  }
+}
+
+void Session::updateQueueState() {
+  if (!m_document || m_queue.empty()) return;
+  const std::size_t i = std::size_t(m_queue.current());
+  if (m_document->editedByHand()) {
+    if (m_queue.entry(i).state != QueueState::Edited) m_queue.setState(i, QueueState::Edited);
+  } else if (!m_document->points().empty() && m_document->allAccepted()) {
+    if (m_queue.entry(i).state != QueueState::Accepted) m_queue.setState(i, QueueState::Accepted);
+  }
+}
+
+void Session::frameObject() {
+  if (m_document) m_camera.frame(m_document->mesh().bounds());
+}
+
+void Session::setViewport(const ViewportRect& rect) {
+  m_viewport = rect;
+  m_camera.setViewport(std::max(1, int(rect.width)), std::max(1, int(rect.height)));
+}
+
+void Session::applyDefaultFieldSettings() {
+  // Show the voxels within a third of the object's size: enough to see where the field points.
+  const auto size = m_document->mesh().bounds().sizes();
+  const float extent = std::max({size.x(), size.y(), size.z()});
+  m_view.field.threshold = 0.0f;
+  m_view.field.colorMax = 0.5f * extent;
+}
+
+void Session::runPrediction() {
+  if (!m_document) return;
+  std::optional<PredictionJob> job;
+  if (m_predictorLookup) {
+    try {
+      job = m_predictorLookup(*m_document);
+    } catch (const Error& e) {
+      reportError(e.what());
+      return;
+    }
+  }
+  if (!job) {
+    logger()->info("{}: no model for category '{}': place the points by hand", m_document->displayName(),
+                   m_document->labels().object.category.empty() ? "unknown" : m_document->labels().object.category);
+    return;
+  }
+  m_worker.start(m_document->labelsPath().string(), std::move(*job));
+}
+
+void Session::pollPrediction() {
+  auto outcome = m_worker.poll();
+  if (!outcome) return;
+  if (outcome->cancelled) {
+    logger()->info("prediction cancelled");
+    return;
+  }
+  if (!outcome->error.empty()) {
+    reportError("prediction failed: " + outcome->error);
+    return;
+  }
+  if (!m_document || outcome->objectKey != m_document->labelsPath().string()) return;  // moved on
+  PredictionResult& result = *outcome->result;
+  if (m_document->labels().object.category.empty() && !result.category.empty()) m_document->setCategory(result.category);
+  // Predictions fill an object with no points yet; existing (reviewed) points are never replaced.
+  if (m_document->points().empty() && !result.points.empty()) {
+    try {
+      m_document->adoptPredictedPoints(std::move(result.points));
+    } catch (const Error& e) {
+      reportError(e.what());
+    }
+  }
+  m_document->setPredictedFields(std::move(result.fields));
+  logger()->info("prediction done: {} points", m_document->points().size());
+}
+
+void Session::exportCurrent(const std::string& format, const fs::path& outDir) {
+  if (!m_document) return;
+  try {
+    const SimulatorExport result = format == "mjcf"
+                                       ? exportMjcf(m_document->labels(), m_document->meshPath(), outDir)
+                                       : exportOmniGibson(m_document->labels(), m_document->meshPath(), outDir);
+    for (const auto& w : result.warnings) logger()->warn("{}", w);
+    logger()->info("exported {}", result.mainFile.string());
+  } catch (const Error& e) {
+    reportError(e.what());
+  }
+}
+
+void Session::addCurrentToTrainingSet(const fs::path& datasetDir) {
+  if (!m_document) return;
+  try {
+    const auto entry = addToTrainingSet(m_document->labels(), m_document->meshPath(), m_document->labelsPath(), datasetDir);
+    logger()->info("added {} to training set {}", entry.id, datasetDir.string());
+  } catch (const Error& e) {
+    reportError(e.what());
+  }
+}
+
+}  // namespace sagrid::ui

@@ -1,0 +1,110 @@
+// The curator's session: the review queue, the open document, the camera and view settings, the
+// type new points get, pending error messages, and the prediction worker. Panels and input
+// handlers read it and call its actions; every point edit still goes through the document's
+// commands (execute/undo/redo). Errors from core are caught here and queued for the modal.
+#pragma once
+
+#include <filesystem>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "ui/app/prediction_worker.h"
+#include "ui/app/recent_files.h"
+#include "ui/document/annotation_document.h"
+#include "ui/document/review_queue.h"
+#include "ui/render/camera.h"
+#include "ui/render/view_settings.h"
+
+namespace sagrid::ui {
+
+// Finds a prediction job for a document, or returns nothing when no model covers its category
+// (the object then opens normally and points are placed by hand).
+using PredictorLookup = std::function<std::optional<PredictionJob>(const AnnotationDocument&)>;
+
+struct ViewportRect {
+  float x = 0, y = 0, width = 1, height = 1;  // window coordinates
+  bool contains(float px, float py) const { return px >= x && py >= y && px < x + width && py < y + height; }
+};
+
+class Session {
+ public:
+  explicit Session(std::filesystem::path recentFilesPath = {});
+
+  // Opening ------------------------------------------------------------------------------------
+  void openPaths(const std::vector<std::filesystem::path>& paths);  // replaces the queue
+  void addPaths(const std::vector<std::filesystem::path>& paths);   // drag-and-drop: adds, opens first
+  void openEntry(int index);
+  // One object with an explicit labels file (sagrid render --labels, tests).
+  void openObject(const std::filesystem::path& mesh, const std::filesystem::path& labels);
+  bool next();
+  bool previous();
+
+  // Review ---------------------------------------------------------------------------------------
+  // A: accepts the selected point; with none selected accepts every point, marks the object
+  // accepted and moves on — one keypress for an object whose predictions are right.
+  void accept();
+  void skip();
+  void execute(std::unique_ptr<Command> command);  // on the open document, with error handling
+  void undo();
+  void redo();
+  void deleteSelected();
+  void changeSelectedType(const std::string& type);
+  void saveNow();
+
+  // View -----------------------------------------------------------------------------------------
+  void frameObject();
+  Camera& camera() { return m_camera; }
+  const Camera& camera() const { return m_camera; }
+  ViewSettings& view() { return m_view; }
+  const ViewSettings& view() const { return m_view; }
+  void setViewport(const ViewportRect& rect);
+  const ViewportRect& viewport() const { return m_viewport; }
+
+  // Prediction -------------------------------------------------------------------------------------
+  void setPredictorLookup(PredictorLookup lookup) { m_predictorLookup = std::move(lookup); }
+  void runPrediction();  // no-op with a message when no model covers the category
+  void cancelPrediction() { m_worker.cancel(); }
+  const PredictionWorker& worker() const { return m_worker; }
+  bool autoPredict = true;
+  void pollPrediction();  // applies a finished prediction (UI thread, once per frame)
+
+  // Export ---------------------------------------------------------------------------------------
+  void exportCurrent(const std::string& format, const std::filesystem::path& outDir);
+  void addCurrentToTrainingSet(const std::filesystem::path& datasetDir);
+
+  // State ------------------------------------------------------------------------------------------
+  AnnotationDocument* document() { return m_document.get(); }
+  const AnnotationDocument* document() const { return m_document.get(); }
+  const ReviewQueue& queue() const { return m_queue; }
+  const std::string& currentType() const { return m_currentType; }
+  void setCurrentType(const std::string& type) { m_currentType = type; }
+  const RecentFiles& recent() const { return m_recent; }
+  bool addModeArmed = false;   // next click on the surface adds a point
+  bool showHelp = false;
+  bool showFileBrowser = false;
+  bool screenshotRequested = false;  // F12: the app saves the next frame to a PNG
+  std::filesystem::path trainingSetDir;
+
+  void reportError(const std::string& message);
+  const std::vector<std::string>& pendingErrors() const { return m_errors; }
+  void dismissError();
+
+ private:
+  void updateQueueState();
+  void applyDefaultFieldSettings();
+
+  ReviewQueue m_queue;
+  std::unique_ptr<AnnotationDocument> m_document;
+  Camera m_camera;
+  ViewSettings m_view;
+  ViewportRect m_viewport;
+  std::string m_currentType = "heatsource";
+  RecentFiles m_recent;
+  std::vector<std::string> m_errors;
+  PredictionWorker m_worker;
+  PredictorLookup m_predictorLookup;
+};
+
+}  // namespace sagrid::ui

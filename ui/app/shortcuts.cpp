@@ -1,0 +1,93 @@
+#include "ui/app/shortcuts.h"
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+
+#include "ui/app/session.h"
+#include "ui/render/type_colors.h"
+
+namespace sagrid::ui {
+
+const std::vector<ShortcutHelp>& shortcutHelp() {
+  static const std::vector<ShortcutHelp> kHelp = {
+      {"Left drag", "orbit (on a point: drag it along the surface)"},
+      {"Right / middle drag", "pan"},
+      {"Wheel, + / -", "zoom"},
+      {"Arrows (Shift: pan)", "orbit"},
+      {"Click", "select a point (empty space: deselect)"},
+      {"Shift+click, Insert then click", "add a point of the current type"},
+      {"A", "accept the selected point; none selected: accept all and go to the next object"},
+      {"Del / Backspace", "delete the selected point"},
+      {"1-9", "current type (and the selected point's type)"},
+      {"N / P", "next / previous object"},
+      {"S", "skip object"},
+      {"F", "frame the object"},
+      {"W", "wireframe"},
+      {"V", "distance field on/off"},
+      {"Ctrl+Z", "undo"},
+      {"Ctrl+Shift+Z, Ctrl+Y", "redo"},
+      {"Ctrl+S", "save now (every change is saved anyway)"},
+      {"Ctrl+O", "open files or a folder"},
+      {"F12", "screenshot to the current folder"},
+      {"Esc", "deselect, cancel add"},
+      {"H, F1", "this help"},
+      {"Ctrl+Q", "quit"},
+  };
+  return kHelp;
+}
+
+bool handleShortcuts(const std::vector<InputEvent>& events, Session& session, bool textInputActive) {
+  for (const InputEvent& e : events) {
+    if (e.kind != InputEvent::Kind::Key || !e.pressed || textInputActive) continue;
+    const bool ctrl = (e.mods & GLFW_MOD_CONTROL) != 0;
+    const bool shift = (e.mods & GLFW_MOD_SHIFT) != 0;
+    if (ctrl) {
+      switch (e.key) {
+        case GLFW_KEY_Z: shift ? session.redo() : session.undo(); break;
+        case GLFW_KEY_Y: session.redo(); break;
+        case GLFW_KEY_S: session.saveNow(); break;
+        case GLFW_KEY_O: session.showFileBrowser = true; break;
+        case GLFW_KEY_Q: return true;
+        default: break;
+      }
+      continue;
+    }
+    if (e.key >= GLFW_KEY_1 && e.key <= GLFW_KEY_9) {
+      const std::size_t index = std::size_t(e.key - GLFW_KEY_1);
+      if (index < knownTypes().size()) session.changeSelectedType(knownTypes()[index]);
+      continue;
+    }
+    switch (e.key) {
+      case GLFW_KEY_A: session.accept(); break;
+      case GLFW_KEY_DELETE:
+      case GLFW_KEY_BACKSPACE: session.deleteSelected(); break;
+      case GLFW_KEY_N: session.next(); break;
+      case GLFW_KEY_P: session.previous(); break;
+      case GLFW_KEY_S: session.skip(); break;
+      case GLFW_KEY_F: session.frameObject(); break;
+      case GLFW_KEY_W: session.view().wireframe = !session.view().wireframe; break;
+      case GLFW_KEY_V: session.view().field.visible = !session.view().field.visible; break;
+      case GLFW_KEY_H:
+      case GLFW_KEY_F1: session.showHelp = !session.showHelp; break;
+      case GLFW_KEY_INSERT: session.addModeArmed = true; break;
+      case GLFW_KEY_F12: session.screenshotRequested = true; break;
+      case GLFW_KEY_ESCAPE:
+        session.addModeArmed = false;
+        session.showHelp = false;
+        if (session.document()) session.document()->select(-1);
+        break;
+      case GLFW_KEY_LEFT: shift ? session.camera().pan(20, 0) : session.camera().orbit(0.08f, 0); break;
+      case GLFW_KEY_RIGHT: shift ? session.camera().pan(-20, 0) : session.camera().orbit(-0.08f, 0); break;
+      case GLFW_KEY_UP: shift ? session.camera().pan(0, 20) : session.camera().orbit(0, 0.08f); break;
+      case GLFW_KEY_DOWN: shift ? session.camera().pan(0, -20) : session.camera().orbit(0, -0.08f); break;
+      case GLFW_KEY_EQUAL:
+      case GLFW_KEY_KP_ADD: session.camera().zoom(1); break;
+      case GLFW_KEY_MINUS:
+      case GLFW_KEY_KP_SUBTRACT: session.camera().zoom(-1); break;
+      default: break;
+    }
+  }
+  return false;
+}
+
+}  // namespace sagrid::ui

@@ -1,0 +1,59 @@
+// The command pattern behind every user edit: a Command changes the AnnotationDocument's labels
+// in apply() and puts them back exactly in revert(). Panels and input handlers never touch the
+// labels directly; they build a command and hand it to AnnotationDocument::execute(), which keeps
+// the undo/redo history and autosaves.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/labels/labels.h"
+
+namespace sagrid::ui {
+
+class Command {
+ public:
+  virtual ~Command() = default;
+  virtual void apply(ObjectLabels& labels) = 0;
+  virtual void revert(ObjectLabels& labels) = 0;
+  virtual std::string description() const = 0;
+  // Index of the point to select after apply (-1: leave the selection alone).
+  virtual int selectionAfterApply() const { return -1; }
+  virtual int selectionAfterRevert() const { return -1; }
+};
+
+// Applies children in order and reverts them in reverse: one undo step for many changes.
+class CommandGroup final : public Command {
+ public:
+  CommandGroup(std::string description, std::vector<std::unique_ptr<Command>> children);
+  void apply(ObjectLabels& labels) override;
+  void revert(ObjectLabels& labels) override;
+  std::string description() const override { return m_description; }
+  bool empty() const { return m_children.empty(); }
+
+ private:
+  std::string m_description;
+  std::vector<std::unique_ptr<Command>> m_children;
+};
+
+// Undo/redo history. Executing a new command drops the redo branch.
+class CommandStack {
+ public:
+  // Applies `command` and records it.
+  void execute(std::unique_ptr<Command> command, ObjectLabels& labels);
+  bool canUndo() const { return m_next > 0; }
+  bool canRedo() const { return m_next < m_history.size(); }
+  // Return the command that was undone/redone (nullptr if none), for selection and messages.
+  const Command* undo(ObjectLabels& labels);
+  const Command* redo(ObjectLabels& labels);
+  std::string undoDescription() const;
+  std::string redoDescription() const;
+  std::size_t size() const { return m_history.size(); }
+
+ private:
+  std::vector<std::unique_ptr<Command>> m_history;
+  std::size_t m_next = 0;  // commands [0, m_next) are applied
+};
+
+}  // namespace sagrid::ui

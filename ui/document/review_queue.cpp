@@ -1,0 +1,194 @@
+#include "ui/document/review_queue.h"
+
+#include <algorithm>
+#include <cctype>
+#include <system_error>
+
+#include <nlohmann/json.hpp>
+
+#include "core/common/atomic_file.h"
+#include "core/common/error.h"
+#include "core/common/log.h"
+#include "core/mesh/mesh_import.h"
+
+namespace sagrid::ui {
+
+namespace fs = std::filesystem;
+
+const char* toString(QueueState state) {
+  switch (state) {
+    case QueueState::Accepted: return "accepted";
+    case QueueState::Edited: return "edited";
+    case QueueState::Skipped: return "skipped";
+    case QueueState::Unreviewed: break;
+  }
+  return "unreviewed";
+}
+
+QueueState parseQueueState(const std::string& text) {
+  if (text == "accepted") return QueueState::Accepted;
+  if (text == "edited") return QueueState::Edited;
+  if (text == "skipped") return QueueState::Skipped;
+  return QueueState::Unreviewed;
+}
+
+bool isMeshFile(const fs::path& path) {
+  std::string ext = path.extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  const auto& supported = supportedMeshExtensions();
+  return std::find(supported.begin(), supported.end(), ext) != supported.end();
+}
+
+fs::path labelsPathFor(const fs::path& mesh) {
+  const fs::path dir = mesh.parent_path();
+  int meshes = 0;
+  std::error_code ec;
+  for (const auto& item : fs::directory_iterator(dir.empty() ? fs::path(".") : dir, ec)) {
+    if (item.is_regular_file(ec) && isMeshFile(item.path())) ++meshes;
+  }
+  if (meshes <= 1) return dir / "labels.json";
+  return dir / (mesh.stem().string() + ".labels.json");
+}
+
+namespace {
+
+std::vector<fs::path> meshesIn(const fs::path& dir) {
+  std::vector<fs::path> found;
+  std::error_code ec;
+  fs::directory_iterator it(dir, ec);
+  if (ec) throw FileError(dir, "cannot list folder: " + ec.message());
+  for (const auto& item : it) {
+    if (item.is_regular_file(ec) && isMeshFile(item.path())) {
+      found.push_back(item.path());
+    } else if (item.is_directory(ec) && item.path().filename().string().front() != '.') {
+      for (const auto& inner : fs::directory_iterator(item.path(), ec)) {
+        if (inner.is_regular_file(ec) && isMeshFile(inner.path())) found.push_back(inner.path());
+      }
+    }
+  }
+  std::sort(found.begin(), found.end());
+  return found;
+}
+
+QueueEntry entryFor(const fs::path& mesh) {
+  QueueEntry entry;
+  entry.mesh = fs::absolute(mesh).lexically_normal();
+  entry.labels = labelsPathFor(entry.mesh);
+  return entry;
+}
+
+}  // namespace
+
+ReviewQueue ReviewQueue::openFolder(const fs::path& dir) {
+  ReviewQueue queue;
+  for (const auto& mesh : meshesIn(dir)) queue.m_entries.push_back(entryFor(mesh));
+  queue.m_stateFile = fs::absolute(dir).lexically_normal() / kQueueStateFile;
+  queue.loadState();
+  return queue;
+}
+
+ReviewQueue ReviewQueue::open(const std::vector<fs::path>& paths) {
+  if (paths.size() == 1 && fs::is_directory(paths[0])) return openFolder(paths[0]);
+  ReviewQueue queue;
+  queue.add(paths);
+  queue.m_current = 0;
+  return queue;
+}
+
+void ReviewQueue::loadState() {
+  std::error_code ec;
+  if (!fs::exists(m_stateFile, ec)) return;
+  try {
+    const auto json = nlohmann::json::parse(readFileBytes(m_stateFile));
+    const fs::path base = m_stateFile.parent_path();
+    for (const auto& item : json.value("objects", nlohmann::json::array())) {
+      const fs::path mesh = (base / item.at("mesh").get<std::string>()).lexically_normal();
+      for (auto& entry : m_entries) {
+        if (entry.mesh == mesh) entry.state = parseQueueState(item.value("state", ""));
+      }
+    }
+    const std::string currentMesh = json.value("current", "");
+    for (std::size_t i = 0; i < m_entries.size(); ++i) {
+      if ((base / currentMesh).lexically_normal() == m_entries[i].mesh) m_current = static_cast<int>(i);
+    }
+  } catch (const nlohmann::json::exception& e) {
+    // A damaged state file must not block review: start over, and say so.
+    logger()->warn("{}: ignoring unreadable review state ({})", m_stateFile.string(), e.what());
+  }
+}
+
+void ReviewQueue::save() const {
+  if (m_stateFile.empty()) return;
+  const fs::path base = m_stateFile.parent_path();
+  nlohmann::json objects = nlohmann::json::array();
+  for (const auto& entry : m_entries) {
+    objects.push_back({{"mesh", entry.mesh.lexically_relative(base).generic_string()},
+                       {"state", toString(entry.state)}});
+  }
+  nlohmann::json json = {{"schema", "sagrid.review-queue/1"}, {"objects", objects}};
+  json["current"] = m_entries.empty() ? std::string()
+                                      : m_entries[std::size_t(m_current)].mesh.lexically_relative(base).generic_string();
+  writeFileAtomic(m_stateFile, json.dump(2) + "\n");
+}
+
+std::size_t ReviewQueue::reviewedCount() const {
+  return static_cast<std::size_t>(std::count_if(m_entries.begin(), m_entries.end(), [](const QueueEntry& e) {
+    return e.state != QueueState::Unreviewed;
+  }));
+}
+
+void ReviewQueue::setCurrent(int index) {
+  if (m_entries.empty()) return;
+  m_current = std::clamp(index, 0, static_cast<int>(m_entries.size()) - 1);
+  save();
+}
+
+bool ReviewQueue::next() {
+  if (m_current + 1 >= static_cast<int>(m_entries.size())) return false;
+  setCurrent(m_current + 1);
+  return true;
+}
+
+bool ReviewQueue::previous() {
+  if (m_current <= 0) return false;
+  setCurrent(m_current - 1);
+  return true;
+}
+
+void ReviewQueue::setState(std::size_t index, QueueState state) {
+  m_entries.at(index).state = state;
+  save();
+}
+
+void ReviewQueue::setError(std::size_t index, std::string error) { m_entries.at(index).error = std::move(error); }
+
+int ReviewQueue::add(const std::vector<fs::path>& paths) {
+  std::vector<fs::path> meshes;
+  for (const auto& path : paths) {
+    std::error_code ec;
+    if (fs::is_directory(path, ec)) {
+      for (auto& m : meshesIn(path)) meshes.push_back(m);
+    } else {
+      meshes.push_back(path);  // unsupported files are queued too: opening them shows the error
+    }
+  }
+  int first = -1;
+  std::size_t insertAt = m_entries.empty() ? 0 : std::size_t(m_current) + 1;
+  for (const auto& mesh : meshes) {
+    QueueEntry entry = entryFor(mesh);
+    auto existing = std::find_if(m_entries.begin(), m_entries.end(),
+                                 [&](const QueueEntry& e) { return e.mesh == entry.mesh; });
+    int index;
+    if (existing != m_entries.end()) {
+      index = static_cast<int>(existing - m_entries.begin());
+    } else {
+      m_entries.insert(m_entries.begin() + static_cast<long>(insertAt), std::move(entry));
+      index = static_cast<int>(insertAt++);
+    }
+    if (first < 0) first = index;
+  }
+  save();
+  return first;
+}
+
+}  // namespace sagrid::ui

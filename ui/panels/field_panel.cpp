@@ -1,0 +1,53 @@
+#include <algorithm>
+#include <cstdio>
+
+#include <imgui.h>
+
+#include "ui/app/session.h"
+#include "ui/panels/panels.h"
+#include "ui/render/scene_renderer.h"
+#include "ui/render/type_colors.h"
+
+namespace sagrid::ui {
+
+void drawFieldPanel(Session& session, const SceneRenderer& scene) {
+  if (!ImGui::CollapsingHeader("Distance field", ImGuiTreeNodeFlags_DefaultOpen)) return;
+  const AnnotationDocument* doc = session.document();
+  FieldSettings& f = session.view().field;
+  ImGui::Checkbox("Show (V)", &f.visible);
+  ImGui::SameLine();
+  ImGui::TextDisabled(scene.showingPredictedFields() ? "predicted" : "of the labelled points");
+  if (!doc) return;
+  const float mpu = doc->metersPerUnit();
+  const float largest = std::max(scene.field().largestDistance(), 1e-6f);
+  // Sliders work in metres (what the curator thinks in); the renderer gets mesh units.
+  float thresholdM = (f.threshold > 0 ? f.threshold : largest) * mpu;
+  ImGui::SetNextItemWidth(-90);
+  if (ImGui::SliderFloat("closer than", &thresholdM, 0.0f, largest * mpu, "%.3f m")) f.threshold = thresholdM / mpu;
+  float colorM = (f.colorMax > 0 ? f.colorMax : largest) * mpu;
+  ImGui::SetNextItemWidth(-90);
+  if (ImGui::SliderFloat("colour max", &colorM, 1e-4f, largest * mpu, "%.3f m")) f.colorMax = colorM / mpu;
+  ImGui::SetNextItemWidth(-90);
+  ImGui::SliderFloat("opacity", &f.opacity, 0.05f, 1.0f, "%.2f");
+  const char* axes[] = {"none", "x", "y", "z"};
+  int axis = f.sliceAxis + 1;
+  ImGui::SetNextItemWidth(70);
+  if (ImGui::Combo("slice", &axis, axes, 4)) f.sliceAxis = axis - 1;
+  if (f.sliceAxis >= 0) {
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(-1);
+    ImGui::SliderFloat("##slicepos", &f.slice, 0.0f, 1.0f, "%.2f");
+  }
+  const auto& types = scene.field().types();
+  for (std::size_t i = 0; i < types.size() && i < 32; ++i) {
+    bool on = (f.typeMask >> i) & 1u;
+    const Eigen::Vector3f c = typeColor(types[i]);
+    ImGui::PushStyleColor(ImGuiCol_CheckMark, ImVec4(c.x(), c.y(), c.z(), 1));
+    if (ImGui::Checkbox(types[i].c_str(), &on)) f.typeMask = on ? (f.typeMask | (1u << i)) : (f.typeMask & ~(1u << i));
+    ImGui::PopStyleColor();
+    if (i + 1 < types.size()) ImGui::SameLine();
+  }
+  ImGui::TextDisabled("%zu voxels, %d^3 grid", scene.field().instanceCount(), doc->gridResolution());
+}
+
+}  // namespace sagrid::ui

@@ -1,0 +1,33 @@
+// The ImGui panels of the annotation GUI. Each panel only reads the Session and calls its actions
+// (which turn point edits into document commands); none keeps state of the document itself.
+#pragma once
+
+#include "ui/app/log_buffer.h"
+
+namespace sagrid::ui {
+
+class Session;
+class SceneRenderer;
+class FileBrowser;
+
+struct PanelLayout {
+  float menuHeight = 0;
+  float leftWidth = 310;
+  float rightWidth = 300;
+};
+
+// Returns true when the user chose File -> Quit.
+bool drawMainMenu(Session& session, FileBrowser& browser);
+void drawQueuePanel(Session& session);
+void drawPointsPanel(Session& session);
+void drawFieldPanel(Session& session, const SceneRenderer& scene);
+void drawObjectPanel(Session& session);
+void drawLogPanel(const LogBuffer& log);
+void drawHelpOverlay(Session& session);
+void drawErrorModal(Session& session);
+// Labels next to the markers, the axes gizmo and the colour legend, over the 3D viewport.
+void drawViewportOverlay(const Session& session, const SceneRenderer& scene);
+// Status line: prediction progress and cancel, add mode, k/n.
+void drawStatusBar(Session& session);
+
+}  // namespace sagrid::ui

@@ -1,0 +1,96 @@
+#include <cstdio>
+#include <memory>
+
+#include <imgui.h>
+
+#include "ui/app/session.h"
+#include "ui/document/point_commands.h"
+#include "ui/panels/panels.h"
+#include "ui/render/type_colors.h"
+
+namespace sagrid::ui {
+
+namespace {
+ImVec4 toImGui(const Eigen::Vector3f& c) { return ImVec4(c.x(), c.y(), c.z(), 1.0f); }
+
+void typeSelector(Session& session) {
+  ImGui::TextUnformatted("New points:");
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(-1);
+  if (ImGui::BeginCombo("##type", session.currentType().c_str())) {
+    const auto& types = knownTypes();
+    for (std::size_t i = 0; i < types.size(); ++i) {
+      char label[96];
+      std::snprintf(label, sizeof label, "%zu  %s", i + 1, types[i].c_str());
+      ImGui::PushStyleColor(ImGuiCol_Text, toImGui(typeColor(types[i])));
+      if (ImGui::Selectable(label, types[i] == session.currentType())) session.setCurrentType(types[i]);
+      ImGui::PopStyleColor();
+    }
+    ImGui::EndCombo();
+  }
+}
+
+// Exact coordinates of the selected point (mesh file frame), applied as one command on Enter.
+void coordinateEditor(Session& session, int index) {
+  const AnnotationDocument& doc = *session.document();
+  const AffordancePoint& point = doc.points()[std::size_t(index)];
+  float xyz[3] = {point.position.x(), point.position.y(), point.position.z()};
+  ImGui::SetNextItemWidth(-1);
+  if (ImGui::InputFloat3("##xyz", xyz, "%.4f", ImGuiInputTextFlags_EnterReturnsTrue)) {
+    session.execute(makeSetCoordinatesCommand(index, Eigen::Vector3f(xyz[0], xyz[1], xyz[2])));
+  }
+}
+}  // namespace
+
+void drawPointsPanel(Session& session) {
+  AnnotationDocument* doc = session.document();
+  if (!ImGui::CollapsingHeader("Points", ImGuiTreeNodeFlags_DefaultOpen) || !doc) return;
+  typeSelector(session);
+  if (ImGui::Button(session.addModeArmed ? "Click the surface..." : "Add point (Ins)")) session.addModeArmed = !session.addModeArmed;
+  ImGui::SameLine();
+  ImGui::BeginDisabled(!doc->canUndo());
+  if (ImGui::Button("Undo")) session.undo();
+  ImGui::EndDisabled();
+  ImGui::SameLine();
+  ImGui::BeginDisabled(!doc->canRedo());
+  if (ImGui::Button("Redo")) session.redo();
+  ImGui::EndDisabled();
+
+  const auto& points = doc->points();
+  if (points.empty()) ImGui::TextDisabled("No points yet: Shift+click the surface to add one.");
+  const float mpu = doc->metersPerUnit();
+  for (int i = 0; i < static_cast<int>(points.size()); ++i) {
+    const AffordancePoint& p = points[std::size_t(i)];
+    ImGui::PushID(i);
+    ImGui::ColorButton("##c", toImGui(typeColor(p.type)), ImGuiColorEditFlags_NoTooltip, ImVec2(12, 12));
+    ImGui::SameLine();
+    char label[160];
+    std::snprintf(label, sizeof label, "%d  %-13s %s", i + 1, p.type.c_str(), toString(p.status));
+    if (ImGui::Selectable(label, doc->selected() == i)) doc->select(i);
+    if (ImGui::IsItemHovered()) {
+      ImGui::SetTooltip("(%.4f, %.4f, %.4f) file frame%s", p.position.x(), p.position.y(), p.position.z(),
+                        mpu != 1.0f ? " (units scaled to metres on export)" : "");
+    }
+    ImGui::PopID();
+  }
+  const int selected = doc->selected();
+  if (selected >= 0) {
+    ImGui::Separator();
+    ImGui::Text("Point %d (%s)", selected + 1, points[std::size_t(selected)].type.c_str());
+    coordinateEditor(session, selected);
+    if (ImGui::Button("Accept (A)")) session.accept();
+    ImGui::SameLine();
+    if (ImGui::Button("Delete (Del)")) session.deleteSelected();
+    ImGui::SameLine();
+    if (ImGui::BeginCombo("##settype", "Type", ImGuiComboFlags_NoPreview)) {
+      for (const auto& type : knownTypes()) {
+        if (ImGui::Selectable(type.c_str(), type == points[std::size_t(selected)].type)) session.changeSelectedType(type);
+      }
+      ImGui::EndCombo();
+    }
+  } else if (!points.empty()) {
+    if (ImGui::Button("Accept all and next (A)", ImVec2(-1, 0))) session.accept();
+  }
+}
+
+}  // namespace sagrid::ui

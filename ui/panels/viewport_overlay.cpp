@@ -1,0 +1,133 @@
+#include <cmath>
+#include <cstdio>
+
+#include <imgui.h>
+
+#include "ui/app/session.h"
+#include "ui/panels/panels.h"
+#include "ui/render/colormap.h"
+#include "ui/render/scene_renderer.h"
+#include "ui/render/type_colors.h"
+
+namespace sagrid::ui {
+
+namespace {
+ImU32 toU32(const Eigen::Vector3f& c, float a = 1.0f) {
+  return ImGui::ColorConvertFloat4ToU32(ImVec4(c.x(), c.y(), c.z(), a));
+}
+
+void pointLabels(const Session& session, ImDrawList* draw) {
+  const AnnotationDocument* doc = session.document();
+  const ViewportRect& vp = session.viewport();
+  for (int i = 0; i < static_cast<int>(doc->points().size()); ++i) {
+    Eigen::Vector2f pixel;
+    if (!session.camera().project(doc->pointInView(i), pixel)) continue;
+    const ImVec2 at(vp.x + pixel.x(), vp.y + pixel.y());
+    const AffordancePoint& p = doc->points()[std::size_t(i)];
+    if (doc->selected() == i) draw->AddCircle(at, session.view().markerPixels * 1.35f + 4, IM_COL32(255, 255, 255, 230), 24, 2.0f);
+    if (!session.view().showPointLabels) continue;
+    char text[96];
+    std::snprintf(text, sizeof text, "%d %s%s", i + 1, p.type.c_str(), p.status == AffordanceStatus::Predicted ? " ?" : "");
+    const ImVec2 textAt(at.x + session.view().markerPixels + 4, at.y - 8);
+    const ImVec2 size = ImGui::CalcTextSize(text);
+    draw->AddRectFilled(ImVec2(textAt.x - 3, textAt.y - 1), ImVec2(textAt.x + size.x + 3, textAt.y + size.y + 1),
+                        IM_COL32(15, 17, 20, 190), 3.0f);
+    draw->AddText(textAt, toU32(typeColor(p.type)), text);
+  }
+}
+
+// The world axes as seen by the camera, in the viewport's bottom-left corner.
+void axesGizmo(const Session& session, ImDrawList* draw) {
+  const ViewportRect& vp = session.viewport();
+  const ImVec2 origin(vp.x + 48, vp.y + vp.height - 48);
+  const Eigen::Matrix4f view = session.camera().view();
+  const char* names[] = {"X", "Y", "Z"};
+  const Eigen::Vector3f colors[] = {{0.90f, 0.30f, 0.30f}, {0.40f, 0.85f, 0.35f}, {0.35f, 0.55f, 1.0f}};
+  draw->AddCircleFilled(origin, 40, IM_COL32(20, 22, 26, 150), 32);
+  for (int a = 0; a < 3; ++a) {
+    const Eigen::Vector3f dir = view.block<3, 3>(0, 0).col(a);
+    const ImVec2 tip(origin.x + dir.x() * 30, origin.y - dir.y() * 30);
+    draw->AddLine(origin, tip, toU32(colors[a]), 2.5f);
+    draw->AddText(ImVec2(tip.x - 4, tip.y - 8), toU32(colors[a]), names[a]);
+  }
+}
+
+void legend(const Session& session, const SceneRenderer& scene, ImDrawList* draw) {
+  const FieldSettings& f = session.view().field;
+  if (!f.visible || scene.field().instanceCount() == 0) return;
+  const ViewportRect& vp = session.viewport();
+  const float mpu = session.document()->metersPerUnit();
+  const float colorMax = f.colorMax > 0 ? f.colorMax : scene.field().largestDistance();
+  const float w = 220, h = 12;
+  const ImVec2 at(vp.x + vp.width - w - 24, vp.y + vp.height - 52);
+  draw->AddRectFilled(ImVec2(at.x - 10, at.y - 24), ImVec2(at.x + w + 10, at.y + h + 22), IM_COL32(20, 22, 26, 190), 5.0f);
+  draw->AddText(ImVec2(at.x, at.y - 20), IM_COL32(220, 224, 230, 255), "distance to nearest point");
+  const int steps = 44;
+  for (int s = 0; s < steps; ++s) {
+    const float t0 = float(s) / steps, t1 = float(s + 1) / steps;
+    draw->AddRectFilled(ImVec2(at.x + t0 * w, at.y), ImVec2(at.x + t1 * w + 0.5f, at.y + h),
+                        toU32(distanceColor(t0 * colorMax, colorMax)));
+  }
+  for (int k = 0; k <= 4; ++k) {
+    char label[32];
+    std::snprintf(label, sizeof label, k == 4 ? "%.2f m" : "%.2f", colorMax * mpu * float(k) / 4.0f);
+    const float x = at.x + w * float(k) / 4.0f;
+    draw->AddLine(ImVec2(x, at.y + h), ImVec2(x, at.y + h + 3), IM_COL32(220, 224, 230, 255));
+    const float tw = ImGui::CalcTextSize(label).x;
+    draw->AddText(ImVec2(std::min(x - tw * 0.5f, at.x + w + 8 - tw), at.y + h + 3), IM_COL32(220, 224, 230, 255), label);
+  }
+}
+}  // namespace
+
+void drawViewportOverlay(const Session& session, const SceneRenderer& scene) {
+  ImDrawList* draw = ImGui::GetBackgroundDrawList();
+  if (session.view().showAxes) axesGizmo(session, draw);
+  if (!session.document()) {
+    const ViewportRect& vp = session.viewport();
+    const char* hint = "Drop meshes or a folder here, or File > Open (Ctrl+O)";
+    const ImVec2 size = ImGui::CalcTextSize(hint);
+    draw->AddText(ImVec2(vp.x + 0.5f * (vp.width - size.x), vp.y + 0.5f * vp.height), IM_COL32(170, 175, 185, 255), hint);
+    return;
+  }
+  if (session.view().showPoints) pointLabels(session, draw);
+  legend(session, scene, draw);
+}
+
+void drawStatusBar(Session& session) {
+  const ImVec2 display = ImGui::GetIO().DisplaySize;
+  const float height = ImGui::GetFrameHeight() + 6;
+  ImGui::SetNextWindowPos(ImVec2(0, display.y - height));
+  ImGui::SetNextWindowSize(ImVec2(display.x, height));
+  ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(8, 3));
+  ImGui::PushStyleVar(ImGuiStyleVar_WindowRounding, 0.0f);
+  ImGui::Begin("##status", nullptr, ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove |
+                                        ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoBringToFrontOnFocus);
+  const AnnotationDocument* doc = session.document();
+  if (!session.queue().empty()) {
+    ImGui::Text("Object %d / %zu", session.queue().current() + 1, session.queue().size());
+    ImGui::SameLine();
+  }
+  if (doc) {
+    ImGui::TextDisabled("| %s | %zu points | %s", doc->displayName().c_str(), doc->points().size(),
+                        doc->canUndo() ? ("undo: " + doc->undoDescription()).c_str() : "no edits");
+    ImGui::SameLine();
+  }
+  if (session.addModeArmed) {
+    ImGui::TextColored(ImVec4(1, 0.8f, 0.3f, 1), "| click the surface to add a %s", session.currentType().c_str());
+    ImGui::SameLine();
+  }
+  if (session.worker().running()) {
+    ImGui::TextUnformatted("| predicting");
+    ImGui::SameLine();
+    ImGui::ProgressBar(session.worker().progress(), ImVec2(120, 0));
+    ImGui::SameLine();
+    if (ImGui::SmallButton("cancel")) session.cancelPrediction();
+    ImGui::SameLine();
+  }
+  ImGui::SetCursorPosX(display.x - 130);
+  ImGui::TextDisabled("H: shortcuts");
+  ImGui::End();
+  ImGui::PopStyleVar(2);
+}
+
+}  // namespace sagrid::ui

@@ -1,0 +1,31 @@
+// What the viewport shows and how: toggles and slider values the panels edit and the renderers
+// read. Plain data, no GL, so the same settings drive the window, `sagrid render` and tests.
+#pragma once
+
+#include <cstdint>
+
+namespace sagrid::ui {
+
+struct FieldSettings {
+  bool visible = true;
+  float threshold = 0.0f;      // show voxels closer than this (mesh units); 0 = not yet set
+  float colorMax = 0.0f;       // distance mapped to the far end of the colour map; 0 = auto
+  float opacity = 1.0f;
+  int sliceAxis = -1;          // -1 none, 0/1/2 = x/y/z
+  float slice = 1.0f;          // slice plane position as a fraction of the object's extent
+  std::uint32_t typeMask = ~0u;  // bit per field index
+};
+
+struct ViewSettings {
+  bool showMesh = true;
+  bool wireframe = false;
+  bool showGrid = true;
+  bool showAxes = true;
+  bool showPoints = true;
+  bool showPointLabels = true;
+  bool showPanels = true;
+  float markerPixels = 9.0f;   // marker radius on screen
+  FieldSettings field;
+};
+
+}  // namespace sagrid::ui
