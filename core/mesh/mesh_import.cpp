@@ -1,0 +1,336 @@
+#include "core/mesh/mesh_import.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <map>
+#include <system_error>
+
+#include <assimp/Importer.hpp>
+#include <assimp/config.h>
+#include <assimp/material.h>
+#include <assimp/postprocess.h>
+#include <assimp/scene.h>
+#include <stb_image.h>
+
+#include "core/common/atomic_file.h"
+#include "core/common/error.h"
+#include "core/common/log.h"
+#include "core/common/sha256.h"
+#include "core/grid/normalization.h"
+
+namespace sagrid {
+namespace fs = std::filesystem;
+
+const std::vector<std::string>& supportedMeshExtensions() {
+  static const std::vector<std::string> extensions{".obj", ".gltf", ".glb", ".fbx",
+                                                   ".dae", ".ply", ".stl"};
+  return extensions;
+}
+
+std::optional<UpAxis> parseUpAxis(const std::string& text) {
+  if (text == "y" || text == "Y") return UpAxis::Y;
+  if (text == "z" || text == "Z") return UpAxis::Z;
+  return std::nullopt;
+}
+
+const char* toString(UpAxis up) { return up == UpAxis::Y ? "y" : "z"; }
+
+namespace {
+
+std::string lowerExtension(const fs::path& path) {
+  std::string ext = path.extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return ext;
+}
+
+std::string oneLine(std::string text) {
+  std::replace(text.begin(), text.end(), '\n', ' ');
+  std::replace(text.begin(), text.end(), '\r', ' ');
+  for (std::size_t pos; (pos = text.find("  ")) != std::string::npos;) text.erase(pos, 1);
+  while (!text.empty() && text.back() == ' ') text.pop_back();
+  return text;
+}
+
+// Decodes an image file or in-memory image into RGBA8 with stb_image.
+std::optional<Texture> decodeImage(const unsigned char* bytes, std::size_t size) {
+  int w = 0, h = 0, channels = 0;
+  stbi_uc* pixels = stbi_load_from_memory(bytes, static_cast<int>(size), &w, &h, &channels, 4);
+  if (!pixels) return std::nullopt;
+  Texture texture;
+  texture.width = w;
+  texture.height = h;
+  texture.rgba.assign(pixels, pixels + static_cast<std::size_t>(w) * h * 4);
+  stbi_image_free(pixels);
+  return texture;
+}
+
+// Collects materials and their textures, external (beside the mesh) or embedded in the file.
+class MaterialReader {
+ public:
+  MaterialReader(const aiScene& scene, const fs::path& meshPath, Mesh& mesh)
+      : m_scene(scene), m_meshPath(meshPath), m_mesh(mesh) {}
+
+  void readAll() {
+    for (unsigned m = 0; m < m_scene.mNumMaterials; ++m) m_mesh.materials.push_back(read(*m_scene.mMaterials[m]));
+  }
+
+ private:
+  Material read(const aiMaterial& source) {
+    Material material;
+    aiString name;
+    if (source.Get(AI_MATKEY_NAME, name) == AI_SUCCESS) material.name = name.C_Str();
+    aiColor4D color;
+    if (source.Get(AI_MATKEY_BASE_COLOR, color) == AI_SUCCESS ||
+        source.Get(AI_MATKEY_COLOR_DIFFUSE, color) == AI_SUCCESS) {
+      material.baseColor = Eigen::Vector3f(color.r, color.g, color.b).cwiseMax(0.0f).cwiseMin(1.0f);
+    }
+    for (aiTextureType type : {aiTextureType_BASE_COLOR, aiTextureType_DIFFUSE}) {
+      aiString texturePath;
+      if (source.GetTextureCount(type) > 0 && source.GetTexture(type, 0, &texturePath) == AI_SUCCESS) {
+        material.texture = textureIndex(texturePath.C_Str());
+        if (material.texture >= 0) break;
+      }
+    }
+    return material;
+  }
+
+  int textureIndex(const std::string& reference) {
+    if (auto it = m_loaded.find(reference); it != m_loaded.end()) return it->second;
+    std::optional<Texture> texture;
+    if (const aiTexture* embedded = m_scene.GetEmbeddedTexture(reference.c_str())) {
+      texture = decodeEmbedded(*embedded);
+    } else {
+      texture = loadExternal(reference);
+    }
+    int index = -1;
+    if (texture) {
+      index = static_cast<int>(m_mesh.textures.size());
+      m_mesh.textures.push_back(std::move(*texture));
+    } else {
+      logger()->warn("{}: texture '{}' could not be loaded; using the material colour",
+                     m_meshPath.string(), reference);
+    }
+    m_loaded[reference] = index;
+    return index;
+  }
+
+  static std::optional<Texture> decodeEmbedded(const aiTexture& embedded) {
+    if (embedded.mHeight == 0) {  // compressed (PNG, JPEG) bytes, mWidth of them
+      return decodeImage(reinterpret_cast<const unsigned char*>(embedded.pcData), embedded.mWidth);
+    }
+    Texture texture;  // raw BGRA texels
+    texture.width = static_cast<int>(embedded.mWidth);
+    texture.height = static_cast<int>(embedded.mHeight);
+    texture.rgba.resize(static_cast<std::size_t>(texture.width) * texture.height * 4);
+    for (std::size_t i = 0; i < static_cast<std::size_t>(texture.width) * texture.height; ++i) {
+      const aiTexel& t = embedded.pcData[i];
+      texture.rgba[4 * i + 0] = t.r;
+      texture.rgba[4 * i + 1] = t.g;
+      texture.rgba[4 * i + 2] = t.b;
+      texture.rgba[4 * i + 3] = t.a;
+    }
+    return texture;
+  }
+
+  std::optional<Texture> loadExternal(std::string reference) {
+    std::replace(reference.begin(), reference.end(), '\\', '/');
+    const fs::path dir = m_meshPath.parent_path();
+    // As written, then just the file name beside the mesh (exports often carry absolute paths).
+    for (const fs::path& candidate : {dir / reference, dir / fs::path(reference).filename()}) {
+      std::error_code ec;
+      if (!fs::is_regular_file(candidate, ec)) continue;
+      const std::string bytes = readFileBytes(candidate);
+      if (auto texture = decodeImage(reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size())) {
+        return texture;
+      }
+    }
+    return std::nullopt;
+  }
+
+  const aiScene& m_scene;
+  fs::path m_meshPath;
+  Mesh& m_mesh;
+  std::map<std::string, int> m_loaded;
+};
+
+// Appends every triangle mesh of the node tree with the accumulated node transform applied.
+class GeometryMerger {
+ public:
+  GeometryMerger(const aiScene& scene, Mesh& mesh) : m_scene(scene), m_mesh(mesh) {}
+
+  void merge() {
+    bool anyColors = false, anyUvs = false;
+    for (unsigned m = 0; m < m_scene.mNumMeshes; ++m) {
+      anyColors |= m_scene.mMeshes[m]->HasVertexColors(0);
+      anyUvs |= m_scene.mMeshes[m]->HasTextureCoords(0);
+    }
+    m_withColors = anyColors;
+    m_withUvs = anyUvs;
+    visit(*m_scene.mRootNode, aiMatrix4x4());
+  }
+
+  const std::vector<bool>& missingNormals() const { return m_missingNormals; }
+
+ private:
+  void visit(const aiNode& node, const aiMatrix4x4& parent) {
+    const aiMatrix4x4 transform = parent * node.mTransformation;
+    aiMatrix3x3 normalMatrix(transform);
+    normalMatrix.Inverse().Transpose();
+    for (unsigned i = 0; i < node.mNumMeshes; ++i) {
+      append(*m_scene.mMeshes[node.mMeshes[i]], transform, normalMatrix);
+    }
+    for (unsigned c = 0; c < node.mNumChildren; ++c) visit(*node.mChildren[c], transform);
+  }
+
+  void append(const aiMesh& source, const aiMatrix4x4& transform, const aiMatrix3x3& normalMatrix) {
+    if (!(source.mPrimitiveTypes & aiPrimitiveType_TRIANGLE)) return;  // points and lines
+    const int base = static_cast<int>(m_mesh.positions.size());
+    for (unsigned v = 0; v < source.mNumVertices; ++v) {
+      const aiVector3D p = transform * source.mVertices[v];
+      m_mesh.positions.emplace_back(p.x, p.y, p.z);
+      if (source.HasNormals()) {
+        aiVector3D n = normalMatrix * source.mNormals[v];
+        n.NormalizeSafe();
+        m_mesh.normals.emplace_back(n.x, n.y, n.z);
+      } else {
+        m_mesh.normals.emplace_back(Eigen::Vector3f::Zero());
+      }
+      m_missingNormals.push_back(!source.HasNormals());
+      if (m_withUvs) {
+        m_mesh.uvs.push_back(source.HasTextureCoords(0)
+                                 ? Eigen::Vector2f(source.mTextureCoords[0][v].x, source.mTextureCoords[0][v].y)
+                                 : Eigen::Vector2f::Zero());
+      }
+      if (m_withColors) {
+        m_mesh.colors.push_back(source.HasVertexColors(0)
+                                    ? Eigen::Vector3f(source.mColors[0][v].r, source.mColors[0][v].g,
+                                                      source.mColors[0][v].b)
+                                    : Eigen::Vector3f::Ones());
+      }
+    }
+    for (unsigned f = 0; f < source.mNumFaces; ++f) {
+      const aiFace& face = source.mFaces[f];
+      if (face.mNumIndices != 3) continue;
+      m_mesh.triangles.emplace_back(base + static_cast<int>(face.mIndices[0]),
+                                    base + static_cast<int>(face.mIndices[1]),
+                                    base + static_cast<int>(face.mIndices[2]));
+      m_mesh.triangleMaterials.push_back(static_cast<int>(source.mMaterialIndex));
+    }
+  }
+
+  const aiScene& m_scene;
+  Mesh& m_mesh;
+  bool m_withColors = false, m_withUvs = false;
+  std::vector<bool> m_missingNormals;
+};
+
+UpAxis defaultUpAxis(const std::string& extension, const aiScene& scene) {
+  if (extension == ".gltf" || extension == ".glb") return UpAxis::Y;  // by the glTF spec
+  if (extension == ".fbx" && scene.mMetaData) {
+    int axis = 2;  // FBX GlobalSettings: 0 = x, 1 = y, 2 = z
+    if (scene.mMetaData->Get("UpAxis", axis) && axis == 1) return UpAxis::Y;
+  }
+  return UpAxis::Z;
+}
+
+// Drops triangles with repeated indices or zero area; they carry no surface.
+std::size_t removeDegenerateTriangles(Mesh& mesh) {
+  std::size_t kept = 0;
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+    const Eigen::Vector3i& tri = mesh.triangles[t];
+    const Eigen::Vector3f n = (mesh.positions[tri[1]] - mesh.positions[tri[0]])
+                                  .cross(mesh.positions[tri[2]] - mesh.positions[tri[0]]);
+    if (tri[0] == tri[1] || tri[1] == tri[2] || tri[0] == tri[2] || !(n.squaredNorm() > 0)) continue;
+    mesh.triangles[kept] = tri;
+    if (!mesh.triangleMaterials.empty()) mesh.triangleMaterials[kept] = mesh.triangleMaterials[t];
+    ++kept;
+  }
+  const std::size_t removed = mesh.triangles.size() - kept;
+  mesh.triangles.resize(kept);
+  if (!mesh.triangleMaterials.empty()) mesh.triangleMaterials.resize(kept);
+  return removed;
+}
+
+void fillMissingNormals(Mesh& mesh, const std::vector<bool>& missing) {
+  if (std::none_of(missing.begin(), missing.end(), [](bool b) { return b; })) return;
+  const std::vector<Eigen::Vector3f> fromFile = mesh.normals;
+  mesh.computeVertexNormals();
+  for (std::size_t v = 0; v < missing.size(); ++v) {
+    if (!missing[v]) mesh.normals[v] = fromFile[v];
+  }
+}
+
+}  // namespace
+
+Mesh importMesh(const fs::path& path, const ImportOptions& options) {
+  std::error_code ec;
+  if (!fs::exists(path, ec)) throw FileError(path, "file not found");
+  if (fs::is_directory(path, ec)) throw FileError(path, "is a directory, not a mesh file");
+  const std::string extension = lowerExtension(path);
+  const auto& supported = supportedMeshExtensions();
+  if (std::find(supported.begin(), supported.end(), extension) == supported.end()) {
+    std::string list;
+    for (const auto& e : supported) list += (list.empty() ? "" : " ") + e;
+    throw FileError(path, "unsupported mesh format '" + extension + "' (supported: " + list + ")");
+  }
+  const std::string bytes = readFileBytes(path);
+  if (bytes.empty()) throw FileError(path, "is empty (0 bytes)");
+
+  Assimp::Importer importer;
+  // Keep the file's own coordinates: SAGrid does the up-axis turn itself (labels are written in
+  // the file's frame), so assimp's Collada z-up to y-up rotation must not happen.
+  importer.SetPropertyBool(AI_CONFIG_IMPORT_COLLADA_IGNORE_UP_DIRECTION, true);
+  importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
+  const unsigned flags = aiProcess_Triangulate | aiProcess_JoinIdenticalVertices |
+                         aiProcess_SortByPType | aiProcess_ValidateDataStructure;
+  // From memory with the extension as hint, so the bytes hashed are the bytes parsed; external
+  // references (MTL, .bin, textures) are still resolved next to the file by the IO system.
+  const aiScene* scene = importer.ReadFile(path.string(), flags);
+  if (!scene) {
+    const std::string reason = oneLine(importer.GetErrorString());
+    // Assimp's validator rejects meshes without faces; say it in the user's terms.
+    if (reason.find("contains no faces") != std::string::npos) {
+      throw FileError(path, "contains no triangles (empty scene)");
+    }
+    throw FileError(path, "cannot be read as " + extension.substr(1) + ": " + reason);
+  }
+  if ((scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE) || !scene->mRootNode) {
+    throw FileError(path, "contains no triangles (empty or incomplete scene)");
+  }
+
+  Mesh mesh;
+  mesh.sha256 = sha256Hex(bytes);
+  MaterialReader(*scene, path, mesh).readAll();
+  GeometryMerger merger(*scene, mesh);
+  merger.merge();
+  if (mesh.triangles.empty()) throw FileError(path, "contains no triangles");
+
+  for (std::size_t v = 0; v < mesh.positions.size(); ++v) {
+    if (!mesh.positions[v].allFinite()) {
+      throw FileError(path, "has NaN or infinite coordinates (vertex " + std::to_string(v + 1) + ")");
+    }
+  }
+  if (const std::size_t removed = removeDegenerateTriangles(mesh)) {
+    if (mesh.triangles.empty()) {
+      throw FileError(path, "has only degenerate triangles (zero area), no surface");
+    }
+    logger()->info("{}: dropped {} degenerate triangles", path.string(), removed);
+  }
+  if (auto problem = normalizationProblem(mesh.bounds())) throw FileError(path, "mesh " + *problem);
+
+  mesh.fileUp = options.up ? *options.up : defaultUpAxis(extension, *scene);
+  for (auto& p : mesh.positions) p = fileToZUp(p, mesh.fileUp);
+  for (auto& n : mesh.normals) n = fileToZUp(n, mesh.fileUp);
+  fillMissingNormals(mesh, merger.missingNormals());
+  if (mesh.triangleMaterials.size() == mesh.triangles.size() && mesh.materials.empty()) {
+    mesh.triangleMaterials.clear();
+  }
+  logger()->info("{}: {} triangles, {} vertices, {} materials, {} textures, {}-up", path.string(),
+                 mesh.triangleCount(), mesh.vertexCount(), mesh.materials.size(),
+                 mesh.textures.size(), toString(mesh.fileUp));
+  return mesh;
+}
+
+}  // namespace sagrid
