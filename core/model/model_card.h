@@ -12,6 +12,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/points/point_extraction.h"
+
 namespace sagrid {
 struct FeatureGrid;
 }
@@ -19,14 +21,6 @@ struct FeatureGrid;
 namespace sagrid::model {
 
 inline constexpr const char* kModelCardSchema = "sagrid.model/1";
-
-// Settings of the automatic instance count (local minima + non-maximum suppression), calibrated
-// on training objects after training (see point_extraction.h).
-struct ExtractionSettings {
-  float maxDistance = 0.04f;  // keep minima predicted closer than this (normalized units)
-  float nmsRadius = 0.08f;    // suppress minima within this distance of a better one
-  float confidenceScale = 0.02f;  // confidence = exp(-predicted distance / scale)
-};
 
 struct ModelCard {
   std::string name;      // "<category>.<type>", e.g. "stove.heatsource"

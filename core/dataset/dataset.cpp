@@ -1,0 +1,83 @@
+#include "core/dataset/dataset.h"
+
+#include <algorithm>
+#include <cctype>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "core/common/atomic_file.h"
+#include "core/common/error.h"
+#include "core/labels/labels.h"
+
+namespace sagrid {
+namespace fs = std::filesystem;
+
+namespace {
+const char* const kMeshExtensions[] = {".glb", ".gltf", ".obj", ".fbx", ".ply", ".stl", ".dae"};
+
+std::string lower(std::string s) {
+  for (auto& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return s;
+}
+}  // namespace
+
+bool isMeshFile(const fs::path& path) {
+  const std::string ext = lower(path.extension().string());
+  return std::find(std::begin(kMeshExtensions), std::end(kMeshExtensions), ext) !=
+         std::end(kMeshExtensions);
+}
+
+fs::path findMeshFile(const fs::path& dir) {
+  for (const char* ext : kMeshExtensions)
+    if (fs::is_regular_file(dir / (std::string("mesh") + ext))) return dir / (std::string("mesh") + ext);
+  std::vector<fs::path> found;
+  for (const auto& e : fs::directory_iterator(dir))
+    if (e.is_regular_file() && isMeshFile(e.path())) found.push_back(e.path());
+  return found.size() == 1 ? found.front() : fs::path();
+}
+
+std::vector<DatasetEntry> readDataset(const fs::path& directory) {
+  if (!fs::is_directory(directory)) throw FileError(directory, "dataset folder not found");
+  std::vector<DatasetEntry> entries;
+  const fs::path manifest = directory / "manifest.jsonl";
+  if (fs::is_regular_file(manifest)) {
+    std::istringstream lines(readFileBytes(manifest));
+    std::string line;
+    int number = 0;
+    while (std::getline(lines, line)) {
+      ++number;
+      if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
+      try {
+        const auto j = nlohmann::json::parse(line);
+        DatasetEntry e;
+        e.id = j.at("id").get<std::string>();
+        e.category = j.value("category", "");
+        e.mesh = directory / j.at("mesh").get<std::string>();
+        e.labels = directory / j.value("labels", e.id + "/labels.json");
+        entries.push_back(std::move(e));
+      } catch (const nlohmann::json::exception& ex) {
+        throw FileError(manifest, "line " + std::to_string(number) +
+                                      ": expected {\"id\",\"category\",\"mesh\",\"labels\"} (" +
+                                      ex.what() + ")");
+      }
+    }
+    return entries;
+  }
+  std::vector<fs::path> dirs;
+  for (const auto& e : fs::directory_iterator(directory))
+    if (e.is_directory() && fs::is_regular_file(e.path() / "labels.json")) dirs.push_back(e.path());
+  std::sort(dirs.begin(), dirs.end());
+  for (const auto& d : dirs) {
+    DatasetEntry e;
+    e.id = d.filename().string();
+    e.labels = d / "labels.json";
+    e.mesh = findMeshFile(d);
+    if (e.mesh.empty()) continue;
+    e.category = readLabels(e.labels).object.category;
+    entries.push_back(std::move(e));
+  }
+  return entries;
+}
+
+}  // namespace sagrid

@@ -1,0 +1,30 @@
+// Reading a dataset folder (DESIGN.md "Dataset"): DIR/manifest.jsonl with one JSON line per object
+// ({"id","category","mesh","labels"}), or, without a manifest, every sub-folder holding a
+// labels.json and a mesh file (so shared/data/real-dev and hand-made folders work too).
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace sagrid {
+
+struct DatasetEntry {
+  std::string id;
+  std::string category;  // from the manifest, else from labels.json (may be empty)
+  std::filesystem::path mesh;
+  std::filesystem::path labels;
+};
+
+// Throws FileError for a missing directory or a malformed manifest line (naming the line).
+// Returns an empty list for a folder with no objects; callers decide whether that is an error.
+std::vector<DatasetEntry> readDataset(const std::filesystem::path& directory);
+
+// The mesh file in an object folder: mesh.{glb,gltf,obj,fbx,ply,stl,dae} first, else the only
+// file with one of those extensions. Empty path when there is none.
+std::filesystem::path findMeshFile(const std::filesystem::path& objectDirectory);
+
+// True when `path` has a mesh file extension SAGrid imports.
+bool isMeshFile(const std::filesystem::path& path);
+
+}  // namespace sagrid

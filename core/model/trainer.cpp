@@ -1,0 +1,221 @@
+#include "core/model/trainer.h"
+
+#include <chrono>
+#include <cmath>
+#include <numeric>
+#include <random>
+#include <sstream>
+
+#include "core/common/atomic_file.h"
+#include "core/common/error.h"
+#include "core/common/log.h"
+#include "core/model/affordance_model_impl.h"
+
+namespace sagrid::model {
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+namespace {
+
+constexpr int kDefaultEpochs = 40;
+
+NetworkObject toNetworkObject(const TrainingSample& s) {
+  NetworkObject o;
+  o.voxels = s.voxels;
+  o.features = s.features;
+  o.descriptor = s.descriptor;
+  return o;
+}
+
+// Mean over objects of the per-object mean |pred - target| (paper: L1 over occupied voxels).
+torch::Tensor batchLoss(const torch::Tensor& predicted, const NetworkBatch& batch,
+                        const std::vector<float>& targets) {
+  const std::int64_t n = batch.voxelCount();
+  std::vector<float> weights(static_cast<std::size_t>(n));
+  for (int o = 0; o < batch.batchSize(); ++o) {
+    const auto count = batch.offsets[o + 1] - batch.offsets[o];
+    for (auto v = batch.offsets[o]; v < batch.offsets[o + 1]; ++v)
+      weights[v] = 1.0f / static_cast<float>(count * batch.batchSize());
+  }
+  const auto device = predicted.device();
+  const torch::Tensor target = torch::from_blob(const_cast<float*>(targets.data()), {n}).clone().to(device);
+  const torch::Tensor w = torch::from_blob(weights.data(), {n}).clone().to(device);
+  return (w * (predicted - target).abs()).sum();
+}
+
+struct Checkpoint {
+  int epochsDone = 0;
+  int epochsTotal = 0;
+  std::vector<EpochRecord> curve;
+};
+
+nlohmann::json curveToJson(const std::vector<EpochRecord>& curve) {
+  nlohmann::json j = nlohmann::json::array();
+  for (const auto& e : curve) j.push_back({e.epoch, e.loss, e.learningRate, e.seconds});
+  return j;
+}
+
+void saveCheckpoint(const fs::path& file, SAGridNet& net, torch::optim::AdamW& optimizer,
+                    const Checkpoint& state, const ModelCard& card) {
+  torch::serialize::OutputArchive archive, netArchive, optimizerArchive;
+  for (const auto& p : net->named_parameters()) netArchive.write(p.key(), p.value().detach().cpu());
+  for (const auto& b : net->named_buffers()) netArchive.write(b.key(), b.value().cpu(), true);
+  optimizer.save(optimizerArchive);
+  archive.write("net", netArchive);
+  archive.write("optimizer", optimizerArchive);
+  const nlohmann::json meta = {{"epochs_done", state.epochsDone},
+                               {"epochs_total", state.epochsTotal},
+                               {"architecture", card.architecture},
+                               {"name", card.name},
+                               {"curve", curveToJson(state.curve)}};
+  archive.write("meta", c10::IValue(meta.dump()));
+  std::ostringstream out;
+  archive.save_to(out);
+  writeFileAtomic(file, out.str());
+}
+
+bool loadCheckpoint(const fs::path& file, SAGridNet& net, torch::optim::AdamW& optimizer,
+                    Checkpoint& state, const ModelCard& card) {
+  if (!fs::exists(file)) return false;
+  torch::serialize::InputArchive archive, netArchive, optimizerArchive;
+  nlohmann::json meta;
+  try {
+    std::istringstream in(readFileBytes(file));
+    archive.load_from(in);
+    c10::IValue metaValue;
+    archive.read("meta", metaValue);
+    meta = nlohmann::json::parse(metaValue.toStringRef());
+    archive.read("net", netArchive);
+    archive.read("optimizer", optimizerArchive);
+  } catch (const c10::Error&) {
+    throw FileError(file, "checkpoint is truncated or corrupt; delete it to start over");
+  }
+  if (meta.value("architecture", "") != card.architecture || meta.value("name", "") != card.name)
+    throw ModelError(file.string() + ": checkpoint is for " + meta.value("name", "?") + " " +
+                     meta.value("architecture", "?") + ", not " + card.name + " " +
+                     card.architecture + "; delete it or train without --resume");
+  torch::NoGradGuard noGrad;
+  for (auto& p : net->named_parameters()) {
+    torch::Tensor v;
+    netArchive.read(p.key(), v);
+    p.value().copy_(v);
+  }
+  for (auto& b : net->named_buffers()) {
+    torch::Tensor v;
+    netArchive.read(b.key(), v, true);
+    b.value().copy_(v);
+  }
+  optimizer.load(optimizerArchive);
+  state.epochsDone = meta.at("epochs_done").get<int>();
+  state.epochsTotal = meta.at("epochs_total").get<int>();
+  for (const auto& e : meta.at("curve"))
+    state.curve.push_back({e[0].get<int>(), e[1].get<double>(), e[2].get<double>(), e[3].get<double>()});
+  return true;
+}
+
+}  // namespace
+
+std::vector<EpochRecord> trainModel(AffordanceModel& model, const std::vector<TrainingSample>& samples,
+                                    const TrainingOptions& options) {
+  if (samples.empty()) throw InvalidArgument("training: no training objects");
+  for (const auto& s : samples)
+    if (s.targets.empty()) throw InvalidArgument("training: object " + s.id + " has no targets");
+  configureTorchRuntime();
+  AffordanceModelImpl& impl = model.impl();
+  SAGridNet& net = impl.net;
+  torch::optim::AdamW optimizer(
+      net->parameters(),
+      torch::optim::AdamWOptions(options.learningRate).weight_decay(options.weightDecay));
+
+  Checkpoint state;
+  if (options.resume && !options.checkpointFile.empty() &&
+      loadCheckpoint(options.checkpointFile, net, optimizer, state, impl.card))
+    logger()->info("resuming {} after epoch {}", impl.card.name, state.epochsDone);
+  if (state.epochsTotal == 0) state.epochsTotal = options.epochs > 0 ? options.epochs : kDefaultEpochs;
+  const bool timed = options.epochs <= 0 && options.minutes > 0 && state.epochsDone == 0;
+
+  const int batchSize = std::max(1, options.batchSize);
+  const std::size_t stepsPerEpoch = (samples.size() + batchSize - 1) / batchSize;
+  const double secondsBefore = state.curve.empty() ? 0.0 : state.curve.back().seconds;
+  const auto start = Clock::now();
+  auto elapsed = [&] { return std::chrono::duration<double>(Clock::now() - start).count(); };
+
+  net->train();
+  for (int epoch = state.epochsDone + 1; epoch <= state.epochsTotal; ++epoch) {
+    // Seeded per epoch, so a resumed run continues with the same draws as an uninterrupted one.
+    std::mt19937 rng(options.seed * 7919u + static_cast<unsigned>(epoch));
+    torch::manual_seed(options.seed * 7919u + static_cast<unsigned>(epoch));
+    std::vector<std::size_t> order(samples.size());
+    std::iota(order.begin(), order.end(), 0);
+    std::shuffle(order.begin(), order.end(), rng);
+    double lossSum = 0;
+    double lr = options.learningRate;
+    for (std::size_t step = 0; step < stepsPerEpoch; ++step) {
+      if (options.cancel && options.cancel->load()) throw Cancelled();
+      // Cosine schedule over all steps of the run, from learningRate down to 1% of it.
+      const double progress = (static_cast<double>(epoch - 1) * stepsPerEpoch + step) /
+                              (static_cast<double>(state.epochsTotal) * stepsPerEpoch);
+      lr = options.learningRate * (0.01 + 0.99 * 0.5 * (1.0 + std::cos(M_PI * progress)));
+      for (auto& group : optimizer.param_groups())
+        static_cast<torch::optim::AdamWOptions&>(group.options()).lr(lr);
+
+      std::vector<TrainingSample> augmented;
+      std::vector<NetworkObject> objects;
+      std::vector<float> targets;
+      for (std::size_t b = step * batchSize; b < std::min(samples.size(), (step + 1) * batchSize); ++b) {
+        const TrainingSample& s = samples[order[b]];
+        TrainingSample a = augment(s, randomAugmentation(s, options.augmentation, rng),
+                                   options.vectorChannels);
+        if (a.voxels.empty() || a.targets.empty()) a = s;
+        const auto d = distanceTargets(a);
+        targets.insert(targets.end(), d.begin(), d.end());
+        objects.push_back(toNetworkObject(a));
+      }
+      std::vector<const NetworkObject*> pointers;
+      for (const auto& o : objects) pointers.push_back(&o);
+      const NetworkBatch batch = makeNetworkBatch(pointers, impl.shape, impl.mode, impl.device);
+      optimizer.zero_grad();
+      torch::Tensor loss = batchLoss(net->forward(batch, impl.mode), batch, targets);
+      loss.backward();
+      optimizer.step();
+      lossSum += loss.item<double>();
+      if (options.onProgress) {
+        TrainingProgress p;
+        p.epoch = epoch;
+        p.epochs = state.epochsTotal;
+        p.step = (epoch - 1) * stepsPerEpoch + step + 1;
+        p.steps = state.epochsTotal * stepsPerEpoch;
+        p.loss = lossSum / static_cast<double>(step + 1);
+        p.seconds = secondsBefore + elapsed();
+        options.onProgress(p);
+      }
+    }
+    if (timed && epoch == 1) {
+      const double perEpoch = elapsed();
+      state.epochsTotal = std::max(1, static_cast<int>(options.minutes * 60.0 / perEpoch));
+      logger()->info("{}: {:.1f} s per epoch, {} epochs fit in {} min", impl.card.name, perEpoch,
+                     state.epochsTotal, options.minutes);
+    }
+    state.epochsDone = epoch;
+    state.curve.push_back({epoch, lossSum / stepsPerEpoch, lr, secondsBefore + elapsed()});
+    if (!options.checkpointFile.empty())
+      saveCheckpoint(options.checkpointFile, net, optimizer, state, impl.card);
+  }
+  net->eval();
+  return state.curve;
+}
+
+double evaluateLoss(AffordanceModel& model, const std::vector<TrainingSample>& samples) {
+  AffordanceModelImpl& impl = model.impl();
+  impl.net->eval();
+  torch::NoGradGuard noGrad;
+  double sum = 0;
+  for (const auto& s : samples) {
+    const NetworkObject o = toNetworkObject(s);
+    const NetworkBatch batch = makeNetworkBatch({&o}, impl.shape, impl.mode, impl.device);
+    sum += batchLoss(impl.net->forward(batch, impl.mode), batch, distanceTargets(s)).item<double>();
+  }
+  return samples.empty() ? 0.0 : sum / static_cast<double>(samples.size());
+}
+
+}  // namespace sagrid::model

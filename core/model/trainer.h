@@ -1,0 +1,60 @@
+// Training one SAGrid model on prepared samples (paper, Section III-C): L1 on D(v) over occupied
+// voxels, augmentation per step, AdamW with a cosine schedule, fixed seeds, a checkpoint after
+// every epoch and resume from it, a loss curve. Plain header; the loop runs in libtorch.
+#pragma once
+
+#include <atomic>
+#include <filesystem>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "core/model/model_card.h"
+#include "core/training/augmentation.h"
+#include "core/training/training_sample.h"
+
+namespace sagrid::model {
+
+struct TrainingProgress {
+  int epoch = 0;            // 1-based, current epoch
+  int epochs = 0;
+  std::size_t step = 0;     // steps done in total
+  std::size_t steps = 0;    // total steps (known after the first epoch when timed)
+  double loss = 0;          // running mean loss of the current epoch
+  double seconds = 0;       // elapsed
+};
+
+struct EpochRecord {
+  int epoch = 0;
+  double loss = 0;          // mean training loss (L1 on D) over the epoch
+  double learningRate = 0;  // at the epoch's end
+  double seconds = 0;       // elapsed since the start of training (all sessions)
+};
+
+struct TrainingOptions {
+  int epochs = 0;           // 0: from `minutes` (timed on the first epoch), else 40
+  double minutes = 0;       // time budget; used only when epochs == 0
+  int batchSize = 4;
+  double learningRate = 3e-3;
+  double weightDecay = 1e-4;
+  unsigned seed = 1;
+  AugmentationRanges augmentation;
+  std::vector<std::array<int, 3>> vectorChannels;  // rotated with the grid (normals)
+  std::filesystem::path checkpointFile;  // written after every epoch; empty = none
+  bool resume = false;                   // continue from checkpointFile when it exists
+  std::function<void(const TrainingProgress&)> onProgress;
+  const std::atomic<bool>* cancel = nullptr;  // throws Cancelled after saving a checkpoint
+};
+
+class AffordanceModel;
+
+// Trains `model` in place on `samples` (each with at least one target). Returns the per-epoch
+// loss curve. Throws InvalidArgument for an empty sample list or samples without targets.
+std::vector<EpochRecord> trainModel(AffordanceModel& model,
+                                    const std::vector<TrainingSample>& samples,
+                                    const TrainingOptions& options);
+
+// Mean L1 loss on D over the samples without augmentation (eval mode), for tests and reports.
+double evaluateLoss(AffordanceModel& model, const std::vector<TrainingSample>& samples);
+
+}  // namespace sagrid::model

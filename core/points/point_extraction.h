@@ -1,0 +1,59 @@
+// From a predicted distance field over the occupied voxels to affordance points (normalized
+// frame). One instance: the occupied voxel with the smallest predicted distance (paper, III-D).
+// A known count: threshold the low-distance voxels and cluster them with k-means (paper).
+// Unknown count (beyond the paper): local minima of the field among occupied voxels, non-maximum
+// suppression within a radius, and only minima predicted closer than a threshold — both
+// calibrated on training objects and stored in the model card. No torch here.
+#pragma once
+
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "core/grid/voxel_grid.h"
+
+namespace sagrid {
+
+// Predicted distance (normalized units) at each occupied voxel.
+struct PredictedField {
+  int resolution = kDefaultGridResolution;
+  std::vector<VoxelIndex> voxels;
+  std::vector<float> distances;  // same length as voxels
+};
+
+struct ExtractionSettings {
+  float maxDistance = 0.04f;      // automatic count: keep minima predicted closer than this
+  float nmsRadius = 0.08f;        // automatic count: suppress minima within this of a better one
+  float confidenceScale = 0.02f;  // confidence = exp(-predicted distance / scale)
+};
+
+struct ExtractedPoint {
+  Eigen::Vector3f position = Eigen::Vector3f::Zero();  // normalized frame
+  float distance = 0;    // predicted distance at the point's best voxel
+  float confidence = 0;  // in (0, 1]
+};
+
+// Throws InvalidArgument on an empty field or mismatched sizes.
+ExtractedPoint argminPoint(const PredictedField& field, const ExtractionSettings& settings);
+
+// `count` instances: the voxels whose predicted distance is below a threshold (the larger of
+// twice the spacing of the count-th best local minimum and a few voxels) are clustered with
+// k-means (k-means++ seeding, fixed seed, several restarts); each cluster gives its
+// distance-weighted centroid. Fewer points when fewer voxels exist.
+std::vector<ExtractedPoint> kMeansPoints(const PredictedField& field, int count,
+                                         const ExtractionSettings& settings);
+
+// Automatic count (at least one point: the argmin is always kept).
+std::vector<ExtractedPoint> autoCountPoints(const PredictedField& field,
+                                            const ExtractionSettings& settings);
+
+// Local minima (26-neighbourhood among occupied voxels), best first, as indices into the field.
+std::vector<std::size_t> localMinima(const PredictedField& field);
+
+// Chooses maxDistance and nmsRadius maximising the share of objects whose automatic count equals
+// the ground-truth count (ties: smaller mean matched error), over a fixed grid of candidates.
+// `truths[i]` are the ground-truth points (normalized frame) of `fields[i]`.
+ExtractionSettings calibrateExtraction(const std::vector<PredictedField>& fields,
+                                       const std::vector<std::vector<Eigen::Vector3f>>& truths);
+
+}  // namespace sagrid
