@@ -1,0 +1,357 @@
+#include "core/io/npz.h"
+
+#include <algorithm>
+#include <cctype>
+
+#include <zlib.h>
+
+#include "core/common/atomic_file.h"
+
+namespace sagrid {
+namespace fs = std::filesystem;
+
+namespace {
+
+struct DtypeInfo {
+  const char* name;
+  const char* descr;  // numpy array-protocol type string, little-endian
+  std::size_t size;
+};
+constexpr DtypeInfo kDtypes[] = {{"uint8", "|u1", 1},   {"int32", "<i4", 4},   {"int64", "<i8", 8},
+                                 {"float32", "<f4", 4}, {"float64", "<f8", 8}, {"bool", "|b1", 1}};
+
+const DtypeInfo* findByName(const std::string& name) {
+  for (const auto& d : kDtypes) {
+    if (name == d.name) return &d;
+  }
+  return nullptr;
+}
+
+const DtypeInfo* findByDescr(std::string descr) {
+  // '<' little-endian, '|' not applicable, '=' native (little-endian on every platform we run).
+  if (!descr.empty() && (descr[0] == '=' || descr[0] == '<' || descr[0] == '|')) descr = descr.substr(1);
+  for (const auto& d : kDtypes) {
+    if (descr == std::string(d.descr).substr(1)) return &d;
+  }
+  return nullptr;
+}
+
+std::uint16_t u16(std::string_view b, std::size_t at) {
+  return static_cast<std::uint16_t>(static_cast<unsigned char>(b[at]) |
+                                    (static_cast<unsigned char>(b[at + 1]) << 8));
+}
+std::uint32_t u32(std::string_view b, std::size_t at) {
+  return static_cast<std::uint32_t>(u16(b, at)) | (static_cast<std::uint32_t>(u16(b, at + 2)) << 16);
+}
+std::uint64_t u64(std::string_view b, std::size_t at) {
+  return static_cast<std::uint64_t>(u32(b, at)) | (static_cast<std::uint64_t>(u32(b, at + 4)) << 32);
+}
+void put16(std::string& out, std::uint32_t v) {
+  out += static_cast<char>(v & 0xFF);
+  out += static_cast<char>((v >> 8) & 0xFF);
+}
+void put32(std::string& out, std::uint32_t v) {
+  put16(out, v & 0xFFFF);
+  put16(out, v >> 16);
+}
+
+// Value of `key` in the header dict, e.g. "'<f4'" or "(3, 4)" or "False".
+std::string headerValue(const std::string& header, const std::string& key, const fs::path& source) {
+  const auto at = header.find("'" + key + "'");
+  if (at == std::string::npos) throw FileError(source, "npy header has no '" + key + "'");
+  std::size_t start = header.find(':', at);
+  if (start == std::string::npos) throw FileError(source, "npy header is malformed");
+  ++start;
+  while (start < header.size() && header[start] == ' ') ++start;
+  std::size_t end = start;
+  if (start < header.size() && header[start] == '(') {
+    end = header.find(')', start);
+    if (end == std::string::npos) throw FileError(source, "npy header has an unterminated shape");
+    return header.substr(start, end - start + 1);
+  }
+  while (end < header.size() && header[end] != ',' && header[end] != '}') ++end;
+  std::string value = header.substr(start, end - start);
+  while (!value.empty() && value.back() == ' ') value.pop_back();
+  return value;
+}
+
+std::vector<std::size_t> parseShape(const std::string& text, const fs::path& source) {
+  std::vector<std::size_t> shape;
+  std::size_t i = 1;  // after '('
+  while (i < text.size()) {
+    while (i < text.size() && (text[i] == ' ' || text[i] == ',')) ++i;
+    if (i >= text.size() || text[i] == ')') break;
+    if (!std::isdigit(static_cast<unsigned char>(text[i]))) {
+      throw FileError(source, "npy header has a malformed shape " + text);
+    }
+    std::size_t value = 0;
+    while (i < text.size() && std::isdigit(static_cast<unsigned char>(text[i]))) {
+      value = value * 10 + static_cast<std::size_t>(text[i] - '0');
+      if (value > (std::size_t{1} << 48)) throw FileError(source, "npy shape is implausibly large");
+      ++i;
+    }
+    shape.push_back(value);
+  }
+  return shape;
+}
+
+}  // namespace
+
+std::size_t NpyArray::elementCount() const {
+  std::size_t n = 1;
+  for (std::size_t s : shape) n *= s;
+  return n;
+}
+
+std::size_t NpyArray::itemSize() const {
+  const DtypeInfo* info = findByName(dtype);
+  if (!info) throw InvalidArgument("npy: unsupported dtype '" + dtype + "'");
+  return info->size;
+}
+
+std::vector<double> NpyArray::asDouble() const {
+  const std::size_t n = elementCount();
+  std::vector<double> values(n);
+  auto convert = [&](auto tag) {
+    using T = decltype(tag);
+    for (std::size_t i = 0; i < n; ++i) {
+      T v;
+      std::memcpy(&v, data.data() + i * sizeof(T), sizeof(T));
+      values[i] = static_cast<double>(v);
+    }
+  };
+  if (dtype == "uint8" || dtype == "bool") convert(std::uint8_t{});
+  else if (dtype == "int32") convert(std::int32_t{});
+  else if (dtype == "int64") convert(std::int64_t{});
+  else if (dtype == "float32") convert(float{});
+  else if (dtype == "float64") convert(double{});
+  else throw InvalidArgument("npy: unsupported dtype '" + dtype + "'");
+  return values;
+}
+
+NpyArray parseNpy(std::string_view bytes, const fs::path& source) {
+  if (bytes.size() < 10 || bytes.substr(0, 6) != std::string_view("\x93NUMPY", 6)) {
+    throw FileError(source, "is not a NumPy .npy array (bad magic)");
+  }
+  const int major = static_cast<unsigned char>(bytes[6]);
+  std::size_t headerLength, headerStart;
+  if (major == 1) {
+    headerLength = u16(bytes, 8);
+    headerStart = 10;
+  } else if (major == 2 || major == 3) {
+    if (bytes.size() < 12) throw FileError(source, "npy file is truncated");
+    headerLength = u32(bytes, 8);
+    headerStart = 12;
+  } else {
+    throw FileError(source, "npy format version " + std::to_string(major) + " is not supported");
+  }
+  if (headerStart + headerLength > bytes.size()) throw FileError(source, "npy header is truncated");
+  const std::string header(bytes.substr(headerStart, headerLength));
+
+  std::string descr = headerValue(header, "descr", source);
+  if (descr.size() < 2 || (descr.front() != '\'' && descr.front() != '"')) {
+    throw FileError(source, "npy dtype " + descr + " is not supported (structured arrays?)");
+  }
+  descr = descr.substr(1, descr.size() - 2);
+  const DtypeInfo* info = findByDescr(descr);
+  if (!info) {
+    throw FileError(source, "npy dtype '" + descr +
+                                "' is not supported (expected little-endian uint8, int32, int64, "
+                                "float32, float64 or bool)");
+  }
+  if (headerValue(header, "fortran_order", source) != "False") {
+    throw FileError(source, "npy array is in Fortran order; save it C-contiguous");
+  }
+  NpyArray array;
+  array.dtype = info->name;
+  array.shape = parseShape(headerValue(header, "shape", source), source);
+  const std::size_t expected = array.elementCount() * info->size;
+  const std::size_t available = bytes.size() - headerStart - headerLength;
+  if (available < expected) {
+    throw FileError(source, "npy data is truncated (" + std::to_string(available) + " of " +
+                                std::to_string(expected) + " bytes)");
+  }
+  const auto* begin = reinterpret_cast<const std::uint8_t*>(bytes.data() + headerStart + headerLength);
+  array.data.assign(begin, begin + expected);
+  return array;
+}
+
+std::string serializeNpy(const NpyArray& array) {
+  const DtypeInfo* info = findByName(array.dtype);
+  if (!info) throw InvalidArgument("npy: unsupported dtype '" + array.dtype + "'");
+  if (array.data.size() != array.elementCount() * info->size) {
+    throw InvalidArgument("npy: " + std::to_string(array.data.size()) + " data bytes do not fit shape and dtype " +
+                          array.dtype);
+  }
+  std::string shape = "(";
+  for (std::size_t i = 0; i < array.shape.size(); ++i) {
+    shape += std::to_string(array.shape[i]) + (array.shape.size() == 1 ? "," : (i + 1 < array.shape.size() ? ", " : ""));
+  }
+  shape += ")";
+  std::string header = std::string("{'descr': '") + info->descr + "', 'fortran_order': False, 'shape': " +
+                       shape + ", }";
+  // numpy pads the header with spaces and a newline so the data starts 64-byte aligned.
+  const std::size_t total = 10 + header.size() + 1;
+  header.append((64 - total % 64) % 64, ' ');
+  header += '\n';
+  std::string out("\x93NUMPY\x01\x00", 8);
+  put16(out, static_cast<std::uint32_t>(header.size()));
+  out += header;
+  out.append(reinterpret_cast<const char*>(array.data.data()), array.data.size());
+  return out;
+}
+
+NpyArray readNpy(const fs::path& path) { return parseNpy(readFileBytes(path), path); }
+
+void writeNpy(const fs::path& path, const NpyArray& array) { writeFileAtomic(path, serializeNpy(array)); }
+
+namespace {
+
+std::string inflateRaw(std::string_view compressed, std::size_t size, const fs::path& source,
+                       const std::string& entry) {
+  std::string out(size, '\0');
+  z_stream stream{};
+  if (inflateInit2(&stream, -MAX_WBITS) != Z_OK) throw FileError(source, "zlib initialisation failed");
+  stream.next_in = reinterpret_cast<Bytef*>(const_cast<char*>(compressed.data()));
+  stream.avail_in = static_cast<uInt>(compressed.size());
+  stream.next_out = reinterpret_cast<Bytef*>(out.data());
+  stream.avail_out = static_cast<uInt>(out.size());
+  const int status = inflate(&stream, Z_FINISH);
+  const std::size_t produced = stream.total_out;
+  inflateEnd(&stream);
+  if (status != Z_STREAM_END || produced != size) {
+    throw FileError(source, "entry '" + entry + "' is corrupt (deflate data does not decompress)");
+  }
+  return out;
+}
+
+}  // namespace
+
+NpzArchive readNpz(const fs::path& path) {
+  const std::string bytes = readFileBytes(path);
+  const std::string_view b(bytes);
+  // End of central directory: 22 bytes plus a comment of at most 64 KiB at the end of the file.
+  if (b.size() < 22) throw FileError(path, "is not an .npz (zip) archive: too short");
+  std::size_t eocd = std::string_view::npos;
+  const std::size_t lowest = b.size() > 22 + 65535 ? b.size() - 22 - 65535 : 0;
+  for (std::size_t at = b.size() - 22 + 1; at-- > lowest;) {
+    if (u32(b, at) == 0x06054b50) {
+      eocd = at;
+      break;
+    }
+  }
+  if (eocd == std::string_view::npos) throw FileError(path, "is not an .npz (zip) archive or is truncated");
+  std::uint64_t entries = u16(b, eocd + 10);
+  std::uint64_t directoryOffset = u32(b, eocd + 16);
+  if (directoryOffset == 0xFFFFFFFFu && eocd >= 20 && u32(b, eocd - 20) == 0x07064b50) {
+    const std::uint64_t zip64End = u64(b, eocd - 20 + 8);  // zip64 end of central directory
+    if (zip64End + 56 > b.size() || u32(b, zip64End) != 0x06064b50) {
+      throw FileError(path, "zip64 directory is corrupt");
+    }
+    entries = u64(b, zip64End + 32);
+    directoryOffset = u64(b, zip64End + 48);
+  }
+
+  NpzArchive archive;
+  std::size_t at = directoryOffset;
+  for (std::uint64_t e = 0; e < entries; ++e) {
+    if (at + 46 > b.size() || u32(b, at) != 0x02014b50) throw FileError(path, "zip central directory is corrupt");
+    const int method = u16(b, at + 10);
+    const std::uint32_t crc = u32(b, at + 16);
+    std::uint64_t compressedSize = u32(b, at + 20), size = u32(b, at + 24);
+    const std::size_t nameLength = u16(b, at + 28), extraLength = u16(b, at + 30), commentLength = u16(b, at + 32);
+    std::uint64_t localOffset = u32(b, at + 42);
+    if (at + 46 + nameLength + extraLength > b.size()) throw FileError(path, "zip central directory is truncated");
+    const std::string name(b.substr(at + 46, nameLength));
+    // Zip64 extra field: the 64-bit values of whichever fields were saturated, in this order.
+    for (std::size_t x = at + 46 + nameLength; x + 4 <= at + 46 + nameLength + extraLength;) {
+      const std::size_t id = u16(b, x), length = u16(b, x + 2);
+      if (id == 0x0001) {
+        std::size_t field = x + 4;
+        if (size == 0xFFFFFFFFu) size = u64(b, field), field += 8;
+        if (compressedSize == 0xFFFFFFFFu) compressedSize = u64(b, field), field += 8;
+        if (localOffset == 0xFFFFFFFFu) localOffset = u64(b, field);
+      }
+      x += 4 + length;
+    }
+    at += 46 + nameLength + extraLength + commentLength;
+
+    if (localOffset + 30 > b.size() || u32(b, localOffset) != 0x04034b50) {
+      throw FileError(path, "entry '" + name + "' is corrupt (bad local header)");
+    }
+    const std::size_t dataStart = localOffset + 30 + u16(b, localOffset + 26) + u16(b, localOffset + 28);
+    if (dataStart + compressedSize > b.size()) throw FileError(path, "entry '" + name + "' is truncated");
+    const std::string_view stored = b.substr(dataStart, compressedSize);
+    std::string content;
+    if (method == 0) {
+      content = std::string(stored);
+    } else if (method == 8) {
+      content = inflateRaw(stored, size, path, name);
+    } else {
+      throw FileError(path, "entry '" + name + "' uses zip compression method " + std::to_string(method) +
+                                " (only stored and deflate are supported)");
+    }
+    if (crc32(0L, reinterpret_cast<const Bytef*>(content.data()), static_cast<uInt>(content.size())) != crc) {
+      throw FileError(path, "entry '" + name + "' is corrupt (CRC mismatch)");
+    }
+    std::string key = name;
+    if (key.size() > 4 && key.compare(key.size() - 4, 4, ".npy") == 0) key.resize(key.size() - 4);
+    archive[key] = parseNpy(content, path.string() + ":" + name);
+  }
+  return archive;
+}
+
+void writeNpz(const fs::path& path, const NpzArchive& archive) {
+  std::string out, directory;
+  std::uint32_t count = 0;
+  for (const auto& [key, array] : archive) {
+    const std::string name = key + ".npy";
+    const std::string content = serializeNpy(array);
+    if (content.size() >= 0xFFFFFFFFu || out.size() >= 0xFFFFFFFFu) {
+      throw FileError(path, "array '" + key + "' is too large for a non-zip64 archive");
+    }
+    const std::uint32_t crc = static_cast<std::uint32_t>(
+        crc32(0L, reinterpret_cast<const Bytef*>(content.data()), static_cast<uInt>(content.size())));
+    const auto offset = static_cast<std::uint32_t>(out.size());
+    auto common = [&](std::string& h) {
+      put16(h, 20);      // version needed: 2.0
+      put16(h, 0);       // flags
+      put16(h, 0);       // method: stored
+      put16(h, 0);       // time
+      put16(h, 0x21);    // date: 1980-01-01
+      put32(h, crc);
+      put32(h, static_cast<std::uint32_t>(content.size()));
+      put32(h, static_cast<std::uint32_t>(content.size()));
+      put16(h, static_cast<std::uint32_t>(name.size()));
+      put16(h, 0);       // extra length
+    };
+    put32(out, 0x04034b50);
+    common(out);
+    out += name;
+    out += content;
+
+    put32(directory, 0x02014b50);
+    put16(directory, 20);  // version made by
+    common(directory);
+    put16(directory, 0);   // comment length
+    put16(directory, 0);   // disk number
+    put16(directory, 0);   // internal attributes
+    put32(directory, 0);   // external attributes
+    put32(directory, offset);
+    directory += name;
+    ++count;
+  }
+  const auto directoryOffset = static_cast<std::uint32_t>(out.size());
+  out += directory;
+  put32(out, 0x06054b50);
+  put16(out, 0);
+  put16(out, 0);
+  put16(out, count);
+  put16(out, count);
+  put32(out, static_cast<std::uint32_t>(directory.size()));
+  put32(out, directoryOffset);
+  put16(out, 0);
+  writeFileAtomic(path, out);
+}
+
+}  // namespace sagrid
