@@ -71,7 +71,7 @@ void Dinov2Encoder::encode(const std::vector<const RenderedView*>& views,
     torch::NoGradGuard noGrad;
     const c10::IValue result = m_impl->module.forward({input});
     if (!result.isTensor()) {
-      throw ModelError(m_file.string() + ": DINOv2 model must return one tensor [B, " +
+      throw ModelError(m_file.string() + ": DINOv2 model must return one tensor [" + std::to_string(batch) + ", " +
                        std::to_string(patchGrid() * patchGrid()) + ", " +
                        std::to_string(m_channels) + "] (pre-norm patch tokens), got " +
                        result.tagKind());

@@ -1,6 +1,7 @@
 // Per-voxel statistics of the surface itself (not of the views): area, area-weighted albedo and
-// the normal structure tensor, from stratified point samples on every triangle (a few samples per
-// voxel face, so large flat triangles are spread over all the voxels they cross).
+// the normal structure tensor. Exact: every triangle is clipped against the voxels it crosses
+// (slab by slab, so the cost follows the voxels touched), and the albedo of each piece is taken
+// at the piece's centroid.
 #pragma once
 
 #include <array>
@@ -19,9 +20,8 @@ struct VoxelSurfaceStats {
 };
 
 // One entry per occupied voxel of `grid`, in grid.occupiedVoxels() order. `normalizedMesh` is the
-// mesh `grid` was voxelized from. samplesPerVoxelFace sets the sampling density.
-std::vector<VoxelSurfaceStats> voxelSurfaceStats(const Mesh& normalizedMesh, const VoxelGrid& grid,
-                                                 float samplesPerVoxelFace = 4.0f);
+// mesh `grid` was voxelized from. A face lying exactly on a voxel boundary counts in both voxels.
+std::vector<VoxelSurfaceStats> voxelSurfaceStats(const Mesh& normalizedMesh, const VoxelGrid& grid);
 
 // Linear voxel index -> position in grid.occupiedVoxels(), -1 for empty voxels.
 std::vector<int> occupiedSlots(const VoxelGrid& grid);

@@ -1,0 +1,77 @@
+#include "core/mesh/mesh_files.h"
+
+#include <algorithm>
+#include <cctype>
+#include <set>
+
+#include "core/common/error.h"
+#include "core/mesh/mesh_import.h"
+
+namespace sagrid {
+
+namespace {
+std::string lower(std::string s) {
+  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return std::tolower(c); });
+  return s;
+}
+
+bool supported(const std::filesystem::path& p) {
+  const auto& exts = supportedMeshExtensions();
+  return std::find(exts.begin(), exts.end(), lower(p.extension().string())) != exts.end();
+}
+
+// "a/b/mesh.obj" -> "a__b", "a/chair.glb" -> "a__chair" (relative to the listed folder).
+std::string idFor(const std::filesystem::path& relative) {
+  std::filesystem::path stemPath = relative.parent_path();
+  if (lower(relative.stem().string()) != "mesh" || stemPath.empty()) {
+    stemPath /= relative.stem();
+  }
+  std::string id;
+  for (const auto& part : stemPath) {
+    if (!id.empty()) id += "__";
+    id += part.string();
+  }
+  return id;
+}
+}  // namespace
+
+std::vector<MeshFile> findMeshFiles(const std::filesystem::path& fileOrDir) {
+  std::error_code ec;
+  if (!std::filesystem::exists(fileOrDir, ec)) throw FileError(fileOrDir, "no such file or directory");
+  if (!std::filesystem::is_directory(fileOrDir, ec)) {
+    if (!supported(fileOrDir)) {
+      throw FileError(fileOrDir, "not a supported mesh file (use .obj, .glb, .gltf, .fbx, .dae, "
+                                 ".ply or .stl)");
+    }
+    const std::string stem = lower(fileOrDir.stem().string()) == "mesh" && fileOrDir.has_parent_path()
+                                 ? fileOrDir.parent_path().filename().string()
+                                 : fileOrDir.stem().string();
+    return {{fileOrDir, stem.empty() ? fileOrDir.stem().string() : stem}};
+  }
+  std::vector<std::filesystem::path> found;
+  auto it = std::filesystem::recursive_directory_iterator(
+      fileOrDir, std::filesystem::directory_options::skip_permission_denied, ec);
+  if (ec) throw FileError(fileOrDir, "cannot list folder: " + ec.message());
+  for (; it != std::filesystem::recursive_directory_iterator(); it.increment(ec)) {
+    if (ec) throw FileError(fileOrDir, "cannot list folder: " + ec.message());
+    const auto name = it->path().filename().string();
+    if (!name.empty() && name[0] == '.') {
+      if (it->is_directory()) it.disable_recursion_pending();
+      continue;
+    }
+    if (it->is_regular_file() && supported(it->path())) found.push_back(it->path());
+  }
+  std::sort(found.begin(), found.end());
+  std::vector<MeshFile> files;
+  std::set<std::string> used;
+  for (const auto& p : found) {
+    std::string id = idFor(std::filesystem::relative(p, fileOrDir));
+    // Two meshes in one object folder (mesh.obj and mesh.glb): keep both, distinguishable.
+    if (used.count(id)) id += "__" + lower(p.extension().string()).substr(1);
+    used.insert(id);
+    files.push_back({p, id});
+  }
+  return files;
+}
+
+}  // namespace sagrid

@@ -1,0 +1,22 @@
+// Finding the mesh files of a folder for batch commands (extract, annotate): every file with an
+// extension importMesh supports, recursively, in a stable order, each with an object id derived
+// from its path (the dataset layout DIR/<id>/mesh.<ext> gives <id>).
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace sagrid {
+
+struct MeshFile {
+  std::filesystem::path path;
+  std::string id;  // unique within one listing
+};
+
+// A file gives itself (id from its name, or its folder's name when it is called mesh.<ext>);
+// a folder gives all supported mesh files below it, sorted by path, hidden entries skipped.
+// Throws FileError when the path does not exist or is a file of an unsupported type.
+std::vector<MeshFile> findMeshFiles(const std::filesystem::path& fileOrDir);
+
+}  // namespace sagrid
