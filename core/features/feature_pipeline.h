@@ -68,6 +68,8 @@ FeatureGrid computeFeatures(const Mesh& mesh, const FeatureOptions& options);
 
 // Imports the mesh file and computes its features, reading/writing the cache in
 // options.cacheDir when set. Corrupt or stale cache entries are rebuilt, never trusted.
-FeatureGrid extractFeatures(const std::filesystem::path& meshFile, const FeatureOptions& options);
+// `fromCache` (optional) tells whether the result came from the cache.
+FeatureGrid extractFeatures(const std::filesystem::path& meshFile, const FeatureOptions& options,
+                            bool* fromCache = nullptr);
 
 }  // namespace sagrid
