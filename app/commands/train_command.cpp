@@ -1,0 +1,144 @@
+// `sagrid train`: one model from a dataset (--data DIR --model category.type), or the four shipped
+// models (--preset default: generates the bench split when missing, trains on its train half,
+// writes resources/models/). Parsing and progress display only; the work is in core/training.
+#include <CLI/CLI.hpp>
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <memory>
+#include <sstream>
+
+#include "app/command_registry.h"
+#include "app/progress_bar.h"
+#include "core/common/error.h"
+#include "core/generate/dataset_generator.h"
+#include "core/model/architecture.h"
+#include "core/training/dataset_training.h"
+
+namespace {
+namespace fs = std::filesystem;
+
+struct TrainCommandOptions {
+  std::string data, model, arch, mode = "sparse", out, preset, backend = "embedded", cache;
+  int epochs = 0;
+  double minutes = 0;
+  int batch = 4;
+  double lr = 3e-3;
+  unsigned seed = 1;
+  bool resume = false;
+};
+
+fs::path defaultBenchDir() {
+  if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg && *xdg) return fs::path(xdg) / "sagrid" / "bench";
+  if (const char* home = std::getenv("HOME"); home && *home) return fs::path(home) / ".cache" / "sagrid" / "bench";
+  return fs::path(".sagrid-data") / "bench";
+}
+
+std::string commandLine(const TrainCommandOptions& o, const std::string& data, const std::string& model,
+                        const std::string& out) {
+  std::ostringstream s;
+  s << "sagrid train --data " << data << " --model " << model << " --out " << out;
+  if (!o.arch.empty()) s << " --arch \"" << o.arch << "\"";
+  s << " --mode " << o.mode << " --backend " << o.backend;
+  if (o.epochs) s << " --epochs " << o.epochs;
+  if (o.minutes > 0) s << " --minutes " << o.minutes;
+  s << " --batch " << o.batch << " --lr " << o.lr << " --seed " << o.seed;
+  return s.str();
+}
+
+sagrid::DatasetTrainingResult trainOne(const TrainCommandOptions& o, const fs::path& data,
+                                       const std::string& model, const fs::path& out) {
+  sagrid::DatasetTrainingOptions t;
+  t.dataDir = data;
+  t.modelName = model;
+  t.architecture = o.arch;
+  t.mode = o.mode;
+  t.outDir = out;
+  t.features.backend = o.backend;
+  if (!o.cache.empty()) t.features.cacheDir = o.cache;
+  t.training.epochs = o.epochs;
+  t.training.minutes = o.minutes;
+  t.training.batchSize = o.batch;
+  t.training.learningRate = o.lr;
+  t.training.seed = o.seed;
+  t.training.resume = o.resume;
+  t.command = commandLine(o, data.string(), model, out.string());
+  std::unique_ptr<sagrid::app::ProgressBar> featureBar, trainBar;
+  std::size_t barSteps = 0;
+  t.onFeatureProgress = [&](std::size_t done, std::size_t total, const std::string& id) {
+    if (!featureBar) featureBar = std::make_unique<sagrid::app::ProgressBar>("features " + model, total);
+    featureBar->update(done, id);
+    if (done == total) featureBar->finish();
+  };
+  t.training.onProgress = [&](const sagrid::model::TrainingProgress& p) {
+    if (!trainBar || barSteps != p.steps) {  // the total is fixed after a timed first epoch
+      trainBar = std::make_unique<sagrid::app::ProgressBar>("train " + model, p.steps);
+      barSteps = p.steps;
+    }
+    char status[96];
+    std::snprintf(status, sizeof status, "epoch %d/%d loss %.4f", p.epoch, p.epochs, p.loss);
+    trainBar->update(p.step, status);
+  };
+  sagrid::DatasetTrainingResult r = sagrid::trainFromDataset(t);
+  if (trainBar) trainBar->finish();
+  std::fprintf(stderr,
+               "%s: %zu objects (%zu without %s skipped, %zu failed), features %.1f s, training %.1f s, "
+               "final loss %.4f -> %s\n",
+               model.c_str(), r.objectsUsed, r.objectsSkipped, r.card.type.c_str(), r.objectsFailed,
+               r.featureSeconds, r.trainingSeconds, r.curve.empty() ? 0.0 : r.curve.back().loss,
+               r.cardFile.string().c_str());
+  return r;
+}
+
+void setupTrain(CLI::App& root) {
+  auto* cmd = root.add_subcommand(
+      "train",
+      "Train a SAGrid model (one per category.type) on a dataset folder, or the four shipped models "
+      "with --preset default. Writes <out>/<model>.pt + .json (model card) + loss curve CSV/PNG; "
+      "checkpoints every epoch (--resume continues).");
+  auto o = std::make_shared<TrainCommandOptions>();
+  cmd->add_option("--data", o->data, "Dataset folder (manifest.jsonl or object folders); with --preset: "
+                                     "where the bench split is (generated when missing)");
+  cmd->add_option("--model", o->model, "Model to train: <category>.<type>, e.g. stove.heatsource");
+  cmd->add_option("--arch", o->arch, std::string("CNN architecture, Table I notation (default ") +
+                                         sagrid::model::kDefaultArchitecture + ")");
+  cmd->add_option("--mode", o->mode, "sparse (default, CPU) or dense (Conv3d over the full grid)")
+      ->check(CLI::IsMember({"sparse", "dense"}));
+  cmd->add_option("--epochs", o->epochs, "Epochs (default: from --minutes, else 40)")->check(CLI::NonNegativeNumber);
+  cmd->add_option("--minutes", o->minutes, "Time budget; sets the epoch count after timing the first epoch")
+      ->check(CLI::NonNegativeNumber);
+  cmd->add_option("--batch", o->batch, "Objects per step (default 4)")->check(CLI::PositiveNumber);
+  cmd->add_option("--lr", o->lr, "Peak learning rate of AdamW (cosine schedule; default 3e-3)")
+      ->check(CLI::PositiveNumber);
+  cmd->add_option("--seed", o->seed, "Random seed (weights, order, augmentation)");
+  cmd->add_option("--out", o->out, "Output folder (default resources/models with --preset, else models)");
+  cmd->add_option("--backend", o->backend, "Feature backend (default embedded)");
+  cmd->add_option("--cache", o->cache, "Feature cache folder (default DATA/.sagrid-cache)");
+  cmd->add_flag("--resume", o->resume, "Continue from <out>/<model>.checkpoint when it exists");
+  cmd->add_option("--preset", o->preset, "default: the four shipped models on the generated bench split")
+      ->check(CLI::IsMember({"default"}));
+  cmd->callback([o] {
+    if (o->preset == "default") {
+      const fs::path data = o->data.empty() ? defaultBenchDir() : fs::path(o->data);
+      const fs::path out = o->out.empty() ? fs::path("resources/models") : fs::path(o->out);
+      if (!fs::exists(data / "train" / "manifest.jsonl")) {
+        std::fprintf(stderr, "generating the bench split into %s\n", data.string().c_str());
+        sagrid::app::ProgressBar bar("generate", 0);
+        sagrid::gen::generateBenchPreset(data, [&](int done, int) { bar.update(static_cast<std::size_t>(done)); });
+      }
+      TrainCommandOptions preset = *o;
+      if (preset.epochs == 0 && preset.minutes == 0) preset.minutes = 12;
+      if (preset.cache.empty()) preset.cache = (data / ".sagrid-cache").string();  // shared by both splits
+      for (const auto& name : sagrid::defaultModelNames()) trainOne(preset, data / "train", name, out);
+      return;
+    }
+    if (o->data.empty()) throw sagrid::InvalidArgument("--data is required (or --preset default)");
+    if (o->model.empty()) throw sagrid::InvalidArgument("--model is required, e.g. --model stove.heatsource");
+    trainOne(*o, o->data, o->model, o->out.empty() ? fs::path("models") : fs::path(o->out));
+  });
+}
+
+}  // namespace
+
+SAGRID_REGISTER_COMMAND("train", setupTrain);
