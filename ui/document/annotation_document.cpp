@@ -43,9 +43,9 @@ Eigen::Vector3f AnnotationDocument::toFile(const Eigen::Vector3f& viewPoint) con
 void AnnotationDocument::execute(std::unique_ptr<Command> command) {
   const bool removes = dynamic_cast<DeletePointCommand*>(command.get()) != nullptr;
   const std::string what = command->description();
-  const int selectAfter = command->selectionAfterApply();
+  const Command* applied = command.get();
   m_history.execute(std::move(command), m_labels);
-  if (selectAfter >= 0) m_selected = selectAfter;
+  if (applied->selectionAfterApply() >= 0) m_selected = applied->selectionAfterApply();
   if (removes) m_removedPoint = true, m_selected = -1;
   logger()->info("{}: {}", displayName(), what);
   changed();

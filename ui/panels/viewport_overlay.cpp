@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -58,7 +59,8 @@ void legend(const Session& session, const SceneRenderer& scene, ImDrawList* draw
   const ViewportRect& vp = session.viewport();
   const float mpu = session.document()->metersPerUnit();
   const float colorMax = f.colorMax > 0 ? f.colorMax : scene.field().largestDistance();
-  const float w = 220, h = 12;
+  const float w = std::min(220.0f, vp.width - 120.0f), h = 12;  // leaves room for the axes gizmo
+  if (w < 80.0f) return;
   const ImVec2 at(vp.x + vp.width - w - 24, vp.y + vp.height - 52);
   draw->AddRectFilled(ImVec2(at.x - 10, at.y - 24), ImVec2(at.x + w + 10, at.y + h + 22), IM_COL32(20, 22, 26, 190), 5.0f);
   draw->AddText(ImVec2(at.x, at.y - 20), IM_COL32(220, 224, 230, 255), "distance to nearest point");
@@ -70,7 +72,10 @@ void legend(const Session& session, const SceneRenderer& scene, ImDrawList* draw
   }
   for (int k = 0; k <= 4; ++k) {
     char label[32];
-    std::snprintf(label, sizeof label, k == 4 ? "%.2f m" : "%.2f", colorMax * mpu * float(k) / 4.0f);
+    // Enough decimals that the ticks differ (small objects span millimetres).
+    const float top = colorMax * mpu;
+    const char* format = top >= 0.4f ? (k == 4 ? "%.2f m" : "%.2f") : (k == 4 ? "%.3f m" : "%.3f");
+    std::snprintf(label, sizeof label, format, top * float(k) / 4.0f);
     const float x = at.x + w * float(k) / 4.0f;
     draw->AddLine(ImVec2(x, at.y + h), ImVec2(x, at.y + h + 3), IM_COL32(220, 224, 230, 255));
     const float tw = ImGui::CalcTextSize(label).x;
@@ -124,8 +129,10 @@ void drawStatusBar(Session& session) {
     if (ImGui::SmallButton("cancel")) session.cancelPrediction();
     ImGui::SameLine();
   }
-  ImGui::SetCursorPosX(display.x - 130);
-  ImGui::TextDisabled("H: shortcuts");
+  if (ImGui::GetCursorPosX() < display.x - 130) {
+    ImGui::SetCursorPosX(display.x - 130);
+    ImGui::TextDisabled("H: shortcuts");
+  }
   ImGui::End();
   ImGui::PopStyleVar(2);
 }

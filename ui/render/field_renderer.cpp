@@ -1,16 +1,13 @@
 #include "ui/render/field_renderer.h"
 
 #include <cmath>
+#include <limits>
 
 #include "core/common/error.h"
 
 namespace sagrid::ui {
 
 namespace {
-struct Instance {
-  float voxel[4];  // centre xyz, distance
-  float type;
-};
 // The +x, +y and +z faces of the unit cube {0,1}^3 (7 distinct corners); voxel.vert mirrors them
 // towards the eye, so these are always the visible faces.
 const float kCorners[] = {1, 0, 0, 1, 1, 0, 1, 1, 1, 1, 0, 1, 0, 1, 0, 0, 1, 1, 0, 0, 1};
@@ -25,7 +22,6 @@ FieldRenderer::FieldRenderer() : m_program("voxel.vert", "voxel.frag") {
   m_uVoxelSize = m_program.uniform("uVoxelSize");
   m_uThreshold = m_program.uniform("uThreshold");
   m_uMaxDistance = m_program.uniform("uMaxDistance");
-  m_uTypeMask = m_program.uniform("uTypeMask");
   m_uSliceAxis = m_program.uniform("uSliceAxis");
   m_uSlicePosition = m_program.uniform("uSlicePosition");
   m_uOpacity = m_program.uniform("uOpacity");
@@ -43,41 +39,52 @@ FieldRenderer::FieldRenderer() : m_program("voxel.vert", "voxel.frag") {
   glBufferData(GL_ELEMENT_ARRAY_BUFFER, sizeof kFaceIndices, kFaceIndices, GL_STATIC_DRAW);
   glBindBuffer(GL_ARRAY_BUFFER, m_instanceBuffer.id());
   glEnableVertexAttribArray(1);
-  glVertexAttribPointer(1, 4, GL_FLOAT, GL_FALSE, sizeof(Instance), reinterpret_cast<void*>(offsetof(Instance, voxel)));
+  glVertexAttribPointer(1, 4, GL_FLOAT, GL_FALSE, 4 * sizeof(float), nullptr);
   glVertexAttribDivisor(1, 1);
-  glEnableVertexAttribArray(2);
-  glVertexAttribPointer(2, 1, GL_FLOAT, GL_FALSE, sizeof(Instance), reinterpret_cast<void*>(offsetof(Instance, type)));
-  glVertexAttribDivisor(2, 1);
   glBindVertexArray(0);
 }
 
-void FieldRenderer::upload(const std::vector<DistanceField>& fields) {
+void FieldRenderer::upload(const std::vector<DistanceField>& fields, std::uint32_t typeMask) {
   if (fields.size() > 32) throw Error("at most 32 distance fields can be shown at once");
-  std::size_t total = 0;
-  for (const auto& f : fields) total += f.voxels.size();
-  std::vector<Instance> instances;
-  instances.reserve(total);
   m_types.clear();
   m_largestDistance = 0.0f;
   m_bounds.setEmpty();
-  m_voxelSize = fields.empty() ? 0.0f : fields.front().voxelSize();
+  m_instances4.clear();
+  const DistanceField* first = nullptr;
   for (std::size_t f = 0; f < fields.size(); ++f) {
-    const DistanceField& field = fields[f];
-    m_types.push_back(field.type);
-    for (std::size_t i = 0; i < field.voxels.size(); ++i) {
-      const Eigen::Vector3f c = field.center(i);
-      const float d = field.distances[i];
-      // Unreachable voxels (no point of this type) stay drawable at "far" with a huge distance.
-      const float shown = std::isfinite(d) ? d : 3.0e38f;
+    m_types.push_back(fields[f].type);
+    if (!first && ((typeMask >> f) & 1u)) first = &fields[f];
+  }
+  if (first) {
+    // All fields of one object share its grid; the minimum is taken on the dense grid.
+    const int n = first->resolution;
+    const std::size_t cells = std::size_t(n) * n * n;
+    m_nearest.assign(cells, std::numeric_limits<float>::quiet_NaN());
+    for (std::size_t f = 0; f < fields.size(); ++f) {
+      if (!((typeMask >> f) & 1u) || fields[f].resolution != n) continue;
+      const DistanceField& field = fields[f];
+      for (std::size_t i = 0; i < field.voxels.size(); ++i) {
+        const VoxelIndex& v = field.voxels[i];
+        float& slot = m_nearest[(std::size_t(v.i) * n + v.j) * n + v.k];
+        if (std::isnan(slot) || field.distances[i] < slot) slot = field.distances[i];
+      }
+    }
+    m_voxelSize = first->voxelSize();
+    for (std::size_t linear = 0; linear < cells; ++linear) {
+      const float d = m_nearest[linear];
+      if (std::isnan(d)) continue;
+      const VoxelIndex v{int(linear / (std::size_t(n) * n)), int((linear / n) % n), int(linear % n)};
+      const Eigen::Vector3f c = first->normalization.toMesh(voxelCenter(v, n));
+      // Unreachable voxels (no point of the shown types) stay drawable as "far".
       if (std::isfinite(d)) m_largestDistance = std::max(m_largestDistance, d);
       m_bounds.extend(c);
-      instances.push_back({{c.x(), c.y(), c.z(), shown}, static_cast<float>(f)});
+      m_instances4.insert(m_instances4.end(), {c.x(), c.y(), c.z(), std::isfinite(d) ? d : 3.0e38f});
     }
   }
   glBindBuffer(GL_ARRAY_BUFFER, m_instanceBuffer.id());
-  glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(instances.size() * sizeof(Instance)), instances.data(), GL_STATIC_DRAW);
+  glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(m_instances4.size() * sizeof(float)), m_instances4.data(), GL_STATIC_DRAW);
   glBindBuffer(GL_ARRAY_BUFFER, 0);
-  m_instances = instances.size();
+  m_instances = m_instances4.size() / 4;
 }
 
 void FieldRenderer::draw(const Camera& camera, const FieldSettings& settings) const {
@@ -89,7 +96,6 @@ void FieldRenderer::draw(const Camera& camera, const FieldSettings& settings) co
   const float colorMax = settings.colorMax > 0 ? settings.colorMax : std::max(m_largestDistance, 1e-6f);
   setUniform(m_uMaxDistance, colorMax);
   setUniform(m_uThreshold, settings.threshold > 0 ? settings.threshold : 3.0e38f);
-  setUniform(m_uTypeMask, static_cast<int>(settings.typeMask));
   setUniform(m_uSliceAxis, settings.sliceAxis);
   if (settings.sliceAxis >= 0 && !m_bounds.isEmpty()) {
     const int a = settings.sliceAxis;

@@ -1,8 +1,10 @@
-// Draws distance fields as instanced voxel cubes coloured by distance. Instances (centre,
-// distance, field index) are uploaded once per change of the fields; threshold, opacity, slice
-// plane and per-type toggles are uniforms, so the frame loop only draws.
+// Draws distance fields as instanced voxel cubes coloured by distance. Each voxel shows the
+// distance to the nearest point of the enabled types (the minimum over their fields), so several
+// types never fight over the same cube. Instances are uploaded once per change of the fields or
+// of the type toggles; threshold, opacity and slice plane are uniforms, so sliders only redraw.
 #pragma once
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -19,8 +21,8 @@ namespace sagrid::ui {
 class FieldRenderer {
  public:
   FieldRenderer();
-  // Uploads all voxels of all fields (at most 32 fields: one toggle bit each).
-  void upload(const std::vector<DistanceField>& fields);
+  // Uploads the voxels of the fields enabled in `typeMask` (bit i = fields[i]; at most 32).
+  void upload(const std::vector<DistanceField>& fields, std::uint32_t typeMask);
   void draw(const Camera& camera, const FieldSettings& settings) const;
 
   std::size_t instanceCount() const { return m_instances; }
@@ -30,7 +32,7 @@ class FieldRenderer {
 
  private:
   ShaderProgram m_program;
-  GLint m_uViewProj, m_uEye, m_uVoxelSize, m_uThreshold, m_uMaxDistance, m_uTypeMask, m_uSliceAxis,
+  GLint m_uViewProj, m_uEye, m_uVoxelSize, m_uThreshold, m_uMaxDistance, m_uSliceAxis,
       m_uSlicePosition, m_uOpacity;
   GlVertexArray m_vao;
   GlBuffer m_corners, m_indices, m_instanceBuffer;
@@ -39,6 +41,8 @@ class FieldRenderer {
   float m_largestDistance = 0.0f;
   Eigen::AlignedBox3f m_bounds;
   std::vector<std::string> m_types;
+  std::vector<float> m_nearest;  // dense per-voxel minimum, reused between uploads
+  std::vector<float> m_instances4;
 };
 
 }  // namespace sagrid::ui

@@ -48,6 +48,7 @@ class SceneRenderer {
   std::uint64_t m_revision = 0, m_fieldsRevision = 0;
   std::optional<DragPreview> m_drag;
   float m_markerPixels = 0;
+  std::uint32_t m_typeMask = ~0u;
   std::vector<MarkerInstance> m_markerInstances;
   std::vector<DistanceField> m_shownFields;
   bool m_predictedShown = false;
