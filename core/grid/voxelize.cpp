@@ -86,12 +86,35 @@ VoxelGrid voxelize(const Mesh& normalizedMesh, int resolution) {
       continue;
     }
     const TriangleTests tests(v0, v1, v2);
-    for (int i = i0; i <= i1; ++i) {
-      for (int j = j0; j <= j1; ++j) {
-        for (int k = k0; k <= k1; ++k) {
-          const VoxelIndex v{i, j, k};
+    const int first[3] = {i0, j0, k0}, last[3] = {i1, j1, k1};
+    // March along the axis where the normal is largest: in each column of voxels along it only
+    // the few near the plane can overlap, so the column is cut to the plane's slab (widened by a
+    // voxel against rounding) before the exact test runs. Large tilted triangles would otherwise
+    // test their whole bounding box.
+    int w = 0;
+    tests.normal.cwiseAbs().maxCoeff(&w);
+    const int a = (w + 1) % 3, b = (w + 2) % 3;
+    const double nw = tests.normal[w];
+    for (int ia = first[a]; ia <= last[a]; ++ia) {
+      for (int ib = first[b]; ib <= last[b]; ++ib) {
+        int lo = first[w], hi = last[w];
+        if (nw != 0.0) {
+          // |n . c - d| <= r with c[w] = iw + 0.5  <=>  iw + 0.5 in [(d - r - s) / nw, (d + r - s) / nw].
+          const double s = tests.normal[a] * (ia + 0.5) + tests.normal[b] * (ib + 0.5);
+          double t0 = (tests.planeOffset - tests.planeRadius - s) / nw - 0.5;
+          double t1 = (tests.planeOffset + tests.planeRadius - s) / nw - 0.5;
+          if (t0 > t1) std::swap(t0, t1);
+          lo = std::max(lo, static_cast<int>(std::max(std::floor(t0) - 1.0, -1.0)));
+          hi = std::min(hi, static_cast<int>(std::min(std::ceil(t1) + 1.0, static_cast<double>(resolution))));
+        }
+        for (int iw = lo; iw <= hi; ++iw) {
+          int index[3];
+          index[a] = ia;
+          index[b] = ib;
+          index[w] = iw;
+          const VoxelIndex v{index[0], index[1], index[2]};
           if (grid.occupied(v)) continue;
-          if (tests.overlapsVoxelCentredAt(Vec3(i + 0.5, j + 0.5, k + 0.5))) grid.setOccupied(v);
+          if (tests.overlapsVoxelCentredAt(Vec3(v.i + 0.5, v.j + 0.5, v.k + 0.5))) grid.setOccupied(v);
         }
       }
     }
