@@ -1,10 +1,12 @@
 #include "core/features/embedded_features.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 
 #include <Eigen/Eigenvalues>
 
+#include "core/common/log.h"
 #include "core/features/embedded_view_encoder.h"
 #include "core/features/surface_samples.h"
 #include "core/features/voxel_aggregation.h"
@@ -179,6 +181,7 @@ Result fromAggregates(const Mesh& mesh, const VoxelGrid& grid, const std::vector
 
 Result compute(const Mesh& mesh, const SurfaceScene& scene, const VoxelGrid& grid,
                std::uint64_t seed, const Settings& settings) {
+  const auto start = std::chrono::steady_clock::now();
   const std::vector<ViewCamera> cameras = trellisViews(settings.views, seed);
   const EmbeddedViewEncoder encoder(settings.renderSize);
   std::vector<Eigen::Vector3f> points;
@@ -201,7 +204,12 @@ Result compute(const Mesh& mesh, const SurfaceScene& scene, const VoxelGrid& gri
   for (int t = 1; t < threads; ++t) partial[0].merge(partial[t]);
   const int upper = static_cast<int>(std::count_if(
       cameras.begin(), cameras.end(), [](const ViewCamera& c) { return c.position().z() > 0.0f; }));
-  return fromAggregates(mesh, grid, partial[0].sums(), static_cast<int>(cameras.size()), upper);
+  const auto viewsDone = std::chrono::steady_clock::now();
+  Result result = fromAggregates(mesh, grid, partial[0].sums(), static_cast<int>(cameras.size()), upper);
+  logger()->debug("embedded features: views {:.3f} s, voxel channels {:.3f} s",
+                  std::chrono::duration<double>(viewsDone - start).count(),
+                  std::chrono::duration<double>(std::chrono::steady_clock::now() - viewsDone).count());
+  return result;
 }
 
 }  // namespace sagrid::embedded

@@ -165,7 +165,9 @@ FeatureGrid computeFeatures(const Mesh& mesh, const FeatureOptions& options) {
   out.normalization = Normalization::fromMesh(mesh);
   const Mesh normalized = normalizedCopy(mesh, out.normalization);
   const VoxelGrid grid = voxelize(normalized, options.resolution);
+  const double voxelizeSeconds = secondsSince(start);
   const SurfaceScene scene(normalized);
+  const double sceneSeconds = secondsSince(start) - voxelizeSeconds;
   const std::uint64_t seed = seedFromKey(mesh.sha256.empty() ? geometryKey(mesh) : mesh.sha256);
   const int renderSize = renderSizeOf(options, backend);
   const Aggregation aggregation = aggregationOf(options, backend);
@@ -220,8 +222,11 @@ FeatureGrid computeFeatures(const Mesh& mesh, const FeatureOptions& options) {
       break;
     }
   }
-  logger()->info("features ({}): {} voxels x {} channels in {:.2f} s", options.backend,
-                 out.voxels.size(), out.channels, secondsSince(start));
+  const double total = secondsSince(start);
+  logger()->info("features ({}): {} voxels x {} channels in {:.3f} s (normalize+voxelize {:.3f}, "
+                 "BVH {:.3f}, views+features {:.3f})",
+                 options.backend, out.voxels.size(), out.channels, total, voxelizeSeconds, sceneSeconds,
+                 total - voxelizeSeconds - sceneSeconds);
   return out;
 }
 

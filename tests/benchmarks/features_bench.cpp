@@ -94,6 +94,21 @@ void renderViews(benchmark::State& state, const fs::path& file) {
 void BM_RenderViews_Dense(benchmark::State& state) { renderViews(state, denseCopy(2)); }
 BENCHMARK(BM_RenderViews_Dense)->Arg(96)->Arg(518)->Unit(benchmark::kMillisecond)->UseRealTime();
 
+// The stages of a cold extraction, separately: import (assimp + hashing) and in-memory features.
+void BM_ImportMesh_Dense(benchmark::State& state) {
+  const fs::path file = denseCopy(2);
+  for (auto _ : state) benchmark::DoNotOptimize(sagrid::importMesh(file).positions.data());
+}
+BENCHMARK(BM_ImportMesh_Dense)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+void BM_ComputeEmbedded_Dense(benchmark::State& state) {
+  const sagrid::Mesh mesh = sagrid::importMesh(denseCopy(2));
+  sagrid::FeatureOptions options;
+  options.renderSize = static_cast<int>(state.range(0));
+  for (auto _ : state) benchmark::DoNotOptimize(sagrid::computeFeatures(mesh, options).values.data());
+}
+BENCHMARK(BM_ComputeEmbedded_Dense)->Arg(64)->Arg(96)->Arg(128)->Unit(benchmark::kMillisecond)->UseRealTime();
+
 // Mesh file -> features in a fresh cache (import, voxelize, render, aggregate, write the entry).
 void extractCold(benchmark::State& state, const fs::path& file) {
   sagrid::FeatureOptions options;
