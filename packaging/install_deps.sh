@@ -5,7 +5,9 @@ set -euo pipefail
 
 packages=(
   build-essential cmake ninja-build pkg-config ccache
-  libtorch-dev libembree-dev libassimp-dev libeigen3-dev
+  # libopenblas0-openmp: Debian's libtorch otherwise runs its matrix products on the reference BLAS
+  # (about 4x slower for the SAGrid network; measured with tests/benchmarks/model_bench).
+  libtorch-dev libopenblas0-openmp libembree-dev libassimp-dev libeigen3-dev
   libglfw3-dev libimgui-dev libegl-dev libgl-dev libegl-mesa0 libgl1-mesa-dri
   libgtest-dev libgmock-dev libbenchmark-dev
   libspdlog-dev libfmt-dev libcli11-dev nlohmann-json3-dev libstb-dev zlib1g-dev

@@ -198,8 +198,13 @@ std::vector<EpochRecord> trainModel(AffordanceModel& model, const std::vector<Tr
     }
     state.epochsDone = epoch;
     state.curve.push_back({epoch, lossSum / stepsPerEpoch, lr, secondsBefore + elapsed()});
-    if (!options.checkpointFile.empty())
+    if (!options.checkpointFile.empty()) {
+      const auto saveStart = Clock::now();
       saveCheckpoint(options.checkpointFile, net, optimizer, state, impl.card);
+      logger()->info("{}: epoch {} loss {:.5f}, checkpoint written in {:.2f} s", impl.card.name, epoch,
+                     state.curve.back().loss,
+                     std::chrono::duration<double>(Clock::now() - saveStart).count());
+    }
   }
   net->eval();
   return state.curve;
