@@ -47,7 +47,8 @@ void drawFieldPanel(Session& session, const SceneRenderer& scene) {
     ImGui::PopStyleColor();
     if (i + 1 < types.size()) ImGui::SameLine();
   }
-  ImGui::TextDisabled("%zu voxels, %d^3 grid", scene.field().instanceCount(), doc->gridResolution());
+  ImGui::TextDisabled("%d^3 grid: %zu voxels, %zu drawn", doc->gridResolution(), scene.field().voxelCount(),
+                      scene.field().instanceCount());
 }
 
 }  // namespace sagrid::ui

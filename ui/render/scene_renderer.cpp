@@ -19,7 +19,7 @@ void SceneRenderer::sync(const AnnotationDocument* document, const std::optional
       m_markerInstances.clear();
       m_markers.upload(m_markerInstances);
       m_shownFields.clear();
-      m_field.upload(m_shownFields, ~0u);
+      m_field.setFields(m_shownFields, ~0u);
     }
     return;
   }
@@ -38,13 +38,14 @@ void SceneRenderer::sync(const AnnotationDocument* document, const std::optional
   if (fieldsChanged || (pointsChanged && document->predictedFields().empty())) {
     m_predictedShown = !document->predictedFields().empty();
     m_shownFields = m_predictedShown ? document->predictedFields() : document->labelFields();
-    m_field.upload(m_shownFields, settings.field.typeMask);
+    m_field.setFields(m_shownFields, settings.field.typeMask);
     m_fieldsRevision = document->fieldsRevision();
     m_typeMask = settings.field.typeMask;
   } else if (settings.field.typeMask != m_typeMask) {
-    m_field.upload(m_shownFields, settings.field.typeMask);
+    m_field.setFields(m_shownFields, settings.field.typeMask);
     m_typeMask = settings.field.typeMask;
   }
+  m_field.prepare(settings.field);
   const bool dragChanged = drag.has_value() != m_drag.has_value() ||
                            (drag && (drag->index != m_drag->index || drag->position != m_drag->position));
   if (pointsChanged || dragChanged || settings.markerPixels != m_markerPixels) {
