@@ -1,0 +1,92 @@
+#include "core/annotate/annotate.h"
+
+#include <chrono>
+
+#include "core/common/error.h"
+#include "core/features/feature_grid.h"
+#include "core/geometry/surface_scene.h"
+#include "core/mesh/mesh_import.h"
+
+namespace sagrid {
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+namespace {
+double secondsSince(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+}  // namespace
+
+ModelPrediction predictWithModel(const model::AffordanceModel& model, const FeatureGrid& features,
+                                 const SurfaceScene& scene, UpAxis fileUp, InstanceMode mode, int count) {
+  ModelPrediction p;
+  const auto& card = model.card();
+  p.modelName = card.name;
+  p.type = card.type;
+  p.source = card.sourceTag();
+  p.field.resolution = features.resolution;
+  p.field.voxels = features.voxels;
+  p.field.distances = model.predictDistances(features);
+  switch (mode) {
+    case InstanceMode::Single: p.points = {argminPoint(p.field, card.extraction)}; break;
+    case InstanceMode::Count: p.points = kMeansPoints(p.field, count, card.extraction); break;
+    case InstanceMode::Auto: p.points = autoCountPoints(p.field, card.extraction); break;
+  }
+  for (const auto& point : p.points)
+    p.surface.push_back(projectToSurface(point.position, features.normalization, scene, fileUp));
+  return p;
+}
+
+AnnotationResult annotateMeshFile(const fs::path& meshFile, const std::string& id, const ModelSet& models,
+                                  const AnnotateOptions& options, const fs::path& labelsDir) {
+  AnnotationResult r;
+  auto t = Clock::now();
+  const Mesh mesh = importMesh(meshFile, ImportOptions(options.features.up));
+  r.importSeconds = secondsSince(t);
+  t = Clock::now();
+  const FeatureGrid features = options.features.cacheDir.empty() ? computeFeatures(mesh, options.features)
+                                                                 : extractFeatures(meshFile, options.features);
+  const SurfaceScene scene(mesh);
+  r.featureSeconds = secondsSince(t);
+
+  if (options.category.empty()) {
+    const auto ranked = models.rankCategories(features.descriptor);
+    if (ranked.empty()) throw ModelError("no models to choose a category from");
+    r.category = ranked.front().category;
+    r.categorySimilarity = ranked.front().similarity;
+    r.categoryRetrieved = true;
+  } else {
+    r.category = options.category;
+    r.categorySimilarity = cosineSimilarity(features.descriptor, models.categoryMean(options.category));
+  }
+
+  t = Clock::now();
+  r.labels.object.id = id;
+  r.labels.object.mesh = fs::proximate(fs::absolute(meshFile), fs::absolute(labelsDir)).generic_string();
+  r.labels.object.sha256 = mesh.sha256;
+  r.labels.object.category = r.category;
+  r.labels.object.up = toString(mesh.fileUp);
+  for (const auto* model : models.forCategory(r.category)) {
+    const auto count = options.counts.find(model->card().type);
+    InstanceMode mode = options.mode;
+    int n = 1;
+    if (count != options.counts.end()) mode = InstanceMode::Count, n = count->second;
+    else if (mode == InstanceMode::Count) mode = InstanceMode::Auto;
+    ModelPrediction p = predictWithModel(*model, features, scene, mesh.fileUp, mode, n);
+    for (std::size_t i = 0; i < p.points.size(); ++i) {
+      AffordancePoint a;
+      a.type = p.type;
+      a.position = p.surface[i].position;
+      a.normal = p.surface[i].normal;
+      a.status = AffordanceStatus::Predicted;
+      a.confidence = p.points[i].confidence;
+      a.source = p.source;
+      r.labels.affordances.push_back(std::move(a));
+    }
+    r.predictions.push_back(std::move(p));
+  }
+  r.labels.extra["prediction"] = {{"category_similarity", r.categorySimilarity},
+                                  {"category_retrieved", r.categoryRetrieved}};
+  r.modelSeconds = secondsSince(t);
+  return r;
+}
+
+}  // namespace sagrid

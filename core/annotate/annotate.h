@@ -1,0 +1,62 @@
+// `sagrid annotate`: mesh -> features -> every model of the object's category -> points ->
+// labels.json. The category comes from the caller or from descriptor retrieval against the model
+// cards. Per model: distance field over the occupied voxels, instances (automatic count by
+// default, k-means with a given count, or the paper's single argmin), each mapped to the mesh
+// file's frame and projected onto the surface, with a confidence.
+#pragma once
+
+#include <filesystem>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "core/annotate/model_set.h"
+#include "core/labels/labels.h"
+#include "core/points/point_extraction.h"
+#include "core/points/surface_projection.h"
+
+namespace sagrid {
+
+class SurfaceScene;
+struct FeatureGrid;
+
+enum class InstanceMode {
+  Auto,    // local minima + non-maximum suppression, settings from the model card
+  Single,  // the paper: argmin over occupied voxels
+  Count,   // threshold + k-means with a known count
+};
+
+struct ModelPrediction {
+  std::string modelName;
+  std::string type;
+  PredictedField field;
+  std::vector<ExtractedPoint> points;     // normalized frame, best first
+  std::vector<SurfacePoint> surface;      // projected, mesh file frame
+  std::string source;                     // "<model>@<sha prefix>"
+};
+
+ModelPrediction predictWithModel(const model::AffordanceModel& model, const FeatureGrid& features,
+                                 const SurfaceScene& scene, UpAxis fileUp, InstanceMode mode, int count = 1);
+
+struct AnnotateOptions {
+  std::string category;            // empty: retrieval
+  FeatureOptions features;         // backend must match the cards; cacheDir optional
+  InstanceMode mode = InstanceMode::Auto;
+  std::map<std::string, int> counts;  // type -> known instance count (InstanceMode::Count)
+};
+
+struct AnnotationResult {
+  ObjectLabels labels;
+  std::string category;
+  double categorySimilarity = 0;   // cosine similarity to the category mean (retrieval)
+  bool categoryRetrieved = false;
+  std::vector<ModelPrediction> predictions;
+  double importSeconds = 0, featureSeconds = 0, modelSeconds = 0;
+};
+
+// `labelsDir` is where labels.json will be written (object.mesh is made relative to it).
+AnnotationResult annotateMeshFile(const std::filesystem::path& meshFile, const std::string& id,
+                                  const ModelSet& models, const AnnotateOptions& options,
+                                  const std::filesystem::path& labelsDir);
+
+}  // namespace sagrid

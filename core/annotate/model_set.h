@@ -1,0 +1,45 @@
+// The models `annotate`, `filter` and `eval` use: every model card in a folder (default
+// resources/models), loaded with its weights, grouped by category, with category retrieval by
+// cosine similarity of an object's descriptor to the category means recorded at training
+// (paper, III-D: filtering a collection in DINOv2 feature space).
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "core/features/feature_pipeline.h"
+#include "core/model/affordance_model.h"
+
+namespace sagrid {
+
+double cosineSimilarity(const std::vector<float>& a, const std::vector<float>& b);
+
+struct CategoryScore {
+  std::string category;
+  double similarity = 0;
+};
+
+class ModelSet {
+ public:
+  // Throws FileError / ModelError (no cards, unreadable weights, cards needing different features).
+  static ModelSet load(const std::filesystem::path& directory);
+  explicit ModelSet(std::vector<model::AffordanceModel> models);
+
+  std::vector<std::string> categories() const;
+  // Models of a category in card-name order; throws InvalidArgument when there are none.
+  std::vector<const model::AffordanceModel*> forCategory(const std::string& category) const;
+  const std::vector<model::AffordanceModel>& models() const { return m_models; }
+
+  // Categories ranked by cosine similarity of `descriptor` to their training means, best first.
+  std::vector<CategoryScore> rankCategories(const std::vector<float>& descriptor) const;
+  std::vector<float> categoryMean(const std::string& category) const;  // throws when unknown
+
+  // Feature options matching the cards (backend, grid size); the cache folder is the caller's.
+  FeatureOptions featureOptions() const;
+
+ private:
+  std::vector<model::AffordanceModel> m_models;
+};
+
+}  // namespace sagrid
