@@ -153,5 +153,38 @@ TEST(FeaturePipeline, UpAxisOverrideIsCachedSeparately) {
   EXPECT_NE(y.normalization.center, z.normalization.center);  // (0, 0, 0.25) vs (0, -0.25, 0)
 }
 
+TEST(FeaturePipeline, TrellisBackendTakesVoxelsAndLatentsFromTheTrellisFile) {
+  const auto dir = test::freshTempDir("feature_trellis");
+  const auto meshFile = writeBoxObj(dir);
+  const std::string sha = sha256Hex(readFileBytes(meshFile));
+  std::filesystem::create_directories(dir / "latents");
+  const std::vector<std::uint8_t> coords{63, 10, 5, 0, 20, 30};
+  std::vector<float> feats(16);
+  for (int i = 0; i < 16; ++i) feats[i] = 0.5f * i;
+  writeNpz(dir / "latents" / (sha + ".npz"),
+           {{"coords", NpyArray::from(coords, {2, 3})}, {"feats", NpyArray::from(feats, {2, 8})}});
+  FeatureOptions o;
+  o.backend = "trellis";
+  o.trellisLatents = dir / "latents";
+  o.views = 12;
+  const FeatureGrid g = extractFeatures(meshFile, o);
+  EXPECT_EQ(g.backend, "trellis");
+  EXPECT_EQ(g.channels, 8);
+  ASSERT_EQ(g.voxels.size(), 2u);
+  EXPECT_EQ(g.voxels[0], (VoxelIndex{0, 20, 30}));
+  EXPECT_EQ(g.values[0], 4.0f);  // second file row first after sorting
+  EXPECT_EQ(g.descriptor.size(), 64u);  // embedded descriptor: no DINOv2 model given
+  // No latent for this mesh: the error names the expected file.
+  writeBoxObj(dir, "# another mesh\n");
+  try {
+    extractFeatures(meshFile, o);
+    FAIL();
+  } catch (const FileError& e) {
+    EXPECT_NE(std::string(e.what()).find(".npz"), std::string::npos);
+  }
+  o.resolution = 32;
+  EXPECT_THROW(extractFeatures(meshFile, o), InvalidArgument);
+}
+
 }  // namespace
 }  // namespace sagrid
