@@ -34,10 +34,4 @@ struct GeneratedObject {
 // otherwise sit inside the solid, farther from the surface than the ground-truth tolerance.
 void keepPointsNearParts(const Mesh& mesh, std::vector<GroundTruthPoint>& points, float maxDistance);
 
-// Closest point on triangle (a, b, c) to p (Ericson, Real-Time Collision Detection 5.1.5).
-Eigen::Vector3f closestPointOnTriangle(const Eigen::Vector3f& p, const Eigen::Vector3f& a,
-                                       const Eigen::Vector3f& b, const Eigen::Vector3f& c);
-// Brute-force distance from p to a mesh (small meshes, tests).
-float distanceToMesh(const Mesh& mesh, const Eigen::Vector3f& p);
-
 }  // namespace sagrid::gen

@@ -174,7 +174,7 @@ void ShapeBuilder::tube(const std::vector<Vec3>& path, float radius, int sides, 
   for (std::size_t k = 0; k + 1 < n; ++k) {
     for (int j = 0; j < sides; ++j) {
       const int a = ringStart[k] + j, b = ringStart[k + 1] + j;
-      addQuad(a, b, b + 1, a + 1, material);
+      addQuad(a, a + 1, b + 1, b, material);
     }
   }
   auto cap = [&](std::size_t k, bool atEnd) {
@@ -182,8 +182,8 @@ void ShapeBuilder::tube(const std::vector<Vec3>& path, float radius, int sides, 
     const int first = static_cast<int>(m_mesh.positions.size());
     for (int j = 0; j <= sides; ++j) addVertex(m_mesh.positions[ringStart[k] + j]);
     for (int j = 0; j < sides; ++j) {
-      if (atEnd) addTriangle(centre, first + j + 1, first + j, material);
-      else addTriangle(centre, first + j, first + j + 1, material);
+      if (atEnd) addTriangle(centre, first + j, first + j + 1, material);
+      else addTriangle(centre, first + j + 1, first + j, material);
     }
   };
   if (capStart) cap(0, false);
@@ -292,7 +292,7 @@ void ShapeBuilder::plateWithHole(const Affine& xf, const Vec2& outerHalf, const 
     const int b = addVertex(xf * Vec3(q.x(), q.y(), z0));
     const int d = addVertex(xf * Vec3(q.x(), q.y(), z1));
     const int e = addVertex(xf * Vec3(p.x(), p.y(), z1));
-    addQuad(a, e, d, b, material);  // corners run counter-clockwise: this faces outward
+    addQuad(a, b, d, e, material);  // corners run counter-clockwise: this faces outward
   }
 }
 
