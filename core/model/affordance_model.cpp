@@ -140,6 +140,10 @@ std::vector<float> AffordanceModel::predictDistances(const FeatureGrid& features
   return std::vector<float>(d.data_ptr<float>(), d.data_ptr<float>() + d.numel());
 }
 
+double AffordanceModel::forwardMacs(std::int64_t occupiedVoxels, bool dense) const {
+  return model::forwardMacs(m_impl->shape, dense ? ExecutionMode::Dense : m_impl->mode, occupiedVoxels);
+}
+
 std::int64_t AffordanceModel::parameterCount() const {
   std::int64_t n = 0;
   for (const auto& p : m_impl->net->parameters()) n += p.numel();

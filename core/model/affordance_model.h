@@ -41,6 +41,9 @@ class AffordanceModel {
 
   // Total number of weights (parameters), for reports.
   std::int64_t parameterCount() const;
+  // Multiply-accumulates of one forward pass over an object with this many occupied voxels, in
+  // the card's execution mode (and, for comparison, in the other).
+  double forwardMacs(std::int64_t occupiedVoxels, bool dense = false) const;
 
   AffordanceModelImpl& impl() { return *m_impl; }
 

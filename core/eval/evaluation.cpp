@@ -1,0 +1,221 @@
+#include "core/eval/evaluation.h"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+#include "core/annotate/annotate.h"
+#include "core/common/atomic_file.h"
+#include "core/common/error.h"
+#include "core/common/log.h"
+#include "core/dataset/dataset.h"
+#include "core/eval/embedding_search.h"
+#include "core/features/feature_grid.h"
+#include "core/geometry/surface_scene.h"
+#include "core/labels/labels.h"
+#include "core/mesh/mesh_import.h"
+#include "core/plot/plot.h"
+
+namespace sagrid {
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+namespace {
+
+const char* const kPaperOrder[] = {"sink.togglebutton", "sink.fluidsource", "stove.togglebutton",
+                                   "stove.heatsource"};
+
+enum Method { kArgmin, kAuto, kKMeans, kCosine, kL2, kMethodCount };
+const char* const kMethodNames[] = {"SAGrid argmin (paper)", "SAGrid auto count", "SAGrid k-means, true count",
+                                    "Embedding search cosine", "Embedding search L2"};
+
+std::string formatValue(double v, const char* format) {
+  if (!std::isfinite(v)) return "–";
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, format, v);
+  return buffer;
+}
+
+}  // namespace
+
+std::string paperColumnName(const std::string& name) {
+  if (name == "sink.togglebutton") return "toggle sink";
+  if (name == "sink.fluidsource") return "fluid source";
+  if (name == "stove.togglebutton") return "toggle stove";
+  if (name == "stove.heatsource") return "heat source";
+  return name;
+}
+
+EvaluationReport evaluateModels(const ModelSet& models, const EvaluationOptions& options) {
+  EvaluationReport report;
+  report.dataDir = fs::is_directory(options.dataDir / "val") ? options.dataDir / "val" : options.dataDir;
+  const auto entries = readDataset(report.dataDir);
+  if (entries.empty()) throw InvalidArgument("dataset " + report.dataDir.string() + " has no objects");
+  FeatureOptions features = options.features;
+  if (features.cacheDir.empty()) features.cacheDir = options.dataDir / ".sagrid-cache";
+
+  for (const char* name : kPaperOrder)
+    for (const auto& m : models.models())
+      if (m.card().name == name) report.modelNames.push_back(name);
+  for (const auto& m : models.models())
+    if (std::find(report.modelNames.begin(), report.modelNames.end(), m.card().name) == report.modelNames.end())
+      report.modelNames.push_back(m.card().name);
+
+  std::vector<std::map<std::string, TypeMetricsAccumulator>> acc(kMethodCount);
+  double modelSeconds = 0;
+  const auto categories = models.categories();
+  for (std::size_t e = 0; e < entries.size(); ++e) {
+    const DatasetEntry& entry = entries[e];
+    if (options.onProgress) options.onProgress(e, entries.size(), entry.id);
+    try {
+      const ObjectLabels labels = readLabels(entry.labels);
+      const std::string category = entry.category.empty() ? labels.object.category : entry.category;
+      if (std::find(categories.begin(), categories.end(), category) == categories.end()) continue;
+      FeatureOptions objectFeatures = features;
+      const UpAxis up = labels.object.up == "y" ? UpAxis::Y : UpAxis::Z;
+      objectFeatures.up = up;
+      const Mesh mesh = importMesh(entry.mesh, ImportOptions(up));
+      const FeatureGrid grid = extractFeatures(entry.mesh, objectFeatures);
+      const SurfaceScene scene(mesh);
+      const double mpu = metersPerUnit(labels);
+      report.meanOccupiedVoxels += static_cast<double>(grid.voxels.size());
+      nlohmann::json object = {{"id", entry.id}, {"category", category}, {"meters_per_unit", mpu}};
+      const auto t = Clock::now();
+      for (const auto* model : models.forCategory(category))
+        (void)predictWithModel(*model, grid, scene, mesh.fileUp, InstanceMode::Auto);
+      modelSeconds += std::chrono::duration<double>(Clock::now() - t).count();
+      for (const auto* model : models.forCategory(category)) {
+        const auto& card = model->card();
+        std::vector<Eigen::Vector3f> truth;
+        for (const auto* a : labels.ofType(card.type)) truth.push_back(a->position);
+        if (truth.empty()) continue;
+        auto record = [&](Method method, const std::vector<Eigen::Vector3f>& predicted) {
+          acc[method][card.name].addSingle(nearestDistance(predicted.front(), truth, mpu));
+          acc[method][card.name].addMatch(matchPoints(predicted, truth, mpu));
+          nlohmann::json points = nlohmann::json::array();
+          for (const auto& p : predicted) points.push_back({p.x(), p.y(), p.z()});
+          object["predictions"][card.name][kMethodNames[method]] = points;
+        };
+        auto surfaceOf = [](const ModelPrediction& p) {
+          std::vector<Eigen::Vector3f> out;
+          for (const auto& s : p.surface) out.push_back(s.position);
+          return out;
+        };
+        record(kArgmin, surfaceOf(predictWithModel(*model, grid, scene, mesh.fileUp, InstanceMode::Single)));
+        record(kAuto, surfaceOf(predictWithModel(*model, grid, scene, mesh.fileUp, InstanceMode::Auto)));
+        record(kKMeans, surfaceOf(predictWithModel(*model, grid, scene, mesh.fileUp, InstanceMode::Count,
+                                                   static_cast<int>(truth.size()))));
+        for (Method m : {kCosine, kL2}) {
+          const std::size_t v = embeddingSearchVoxel(
+              grid, card.affordanceFeatureMean, m == kCosine ? EmbeddingMetric::Cosine : EmbeddingMetric::L2);
+          record(m, {projectToSurface(voxelCenter(grid.voxels[v], grid.resolution), grid.normalization, scene,
+                                      mesh.fileUp).position});
+        }
+        nlohmann::json t = nlohmann::json::array();
+        for (const auto& p : truth) t.push_back({p.x(), p.y(), p.z()});
+        object["truth"][card.name] = t;
+      }
+      report.perObject.push_back(object);
+      ++report.objects;
+    } catch (const Cancelled&) {
+      throw;
+    } catch (const Error& error) {
+      logger()->warn("eval: {} failed: {}", entry.id, error.what());
+      ++report.failed;
+    }
+  }
+  if (options.onProgress) options.onProgress(entries.size(), entries.size(), "");
+  if (report.objects == 0)
+    throw InvalidArgument("dataset " + report.dataDir.string() + " has no object of a category the models know");
+  report.modelMilliseconds = 1000.0 * modelSeconds / report.objects;
+  report.meanOccupiedVoxels /= static_cast<double>(report.objects);
+  for (int m = 0; m < kMethodCount; ++m) {
+    MethodMetrics mm;
+    mm.method = kMethodNames[m];
+    for (const auto& [name, a] : acc[m]) mm.byModel[name] = a.result();
+    report.methods.push_back(mm);
+  }
+  return report;
+}
+
+std::string evaluationMarkdown(const EvaluationReport& r) {
+  std::ostringstream md;
+  md << "# SAGrid evaluation\n\nData: `" << r.dataDir.string() << "` — " << r.objects << " objects";
+  if (r.failed) md << " (" << r.failed << " failed)";
+  md << ". Models + point extraction: " << formatValue(r.modelMilliseconds, "%.0f")
+     << " ms per object (features cached).\n\n";
+  md << "## Mean localization error (m), paper's metric (Table II form)\n\n| Method |";
+  for (const auto& n : r.modelNames) md << ' ' << paperColumnName(n) << " |";
+  md << " Avg |\n|---|";
+  for (std::size_t i = 0; i <= r.modelNames.size(); ++i) md << "---|";
+  md << '\n';
+  for (const auto& m : r.methods) {
+    md << "| " << m.method << " |";
+    double sum = 0;
+    int count = 0;
+    for (const auto& n : r.modelNames) {
+      const auto it = m.byModel.find(n);
+      const double v = it == m.byModel.end() ? NAN : it->second.paperError;
+      if (std::isfinite(v)) sum += v, ++count;
+      md << ' ' << formatValue(v, "%.4f") << " |";
+    }
+    md << ' ' << formatValue(count ? sum / count : NAN, "%.4f") << " |\n";
+  }
+  md << "\n## Multiple instances (Hungarian-matched error in m; precision/recall within "
+     << kMatchRadiusMeters * 100 << " cm; share of objects with the right count)\n\n"
+     << "| Method | Model | Objects | Matched error | Precision | Recall | Right count |\n"
+     << "|---|---|---|---|---|---|---|\n";
+  for (const auto& m : r.methods)
+    for (const auto& n : r.modelNames) {
+      const auto it = m.byModel.find(n);
+      if (it == m.byModel.end()) continue;
+      const TypeMetrics& t = it->second;
+      md << "| " << m.method << " | " << n << " | " << t.objects << " | " << formatValue(t.matchedError, "%.4f")
+         << " | " << formatValue(100 * t.precision, "%.1f %%") << " | " << formatValue(100 * t.recall, "%.1f %%")
+         << " | " << formatValue(100 * t.countRight, "%.1f %%") << " |\n";
+    }
+  return md.str();
+}
+
+nlohmann::json evaluationJson(const EvaluationReport& r) {
+  nlohmann::json j;
+  j["data"] = r.dataDir.string();
+  j["objects"] = r.objects;
+  j["failed"] = r.failed;
+  j["model_ms_per_object"] = r.modelMilliseconds;
+  j["models"] = r.modelNames;
+  auto number = [](double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); };
+  for (const auto& m : r.methods)
+    for (const auto& [name, t] : m.byModel)
+      j["methods"][m.method][name] = {{"objects", t.objects},
+                                      {"paper_error_m", number(t.paperError)},
+                                      {"matched_error_m", number(t.matchedError)},
+                                      {"precision", number(t.precision)},
+                                      {"recall", number(t.recall)},
+                                      {"count_right", number(t.countRight)}};
+  j["per_object"] = r.perObject;
+  return j;
+}
+
+void writeEvaluationReport(const EvaluationReport& r, const fs::path& outDir) {
+  fs::create_directories(outDir);
+  writeFileAtomic(outDir / "eval.md", evaluationMarkdown(r));
+  writeFileAtomic(outDir / "eval.json", evaluationJson(r).dump(2) + "\n");
+  plot::BarChart chart;
+  chart.title = "Mean localization error (m)";
+  chart.yLabel = "m (lower is better)";
+  for (const auto& m : r.methods) chart.methods.push_back(m.method);
+  for (const auto& n : r.modelNames) {
+    plot::BarGroup g;
+    g.label = paperColumnName(n);
+    for (const auto& m : r.methods) {
+      const auto it = m.byModel.find(n);
+      g.values.push_back(it == m.byModel.end() ? NAN : it->second.paperError);
+    }
+    chart.groups.push_back(g);
+  }
+  plot::writeBarChartPng(outDir / "eval.png", chart, 1000, 500);
+}
+
+}  // namespace sagrid

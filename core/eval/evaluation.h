@@ -1,0 +1,55 @@
+// `sagrid eval`: runs the models of each object's category over a labelled dataset and measures
+// the predictions against the ground truth — the paper's metric and the multi-instance metrics of
+// core/eval/metrics.h — for SAGrid (paper argmin, automatic count, k-means with the true count)
+// and the Embedding Search baselines (cosine, L2). Reports in the paper's Table II form as
+// Markdown, JSON and a PNG bar chart.
+#pragma once
+
+#include <filesystem>
+#include <functional>
+#include <map>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "core/annotate/model_set.h"
+#include "core/eval/metrics.h"
+
+namespace sagrid {
+
+struct EvaluationOptions {
+  std::filesystem::path dataDir;   // a dataset; when it has a val/ split, that is used
+  FeatureOptions features;         // from the models; cacheDir empty = DATA/.sagrid-cache
+  std::function<void(std::size_t, std::size_t, const std::string&)> onProgress;
+};
+
+struct MethodMetrics {
+  std::string method;
+  std::map<std::string, TypeMetrics> byModel;  // model name -> metrics
+};
+
+struct EvaluationReport {
+  std::filesystem::path dataDir;
+  std::size_t objects = 0;   // evaluated (of a category with models)
+  std::size_t failed = 0;    // could not be evaluated (import/features), logged
+  std::vector<std::string> modelNames;  // columns, in the paper's order where known
+  std::vector<MethodMetrics> methods;
+  double meanOccupiedVoxels = 0;
+  double modelMilliseconds = 0;   // mean per object: all models of the category + auto extraction
+                                  // + projection, features cached
+  nlohmann::json perObject = nlohmann::json::array();
+};
+
+EvaluationReport evaluateModels(const ModelSet& models, const EvaluationOptions& options);
+
+// Markdown tables (Table II form, multi-instance table), JSON, PNG bar chart of the paper metric.
+std::string evaluationMarkdown(const EvaluationReport& report);
+nlohmann::json evaluationJson(const EvaluationReport& report);
+// Writes eval.md, eval.json and eval.png into `outDir` (atomically).
+void writeEvaluationReport(const EvaluationReport& report, const std::filesystem::path& outDir);
+
+// The paper's column names ("toggle sink", ...) for the four shipped models, else the model name.
+std::string paperColumnName(const std::string& modelName);
+
+}  // namespace sagrid
