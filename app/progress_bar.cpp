@@ -1,7 +1,8 @@
 #include "app/progress_bar.h"
 
-#include <cstdio>
 #include <unistd.h>
+
+#include <cstdio>
 
 namespace sagrid::app {
 

@@ -2,7 +2,6 @@
 // written as .npz (for the model and for Python tools), with an on-disk cache, a progress bar
 // for folders, and optional TRELLIS-layout view renders and feature preview pictures.
 #include <CLI/CLI.hpp>
-
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -48,61 +47,77 @@ sagrid::FeatureOptions toFeatureOptions(const ExtractOptions& o) {
 }
 
 // Renders and previews need the mesh itself; only imported when asked for.
-void writeExtras(const ExtractOptions& o, const sagrid::FeatureOptions& f, const sagrid::MeshFile& file,
-                 const sagrid::FeatureGrid& grid) {
+void writeExtras(const ExtractOptions& o, const sagrid::FeatureOptions& f,
+                 const sagrid::MeshFile& file, const sagrid::FeatureGrid& grid) {
   namespace fs = std::filesystem;
   if (o.exportViews.empty() && o.preview.empty()) return;
   const sagrid::Mesh mesh = sagrid::importMesh(file.path, sagrid::ImportOptions(f.up));
   if (!o.exportViews.empty()) {
     const sagrid::Mesh normalized = sagrid::normalizedCopy(mesh, grid.normalization);
     const auto cameras = sagrid::trellisViews(f.views, sagrid::seedFromKey(mesh.sha256));
-    sagrid::exportViews(normalized, cameras, f.renderSize.value_or(512), fs::path(o.exportViews) / file.id,
+    sagrid::exportViews(normalized, cameras, f.renderSize.value_or(512),
+                        fs::path(o.exportViews) / file.id,
                         /*withDepth=*/true);
   }
   if (!o.preview.empty()) {
     const auto names = sagrid::featureChannelNames(f);
     const auto it = std::find(names.begin(), names.end(), o.previewChannel);
     if (it == names.end()) {
-      throw sagrid::InvalidArgument("--preview-channel: no channel '" + o.previewChannel + "' in backend " +
-                                    o.backend);
+      throw sagrid::InvalidArgument("--preview-channel: no channel '" + o.previewChannel +
+                                    "' in backend " + o.backend);
     }
     fs::create_directories(o.preview);
-    sagrid::writeFileAtomic(fs::path(o.preview) / (file.id + "_" + o.previewChannel + ".png"),
-                            sagrid::renderFeaturePreviewPng(mesh, grid, static_cast<int>(it - names.begin()),
-                                                            sagrid::previewCamera(), 512));
+    sagrid::writeFileAtomic(
+        fs::path(o.preview) / (file.id + "_" + o.previewChannel + ".png"),
+        sagrid::renderFeaturePreviewPng(mesh, grid, static_cast<int>(it - names.begin()),
+                                        sagrid::previewCamera(), 512));
   }
 }
 
 void setupExtract(CLI::App& root) {
-  auto* cmd = root.add_subcommand(
-      "extract",
-      "Extract per-voxel features and the object descriptor of a mesh, or of every mesh under a folder, "
-      "into OUT/<id>.npz (keys coords int32 Nx3, feats float32 NxC, descriptor, normalization_center, "
-      "normalization_scale, metadata = UTF-8 JSON bytes). Backends: embedded (default; CPU, no download), "
-      "dinov2 (TorchScript dinov2_vitl14_reg, TRELLIS protocol), trellis (TRELLIS SLAT .npz latents).");
+  auto* cmd = root.add_subcommand("extract",
+                                  "Extract per-voxel features and the object descriptor of a mesh, "
+                                  "or of every mesh under a folder, "
+                                  "into OUT/<id>.npz (keys coords int32 Nx3, feats float32 NxC, "
+                                  "descriptor, normalization_center, "
+                                  "normalization_scale, metadata = UTF-8 JSON bytes). Backends: "
+                                  "embedded (default; CPU, no download), "
+                                  "dinov2 (TorchScript dinov2_vitl14_reg, TRELLIS protocol), "
+                                  "trellis (TRELLIS SLAT .npz latents).");
   auto o = std::make_shared<ExtractOptions>();
-  cmd->add_option("input", o->input, "Mesh file or folder of meshes (searched recursively)")->required();
+  cmd->add_option("input", o->input, "Mesh file or folder of meshes (searched recursively)")
+      ->required();
   cmd->add_option("--out", o->out, "Output folder for <id>.npz")->required();
   cmd->add_option("--backend", o->backend, "embedded, dinov2 or trellis")
       ->check(CLI::IsMember({"embedded", "dinov2", "trellis"}));
-  cmd->add_option("--cache", o->cache,
-                  "Feature cache folder (keyed by mesh sha256 + feature config; damaged entries are rebuilt)");
-  cmd->add_option("--up", o->up, "Up axis of the mesh files (y or z); default: y for glTF/GLB, else z")
+  cmd->add_option(
+      "--cache", o->cache,
+      "Feature cache folder (keyed by mesh sha256 + feature config; damaged entries are rebuilt)");
+  cmd->add_option("--up", o->up,
+                  "Up axis of the mesh files (y or z); default: y for glTF/GLB, else z")
       ->check(CLI::IsMember({"y", "z"}));
   cmd->add_option("--dinov2-model", o->dinov2Model,
-                  "TorchScript DINOv2 file (packaging/python/export_dinov2.py) for dinov2, and for trellis descriptors");
-  cmd->add_option("--trellis-latents", o->trellisLatents, "TRELLIS latent .npz, or folder of <mesh sha256>.npz");
-  cmd->add_option("--resolution", o->resolution, "Voxel grid resolution")->check(CLI::Range(4, 256));
-  cmd->add_option("--views", o->views, "Number of rendered views (TRELLIS: 150)")->check(CLI::Range(1, 10000));
-  cmd->add_option("--render-size", o->renderSize, "View size in pixels (default: embedded 96, dinov2 518)")
+                  "TorchScript DINOv2 file (packaging/python/export_dinov2.py) for dinov2, and for "
+                  "trellis descriptors");
+  cmd->add_option("--trellis-latents", o->trellisLatents,
+                  "TRELLIS latent .npz, or folder of <mesh sha256>.npz");
+  cmd->add_option("--resolution", o->resolution, "Voxel grid resolution")
+      ->check(CLI::Range(4, 256));
+  cmd->add_option("--views", o->views, "Number of rendered views (TRELLIS: 150)")
+      ->check(CLI::Range(1, 10000));
+  cmd->add_option("--render-size", o->renderSize,
+                  "View size in pixels (default: embedded 96, dinov2 518)")
       ->check(CLI::Range(8, 4096));
   cmd->add_option("--aggregation", o->aggregation,
-                  "mean (TRELLIS: every view) or occlusion (only views that see the voxel); default per backend")
+                  "mean (TRELLIS: every view) or occlusion (only views that see the voxel); "
+                  "default per backend")
       ->check(CLI::IsMember({"mean", "occlusion"}));
   cmd->add_option("--export-views", o->exportViews,
                   "Also write the views as TRELLIS renders: DIR/<id>/NNN.png + transforms.json");
-  cmd->add_option("--preview", o->preview, "Also write DIR/<id>_<channel>.png: a view coloured by one channel");
-  cmd->add_option("--preview-channel", o->previewChannel, "Channel name for --preview (default albedo_r)");
+  cmd->add_option("--preview", o->preview,
+                  "Also write DIR/<id>_<channel>.png: a view coloured by one channel");
+  cmd->add_option("--preview-channel", o->previewChannel,
+                  "Channel name for --preview (default albedo_r)");
   cmd->callback([o] {
     namespace fs = std::filesystem;
     const sagrid::FeatureOptions options = toFeatureOptions(*o);
@@ -129,7 +144,8 @@ void setupExtract(CLI::App& root) {
                                 {{"id", file.id}, {"mesh", fs::absolute(file.path).string()}});
         writeExtras(*o, options, file, grid);
         cachedCount += cached;
-        seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+        seconds.push_back(
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
       } catch (const sagrid::InvalidArgument&) {
         throw;  // the same for every file: stop at once
       } catch (const sagrid::ModelError&) {
@@ -145,8 +161,9 @@ void setupExtract(CLI::App& root) {
     }
     std::sort(seconds.begin(), seconds.end());
     const double median = seconds.empty() ? 0.0 : seconds[seconds.size() / 2];
-    std::printf("extract: %zu of %zu meshes -> %s (%d from cache), %s backend, median %.3f s per mesh\n",
-                seconds.size(), files.size(), o->out.c_str(), cachedCount, o->backend.c_str(), median);
+    std::printf(
+        "extract: %zu of %zu meshes -> %s (%d from cache), %s backend, median %.3f s per mesh\n",
+        seconds.size(), files.size(), o->out.c_str(), cachedCount, o->backend.c_str(), median);
     if (!failures.empty()) {
       for (const auto& f : failures) std::fprintf(stderr, "extract: failed: %s\n", f.c_str());
       throw sagrid::Error(std::to_string(failures.size()) + " of " + std::to_string(files.size()) +

@@ -1,9 +1,8 @@
-#include "core/features/dinov2_encoder.h"
-
 #include <torch/script.h>
 #include <torch/torch.h>
 
 #include "core/common/error.h"
+#include "core/features/dinov2_encoder.h"
 #include "core/render/multiview_renderer.h"
 
 namespace sagrid {
@@ -21,22 +20,25 @@ std::string shapeText(const at::Tensor& t) {
 }  // namespace
 
 Dinov2Encoder::Dinov2Encoder(const std::filesystem::path& modelFile, int inputSize, int channels)
-    : m_impl(std::make_unique<Impl>()), m_file(modelFile), m_inputSize(inputSize),
+    : m_impl(std::make_unique<Impl>()),
+      m_file(modelFile),
+      m_inputSize(inputSize),
       m_channels(channels) {
   if (inputSize % kDinov2PatchSize != 0) {
     throw InvalidArgument("DINOv2 input size must be a multiple of 14, got " +
                           std::to_string(inputSize));
   }
   if (!std::filesystem::is_regular_file(modelFile)) {
-    throw FileError(modelFile, "DINOv2 TorchScript model not found (export it with "
-                               "packaging/python/export_dinov2.py)");
+    throw FileError(modelFile,
+                    "DINOv2 TorchScript model not found (export it with "
+                    "packaging/python/export_dinov2.py)");
   }
   try {
     m_impl->module = torch::jit::load(modelFile.string(), torch::kCPU);
     m_impl->module.eval();
   } catch (const c10::Error& e) {
-    throw FileError(modelFile, std::string("not a loadable TorchScript file: ") +
-                                   e.what_without_backtrace());
+    throw FileError(modelFile,
+                    std::string("not a loadable TorchScript file: ") + e.what_without_backtrace());
   }
   at::set_num_threads(defaultThreadCount());
 }
@@ -71,16 +73,16 @@ void Dinov2Encoder::encode(const std::vector<const RenderedView*>& views,
     torch::NoGradGuard noGrad;
     const c10::IValue result = m_impl->module.forward({input});
     if (!result.isTensor()) {
-      throw ModelError(m_file.string() + ": DINOv2 model must return one tensor [" + std::to_string(batch) + ", " +
-                       std::to_string(patchGrid() * patchGrid()) + ", " +
-                       std::to_string(m_channels) + "] (pre-norm patch tokens), got " +
+      throw ModelError(m_file.string() + ": DINOv2 model must return one tensor [" +
+                       std::to_string(batch) + ", " + std::to_string(patchGrid() * patchGrid()) +
+                       ", " + std::to_string(m_channels) + "] (pre-norm patch tokens), got " +
                        result.tagKind());
     }
     tokens = result.toTensor().to(torch::kFloat32).contiguous();
   } catch (const c10::Error& e) {
-    throw ModelError(m_file.string() + ": DINOv2 model failed on input [" +
-                     std::to_string(batch) + ", 3, " + std::to_string(s) + ", " +
-                     std::to_string(s) + "]: " + e.what_without_backtrace());
+    throw ModelError(m_file.string() + ": DINOv2 model failed on input [" + std::to_string(batch) +
+                     ", 3, " + std::to_string(s) + ", " + std::to_string(s) +
+                     "]: " + e.what_without_backtrace());
   }
   const int g = patchGrid();
   if (tokens.dim() != 3 || tokens.size(0) != batch || tokens.size(1) != g * g ||

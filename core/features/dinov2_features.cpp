@@ -34,7 +34,8 @@ EncodedFeatures encodeViewsIntoVoxels(const Mesh& mesh, const SurfaceScene& scen
   const int channels = encoder.channels();
   std::vector<Eigen::Vector3f> points;
   if (aggregateVoxels) {
-    for (const VoxelIndex& v : grid.occupiedVoxels()) points.push_back(voxelCenter(v, grid.resolution()));
+    for (const VoxelIndex& v : grid.occupiedVoxels())
+      points.push_back(voxelCenter(v, grid.resolution()));
   }
   VoxelAggregator aggregator(points, channels, aggregation, voxelDepthTolerance(grid.resolution()));
   std::vector<double> descriptorSum(channels, 0.0);
@@ -46,7 +47,8 @@ EncodedFeatures encodeViewsIntoVoxels(const Mesh& mesh, const SurfaceScene& scen
   std::vector<FeatureMap> maps;
   for (int first = 0; first < views; first += batch) {
     const int n = std::min(batch, views - first);
-    const std::vector<ViewCamera> batchCameras(cameras.begin() + first, cameras.begin() + first + n);
+    const std::vector<ViewCamera> batchCameras(cameras.begin() + first,
+                                               cameras.begin() + first + n);
     renderer.renderEach(batchCameras, encoder.renderSize(), defaultThreadCount(),
                         [&](int i, int, const RenderedView& view) { rendered[i] = view; });
     std::vector<const RenderedView*> viewPtrs;
@@ -75,7 +77,8 @@ EncodedFeatures encodeViewsIntoVoxels(const Mesh& mesh, const SurfaceScene& scen
   if (aggregateVoxels) out.values = aggregator.mean();
   out.descriptor.resize(channels, 0.0f);
   if (descriptorWeight > 0) {
-    for (int c = 0; c < channels; ++c) out.descriptor[c] = static_cast<float>(descriptorSum[c] / descriptorWeight);
+    for (int c = 0; c < channels; ++c)
+      out.descriptor[c] = static_cast<float>(descriptorSum[c] / descriptorWeight);
   }
   return out;
 }

@@ -1,10 +1,9 @@
 #include "core/features/embedded_features.h"
 
+#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-
-#include <Eigen/Eigenvalues>
 
 #include "core/common/log.h"
 #include "core/features/embedded_view_encoder.h"
@@ -28,8 +27,8 @@ float luminance(const float* rgb) { return 0.2126f * rgb[0] + 0.7152f * rgb[1] +
 void addHistogram(std::vector<float>& out, const std::vector<float>& values, float lo, float hi) {
   std::vector<float> bins(kHistogramBins, 0.0f);
   for (float v : values) {
-    const int b = std::clamp(static_cast<int>((v - lo) / (hi - lo) * kHistogramBins), 0,
-                             kHistogramBins - 1);
+    const int b =
+        std::clamp(static_cast<int>((v - lo) / (hi - lo) * kHistogramBins), 0, kHistogramBins - 1);
     bins[b] += 1.0f;
   }
   const float total = std::max<float>(1.0f, static_cast<float>(values.size()));
@@ -52,10 +51,10 @@ float neighbourOccupancy(const VoxelGrid& grid, const VoxelIndex& v, int r) {
 }  // namespace
 
 std::vector<std::string> channelNames() {
-  return {"albedo_r",   "albedo_g",   "albedo_b",      "normal_x",         "normal_y",
-          "normal_z",   "visibility", "top_visibility", "height",           "radial",
-          "area_density", "occupancy_3", "occupancy_5", "normal_variation", "luminance_contrast",
-          "colour_contrast"};
+  return {"albedo_r",    "albedo_g",         "albedo_b",           "normal_x",
+          "normal_y",    "normal_z",         "visibility",         "top_visibility",
+          "height",      "radial",           "area_density",       "occupancy_3",
+          "occupancy_5", "normal_variation", "luminance_contrast", "colour_contrast"};
 }
 
 Result fromAggregates(const Mesh& mesh, const VoxelGrid& grid, const std::vector<float>& viewSums,
@@ -77,7 +76,8 @@ Result fromAggregates(const Mesh& mesh, const VoxelGrid& grid, const std::vector
   }
   const float axisI = 0.5f * (iMin + iMax), axisJ = 0.5f * (jMin + jMax);
   float maxRadial = 0.0f;
-  for (const VoxelIndex& v : voxels) maxRadial = std::max(maxRadial, std::hypot(v.i - axisI, v.j - axisJ));
+  for (const VoxelIndex& v : voxels)
+    maxRadial = std::max(maxRadial, std::hypot(v.i - axisI, v.j - axisJ));
 
   for (std::size_t p = 0; p < count; ++p) {
     float* f = &result.values[p * kChannelCount];
@@ -135,7 +135,8 @@ Result fromAggregates(const Mesh& mesh, const VoxelGrid& grid, const std::vector
     if (n == 0) continue;
     const Eigen::Vector3f mean = sum / static_cast<float>(n);
     const Eigen::Vector3f own(f[kAlbedoR], f[kAlbedoG], f[kAlbedoB]);
-    f[kLuminanceContrast] = std::clamp(2.0f * (luminance(own.data()) - luminance(mean.data())), -1.0f, 1.0f);
+    f[kLuminanceContrast] =
+        std::clamp(2.0f * (luminance(own.data()) - luminance(mean.data())), -1.0f, 1.0f);
     f[kColourContrast] = std::min(1.0f, (own - mean).norm());
   }
 
@@ -185,7 +186,8 @@ Result compute(const Mesh& mesh, const SurfaceScene& scene, const VoxelGrid& gri
   const std::vector<ViewCamera> cameras = trellisViews(settings.views, seed);
   const EmbeddedViewEncoder encoder(settings.renderSize);
   std::vector<Eigen::Vector3f> points;
-  for (const VoxelIndex& v : grid.occupiedVoxels()) points.push_back(voxelCenter(v, grid.resolution()));
+  for (const VoxelIndex& v : grid.occupiedVoxels())
+    points.push_back(voxelCenter(v, grid.resolution()));
 
   const int threads = settings.threads > 0 ? settings.threads : defaultThreadCount();
   const float tolerance = voxelDepthTolerance(grid.resolution());
@@ -205,10 +207,12 @@ Result compute(const Mesh& mesh, const SurfaceScene& scene, const VoxelGrid& gri
   const int upper = static_cast<int>(std::count_if(
       cameras.begin(), cameras.end(), [](const ViewCamera& c) { return c.position().z() > 0.0f; }));
   const auto viewsDone = std::chrono::steady_clock::now();
-  Result result = fromAggregates(mesh, grid, partial[0].sums(), static_cast<int>(cameras.size()), upper);
-  logger()->debug("embedded features: views {:.3f} s, voxel channels {:.3f} s",
-                  std::chrono::duration<double>(viewsDone - start).count(),
-                  std::chrono::duration<double>(std::chrono::steady_clock::now() - viewsDone).count());
+  Result result =
+      fromAggregates(mesh, grid, partial[0].sums(), static_cast<int>(cameras.size()), upper);
+  logger()->debug(
+      "embedded features: views {:.3f} s, voxel channels {:.3f} s",
+      std::chrono::duration<double>(viewsDone - start).count(),
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - viewsDone).count());
   return result;
 }
 

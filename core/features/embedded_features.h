@@ -25,18 +25,22 @@ class SurfaceScene;
 
 namespace embedded {
 enum Channel {
-  kAlbedoR = 0, kAlbedoG, kAlbedoB,   // mean visible albedo (surface albedo where never seen)
-  kNormalX, kNormalY, kNormalZ,       // mean visible normal, unit (0 where never seen)
-  kVisibility,                        // share of all views that see the voxel
-  kTopVisibility,                     // share of the views from above that see it
-  kHeight,                            // (z - zmin) / (zmax - zmin) over occupied voxels
-  kRadial,                            // distance from the vertical bbox axis / its maximum
-  kAreaDensity,                       // log(1 + area / voxel face) / log(5)
-  kOccupancy3,                        // occupied share of the 26 neighbours
-  kOccupancy5,                        // occupied share of the 124 neighbours in 5^3
-  kNormalVariation,                   // 1.5 (1 - largest eigenvalue share of sum n n^T)
-  kLuminanceContrast,                 // 2 (luminance - mean luminance of 5^3 neighbours), clamped
-  kColourContrast,                    // |rgb - mean rgb of 5^3 neighbours|, clamped to 1
+  kAlbedoR = 0,
+  kAlbedoG,
+  kAlbedoB,  // mean visible albedo (surface albedo where never seen)
+  kNormalX,
+  kNormalY,
+  kNormalZ,            // mean visible normal, unit (0 where never seen)
+  kVisibility,         // share of all views that see the voxel
+  kTopVisibility,      // share of the views from above that see it
+  kHeight,             // (z - zmin) / (zmax - zmin) over occupied voxels
+  kRadial,             // distance from the vertical bbox axis / its maximum
+  kAreaDensity,        // log(1 + area / voxel face) / log(5)
+  kOccupancy3,         // occupied share of the 26 neighbours
+  kOccupancy5,         // occupied share of the 124 neighbours in 5^3
+  kNormalVariation,    // 1.5 (1 - largest eigenvalue share of sum n n^T)
+  kLuminanceContrast,  // 2 (luminance - mean luminance of 5^3 neighbours), clamped
+  kColourContrast,     // |rgb - mean rgb of 5^3 neighbours|, clamped to 1
   kChannelCount
 };
 static_assert(kChannelCount == kEmbeddedChannels, "embedded channel count is part of the contract");

@@ -10,8 +10,17 @@ namespace sagrid {
 
 class EmbeddedViewEncoder : public ImageEncoder {
  public:
-  enum Channel { kAlbedoR = 0, kAlbedoG, kAlbedoB, kNormalX, kNormalY, kNormalZ, kMask, kMaskFromAbove,
-                 kChannelCount };
+  enum Channel {
+    kAlbedoR = 0,
+    kAlbedoG,
+    kAlbedoB,
+    kNormalX,
+    kNormalY,
+    kNormalZ,
+    kMask,
+    kMaskFromAbove,
+    kChannelCount
+  };
 
   explicit EmbeddedViewEncoder(int renderSize) : m_renderSize(renderSize) {}
 

@@ -14,7 +14,8 @@ void addBilinearSample(const FeatureMap& map, const Eigen::Vector2f& uv, float w
   const int xs[4] = {x0, x0 + 1, x0, x0 + 1};
   const int ys[4] = {y0, y0, y0 + 1, y0 + 1};
   for (int t = 0; t < 4; ++t) {
-    if (xs[t] < 0 || ys[t] < 0 || xs[t] >= map.width || ys[t] >= map.height || w[t] == 0.0f) continue;
+    if (xs[t] < 0 || ys[t] < 0 || xs[t] >= map.width || ys[t] >= map.height || w[t] == 0.0f)
+      continue;
     const float* texel = map.at(xs[t], ys[t]);
     const float tw = weight * w[t];
     for (int c = 0; c < map.channels; ++c) out[c] += tw * texel[c];

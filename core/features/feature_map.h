@@ -2,9 +2,8 @@
 // 37x37 tokens) features, sampled bilinearly at projected voxel centres.
 #pragma once
 
-#include <vector>
-
 #include <Eigen/Core>
+#include <vector>
 
 namespace sagrid {
 
@@ -20,7 +19,9 @@ struct FeatureMap {
     channels = c;
     values.assign(static_cast<std::size_t>(w) * h * c, 0.0f);
   }
-  float* at(int x, int y) { return values.data() + (static_cast<std::size_t>(y) * width + x) * channels; }
+  float* at(int x, int y) {
+    return values.data() + (static_cast<std::size_t>(y) * width + x) * channels;
+  }
   const float* at(int x, int y) const {
     return values.data() + (static_cast<std::size_t>(y) * width + x) * channels;
   }

@@ -41,8 +41,9 @@ std::string featureChecksum(const FeatureGrid& grid) {
   appendBytes(bytes, coordsOf(grid));
   appendBytes(bytes, grid.values);
   appendBytes(bytes, grid.descriptor);
-  appendBytes(bytes, std::vector<float>{grid.normalization.center.x(), grid.normalization.center.y(),
-                                        grid.normalization.center.z(), grid.normalization.scale});
+  appendBytes(bytes,
+              std::vector<float>{grid.normalization.center.x(), grid.normalization.center.y(),
+                                 grid.normalization.center.z(), grid.normalization.scale});
   return sha256Hex(bytes);
 }
 
@@ -63,7 +64,8 @@ void writeFeatureNpz(const std::filesystem::path& path, const FeatureGrid& grid,
   const std::string metaText = meta.dump();
   NpzArchive npz;
   npz["coords"] = NpyArray::from(coordsOf(grid), {grid.voxels.size(), 3});
-  npz["feats"] = NpyArray::from(grid.values, {grid.voxels.size(), static_cast<std::size_t>(grid.channels)});
+  npz["feats"] =
+      NpyArray::from(grid.values, {grid.voxels.size(), static_cast<std::size_t>(grid.channels)});
   npz["descriptor"] = NpyArray::from(grid.descriptor);
   npz["normalization_center"] = NpyArray::from(std::vector<float>{
       grid.normalization.center.x(), grid.normalization.center.y(), grid.normalization.center.z()});
@@ -99,17 +101,20 @@ FeatureGrid readFeatureNpz(const std::filesystem::path& path, nlohmann::json* me
   }
   const NpyArray& coords = entry(npz, "coords", "int32", path);
   const NpyArray& feats = entry(npz, "feats", "float32", path);
-  if (coords.shape.size() != 2 || coords.shape[1] != 3) throw FileError(path, "'coords' must be N x 3");
+  if (coords.shape.size() != 2 || coords.shape[1] != 3)
+    throw FileError(path, "'coords' must be N x 3");
   const std::size_t n = coords.shape[0];
   if (feats.shape.size() != 2 || feats.shape[0] != n ||
       feats.shape[1] != static_cast<std::size_t>(grid.channels)) {
-    throw FileError(path, "'feats' must be " + std::to_string(n) + " x " + std::to_string(grid.channels));
+    throw FileError(path,
+                    "'feats' must be " + std::to_string(n) + " x " + std::to_string(grid.channels));
   }
   const std::vector<std::int32_t> c = coords.as<std::int32_t>();
   for (std::size_t v = 0; v < n; ++v) {
     const VoxelIndex idx{c[v * 3], c[v * 3 + 1], c[v * 3 + 2]};
     if (std::min({idx.i, idx.j, idx.k}) < 0 || std::max({idx.i, idx.j, idx.k}) >= grid.resolution) {
-      throw FileError(path, "voxel coordinate outside the " + std::to_string(grid.resolution) + "^3 grid");
+      throw FileError(
+          path, "voxel coordinate outside the " + std::to_string(grid.resolution) + "^3 grid");
     }
     grid.voxels.push_back(idx);
   }
@@ -117,7 +122,8 @@ FeatureGrid readFeatureNpz(const std::filesystem::path& path, nlohmann::json* me
   grid.descriptor = entry(npz, "descriptor", "float32", path).as<float>();
   const std::vector<float> centre = entry(npz, "normalization_center", "float32", path).as<float>();
   const std::vector<float> scale = entry(npz, "normalization_scale", "float32", path).as<float>();
-  if (centre.size() != 3 || scale.size() != 1) throw FileError(path, "normalization arrays have wrong sizes");
+  if (centre.size() != 3 || scale.size() != 1)
+    throw FileError(path, "normalization arrays have wrong sizes");
   grid.normalization.center = Eigen::Vector3f(centre[0], centre[1], centre[2]);
   grid.normalization.scale = scale[0];
   if (meta.value("checksum", std::string()) != featureChecksum(grid)) {

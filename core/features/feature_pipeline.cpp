@@ -3,7 +3,6 @@
 #include <chrono>
 #include <cstring>
 #include <fstream>
-
 #include <nlohmann/json.hpp>
 
 #include "core/common/atomic_file.h"
@@ -34,7 +33,8 @@ Backend parseBackend(const std::string& name) {
   if (name == "embedded") return Backend::Embedded;
   if (name == "dinov2") return Backend::Dinov2;
   if (name == "trellis") return Backend::Trellis;
-  throw InvalidArgument("unknown feature backend '" + name + "' (choose embedded, dinov2 or trellis)");
+  throw InvalidArgument("unknown feature backend '" + name +
+                        "' (choose embedded, dinov2 or trellis)");
 }
 
 // Whether the views go through DINOv2 (dinov2, and trellis with a model for its descriptor) or
@@ -56,7 +56,8 @@ Aggregation aggregationOf(const FeatureOptions& o, Backend b) {
 void validate(const FeatureOptions& o) {
   const Backend b = parseBackend(o.backend);
   if (o.resolution < 4 || o.resolution > 256) {
-    throw InvalidArgument("feature grid resolution must be in [4, 256], got " + std::to_string(o.resolution));
+    throw InvalidArgument("feature grid resolution must be in [4, 256], got " +
+                          std::to_string(o.resolution));
   }
   if (o.views < 1 || o.views > 10000) {
     throw InvalidArgument("number of views must be in [1, 10000], got " + std::to_string(o.views));
@@ -66,15 +67,17 @@ void validate(const FeatureOptions& o) {
     throw InvalidArgument("render size must be in [8, 4096], got " + std::to_string(size));
   }
   if (b == Backend::Dinov2 && o.dinov2Model.empty()) {
-    throw InvalidArgument("the dinov2 backend needs a TorchScript model (--dinov2-model FILE; "
-                          "export one with packaging/python/export_dinov2.py)");
+    throw InvalidArgument(
+        "the dinov2 backend needs a TorchScript model (--dinov2-model FILE; "
+        "export one with packaging/python/export_dinov2.py)");
   }
   if (b == Backend::Trellis && o.trellisLatents.empty()) {
     throw InvalidArgument("the trellis backend needs TRELLIS latents (--trellis-latents FILE|DIR)");
   }
   if (b == Backend::Trellis && o.resolution != kDefaultGridResolution) {
     throw InvalidArgument("TRELLIS latents live on a 64^3 grid; resolution " +
-                          std::to_string(o.resolution) + " is not possible with the trellis backend");
+                          std::to_string(o.resolution) +
+                          " is not possible with the trellis backend");
   }
 }
 
@@ -111,18 +114,24 @@ double secondsSince(std::chrono::steady_clock::time_point start) {
 
 int featureChannels(const FeatureOptions& options) {
   switch (parseBackend(options.backend)) {
-    case Backend::Embedded: return kEmbeddedChannels;
-    case Backend::Dinov2: return kDinov2Channels;
-    case Backend::Trellis: return kTrellisLatentChannels;
+    case Backend::Embedded:
+      return kEmbeddedChannels;
+    case Backend::Dinov2:
+      return kDinov2Channels;
+    case Backend::Trellis:
+      return kTrellisLatentChannels;
   }
   return 0;
 }
 
 int descriptorSize(const FeatureOptions& options) {
   switch (parseBackend(options.backend)) {
-    case Backend::Embedded: return kEmbeddedDescriptorSize;
-    case Backend::Dinov2: return kDinov2Channels;
-    case Backend::Trellis: return options.dinov2Model.empty() ? kEmbeddedDescriptorSize : kDinov2Channels;
+    case Backend::Embedded:
+      return kEmbeddedDescriptorSize;
+    case Backend::Dinov2:
+      return kDinov2Channels;
+    case Backend::Trellis:
+      return options.dinov2Model.empty() ? kEmbeddedDescriptorSize : kDinov2Channels;
   }
   return 0;
 }
@@ -148,7 +157,8 @@ std::string featureConfigHash(const FeatureOptions& options) {
     config["embedded_version"] = kEmbeddedVersion;
   }
   if (b == Backend::Trellis) {
-    config["trellis_latents"] = std::filesystem::absolute(options.trellisLatents).lexically_normal().string();
+    config["trellis_latents"] =
+        std::filesystem::absolute(options.trellisLatents).lexically_normal().string();
   }
   return sha256Hex(config.dump()).substr(0, 16);
 }
@@ -186,8 +196,8 @@ FeatureGrid computeFeatures(const Mesh& mesh, const FeatureOptions& options) {
     }
     case Backend::Dinov2: {
       Dinov2Encoder encoder(options.dinov2Model, renderSize, kDinov2Channels);
-      EncodedFeatures f = encodeViewsIntoVoxels(normalized, scene, grid, seed, options.views,
-                                                encoder, aggregation);
+      EncodedFeatures f =
+          encodeViewsIntoVoxels(normalized, scene, grid, seed, options.views, encoder, aggregation);
       out.voxels = grid.occupiedVoxels();
       out.values = std::move(f.values);
       out.descriptor = std::move(f.descriptor);
@@ -195,11 +205,12 @@ FeatureGrid computeFeatures(const Mesh& mesh, const FeatureOptions& options) {
     }
     case Backend::Trellis: {
       if (mesh.sha256.empty()) {
-        throw InvalidArgument("the trellis backend finds latents by the mesh file's sha256; this "
-                              "mesh has none (not imported from a file)");
+        throw InvalidArgument(
+            "the trellis backend finds latents by the mesh file's sha256; this "
+            "mesh has none (not imported from a file)");
       }
-      TrellisLatents latents =
-          readTrellisLatents(trellisLatentFile(options.trellisLatents, mesh.sha256), options.resolution);
+      TrellisLatents latents = readTrellisLatents(
+          trellisLatentFile(options.trellisLatents, mesh.sha256), options.resolution);
       if (latents.channels != kTrellisLatentChannels) {
         throw FileError(trellisLatentFile(options.trellisLatents, mesh.sha256),
                         "feats has " + std::to_string(latents.channels) +
@@ -223,10 +234,11 @@ FeatureGrid computeFeatures(const Mesh& mesh, const FeatureOptions& options) {
     }
   }
   const double total = secondsSince(start);
-  logger()->info("features ({}): {} voxels x {} channels in {:.3f} s (normalize+voxelize {:.3f}, "
-                 "BVH {:.3f}, views+features {:.3f})",
-                 options.backend, out.voxels.size(), out.channels, total, voxelizeSeconds, sceneSeconds,
-                 total - voxelizeSeconds - sceneSeconds);
+  logger()->info(
+      "features ({}): {} voxels x {} channels in {:.3f} s (normalize+voxelize {:.3f}, "
+      "BVH {:.3f}, views+features {:.3f})",
+      options.backend, out.voxels.size(), out.channels, total, voxelizeSeconds, sceneSeconds,
+      total - voxelizeSeconds - sceneSeconds);
   return out;
 }
 

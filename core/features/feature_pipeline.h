@@ -7,8 +7,9 @@
 //                into voxels plus geometric channels; kEmbeddedChannels per voxel and a
 //                kEmbeddedDescriptorSize-d object descriptor (see embedded_features.h).
 //   "dinov2"   — TRELLIS protocol with a user-supplied TorchScript dinov2_vitl14_reg
-//                (options.dinov2Model): 150 views, 518^2, pre-norm patch tokens 37x37x1024, bilinear
-//                sampling, mean over views; 1024 channels, 1024-d descriptor (mean patch feature).
+//                (options.dinov2Model): 150 views, 518^2, pre-norm patch tokens 37x37x1024,
+//                bilinear sampling, mean over views; 1024 channels, 1024-d descriptor (mean patch
+//                feature).
 //   "trellis"  — TRELLIS SLAT latents from TRELLIS's own toolkit (options.trellisLatents: a
 //                <sha256>.npz file or a folder of them; coords uint8 N x 3, feats float32 N x 8);
 //                8 channels; descriptor from dinov2 when options.dinov2Model is set, else the
@@ -40,8 +41,8 @@ enum class Aggregation {
 struct FeatureOptions {
   std::string backend = "embedded";  // "embedded" | "dinov2" | "trellis"
   int resolution = kDefaultGridResolution;
-  std::filesystem::path cacheDir;    // empty = no cache
-  std::optional<UpAxis> up;          // override the file's up axis on import
+  std::filesystem::path cacheDir;        // empty = no cache
+  std::optional<UpAxis> up;              // override the file's up axis on import
   std::filesystem::path dinov2Model;     // TorchScript dinov2_vitl14_reg (dinov2, trellis)
   std::filesystem::path trellisLatents;  // <sha256>.npz or a folder of them (trellis)
 

@@ -16,8 +16,10 @@ namespace sagrid {
 namespace {
 // Five stops of viridis, linearly interpolated.
 Eigen::Vector3f colourMap(float t) {
-  static const Eigen::Vector3f stops[5] = {{0.267f, 0.005f, 0.329f}, {0.229f, 0.322f, 0.546f},
-                                           {0.128f, 0.567f, 0.551f}, {0.369f, 0.789f, 0.383f},
+  static const Eigen::Vector3f stops[5] = {{0.267f, 0.005f, 0.329f},
+                                           {0.229f, 0.322f, 0.546f},
+                                           {0.128f, 0.567f, 0.551f},
+                                           {0.369f, 0.789f, 0.383f},
                                            {0.993f, 0.906f, 0.144f}};
   t = std::clamp(t, 0.0f, 1.0f) * 4.0f;
   const int i = std::min(3, static_cast<int>(t));
@@ -55,15 +57,17 @@ std::string renderFeaturePreviewPng(const Mesh& mesh, const FeatureGrid& grid, i
       const std::size_t p = static_cast<std::size_t>(y) * size + x;
       if (!view.mask[p]) continue;
       const Eigen::Vector3f hit =
-          camera.position() + view.depth[p] * camera.rayDirection((x + 0.5f) / size, (y + 0.5f) / size);
+          camera.position() +
+          view.depth[p] * camera.rayDirection((x + 0.5f) / size, (y + 0.5f) / size);
       const VoxelIndex v = voxelContaining(hit, res);
       const int r = row[(static_cast<std::size_t>(v.i) * res + v.j) * res + v.k];
       // Light shading keeps the shape readable under the colour.
-      const float shade = 0.55f + 0.45f * std::abs(Eigen::Vector3f(view.normal[p * 3], view.normal[p * 3 + 1],
-                                                                   view.normal[p * 3 + 2])
-                                                       .dot(-camera.rayDirection(0.5f, 0.5f).normalized()));
-      const Eigen::Vector3f c =
-          r < 0 ? Eigen::Vector3f(0.5f, 0.5f, 0.5f) : colourMap((grid.featuresOf(r)[channel] - lo) / range);
+      const float shade =
+          0.55f + 0.45f * std::abs(Eigen::Vector3f(view.normal[p * 3], view.normal[p * 3 + 1],
+                                                   view.normal[p * 3 + 2])
+                                       .dot(-camera.rayDirection(0.5f, 0.5f).normalized()));
+      const Eigen::Vector3f c = r < 0 ? Eigen::Vector3f(0.5f, 0.5f, 0.5f)
+                                      : colourMap((grid.featuresOf(r)[channel] - lo) / range);
       for (int k = 0; k < 3; ++k) view.rgb[p * 3 + k] = c[k] * shade;
     }
   }

@@ -17,8 +17,8 @@ class ImageEncoder {
   virtual ~ImageEncoder() = default;
 
   virtual std::string name() const = 0;
-  virtual int channels() const = 0;        // per feature-map cell
-  virtual int renderSize() const = 0;      // the square view size it expects
+  virtual int channels() const = 0;    // per feature-map cell
+  virtual int renderSize() const = 0;  // the square view size it expects
   virtual int preferredBatch() const { return 1; }
 
   // One feature map per view; `cameras` are the views' cameras (same order), for encoders whose

@@ -14,9 +14,10 @@ namespace sagrid {
 struct Mesh;
 
 struct VoxelSurfaceStats {
-  float area = 0.0f;                        // normalized-frame surface area inside the voxel
-  std::array<float, 3> albedo{0, 0, 0};     // area-weighted sum (divide by area)
-  std::array<float, 6> normalTensor{0, 0, 0, 0, 0, 0};  // area-weighted sum of n n^T: xx yy zz xy xz yz
+  float area = 0.0f;                     // normalized-frame surface area inside the voxel
+  std::array<float, 3> albedo{0, 0, 0};  // area-weighted sum (divide by area)
+  std::array<float, 6> normalTensor{0, 0, 0,
+                                    0, 0, 0};  // area-weighted sum of n n^T: xx yy zz xy xz yz
 };
 
 // One entry per occupied voxel of `grid`, in grid.occupiedVoxels() order. `normalizedMesh` is the

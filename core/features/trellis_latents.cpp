@@ -18,8 +18,9 @@ TrellisLatents readTrellisLatents(const std::filesystem::path& path, int resolut
   }
   const auto coordsIt = npz.find("coords"), featsIt = npz.find("feats");
   if (coordsIt == npz.end() || featsIt == npz.end()) {
-    throw FileError(path, "not a TRELLIS latent file: needs 'coords' (uint8 N x 3) and 'feats' "
-                          "(float32 N x 8)");
+    throw FileError(path,
+                    "not a TRELLIS latent file: needs 'coords' (uint8 N x 3) and 'feats' "
+                    "(float32 N x 8)");
   }
   const NpyArray& coords = coordsIt->second;
   const NpyArray& feats = featsIt->second;
@@ -49,8 +50,9 @@ TrellisLatents readTrellisLatents(const std::filesystem::path& path, int resolut
   // A normalized object touches both ends of its largest axis, so on a 64^3 grid some
   // coordinate reaches the upper half; coordinates all below 32 mean a 32^3 (or coarser) grid.
   if (hi < resolution / 2) {
-    throw FileError(path, "voxel coordinates only span 0.." + std::to_string(static_cast<long>(hi)) +
-                              ": this is a " + std::to_string(static_cast<long>(hi) + 1) +
+    throw FileError(path, "voxel coordinates only span 0.." +
+                              std::to_string(static_cast<long>(hi)) + ": this is a " +
+                              std::to_string(static_cast<long>(hi) + 1) +
                               "^3-sized grid, but TRELLIS SLAT latents must be on the " +
                               std::to_string(resolution) + "^3 grid");
   }
@@ -64,7 +66,8 @@ TrellisLatents readTrellisLatents(const std::filesystem::path& path, int resolut
                                 static_cast<int>(c[v * 3 + 2])},
                      v});
   }
-  std::sort(order.begin(), order.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  std::sort(order.begin(), order.end(),
+            [](const auto& a, const auto& b) { return a.first < b.first; });
   for (std::size_t v = 1; v < n; ++v) {
     if (order[v].first == order[v - 1].first) {
       throw FileError(path, "voxel (" + std::to_string(order[v].first.i) + ", " +
@@ -76,7 +79,8 @@ TrellisLatents readTrellisLatents(const std::filesystem::path& path, int resolut
   out.feats.reserve(f.size());
   for (const auto& [voxel, row] : order) {
     out.voxels.push_back(voxel);
-    out.feats.insert(out.feats.end(), f.begin() + row * out.channels, f.begin() + (row + 1) * out.channels);
+    out.feats.insert(out.feats.end(), f.begin() + row * out.channels,
+                     f.begin() + (row + 1) * out.channels);
   }
   return out;
 }
@@ -87,8 +91,9 @@ std::filesystem::path trellisLatentFile(const std::filesystem::path& fileOrDir,
   if (std::filesystem::is_directory(fileOrDir, ec)) {
     const auto file = fileOrDir / (meshSha256 + ".npz");
     if (!std::filesystem::exists(file, ec)) {
-      throw FileError(file, "no TRELLIS latent for this mesh (TRELLIS names them <sha256 of the "
-                            "mesh file>.npz)");
+      throw FileError(file,
+                      "no TRELLIS latent for this mesh (TRELLIS names them <sha256 of the "
+                      "mesh file>.npz)");
     }
     return file;
   }

@@ -5,9 +5,8 @@
 // of whatever covers them.
 #pragma once
 
-#include <vector>
-
 #include <Eigen/Core>
+#include <vector>
 
 #include "core/features/feature_map.h"
 #include "core/features/feature_pipeline.h"

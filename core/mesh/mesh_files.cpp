@@ -37,15 +37,18 @@ std::string idFor(const std::filesystem::path& relative) {
 
 std::vector<MeshFile> findMeshFiles(const std::filesystem::path& fileOrDir) {
   std::error_code ec;
-  if (!std::filesystem::exists(fileOrDir, ec)) throw FileError(fileOrDir, "no such file or directory");
+  if (!std::filesystem::exists(fileOrDir, ec))
+    throw FileError(fileOrDir, "no such file or directory");
   if (!std::filesystem::is_directory(fileOrDir, ec)) {
     if (!supported(fileOrDir)) {
-      throw FileError(fileOrDir, "not a supported mesh file (use .obj, .glb, .gltf, .fbx, .dae, "
-                                 ".ply or .stl)");
+      throw FileError(fileOrDir,
+                      "not a supported mesh file (use .obj, .glb, .gltf, .fbx, .dae, "
+                      ".ply or .stl)");
     }
-    const std::string stem = lower(fileOrDir.stem().string()) == "mesh" && fileOrDir.has_parent_path()
-                                 ? fileOrDir.parent_path().filename().string()
-                                 : fileOrDir.stem().string();
+    const std::string stem =
+        lower(fileOrDir.stem().string()) == "mesh" && fileOrDir.has_parent_path()
+            ? fileOrDir.parent_path().filename().string()
+            : fileOrDir.stem().string();
     return {{fileOrDir, stem.empty() ? fileOrDir.stem().string() : stem}};
   }
   std::vector<std::filesystem::path> found;

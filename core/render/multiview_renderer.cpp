@@ -60,9 +60,7 @@ void renderInto(const Mesh& mesh, const SurfaceScene& scene, const ViewCamera& c
 }
 }  // namespace
 
-int defaultThreadCount() {
-  return std::max(1u, std::thread::hardware_concurrency());
-}
+int defaultThreadCount() { return std::max(1u, std::thread::hardware_concurrency()); }
 
 void MultiViewRenderer::render(const ViewCamera& camera, int size, RenderedView& out) const {
   RayBuffers rays;

@@ -13,10 +13,10 @@ constexpr float kBackgroundDepth = std::numeric_limits<float>::infinity();
 struct RenderedView {
   int width = 0;
   int height = 0;
-  std::vector<float> rgb;      // 3 per pixel, albedo x headlight shading, 0 on background
-  std::vector<float> albedo;   // 3 per pixel, unshaded surface colour, 0 on background
-  std::vector<float> depth;    // z-depth along the optical axis, kBackgroundDepth on background
-  std::vector<float> normal;   // 3 per pixel, unit world-space normal facing the camera, 0 on bg
+  std::vector<float> rgb;     // 3 per pixel, albedo x headlight shading, 0 on background
+  std::vector<float> albedo;  // 3 per pixel, unshaded surface colour, 0 on background
+  std::vector<float> depth;   // z-depth along the optical axis, kBackgroundDepth on background
+  std::vector<float> normal;  // 3 per pixel, unit world-space normal facing the camera, 0 on bg
   std::vector<std::uint8_t> mask;  // 1 where the object covers the pixel centre
 
   std::size_t pixelCount() const { return static_cast<std::size_t>(width) * height; }

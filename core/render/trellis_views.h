@@ -4,12 +4,11 @@
 // from the mesh so an object always gets the same views.
 #pragma once
 
+#include <Eigen/Core>
 #include <cstdint>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
-
-#include <Eigen/Core>
-#include <nlohmann/json.hpp>
 
 #include "core/render/view_camera.h"
 

@@ -1,8 +1,7 @@
 #include "core/render/view_camera.h"
 
-#include <cmath>
-
 #include <Eigen/Geometry>
+#include <cmath>
 
 namespace sagrid {
 

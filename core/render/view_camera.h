@@ -20,8 +20,8 @@ struct ViewCamera {
 
   Eigen::Vector3f position() const { return cameraToWorld.block<3, 1>(0, 3); }
   Eigen::Matrix3f rotation() const { return cameraToWorld.block<3, 3>(0, 0); }  // camera->world
-  Eigen::Matrix4f extrinsics() const;   // world -> camera (OpenCV), TRELLIS "extrinsics"
-  Eigen::Matrix3f intrinsics() const;   // normalized, TRELLIS "intrinsics"
+  Eigen::Matrix4f extrinsics() const;        // world -> camera (OpenCV), TRELLIS "extrinsics"
+  Eigen::Matrix3f intrinsics() const;        // normalized, TRELLIS "intrinsics"
   Eigen::Matrix4f blenderTransform() const;  // camera -> world, OpenGL axes ("transform_matrix")
 
   // Projects a world point: normalized image coordinates (u, v) and depth along the optical axis.

@@ -22,10 +22,12 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const std::vector<std::string> kRealDev = {"libero__basin_faucet", "libero__faucet_knob", "libero__flat_stove"};
+const std::vector<std::string> kRealDev = {"libero__basin_faucet", "libero__faucet_knob",
+                                           "libero__flat_stove"};
 
 fs::path realDevMesh(int i) {
-  return fs::path(SAGRID_SOURCE_DIR) / ".." / "shared" / "data" / "real-dev" / kRealDev[i] / "mesh.obj";
+  return fs::path(SAGRID_SOURCE_DIR) / ".." / "shared" / "data" / "real-dev" / kRealDev[i] /
+         "mesh.obj";
 }
 
 fs::path benchDir() {
@@ -46,15 +48,18 @@ fs::path denseCopy(int i) {
   std::size_t vertices = 0, triangles = 0;
   for (std::size_t t = 0; t < mesh.triangleCount(); ++t) {
     const auto& tri = mesh.triangles[t];
-    const Eigen::Vector3f a = mesh.positions[tri[0]], b = mesh.positions[tri[1]], c = mesh.positions[tri[2]];
-    auto index = [&](int r, int s) { return vertices + 1 + static_cast<std::size_t>(r * (r + 1) / 2 + s); };
+    const Eigen::Vector3f a = mesh.positions[tri[0]], b = mesh.positions[tri[1]],
+                          c = mesh.positions[tri[2]];
+    auto index = [&](int r, int s) {
+      return vertices + 1 + static_cast<std::size_t>(r * (r + 1) / 2 + s);
+    };
     for (int r = 0; r <= n; ++r) {
       for (int s = 0; s <= r; ++s) {
         const float u = static_cast<float>(r - s) / n, v = static_cast<float>(s) / n;
         const Eigen::Vector3f p = a + u * (b - a) + v * (c - a);
         const Eigen::Vector3f col = mesh.albedo(static_cast<int>(t), u, v);
-        out << "v " << p.x() << ' ' << p.y() << ' ' << p.z() << ' ' << col.x() << ' ' << col.y() << ' '
-            << col.z() << '\n';
+        out << "v " << p.x() << ' ' << p.y() << ' ' << p.z() << ' ' << col.x() << ' ' << col.y()
+            << ' ' << col.z() << '\n';
       }
     }
     for (int r = 0; r < n; ++r) {
@@ -62,7 +67,8 @@ fs::path denseCopy(int i) {
         out << "f " << index(r, s) << ' ' << index(r + 1, s) << ' ' << index(r + 1, s + 1) << '\n';
         ++triangles;
         if (s < r) {
-          out << "f " << index(r, s) << ' ' << index(r + 1, s + 1) << ' ' << index(r, s + 1) << '\n';
+          out << "f " << index(r, s) << ' ' << index(r + 1, s + 1) << ' ' << index(r, s + 1)
+              << '\n';
           ++triangles;
         }
       }
@@ -75,19 +81,22 @@ fs::path denseCopy(int i) {
 
 void renderViews(benchmark::State& state, const fs::path& file) {
   const sagrid::Mesh mesh = sagrid::importMesh(file);
-  const sagrid::Mesh normalized = sagrid::normalizedCopy(mesh, sagrid::Normalization::fromMesh(mesh));
+  const sagrid::Mesh normalized =
+      sagrid::normalizedCopy(mesh, sagrid::Normalization::fromMesh(mesh));
   const sagrid::SurfaceScene scene(normalized);
   const sagrid::MultiViewRenderer renderer(normalized, scene);
   const auto cameras = sagrid::trellisViews(sagrid::kTrellisViewCount, 1);
   const int size = static_cast<int>(state.range(0));
   for (auto _ : state) {
     std::size_t covered = 0;
-    renderer.renderEach(cameras, size, sagrid::defaultThreadCount(),
-                        [&](int, int, const sagrid::RenderedView& v) { covered += v.mask[v.pixelCount() / 2]; });
+    renderer.renderEach(
+        cameras, size, sagrid::defaultThreadCount(),
+        [&](int, int, const sagrid::RenderedView& v) { covered += v.mask[v.pixelCount() / 2]; });
     benchmark::DoNotOptimize(covered);
   }
-  state.counters["rays_per_s"] = benchmark::Counter(static_cast<double>(cameras.size()) * size * size,
-                                                    benchmark::Counter::kIsIterationInvariantRate);
+  state.counters["rays_per_s"] =
+      benchmark::Counter(static_cast<double>(cameras.size()) * size * size,
+                         benchmark::Counter::kIsIterationInvariantRate);
   state.counters["triangles"] = static_cast<double>(mesh.triangleCount());
 }
 
@@ -105,9 +114,15 @@ void BM_ComputeEmbedded_Dense(benchmark::State& state) {
   const sagrid::Mesh mesh = sagrid::importMesh(denseCopy(2));
   sagrid::FeatureOptions options;
   options.renderSize = static_cast<int>(state.range(0));
-  for (auto _ : state) benchmark::DoNotOptimize(sagrid::computeFeatures(mesh, options).values.data());
+  for (auto _ : state)
+    benchmark::DoNotOptimize(sagrid::computeFeatures(mesh, options).values.data());
 }
-BENCHMARK(BM_ComputeEmbedded_Dense)->Arg(64)->Arg(96)->Arg(128)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_ComputeEmbedded_Dense)
+    ->Arg(64)
+    ->Arg(96)
+    ->Arg(128)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 
 // Mesh file -> features in a fresh cache (import, voxelize, render, aggregate, write the entry).
 void extractCold(benchmark::State& state, const fs::path& file) {
@@ -129,7 +144,10 @@ BENCHMARK(BM_ExtractEmbedded_Dense)->DenseRange(0, 2)->Unit(benchmark::kMillisec
 void BM_ExtractEmbedded_RealDev(benchmark::State& state) {
   extractCold(state, realDevMesh(static_cast<int>(state.range(0))));
 }
-BENCHMARK(BM_ExtractEmbedded_RealDev)->DenseRange(0, 2)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_ExtractEmbedded_RealDev)
+    ->DenseRange(0, 2)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 
 // A cache hit: hash the file, read and verify the entry.
 void BM_ExtractEmbedded_CacheHit(benchmark::State& state) {
@@ -137,7 +155,8 @@ void BM_ExtractEmbedded_CacheHit(benchmark::State& state) {
   options.cacheDir = benchDir() / "cache-hit";
   const fs::path file = denseCopy(2);
   sagrid::extractFeatures(file, options);
-  for (auto _ : state) benchmark::DoNotOptimize(sagrid::extractFeatures(file, options).values.data());
+  for (auto _ : state)
+    benchmark::DoNotOptimize(sagrid::extractFeatures(file, options).values.data());
 }
 BENCHMARK(BM_ExtractEmbedded_CacheHit)->Unit(benchmark::kMillisecond)->UseRealTime();
 

@@ -3,6 +3,7 @@
 // line, non-zero exit).
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+
 #include <nlohmann/json.hpp>
 
 #include "core/features/feature_npz.h"
@@ -11,15 +12,16 @@
 namespace sagrid {
 namespace {
 namespace fs = std::filesystem;
-using ::testing::HasSubstr;
 using test::runSagrid;
 using test::shellQuote;
+using ::testing::HasSubstr;
 
 TEST(ExtractCommand, FolderWithCacheAndOutputs) {
   if (!fs::exists(test::realDevDir())) GTEST_SKIP();
   const fs::path dir = test::freshTempDir("extract_cli");
-  const std::string common = shellQuote(test::realDevDir().string()) + " --out " + shellQuote((dir / "out").string()) +
-                             " --cache " + shellQuote((dir / "cache").string()) + " --views 16 --resolution 32";
+  const std::string common = shellQuote(test::realDevDir().string()) + " --out " +
+                             shellQuote((dir / "out").string()) + " --cache " +
+                             shellQuote((dir / "cache").string()) + " --views 16 --resolution 32";
   auto r = runSagrid("extract " + common);
   ASSERT_EQ(r.exitCode, 0) << r.output;
   EXPECT_THAT(r.output, HasSubstr("3 of 3 meshes"));
@@ -40,28 +42,31 @@ TEST(ExtractCommand, ExportsViewsInTrellisLayout) {
   if (!fs::exists(test::realDevDir())) GTEST_SKIP();
   const fs::path dir = test::freshTempDir("extract_views");
   const fs::path mesh = test::realDevDir() / "libero__faucet_knob" / "mesh.obj";
-  const auto r = runSagrid("extract " + shellQuote(mesh.string()) + " --out " + shellQuote((dir / "out").string()) +
-                           " --views 3 --render-size 64 --export-views " + shellQuote((dir / "views").string()));
+  const auto r = runSagrid(
+      "extract " + shellQuote(mesh.string()) + " --out " + shellQuote((dir / "out").string()) +
+      " --views 3 --render-size 64 --export-views " + shellQuote((dir / "views").string()));
   ASSERT_EQ(r.exitCode, 0) << r.output;
   const fs::path views = dir / "views" / "libero__faucet_knob";
   EXPECT_TRUE(fs::exists(views / "000.png"));
   EXPECT_TRUE(fs::exists(views / "002_depth.png"));
-  const auto transforms = nlohmann::json::parse(test::runCommand("cat " + shellQuote((views / "transforms.json").string())).output);
+  const auto transforms = nlohmann::json::parse(
+      test::runCommand("cat " + shellQuote((views / "transforms.json").string())).output);
   ASSERT_EQ(transforms["frames"].size(), 3u);
   EXPECT_NEAR(transforms["frames"][0]["camera_angle_x"].get<double>(), 40.0 / 180.0 * M_PI, 1e-6);
 }
 
 TEST(ExtractCommand, BadInputGivesOneClearError) {
   const fs::path dir = test::freshTempDir("extract_bad");
-  auto r = runSagrid("extract " + shellQuote((dir / "nothing.obj").string()) + " --out " + shellQuote(dir.string()));
+  auto r = runSagrid("extract " + shellQuote((dir / "nothing.obj").string()) + " --out " +
+                     shellQuote(dir.string()));
   EXPECT_EQ(r.exitCode, 1);
   EXPECT_THAT(r.output, HasSubstr("nothing.obj: no such file"));
   r = runSagrid("extract " + shellQuote(dir.string()) + " --out " + shellQuote(dir.string()));
   EXPECT_EQ(r.exitCode, 1);
   EXPECT_THAT(r.output, HasSubstr("no mesh files found"));
   if (fs::exists(test::realDevDir())) {
-    r = runSagrid("extract " + shellQuote(test::realDevDir().string()) + " --backend dinov2 --out " +
-                  shellQuote(dir.string()));
+    r = runSagrid("extract " + shellQuote(test::realDevDir().string()) +
+                  " --backend dinov2 --out " + shellQuote(dir.string()));
     EXPECT_EQ(r.exitCode, 1);
     EXPECT_THAT(r.output, HasSubstr("--dinov2-model"));
   }

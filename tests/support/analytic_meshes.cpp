@@ -46,7 +46,8 @@ Mesh box(const Eigen::Vector3f& lo, const Eigen::Vector3f& hi) {
 
 Mesh quadZ(const Eigen::Vector2f& lo, const Eigen::Vector2f& hi, float z) {
   Mesh mesh;
-  mesh.positions = {{lo.x(), lo.y(), z}, {hi.x(), lo.y(), z}, {hi.x(), hi.y(), z}, {lo.x(), hi.y(), z}};
+  mesh.positions = {
+      {lo.x(), lo.y(), z}, {hi.x(), lo.y(), z}, {hi.x(), hi.y(), z}, {lo.x(), hi.y(), z}};
   mesh.normals.assign(4, Eigen::Vector3f::UnitZ());
   mesh.uvs = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
   mesh.triangles = {{0, 1, 2}, {0, 2, 3}};
@@ -68,6 +69,8 @@ void append(Mesh& a, const Mesh& b) {
   for (const auto& t : b.triangles) a.triangles.push_back(t + Eigen::Vector3i::Constant(offset));
 }
 
-void paint(Mesh& mesh, const Eigen::Vector3f& rgb) { mesh.colors.assign(mesh.positions.size(), rgb); }
+void paint(Mesh& mesh, const Eigen::Vector3f& rgb) {
+  mesh.colors.assign(mesh.positions.size(), rgb);
+}
 
 }  // namespace sagrid::test

@@ -1,8 +1,8 @@
 #include "core/features/embedded_features.h"
 
-#include <numeric>
-
 #include <gtest/gtest.h>
+
+#include <numeric>
 
 #include "core/geometry/surface_scene.h"
 #include "core/grid/voxelize.h"
@@ -61,10 +61,10 @@ TEST(EmbeddedFeatures, BoxFacesGetTheirNormalsHeightsAndVisibility) {
       ++top;
       EXPECT_GT(f[kNormalZ], 0.99f);
       EXPECT_FLOAT_EQ(f[kHeight], 1.0f);
-      EXPECT_GT(f[kTopVisibility], 0.6f);     // seen from most views above
+      EXPECT_GT(f[kTopVisibility], 0.6f);  // seen from most views above
       EXPECT_GT(f[kVisibility], 0.3f);
-      EXPECT_LT(f[kVisibility], 0.7f);        // ...and none below
-      EXPECT_NEAR(f[kOccupancy3], 8.0f / 26, 1e-6f);   // a flat sheet of voxels
+      EXPECT_LT(f[kVisibility], 0.7f);                // ...and none below
+      EXPECT_NEAR(f[kOccupancy3], 8.0f / 26, 1e-6f);  // a flat sheet of voxels
       EXPECT_NEAR(f[kNormalVariation], 0.0f, 1e-4f);
       EXPECT_NEAR(f[kAreaDensity], std::log(2.0f) / std::log(5.0f), 0.05f);  // one voxel face
       EXPECT_NEAR(f[kLuminanceContrast], 0.0f, 0.02f);
@@ -104,7 +104,7 @@ TEST(EmbeddedFeatures, HiddenInnerSurfaceIsInvisibleAndKeepsItsOwnColour) {
     EXPECT_EQ(occ.at(i)[kVisibility], 0.0f);
     EXPECT_NEAR(occ.at(i)[kAlbedoR], 1.0f, 1e-3f);
     EXPECT_NEAR(occ.at(i)[kAlbedoB], 0.0f, 1e-3f);
-    EXPECT_GT(mean.at(i)[kVisibility], 0.9f);   // every view projects it onto the box
+    EXPECT_GT(mean.at(i)[kVisibility], 0.9f);  // every view projects it onto the box
     EXPECT_NEAR(mean.at(i)[kAlbedoB], 0.9f, 0.05f);
   }
   EXPECT_GT(innerVoxels, 20);
@@ -137,10 +137,10 @@ TEST(EmbeddedFeatures, DescriptorHasFixedLayoutAndNormalizedHistograms) {
     EXPECT_NEAR(sum, 1.0f, 1e-5f) << "histogram " << h;
   }
   const float* tail = c.result.descriptor.data() + 7 * kHistogramBins;
-  EXPECT_NEAR(tail[0], 1.0f, 1e-5f);          // longer horizontal extent / largest
-  EXPECT_NEAR(tail[1], 0.6f / 0.8f, 1e-4f);   // shorter horizontal
-  EXPECT_NEAR(tail[2], 0.4f / 0.8f, 1e-4f);   // vertical
-  EXPECT_NEAR(tail[4], 0.2f, 0.02f);          // mean albedo r
+  EXPECT_NEAR(tail[0], 1.0f, 1e-5f);         // longer horizontal extent / largest
+  EXPECT_NEAR(tail[1], 0.6f / 0.8f, 1e-4f);  // shorter horizontal
+  EXPECT_NEAR(tail[2], 0.4f / 0.8f, 1e-4f);  // vertical
+  EXPECT_NEAR(tail[4], 0.2f, 0.02f);         // mean albedo r
   EXPECT_EQ(channelNames().size(), static_cast<std::size_t>(kEmbeddedChannels));
 }
 

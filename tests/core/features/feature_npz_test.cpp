@@ -1,8 +1,8 @@
 #include "core/features/feature_npz.h"
 
-#include <fstream>
-
 #include <gtest/gtest.h>
+
+#include <fstream>
 
 #include "core/common/atomic_file.h"
 #include "core/common/error.h"

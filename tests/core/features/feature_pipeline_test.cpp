@@ -1,9 +1,9 @@
 #include "core/features/feature_pipeline.h"
 
+#include <gtest/gtest.h>
+
 #include <algorithm>
 #include <fstream>
-
-#include <gtest/gtest.h>
 
 #include "core/common/atomic_file.h"
 #include "core/common/error.h"
@@ -172,7 +172,7 @@ TEST(FeaturePipeline, TrellisBackendTakesVoxelsAndLatentsFromTheTrellisFile) {
   EXPECT_EQ(g.channels, 8);
   ASSERT_EQ(g.voxels.size(), 2u);
   EXPECT_EQ(g.voxels[0], (VoxelIndex{0, 20, 30}));
-  EXPECT_EQ(g.values[0], 4.0f);  // second file row first after sorting
+  EXPECT_EQ(g.values[0], 4.0f);         // second file row first after sorting
   EXPECT_EQ(g.descriptor.size(), 64u);  // embedded descriptor: no DINOv2 model given
   // No latent for this mesh: the error names the expected file.
   writeBoxObj(dir, "# another mesh\n");

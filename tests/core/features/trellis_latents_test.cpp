@@ -35,8 +35,8 @@ TEST(TrellisLatents, ReadsTrellisFilesAndSortsVoxelsWithTheirRows) {
   ASSERT_EQ(l.voxels.size(), 3u);
   EXPECT_EQ(l.voxels[0], (VoxelIndex{0, 2, 3}));
   EXPECT_EQ(l.voxels[2], (VoxelIndex{63, 0, 1}));
-  EXPECT_EQ(l.feats[0], 8.0f);    // row 1 of the file moved first
-  EXPECT_EQ(l.feats[16], 0.0f);   // row 0 of the file is last
+  EXPECT_EQ(l.feats[0], 8.0f);   // row 1 of the file moved first
+  EXPECT_EQ(l.feats[16], 0.0f);  // row 0 of the file is last
   EXPECT_EQ(l.feats[8], 16.0f);
   EXPECT_THROW(trellisLatentFile(dir, "nothere"), FileError);
 }
@@ -45,7 +45,8 @@ TEST(TrellisLatents, BadFilesGetClearErrors) {
   const auto dir = test::freshTempDir("trellis_bad");
   // 32^3 grid: every coordinate below 32.
   writeNpz(dir / "grid32.npz", trellisNpz({0, 0, 0, 31, 20, 10}));
-  EXPECT_NE(errorOf(dir / "grid32.npz").find("64^3"), std::string::npos) << errorOf(dir / "grid32.npz");
+  EXPECT_NE(errorOf(dir / "grid32.npz").find("64^3"), std::string::npos)
+      << errorOf(dir / "grid32.npz");
   // Coordinates beyond the grid.
   NpzArchive big = trellisNpz({0, 0, 0});
   big["coords"] = NpyArray::from(std::vector<std::int32_t>{0, 0, 70}, {1, 3});

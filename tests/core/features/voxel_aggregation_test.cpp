@@ -1,9 +1,9 @@
 #include "core/features/voxel_aggregation.h"
 
+#include <gtest/gtest.h>
+
 #include <cmath>
 #include <random>
-
-#include <gtest/gtest.h>
 
 #include "core/common/error.h"
 #include "core/render/trellis_views.h"
@@ -23,7 +23,8 @@ std::vector<float> gridSample(const FeatureMap& map, float u, float v) {
       const float w = (1 - std::abs(ix - xx)) * (1 - std::abs(iy - yy));
       if (xx < 0 || yy < 0 || xx >= map.width || yy >= map.height) continue;
       for (int c = 0; c < map.channels; ++c) {
-        out[c] += w * map.values[(static_cast<std::size_t>(yy) * map.width + xx) * map.channels + c];
+        out[c] +=
+            w * map.values[(static_cast<std::size_t>(yy) * map.width + xx) * map.channels + c];
       }
     }
   }
@@ -33,7 +34,8 @@ std::vector<float> gridSample(const FeatureMap& map, float u, float v) {
 // Nearest 2x2 texels' farthest depth vs the point's depth.
 bool referenceVisible(const std::vector<float>& depth, int w, int h, float u, float v, float z,
                       float tol) {
-  const int x0 = static_cast<int>(std::floor(u * w - 0.5f)), y0 = static_cast<int>(std::floor(v * h - 0.5f));
+  const int x0 = static_cast<int>(std::floor(u * w - 0.5f)),
+            y0 = static_cast<int>(std::floor(v * h - 0.5f));
   float farthest = -1e30f;
   for (int y = y0; y <= y0 + 1; ++y)
     for (int x = x0; x <= x0 + 1; ++x) {
@@ -106,7 +108,8 @@ TEST(VoxelAggregation, OcclusionAwareEqualsBruteForceOverVisibleViews) {
     for (std::size_t v = 0; v < s.cameras.size(); ++v) {
       float z = 0;
       const Eigen::Vector2f uv = s.cameras[v].project(s.points[p], &z);
-      if (!referenceVisible(s.depths[v], s.depthSize, s.depthSize, uv.x(), uv.y(), z, tol)) continue;
+      if (!referenceVisible(s.depths[v], s.depthSize, s.depthSize, uv.x(), uv.y(), z, tol))
+        continue;
       const auto sample = gridSample(s.maps[v], uv.x(), uv.y());
       for (int c = 0; c < 3; ++c) sum[c] += sample[c];
       ++count;

@@ -2,12 +2,12 @@
 // contract as the exported dinov2_vitl14_reg: forward(x [B, 3, S, S]) -> [B, (S/14)^2, C]. The
 // stand-in returns each patch's mean normalized colour (repeated over channels, scaled by
 // channel group), so expected values are computable from the rendered images.
-#include <cmath>
-#include <fstream>
-
 #include <gtest/gtest.h>
 #include <torch/script.h>
 #include <torch/torch.h>
+
+#include <cmath>
+#include <fstream>
 
 #include "core/common/error.h"
 #include "core/features/dinov2_encoder.h"
@@ -89,7 +89,8 @@ TEST(Dinov2Encoder, PreprocessesAndLaysOutPatchTokensAsTrellis) {
       double sum = 0;
       for (int y = py * 14; y < py * 14 + 14; ++y)
         for (int x = px * 14; x < px * 14 + 14; ++x)
-          sum += (view.rgb[(static_cast<std::size_t>(y) * 518 + x) * 3 + c] - kImageNetMean[c]) / kImageNetStd[c];
+          sum += (view.rgb[(static_cast<std::size_t>(y) * 518 + x) * 3 + c] - kImageNetMean[c]) /
+                 kImageNetStd[c];
       const float expected = static_cast<float>(sum / 196);
       EXPECT_NEAR(maps[0].at(px, py)[c], expected, 1e-4f) << px << "," << py;
       EXPECT_NEAR(maps[0].at(px, py)[c + 3], 2 * expected, 2e-4f);
@@ -104,7 +105,8 @@ TEST(Dinov2Encoder, WrongOutputShapeIsAModelError) {
   const auto dir = test::freshTempDir("dinov2_wrong");
   const Mesh mesh = colouredSphere();
   const SurfaceScene scene(mesh);
-  const RenderedView view = MultiViewRenderer(mesh, scene).render(ViewCamera::lookAtOrigin(0, 0, 2, 0.7f), 28);
+  const RenderedView view =
+      MultiViewRenderer(mesh, scene).render(ViewCamera::lookAtOrigin(0, 0, 2, 0.7f), 28);
   const ViewCamera cam;
   std::vector<FeatureMap> maps;
   for (const auto& file : {saveWrongShapeModel(dir), saveTupleModel(dir)}) {

@@ -1,10 +1,10 @@
 #include "core/render/multiview_renderer.h"
 
-#include <cmath>
-#include <algorithm>
-#include <optional>
-
 #include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
 
 #include "core/geometry/surface_scene.h"
 #include "core/grid/voxelize.h"
@@ -55,7 +55,8 @@ TEST(MultiViewRenderer, SphereDepthNormalsAndMaskMatchAnalytic) {
       // Polygon vs sphere depth differs most at grazing angles (rim); tolerance grows there.
       const float facing = std::abs(n.dot(d.normalized()));
       EXPECT_NEAR(view.depth[p], t, 1e-3f / std::max(facing, 0.1f));
-      const Eigen::Vector3f rendered(view.normal[p * 3], view.normal[p * 3 + 1], view.normal[p * 3 + 2]);
+      const Eigen::Vector3f rendered(view.normal[p * 3], view.normal[p * 3 + 1],
+                                     view.normal[p * 3 + 2]);
       EXPECT_GT(rendered.dot(n), 0.995f) << "pixel " << x << "," << y;
       EXPECT_NEAR(view.albedo[p * 3], 0.8f, 1e-5f);
       EXPECT_NEAR(view.albedo[p * 3 + 1], 0.2f, 1e-5f);

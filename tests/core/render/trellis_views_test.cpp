@@ -1,9 +1,9 @@
 #include "core/render/trellis_views.h"
 
-#include <cmath>
+#include <gtest/gtest.h>
 
 #include <Eigen/LU>
-#include <gtest/gtest.h>
+#include <cmath>
 
 #include "core/common/error.h"
 
@@ -42,11 +42,13 @@ TEST(TrellisViews, ViewsCoverTheSphereAtRadiusTwo) {
     above += v.position().z() > 0;
     meanDir += v.position().normalized();
   }
-  EXPECT_NEAR(above, 75, 3);                      // Hammersley: evenly above and below
+  EXPECT_NEAR(above, 75, 3);                        // Hammersley: evenly above and below
   EXPECT_LT(meanDir.norm() / views.size(), 0.02f);  // and evenly around
   // Same key, same views; different key, different offset.
-  EXPECT_TRUE(trellisViews(150, seedFromKey("abc"))[2].cameraToWorld.isApprox(views[2].cameraToWorld));
-  EXPECT_FALSE(trellisViews(150, seedFromKey("abd"))[2].cameraToWorld.isApprox(views[2].cameraToWorld));
+  EXPECT_TRUE(
+      trellisViews(150, seedFromKey("abc"))[2].cameraToWorld.isApprox(views[2].cameraToWorld));
+  EXPECT_FALSE(
+      trellisViews(150, seedFromKey("abd"))[2].cameraToWorld.isApprox(views[2].cameraToWorld));
 }
 
 TEST(ViewCamera, LooksAtOriginWithZUp) {
