@@ -38,6 +38,7 @@ struct SurfaceScene::Impl {
   RTCScene scene = nullptr;
   std::vector<Eigen::Vector3f> positions;
   std::vector<Eigen::Vector3i> triangles;
+  float initialQueryRadius = std::numeric_limits<float>::infinity();
 
   ~Impl() {
     if (scene) rtcReleaseScene(scene);
@@ -67,7 +68,9 @@ bool closestPointCallback(RTCPointQueryFunctionArguments* args) {
   const Eigen::Vector3f q(args->query->x, args->query->y, args->query->z);
   const Eigen::Vector3f p = closestPointOnTriangle(q, positions[t[0]], positions[t[1]], positions[t[2]]);
   const float d = (p - q).norm();
-  if (d < state->best.distance) {
+  // Embree may report triangles outside the query sphere (its culling is conservative); taking
+  // one would grow the radius, which Embree forbids, and could hide a closer triangle.
+  if (d <= args->query->radius && d < state->best.distance) {
     state->best.distance = d;
     state->best.position = p;
     state->best.triangle = static_cast<int>(args->primID);
@@ -82,6 +85,10 @@ bool closestPointCallback(RTCPointQueryFunctionArguments* args) {
 SurfaceScene::SurfaceScene(const Mesh& mesh) : m_impl(std::make_unique<Impl>()) {
   m_impl->positions = mesh.positions;
   m_impl->triangles = mesh.triangles;
+  if (!mesh.triangles.empty()) {
+    const float diagonal = mesh.bounds().diagonal().norm();
+    if (diagonal > 0 && std::isfinite(diagonal)) m_impl->initialQueryRadius = diagonal / 64.0f;
+  }
   RTCDevice device = sharedDevice();
   m_impl->scene = rtcNewScene(device);
   rtcSetSceneBuildQuality(m_impl->scene, RTC_BUILD_QUALITY_HIGH);
@@ -190,15 +197,24 @@ ClosestPoint SurfaceScene::closestPoint(const Eigen::Vector3f& query) const {
   state.best.position = query;
   state.best.normal = Eigen::Vector3f::UnitZ();
   if (m_impl->triangles.empty() || !query.allFinite()) return state.best;
-  RTCPointQuery pointQuery;
-  pointQuery.x = query.x();
-  pointQuery.y = query.y();
-  pointQuery.z = query.z();
-  pointQuery.time = 0;
-  pointQuery.radius = std::numeric_limits<float>::infinity();
-  RTCPointQueryContext context;
-  rtcInitPointQueryContext(&context);
-  rtcPointQuery(m_impl->scene, &pointQuery, &context, closestPointCallback, &state);
+  // Embree culls BVH nodes by the query sphere but does not visit them nearest-first, so a query
+  // that starts with an infinite radius touches much of the tree before it shrinks. Starting
+  // small and growing 4x until something is found visits only nearby nodes; the first radius
+  // that finds a triangle gives the exact closest point (everything within it was examined).
+  float radius = m_impl->initialQueryRadius;
+  for (;;) {
+    RTCPointQuery pointQuery;
+    pointQuery.x = query.x();
+    pointQuery.y = query.y();
+    pointQuery.z = query.z();
+    pointQuery.time = 0;
+    pointQuery.radius = radius;
+    RTCPointQueryContext context;
+    rtcInitPointQueryContext(&context);
+    rtcPointQuery(m_impl->scene, &pointQuery, &context, closestPointCallback, &state);
+    if (state.best.triangle >= 0 || std::isinf(radius)) break;
+    radius = radius < 1e30f ? radius * 4.0f : std::numeric_limits<float>::infinity();
+  }
   if (state.best.triangle >= 0) state.best.normal = m_impl->unitNormal(state.best.triangle);
   return state.best;
 }
