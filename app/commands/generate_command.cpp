@@ -81,9 +81,24 @@ void setupGenerate(CLI::App& root) {
 void setupDatasetStats(CLI::App& root) {
   auto* cmd = root.add_subcommand("dataset-stats", "Print the variety table (generator parameters, affordances, "
                                                    "units, formats, triangles) of a generated dataset");
-  auto dir = std::make_shared<std::string>();
-  cmd->add_option("dir", *dir, "Dataset folder")->required();
-  cmd->callback([dir] { std::cout << sagrid::gen::datasetStatsTable(*dir); });
+  struct Options {
+    std::string dir, contactSheet;
+    int sheetLimit = 64, views = 1;
+  };
+  auto o = std::make_shared<Options>();
+  cmd->add_option("dir", o->dir, "Dataset folder (manifest.jsonl, or object folders as in shared/data/real-dev)")
+      ->required();
+  cmd->add_option("--contact-sheet", o->contactSheet, "Also render a PNG grid of the objects with their labels drawn");
+  cmd->add_option("--sheet-limit", o->sheetLimit, "At most this many objects on the contact sheet")->check(CLI::PositiveNumber);
+  cmd->add_option("--views", o->views, "Views per object on the contact sheet (yaw steps)")->check(CLI::PositiveNumber);
+  cmd->callback([o] {
+    std::cout << sagrid::gen::datasetStatsTable(o->dir);
+    if (!o->contactSheet.empty()) {
+      sagrid::gen::ContactSheetOptions options;
+      options.viewsPerItem = o->views;
+      sagrid::gen::writeDatasetContactSheet(o->dir, o->contactSheet, o->sheetLimit, options);
+    }
+  });
 }
 
 }  // namespace

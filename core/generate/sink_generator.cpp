@@ -60,17 +60,17 @@ void SinkBuilder::choose() {
   std::vector<std::string> faucets;
   std::vector<double> weights;
   if (m_kind == "bare_faucet") {
-    faucets = {"gooseneck", "straight", "pull_down", "wall_mounted", "bridge", "compact", "arm_metaworld"};
-    weights = {0.18, 0.14, 0.1, 0.1, 0.1, 0.2, 0.18};
+    faucets = {"gooseneck", "straight", "pull_down", "wall_mounted", "bridge", "compact", "arm_metaworld", "square_mixer"};
+    weights = {0.15, 0.12, 0.08, 0.08, 0.08, 0.15, 0.17, 0.17};
   } else if (m_kind == "wall_basin") {
     faucets = {"wall_mounted"};
     weights = {1};
   } else if (m_kind == "vanity" || m_kind == "bare_basin") {
-    faucets = {"gooseneck", "straight", "compact", "bridge", "wall_mounted"};
-    weights = {0.2, 0.3, 0.3, 0.1, 0.1};
+    faucets = {"gooseneck", "straight", "compact", "bridge", "wall_mounted", "square_mixer"};
+    weights = {0.2, 0.22, 0.22, 0.08, 0.08, 0.2};
   } else {
-    faucets = {"gooseneck", "straight", "pull_down", "bridge", "wall_mounted", "compact"};
-    weights = {0.3, 0.15, 0.25, 0.13, 0.07, 0.1};
+    faucets = {"gooseneck", "straight", "pull_down", "bridge", "wall_mounted", "compact", "square_mixer"};
+    weights = {0.27, 0.13, 0.22, 0.12, 0.07, 0.09, 0.1};
   }
   m_faucet = faucets[m_rng.weighted(weights)];
   m_wall = m_faucet == "wall_mounted";
@@ -85,6 +85,9 @@ void SinkBuilder::choose() {
   } else if (m_faucet == "wall_mounted") {
     handles = {"twin_cross", "twin_knob", "twin_lever", "single_top_lever"};
     weights = {0.3, 0.25, 0.2, 0.25};
+  } else if (m_faucet == "square_mixer") {
+    handles = {"single_top_lever", "joystick"};
+    weights = {0.8, 0.2};
   } else if (m_faucet == "compact") {
     handles = {"single_top_lever", "joystick", "side_lever"};
     weights = {0.55, 0.25, 0.2};
@@ -406,28 +409,81 @@ void SinkBuilder::buildFaucet(const Vec3& base) {
   const float spread = m_rng.uniformf(0.07, 0.12);
 
   if (m_faucet == "arm_metaworld") {
-    // Meta-World faucet: a thick base column, a head, and a long arm handle; often no spout.
-    const float baseR = m_rng.uniformf(0.03, 0.05), baseH = m_rng.uniformf(0.07, 0.12);
-    m_b.cylinder(translation(base), baseR, 0, baseH, m_rng.pick(std::vector<int>{16, 24, 32}), m_metal);
-    const float headR = baseR * m_rng.uniformf(0.6, 0.8);
-    const float headH = m_rng.uniformf(0.025, 0.045);
-    m_b.cylinder(translation(base + Vec3(0, 0, baseH)), headR, 0, headH, 24, m_metal);
-    const float armL = m_rng.uniformf(0.08, 0.18);
-    const float armZ = baseH + 0.5f * headH;
+    // Meta-World faucet: a base, a column, a head, and a long arm handle; often no spout.
+    float headTop = 0, headR = 0;
+    if (m_rng.chance(0.5)) {  // disc base, thin column, wide head (LIBERO's faucet)
+      const float discR = m_rng.uniformf(0.03, 0.05), discH = m_rng.uniformf(0.004, 0.015);
+      const float colR = m_rng.uniformf(0.008, 0.02), colH = m_rng.uniformf(0.05, 0.1);
+      headR = m_rng.uniformf(0.022, 0.036);
+      const float headH = m_rng.uniformf(0.025, 0.045);
+      const int seg = m_rng.pick(std::vector<int>{16, 24, 32});
+      m_b.cylinder(translation(base), discR, 0, discH, seg, m_metal);
+      m_b.cylinder(translation(base), colR, discH, discH + colH, seg, m_metal);
+      m_b.cylinder(translation(base), headR, discH + colH, discH + colH + headH, seg, m_metal);
+      headTop = discH + colH + 0.5f * headH;
+    } else {  // thick base column and a smaller head
+      const float baseR = m_rng.uniformf(0.03, 0.05), baseH = m_rng.uniformf(0.07, 0.12);
+      m_b.cylinder(translation(base), baseR, 0, baseH, m_rng.pick(std::vector<int>{16, 24, 32}), m_metal);
+      headR = baseR * m_rng.uniformf(0.6, 0.8);
+      const float headH = m_rng.uniformf(0.025, 0.045);
+      m_b.cylinder(translation(base + Vec3(0, 0, baseH)), headR, 0, headH, 24, m_metal);
+      headTop = baseH + 0.5f * headH;
+    }
+    const float armL = m_rng.uniformf(0.08, 0.16);
+    const float armR = m_rng.uniformf(0.008, 0.018);
     const Vec3 dir = Vec3(0, -1, 0);
     const std::size_t t0 = m_b.triangleCount();
-    const Vec3 a = base + Vec3(0, 0, armZ) + dir * (headR * 0.8f);
+    const Vec3 a = base + Vec3(0, 0, headTop) + dir * (headR * 0.8f);
     const Vec3 b = a + dir * armL;
-    m_b.tube({a, b}, m_rng.uniformf(0.008, 0.014), 12, m_handleMat);
-    m_b.lathe(alignZTo(b, dir), {{0, -0.003f}, {0.016f, -0.003f}, {0.016f, 0.012f}, {0, 0.014f}}, 16, m_handleMat);
-    gt("togglebutton", 0.5f * (a + b) + dir * 0.01f, up, t0);
+    m_b.tube({a, b}, armR, 12, m_handleMat, true, false);
+    std::vector<Vec2> dome;  // rounded (capsule) end
+    for (int i = 0; i <= 6; ++i) {
+      const float t = 0.5f * kPi * i / 6;
+      dome.push_back({armR * std::cos(t), armR * std::sin(t)});
+    }
+    m_b.lathe(alignZTo(b, dir), dome, 12, m_handleMat);
+    gt("togglebutton", 0.5f * (a + b), up, t0);
     if (m_rng.chance(0.45)) {
       // A short spout on the opposite side.
-      const Vec3 s = base + Vec3(0, 0, baseH * 0.75f) + Vec3(0, baseR * 0.9f, 0);
-      buildOutlet({s, s + Vec3(0, 0.05f, 0), s + Vec3(0, 0.07f, -0.015f), s + Vec3(0, 0.075f, -0.03f)}, 0.009f);
+      const Vec3 sp = base + Vec3(0, 0, headTop) + Vec3(0, headR * 0.9f, 0);
+      buildOutlet({sp, sp + Vec3(0, 0.05f, 0), sp + Vec3(0, 0.07f, -0.015f), sp + Vec3(0, 0.075f, -0.03f)}, 0.009f);
       m_params["spout"] = true;
     } else {
       m_params["spout"] = false;
+    }
+    return;
+  }
+
+  if (m_faucet == "square_mixer") {
+    // A modern square mixer (LIBERO's basin faucet): box body on a plate, a flat box spout with
+    // the outlet on its underside near the tip, a flat lever on top.
+    const float bw = m_rng.uniformf(0.025, 0.05), bd = m_rng.uniformf(0.025, 0.05), bh = m_rng.uniformf(0.06, 0.13);
+    const float bevel = m_rng.chance(0.6) ? m_rng.uniformf(0.001, 0.005) : 0.0f;
+    m_b.box(translation(base + Vec3(0, 0, 0.004f)), Vec3(bw * 1.3f, bd * 1.3f, 0.008f), m_metal, bevel * 0.5f, 1);
+    m_b.box(translation(base + Vec3(0, 0, 0.5f * bh)), Vec3(bw, bd, bh), m_metal, bevel, 2);
+    const float zs = bh * m_rng.uniformf(0.55, 0.85);
+    const float spoutW = bw * m_rng.uniformf(0.5, 0.95), spoutH = m_rng.uniformf(0.012, 0.025);
+    const float len = m_reach;
+    const std::size_t t0 = m_b.triangleCount();
+    m_b.box(translation(base + Vec3(0, -0.5f * bd - 0.5f * len + 0.002f, zs)), Vec3(spoutW, len + 0.004f, spoutH), m_metal,
+            std::min(bevel, 0.3f * spoutH), 2);
+    const Vec3 outlet = base + Vec3(0, -0.5f * bd - len + std::min(0.015f, 0.3f * len), zs - 0.5f * spoutH);
+    m_b.cylinder(translation(outlet), std::min(0.4f * spoutW, 0.01f), -0.0015f, 0.0005f, 16, m_dark);
+    gt("fluidsource", outlet - Vec3(0, 0, 0.0015f), -up, t0);
+    const std::size_t t1 = m_b.triangleCount();
+    if (m_handle == "joystick") {
+      const Vec3 a = base + Vec3(0, 0, bh), b = a + Vec3(0, 0.015f, m_rng.uniformf(0.03, 0.06));
+      m_b.tube({a, b}, m_rng.uniformf(0.004, 0.007), 8, m_handleMat);
+      gt("togglebutton", 0.5f * (a + b), up, t1);
+    } else {
+      const float leverL = m_rng.uniformf(0.04, 0.09), leverW = bw * m_rng.uniformf(0.5, 1.0);
+      const float tilt = m_rng.uniformf(-0.15, 0.3);
+      const float sign = m_rng.chance(0.7) ? 1.0f : -1.0f;  // towards the back, or over the spout
+      m_b.box(translation(base + Vec3(0, 0, bh + 0.006f)), Vec3(bw * 0.8f, bd * 0.8f, 0.012f), m_metal, 0.001f, 1);
+      const Affine lever = translation(base + Vec3(0, 0, bh + 0.012f)) * rotationX(sign * tilt) *
+                           translation(0, sign * (0.5f * leverL - 0.3f * bd), 0.004f);
+      m_b.box(lever, Vec3(leverW, leverL, m_rng.uniformf(0.006, 0.012)), m_handleMat, 0.002f, 1);
+      gt("togglebutton", lever * Vec3(0, 0, 0), up, t1);
     }
     return;
   }
@@ -557,6 +613,7 @@ void SinkBuilder::buildDistractors() {
 GeneratedObject SinkBuilder::run() {
   choose();
   m_reach = m_faucet == "compact" ? m_rng.uniformf(0.05, 0.11)
+            : m_faucet == "square_mixer" ? m_rng.uniformf(0.04, 0.1)
             : m_faucet == "wall_mounted" ? m_rng.uniformf(0.12, 0.26)
                                          : m_rng.uniformf(0.1, 0.26);
   m_spoutHeight = m_faucet == "compact" ? m_rng.uniformf(0.08, 0.14)
@@ -625,7 +682,7 @@ const std::vector<std::string>& sinkBasinShapes() {
 }
 const std::vector<std::string>& faucetTypes() {
   static const std::vector<std::string> v = {"gooseneck", "straight", "pull_down", "wall_mounted",
-                                             "bridge", "compact", "arm_metaworld"};
+                                             "bridge", "compact", "arm_metaworld", "square_mixer"};
   return v;
 }
 const std::vector<std::string>& faucetHandleTypes() {

@@ -527,8 +527,22 @@ void StoveBuilder::buildRaisedPlate(const Burner& br) {
               seg, m_pal.trim);
   }
   const std::size_t t0 = m_b.triangleCount();
-  m_b.lathe(translation(br.center.x(), br.center.y(), z),
-            {{0, 0}, {br.radius, 0}, {br.radius, h * 0.85f}, {br.radius * 0.96f, h}, {0, h}}, seg, m_pal.burner);
+  std::vector<Vec2> profile = {{0, 0}, {br.radius, 0}, {br.radius, h * 0.85f}, {br.radius * 0.96f, h}};
+  if (m_rng.chance(0.4)) {
+    // Concentric grooves, as on solid plates and LIBERO's burner disc.
+    const int grooves = m_rng.uniformInt(3, 7);
+    const float depth = std::min(0.0015f, 0.3f * h);
+    for (int i = grooves; i >= 1; --i) {
+      const float r = br.radius * 0.92f * i / (grooves + 1);
+      profile.push_back({r + 0.002f, h});
+      profile.push_back({r + 0.002f, h - depth});
+      profile.push_back({r - 0.002f, h - depth});
+      profile.push_back({r - 0.002f, h});
+    }
+    m_extras.push_back("grooved_plate");
+  }
+  profile.push_back({0, h});
+  m_b.lathe(translation(br.center.x(), br.center.y(), z), profile, seg, m_pal.burner);
   if (m_rng.chance(0.4)) {  // centre dot / thermostat disc
     m_b.lathe(translation(br.center.x(), br.center.y(), z + h),
               {{0, 0}, {br.radius * 0.2f, 0}, {br.radius * 0.2f, 0.001f}, {0, 0.001f}}, 16, m_pal.trim);
@@ -669,10 +683,13 @@ void StoveBuilder::buildControls() {
     const float sx = m_rng.chance(0.7) ? 1.0f : -1.0f;
     const float height = m_frontZ1 - m_frontZ0;
     const float spacing = m_depth / (n + 1);
-    const float maxR = std::min(0.4f * spacing, 0.42f * height);
+    // Small appliances often carry one big knob beside the body, taller than the slab itself.
+    const float maxR = m_kind == "hot_plate" ? std::min(0.4f * spacing, 0.045f) : std::min(0.4f * spacing, 0.42f * height);
     for (int i = 0; i < n; ++i) {
       const float y = -0.5f * m_depth + (i + 1) * spacing;
-      addKnob(translation(sx * 0.5f * m_width, y, 0.5f * (m_frontZ0 + m_frontZ1)) * rotationY(sx * kPi / 2), maxR, 0.04f);
+      const float r = std::min(maxR, m_knobShape.radius * (m_knobShape.style == KnobStyle::Skirted ? 1.35f : 1.0f));
+      const float z = std::max(0.5f * (m_frontZ0 + m_frontZ1), r);
+      addKnob(translation(sx * 0.5f * m_width, y, z) * rotationY(sx * kPi / 2), maxR, 0.05f);
     }
   }
 }
