@@ -30,7 +30,53 @@ torch::Tensor descriptorTapVectors(const torch::Tensor& weight, std::int64_t fir
   return descriptors.mm(wd.t()).view({descriptors.size(0), t, cout});
 }
 
+torch::Tensor gatherTaps(const torch::Tensor& x, const torch::Tensor& rows) {
+  const std::int64_t n = rows.size(0);
+  torch::Tensor padded = torch::cat({x, torch::zeros({1, x.size(1)}, x.options())}, 0);
+  return padded.index_select(0, rows.reshape({-1})).view({n, -1});
+}
+
+class SparseConvolutionFunction : public torch::autograd::Function<SparseConvolutionFunction> {
+ public:
+  static torch::Tensor forward(torch::autograd::AutogradContext* ctx, const torch::Tensor& x,
+                               const torch::Tensor& weight, const torch::Tensor& rows) {
+    ctx->save_for_backward({x, weight, rows});
+    return gatherTaps(x, rows).mm(tapMatrix(weight));
+  }
+
+  static torch::autograd::tensor_list backward(torch::autograd::AutogradContext* ctx,
+                                               torch::autograd::tensor_list gradOutputs) {
+    const auto saved = ctx->get_saved_variables();
+    const torch::Tensor& x = saved[0];
+    const torch::Tensor& weight = saved[1];
+    const torch::Tensor& rows = saved[2];
+    const torch::Tensor grad = gradOutputs[0].contiguous();
+    const auto cout = weight.size(0), cin = weight.size(1);
+    const auto taps = weight.size(2) * weight.size(3) * weight.size(4);
+    torch::Tensor gradX, gradW;
+    if (ctx->needs_input_grad(0)) {
+      // x[u] reaches y[v] through tap t exactly when v is u's neighbour through the mirrored tap.
+      const torch::Tensor back = weight.permute({2, 3, 4, 0, 1}).reshape({taps * cout, cin});
+      gradX = gatherTaps(grad, rows.flip({1})).mm(back);
+    }
+    if (ctx->needs_input_grad(1)) {
+      // Recomputing the gathered input is cheaper than keeping it alive between passes.
+      gradW = gatherTaps(x, rows).t().mm(grad)  // (taps * Cin, Cout)
+                  .view({weight.size(2), weight.size(3), weight.size(4), cin, cout})
+                  .permute({4, 3, 0, 1, 2})
+                  .contiguous();
+    }
+    return {gradX, gradW, torch::Tensor()};
+  }
+};
+
 }  // namespace
+
+torch::Tensor sparseConvolution(const torch::Tensor& x, const torch::Tensor& weight, const torch::Tensor& rows,
+                                bool reference) {
+  if (reference) return gatherTaps(x, rows).mm(tapMatrix(weight));
+  return SparseConvolutionFunction::apply(x, weight, rows);
+}
 
 NetworkBatch makeNetworkBatch(const std::vector<const NetworkObject*>& objects,
                               const NetworkShape& shape, ExecutionMode mode,
@@ -155,11 +201,8 @@ torch::Tensor SAGridNetImpl::forwardSparse(const NetworkBatch& batch, bool fold)
     const torch::Tensor& rows = batch.neighbors.at({l.kernel, l.dilation});
     torch::Tensor weight = m_convWeights[i];
     if (i == 0 && fold) weight = weight.narrow(1, 0, localChannels);
-    const std::int64_t cin = x.size(1);
     // Gather every tap's neighbour row (absent -> the appended zero row), one GEMM for all taps.
-    torch::Tensor padded = torch::cat({x, torch::zeros({1, cin}, x.options())}, 0);
-    torch::Tensor gathered = padded.index_select(0, rows.reshape({-1})).view({n, -1});
-    torch::Tensor y = gathered.mm(tapMatrix(weight));
+    torch::Tensor y = sparseConvolution(x, weight, rows);
     if (i == 0 && fold && m_shape.descriptorSize > 0) {
       torch::Tensor perTap = descriptorTapVectors(m_convWeights[0], localChannels,
                                                   batch.descriptors);  // (B, T, Cout)

@@ -77,6 +77,14 @@ class SAGridNetImpl : public torch::nn::Module {
 };
 TORCH_MODULE(SAGridNet);
 
+// One submanifold sparse convolution: y[v] = sum_t x[rows(v, t)] W_t, rows = N for an absent
+// neighbour (a zero row). x (N, Cin), weight (Cout, Cin, k, k, k), rows (N, k^3) -> (N, Cout).
+// The backward pass is itself a gather + GEMM (the transposed convolution uses the mirrored
+// taps, since the neighbour relation is symmetric) instead of index_select's scatter-add, which
+// is serial and slow on the CPU; `reference` uses plain autograd (for the gradient test).
+torch::Tensor sparseConvolution(const torch::Tensor& x, const torch::Tensor& weight, const torch::Tensor& rows,
+                                bool reference = false);
+
 // Multiply-accumulate operations of one forward pass of one object, counted analytically as this
 // implementation executes them: sparse mode multiplies all taps of the `occupiedVoxels` rows
 // (absent neighbours are zero rows), dense mode every voxel of the R^3 grid.
