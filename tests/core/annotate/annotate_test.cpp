@@ -1,0 +1,119 @@
+#include "core/annotate/annotate.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include "core/common/error.h"
+#include "core/dataset/dataset.h"
+#include "core/features/feature_grid.h"
+#include "core/generate/dataset_generator.h"
+#include "core/geometry/surface_scene.h"
+#include "core/mesh/mesh_import.h"
+#include "support/test_paths.h"
+
+namespace sagrid {
+namespace {
+namespace fs = std::filesystem;
+using ::testing::HasSubstr;
+
+// An untrained model whose card matches the features of `grid` (the pipeline, not accuracy, is
+// under test here).
+model::AffordanceModel untrainedModel(const std::string& name, const FeatureGrid& grid) {
+  model::ModelCard card;
+  card.name = name;
+  std::tie(card.category, card.type) = model::splitModelName(name);
+  card.architecture = "[3,1,4],[3,2,4,2]";
+  card.featureBackend = grid.backend;
+  card.featureConfigHash = grid.configHash;
+  card.featureChannels = grid.channels;
+  card.descriptorSize = static_cast<int>(grid.descriptor.size());
+  card.gridResolution = grid.resolution;
+  card.descriptorMean = grid.descriptor;
+  card.affordanceFeatureMean.assign(grid.channels, 0.5f);
+  return model::AffordanceModel(card, 3);
+}
+
+class AnnotateTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir = test::freshTempDir();
+    gen::generateDataset({{"stove", 1, 5}, {"sink", 1, 5}}, gen::MeshFormat::Glb, dir / "data");
+    entries = readDataset(dir / "data");
+    ASSERT_EQ(entries.size(), 2u);
+    FeatureOptions options;
+    options.views = 12;
+    stoveFeatures = extractFeatures(entries[0].mesh, options);
+    sinkFeatures = extractFeatures(entries[1].mesh, options);
+    std::vector<model::AffordanceModel> models;
+    models.push_back(untrainedModel("stove.heatsource", stoveFeatures));
+    models.push_back(untrainedModel("stove.togglebutton", stoveFeatures));
+    models.push_back(untrainedModel("sink.fluidsource", sinkFeatures));
+    set = std::make_unique<ModelSet>(std::move(models));
+    annotate.features = options;
+  }
+  fs::path dir;
+  std::vector<DatasetEntry> entries;
+  FeatureGrid stoveFeatures, sinkFeatures;
+  std::unique_ptr<ModelSet> set;
+  AnnotateOptions annotate;
+};
+
+TEST_F(AnnotateTest, PredictsEveryModelOfTheRetrievedCategoryOnTheSurface) {
+  const AnnotationResult r = annotateMeshFile(entries[0].mesh, "stove0", *set, annotate, dir / "out" / "stove0");
+  EXPECT_EQ(r.category, "stove");  // retrieval: its own descriptor is the stove mean
+  EXPECT_TRUE(r.categoryRetrieved);
+  EXPECT_NEAR(r.categorySimilarity, 1.0, 1e-6);
+  ASSERT_EQ(r.predictions.size(), 2u);
+  EXPECT_EQ(r.labels.object.category, "stove");
+  EXPECT_EQ(r.labels.object.up, "y");
+  EXPECT_EQ(r.labels.object.mesh, "../../data/" + entries[0].mesh.parent_path().filename().string() + "/mesh.glb");
+  ASSERT_FALSE(r.labels.affordances.empty());
+  const Mesh mesh = importMesh(entries[0].mesh);
+  const SurfaceScene scene(mesh);
+  for (const auto& a : r.labels.affordances) {
+    EXPECT_THAT(a.source, HasSubstr("stove."));
+    EXPECT_THAT(a.source, HasSubstr("@"));
+    ASSERT_TRUE(a.confidence.has_value());
+    EXPECT_GT(*a.confidence, 0.0f);
+    EXPECT_LE(*a.confidence, 1.0f);
+    // Written in the file's (y-up) frame and on the surface.
+    const ClosestPoint c = scene.closestPoint(fileToZUp(a.position, UpAxis::Y));
+    EXPECT_LT(c.distance, 1e-4f * mesh.bounds().diagonal().norm());
+    ASSERT_TRUE(a.normal.has_value());
+    EXPECT_NEAR(a.normal->norm(), 1.0f, 1e-4f);
+  }
+}
+
+TEST_F(AnnotateTest, SingleAndCountModesGiveThatManyPoints) {
+  annotate.category = "stove";
+  annotate.mode = InstanceMode::Single;
+  auto r = annotateMeshFile(entries[0].mesh, "s", *set, annotate, dir);
+  EXPECT_EQ(r.labels.affordances.size(), 2u);  // one per model
+  EXPECT_FALSE(r.categoryRetrieved);
+  annotate.counts["heatsource"] = 3;
+  r = annotateMeshFile(entries[0].mesh, "s", *set, annotate, dir);
+  EXPECT_EQ(r.labels.ofType("heatsource").size(), 3u);
+  EXPECT_EQ(r.labels.ofType("togglebutton").size(), 1u);
+}
+
+TEST_F(AnnotateTest, UnknownCategoryAndMismatchedFeaturesAreClearErrors) {
+  annotate.category = "fridge";
+  try {
+    annotateMeshFile(entries[0].mesh, "s", *set, annotate, dir);
+    FAIL() << "no error";
+  } catch (const Error& e) {
+    EXPECT_THAT(e.what(), HasSubstr("fridge"));
+  }
+  annotate.category = "stove";
+  annotate.features.views = 8;  // a different feature configuration than the models were made for
+  EXPECT_THROW(annotateMeshFile(entries[0].mesh, "s", *set, annotate, dir), ModelError);
+}
+
+TEST(ModelSetTest, CosineSimilarity) {
+  EXPECT_NEAR(cosineSimilarity({1, 0}, {0, 1}), 0.0, 1e-12);
+  EXPECT_NEAR(cosineSimilarity({1, 1}, {2, 2}), 1.0, 1e-12);
+  EXPECT_EQ(cosineSimilarity({1}, {1, 2}), 0.0);
+}
+
+}  // namespace
+}  // namespace sagrid
