@@ -1,6 +1,5 @@
 // `sagrid export LABELS_OR_DIR --format omnigibson|mjcf --out DIR`: simulator exports, headless.
 #include <CLI/CLI.hpp>
-
 #include <filesystem>
 #include <iostream>
 
@@ -10,15 +9,19 @@
 namespace {
 
 void setupExport(CLI::App& root) {
-  auto* cmd = root.add_subcommand("export", "Export labelled objects for a simulator: OmniGibson/BEHAVIOR-1K "
-                                            "(URDF meta links + misc/metadata.json) or MuJoCo (MJCF sites)");
+  auto* cmd = root.add_subcommand("export",
+                                  "Export labelled objects for a simulator: OmniGibson/BEHAVIOR-1K "
+                                  "(URDF meta links + misc/metadata.json) or MuJoCo (MJCF sites)");
   struct Options {
     std::string input, format, out;
   };
   auto o = std::make_shared<Options>();
-  cmd->add_option("input", o->input, "A labels.json, a mesh with labels.json beside it, or a folder of objects")
+  cmd->add_option("input", o->input,
+                  "A labels.json, a mesh with labels.json beside it, or a folder of objects")
       ->required();
-  cmd->add_option("--format", o->format, "omnigibson or mjcf")->required()->check(CLI::IsMember({"omnigibson", "mjcf"}));
+  cmd->add_option("--format", o->format, "omnigibson or mjcf")
+      ->required()
+      ->check(CLI::IsMember({"omnigibson", "mjcf"}));
   cmd->add_option("--out", o->out, "Output folder (one subfolder per object)")->required();
   cmd->callback([o] {
     const auto results = sagrid::exportObjects(o->input, o->format, o->out);

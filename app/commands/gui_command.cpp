@@ -9,18 +9,24 @@
 namespace {
 
 void setupGui(CLI::App& root) {
-  auto* cmd = root.add_subcommand("gui", "Open the annotation GUI: review, fix and export affordance points");
+  auto* cmd = root.add_subcommand(
+      "gui", "Open the annotation GUI: review, fix and export affordance points");
   struct Options {
     std::vector<std::string> paths;
     std::string trainingSet = "training-set";
     bool noPredict = false;
     std::string size = "1440x900";
+    std::string models;
   };
   auto options = std::make_shared<Options>();
-  cmd->add_option("paths", options->paths, "Mesh files and/or folders (a folder becomes the review queue)");
-  cmd->add_option("--training-set", options->trainingSet, "Dataset folder for 'Add to training set'")
+  cmd->add_option("paths", options->paths,
+                  "Mesh files and/or folders (a folder becomes the review queue)");
+  cmd->add_option("--training-set", options->trainingSet,
+                  "Dataset folder for 'Add to training set'")
       ->capture_default_str();
-  cmd->add_flag("--no-predict", options->noPredict, "Do not run SAGrid automatically when an object opens");
+  cmd->add_flag("--no-predict", options->noPredict,
+                "Do not run SAGrid automatically when an object opens");
+  cmd->add_option("--models", options->models, "Model folder (default resources/models)");
   cmd->add_option("--size", options->size, "Window size WIDTHxHEIGHT")->capture_default_str();
   cmd->callback([options] {
     sagrid::ui::ContextOptions contextOptions;
@@ -31,17 +37,22 @@ void setupGui(CLI::App& root) {
     appOptions.recentFiles = sagrid::ui::RecentFiles::defaultStorage();
     appOptions.trainingSet = options->trainingSet;
     appOptions.autoPredict = !options->noPredict;
+    appOptions.modelsDir = options->models.empty() ? sagrid::ui::ModelPredictor::defaultModelsDir()
+                                                   : std::filesystem::path(options->models);
     sagrid::ui::App app(*context, appOptions);
     if (!options->paths.empty()) {
-      app.session().openPaths(std::vector<std::filesystem::path>(options->paths.begin(), options->paths.end()));
+      app.session().openPaths(
+          std::vector<std::filesystem::path>(options->paths.begin(), options->paths.end()));
     }
     app.run();
   });
 }
 
 void setupRender(CLI::App& root) {
-  auto* cmd = root.add_subcommand("render", "Render a mesh with its points (and distance field) to a PNG, "
-                                            "exactly as the GUI window draws it; headless with --backend egl");
+  auto* cmd =
+      root.add_subcommand("render",
+                          "Render a mesh with its points (and distance field) to a PNG, "
+                          "exactly as the GUI window draws it; headless with --backend egl");
   struct Options {
     sagrid::ui::RenderOptions render;
     std::string mesh, labels, screenshot, backend = "egl", size = "1280x800", fieldType;
@@ -50,12 +61,14 @@ void setupRender(CLI::App& root) {
   auto o = std::make_shared<Options>();
   cmd->add_option("mesh", o->mesh, "Mesh file")->required();
   cmd->add_option("--labels", o->labels, "labels.json (default: the one beside the mesh)");
-  cmd->add_flag("--field", o->render.showField, "Show the distance field (predicted, else of the labelled points)");
+  cmd->add_flag("--field", o->render.showField,
+                "Show the distance field (predicted, else of the labelled points)");
   cmd->add_option("--field-type", o->fieldType, "Show only this affordance type's field");
   cmd->add_option("--screenshot", o->screenshot, "PNG file to write")->required();
   cmd->add_option("--backend", o->backend, "egl (headless) or window")->capture_default_str();
   cmd->add_option("--size", o->size, "Image size WIDTHxHEIGHT")->capture_default_str();
-  cmd->add_flag("--no-panels", [o](std::int64_t) { o->render.showPanels = false; }, "Draw only the 3D view");
+  cmd->add_flag(
+      "--no-panels", [o](std::int64_t) { o->render.showPanels = false; }, "Draw only the 3D view");
   cmd->add_flag("--wireframe", o->render.wireframe, "Wireframe overlay");
   auto* yaw = cmd->add_option("--yaw", o->yaw, "Camera azimuth in degrees about +z");
   auto* pitch = cmd->add_option("--pitch", o->pitch, "Camera elevation in degrees");

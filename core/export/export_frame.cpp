@@ -16,7 +16,8 @@ namespace fs = std::filesystem;
 
 std::string objectId(const ObjectLabels& labels, const fs::path& meshPath) {
   if (!labels.object.id.empty()) return labels.object.id;
-  return meshPath.stem() == "mesh" ? meshPath.parent_path().filename().string() : meshPath.stem().string();
+  return meshPath.stem() == "mesh" ? meshPath.parent_path().filename().string()
+                                   : meshPath.stem().string();
 }
 
 bool fileIsYUp(const ObjectLabels& labels) { return labels.object.up == "y"; }
@@ -35,7 +36,8 @@ void copyFileAtomic(const fs::path& from, const fs::path& to) {
 }
 
 // Names after a keyword on lines such as "mtllib a.mtl" or "map_Kd tex/wood.png" (last token).
-std::vector<std::string> referencedFiles(const fs::path& file, const std::vector<std::string>& keywords) {
+std::vector<std::string> referencedFiles(const fs::path& file,
+                                         const std::vector<std::string>& keywords) {
   std::vector<std::string> found;
   std::ifstream in(file);
   std::string line;
@@ -56,7 +58,8 @@ std::vector<std::string> referencedFiles(const fs::path& file, const std::vector
 
 }  // namespace
 
-fs::path copyMeshWithDependencies(const fs::path& mesh, const fs::path& dir, const std::string& newName) {
+fs::path copyMeshWithDependencies(const fs::path& mesh, const fs::path& dir,
+                                  const std::string& newName) {
   std::error_code ec;
   if (!fs::is_regular_file(mesh, ec)) throw FileError(mesh, "mesh file not found");
   const fs::path target = dir / (newName.empty() ? mesh.filename().string() : newName);
@@ -68,8 +71,10 @@ fs::path copyMeshWithDependencies(const fs::path& mesh, const fs::path& dir, con
     for (const auto& mtl : referencedFiles(mesh, {"mtllib"})) {
       if (!fs::is_regular_file(source / mtl, ec)) continue;  // the importer already warned
       copyFileAtomic(source / mtl, dir / mtl);
-      for (const auto& texture : referencedFiles(source / mtl, {"map_Kd", "map_Ka", "map_Bump", "bump", "map_d"})) {
-        if (fs::is_regular_file(source / texture, ec)) copyFileAtomic(source / texture, dir / texture);
+      for (const auto& texture :
+           referencedFiles(source / mtl, {"map_Kd", "map_Ka", "map_Bump", "bump", "map_d"})) {
+        if (fs::is_regular_file(source / texture, ec))
+          copyFileAtomic(source / texture, dir / texture);
       }
     }
   }

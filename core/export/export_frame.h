@@ -2,11 +2,10 @@
 // (z up, metres), and copying the mesh with the files it references (OBJ materials, textures).
 #pragma once
 
+#include <Eigen/Core>
 #include <filesystem>
 #include <string>
 #include <vector>
-
-#include <Eigen/Core>
 
 #include "core/labels/labels.h"
 

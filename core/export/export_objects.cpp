@@ -49,7 +49,8 @@ std::vector<fs::path> labelFiles(const fs::path& input) {
 
 }  // namespace
 
-std::vector<SimulatorExport> exportObjects(const fs::path& input, const std::string& format, const fs::path& outDir) {
+std::vector<SimulatorExport> exportObjects(const fs::path& input, const std::string& format,
+                                           const fs::path& outDir) {
   if (format != "omnigibson" && format != "mjcf") {
     throw InvalidArgument("unknown export format '" + format + "' (use omnigibson or mjcf)");
   }
@@ -57,7 +58,8 @@ std::vector<SimulatorExport> exportObjects(const fs::path& input, const std::str
   for (const auto& labelsPath : labelFiles(input)) {
     const ObjectLabels labels = readLabels(labelsPath);
     const fs::path mesh = meshFor(labels, labelsPath);
-    results.push_back(format == "mjcf" ? exportMjcf(labels, mesh, outDir) : exportOmniGibson(labels, mesh, outDir));
+    results.push_back(format == "mjcf" ? exportMjcf(labels, mesh, outDir)
+                                       : exportOmniGibson(labels, mesh, outDir));
   }
   return results;
 }

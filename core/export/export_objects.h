@@ -12,7 +12,8 @@ namespace sagrid {
 
 // `format`: "omnigibson" or "mjcf". Throws FileError when nothing labelled is found, and the
 // exporters' errors otherwise.
-std::vector<SimulatorExport> exportObjects(const std::filesystem::path& input, const std::string& format,
+std::vector<SimulatorExport> exportObjects(const std::filesystem::path& input,
+                                           const std::string& format,
                                            const std::filesystem::path& outDir);
 
 }  // namespace sagrid

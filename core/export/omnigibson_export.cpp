@@ -2,9 +2,8 @@
 
 #include <cctype>
 #include <map>
-#include <sstream>
-
 #include <nlohmann/json.hpp>
+#include <sstream>
 
 #include "core/common/atomic_file.h"
 #include "core/common/error.h"
@@ -36,11 +35,13 @@ std::string omnigibsonId(const std::string& text) {
   return id.empty() ? "object" : id;
 }
 
-SimulatorExport exportOmniGibson(const ObjectLabels& labels, const fs::path& meshPath, const fs::path& outDir) {
+SimulatorExport exportOmniGibson(const ObjectLabels& labels, const fs::path& meshPath,
+                                 const fs::path& outDir) {
   const std::string id = omnigibsonId(exportdetail::objectId(labels, meshPath));
   SimulatorExport result;
   result.root = outDir / id;
-  const fs::path copied = exportdetail::copyMeshWithDependencies(meshPath, result.root / "shape" / "visual");
+  const fs::path copied =
+      exportdetail::copyMeshWithDependencies(meshPath, result.root / "shape" / "visual");
   const std::string meshRef = "../shape/visual/" + copied.filename().string();
   const double scale = metersPerUnit(labels);
   // A y-up file needs +90 degrees about x to stand up in OmniGibson's z-up world.
@@ -51,8 +52,9 @@ SimulatorExport exportOmniGibson(const ObjectLabels& labels, const fs::path& mes
   urdf << "  <link name=\"" << kBaseLink << "\">\n";
   for (const char* part : {"visual", "collision"}) {
     urdf << "    <" << part << ">\n      <origin xyz=\"0 0 0\" rpy=\"" << rpy << "\"/>\n"
-         << "      <geometry><mesh filename=\"" << meshRef << "\" scale=\"" << formatNumber(scale) << " "
-         << formatNumber(scale) << " " << formatNumber(scale) << "\"/></geometry>\n    </" << part << ">\n";
+         << "      <geometry><mesh filename=\"" << meshRef << "\" scale=\"" << formatNumber(scale)
+         << " " << formatNumber(scale) << " " << formatNumber(scale) << "\"/></geometry>\n    </"
+         << part << ">\n";
   }
   urdf << "  </link>\n";
 
@@ -61,7 +63,8 @@ SimulatorExport exportOmniGibson(const ObjectLabels& labels, const fs::path& mes
   for (const auto& point : labels.affordances) {
     const std::string type = omnigibsonId(point.type);
     const std::string metaId = std::to_string(perType[type]++);
-    const std::string link = std::string("meta__") + kBaseLink + "_" + type + "_" + metaId + "_0_link";
+    const std::string link =
+        std::string("meta__") + kBaseLink + "_" + type + "_" + metaId + "_0_link";
     const Eigen::Vector3f p = exportdetail::toSimulatorFrame(labels, point.position);
     const std::string kind = omnigibsonMetaLinkKind(point.type);
     urdf << "  <link name=\"" << link << "\">\n";
@@ -72,9 +75,10 @@ SimulatorExport exportOmniGibson(const ObjectLabels& labels, const fs::path& mes
     urdf << "  </link>\n  <joint name=\"" << link << "_joint\" type=\"fixed\">\n"
          << "    <parent link=\"" << kBaseLink << "\"/>\n    <child link=\"" << link << "\"/>\n"
          << "    <origin xyz=\"" << xyz(p) << "\" rpy=\"0 0 0\"/>\n  </joint>\n";
-    nlohmann::json entry = {{"type", kind}, {"position", {p.x(), p.y(), p.z()}},
-                            {"orientation", {0.0, 0.0, 0.0, 1.0}}};
-    if (kind == "sphere") entry["size"] = {kToggleSphereRadius, kToggleSphereRadius, kToggleSphereRadius};
+    nlohmann::json entry = {
+        {"type", kind}, {"position", {p.x(), p.y(), p.z()}}, {"orientation", {0.0, 0.0, 0.0, 1.0}}};
+    if (kind == "sphere")
+      entry["size"] = {kToggleSphereRadius, kToggleSphereRadius, kToggleSphereRadius};
     metaLinks[kBaseLink][type][metaId] = nlohmann::json::array({entry});
   }
   urdf << "</robot>\n";
@@ -84,11 +88,14 @@ SimulatorExport exportOmniGibson(const ObjectLabels& labels, const fs::path& mes
   writeFileAtomic(result.mainFile, urdf.str());
   nlohmann::json metadata = {{"meta_links", metaLinks},
                              {"category", labels.object.category},
-                             {"source", {{"mesh", meshPath.filename().string()}, {"sha256", labels.object.sha256},
-                                         {"tool", std::string("sagrid ") + SAGRID_VERSION}}}};
+                             {"source",
+                              {{"mesh", meshPath.filename().string()},
+                               {"sha256", labels.object.sha256},
+                               {"tool", std::string("sagrid ") + SAGRID_VERSION}}}};
   fs::create_directories(result.root / "misc");
   writeFileAtomic(result.root / "misc" / "metadata.json", metadata.dump(2) + "\n");
-  if (labels.affordances.empty()) result.warnings.push_back(id + ": no affordance points to export");
+  if (labels.affordances.empty())
+    result.warnings.push_back(id + ": no affordance points to export");
   return result;
 }
 

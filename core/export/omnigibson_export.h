@@ -12,8 +12,8 @@
 namespace sagrid {
 
 struct SimulatorExport {
-  std::filesystem::path root;       // the folder written
-  std::filesystem::path mainFile;   // the URDF or MJCF
+  std::filesystem::path root;      // the folder written
+  std::filesystem::path mainFile;  // the URDF or MJCF
   std::vector<std::string> warnings;
 };
 

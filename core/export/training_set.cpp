@@ -1,10 +1,9 @@
 #include "core/export/training_set.h"
 
 #include <cctype>
+#include <nlohmann/json.hpp>
 #include <sstream>
 #include <system_error>
-
-#include <nlohmann/json.hpp>
 
 #include "core/common/atomic_file.h"
 #include "core/common/error.h"
@@ -17,15 +16,17 @@ namespace fs = std::filesystem;
 namespace {
 std::string datasetId(const std::string& text) {
   std::string id;
-  for (unsigned char c : text) id.push_back(std::isalnum(c) || c == '-' || c == '_' ? static_cast<char>(c) : '-');
+  for (unsigned char c : text)
+    id.push_back(std::isalnum(c) || c == '-' || c == '_' ? static_cast<char>(c) : '-');
   return id.empty() ? "object" : id;
 }
 }  // namespace
 
-TrainingSetEntry addToTrainingSet(const ObjectLabels& labels, const fs::path& meshPath, const fs::path& labelsPath,
-                                  const fs::path& datasetDir) {
+TrainingSetEntry addToTrainingSet(const ObjectLabels& labels, const fs::path& meshPath,
+                                  const fs::path& labelsPath, const fs::path& datasetDir) {
   if (labels.object.category.empty()) {
-    throw InvalidArgument(meshPath.string() + ": set the object's category before adding it to a training set");
+    throw InvalidArgument(meshPath.string() +
+                          ": set the object's category before adding it to a training set");
   }
   TrainingSetEntry entry;
   entry.id = datasetId(exportdetail::objectId(labels, meshPath));
@@ -41,10 +42,12 @@ TrainingSetEntry addToTrainingSet(const ObjectLabels& labels, const fs::path& me
   ObjectLabels copy = labels;
   copy.object.id = entry.id;
   copy.object.mesh = entry.mesh.filename().string();
-  copy.extra["provenance"] = {{"mesh", fs::absolute(meshPath).lexically_normal().string()},
-                              {"labels", labelsPath.empty() ? std::string() : fs::absolute(labelsPath).lexically_normal().string()},
-                              {"added", currentUtcTimestamp()},
-                              {"tool", std::string("sagrid ") + SAGRID_VERSION}};
+  copy.extra["provenance"] = {
+      {"mesh", fs::absolute(meshPath).lexically_normal().string()},
+      {"labels",
+       labelsPath.empty() ? std::string() : fs::absolute(labelsPath).lexically_normal().string()},
+      {"added", currentUtcTimestamp()},
+      {"tool", std::string("sagrid ") + SAGRID_VERSION}};
   entry.labels = objectDir / "labels.json";
   writeLabels(entry.labels, copy);
 
@@ -64,7 +67,8 @@ TrainingSetEntry addToTrainingSet(const ObjectLabels& labels, const fs::path& me
       out << line << "\n";
     }
   }
-  const nlohmann::json line = {{"id", entry.id}, {"category", labels.object.category},
+  const nlohmann::json line = {{"id", entry.id},
+                               {"category", labels.object.category},
                                {"mesh", entry.id + "/" + entry.mesh.filename().string()},
                                {"labels", entry.id + "/labels.json"}};
   out << line.dump() << "\n";

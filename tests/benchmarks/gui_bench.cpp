@@ -3,9 +3,9 @@
 // on all 64^3 voxels (the worst case) and on the occupied surface voxels of a real object.
 // Each iteration draws one frame and waits for it (glFinish); the camera orbits a little each
 // frame. Reports wall time per frame, fps, and process CPU ms per frame. Run:
-//   build/tests/benchmarks/gui_bench --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
+//   build/tests/benchmarks/gui_bench --benchmark_repetitions=5
+//   --benchmark_report_aggregates_only=true
 #include <benchmark/benchmark.h>
-
 #include <sys/resource.h>
 
 #include <filesystem>
@@ -48,7 +48,9 @@ void frames(benchmark::State& state, bool fullGrid, bool showField = true) {
   AppOptions appOptions;
   appOptions.autoPredict = false;
   App app(*context, appOptions);
-  const fs::path dir = fullGrid ? sceneDir() : fs::path(SAGRID_SOURCE_DIR) / "../shared/data/real-dev/libero__flat_stove";
+  const fs::path dir =
+      fullGrid ? sceneDir()
+               : fs::path(SAGRID_SOURCE_DIR) / "../shared/data/real-dev/libero__flat_stove";
   if (!fs::exists(dir / "mesh.obj")) {
     state.SkipWithError("real-dev object not found");
     return;
@@ -75,9 +77,11 @@ void frames(benchmark::State& state, bool fullGrid, bool showField = true) {
   }
   // Process CPU time (all llvmpipe threads) per frame: on a shared machine the wall time above
   // depends on the load; this does not. On an idle machine wall ~ cpu / cores used.
-  state.counters["cpu_ms_per_frame"] = 1e3 * (processCpuSeconds() - cpuBefore) / double(state.iterations());
+  state.counters["cpu_ms_per_frame"] =
+      1e3 * (processCpuSeconds() - cpuBefore) / double(state.iterations());
   state.counters["cubes"] = double(app.scene().field().instanceCount());
-  state.counters["fps"] = benchmark::Counter(double(state.iterations()), benchmark::Counter::kIsRate);
+  state.counters["fps"] =
+      benchmark::Counter(double(state.iterations()), benchmark::Counter::kIsRate);
 }
 
 void BM_GuiFrameFullGrid64(benchmark::State& state) { frames(state, true); }
@@ -85,7 +89,10 @@ void BM_GuiFrameSurfaceVoxelsStove(benchmark::State& state) { frames(state, fals
 void BM_GuiFrameStoveNoField(benchmark::State& state) { frames(state, false, false); }  // reference
 
 BENCHMARK(BM_GuiFrameFullGrid64)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(3.0);
-BENCHMARK(BM_GuiFrameSurfaceVoxelsStove)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(2.0);
+BENCHMARK(BM_GuiFrameSurfaceVoxelsStove)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->MinTime(2.0);
 BENCHMARK(BM_GuiFrameStoveNoField)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(2.0);
 
 }  // namespace

@@ -11,7 +11,17 @@
 namespace sagrid::ui {
 
 App::App(GlContext& context, AppOptions options)
-    : m_context(context), m_options(std::move(options)), m_session(m_options.recentFiles), m_imgui(context) {
+    : m_context(context),
+      m_options(std::move(options)),
+      m_session(m_options.recentFiles),
+      m_imgui(context),
+      m_predictor(m_options.modelsDir) {
+  if (m_options.trainedModelsDir.empty())
+    m_options.trainedModelsDir = m_options.trainingSet / "models";
+  if (!m_options.modelsDir.empty()) {
+    m_session.setPredictorLookup(
+        [this](const AnnotationDocument& doc) { return m_predictor.jobFor(doc); });
+  }
   m_session.autoPredict = m_options.autoPredict;
   m_session.trainingSetDir = m_options.trainingSet;
   int w = 0, h = 0;
@@ -32,6 +42,17 @@ void App::frame(const std::vector<InputEvent>& events, double deltaSeconds) {
     m_input.handle(events, m_session, m_imgui.wantsMouse());
     if (handleShortcuts(events, m_session, m_imgui.wantsKeyboard())) m_quit = true;
     m_session.pollPrediction();
+    if (m_training.takeFinished()) {
+      // The new models predict from now on; the open object shows its new prediction if unreviewed.
+      m_predictor.setModelsDir(m_options.trainedModelsDir);
+      m_session.setPredictorLookup(
+          [this](const AnnotationDocument& doc) { return m_predictor.jobFor(doc); });
+      const auto& queue = m_session.queue();
+      if (!queue.empty() &&
+          queue.entry(std::size_t(queue.current())).state == QueueState::Unreviewed) {
+        m_session.openEntry(queue.current());
+      }
+    }
   } catch (const Error& e) {
     // The frame boundary: whatever core threw is shown, and the session goes on.
     m_session.reportError(e.what());
@@ -54,7 +75,8 @@ void App::frame(const std::vector<InputEvent>& events, double deltaSeconds) {
 
   if (m_session.screenshotRequested) {
     m_session.screenshotRequested = false;
-    const auto path = m_options.screenshotDir / ("sagrid-screenshot-" + std::to_string(++m_screenshotCount) + ".png");
+    const auto path = m_options.screenshotDir /
+                      ("sagrid-screenshot-" + std::to_string(++m_screenshotCount) + ".png");
     try {
       writePng(path, capture());
       logger()->info("screenshot saved to {}", path.string());
@@ -67,13 +89,14 @@ void App::frame(const std::vector<InputEvent>& events, double deltaSeconds) {
 
 void App::layoutPanels() {
   const ImVec2 display = ImGui::GetIO().DisplaySize;
-  const float top = ImGui::GetFrameHeight();  // main menu bar
+  const float top = ImGui::GetFrameHeight();         // main menu bar
   const float bottom = ImGui::GetFrameHeight() + 6;  // status bar
   drawStatusBar(m_session);
   ViewportRect viewport{0, top, display.x, display.y - top - bottom};
   if (m_session.view().showPanels) {
-    const ImGuiWindowFlags flags = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
-                                   ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoBringToFrontOnFocus;
+    const ImGuiWindowFlags flags = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
+                                   ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoTitleBar |
+                                   ImGuiWindowFlags_NoBringToFrontOnFocus;
     ImGui::SetNextWindowPos(ImVec2(0, top));
     ImGui::SetNextWindowSize(ImVec2(m_layout.leftWidth, viewport.height));
     ImGui::Begin("##left", nullptr, flags);
@@ -85,12 +108,14 @@ void App::layoutPanels() {
     ImGui::Begin("##right", nullptr, flags);
     drawObjectPanel(m_session);
     drawFieldPanel(m_session, m_scene);
+    drawTrainPanel(m_session, m_training, m_options.trainedModelsDir);
     drawLogPanel(m_log.buffer());
     ImGui::End();
     viewport.x = m_layout.leftWidth;
     viewport.width = std::max(1.0f, display.x - m_layout.leftWidth - m_layout.rightWidth);
   }
-  const bool sizeChanged = viewport.width != m_session.viewport().width || viewport.height != m_session.viewport().height;
+  const bool sizeChanged = viewport.width != m_session.viewport().width ||
+                           viewport.height != m_session.viewport().height;
   m_session.setViewport(viewport);
   if (sizeChanged && m_session.document() && !m_session.document()->canUndo()) {
     // Keep the object framed while the layout settles (first frames, window resizes).

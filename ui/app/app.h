@@ -9,7 +9,9 @@
 
 #include "ui/app/imgui_layer.h"
 #include "ui/app/log_buffer.h"
+#include "ui/app/model_predictor.h"
 #include "ui/app/session.h"
+#include "ui/app/training_worker.h"
 #include "ui/app/viewport_input.h"
 #include "ui/gl/gl_context.h"
 #include "ui/gl/image.h"
@@ -20,10 +22,13 @@
 namespace sagrid::ui {
 
 struct AppOptions {
-  std::filesystem::path recentFiles;        // empty = in memory (tests)
+  std::filesystem::path recentFiles;  // empty = in memory (tests)
   std::filesystem::path trainingSet = "training-set";
   bool autoPredict = true;
   std::filesystem::path screenshotDir = ".";  // F12 screenshots
+  std::filesystem::path modelsDir;            // model cards for "Run SAGrid"; empty = none
+  // Where the Train panel writes models (then used for predictions); empty = trainingSet/models.
+  std::filesystem::path trainedModelsDir;
 };
 
 class App {
@@ -56,6 +61,8 @@ class App {
   ViewportInput m_input;
   FileBrowser m_browser;
   PanelLayout m_layout;
+  ModelPredictor m_predictor;
+  TrainingWorker m_training;
   bool m_quit = false;
   int m_screenshotCount = 0;
 };

@@ -32,7 +32,8 @@ void renderScreenshot(const RenderOptions& options) {
   appOptions.autoPredict = false;
   App app(*context, appOptions);
   Session& session = app.session();
-  session.openObject(options.mesh, options.labels.empty() ? labelsPathFor(options.mesh) : options.labels);
+  session.openObject(options.mesh,
+                     options.labels.empty() ? labelsPathFor(options.mesh) : options.labels);
   if (!session.pendingErrors().empty()) throw Error(session.pendingErrors().front());
   ViewSettings& view = session.view();
   view.field.visible = options.showField;
@@ -47,13 +48,17 @@ void renderScreenshot(const RenderOptions& options) {
     for (std::size_t i = 0; i < types.size(); ++i) {
       if (types[i] == options.fieldType) mask |= 1u << i;
     }
-    if (!mask) throw InvalidArgument("--field-type " + options.fieldType + ": the object has no field of that type");
+    if (!mask)
+      throw InvalidArgument("--field-type " + options.fieldType +
+                            ": the object has no field of that type");
     view.field.typeMask = mask;
   }
   if (options.yawDegrees || options.pitchDegrees) {
     Camera& camera = session.camera();
-    const float yaw = options.yawDegrees ? *options.yawDegrees * float(M_PI) / 180.0f : camera.yaw();
-    const float pitch = options.pitchDegrees ? *options.pitchDegrees * float(M_PI) / 180.0f : camera.pitch();
+    const float yaw =
+        options.yawDegrees ? *options.yawDegrees * float(M_PI) / 180.0f : camera.yaw();
+    const float pitch =
+        options.pitchDegrees ? *options.pitchDegrees * float(M_PI) / 180.0f : camera.pitch();
     camera.set(camera.target(), camera.distance(), yaw, pitch);
   }
   app.frame({});

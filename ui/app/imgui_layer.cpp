@@ -20,7 +20,9 @@ const char* getClipboard(void* user) {
   return text.c_str();
 }
 
-void setClipboard(void* user, const char* text) { static_cast<GlContext*>(user)->setClipboard(text); }
+void setClipboard(void* user, const char* text) {
+  static_cast<GlContext*>(user)->setClipboard(text);
+}
 
 void applyStyle() {
   ImGui::StyleColorsDark();
@@ -53,16 +55,28 @@ ImGuiLayer::ImGuiLayer(GlContext& context) : m_context(context) {
   io.GetClipboardTextFn = getClipboard;
   io.SetClipboardTextFn = setClipboard;
   io.BackendPlatformName = "sagrid";
-  const int map[][2] = {{ImGuiKey_Tab, GLFW_KEY_TAB}, {ImGuiKey_LeftArrow, GLFW_KEY_LEFT},
-                        {ImGuiKey_RightArrow, GLFW_KEY_RIGHT}, {ImGuiKey_UpArrow, GLFW_KEY_UP},
-                        {ImGuiKey_DownArrow, GLFW_KEY_DOWN}, {ImGuiKey_PageUp, GLFW_KEY_PAGE_UP},
-                        {ImGuiKey_PageDown, GLFW_KEY_PAGE_DOWN}, {ImGuiKey_Home, GLFW_KEY_HOME},
-                        {ImGuiKey_End, GLFW_KEY_END}, {ImGuiKey_Insert, GLFW_KEY_INSERT},
-                        {ImGuiKey_Delete, GLFW_KEY_DELETE}, {ImGuiKey_Backspace, GLFW_KEY_BACKSPACE},
-                        {ImGuiKey_Space, GLFW_KEY_SPACE}, {ImGuiKey_Enter, GLFW_KEY_ENTER},
-                        {ImGuiKey_Escape, GLFW_KEY_ESCAPE}, {ImGuiKey_KeyPadEnter, GLFW_KEY_KP_ENTER},
-                        {ImGuiKey_A, GLFW_KEY_A}, {ImGuiKey_C, GLFW_KEY_C}, {ImGuiKey_V, GLFW_KEY_V},
-                        {ImGuiKey_X, GLFW_KEY_X}, {ImGuiKey_Y, GLFW_KEY_Y}, {ImGuiKey_Z, GLFW_KEY_Z}};
+  const int map[][2] = {{ImGuiKey_Tab, GLFW_KEY_TAB},
+                        {ImGuiKey_LeftArrow, GLFW_KEY_LEFT},
+                        {ImGuiKey_RightArrow, GLFW_KEY_RIGHT},
+                        {ImGuiKey_UpArrow, GLFW_KEY_UP},
+                        {ImGuiKey_DownArrow, GLFW_KEY_DOWN},
+                        {ImGuiKey_PageUp, GLFW_KEY_PAGE_UP},
+                        {ImGuiKey_PageDown, GLFW_KEY_PAGE_DOWN},
+                        {ImGuiKey_Home, GLFW_KEY_HOME},
+                        {ImGuiKey_End, GLFW_KEY_END},
+                        {ImGuiKey_Insert, GLFW_KEY_INSERT},
+                        {ImGuiKey_Delete, GLFW_KEY_DELETE},
+                        {ImGuiKey_Backspace, GLFW_KEY_BACKSPACE},
+                        {ImGuiKey_Space, GLFW_KEY_SPACE},
+                        {ImGuiKey_Enter, GLFW_KEY_ENTER},
+                        {ImGuiKey_Escape, GLFW_KEY_ESCAPE},
+                        {ImGuiKey_KeyPadEnter, GLFW_KEY_KP_ENTER},
+                        {ImGuiKey_A, GLFW_KEY_A},
+                        {ImGuiKey_C, GLFW_KEY_C},
+                        {ImGuiKey_V, GLFW_KEY_V},
+                        {ImGuiKey_X, GLFW_KEY_X},
+                        {ImGuiKey_Y, GLFW_KEY_Y},
+                        {ImGuiKey_Z, GLFW_KEY_Z}};
   for (const auto& [imguiKey, glfwKey] : map) io.KeyMap[imguiKey] = glfwKey;
 
   // DejaVu Sans reads better than the built-in bitmap font; fall back to it when absent.
@@ -87,11 +101,14 @@ void ImGuiLayer::beginFrame(const std::vector<InputEvent>& events, double deltaS
   m_context.windowSize(w, h);
   m_context.framebufferSize(fw, fh);
   io.DisplaySize = ImVec2(float(w), float(h));
-  if (w > 0 && h > 0) io.DisplayFramebufferScale = ImVec2(float(fw) / float(w), float(fh) / float(h));
+  if (w > 0 && h > 0)
+    io.DisplayFramebufferScale = ImVec2(float(fw) / float(w), float(fh) / float(h));
   io.DeltaTime = deltaSeconds > 0 ? float(deltaSeconds) : 1.0f / 60.0f;
   for (const InputEvent& e : events) {
     switch (e.kind) {
-      case InputEvent::Kind::MouseMove: io.MousePos = ImVec2(e.x, e.y); break;
+      case InputEvent::Kind::MouseMove:
+        io.MousePos = ImVec2(e.x, e.y);
+        break;
       case InputEvent::Kind::MouseButton:
         if (e.button >= 0 && e.button < 5) io.MouseDown[e.button] = e.pressed;
         break;
@@ -110,8 +127,11 @@ void ImGuiLayer::beginFrame(const std::vector<InputEvent>& events, double deltaS
           if (e.key == GLFW_KEY_LEFT_SHIFT || e.key == GLFW_KEY_RIGHT_SHIFT) io.KeyShift = false;
         }
         break;
-      case InputEvent::Kind::Char: io.AddInputCharacter(e.codepoint); break;
-      case InputEvent::Kind::Drop: break;
+      case InputEvent::Kind::Char:
+        io.AddInputCharacter(e.codepoint);
+        break;
+      case InputEvent::Kind::Drop:
+        break;
     }
   }
   ImGui_ImplOpenGL3_NewFrame();

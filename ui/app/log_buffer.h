@@ -1,14 +1,14 @@
 // The in-app log panel's sink: an spdlog sink that keeps the last lines for display.
 #pragma once
 
+#include <spdlog/details/null_mutex.h>
+#include <spdlog/sinks/base_sink.h>
+
 #include <deque>
 #include <memory>
 #include <mutex>
 #include <string>
 #include <vector>
-
-#include <spdlog/details/null_mutex.h>
-#include <spdlog/sinks/base_sink.h>
 
 namespace sagrid::ui {
 

@@ -29,20 +29,21 @@ void PredictionWorker::start(std::string objectKey, PredictionJob job) {
   m_key = objectKey;
   m_progress = std::make_shared<PredictionProgress>();
   m_running = true;
-  m_thread = std::thread([this, key = std::move(objectKey), job = std::move(job), progress = m_progress] {
-    Outcome outcome;
-    outcome.objectKey = key;
-    try {
-      outcome.result = job(*progress);
-    } catch (const Cancelled&) {
-      outcome.cancelled = true;
-    } catch (const std::exception& e) {
-      outcome.error = e.what();
-    }
-    std::lock_guard<std::mutex> lock(m_mutex);
-    m_outcome = std::move(outcome);
-    m_running = false;
-  });
+  m_thread =
+      std::thread([this, key = std::move(objectKey), job = std::move(job), progress = m_progress] {
+        Outcome outcome;
+        outcome.objectKey = key;
+        try {
+          outcome.result = job(*progress);
+        } catch (const Cancelled&) {
+          outcome.cancelled = true;
+        } catch (const std::exception& e) {
+          outcome.error = e.what();
+        }
+        std::lock_guard<std::mutex> lock(m_mutex);
+        m_outcome = std::move(outcome);
+        m_running = false;
+      });
 }
 
 std::optional<PredictionWorker::Outcome> PredictionWorker::poll() {

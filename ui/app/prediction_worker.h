@@ -43,7 +43,7 @@ class PredictionWorker {
   struct Outcome {
     std::string objectKey;
     std::optional<PredictionResult> result;  // empty when it failed or was cancelled
-    std::string error;                        // empty on success or cancel
+    std::string error;                       // empty on success or cancel
     bool cancelled = false;
   };
   // The finished job's outcome, once; nullopt while running or when nothing finished.

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cstdlib>
-
 #include <nlohmann/json.hpp>
 
 #include "core/common/atomic_file.h"
@@ -18,7 +17,8 @@ RecentFiles::RecentFiles(fs::path storage) : m_storage(std::move(storage)) {
   std::error_code ec;
   if (m_storage.empty() || !fs::exists(m_storage, ec)) return;
   try {
-    for (const auto& p : nlohmann::json::parse(readFileBytes(m_storage)).value("recent", nlohmann::json::array())) {
+    for (const auto& p :
+         nlohmann::json::parse(readFileBytes(m_storage)).value("recent", nlohmann::json::array())) {
       m_paths.emplace_back(p.get<std::string>());
     }
   } catch (const std::exception& e) {
@@ -27,8 +27,10 @@ RecentFiles::RecentFiles(fs::path storage) : m_storage(std::move(storage)) {
 }
 
 fs::path RecentFiles::defaultStorage() {
-  if (const char* config = std::getenv("XDG_CONFIG_HOME"); config && *config) return fs::path(config) / "sagrid" / "recent.json";
-  if (const char* home = std::getenv("HOME"); home && *home) return fs::path(home) / ".config" / "sagrid" / "recent.json";
+  if (const char* config = std::getenv("XDG_CONFIG_HOME"); config && *config)
+    return fs::path(config) / "sagrid" / "recent.json";
+  if (const char* home = std::getenv("HOME"); home && *home)
+    return fs::path(home) / ".config" / "sagrid" / "recent.json";
   return {};
 }
 

@@ -34,7 +34,9 @@ void Session::openPaths(const std::vector<fs::path>& paths) {
   }
   for (const auto& p : paths) m_recent.add(p);
   if (m_queue.empty()) {
-    reportError("no meshes found in the given paths (supported: glb, gltf, obj, fbx, ply, stl, off, dae, 3ds)");
+    reportError(
+        "no meshes found in the given paths (supported: glb, gltf, obj, fbx, ply, stl, off, dae, "
+        "3ds)");
     m_document.reset();
     return;
   }
@@ -159,7 +161,8 @@ void Session::skip() {
 }
 
 void Session::deleteSelected() {
-  if (m_document && m_document->selected() >= 0) execute(std::make_unique<DeletePointCommand>(m_document->selected()));
+  if (m_document && m_document->selected() >= 0)
+    execute(std::make_unique<DeletePointCommand>(m_document->selected()));
 }
 
 void Session::changeSelectedType(const std::string& type) {
@@ -221,8 +224,10 @@ void Session::runPrediction() {
     }
   }
   if (!job) {
-    logger()->info("{}: no model for category '{}': place the points by hand", m_document->displayName(),
-                   m_document->labels().object.category.empty() ? "unknown" : m_document->labels().object.category);
+    logger()->info(
+        "{}: no model for category '{}': place the points by hand", m_document->displayName(),
+        m_document->labels().object.category.empty() ? "unknown"
+                                                     : m_document->labels().object.category);
     return;
   }
   m_worker.start(m_document->labelsPath().string(), std::move(*job));
@@ -241,7 +246,8 @@ void Session::pollPrediction() {
   }
   if (!m_document || outcome->objectKey != m_document->labelsPath().string()) return;  // moved on
   PredictionResult& result = *outcome->result;
-  if (m_document->labels().object.category.empty() && !result.category.empty()) m_document->setCategory(result.category);
+  if (m_document->labels().object.category.empty() && !result.category.empty())
+    m_document->setCategory(result.category);
   // Predictions fill an object with no points yet; existing (reviewed) points are never replaced.
   if (m_document->points().empty() && !result.points.empty()) {
     try {
@@ -257,9 +263,9 @@ void Session::pollPrediction() {
 void Session::exportCurrent(const std::string& format, const fs::path& outDir) {
   if (!m_document) return;
   try {
-    const SimulatorExport result = format == "mjcf"
-                                       ? exportMjcf(m_document->labels(), m_document->meshPath(), outDir)
-                                       : exportOmniGibson(m_document->labels(), m_document->meshPath(), outDir);
+    const SimulatorExport result =
+        format == "mjcf" ? exportMjcf(m_document->labels(), m_document->meshPath(), outDir)
+                         : exportOmniGibson(m_document->labels(), m_document->meshPath(), outDir);
     for (const auto& w : result.warnings) logger()->warn("{}", w);
     logger()->info("exported {}", result.mainFile.string());
   } catch (const Error& e) {
@@ -270,7 +276,8 @@ void Session::exportCurrent(const std::string& format, const fs::path& outDir) {
 void Session::addCurrentToTrainingSet(const fs::path& datasetDir) {
   if (!m_document) return;
   try {
-    const auto entry = addToTrainingSet(m_document->labels(), m_document->meshPath(), m_document->labelsPath(), datasetDir);
+    const auto entry = addToTrainingSet(m_document->labels(), m_document->meshPath(),
+                                        m_document->labelsPath(), datasetDir);
     logger()->info("added {} to training set {}", entry.id, datasetDir.string());
   } catch (const Error& e) {
     reportError(e.what());

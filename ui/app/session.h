@@ -25,7 +25,9 @@ using PredictorLookup = std::function<std::optional<PredictionJob>(const Annotat
 
 struct ViewportRect {
   float x = 0, y = 0, width = 1, height = 1;  // window coordinates
-  bool contains(float px, float py) const { return px >= x && py >= y && px < x + width && py < y + height; }
+  bool contains(float px, float py) const {
+    return px >= x && py >= y && px < x + width && py < y + height;
+  }
 };
 
 class Session {
@@ -34,7 +36,8 @@ class Session {
 
   // Opening ------------------------------------------------------------------------------------
   void openPaths(const std::vector<std::filesystem::path>& paths);  // replaces the queue
-  void addPaths(const std::vector<std::filesystem::path>& paths);   // drag-and-drop: adds, opens first
+  void addPaths(
+      const std::vector<std::filesystem::path>& paths);  // drag-and-drop: adds, opens first
   void openEntry(int index);
   // One object with an explicit labels file (sagrid render --labels, tests).
   void openObject(const std::filesystem::path& mesh, const std::filesystem::path& labels);
@@ -62,7 +65,8 @@ class Session {
   void setViewport(const ViewportRect& rect);
   const ViewportRect& viewport() const { return m_viewport; }
 
-  // Prediction -------------------------------------------------------------------------------------
+  // Prediction
+  // -------------------------------------------------------------------------------------
   void setPredictorLookup(PredictorLookup lookup) { m_predictorLookup = std::move(lookup); }
   void runPrediction();  // no-op with a message when no model covers the category
   void cancelPrediction() { m_worker.cancel(); }
@@ -74,14 +78,15 @@ class Session {
   void exportCurrent(const std::string& format, const std::filesystem::path& outDir);
   void addCurrentToTrainingSet(const std::filesystem::path& datasetDir);
 
-  // State ------------------------------------------------------------------------------------------
+  // State
+  // ------------------------------------------------------------------------------------------
   AnnotationDocument* document() { return m_document.get(); }
   const AnnotationDocument* document() const { return m_document.get(); }
   const ReviewQueue& queue() const { return m_queue; }
   const std::string& currentType() const { return m_currentType; }
   void setCurrentType(const std::string& type) { m_currentType = type; }
   const RecentFiles& recent() const { return m_recent; }
-  bool addModeArmed = false;   // next click on the surface adds a point
+  bool addModeArmed = false;  // next click on the surface adds a point
   bool showHelp = false;
   bool showFileBrowser = false;
   bool screenshotRequested = false;  // F12: the app saves the next frame to a PNG

@@ -36,19 +36,30 @@ const std::vector<ShortcutHelp>& shortcutHelp() {
   return kHelp;
 }
 
-bool handleShortcuts(const std::vector<InputEvent>& events, Session& session, bool textInputActive) {
+bool handleShortcuts(const std::vector<InputEvent>& events, Session& session,
+                     bool textInputActive) {
   for (const InputEvent& e : events) {
     if (e.kind != InputEvent::Kind::Key || !e.pressed || textInputActive) continue;
     const bool ctrl = (e.mods & GLFW_MOD_CONTROL) != 0;
     const bool shift = (e.mods & GLFW_MOD_SHIFT) != 0;
     if (ctrl) {
       switch (e.key) {
-        case GLFW_KEY_Z: shift ? session.redo() : session.undo(); break;
-        case GLFW_KEY_Y: session.redo(); break;
-        case GLFW_KEY_S: session.saveNow(); break;
-        case GLFW_KEY_O: session.showFileBrowser = true; break;
-        case GLFW_KEY_Q: return true;
-        default: break;
+        case GLFW_KEY_Z:
+          shift ? session.redo() : session.undo();
+          break;
+        case GLFW_KEY_Y:
+          session.redo();
+          break;
+        case GLFW_KEY_S:
+          session.saveNow();
+          break;
+        case GLFW_KEY_O:
+          session.showFileBrowser = true;
+          break;
+        case GLFW_KEY_Q:
+          return true;
+        default:
+          break;
       }
       continue;
     }
@@ -58,33 +69,68 @@ bool handleShortcuts(const std::vector<InputEvent>& events, Session& session, bo
       continue;
     }
     switch (e.key) {
-      case GLFW_KEY_A: session.accept(); break;
+      case GLFW_KEY_A:
+        session.accept();
+        break;
       case GLFW_KEY_DELETE:
-      case GLFW_KEY_BACKSPACE: session.deleteSelected(); break;
-      case GLFW_KEY_N: session.next(); break;
-      case GLFW_KEY_P: session.previous(); break;
-      case GLFW_KEY_S: session.skip(); break;
-      case GLFW_KEY_F: session.frameObject(); break;
-      case GLFW_KEY_W: session.view().wireframe = !session.view().wireframe; break;
-      case GLFW_KEY_V: session.view().field.visible = !session.view().field.visible; break;
+      case GLFW_KEY_BACKSPACE:
+        session.deleteSelected();
+        break;
+      case GLFW_KEY_N:
+        session.next();
+        break;
+      case GLFW_KEY_P:
+        session.previous();
+        break;
+      case GLFW_KEY_S:
+        session.skip();
+        break;
+      case GLFW_KEY_F:
+        session.frameObject();
+        break;
+      case GLFW_KEY_W:
+        session.view().wireframe = !session.view().wireframe;
+        break;
+      case GLFW_KEY_V:
+        session.view().field.visible = !session.view().field.visible;
+        break;
       case GLFW_KEY_H:
-      case GLFW_KEY_F1: session.showHelp = !session.showHelp; break;
-      case GLFW_KEY_INSERT: session.addModeArmed = true; break;
-      case GLFW_KEY_F12: session.screenshotRequested = true; break;
+      case GLFW_KEY_F1:
+        session.showHelp = !session.showHelp;
+        break;
+      case GLFW_KEY_INSERT:
+        session.addModeArmed = true;
+        break;
+      case GLFW_KEY_F12:
+        session.screenshotRequested = true;
+        break;
       case GLFW_KEY_ESCAPE:
         session.addModeArmed = false;
         session.showHelp = false;
         if (session.document()) session.document()->select(-1);
         break;
-      case GLFW_KEY_LEFT: shift ? session.camera().pan(20, 0) : session.camera().orbit(0.08f, 0); break;
-      case GLFW_KEY_RIGHT: shift ? session.camera().pan(-20, 0) : session.camera().orbit(-0.08f, 0); break;
-      case GLFW_KEY_UP: shift ? session.camera().pan(0, 20) : session.camera().orbit(0, 0.08f); break;
-      case GLFW_KEY_DOWN: shift ? session.camera().pan(0, -20) : session.camera().orbit(0, -0.08f); break;
+      case GLFW_KEY_LEFT:
+        shift ? session.camera().pan(20, 0) : session.camera().orbit(0.08f, 0);
+        break;
+      case GLFW_KEY_RIGHT:
+        shift ? session.camera().pan(-20, 0) : session.camera().orbit(-0.08f, 0);
+        break;
+      case GLFW_KEY_UP:
+        shift ? session.camera().pan(0, 20) : session.camera().orbit(0, 0.08f);
+        break;
+      case GLFW_KEY_DOWN:
+        shift ? session.camera().pan(0, -20) : session.camera().orbit(0, -0.08f);
+        break;
       case GLFW_KEY_EQUAL:
-      case GLFW_KEY_KP_ADD: session.camera().zoom(1); break;
+      case GLFW_KEY_KP_ADD:
+        session.camera().zoom(1);
+        break;
       case GLFW_KEY_MINUS:
-      case GLFW_KEY_KP_SUBTRACT: session.camera().zoom(-1); break;
-      default: break;
+      case GLFW_KEY_KP_SUBTRACT:
+        session.camera().zoom(-1);
+        break;
+      default:
+        break;
     }
   }
   return false;

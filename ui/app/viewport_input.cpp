@@ -12,9 +12,9 @@
 namespace sagrid::ui {
 
 namespace {
-constexpr float kClickSlop = 3.0f;       // pixels a click may wander before it is a drag
-constexpr float kPickRadius = 14.0f;     // pixels around a marker centre
-constexpr float kOrbitPerPixel = 0.008f; // radians
+constexpr float kClickSlop = 3.0f;        // pixels a click may wander before it is a drag
+constexpr float kPickRadius = 14.0f;      // pixels around a marker centre
+constexpr float kOrbitPerPixel = 0.008f;  // radians
 
 std::optional<SurfaceHit> surfaceUnder(const Session& session, float x, float y) {
   const AnnotationDocument* doc = session.document();
@@ -40,10 +40,13 @@ int ViewportInput::pickMarker(const Session& session, float x, float y, float ra
   return best;
 }
 
-void ViewportInput::handle(const std::vector<InputEvent>& events, Session& session, bool panelsWantMouse) {
+void ViewportInput::handle(const std::vector<InputEvent>& events, Session& session,
+                           bool panelsWantMouse) {
   for (const InputEvent& e : events) {
     switch (e.kind) {
-      case InputEvent::Kind::MouseMove: move(e.x, e.y, session); break;
+      case InputEvent::Kind::MouseMove:
+        move(e.x, e.y, session);
+        break;
       case InputEvent::Kind::MouseButton:
         if (e.pressed && m_gesture == Gesture::None && !panelsWantMouse &&
             session.viewport().contains(m_x, m_y)) {
@@ -55,7 +58,8 @@ void ViewportInput::handle(const std::vector<InputEvent>& events, Session& sessi
       case InputEvent::Kind::Scroll:
         if (!panelsWantMouse && session.viewport().contains(m_x, m_y)) session.camera().zoom(e.y);
         break;
-      default: break;
+      default:
+        break;
     }
   }
 }
@@ -66,7 +70,9 @@ void ViewportInput::press(const InputEvent& e, Session& session) {
   m_pressX = m_x, m_pressY = m_y;
   m_moved = false;
   if (e.button == GLFW_MOUSE_BUTTON_LEFT) {
-    const int marker = (e.mods & GLFW_MOD_SHIFT) || session.addModeArmed ? -1 : pickMarker(session, m_x, m_y, kPickRadius);
+    const int marker = (e.mods & GLFW_MOD_SHIFT) || session.addModeArmed
+                           ? -1
+                           : pickMarker(session, m_x, m_y, kPickRadius);
     if (marker >= 0) {
       session.document()->select(marker);
       m_gesture = Gesture::PointDrag;
@@ -89,9 +95,12 @@ void ViewportInput::move(float x, float y, Session& session) {
       if (m_moved) m_gesture = Gesture::Orbit;
       [[fallthrough]];
     case Gesture::Orbit:
-      if (m_gesture == Gesture::Orbit) session.camera().orbit(-dx * kOrbitPerPixel, dy * kOrbitPerPixel);
+      if (m_gesture == Gesture::Orbit)
+        session.camera().orbit(-dx * kOrbitPerPixel, dy * kOrbitPerPixel);
       break;
-    case Gesture::Pan: session.camera().pan(dx, dy); break;
+    case Gesture::Pan:
+      session.camera().pan(dx, dy);
+      break;
     case Gesture::PointDrag:
       if (m_moved) {
         // Snap to the surface under the pointer; off the mesh, the point stays where it was last.
@@ -101,7 +110,8 @@ void ViewportInput::move(float x, float y, Session& session) {
         }
       }
       break;
-    case Gesture::None: break;
+    case Gesture::None:
+      break;
   }
 }
 

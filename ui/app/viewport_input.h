@@ -32,7 +32,7 @@ class ViewportInput {
   Gesture m_gesture = Gesture::None;
   int m_button = -1;
   int m_mods = 0;
-  float m_x = 0, m_y = 0;          // last pointer position (window)
+  float m_x = 0, m_y = 0;  // last pointer position (window)
   float m_pressX = 0, m_pressY = 0;
   bool m_moved = false;
   int m_dragIndex = -1;

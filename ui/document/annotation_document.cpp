@@ -11,8 +11,11 @@
 namespace sagrid::ui {
 
 AnnotationDocument::AnnotationDocument(std::shared_ptr<const Mesh> mesh, ObjectLabels labels,
-                                       std::filesystem::path labelsPath, std::filesystem::path meshPath)
-    : m_mesh(std::move(mesh)), m_labels(std::move(labels)), m_labelsPath(std::move(labelsPath)),
+                                       std::filesystem::path labelsPath,
+                                       std::filesystem::path meshPath)
+    : m_mesh(std::move(mesh)),
+      m_labels(std::move(labels)),
+      m_labelsPath(std::move(labelsPath)),
       m_meshPath(std::move(meshPath)) {
   m_openedPointCount = m_labels.affordances.size();
   m_metersPerUnit = static_cast<float>(sagrid::metersPerUnit(m_labels));
@@ -28,7 +31,8 @@ const SurfaceScene& AnnotationDocument::surface() const {
 
 std::string AnnotationDocument::displayName() const {
   if (!m_labels.object.id.empty()) return m_labels.object.id;
-  if (!m_meshPath.empty()) return m_meshPath.parent_path().filename().string() + "/" + m_meshPath.filename().string();
+  if (!m_meshPath.empty())
+    return m_meshPath.parent_path().filename().string() + "/" + m_meshPath.filename().string();
   return "untitled";
 }
 
@@ -103,7 +107,8 @@ void AnnotationDocument::save() const {
 }
 
 void AnnotationDocument::select(int index) {
-  const int next = (index >= 0 && index < static_cast<int>(m_labels.affordances.size())) ? index : -1;
+  const int next =
+      (index >= 0 && index < static_cast<int>(m_labels.affordances.size())) ? index : -1;
   if (next != m_selected) {
     m_selected = next;
     ++m_revision;
@@ -143,7 +148,8 @@ std::vector<DistanceField> AnnotationDocument::labelFields() const {
   for (const auto& p : m_labels.affordances) byType[p.type].push_back(toView(p.position));
   std::vector<DistanceField> fields;
   for (const auto& [type, points] : byType) {
-    fields.push_back(distanceFieldFromPoints(type, occupiedVoxels(), m_resolution, m_normalization, points));
+    fields.push_back(
+        distanceFieldFromPoints(type, occupiedVoxels(), m_resolution, m_normalization, points));
   }
   return fields;
 }

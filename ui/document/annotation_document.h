@@ -4,13 +4,12 @@
 // redo() and is autosaved atomically to labels.json, so a crash or kill loses nothing.
 #pragma once
 
+#include <Eigen/Core>
 #include <cstdint>
 #include <filesystem>
 #include <memory>
 #include <string>
 #include <vector>
-
-#include <Eigen/Core>
 
 #include "core/labels/labels.h"
 #include "core/mesh/mesh.h"
@@ -42,7 +41,9 @@ class AnnotationDocument {
   // Between the mesh file's frame (labels) and the z-up frame the viewport draws in.
   Eigen::Vector3f toView(const Eigen::Vector3f& filePoint) const;
   Eigen::Vector3f toFile(const Eigen::Vector3f& viewPoint) const;
-  Eigen::Vector3f pointInView(int index) const { return toView(points()[std::size_t(index)].position); }
+  Eigen::Vector3f pointInView(int index) const {
+    return toView(points()[std::size_t(index)].position);
+  }
   float metersPerUnit() const { return m_metersPerUnit; }
 
   // Editing (autosaves; throws sagrid::Error if the save fails — the edit itself stays applied).

@@ -4,8 +4,9 @@
 
 namespace sagrid::ui {
 
-DistanceField distanceFieldFromPoints(const std::string& type, const std::vector<VoxelIndex>& voxels,
-                                      int resolution, const Normalization& normalization,
+DistanceField distanceFieldFromPoints(const std::string& type,
+                                      const std::vector<VoxelIndex>& voxels, int resolution,
+                                      const Normalization& normalization,
                                       const std::vector<Eigen::Vector3f>& points) {
   DistanceField field;
   field.type = type;

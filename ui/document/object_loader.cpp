@@ -9,7 +9,8 @@ namespace sagrid::ui {
 
 namespace fs = std::filesystem;
 
-std::unique_ptr<AnnotationDocument> openDocument(const fs::path& meshPath, const fs::path& labelsPath) {
+std::unique_ptr<AnnotationDocument> openDocument(const fs::path& meshPath,
+                                                 const fs::path& labelsPath) {
   std::error_code ec;
   std::optional<ObjectLabels> existing;
   if (fs::exists(labelsPath, ec)) existing = readLabels(labelsPath);
@@ -26,12 +27,14 @@ std::unique_ptr<AnnotationDocument> openDocument(const fs::path& meshPath, const
   } else {
     // Dataset layout DIR/<id>/mesh.ext names the object after its folder.
     const bool genericName = meshPath.stem() == "mesh";
-    labels.object.id = genericName ? meshPath.parent_path().filename().string() : meshPath.stem().string();
+    labels.object.id =
+        genericName ? meshPath.parent_path().filename().string() : meshPath.stem().string();
     labels.object.mesh = meshPath.filename().string();
     labels.object.sha256 = mesh->sha256;
     labels.object.up = mesh->fileUp == UpAxis::Y ? "y" : "z";
   }
-  return std::make_unique<AnnotationDocument>(std::move(mesh), std::move(labels), labelsPath, meshPath);
+  return std::make_unique<AnnotationDocument>(std::move(mesh), std::move(labels), labelsPath,
+                                              meshPath);
 }
 
 }  // namespace sagrid::ui

@@ -18,7 +18,9 @@ AffordancePoint& pointAt(ObjectLabels& labels, int index) {
 
 MovePointCommand::MovePointCommand(int index, Eigen::Vector3f position,
                                    std::optional<Eigen::Vector3f> normal, std::string description)
-    : m_index(index), m_position(std::move(position)), m_normal(std::move(normal)),
+    : m_index(index),
+      m_position(std::move(position)),
+      m_normal(std::move(normal)),
       m_description(std::move(description)) {}
 
 void MovePointCommand::apply(ObjectLabels& labels) {

@@ -2,11 +2,10 @@
 // are in the mesh file's own coordinates, as stored in labels.json.
 #pragma once
 
+#include <Eigen/Core>
 #include <memory>
 #include <optional>
 #include <string>
-
-#include <Eigen/Core>
 
 #include "ui/document/command.h"
 

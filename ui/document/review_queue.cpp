@@ -2,9 +2,8 @@
 
 #include <algorithm>
 #include <cctype>
-#include <system_error>
-
 #include <nlohmann/json.hpp>
+#include <system_error>
 
 #include "core/common/atomic_file.h"
 #include "core/common/error.h"
@@ -17,10 +16,14 @@ namespace fs = std::filesystem;
 
 const char* toString(QueueState state) {
   switch (state) {
-    case QueueState::Accepted: return "accepted";
-    case QueueState::Edited: return "edited";
-    case QueueState::Skipped: return "skipped";
-    case QueueState::Unreviewed: break;
+    case QueueState::Accepted:
+      return "accepted";
+    case QueueState::Edited:
+      return "edited";
+    case QueueState::Skipped:
+      return "skipped";
+    case QueueState::Unreviewed:
+      break;
   }
   return "unreviewed";
 }
@@ -34,7 +37,8 @@ QueueState parseQueueState(const std::string& text) {
 
 bool isMeshFile(const fs::path& path) {
   std::string ext = path.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return std::tolower(c); });
   const auto& supported = supportedMeshExtensions();
   return std::find(supported.begin(), supported.end(), ext) != supported.end();
 }
@@ -109,7 +113,8 @@ void ReviewQueue::loadState() {
     }
     const std::string currentMesh = json.value("current", "");
     for (std::size_t i = 0; i < m_entries.size(); ++i) {
-      if ((base / currentMesh).lexically_normal() == m_entries[i].mesh) m_current = static_cast<int>(i);
+      if ((base / currentMesh).lexically_normal() == m_entries[i].mesh)
+        m_current = static_cast<int>(i);
     }
   } catch (const nlohmann::json::exception& e) {
     // A damaged state file must not block review: start over, and say so.
@@ -126,15 +131,17 @@ void ReviewQueue::save() const {
                        {"state", toString(entry.state)}});
   }
   nlohmann::json json = {{"schema", "sagrid.review-queue/1"}, {"objects", objects}};
-  json["current"] = m_entries.empty() ? std::string()
-                                      : m_entries[std::size_t(m_current)].mesh.lexically_relative(base).generic_string();
+  json["current"] =
+      m_entries.empty()
+          ? std::string()
+          : m_entries[std::size_t(m_current)].mesh.lexically_relative(base).generic_string();
   writeFileAtomic(m_stateFile, json.dump(2) + "\n");
 }
 
 std::size_t ReviewQueue::reviewedCount() const {
-  return static_cast<std::size_t>(std::count_if(m_entries.begin(), m_entries.end(), [](const QueueEntry& e) {
-    return e.state != QueueState::Unreviewed;
-  }));
+  return static_cast<std::size_t>(
+      std::count_if(m_entries.begin(), m_entries.end(),
+                    [](const QueueEntry& e) { return e.state != QueueState::Unreviewed; }));
 }
 
 void ReviewQueue::setCurrent(int index) {
@@ -160,7 +167,9 @@ void ReviewQueue::setState(std::size_t index, QueueState state) {
   save();
 }
 
-void ReviewQueue::setError(std::size_t index, std::string error) { m_entries.at(index).error = std::move(error); }
+void ReviewQueue::setError(std::size_t index, std::string error) {
+  m_entries.at(index).error = std::move(error);
+}
 
 int ReviewQueue::add(const std::vector<fs::path>& paths) {
   std::vector<fs::path> meshes;

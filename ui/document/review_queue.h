@@ -17,7 +17,7 @@ struct QueueEntry {
   std::filesystem::path mesh;
   std::filesystem::path labels;  // where its labels.json is read and autosaved
   QueueState state = QueueState::Unreviewed;
-  std::string error;             // last load error, shown in the queue (the queue goes on)
+  std::string error;  // last load error, shown in the queue (the queue goes on)
 };
 
 inline constexpr const char* kQueueStateFile = ".sagrid-review.json";

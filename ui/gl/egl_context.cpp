@@ -1,11 +1,11 @@
 #include "ui/gl/egl_context.h"
 
+#include <EGL/egl.h>
+#include <EGL/eglext.h>
+
 #include <chrono>
 #include <cstdio>
 #include <string>
-
-#include <EGL/egl.h>
-#include <EGL/eglext.h>
 
 #include "core/common/error.h"
 #include "ui/gl/framebuffer.h"
@@ -26,9 +26,11 @@ EGLDisplay openHeadlessDisplay() {
   auto getPlatformDisplay = reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(
       eglGetProcAddress("eglGetPlatformDisplayEXT"));
   if (getPlatformDisplay) {
-    EGLDisplay display = getPlatformDisplay(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
+    EGLDisplay display =
+        getPlatformDisplay(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
     if (display != EGL_NO_DISPLAY && eglInitialize(display, nullptr, nullptr)) return display;
-    auto queryDevices = reinterpret_cast<PFNEGLQUERYDEVICESEXTPROC>(eglGetProcAddress("eglQueryDevicesEXT"));
+    auto queryDevices =
+        reinterpret_cast<PFNEGLQUERYDEVICESEXTPROC>(eglGetProcAddress("eglQueryDevicesEXT"));
     EGLDeviceEXT devices[8];
     EGLint count = 0;
     if (queryDevices && queryDevices(8, devices, &count)) {
@@ -45,12 +47,19 @@ EGLDisplay openHeadlessDisplay() {
 class EglContext final : public GlContext {
  public:
   explicit EglContext(const ContextOptions& options)
-      : m_width(options.width), m_height(options.height), m_start(std::chrono::steady_clock::now()) {
+      : m_width(options.width),
+        m_height(options.height),
+        m_start(std::chrono::steady_clock::now()) {
     m_display = openHeadlessDisplay();
-    if (!eglBindAPI(EGL_OPENGL_API)) throw Error("EGL: desktop OpenGL API unavailable (" + eglErrorText() + ")");
-    const EGLint attributes[] = {EGL_CONTEXT_MAJOR_VERSION, 3, EGL_CONTEXT_MINOR_VERSION, 3,
+    if (!eglBindAPI(EGL_OPENGL_API))
+      throw Error("EGL: desktop OpenGL API unavailable (" + eglErrorText() + ")");
+    const EGLint attributes[] = {EGL_CONTEXT_MAJOR_VERSION,
+                                 3,
+                                 EGL_CONTEXT_MINOR_VERSION,
+                                 3,
                                  EGL_CONTEXT_OPENGL_PROFILE_MASK,
-                                 EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE};
+                                 EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
+                                 EGL_NONE};
     // EGL_KHR_no_config_context + surfaceless_context: no config or surface needed offscreen.
     m_context = eglCreateContext(m_display, EGL_NO_CONFIG_KHR, EGL_NO_CONTEXT, attributes);
     if (m_context == EGL_NO_CONTEXT) {
@@ -73,7 +82,9 @@ class EglContext final : public GlContext {
   }
 
   bool headless() const override { return true; }
-  void framebufferSize(int& width, int& height) const override { width = m_width, height = m_height; }
+  void framebufferSize(int& width, int& height) const override {
+    width = m_width, height = m_height;
+  }
   void windowSize(int& width, int& height) const override { width = m_width, height = m_height; }
   void setSize(int width, int height) override {
     m_width = width, m_height = height;

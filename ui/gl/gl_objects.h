@@ -23,7 +23,10 @@ class GlName {
 
   GLuint id() const { return m_id; }
   explicit operator bool() const { return m_id != 0; }
-  GLuint* create() { reset(); return &m_id; }  // pass to glGen*
+  GLuint* create() {
+    reset();
+    return &m_id;
+  }  // pass to glGen*
   void reset() {
     if (m_id) Delete(1, &m_id);
     m_id = 0;
@@ -43,8 +46,20 @@ using GlBuffer = GlName<detail::deleteBuffers>;
 using GlVertexArray = GlName<detail::deleteVertexArrays>;
 using GlTexture = GlName<detail::deleteTextures>;
 
-inline GlBuffer makeBuffer() { GlBuffer b; glGenBuffers(1, b.create()); return b; }
-inline GlVertexArray makeVertexArray() { GlVertexArray v; glGenVertexArrays(1, v.create()); return v; }
-inline GlTexture makeTexture() { GlTexture t; glGenTextures(1, t.create()); return t; }
+inline GlBuffer makeBuffer() {
+  GlBuffer b;
+  glGenBuffers(1, b.create());
+  return b;
+}
+inline GlVertexArray makeVertexArray() {
+  GlVertexArray v;
+  glGenVertexArrays(1, v.create());
+  return v;
+}
+inline GlTexture makeTexture() {
+  GlTexture t;
+  glGenTextures(1, t.create());
+  return t;
+}
 
 }  // namespace sagrid::ui

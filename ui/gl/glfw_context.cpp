@@ -17,15 +17,17 @@ class GlfwContext final : public GlContext {
   explicit GlfwContext(const ContextOptions& options) {
     glfwSetErrorCallback([](int, const char*) {});
     if (!glfwInit()) {
-      throw Error("cannot open a window: GLFW could not initialise (no display? set DISPLAY, "
-                  "use xvfb-run, or use --backend egl)");
+      throw Error(
+          "cannot open a window: GLFW could not initialise (no display? set DISPLAY, "
+          "use xvfb-run, or use --backend egl)");
     }
     glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
     glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
     glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
     glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
     glfwWindowHint(GLFW_VISIBLE, options.visible ? GLFW_TRUE : GLFW_FALSE);
-    m_window = glfwCreateWindow(options.width, options.height, options.title.c_str(), nullptr, nullptr);
+    m_window =
+        glfwCreateWindow(options.width, options.height, options.title.c_str(), nullptr, nullptr);
     if (!m_window) {
       glfwTerminate();
       throw Error("cannot open a window with OpenGL 3.3 core (driver too old?)");
@@ -79,7 +81,9 @@ class GlfwContext final : public GlContext {
   void present() override { glfwSwapBuffers(m_window); }
   unsigned screenFramebuffer() const override { return 0; }
   double timeSeconds() const override { return glfwGetTime(); }
-  void setClipboard(const std::string& text) override { glfwSetClipboardString(m_window, text.c_str()); }
+  void setClipboard(const std::string& text) override {
+    glfwSetClipboardString(m_window, text.c_str());
+  }
   std::string clipboard() const override {
     const char* text = glfwGetClipboardString(m_window);
     return text ? text : "";

@@ -1,11 +1,11 @@
 #include "ui/gl/image.h"
 
+#include <stb_image.h>
+#include <stb_image_write.h>
+
 #include <algorithm>
 #include <cstdlib>
 #include <string>
-
-#include <stb_image.h>
-#include <stb_image_write.h>
 
 #include "core/common/atomic_file.h"
 #include "core/common/error.h"
@@ -32,9 +32,8 @@ void writePng(const std::filesystem::path& path, const RgbaImage& image) {
 RgbaImage readPng(const std::filesystem::path& path) {
   const std::string bytes = readFileBytes(path);
   int w = 0, h = 0, channels = 0;
-  unsigned char* data =
-      stbi_load_from_memory(reinterpret_cast<const unsigned char*>(bytes.data()),
-                            static_cast<int>(bytes.size()), &w, &h, &channels, 4);
+  unsigned char* data = stbi_load_from_memory(reinterpret_cast<const unsigned char*>(bytes.data()),
+                                              static_cast<int>(bytes.size()), &w, &h, &channels, 4);
   if (!data) throw FileError(path, std::string("not a readable image: ") + stbi_failure_reason());
   RgbaImage image;
   image.width = w;

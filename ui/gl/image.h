@@ -13,12 +13,14 @@ struct RgbaImage {
   int height = 0;
   std::vector<std::uint8_t> pixels;  // width * height * 4, rows top to bottom
 
-  const std::uint8_t* at(int x, int y) const { return pixels.data() + (std::size_t(y) * width + x) * 4; }
+  const std::uint8_t* at(int x, int y) const {
+    return pixels.data() + (std::size_t(y) * width + x) * 4;
+  }
   std::uint8_t* at(int x, int y) { return pixels.data() + (std::size_t(y) * width + x) * 4; }
 };
 
 void writePng(const std::filesystem::path& path, const RgbaImage& image);  // atomic
-RgbaImage readPng(const std::filesystem::path& path);  // throws FileError
+RgbaImage readPng(const std::filesystem::path& path);                      // throws FileError
 
 struct ImageDifference {
   bool sameSize = false;

@@ -11,12 +11,12 @@ namespace sagrid::ui {
 struct InputEvent {
   enum class Kind { MouseMove, MouseButton, Scroll, Key, Char, Drop };
   Kind kind = Kind::MouseMove;
-  float x = 0, y = 0;        // MouseMove: window coordinates (pixels, top-left origin); Scroll: offsets
-  int button = 0;            // MouseButton
-  int key = 0;               // Key
-  bool pressed = false;      // MouseButton / Key (repeats count as pressed)
-  int mods = 0;              // GLFW_MOD_* bits for MouseButton / Key
-  unsigned codepoint = 0;    // Char
+  float x = 0, y = 0;    // MouseMove: window coordinates (pixels, top-left origin); Scroll: offsets
+  int button = 0;        // MouseButton
+  int key = 0;           // Key
+  bool pressed = false;  // MouseButton / Key (repeats count as pressed)
+  int mods = 0;          // GLFW_MOD_* bits for MouseButton / Key
+  unsigned codepoint = 0;          // Char
   std::vector<std::string> paths;  // Drop
 
   static InputEvent mouseMove(float x, float y);

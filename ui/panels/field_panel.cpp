@@ -1,7 +1,7 @@
+#include <imgui.h>
+
 #include <algorithm>
 #include <cstdio>
-
-#include <imgui.h>
 
 #include "ui/app/session.h"
 #include "ui/panels/panels.h"
@@ -23,10 +23,12 @@ void drawFieldPanel(Session& session, const SceneRenderer& scene) {
   // Sliders work in metres (what the curator thinks in); the renderer gets mesh units.
   float thresholdM = (f.threshold > 0 ? f.threshold : largest) * mpu;
   ImGui::SetNextItemWidth(-90);
-  if (ImGui::SliderFloat("closer than", &thresholdM, 0.0f, largest * mpu, "%.3f m")) f.threshold = thresholdM / mpu;
+  if (ImGui::SliderFloat("closer than", &thresholdM, 0.0f, largest * mpu, "%.3f m"))
+    f.threshold = thresholdM / mpu;
   float colorM = (f.colorMax > 0 ? f.colorMax : largest) * mpu;
   ImGui::SetNextItemWidth(-90);
-  if (ImGui::SliderFloat("colour max", &colorM, 1e-4f, largest * mpu, "%.3f m")) f.colorMax = colorM / mpu;
+  if (ImGui::SliderFloat("colour max", &colorM, 1e-4f, largest * mpu, "%.3f m"))
+    f.colorMax = colorM / mpu;
   ImGui::SetNextItemWidth(-90);
   ImGui::SliderFloat("opacity", &f.opacity, 0.05f, 1.0f, "%.2f");
   const char* axes[] = {"none", "x", "y", "z"};
@@ -43,12 +45,13 @@ void drawFieldPanel(Session& session, const SceneRenderer& scene) {
     bool on = (f.typeMask >> i) & 1u;
     const Eigen::Vector3f c = typeColor(types[i]);
     ImGui::PushStyleColor(ImGuiCol_CheckMark, ImVec4(c.x(), c.y(), c.z(), 1));
-    if (ImGui::Checkbox(types[i].c_str(), &on)) f.typeMask = on ? (f.typeMask | (1u << i)) : (f.typeMask & ~(1u << i));
+    if (ImGui::Checkbox(types[i].c_str(), &on))
+      f.typeMask = on ? (f.typeMask | (1u << i)) : (f.typeMask & ~(1u << i));
     ImGui::PopStyleColor();
     if (i + 1 < types.size()) ImGui::SameLine();
   }
-  ImGui::TextDisabled("%d^3 grid: %zu voxels, %zu drawn", doc->gridResolution(), scene.field().voxelCount(),
-                      scene.field().instanceCount());
+  ImGui::TextDisabled("%d^3 grid: %zu voxels, %zu drawn", doc->gridResolution(),
+                      scene.field().voxelCount(), scene.field().instanceCount());
 }
 
 }  // namespace sagrid::ui

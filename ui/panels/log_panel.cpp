@@ -13,7 +13,8 @@ void drawLogPanel(const LogBuffer& log) {
                                                              : ImVec4(0.75f, 0.78f, 0.82f, 1);
     ImGui::TextColored(color, "%s", line.text.c_str());
   }
-  if (ImGui::GetScrollY() >= ImGui::GetScrollMaxY()) ImGui::SetScrollHereY(1.0f);  // follow the tail
+  if (ImGui::GetScrollY() >= ImGui::GetScrollMaxY())
+    ImGui::SetScrollHereY(1.0f);  // follow the tail
   ImGui::EndChild();
 }
 

@@ -1,6 +1,6 @@
-#include <cstdio>
-
 #include <imgui.h>
+
+#include <cstdio>
 
 #include "ui/app/session.h"
 #include "ui/panels/panels.h"
@@ -11,15 +11,16 @@ void drawObjectPanel(Session& session) {
   AnnotationDocument* doc = session.document();
   if (!ImGui::CollapsingHeader("Object", ImGuiTreeNodeFlags_DefaultOpen) || !doc) return;
   ImGui::TextWrapped("%s", doc->displayName().c_str());
-  ImGui::TextDisabled("%zu vertices, %zu triangles, up %s", doc->mesh().vertexCount(), doc->mesh().triangleCount(),
-                      doc->labels().object.up.c_str());
+  ImGui::TextDisabled("%zu vertices, %zu triangles, up %s", doc->mesh().vertexCount(),
+                      doc->mesh().triangleCount(), doc->labels().object.up.c_str());
   const auto size = doc->mesh().bounds().sizes() * doc->metersPerUnit();
   ImGui::TextDisabled("size %.3f x %.3f x %.3f m", size.x(), size.y(), size.z());
   // Category: retrieval/prediction fills it; the curator can override (training is per category).
   static const char* kCategories[] = {"stove", "sink", "microwave", "oven", "lamp", "other"};
   const std::string& category = doc->labels().object.category;
   ImGui::SetNextItemWidth(-1);
-  if (ImGui::BeginCombo("##category", category.empty() ? "category: unknown" : ("category: " + category).c_str())) {
+  if (ImGui::BeginCombo("##category", category.empty() ? "category: unknown"
+                                                       : ("category: " + category).c_str())) {
     for (const char* c : kCategories) {
       if (ImGui::Selectable(c, category == c)) doc->setCategory(c);
     }

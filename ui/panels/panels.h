@@ -2,6 +2,8 @@
 // (which turn point edits into document commands); none keeps state of the document itself.
 #pragma once
 
+#include <filesystem>
+
 #include "ui/app/log_buffer.h"
 
 namespace sagrid::ui {
@@ -9,6 +11,7 @@ namespace sagrid::ui {
 class Session;
 class SceneRenderer;
 class FileBrowser;
+class TrainingWorker;
 
 struct PanelLayout {
   float menuHeight = 0;
@@ -23,6 +26,9 @@ void drawPointsPanel(Session& session);
 void drawFieldPanel(Session& session, const SceneRenderer& scene);
 void drawObjectPanel(Session& session);
 void drawLogPanel(const LogBuffer& log);
+// Retrain the open object's category on the training set, live loss curve, then re-predict.
+void drawTrainPanel(Session& session, TrainingWorker& worker,
+                    const std::filesystem::path& modelsOut);
 void drawHelpOverlay(Session& session);
 void drawErrorModal(Session& session);
 // Labels next to the markers, the axes gizmo and the colour legend, over the 3D viewport.

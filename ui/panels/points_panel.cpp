@@ -1,7 +1,7 @@
+#include <imgui.h>
+
 #include <cstdio>
 #include <memory>
-
-#include <imgui.h>
 
 #include "ui/app/session.h"
 #include "ui/document/point_commands.h"
@@ -23,7 +23,8 @@ void typeSelector(Session& session) {
       char label[96];
       std::snprintf(label, sizeof label, "%zu  %s", i + 1, types[i].c_str());
       ImGui::PushStyleColor(ImGuiCol_Text, toImGui(typeColor(types[i])));
-      if (ImGui::Selectable(label, types[i] == session.currentType())) session.setCurrentType(types[i]);
+      if (ImGui::Selectable(label, types[i] == session.currentType()))
+        session.setCurrentType(types[i]);
       ImGui::PopStyleColor();
     }
     ImGui::EndCombo();
@@ -46,7 +47,8 @@ void drawPointsPanel(Session& session) {
   AnnotationDocument* doc = session.document();
   if (!ImGui::CollapsingHeader("Points", ImGuiTreeNodeFlags_DefaultOpen) || !doc) return;
   typeSelector(session);
-  if (ImGui::Button(session.addModeArmed ? "Click the surface..." : "Add point (Ins)")) session.addModeArmed = !session.addModeArmed;
+  if (ImGui::Button(session.addModeArmed ? "Click the surface..." : "Add point (Ins)"))
+    session.addModeArmed = !session.addModeArmed;
   ImGui::SameLine();
   ImGui::BeginDisabled(!doc->canUndo());
   if (ImGui::Button("Undo")) session.undo();
@@ -62,14 +64,15 @@ void drawPointsPanel(Session& session) {
   for (int i = 0; i < static_cast<int>(points.size()); ++i) {
     const AffordancePoint& p = points[std::size_t(i)];
     ImGui::PushID(i);
-    ImGui::ColorButton("##c", toImGui(typeColor(p.type)), ImGuiColorEditFlags_NoTooltip, ImVec2(12, 12));
+    ImGui::ColorButton("##c", toImGui(typeColor(p.type)), ImGuiColorEditFlags_NoTooltip,
+                       ImVec2(12, 12));
     ImGui::SameLine();
     char label[160];
     std::snprintf(label, sizeof label, "%d  %-13s %s", i + 1, p.type.c_str(), toString(p.status));
     if (ImGui::Selectable(label, doc->selected() == i)) doc->select(i);
     if (ImGui::IsItemHovered()) {
-      ImGui::SetTooltip("(%.4f, %.4f, %.4f) file frame%s", p.position.x(), p.position.y(), p.position.z(),
-                        mpu != 1.0f ? " (units scaled to metres on export)" : "");
+      ImGui::SetTooltip("(%.4f, %.4f, %.4f) file frame%s", p.position.x(), p.position.y(),
+                        p.position.z(), mpu != 1.0f ? " (units scaled to metres on export)" : "");
     }
     ImGui::PopID();
   }
@@ -84,7 +87,8 @@ void drawPointsPanel(Session& session) {
     ImGui::SameLine();
     if (ImGui::BeginCombo("##settype", "Type", ImGuiComboFlags_NoPreview)) {
       for (const auto& type : knownTypes()) {
-        if (ImGui::Selectable(type.c_str(), type == points[std::size_t(selected)].type)) session.changeSelectedType(type);
+        if (ImGui::Selectable(type.c_str(), type == points[std::size_t(selected)].type))
+          session.changeSelectedType(type);
       }
       ImGui::EndCombo();
     }

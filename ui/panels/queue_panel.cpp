@@ -1,7 +1,7 @@
+#include <imgui.h>
+
 #include <algorithm>
 #include <cstdio>
-
-#include <imgui.h>
 
 #include "ui/app/session.h"
 #include "ui/panels/panels.h"
@@ -11,10 +11,14 @@ namespace sagrid::ui {
 namespace {
 ImVec4 stateColor(QueueState state) {
   switch (state) {
-    case QueueState::Accepted: return ImVec4(0.45f, 0.85f, 0.45f, 1);
-    case QueueState::Edited: return ImVec4(0.95f, 0.75f, 0.30f, 1);
-    case QueueState::Skipped: return ImVec4(0.60f, 0.60f, 0.65f, 1);
-    case QueueState::Unreviewed: break;
+    case QueueState::Accepted:
+      return ImVec4(0.45f, 0.85f, 0.45f, 1);
+    case QueueState::Edited:
+      return ImVec4(0.95f, 0.75f, 0.30f, 1);
+    case QueueState::Skipped:
+      return ImVec4(0.60f, 0.60f, 0.65f, 1);
+    case QueueState::Unreviewed:
+      break;
   }
   return ImVec4(0.75f, 0.80f, 0.90f, 1);
 }
@@ -24,7 +28,8 @@ void drawQueuePanel(Session& session) {
   const ReviewQueue& queue = session.queue();
   if (!ImGui::CollapsingHeader("Review queue", ImGuiTreeNodeFlags_DefaultOpen)) return;
   if (queue.empty()) {
-    ImGui::TextWrapped("Nothing open. File > Open, drop files on the window, or pass a folder: sagrid gui DIR");
+    ImGui::TextWrapped(
+        "Nothing open. File > Open, drop files on the window, or pass a folder: sagrid gui DIR");
     return;
   }
   const float done = float(queue.reviewedCount()) / float(queue.size());
@@ -41,11 +46,15 @@ void drawQueuePanel(Session& session) {
   for (std::size_t i = 0; i < queue.size(); ++i) {
     const QueueEntry& entry = queue.entry(i);
     ImGui::PushID(static_cast<int>(i));
-    ImGui::TextColored(stateColor(entry.state), "%-10s", entry.error.empty() ? toString(entry.state) : "error");
+    ImGui::TextColored(stateColor(entry.state), "%-10s",
+                       entry.error.empty() ? toString(entry.state) : "error");
     ImGui::SameLine();
-    const std::string name = entry.mesh.parent_path().filename().string() + "/" + entry.mesh.filename().string();
-    if (ImGui::Selectable(name.c_str(), static_cast<int>(i) == queue.current())) session.openEntry(static_cast<int>(i));
-    if (!entry.error.empty() && ImGui::IsItemHovered()) ImGui::SetTooltip("%s", entry.error.c_str());
+    const std::string name =
+        entry.mesh.parent_path().filename().string() + "/" + entry.mesh.filename().string();
+    if (ImGui::Selectable(name.c_str(), static_cast<int>(i) == queue.current()))
+      session.openEntry(static_cast<int>(i));
+    if (!entry.error.empty() && ImGui::IsItemHovered())
+      ImGui::SetTooltip("%s", entry.error.c_str());
     ImGui::PopID();
   }
   ImGui::EndChild();

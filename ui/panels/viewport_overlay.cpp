@@ -1,8 +1,8 @@
+#include <imgui.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-
-#include <imgui.h>
 
 #include "ui/app/session.h"
 #include "ui/panels/panels.h"
@@ -25,13 +25,17 @@ void pointLabels(const Session& session, ImDrawList* draw) {
     if (!session.camera().project(doc->pointInView(i), pixel)) continue;
     const ImVec2 at(vp.x + pixel.x(), vp.y + pixel.y());
     const AffordancePoint& p = doc->points()[std::size_t(i)];
-    if (doc->selected() == i) draw->AddCircle(at, session.view().markerPixels * 1.35f + 4, IM_COL32(255, 255, 255, 230), 24, 2.0f);
+    if (doc->selected() == i)
+      draw->AddCircle(at, session.view().markerPixels * 1.35f + 4, IM_COL32(255, 255, 255, 230), 24,
+                      2.0f);
     if (!session.view().showPointLabels) continue;
     char text[96];
-    std::snprintf(text, sizeof text, "%d %s%s", i + 1, p.type.c_str(), p.status == AffordanceStatus::Predicted ? " ?" : "");
+    std::snprintf(text, sizeof text, "%d %s%s", i + 1, p.type.c_str(),
+                  p.status == AffordanceStatus::Predicted ? " ?" : "");
     const ImVec2 textAt(at.x + session.view().markerPixels + 4, at.y - 8);
     const ImVec2 size = ImGui::CalcTextSize(text);
-    draw->AddRectFilled(ImVec2(textAt.x - 3, textAt.y - 1), ImVec2(textAt.x + size.x + 3, textAt.y + size.y + 1),
+    draw->AddRectFilled(ImVec2(textAt.x - 3, textAt.y - 1),
+                        ImVec2(textAt.x + size.x + 3, textAt.y + size.y + 1),
                         IM_COL32(15, 17, 20, 190), 3.0f);
     draw->AddText(textAt, toU32(typeColor(p.type)), text);
   }
@@ -43,7 +47,8 @@ void axesGizmo(const Session& session, ImDrawList* draw) {
   const ImVec2 origin(vp.x + 48, vp.y + vp.height - 48);
   const Eigen::Matrix4f view = session.camera().view();
   const char* names[] = {"X", "Y", "Z"};
-  const Eigen::Vector3f colors[] = {{0.90f, 0.30f, 0.30f}, {0.40f, 0.85f, 0.35f}, {0.35f, 0.55f, 1.0f}};
+  const Eigen::Vector3f colors[] = {
+      {0.90f, 0.30f, 0.30f}, {0.40f, 0.85f, 0.35f}, {0.35f, 0.55f, 1.0f}};
   draw->AddCircleFilled(origin, 40, IM_COL32(20, 22, 26, 150), 32);
   for (int a = 0; a < 3; ++a) {
     const Eigen::Vector3f dir = view.block<3, 3>(0, 0).col(a);
@@ -62,8 +67,10 @@ void legend(const Session& session, const SceneRenderer& scene, ImDrawList* draw
   const float w = std::min(220.0f, vp.width - 120.0f), h = 12;  // leaves room for the axes gizmo
   if (w < 80.0f) return;
   const ImVec2 at(vp.x + vp.width - w - 24, vp.y + vp.height - 52);
-  draw->AddRectFilled(ImVec2(at.x - 10, at.y - 24), ImVec2(at.x + w + 10, at.y + h + 22), IM_COL32(20, 22, 26, 190), 5.0f);
-  draw->AddText(ImVec2(at.x, at.y - 20), IM_COL32(220, 224, 230, 255), "distance to nearest point (m)");
+  draw->AddRectFilled(ImVec2(at.x - 10, at.y - 24), ImVec2(at.x + w + 10, at.y + h + 22),
+                      IM_COL32(20, 22, 26, 190), 5.0f);
+  draw->AddText(ImVec2(at.x, at.y - 20), IM_COL32(220, 224, 230, 255),
+                "distance to nearest point (m)");
   const int steps = 44;
   for (int s = 0; s < steps; ++s) {
     const float t0 = float(s) / steps, t1 = float(s + 1) / steps;
@@ -79,7 +86,8 @@ void legend(const Session& session, const SceneRenderer& scene, ImDrawList* draw
     const float x = at.x + w * float(k) / 4.0f;
     draw->AddLine(ImVec2(x, at.y + h), ImVec2(x, at.y + h + 3), IM_COL32(220, 224, 230, 255));
     const float tw = ImGui::CalcTextSize(label).x;
-    draw->AddText(ImVec2(std::min(x - tw * 0.5f, at.x + w + 8 - tw), at.y + h + 3), IM_COL32(220, 224, 230, 255), label);
+    draw->AddText(ImVec2(std::min(x - tw * 0.5f, at.x + w + 8 - tw), at.y + h + 3),
+                  IM_COL32(220, 224, 230, 255), label);
   }
 }
 }  // namespace
@@ -91,7 +99,8 @@ void drawViewportOverlay(const Session& session, const SceneRenderer& scene) {
     const ViewportRect& vp = session.viewport();
     const char* hint = "Drop meshes or a folder here, or File > Open (Ctrl+O)";
     const ImVec2 size = ImGui::CalcTextSize(hint);
-    draw->AddText(ImVec2(vp.x + 0.5f * (vp.width - size.x), vp.y + 0.5f * vp.height), IM_COL32(170, 175, 185, 255), hint);
+    draw->AddText(ImVec2(vp.x + 0.5f * (vp.width - size.x), vp.y + 0.5f * vp.height),
+                  IM_COL32(170, 175, 185, 255), hint);
     return;
   }
   if (session.view().showPoints) pointLabels(session, draw);
@@ -105,8 +114,9 @@ void drawStatusBar(Session& session) {
   ImGui::SetNextWindowSize(ImVec2(display.x, height));
   ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(8, 3));
   ImGui::PushStyleVar(ImGuiStyleVar_WindowRounding, 0.0f);
-  ImGui::Begin("##status", nullptr, ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove |
-                                        ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoBringToFrontOnFocus);
+  ImGui::Begin("##status", nullptr,
+               ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove |
+                   ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoBringToFrontOnFocus);
   const AnnotationDocument* doc = session.document();
   if (!session.queue().empty()) {
     ImGui::Text("Object %d / %zu", session.queue().current() + 1, session.queue().size());
@@ -118,7 +128,8 @@ void drawStatusBar(Session& session) {
     ImGui::SameLine();
   }
   if (session.addModeArmed) {
-    ImGui::TextColored(ImVec4(1, 0.8f, 0.3f, 1), "| click the surface to add a %s", session.currentType().c_str());
+    ImGui::TextColored(ImVec4(1, 0.8f, 0.3f, 1), "| click the surface to add a %s",
+                       session.currentType().c_str());
     ImGui::SameLine();
   }
   if (session.worker().running()) {

@@ -47,7 +47,8 @@ void Camera::zoom(float steps) {
 
 Eigen::Vector3f Camera::eye() const {
   const float c = std::cos(m_pitch);
-  return m_target + m_distance * Eigen::Vector3f(c * std::cos(m_yaw), c * std::sin(m_yaw), std::sin(m_pitch));
+  return m_target +
+         m_distance * Eigen::Vector3f(c * std::cos(m_yaw), c * std::sin(m_yaw), std::sin(m_pitch));
 }
 
 Eigen::Matrix4f Camera::view() const {

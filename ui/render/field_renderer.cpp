@@ -10,9 +10,8 @@ namespace sagrid::ui {
 namespace {
 // The +x, +y and +z faces of the unit cube {0,1}^3, four corners each (x, y, z, face axis);
 // voxel.vert mirrors them towards the eye, so these are always the faces that can be seen.
-const float kCorners[] = {1, 0, 0, 0, 1, 1, 0, 0, 1, 1, 1, 0, 1, 0, 1, 0,
-                          0, 1, 0, 1, 1, 1, 0, 1, 1, 1, 1, 1, 0, 1, 1, 1,
-                          0, 0, 1, 2, 1, 0, 1, 2, 1, 1, 1, 2, 0, 1, 1, 2};
+const float kCorners[] = {1, 0, 0, 0, 1, 1, 0, 0, 1, 1, 1, 0, 1, 0, 1, 0, 0, 1, 0, 1, 1, 1, 0, 1,
+                          1, 1, 1, 1, 0, 1, 1, 1, 0, 0, 1, 2, 1, 0, 1, 2, 1, 1, 1, 2, 0, 1, 1, 2};
 const unsigned kFaceIndices[] = {0, 1, 2, 0, 2, 3, 4, 5, 6, 4, 6, 7, 8, 9, 10, 8, 10, 11};
 constexpr std::size_t kFloatsPerInstance = 5;  // centre xyz, distance, exposed-face bits
 }  // namespace
@@ -34,7 +33,8 @@ FieldRenderer::FieldRenderer() : m_program("voxel.vert", "voxel.frag") {
   glEnableVertexAttribArray(0);
   glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 4 * sizeof(float), nullptr);
   glEnableVertexAttribArray(1);
-  glVertexAttribPointer(1, 1, GL_FLOAT, GL_FALSE, 4 * sizeof(float), reinterpret_cast<void*>(3 * sizeof(float)));
+  glVertexAttribPointer(1, 1, GL_FLOAT, GL_FALSE, 4 * sizeof(float),
+                        reinterpret_cast<void*>(3 * sizeof(float)));
   glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, m_indices.id());
   glBufferData(GL_ELEMENT_ARRAY_BUFFER, sizeof kFaceIndices, kFaceIndices, GL_STATIC_DRAW);
   glBindBuffer(GL_ARRAY_BUFFER, m_instanceBuffer.id());
@@ -92,11 +92,13 @@ void FieldRenderer::setFields(const std::vector<DistanceField>& fields, std::uin
 
 FieldRenderer::VisibilityKey FieldRenderer::keyFor(const FieldSettings& settings) const {
   VisibilityKey key;
-  key.threshold = settings.threshold > 0 ? settings.threshold : std::numeric_limits<float>::infinity();
+  key.threshold =
+      settings.threshold > 0 ? settings.threshold : std::numeric_limits<float>::infinity();
   key.sliceAxis = settings.sliceAxis;
   if (settings.sliceAxis >= 0 && !m_bounds.isEmpty()) {
     const int a = settings.sliceAxis;
-    key.slicePosition = m_bounds.min()[a] + settings.slice * (m_bounds.max()[a] - m_bounds.min()[a]);
+    key.slicePosition =
+        m_bounds.min()[a] + settings.slice * (m_bounds.max()[a] - m_bounds.min()[a]);
   }
   // Hidden voxels matter only when one can see through the shown ones.
   key.cullHidden = settings.opacity >= 0.999f;
@@ -119,16 +121,19 @@ void FieldRenderer::rebuildInstances(const VisibilityKey& key) {
     m_shown.assign(cells, 0);
     for (std::size_t linear = 0; linear < cells; ++linear) {
       const float d = m_nearest[linear];
-      if (std::isnan(d) || !(d <= key.threshold || (std::isinf(key.threshold) && std::isinf(d)))) continue;
+      if (std::isnan(d) || !(d <= key.threshold || (std::isinf(key.threshold) && std::isinf(d))))
+        continue;
       if (key.sliceAxis >= 0) {
-        const VoxelIndex v{int(linear / (std::size_t(n) * n)), int((linear / n) % n), int(linear % n)};
+        const VoxelIndex v{int(linear / (std::size_t(n) * n)), int((linear / n) % n),
+                           int(linear % n)};
         const Eigen::Vector3f c = m_normalization.toMesh(voxelCenter(v, n));
         if (c[key.sliceAxis] > key.slicePosition) continue;
       }
       m_shown[linear] = 1;
     }
     auto shownAt = [&](int i, int j, int k) {
-      return i >= 0 && j >= 0 && k >= 0 && i < n && j < n && k < n && m_shown[(std::size_t(i) * n + j) * n + k];
+      return i >= 0 && j >= 0 && k >= 0 && i < n && j < n && k < n &&
+             m_shown[(std::size_t(i) * n + j) * n + k];
     };
     for (int i = 0; i < n; ++i) {
       for (int j = 0; j < n; ++j) {
@@ -138,13 +143,15 @@ void FieldRenderer::rebuildInstances(const VisibilityKey& key) {
           // A face next to a shown voxel is covered while opaque; see-through shows them all.
           int exposed = 63;
           if (key.cullHidden) {
-            exposed = (!shownAt(i + 1, j, k) << 0) | (!shownAt(i - 1, j, k) << 1) | (!shownAt(i, j + 1, k) << 2) |
-                      (!shownAt(i, j - 1, k) << 3) | (!shownAt(i, j, k + 1) << 4) | (!shownAt(i, j, k - 1) << 5);
+            exposed = (!shownAt(i + 1, j, k) << 0) | (!shownAt(i - 1, j, k) << 1) |
+                      (!shownAt(i, j + 1, k) << 2) | (!shownAt(i, j - 1, k) << 3) |
+                      (!shownAt(i, j, k + 1) << 4) | (!shownAt(i, j, k - 1) << 5);
             if (exposed == 0) continue;  // inside: never visible
           }
           const Eigen::Vector3f c = m_normalization.toMesh(voxelCenter({i, j, k}, n));
           const float d = m_nearest[linear];
-          m_staging.insert(m_staging.end(), {c.x(), c.y(), c.z(), std::isfinite(d) ? d : 3.0e38f, float(exposed)});
+          m_staging.insert(m_staging.end(),
+                           {c.x(), c.y(), c.z(), std::isfinite(d) ? d : 3.0e38f, float(exposed)});
         }
       }
     }
@@ -167,7 +174,8 @@ void FieldRenderer::draw(const Camera& camera, const FieldSettings& settings) co
   setUniform(m_uViewProj, camera.viewProjection());
   setUniform(m_uEye, camera.eye());
   setUniform(m_uVoxelSize, m_voxelSize);
-  const float colorMax = settings.colorMax > 0 ? settings.colorMax : std::max(m_largestDistance, 1e-6f);
+  const float colorMax =
+      settings.colorMax > 0 ? settings.colorMax : std::max(m_largestDistance, 1e-6f);
   setUniform(m_uMaxDistance, colorMax);
   setUniform(m_uOpacity, settings.opacity);
   const bool blended = settings.opacity < 0.999f;
@@ -177,7 +185,8 @@ void FieldRenderer::draw(const Camera& camera, const FieldSettings& settings) co
     glDepthMask(GL_FALSE);  // see-through voxels: no sorting, so nothing hides what is behind
   }
   glBindVertexArray(m_vao.id());
-  glDrawElementsInstanced(GL_TRIANGLES, 18, GL_UNSIGNED_INT, nullptr, static_cast<GLsizei>(m_instances));
+  glDrawElementsInstanced(GL_TRIANGLES, 18, GL_UNSIGNED_INT, nullptr,
+                          static_cast<GLsizei>(m_instances));
   glBindVertexArray(0);
   if (blended) {
     glDisable(GL_BLEND);

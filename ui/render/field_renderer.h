@@ -9,11 +9,10 @@
 // cubes), not 262,144. Frames with unchanged settings only issue one instanced draw.
 #pragma once
 
+#include <Eigen/Geometry>
 #include <cstdint>
 #include <string>
 #include <vector>
-
-#include <Eigen/Geometry>
 
 #include "ui/document/distance_field.h"
 #include "ui/gl/gl_objects.h"
@@ -32,9 +31,9 @@ class FieldRenderer {
   void prepare(const FieldSettings& settings);
   void draw(const Camera& camera, const FieldSettings& settings) const;
 
-  std::size_t voxelCount() const { return m_voxelCount; }       // voxels carrying a value
-  std::size_t instanceCount() const { return m_instances; }     // cubes drawn now
-  float largestDistance() const { return m_largestDistance; }   // finite maximum
+  std::size_t voxelCount() const { return m_voxelCount; }      // voxels carrying a value
+  std::size_t instanceCount() const { return m_instances; }    // cubes drawn now
+  float largestDistance() const { return m_largestDistance; }  // finite maximum
   const Eigen::AlignedBox3f& bounds() const { return m_bounds; }
   const std::vector<std::string>& types() const { return m_types; }
 
@@ -44,8 +43,8 @@ class FieldRenderer {
     int sliceAxis = -2;
     bool cullHidden = false;
     bool operator==(const VisibilityKey& o) const {
-      return threshold == o.threshold && slicePosition == o.slicePosition && sliceAxis == o.sliceAxis &&
-             cullHidden == o.cullHidden;
+      return threshold == o.threshold && slicePosition == o.slicePosition &&
+             sliceAxis == o.sliceAxis && cullHidden == o.cullHidden;
     }
   };
   VisibilityKey keyFor(const FieldSettings& settings) const;

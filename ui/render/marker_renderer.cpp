@@ -22,7 +22,8 @@ MarkerRenderer::MarkerRenderer() : m_program("marker.vert", "marker.frag") {
     const float theta = float(M_PI) * float(r) / kRings;
     for (int s = 0; s <= kSegments; ++s) {
       const float phi = 2.0f * float(M_PI) * float(s) / kSegments;
-      vertices.insert(vertices.end(), {std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta)});
+      vertices.insert(vertices.end(), {std::sin(theta) * std::cos(phi),
+                                       std::sin(theta) * std::sin(phi), std::cos(theta)});
     }
   }
   std::vector<unsigned> indices;
@@ -39,17 +40,20 @@ MarkerRenderer::MarkerRenderer() : m_program("marker.vert", "marker.frag") {
   m_instances = makeBuffer();
   glBindVertexArray(m_vao.id());
   glBindBuffer(GL_ARRAY_BUFFER, m_sphere.id());
-  glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(vertices.size() * sizeof(float)), vertices.data(), GL_STATIC_DRAW);
+  glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(vertices.size() * sizeof(float)), vertices.data(),
+               GL_STATIC_DRAW);
   glEnableVertexAttribArray(0);
   glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 3 * sizeof(float), nullptr);
   glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, m_sphereIndices.id());
-  glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(indices.size() * sizeof(unsigned)), indices.data(), GL_STATIC_DRAW);
+  glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(indices.size() * sizeof(unsigned)),
+               indices.data(), GL_STATIC_DRAW);
   glBindBuffer(GL_ARRAY_BUFFER, m_instances.id());
   glEnableVertexAttribArray(1);
   glVertexAttribPointer(1, 4, GL_FLOAT, GL_FALSE, kFloatsPerMarker * sizeof(float), nullptr);
   glVertexAttribDivisor(1, 1);
   glEnableVertexAttribArray(2);
-  glVertexAttribPointer(2, 4, GL_FLOAT, GL_FALSE, kFloatsPerMarker * sizeof(float), reinterpret_cast<void*>(4 * sizeof(float)));
+  glVertexAttribPointer(2, 4, GL_FLOAT, GL_FALSE, kFloatsPerMarker * sizeof(float),
+                        reinterpret_cast<void*>(4 * sizeof(float)));
   glVertexAttribDivisor(2, 1);
   glBindVertexArray(0);
 }
@@ -57,16 +61,19 @@ MarkerRenderer::MarkerRenderer() : m_program("marker.vert", "marker.frag") {
 void MarkerRenderer::upload(const std::vector<MarkerInstance>& markers) {
   m_staging.clear();
   for (const auto& m : markers) {
-    m_staging.insert(m_staging.end(), {m.position.x(), m.position.y(), m.position.z(), m.radiusPixels,
-                                       m.color[0], m.color[1], m.color[2], m.color[3]});
+    m_staging.insert(m_staging.end(),
+                     {m.position.x(), m.position.y(), m.position.z(), m.radiusPixels, m.color[0],
+                      m.color[1], m.color[2], m.color[3]});
   }
   glBindBuffer(GL_ARRAY_BUFFER, m_instances.id());
   if (markers.size() > m_capacity) {
     m_capacity = std::max<std::size_t>(markers.size(), 16);
-    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(m_capacity * kFloatsPerMarker * sizeof(float)), nullptr, GL_DYNAMIC_DRAW);
+    glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(m_capacity * kFloatsPerMarker * sizeof(float)),
+                 nullptr, GL_DYNAMIC_DRAW);
   }
   if (!m_staging.empty()) {
-    glBufferSubData(GL_ARRAY_BUFFER, 0, GLsizeiptr(m_staging.size() * sizeof(float)), m_staging.data());
+    glBufferSubData(GL_ARRAY_BUFFER, 0, GLsizeiptr(m_staging.size() * sizeof(float)),
+                    m_staging.data());
   }
   glBindBuffer(GL_ARRAY_BUFFER, 0);
   m_count = static_cast<GLsizei>(markers.size());
@@ -80,7 +87,8 @@ void MarkerRenderer::draw(const Camera& camera) const {
   setUniform(m_uEye, camera.eye());
   setUniform(m_uForward, forward);
   setUniform(m_uViewDir, forward);
-  setUniform(m_uWorldPerPixel, 2.0f * std::tan(0.5f * camera.verticalFovRadians()) / float(std::max(camera.height(), 1)));
+  setUniform(m_uWorldPerPixel, 2.0f * std::tan(0.5f * camera.verticalFovRadians()) /
+                                   float(std::max(camera.height(), 1)));
   glBindVertexArray(m_vao.id());
   glEnable(GL_BLEND);
   glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);

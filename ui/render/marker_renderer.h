@@ -3,9 +3,8 @@
 // change only when the points (or a drag preview) change; their vectors keep their capacity.
 #pragma once
 
-#include <vector>
-
 #include <Eigen/Core>
+#include <vector>
 
 #include "ui/gl/gl_objects.h"
 #include "ui/render/camera.h"

@@ -41,9 +41,12 @@ void MeshRenderer::upload(const Mesh& mesh) {
   std::vector<int> order(mesh.triangles.size());
   std::iota(order.begin(), order.end(), 0);
   auto materialOf = [&](int t) {
-    return t < static_cast<int>(mesh.triangleMaterials.size()) ? mesh.triangleMaterials[std::size_t(t)] : -1;
+    return t < static_cast<int>(mesh.triangleMaterials.size())
+               ? mesh.triangleMaterials[std::size_t(t)]
+               : -1;
   };
-  std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return materialOf(a) < materialOf(b); });
+  std::stable_sort(order.begin(), order.end(),
+                   [&](int a, int b) { return materialOf(a) < materialOf(b); });
   std::vector<unsigned> indices;
   indices.reserve(order.size() * 3);
   m_ranges.clear();
@@ -60,7 +63,8 @@ void MeshRenderer::upload(const Mesh& mesh) {
       }
       m_ranges.push_back(range);
     }
-    for (int k = 0; k < 3; ++k) indices.push_back(static_cast<unsigned>(mesh.triangles[std::size_t(t)][k]));
+    for (int k = 0; k < 3; ++k)
+      indices.push_back(static_cast<unsigned>(mesh.triangles[std::size_t(t)][k]));
     m_ranges.back().count += 3;
   }
 
@@ -69,17 +73,23 @@ void MeshRenderer::upload(const Mesh& mesh) {
   m_indices = makeBuffer();
   glBindVertexArray(m_vao.id());
   glBindBuffer(GL_ARRAY_BUFFER, m_vertices.id());
-  glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(vertices.size() * sizeof(Vertex)), vertices.data(), GL_STATIC_DRAW);
+  glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(vertices.size() * sizeof(Vertex)), vertices.data(),
+               GL_STATIC_DRAW);
   glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, m_indices.id());
-  glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(indices.size() * sizeof(unsigned)), indices.data(), GL_STATIC_DRAW);
+  glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(indices.size() * sizeof(unsigned)),
+               indices.data(), GL_STATIC_DRAW);
   glEnableVertexAttribArray(0);
-  glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(Vertex), reinterpret_cast<void*>(offsetof(Vertex, position)));
+  glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(Vertex),
+                        reinterpret_cast<void*>(offsetof(Vertex, position)));
   glEnableVertexAttribArray(1);
-  glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, sizeof(Vertex), reinterpret_cast<void*>(offsetof(Vertex, normal)));
+  glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, sizeof(Vertex),
+                        reinterpret_cast<void*>(offsetof(Vertex, normal)));
   glEnableVertexAttribArray(2);
-  glVertexAttribPointer(2, 3, GL_FLOAT, GL_FALSE, sizeof(Vertex), reinterpret_cast<void*>(offsetof(Vertex, color)));
+  glVertexAttribPointer(2, 3, GL_FLOAT, GL_FALSE, sizeof(Vertex),
+                        reinterpret_cast<void*>(offsetof(Vertex, color)));
   glEnableVertexAttribArray(3);
-  glVertexAttribPointer(3, 2, GL_FLOAT, GL_FALSE, sizeof(Vertex), reinterpret_cast<void*>(offsetof(Vertex, uv)));
+  glVertexAttribPointer(3, 2, GL_FLOAT, GL_FALSE, sizeof(Vertex),
+                        reinterpret_cast<void*>(offsetof(Vertex, uv)));
   glBindVertexArray(0);
   m_indexCount = static_cast<GLsizei>(indices.size());
 
@@ -120,7 +130,8 @@ void MeshRenderer::draw(const Camera& camera, bool wireframe) const {
       glActiveTexture(GL_TEXTURE0);
       glBindTexture(GL_TEXTURE_2D, m_textures[std::size_t(r.texture)].id());
     }
-    glDrawElements(GL_TRIANGLES, r.count, GL_UNSIGNED_INT, reinterpret_cast<void*>(std::size_t(r.first) * sizeof(unsigned)));
+    glDrawElements(GL_TRIANGLES, r.count, GL_UNSIGNED_INT,
+                   reinterpret_cast<void*>(std::size_t(r.first) * sizeof(unsigned)));
   }
   glDisable(GL_POLYGON_OFFSET_FILL);
   if (wireframe) {

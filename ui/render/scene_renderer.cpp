@@ -46,8 +46,9 @@ void SceneRenderer::sync(const AnnotationDocument* document, const std::optional
     m_typeMask = settings.field.typeMask;
   }
   m_field.prepare(settings.field);
-  const bool dragChanged = drag.has_value() != m_drag.has_value() ||
-                           (drag && (drag->index != m_drag->index || drag->position != m_drag->position));
+  const bool dragChanged =
+      drag.has_value() != m_drag.has_value() ||
+      (drag && (drag->index != m_drag->index || drag->position != m_drag->position));
   if (pointsChanged || dragChanged || settings.markerPixels != m_markerPixels) {
     m_markerInstances.clear();
     const auto& points = document->points();

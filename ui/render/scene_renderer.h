@@ -3,11 +3,10 @@
 // counters), never per frame.
 #pragma once
 
+#include <Eigen/Core>
 #include <cstdint>
 #include <optional>
 #include <vector>
-
-#include <Eigen/Core>
 
 #include "ui/render/camera.h"
 #include "ui/render/field_renderer.h"

@@ -16,9 +16,11 @@ namespace {
 std::string expandIncludes(std::string_view file) {
   std::string source(shaderSource(file));
   const std::string directive = "#include \"";
-  for (std::size_t at = source.find(directive); at != std::string::npos; at = source.find(directive, at)) {
+  for (std::size_t at = source.find(directive); at != std::string::npos;
+       at = source.find(directive, at)) {
     const std::size_t end = source.find('"', at + directive.size());
-    if (end == std::string::npos) throw Error("shader " + std::string(file) + ": unterminated #include");
+    if (end == std::string::npos)
+      throw Error("shader " + std::string(file) + ": unterminated #include");
     const std::string name = source.substr(at + directive.size(), end - at - directive.size());
     source.replace(at, end + 1 - at, std::string(shaderSource(name)));
   }
@@ -80,7 +82,8 @@ ShaderProgram::~ShaderProgram() {
   if (m_program) glDeleteProgram(m_program);
 }
 
-ShaderProgram::ShaderProgram(ShaderProgram&& o) noexcept : m_program(std::exchange(o.m_program, 0)) {}
+ShaderProgram::ShaderProgram(ShaderProgram&& o) noexcept
+    : m_program(std::exchange(o.m_program, 0)) {}
 
 ShaderProgram& ShaderProgram::operator=(ShaderProgram&& o) noexcept {
   if (this != &o) {
@@ -90,6 +93,8 @@ ShaderProgram& ShaderProgram::operator=(ShaderProgram&& o) noexcept {
   return *this;
 }
 
-GLint ShaderProgram::uniform(const char* name) const { return glGetUniformLocation(m_program, name); }
+GLint ShaderProgram::uniform(const char* name) const {
+  return glGetUniformLocation(m_program, name);
+}
 
 }  // namespace sagrid::ui

@@ -2,10 +2,9 @@
 // (looked up once at build time, so setting uniforms in the frame loop does no string work).
 #pragma once
 
+#include <Eigen/Core>
 #include <string>
 #include <string_view>
-
-#include <Eigen/Core>
 
 #include "ui/gl/gl.h"
 
@@ -31,9 +30,15 @@ class ShaderProgram {
   GLuint m_program = 0;
 };
 
-inline void setUniform(GLint loc, const Eigen::Matrix4f& m) { glUniformMatrix4fv(loc, 1, GL_FALSE, m.data()); }
-inline void setUniform(GLint loc, const Eigen::Vector3f& v) { glUniform3f(loc, v.x(), v.y(), v.z()); }
-inline void setUniform(GLint loc, const Eigen::Vector4f& v) { glUniform4f(loc, v.x(), v.y(), v.z(), v.w()); }
+inline void setUniform(GLint loc, const Eigen::Matrix4f& m) {
+  glUniformMatrix4fv(loc, 1, GL_FALSE, m.data());
+}
+inline void setUniform(GLint loc, const Eigen::Vector3f& v) {
+  glUniform3f(loc, v.x(), v.y(), v.z());
+}
+inline void setUniform(GLint loc, const Eigen::Vector4f& v) {
+  glUniform4f(loc, v.x(), v.y(), v.z(), v.w());
+}
 inline void setUniform(GLint loc, float f) { glUniform1f(loc, f); }
 inline void setUniform(GLint loc, int i) { glUniform1i(loc, i); }
 

@@ -2,10 +2,9 @@
 // types get fixed colours (heat = orange, fluid = blue, toggle = green), others a stable hash.
 #pragma once
 
+#include <Eigen/Core>
 #include <string>
 #include <vector>
-
-#include <Eigen/Core>
 
 namespace sagrid::ui {
 

@@ -8,11 +8,11 @@ namespace sagrid::ui {
 
 struct FieldSettings {
   bool visible = true;
-  float threshold = 0.0f;      // show voxels closer than this (mesh units); 0 = not yet set
-  float colorMax = 0.0f;       // distance mapped to the far end of the colour map; 0 = auto
+  float threshold = 0.0f;  // show voxels closer than this (mesh units); 0 = not yet set
+  float colorMax = 0.0f;   // distance mapped to the far end of the colour map; 0 = auto
   float opacity = 1.0f;
-  int sliceAxis = -1;          // -1 none, 0/1/2 = x/y/z
-  float slice = 1.0f;          // slice plane position as a fraction of the object's extent
+  int sliceAxis = -1;            // -1 none, 0/1/2 = x/y/z
+  float slice = 1.0f;            // slice plane position as a fraction of the object's extent
   std::uint32_t typeMask = ~0u;  // bit per field index
 };
 
@@ -24,7 +24,7 @@ struct ViewSettings {
   bool showPoints = true;
   bool showPointLabels = true;
   bool showPanels = true;
-  float markerPixels = 9.0f;   // marker radius on screen
+  float markerPixels = 9.0f;  // marker radius on screen
   FieldSettings field;
 };
 

@@ -3,9 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
-#include <regex>
-
 #include <nlohmann/json.hpp>
+#include <regex>
 
 #include "core/common/atomic_file.h"
 #include "core/common/error.h"
@@ -22,7 +21,8 @@ namespace fs = std::filesystem;
 
 fs::path writeObject(const fs::path& dir, const std::string& up = "z", double metersPerUnit = 1.0) {
   fs::create_directories(dir);
-  std::ofstream(dir / "mesh.obj") << "mtllib mesh.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl red\nf 1 2 3\n";
+  std::ofstream(dir / "mesh.obj")
+      << "mtllib mesh.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl red\nf 1 2 3\n";
   std::ofstream(dir / "mesh.mtl") << "newmtl red\nKd 1 0 0\nmap_Kd tex.png\n";
   std::ofstream(dir / "tex.png") << "not really a png";
   ObjectLabels labels;
@@ -47,7 +47,8 @@ fs::path writeObject(const fs::path& dir, const std::string& up = "z", double me
 TEST(OmniGibsonExport, MetaLinksNamedAndPlaced) {
   const auto dir = test::freshTempDir();
   const auto labelsPath = writeObject(dir / "in");
-  const auto result = exportOmniGibson(readLabels(labelsPath), dir / "in" / "mesh.obj", dir / "out");
+  const auto result =
+      exportOmniGibson(readLabels(labelsPath), dir / "in" / "mesh.obj", dir / "out");
   EXPECT_EQ(result.root, dir / "out" / "mystove01");  // ids lose their underscores
   const std::string urdf = readFileBytes(result.mainFile);
   EXPECT_NE(urdf.find("name=\"meta__base_link_heatsource_0_0_link\""), std::string::npos);
@@ -71,7 +72,8 @@ TEST(OmniGibsonExport, MetaLinksNamedAndPlaced) {
 TEST(OmniGibsonExport, YUpCentimetreFileBecomesZUpMetres) {
   const auto dir = test::freshTempDir();
   const auto labelsPath = writeObject(dir / "in", "y", 0.01);
-  const auto result = exportOmniGibson(readLabels(labelsPath), dir / "in" / "mesh.obj", dir / "out");
+  const auto result =
+      exportOmniGibson(readLabels(labelsPath), dir / "in" / "mesh.obj", dir / "out");
   const auto meta = nlohmann::json::parse(readFileBytes(result.root / "misc" / "metadata.json"));
   const auto p = meta["meta_links"]["base_link"]["heatsource"]["0"][0]["position"];
   // (1, 2, 3) y-up cm -> (1, -3, 2) z-up -> metres.
@@ -86,8 +88,10 @@ TEST(MjcfExport, SitesNamedByTypeAndIndex) {
   const auto labelsPath = writeObject(dir / "in");
   const auto result = exportMjcf(readLabels(labelsPath), dir / "in" / "mesh.obj", dir / "out");
   const std::string xml = readFileBytes(result.mainFile);
-  EXPECT_NE(xml.find("<site name=\"heatsource_0\" type=\"sphere\" pos=\"1 2 3\""), std::string::npos);
-  EXPECT_NE(xml.find("<site name=\"heatsource_1\" type=\"sphere\" pos=\"4 5 6\""), std::string::npos);
+  EXPECT_NE(xml.find("<site name=\"heatsource_0\" type=\"sphere\" pos=\"1 2 3\""),
+            std::string::npos);
+  EXPECT_NE(xml.find("<site name=\"heatsource_1\" type=\"sphere\" pos=\"4 5 6\""),
+            std::string::npos);
   EXPECT_NE(xml.find("<site name=\"togglebutton_0\""), std::string::npos);
   EXPECT_NE(xml.find("file=\"mesh.obj\""), std::string::npos);
   EXPECT_TRUE(result.warnings.empty());
@@ -106,12 +110,14 @@ TEST(ExportObjects, FolderOfObjectsAndBadFormat) {
 TEST(ExportCli, WritesOneFilePerObject) {
   const auto dir = test::freshTempDir();
   writeObject(dir / "obj");
-  const auto r = test::runSagrid("export " + test::shellQuote((dir / "obj" / "labels.json").string()) +
-                                 " --format omnigibson --out " + test::shellQuote((dir / "out").string()));
+  const auto r =
+      test::runSagrid("export " + test::shellQuote((dir / "obj" / "labels.json").string()) +
+                      " --format omnigibson --out " + test::shellQuote((dir / "out").string()));
   ASSERT_EQ(r.exitCode, 0) << r.output;
   EXPECT_TRUE(fs::exists(dir / "out" / "mystove01" / "urdf" / "mystove01.urdf"));
-  const auto bad = test::runSagrid("export " + test::shellQuote((dir / "nothing").string()) +
-                                   " --format mjcf --out " + test::shellQuote((dir / "out").string()));
+  const auto bad =
+      test::runSagrid("export " + test::shellQuote((dir / "nothing").string()) +
+                      " --format mjcf --out " + test::shellQuote((dir / "out").string()));
   EXPECT_EQ(bad.exitCode, 1);
   EXPECT_NE(bad.output.find("sagrid: error:"), std::string::npos);
 }
@@ -128,7 +134,8 @@ TEST(TrainingSet, CopiesWithProvenanceAndReplacesManifestLine) {
   EXPECT_EQ(copied.affordances.size(), 3u);
   EXPECT_EQ(copied.object.mesh, "mesh.obj");
   ASSERT_TRUE(copied.extra.contains("provenance"));
-  EXPECT_NE(copied.extra["provenance"]["mesh"].get<std::string>().find("in/mesh.obj"), std::string::npos);
+  EXPECT_NE(copied.extra["provenance"]["mesh"].get<std::string>().find("in/mesh.obj"),
+            std::string::npos);
   addToTrainingSet(labels, dir / "in" / "mesh.obj", labelsPath, dir / "set");  // again: replaced
   const std::string manifest = readFileBytes(dir / "set" / "manifest.jsonl");
   EXPECT_EQ(std::count(manifest.begin(), manifest.end(), '\n'), 1);
@@ -144,7 +151,8 @@ TEST(TrainingSet, RefusesObjectsWithoutCategory) {
   const auto labelsPath = writeObject(dir / "in");
   ObjectLabels labels = readLabels(labelsPath);
   labels.object.category.clear();
-  EXPECT_THROW(addToTrainingSet(labels, dir / "in" / "mesh.obj", labelsPath, dir / "set"), InvalidArgument);
+  EXPECT_THROW(addToTrainingSet(labels, dir / "in" / "mesh.obj", labelsPath, dir / "set"),
+               InvalidArgument);
   EXPECT_FALSE(fs::exists(dir / "set" / "manifest.jsonl"));
 }
 

@@ -3,8 +3,8 @@
 #include <gtest/gtest.h>
 
 #include "support/test_paths.h"
-#include "ui/app/shortcuts.h"
 #include "tests/ui/app/scripted_scene.h"
+#include "ui/app/shortcuts.h"
 
 namespace sagrid::ui {
 namespace {

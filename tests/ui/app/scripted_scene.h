@@ -23,7 +23,8 @@ inline void writeSceneObj(const std::filesystem::path& path) {
   // Block x in [0.1, 0.4], y in [-0.4, -0.1], z in [0, 0.2]: its top is at z = 0.2.
   obj << "v 0.1 -0.4 0.2\nv 0.4 -0.4 0.2\nv 0.4 -0.1 0.2\nv 0.1 -0.1 0.2\n"
          "v 0.1 -0.4 0\nv 0.4 -0.4 0\nv 0.4 -0.1 0\nv 0.1 -0.1 0\n"
-         "f 5 6 7\nf 5 7 8\nf 9 10 6\nf 9 6 5\nf 10 11 7\nf 10 7 6\nf 11 12 8\nf 11 8 7\nf 12 9 5\nf 12 5 8\n";
+         "f 5 6 7\nf 5 7 8\nf 9 10 6\nf 9 6 5\nf 10 11 7\nf 10 7 6\nf 11 12 8\nf 11 8 7\nf 12 9 "
+         "5\nf 12 5 8\n";
 }
 
 inline void writeSceneLabels(const std::filesystem::path& path) {
@@ -74,7 +75,9 @@ class ScriptedApp {
   void frame(std::vector<InputEvent> events) { app->frame(events); }
   void moveTo(const Eigen::Vector2f& p) { frame({InputEvent::mouseMove(p.x(), p.y())}); }
   void press(int mods = 0) { frame({InputEvent::mouseButton(GLFW_MOUSE_BUTTON_LEFT, true, mods)}); }
-  void release(int mods = 0) { frame({InputEvent::mouseButton(GLFW_MOUSE_BUTTON_LEFT, false, mods)}); }
+  void release(int mods = 0) {
+    frame({InputEvent::mouseButton(GLFW_MOUSE_BUTTON_LEFT, false, mods)});
+  }
   void click(const Eigen::Vector2f& p, int mods = 0) {
     moveTo(p);
     press(mods);

@@ -39,7 +39,8 @@ ObjectLabels twoPoints() {
 
 TEST(DocumentCommands, MoveUndoRedoRestoresPositionAndStatus) {
   AnnotationDocument doc(plate(), twoPoints(), {});
-  doc.execute(std::make_unique<MovePointCommand>(0, Eigen::Vector3f(0.4f, -0.1f, 0.0f), std::nullopt));
+  doc.execute(
+      std::make_unique<MovePointCommand>(0, Eigen::Vector3f(0.4f, -0.1f, 0.0f), std::nullopt));
   EXPECT_TRUE(doc.points()[0].position.isApprox(Eigen::Vector3f(0.4f, -0.1f, 0.0f)));
   EXPECT_EQ(doc.points()[0].status, AffordanceStatus::Edited);
   EXPECT_EQ(doc.points()[0].source, "human");
@@ -101,7 +102,8 @@ TEST(DocumentCommands, EveryChangeIsAutosaved) {
   const auto dir = test::freshTempDir();
   const auto path = dir / "labels.json";
   AnnotationDocument doc(plate(), twoPoints(), path);
-  doc.execute(std::make_unique<MovePointCommand>(1, Eigen::Vector3f(0.3f, 0.3f, 0.0f), std::nullopt));
+  doc.execute(
+      std::make_unique<MovePointCommand>(1, Eigen::Vector3f(0.3f, 0.3f, 0.0f), std::nullopt));
   ObjectLabels saved = readLabels(path);
   ASSERT_EQ(saved.affordances.size(), 2u);
   EXPECT_NEAR(saved.affordances[1].position.x(), 0.3f, 1e-6f);

@@ -1,11 +1,12 @@
 // The review queue over a folder: finds objects in the dataset layout and loose meshes, keeps
 // states and position in DIR/.sagrid-review.json, and resumes from it.
+#include "ui/document/review_queue.h"
+
 #include <gtest/gtest.h>
 
 #include <fstream>
 
 #include "support/test_paths.h"
-#include "ui/document/review_queue.h"
 
 namespace sagrid::ui {
 namespace {
@@ -28,7 +29,8 @@ TEST(ReviewQueue, FindsObjectFoldersAndLooseMeshesSorted) {
   ASSERT_EQ(queue.size(), 4u);
   EXPECT_EQ(queue.entry(0).mesh.filename(), "mesh.glb");
   EXPECT_EQ(queue.entry(0).labels, fs::absolute(dir / "a" / "labels.json").lexically_normal());
-  EXPECT_EQ(queue.entry(2).labels.filename(), "loose1.labels.json");  // two meshes share that folder
+  EXPECT_EQ(queue.entry(2).labels.filename(),
+            "loose1.labels.json");  // two meshes share that folder
   EXPECT_EQ(queue.reviewedCount(), 0u);
 }
 

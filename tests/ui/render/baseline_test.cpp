@@ -14,7 +14,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr int kTolerance = 12;              // per channel, 0..255 (rasterizer/driver noise)
+constexpr int kTolerance = 12;  // per channel, 0..255 (rasterizer/driver noise)
 constexpr double kMaxDifferingShare = 0.01;
 
 fs::path baselineDir() { return fs::path(SAGRID_TEST_DATA_DIR) / "baselines"; }
@@ -44,7 +44,8 @@ void expectMatchesBaseline(const std::string& name, const RgbaImage& actual) {
   }
   EXPECT_TRUE(ok) << name << ": " << (d.sameSize ? "" : "size differs; ") << d.differingPixels
                   << " pixels differ by more than " << kTolerance << " (share " << d.differingShare
-                  << ", allowed " << kMaxDifferingShare << "); see " << actualPath << " and " << diffPath;
+                  << ", allowed " << kMaxDifferingShare << "); see " << actualPath << " and "
+                  << diffPath;
 }
 
 TEST(RenderBaseline, SceneWithFieldAndPoints) {

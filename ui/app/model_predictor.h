@@ -1,0 +1,37 @@
+// Runs SAGrid for the GUI: the model cards in a folder (resources/models by default, loaded on
+// first use) predict points and distance fields for the open object on the prediction worker.
+// Objects whose category has no model get no job: they open normally and points are placed by
+// hand. An unknown category is retrieved from the object's descriptor (core/annotate).
+#pragma once
+
+#include <filesystem>
+#include <memory>
+#include <optional>
+
+#include "ui/app/prediction_worker.h"
+
+namespace sagrid {
+class ModelSet;
+}
+
+namespace sagrid::ui {
+
+class AnnotationDocument;
+
+class ModelPredictor {
+ public:
+  explicit ModelPredictor(std::filesystem::path modelsDir);
+  static std::filesystem::path defaultModelsDir();
+  std::optional<PredictionJob> jobFor(const AnnotationDocument& document);
+  // Drops the loaded models so the next job reads the folder again (after training).
+  void reload() { m_models.reset(), m_loadFailed = false; }
+  const std::filesystem::path& modelsDir() const { return m_modelsDir; }
+  void setModelsDir(std::filesystem::path dir) { m_modelsDir = std::move(dir), reload(); }
+
+ private:
+  std::filesystem::path m_modelsDir;
+  std::shared_ptr<const ModelSet> m_models;
+  bool m_loadFailed = false;
+};
+
+}  // namespace sagrid::ui

@@ -1,0 +1,172 @@
+#include "ui/app/training_worker.h"
+
+#include <algorithm>
+#include <nlohmann/json.hpp>
+#include <set>
+#include <sstream>
+
+#include "core/annotate/annotate.h"
+#include "core/annotate/model_set.h"
+#include "core/common/atomic_file.h"
+#include "core/common/error.h"
+#include "core/common/log.h"
+#include "core/labels/labels.h"
+#include "core/training/dataset_training.h"
+
+namespace sagrid::ui {
+
+namespace fs = std::filesystem;
+
+std::vector<std::string> trainingTypes(const fs::path& dataset, const std::string& category) {
+  std::set<std::string> types;
+  std::istringstream manifest(readFileBytes(dataset / "manifest.jsonl"));
+  std::string line;
+  while (std::getline(manifest, line)) {
+    if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
+    const auto entry = nlohmann::json::parse(line, nullptr, false);
+    if (entry.is_discarded()) throw FileError(dataset / "manifest.jsonl", "a line is not JSON");
+    if (entry.value("category", "") != category) continue;
+    const ObjectLabels labels = readLabels(dataset / entry.value("labels", ""));
+    for (const auto& p : labels.affordances) types.insert(p.type);
+  }
+  return {types.begin(), types.end()};
+}
+
+TrainingWorker::~TrainingWorker() {
+  m_cancel = true;
+  if (m_thread.joinable()) m_thread.join();
+}
+
+void TrainingWorker::start(TrainingRequest request) {
+  m_cancel = true;
+  if (m_thread.joinable()) m_thread.join();
+  m_cancel = false;
+  {
+    std::lock_guard<std::mutex> lock(m_mutex);
+    m_status = TrainingStatus{};
+    m_status.running = true;
+    m_status.phase = "starting";
+  }
+  m_running = true;
+  m_thread =
+      std::thread([this, request = std::move(request)]() mutable { run(std::move(request)); });
+}
+
+TrainingStatus TrainingWorker::status() const {
+  std::lock_guard<std::mutex> lock(m_mutex);
+  return m_status;
+}
+
+bool TrainingWorker::takeFinished() {
+  std::lock_guard<std::mutex> lock(m_mutex);
+  return std::exchange(m_finishedFlag, false);
+}
+
+void TrainingWorker::update(const std::function<void(TrainingStatus&)>& change) {
+  std::lock_guard<std::mutex> lock(m_mutex);
+  change(m_status);
+}
+
+void TrainingWorker::run(TrainingRequest request) {
+  try {
+    const auto types = trainingTypes(request.dataset, request.category);
+    if (types.empty()) {
+      throw InvalidArgument("the training set " + request.dataset.string() + " has no " +
+                            request.category + " object with points; add some first");
+    }
+    const double steps = double(types.size()) + 1.0;  // models, then the queue
+    for (std::size_t t = 0; t < types.size(); ++t) {
+      DatasetTrainingOptions options;
+      options.dataDir = request.dataset;
+      options.modelName = request.category + "." + types[t];
+      options.outDir = request.outDir;
+      options.command = "sagrid gui (Train panel)";
+      options.training.minutes = request.minutesPerModel;
+      options.training.epochs = request.epochs;
+      options.training.cancel = &m_cancel;
+      options.training.onProgress = [&](const model::TrainingProgress& p) {
+        update([&](TrainingStatus& s) {
+          s.phase = "training " + options.modelName + ", epoch " + std::to_string(p.epoch) + "/" +
+                    std::to_string(p.epochs);
+          s.losses.push_back(float(p.loss));
+          const double within = p.epochs > 0 ? double(p.epoch) / p.epochs : 0.0;
+          s.fraction = float((double(t) + within) / steps);
+        });
+      };
+      options.onFeatureProgress = [&](std::size_t done, std::size_t total, const std::string& id) {
+        update([&](TrainingStatus& s) {
+          s.phase = "features " + std::to_string(done) + "/" + std::to_string(total) + " " + id;
+        });
+      };
+      update([&](TrainingStatus& s) { s.losses.clear(); });
+      const auto result = trainFromDataset(options);
+      logger()->info("trained {} on {} objects ({:.0f} s)", result.card.name, result.objectsUsed,
+                     result.trainingSeconds);
+    }
+
+    // Predict the queue again with the new models; reviewed objects keep what the curator decided.
+    const ModelSet models = ModelSet::load(request.outDir);
+    std::size_t objects = 0, moved = 0, compared = 0;
+    for (std::size_t i = 0; i < request.requeue.size(); ++i) {
+      if (m_cancel) throw Cancelled();
+      const QueueEntry& entry = request.requeue[i];
+      update([&](TrainingStatus& s) {
+        s.phase = "predicting " + entry.mesh.parent_path().filename().string();
+        s.fraction =
+            float((double(types.size()) + double(i) / double(request.requeue.size())) / steps);
+      });
+      if (entry.state != QueueState::Unreviewed) continue;
+      ObjectLabels before;
+      std::error_code ec;
+      if (fs::exists(entry.labels, ec)) before = readLabels(entry.labels);
+      if (!before.object.category.empty() && before.object.category != request.category) continue;
+      AnnotateOptions options;
+      options.category = request.category;
+      options.features = models.featureOptions();
+      AnnotationResult r = annotateMeshFile(
+          entry.mesh, before.object.id.empty() ? entry.mesh.stem().string() : before.object.id,
+          models, options, entry.labels.parent_path());
+      // A point "moved" when no new prediction of its type lies within 2% of the object's size.
+      const float tolerance = 0.02f * [&] {
+        Eigen::AlignedBox3f box;
+        for (const auto& p : r.labels.affordances) box.extend(p.position);
+        for (const auto& p : before.affordances) box.extend(p.position);
+        return box.isEmpty() ? 1.0f : std::max(box.diagonal().norm(), 1e-6f);
+      }();
+      for (const auto& old : before.affordances) {
+        if (old.status != AffordanceStatus::Predicted) continue;
+        ++compared;
+        bool stayed = false;
+        for (const auto& now : r.labels.affordances)
+          stayed |= now.type == old.type && (now.position - old.position).norm() <= tolerance;
+        if (!stayed) ++moved;
+      }
+      ObjectLabels updated = before.object.id.empty() ? r.labels : before;
+      updated.affordances = r.labels.affordances;
+      if (updated.object.category.empty()) updated.object.category = request.category;
+      writeLabels(entry.labels, updated);
+      ++objects;
+    }
+    update([&](TrainingStatus& s) {
+      s.fraction = 1.0f;
+      s.phase = "done";
+      s.finished = std::to_string(types.size()) + " model(s) trained; " + std::to_string(objects) +
+                   " unreviewed object(s) predicted again: " + std::to_string(moved) + " of " +
+                   std::to_string(compared) + " predicted points moved";
+    });
+    logger()->info("training loop: {} of {} predicted points moved", moved, compared);
+    std::lock_guard<std::mutex> lock(m_mutex);
+    m_finishedFlag = true;
+  } catch (const Cancelled&) {
+    update([](TrainingStatus& s) { s.phase = "cancelled"; });
+  } catch (const std::exception& e) {
+    update([&](TrainingStatus& s) {
+      s.error = e.what();
+      s.phase = "failed";
+    });
+  }
+  update([](TrainingStatus& s) { s.running = false; });
+  m_running = false;
+}
+
+}  // namespace sagrid::ui

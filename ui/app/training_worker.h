@@ -1,0 +1,65 @@
+// Close the loop: retrains the models of one category on the training set the curator fills
+// ("Add to training set"), in the background with progress, a live loss curve and cancel; then
+// re-runs the new models on the review queue's unreviewed objects and counts how many predicted
+// points moved. Reviewed objects are never touched.
+#pragma once
+
+#include <atomic>
+#include <filesystem>
+#include <functional>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "ui/document/review_queue.h"
+
+namespace sagrid::ui {
+
+struct TrainingRequest {
+  std::filesystem::path dataset;  // dataset layout with manifest.jsonl
+  std::string category;
+  std::filesystem::path outDir;  // models written here (<category>.<type>.json)
+  double minutesPerModel = 1.0;
+  int epochs = 0;                   // > 0: fixed epoch count instead of the time budget
+  std::vector<QueueEntry> requeue;  // objects to predict again afterwards
+};
+
+struct TrainingStatus {
+  bool running = false;
+  std::string phase;          // "features", "training stove.heatsource", "predicting", ...
+  float fraction = 0;         // of the whole request
+  std::vector<float> losses;  // per step report of the model being trained
+  std::string finished;       // summary once done
+  std::string error;
+};
+
+// Affordance types the dataset holds for `category` (from its labels), sorted; throws FileError
+// for an unreadable manifest.
+std::vector<std::string> trainingTypes(const std::filesystem::path& dataset,
+                                       const std::string& category);
+
+class TrainingWorker {
+ public:
+  ~TrainingWorker();
+  void start(TrainingRequest request);
+  void cancel() { m_cancel = true; }
+  bool running() const { return m_running.load(); }
+  TrainingStatus status() const;  // a copy, for the panel
+  // True once after a run finished successfully (the caller then reloads its models).
+  bool takeFinished();
+
+ private:
+  void run(TrainingRequest request);
+  void update(const std::function<void(TrainingStatus&)>& change);
+
+  std::thread m_thread;
+  std::atomic<bool> m_running{false};
+  std::atomic<bool> m_cancel{false};
+  mutable std::mutex m_mutex;
+  TrainingStatus m_status;
+  bool m_finishedFlag = false;
+};
+
+}  // namespace sagrid::ui

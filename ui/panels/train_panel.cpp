@@ -1,0 +1,50 @@
+#include <imgui.h>
+
+#include <cfloat>
+
+#include "ui/app/session.h"
+#include "ui/app/training_worker.h"
+#include "ui/panels/panels.h"
+
+namespace sagrid::ui {
+
+void drawTrainPanel(Session& session, TrainingWorker& worker,
+                    const std::filesystem::path& modelsOut) {
+  if (!ImGui::CollapsingHeader("Train")) return;
+  static float minutes = 1.0f;  // UI preference only, not document state
+  const AnnotationDocument* doc = session.document();
+  const std::string category = doc ? doc->labels().object.category : std::string();
+  ImGui::TextWrapped("Training set: %s", session.trainingSetDir.string().c_str());
+  const TrainingStatus status = worker.status();
+  if (!status.running) {
+    ImGui::SetNextItemWidth(-110);
+    ImGui::SliderFloat("min / model", &minutes, 0.2f, 10.0f, "%.1f");
+    ImGui::BeginDisabled(category.empty());
+    const std::string label =
+        category.empty() ? "Train (set a category)" : "Train " + category + " models";
+    if (ImGui::Button(label.c_str(), ImVec2(-1, 0))) {
+      TrainingRequest request;
+      request.dataset = session.trainingSetDir;
+      request.category = category;
+      request.outDir = modelsOut;
+      request.minutesPerModel = minutes;
+      request.requeue = session.queue().entries();
+      worker.start(std::move(request));
+    }
+    ImGui::EndDisabled();
+  } else {
+    ImGui::ProgressBar(status.fraction, ImVec2(-70, 0));
+    ImGui::SameLine();
+    if (ImGui::Button("Cancel##train")) worker.cancel();
+  }
+  if (!status.phase.empty()) ImGui::TextDisabled("%s", status.phase.c_str());
+  if (!status.losses.empty()) {
+    ImGui::PlotLines("##loss", status.losses.data(), int(status.losses.size()), 0, "loss (L1 on D)",
+                     0.0f, FLT_MAX, ImVec2(-1, 70));
+  }
+  if (!status.finished.empty()) ImGui::TextWrapped("%s", status.finished.c_str());
+  if (!status.error.empty())
+    ImGui::TextColored(ImVec4(1, 0.45f, 0.45f, 1), "%s", status.error.c_str());
+}
+
+}  // namespace sagrid::ui
