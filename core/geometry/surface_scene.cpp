@@ -91,7 +91,9 @@ SurfaceScene::SurfaceScene(const Mesh& mesh) : m_impl(std::make_unique<Impl>()) 
   }
   RTCDevice device = sharedDevice();
   m_impl->scene = rtcNewScene(device);
-  rtcSetSceneBuildQuality(m_impl->scene, RTC_BUILD_QUALITY_HIGH);
+  // Medium quality: no spatial splits (Debian's Embree 3.13 asserted once in the spatial-split
+  // builder, heuristic_spatial_array.h:423, when scenes were built in a loop) and a faster build.
+  rtcSetSceneBuildQuality(m_impl->scene, RTC_BUILD_QUALITY_MEDIUM);
   if (!mesh.triangles.empty()) {
     RTCGeometry geometry = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
     // Embree reads vertices with 16-byte loads, so the buffer it allocates is padded for that.
