@@ -55,7 +55,7 @@ void setupRender(CLI::App& root) {
                           "exactly as the GUI window draws it; headless with --backend egl");
   struct Options {
     sagrid::ui::RenderOptions render;
-    std::string mesh, labels, screenshot, backend = "egl", size = "1280x800", fieldType;
+    std::string mesh, labels, screenshot, backend = "egl", size = "1280x800", fieldType, models;
     float yaw = 0, pitch = 0;
   };
   auto o = std::make_shared<Options>();
@@ -70,6 +70,8 @@ void setupRender(CLI::App& root) {
   cmd->add_flag(
       "--no-panels", [o](std::int64_t) { o->render.showPanels = false; }, "Draw only the 3D view");
   cmd->add_flag("--wireframe", o->render.wireframe, "Wireframe overlay");
+  cmd->add_option("--models", o->models,
+                  "Run SAGrid with the models in this folder first (predicted points and field)");
   auto* yaw = cmd->add_option("--yaw", o->yaw, "Camera azimuth in degrees about +z");
   auto* pitch = cmd->add_option("--pitch", o->pitch, "Camera elevation in degrees");
   cmd->callback([o, yaw, pitch] {
@@ -79,6 +81,7 @@ void setupRender(CLI::App& root) {
     r.screenshot = o->screenshot;
     r.backend = sagrid::ui::parseGlBackend(o->backend);
     r.fieldType = o->fieldType;
+    r.modelsDir = o->models;
     if (!o->fieldType.empty()) r.showField = true;
     sagrid::ui::parseSize(o->size, r.width, r.height);
     if (yaw->count()) r.yawDegrees = o->yaw;

@@ -1,6 +1,8 @@
 #include "ui/app/headless_render.h"
 
+#include <chrono>
 #include <cmath>
+#include <thread>
 
 #include "core/common/error.h"
 #include "ui/app/app.h"
@@ -30,11 +32,19 @@ void renderScreenshot(const RenderOptions& options) {
   auto context = createGlContext(options.backend, contextOptions);
   AppOptions appOptions;
   appOptions.autoPredict = false;
+  appOptions.modelsDir = options.modelsDir;
   App app(*context, appOptions);
   Session& session = app.session();
+  session.readOnly = true;  // a render never changes the object's labels.json
   session.openObject(options.mesh,
                      options.labels.empty() ? labelsPathFor(options.mesh) : options.labels);
   if (!session.pendingErrors().empty()) throw Error(session.pendingErrors().front());
+  if (!options.modelsDir.empty()) {
+    session.runPrediction();
+    while (session.worker().running()) std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    app.frame({});  // applies the prediction
+    if (!session.pendingErrors().empty()) throw Error(session.pendingErrors().front());
+  }
   ViewSettings& view = session.view();
   view.field.visible = options.showField;
   view.showPanels = options.showPanels;

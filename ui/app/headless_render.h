@@ -17,7 +17,8 @@ struct RenderOptions {
   GlBackend backend = GlBackend::Egl;
   int width = 1280, height = 800;
   bool showField = false;
-  std::string fieldType;  // show only this type's field (empty = all)
+  std::filesystem::path modelsDir;  // run SAGrid with these models first (empty = no prediction)
+  std::string fieldType;            // show only this type's field (empty = all)
   bool showPanels = true;
   bool wireframe = false;
   std::optional<float> yawDegrees, pitchDegrees;

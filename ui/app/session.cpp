@@ -73,6 +73,7 @@ void Session::openEntry(int index) {
   m_document.reset();
   try {
     m_document = openDocument(entry.mesh, entry.labels);
+    m_document->setAutosave(!readOnly);
     m_queue.setError(i, "");
   } catch (const Error& e) {
     // The queue goes on: the entry shows its error, the curator moves to the next one.

@@ -91,6 +91,7 @@ class Session {
   bool showFileBrowser = false;
   bool screenshotRequested = false;  // F12: the app saves the next frame to a PNG
   std::filesystem::path trainingSetDir;
+  bool readOnly = false;  // documents never write labels.json (previews, sagrid render)
 
   void reportError(const std::string& message);
   const std::vector<std::string>& pendingErrors() const { return m_errors; }

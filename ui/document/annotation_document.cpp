@@ -44,6 +44,15 @@ Eigen::Vector3f AnnotationDocument::toFile(const Eigen::Vector3f& viewPoint) con
   return zUpToFile(viewPoint, m_mesh->fileUp);
 }
 
+bool AnnotationDocument::unitsKnown() const {
+  const auto& object = m_labels.object.extra;
+  const bool inObject =
+      object.is_object() && (object.contains("meters_per_unit") || object.contains("units"));
+  const bool topLevel =
+      m_labels.extra.is_object() && m_labels.extra.contains("units");  // real-dev form
+  return inObject || topLevel;
+}
+
 void AnnotationDocument::execute(std::unique_ptr<Command> command) {
   const bool removes = dynamic_cast<DeletePointCommand*>(command.get()) != nullptr;
   const std::string what = command->description();
@@ -102,7 +111,7 @@ void AnnotationDocument::adoptPredictedPoints(std::vector<AffordancePoint> point
 }
 
 void AnnotationDocument::save() const {
-  if (m_labelsPath.empty()) return;
+  if (m_labelsPath.empty() || !m_autosave) return;
   writeLabels(m_labelsPath, m_labels);
 }
 

@@ -45,6 +45,9 @@ class AnnotationDocument {
     return toView(points()[std::size_t(index)].position);
   }
   float metersPerUnit() const { return m_metersPerUnit; }
+  // Whether the labels say what the mesh unit is; if not, lengths are shown in "units", not "m".
+  bool unitsKnown() const;
+  const char* lengthUnit() const { return unitsKnown() ? "m" : "units"; }
 
   // Editing (autosaves; throws sagrid::Error if the save fails — the edit itself stays applied).
   void execute(std::unique_ptr<Command> command);
@@ -64,7 +67,9 @@ class AnnotationDocument {
   // edit, not undoable); saved at once.
   void adoptPredictedPoints(std::vector<AffordancePoint> points);
 
-  void save() const;  // atomic; no-op without a labels path
+  void save() const;  // atomic; no-op without a labels path or with autosave off
+  // Off for previews (sagrid render): edits and predictions stay in memory.
+  void setAutosave(bool enabled) { m_autosave = enabled; }
 
   int selected() const { return m_selected; }
   void select(int index);  // -1 = none; out-of-range indices clear the selection
@@ -101,6 +106,7 @@ class AnnotationDocument {
   int m_selected = -1;
   std::uint64_t m_revision = 1;
   float m_metersPerUnit = 1.0f;
+  bool m_autosave = true;
 
   Normalization m_normalization;
   int m_resolution = kDefaultGridResolution;

@@ -19,15 +19,17 @@ void drawFieldPanel(Session& session, const SceneRenderer& scene) {
   ImGui::TextDisabled(scene.showingPredictedFields() ? "predicted" : "of the labelled points");
   if (!doc) return;
   const float mpu = doc->metersPerUnit();
+  char format[16];
+  std::snprintf(format, sizeof format, "%%.3f %s", doc->lengthUnit());
   const float largest = std::max(scene.field().largestDistance(), 1e-6f);
   // Sliders work in metres (what the curator thinks in); the renderer gets mesh units.
   float thresholdM = (f.threshold > 0 ? f.threshold : largest) * mpu;
   ImGui::SetNextItemWidth(-90);
-  if (ImGui::SliderFloat("closer than", &thresholdM, 0.0f, largest * mpu, "%.3f m"))
+  if (ImGui::SliderFloat("closer than", &thresholdM, 0.0f, largest * mpu, format))
     f.threshold = thresholdM / mpu;
   float colorM = (f.colorMax > 0 ? f.colorMax : largest) * mpu;
   ImGui::SetNextItemWidth(-90);
-  if (ImGui::SliderFloat("colour max", &colorM, 1e-4f, largest * mpu, "%.3f m"))
+  if (ImGui::SliderFloat("colour max", &colorM, 1e-4f, largest * mpu, format))
     f.colorMax = colorM / mpu;
   ImGui::SetNextItemWidth(-90);
   ImGui::SliderFloat("opacity", &f.opacity, 0.05f, 1.0f, "%.2f");

@@ -14,7 +14,8 @@ void drawObjectPanel(Session& session) {
   ImGui::TextDisabled("%zu vertices, %zu triangles, up %s", doc->mesh().vertexCount(),
                       doc->mesh().triangleCount(), doc->labels().object.up.c_str());
   const auto size = doc->mesh().bounds().sizes() * doc->metersPerUnit();
-  ImGui::TextDisabled("size %.3f x %.3f x %.3f m", size.x(), size.y(), size.z());
+  ImGui::TextDisabled("size %.3f x %.3f x %.3f %s", size.x(), size.y(), size.z(),
+                      doc->lengthUnit());
   // Category: retrieval/prediction fills it; the curator can override (training is per category).
   static const char* kCategories[] = {"stove", "sink", "microwave", "oven", "lamp", "other"};
   const std::string& category = doc->labels().object.category;

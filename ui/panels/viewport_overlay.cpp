@@ -69,8 +69,10 @@ void legend(const Session& session, const SceneRenderer& scene, ImDrawList* draw
   const ImVec2 at(vp.x + vp.width - w - 24, vp.y + vp.height - 52);
   draw->AddRectFilled(ImVec2(at.x - 10, at.y - 24), ImVec2(at.x + w + 10, at.y + h + 22),
                       IM_COL32(20, 22, 26, 190), 5.0f);
-  draw->AddText(ImVec2(at.x, at.y - 20), IM_COL32(220, 224, 230, 255),
-                "distance to nearest point (m)");
+  char title[64];
+  std::snprintf(title, sizeof title, "distance to nearest point (%s)",
+                session.document()->lengthUnit());
+  draw->AddText(ImVec2(at.x, at.y - 20), IM_COL32(220, 224, 230, 255), title);
   const int steps = 44;
   for (int s = 0; s < steps; ++s) {
     const float t0 = float(s) / steps, t1 = float(s + 1) / steps;
@@ -81,7 +83,10 @@ void legend(const Session& session, const SceneRenderer& scene, ImDrawList* draw
     char label[32];
     // Enough decimals that the ticks differ (small objects span millimetres).
     const float top = colorMax * mpu;
-    const char* format = top >= 0.4f ? "%.2f" : "%.3f";
+    const char* format = top >= 100.0f  ? "%.0f"
+                         : top >= 10.0f ? "%.1f"
+                         : top >= 0.4f  ? "%.2f"
+                                        : "%.3f";
     std::snprintf(label, sizeof label, format, top * float(k) / 4.0f);
     const float x = at.x + w * float(k) / 4.0f;
     draw->AddLine(ImVec2(x, at.y + h), ImVec2(x, at.y + h + 3), IM_COL32(220, 224, 230, 255));
