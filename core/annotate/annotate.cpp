@@ -16,9 +16,11 @@ double secondsSince(Clock::time_point t) { return std::chrono::duration<double>(
 }  // namespace
 
 ModelPrediction predictWithModel(const model::AffordanceModel& model, const FeatureGrid& features,
-                                 const SurfaceScene& scene, UpAxis fileUp, InstanceMode mode, int count) {
+                                 const SurfaceScene& scene, UpAxis fileUp, InstanceMode mode, int count,
+                                 const ExtractionSettings* settings) {
   ModelPrediction p;
   const auto& card = model.card();
+  const ExtractionSettings& extraction = settings ? *settings : card.extraction;
   p.modelName = card.name;
   p.type = card.type;
   p.source = card.sourceTag();
@@ -26,9 +28,9 @@ ModelPrediction predictWithModel(const model::AffordanceModel& model, const Feat
   p.field.voxels = features.voxels;
   p.field.distances = model.predictDistances(features);
   switch (mode) {
-    case InstanceMode::Single: p.points = {argminPoint(p.field, card.extraction)}; break;
-    case InstanceMode::Count: p.points = kMeansPoints(p.field, count, card.extraction); break;
-    case InstanceMode::Auto: p.points = autoCountPoints(p.field, card.extraction); break;
+    case InstanceMode::Single: p.points = {argminPoint(p.field, extraction)}; break;
+    case InstanceMode::Count: p.points = kMeansPoints(p.field, count, extraction); break;
+    case InstanceMode::Auto: p.points = autoCountPoints(p.field, extraction); break;
   }
   for (const auto& point : p.points)
     p.surface.push_back(projectToSurface(point.position, features.normalization, scene, fileUp));

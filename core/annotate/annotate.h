@@ -35,8 +35,10 @@ struct ModelPrediction {
   std::string source;                     // "<model>@<sha prefix>"
 };
 
+// `settings` overrides the card's point-extraction settings when given.
 ModelPrediction predictWithModel(const model::AffordanceModel& model, const FeatureGrid& features,
-                                 const SurfaceScene& scene, UpAxis fileUp, InstanceMode mode, int count = 1);
+                                 const SurfaceScene& scene, UpAxis fileUp, InstanceMode mode, int count = 1,
+                                 const ExtractionSettings* settings = nullptr);
 
 struct AnnotateOptions {
   std::string category;            // empty: retrieval

@@ -26,8 +26,9 @@ namespace {
 const char* const kPaperOrder[] = {"sink.togglebutton", "sink.fluidsource", "stove.togglebutton",
                                    "stove.heatsource"};
 
-enum Method { kArgmin, kAuto, kKMeans, kCosine, kL2, kMethodCount };
-const char* const kMethodNames[] = {"SAGrid argmin (paper)", "SAGrid auto count", "SAGrid k-means, true count",
+enum Method { kArgmin, kRefined, kAuto, kKMeans, kCosine, kL2, kMethodCount };
+const char* const kMethodNames[] = {"SAGrid argmin (paper)", "SAGrid argmin refined", "SAGrid auto count",
+                                    "SAGrid k-means, true count",
                                     "Embedding search cosine", "Embedding search L2"};
 
 std::string formatValue(double v, const char* format) {
@@ -102,7 +103,10 @@ EvaluationReport evaluateModels(const ModelSet& models, const EvaluationOptions&
           for (const auto& s : p.surface) out.push_back(s.position);
           return out;
         };
-        record(kArgmin, surfaceOf(predictWithModel(*model, grid, scene, mesh.fileUp, InstanceMode::Single)));
+        ExtractionSettings paper = card.extraction;
+        paper.refineVoxels = 0;  // the paper's argmin: a voxel centre
+        record(kArgmin, surfaceOf(predictWithModel(*model, grid, scene, mesh.fileUp, InstanceMode::Single, 1, &paper)));
+        record(kRefined, surfaceOf(predictWithModel(*model, grid, scene, mesh.fileUp, InstanceMode::Single)));
         record(kAuto, surfaceOf(predictWithModel(*model, grid, scene, mesh.fileUp, InstanceMode::Auto)));
         record(kKMeans, surfaceOf(predictWithModel(*model, grid, scene, mesh.fileUp, InstanceMode::Count,
                                                    static_cast<int>(truth.size()))));

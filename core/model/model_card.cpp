@@ -58,7 +58,8 @@ json toJson(const ModelCard& c) {
   j["weights"] = {{"file", c.weightsFile}, {"sha256", c.weightsSha256}};
   j["point_extraction"] = {{"max_distance", c.extraction.maxDistance},
                            {"nms_radius", c.extraction.nmsRadius},
-                           {"confidence_scale", c.extraction.confidenceScale}};
+                           {"confidence_scale", c.extraction.confidenceScale},
+                           {"refine_voxels", c.extraction.refineVoxels}};
   j["retrieval"] = {{"descriptor_mean", c.descriptorMean}};
   j["embedding_search"] = {{"affordance_feature_mean", c.affordanceFeatureMean}};
   j["training"] = c.training;
@@ -98,6 +99,7 @@ ModelCard modelCardFromJson(const json& j, const fs::path& path) {
       c.extraction.maxDistance = p.value("max_distance", c.extraction.maxDistance);
       c.extraction.nmsRadius = p.value("nms_radius", c.extraction.nmsRadius);
       c.extraction.confidenceScale = p.value("confidence_scale", c.extraction.confidenceScale);
+      c.extraction.refineVoxels = p.value("refine_voxels", c.extraction.refineVoxels);
     }
     if (j.contains("retrieval"))
       c.descriptorMean = j.at("retrieval").value("descriptor_mean", std::vector<float>{});

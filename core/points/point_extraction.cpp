@@ -25,6 +25,23 @@ float confidenceOf(float distance, const ExtractionSettings& s) {
 ExtractedPoint pointAt(const PredictedField& field, std::size_t v, const ExtractionSettings& s) {
   ExtractedPoint p;
   p.position = voxelCenter(field.voxels[v], field.resolution);
+  if (s.refineVoxels > 0) {
+    const VoxelIndex& c = field.voxels[v];
+    const float r2 = s.refineVoxels * s.refineVoxels;
+    const float tau = 0.5f / static_cast<float>(field.resolution);
+    Eigen::Vector3f sum = Eigen::Vector3f::Zero();
+    float mass = 0;
+    for (std::size_t u = 0; u < field.voxels.size(); ++u) {
+      const VoxelIndex& q = field.voxels[u];
+      const float di = static_cast<float>(q.i - c.i), dj = static_cast<float>(q.j - c.j),
+                  dk = static_cast<float>(q.k - c.k);
+      if (di * di + dj * dj + dk * dk > r2) continue;
+      const float w = std::exp(-(field.distances[u] - field.distances[v]) / tau);
+      sum += w * voxelCenter(q, field.resolution);
+      mass += w;
+    }
+    if (mass > 0) p.position = sum / mass;
+  }
   p.distance = field.distances[v];
   p.confidence = confidenceOf(p.distance, s);
   return p;
@@ -201,14 +218,15 @@ std::vector<ExtractedPoint> kMeansPoints(const PredictedField& field, int count,
 }
 
 ExtractionSettings calibrateExtraction(const std::vector<PredictedField>& fields,
-                                       const std::vector<std::vector<Eigen::Vector3f>>& truths) {
-  ExtractionSettings best;
+                                       const std::vector<std::vector<Eigen::Vector3f>>& truths,
+                                       const ExtractionSettings& base) {
+  ExtractionSettings best = base;
   if (fields.empty() || fields.size() != truths.size()) return best;
   double bestRight = -1, bestOff = std::numeric_limits<double>::max();
   // Minima are computed once; only the filtering depends on the candidates.
   std::vector<std::vector<ExtractedPoint>> minima;
   for (const auto& f : fields) {
-    ExtractionSettings all;
+    ExtractionSettings all = base;
     all.maxDistance = std::numeric_limits<float>::max();
     all.nmsRadius = 0.0f;
     minima.push_back(autoCountPoints(f, all));

@@ -25,6 +25,9 @@ struct ExtractionSettings {
   float maxDistance = 0.04f;      // automatic count: keep minima predicted closer than this
   float nmsRadius = 0.08f;        // automatic count: suppress minima within this of a better one
   float confidenceScale = 0.02f;  // confidence = exp(-predicted distance / scale)
+  // Sub-voxel refinement of each minimum: the centroid of the occupied voxels within this many
+  // voxels of it, weighted by exp(-(d - d_min) / (half a voxel)). 0 = voxel centres (paper).
+  float refineVoxels = 0.0f;
 };
 
 struct ExtractedPoint {
@@ -53,7 +56,9 @@ std::vector<std::size_t> localMinima(const PredictedField& field);
 // Chooses maxDistance and nmsRadius maximising the share of objects whose automatic count equals
 // the ground-truth count (ties: smaller mean matched error), over a fixed grid of candidates.
 // `truths[i]` are the ground-truth points (normalized frame) of `fields[i]`.
+// Other settings (refinement, confidence scale) are taken from `base`.
 ExtractionSettings calibrateExtraction(const std::vector<PredictedField>& fields,
-                                       const std::vector<std::vector<Eigen::Vector3f>>& truths);
+                                       const std::vector<std::vector<Eigen::Vector3f>>& truths,
+                                       const ExtractionSettings& base = {});
 
 }  // namespace sagrid

@@ -170,7 +170,10 @@ DatasetTrainingResult trainFromDataset(const DatasetTrainingOptions& options) {
     fields.push_back(std::move(f));
     truths.push_back(s.targets);
   }
-  ExtractionSettings extraction = calibrateExtraction(fields, truths);
+  // Sub-voxel refinement: 4.22 -> 4.00 cm on bench val stove.heatsource (1-epoch model).
+  ExtractionSettings refined;
+  refined.refineVoxels = 2.0f;
+  ExtractionSettings extraction = calibrateExtraction(fields, truths, refined);
   extraction.confidenceScale = extraction.maxDistance;
   net.card().extraction = extraction;
 

@@ -159,3 +159,24 @@ TEST(PointExtraction, CalibrationChoosesSettingsThatCountRight) {
 
 }  // namespace
 }  // namespace sagrid
+
+namespace sagrid {
+namespace {
+
+TEST(PointExtraction, RefinementFindsAPointBetweenVoxelCentres) {
+  // The true point lies half-way between two voxel centres; the refined argmin gets there.
+  const Eigen::Vector3f truth = 0.5f * (onPlate(10, 10) + onPlate(11, 10));
+  const auto f = plateField({truth});
+  ExtractionSettings s;
+  EXPECT_NEAR((argminPoint(f, s).position - truth).norm(), 0.5f * kVoxel, 1e-5f);
+  s.refineVoxels = 2.0f;
+  EXPECT_LT((argminPoint(f, s).position - truth).norm(), 0.1f * kVoxel);
+  // Auto count refines every instance.
+  s.maxDistance = 0.05f;
+  const auto points = autoCountPoints(f, s);
+  ASSERT_EQ(points.size(), 1u);
+  EXPECT_LT((points[0].position - truth).norm(), 0.1f * kVoxel);
+}
+
+}  // namespace
+}  // namespace sagrid
