@@ -9,13 +9,12 @@
 #include "core/common/atomic_file.h"
 #include "core/common/error.h"
 #include "core/labels/labels.h"
+#include "core/mesh/mesh_import.h"
 
 namespace sagrid {
 namespace fs = std::filesystem;
 
 namespace {
-const char* const kMeshExtensions[] = {".glb", ".gltf", ".obj", ".fbx", ".ply", ".stl", ".dae"};
-
 std::string lower(std::string s) {
   for (auto& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   return s;
@@ -23,14 +22,13 @@ std::string lower(std::string s) {
 }  // namespace
 
 bool isMeshFile(const fs::path& path) {
-  const std::string ext = lower(path.extension().string());
-  return std::find(std::begin(kMeshExtensions), std::end(kMeshExtensions), ext) !=
-         std::end(kMeshExtensions);
+  const auto& extensions = supportedMeshExtensions();
+  return std::find(extensions.begin(), extensions.end(), lower(path.extension().string())) != extensions.end();
 }
 
 fs::path findMeshFile(const fs::path& dir) {
-  for (const char* ext : kMeshExtensions)
-    if (fs::is_regular_file(dir / (std::string("mesh") + ext))) return dir / (std::string("mesh") + ext);
+  for (const auto& ext : supportedMeshExtensions())
+    if (fs::is_regular_file(dir / ("mesh" + ext))) return dir / ("mesh" + ext);
   std::vector<fs::path> found;
   for (const auto& e : fs::directory_iterator(dir))
     if (e.is_regular_file() && isMeshFile(e.path())) found.push_back(e.path());

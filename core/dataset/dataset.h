@@ -20,8 +20,8 @@ struct DatasetEntry {
 // Returns an empty list for a folder with no objects; callers decide whether that is an error.
 std::vector<DatasetEntry> readDataset(const std::filesystem::path& directory);
 
-// The mesh file in an object folder: mesh.{glb,gltf,obj,fbx,ply,stl,dae} first, else the only
-// file with one of those extensions. Empty path when there is none.
+// The mesh file in an object folder: mesh.<ext> for an extension importMesh supports first, else
+// the only file with such an extension. Empty path when there is none.
 std::filesystem::path findMeshFile(const std::filesystem::path& objectDirectory);
 
 // True when `path` has a mesh file extension SAGrid imports.

@@ -152,6 +152,11 @@ std::vector<EpochRecord> trainModel(AffordanceModel& model, const std::vector<Tr
     double lr = options.learningRate;
     for (std::size_t step = 0; step < stepsPerEpoch; ++step) {
       if (options.cancel && options.cancel->load()) throw Cancelled();
+      if (timed && epoch == 1 && step > 0) {
+        // Until the first epoch is timed, plan (schedule, progress) from the steps so far.
+        const double perEpoch = elapsed() / static_cast<double>(step) * static_cast<double>(stepsPerEpoch);
+        state.epochsTotal = std::max(1, static_cast<int>(options.minutes * 60.0 / perEpoch));
+      }
       // Cosine schedule over all steps of the run, from learningRate down to 1% of it.
       const double progress = (static_cast<double>(epoch - 1) * stepsPerEpoch + step) /
                               (static_cast<double>(state.epochsTotal) * stepsPerEpoch);
