@@ -2,13 +2,11 @@
 // of its category and writes OUT/<id>/labels.json; `sagrid filter DIR --like CATEGORY` ranks
 // meshes by descriptor similarity to a category. Parsing and progress display only.
 #include <CLI/CLI.hpp>
-
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
 #include <memory>
-
 #include <nlohmann/json.hpp>
 
 #include "app/command_registry.h"
@@ -29,10 +27,11 @@ fs::path defaultModelsDir() {
 }
 
 void setupAnnotate(CLI::App& root) {
-  auto* cmd = root.add_subcommand(
-      "annotate",
-      "Predict affordance points (heat sources, fluid sources, toggle buttons) for a mesh or every mesh "
-      "in a folder and write OUT/<id>/labels.json (status predicted, with confidence and model source).");
+  auto* cmd = root.add_subcommand("annotate",
+                                  "Predict affordance points (heat sources, fluid sources, toggle "
+                                  "buttons) for a mesh or every mesh "
+                                  "in a folder and write OUT/<id>/labels.json (status predicted, "
+                                  "with confidence and model source).");
   struct Options {
     std::string input, out, category, models, cache, up, instances = "auto";
     std::vector<std::string> counts;
@@ -40,7 +39,8 @@ void setupAnnotate(CLI::App& root) {
   auto o = std::make_shared<Options>();
   cmd->add_option("input", o->input, "Mesh file or folder of meshes")->required();
   cmd->add_option("--out", o->out, "Output folder")->required();
-  cmd->add_option("--category", o->category, "Object category (default: chosen by descriptor retrieval)");
+  cmd->add_option("--category", o->category,
+                  "Object category (default: chosen by descriptor retrieval)");
   cmd->add_option("--models", o->models, "Model folder (default resources/models)");
   cmd->add_option("--cache", o->cache, "Feature cache folder (default: none)");
   cmd->add_option("--up", o->up, "Up axis of the mesh files (y or z; default from the format)")
@@ -48,15 +48,18 @@ void setupAnnotate(CLI::App& root) {
   cmd->add_option("--instances", o->instances,
                   "auto (local minima + suppression), single (argmin, as the paper)")
       ->check(CLI::IsMember({"auto", "single"}));
-  cmd->add_option("--count", o->counts, "Known instance count per type, e.g. --count heatsource=5 (k-means)");
+  cmd->add_option("--count", o->counts,
+                  "Known instance count per type, e.g. --count heatsource=5 (k-means)");
   cmd->callback([o] {
-    const auto models = sagrid::ModelSet::load(o->models.empty() ? defaultModelsDir() : fs::path(o->models));
+    const auto models =
+        sagrid::ModelSet::load(o->models.empty() ? defaultModelsDir() : fs::path(o->models));
     sagrid::AnnotateOptions options;
     options.category = o->category;
     options.features = models.featureOptions();
     options.features.cacheDir = o->cache;
     if (!o->up.empty()) options.features.up = sagrid::parseUpAxis(o->up);
-    options.mode = o->instances == "single" ? sagrid::InstanceMode::Single : sagrid::InstanceMode::Auto;
+    options.mode =
+        o->instances == "single" ? sagrid::InstanceMode::Single : sagrid::InstanceMode::Auto;
     for (const auto& c : o->counts) {
       const auto eq = c.find('=');
       int n = 0;
@@ -65,7 +68,8 @@ void setupAnnotate(CLI::App& root) {
       } catch (const std::exception&) {
       }
       if (eq == std::string::npos || n < 1)
-        throw sagrid::InvalidArgument("--count " + c + ": expected TYPE=N with N >= 1, e.g. heatsource=4");
+        throw sagrid::InvalidArgument("--count " + c +
+                                      ": expected TYPE=N with N >= 1, e.g. heatsource=4");
       options.counts[c.substr(0, eq)] = n;
     }
     const auto files = sagrid::findMeshFiles(o->input);
@@ -80,22 +84,25 @@ void setupAnnotate(CLI::App& root) {
         fs::create_directories(dir);
         sagrid::writeLabels(dir / "labels.json", r.labels);
         points += r.labels.affordances.size();
-        sagrid::logger()->info("{}: {} ({}{:.3f}), {} points; import {:.2f} s, features {:.2f} s, models {:.3f} s",
-                               files[i].id, r.category, r.categoryRetrieved ? "retrieved, similarity " : "similarity ",
-                               r.categorySimilarity, r.labels.affordances.size(), r.importSeconds,
-                               r.featureSeconds, r.modelSeconds);
+        sagrid::logger()->info(
+            "{}: {} ({}{:.3f}), {} points; import {:.2f} s, features {:.2f} s, models {:.3f} s",
+            files[i].id, r.category, r.categoryRetrieved ? "retrieved, similarity " : "similarity ",
+            r.categorySimilarity, r.labels.affordances.size(), r.importSeconds, r.featureSeconds,
+            r.modelSeconds);
       } catch (const sagrid::Cancelled&) {
         throw;
       } catch (const sagrid::Error& e) {
         ++failed;
         bar.update(i + 1);
-        std::fprintf(stderr, "\nsagrid: %s: failed: %s\n", files[i].path.string().c_str(), e.what());
+        std::fprintf(stderr, "\nsagrid: %s: failed: %s\n", files[i].path.string().c_str(),
+                     e.what());
       }
     }
     bar.update(files.size());
     bar.finish();
-    std::fprintf(stderr, "annotated %zu of %zu objects (%zu points) into %s%s\n", files.size() - failed,
-                 files.size(), points, o->out.c_str(), failed ? "; see the failures above" : "");
+    std::fprintf(stderr, "annotated %zu of %zu objects (%zu points) into %s%s\n",
+                 files.size() - failed, files.size(), points, o->out.c_str(),
+                 failed ? "; see the failures above" : "");
     if (failed == files.size()) throw sagrid::Error("every object failed");
   });
 }
@@ -114,16 +121,19 @@ void setupFilter(CLI::App& root) {
   cmd->add_option("input", o->input, "Folder of meshes (or one mesh)")->required();
   cmd->add_option("--like", o->like, "Category to rank by, e.g. stove")->required();
   cmd->add_option("--models", o->models, "Model folder (default resources/models)");
-  cmd->add_option("--cache", o->cache, "Feature cache folder (default INPUT/.sagrid-cache for folders)");
+  cmd->add_option("--cache", o->cache,
+                  "Feature cache folder (default INPUT/.sagrid-cache for folders)");
   cmd->add_option("--top", o->top, "Print only the best N")->check(CLI::NonNegativeNumber);
   cmd->add_option("--min-similarity", o->threshold, "Print only meshes at least this similar");
   cmd->add_option("--json", o->json, "Also write the ranking as JSON");
   cmd->callback([o] {
-    const auto models = sagrid::ModelSet::load(o->models.empty() ? defaultModelsDir() : fs::path(o->models));
+    const auto models =
+        sagrid::ModelSet::load(o->models.empty() ? defaultModelsDir() : fs::path(o->models));
     const auto mean = models.categoryMean(o->like);
     auto features = models.featureOptions();
-    features.cacheDir = !o->cache.empty() ? fs::path(o->cache)
-                        : fs::is_directory(o->input) ? fs::path(o->input) / ".sagrid-cache" : fs::path();
+    features.cacheDir = !o->cache.empty()            ? fs::path(o->cache)
+                        : fs::is_directory(o->input) ? fs::path(o->input) / ".sagrid-cache"
+                                                     : fs::path();
     const auto files = sagrid::findMeshFiles(o->input);
     struct Ranked {
       std::string id, path;
@@ -137,21 +147,28 @@ void setupFilter(CLI::App& root) {
       try {
         const auto f = sagrid::extractFeatures(files[i].path, features);
         const auto categories = models.rankCategories(f.descriptor);
-        ranked.push_back({files[i].id, files[i].path.string(), sagrid::cosineSimilarity(f.descriptor, mean),
+        ranked.push_back({files[i].id, files[i].path.string(),
+                          sagrid::cosineSimilarity(f.descriptor, mean),
                           categories.empty() ? "" : categories.front().category});
       } catch (const sagrid::Error& e) {
-        std::fprintf(stderr, "\nsagrid: %s: skipped: %s\n", files[i].path.string().c_str(), e.what());
+        std::fprintf(stderr, "\nsagrid: %s: skipped: %s\n", files[i].path.string().c_str(),
+                     e.what());
       }
     }
     bar.update(files.size());
     bar.finish();
-    std::stable_sort(ranked.begin(), ranked.end(), [](const Ranked& a, const Ranked& b) { return a.similarity > b.similarity; });
+    std::stable_sort(ranked.begin(), ranked.end(),
+                     [](const Ranked& a, const Ranked& b) { return a.similarity > b.similarity; });
     nlohmann::json j = nlohmann::json::array();
     std::size_t shown = 0;
     for (const auto& r : ranked) {
-      if (r.similarity < o->threshold || (o->top > 0 && shown >= static_cast<std::size_t>(o->top))) break;
+      if (r.similarity < o->threshold || (o->top > 0 && shown >= static_cast<std::size_t>(o->top)))
+        break;
       std::printf("%.4f  %-8s %s\n", r.similarity, r.best.c_str(), r.path.c_str());
-      j.push_back({{"id", r.id}, {"mesh", r.path}, {"similarity", r.similarity}, {"closest_category", r.best}});
+      j.push_back({{"id", r.id},
+                   {"mesh", r.path},
+                   {"similarity", r.similarity},
+                   {"closest_category", r.best}});
       ++shown;
     }
     if (!o->json.empty()) sagrid::writeFileAtomic(o->json, j.dump(2) + "\n");

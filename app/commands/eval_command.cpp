@@ -2,7 +2,6 @@
 // labelled dataset, in the paper's Table II form; `--sweep "arch1;arch2"` trains and compares
 // architectures (Table I form). Parsing and progress display only.
 #include <CLI/CLI.hpp>
-
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -20,9 +19,12 @@ namespace fs = std::filesystem;
 void setupEval(CLI::App& root) {
   auto* cmd = root.add_subcommand(
       "eval",
-      "Evaluate models on a labelled dataset (its val/ split when present): mean error to the nearest "
-      "ground truth (paper), Hungarian-matched error, precision/recall within 5 cm, right counts; SAGrid and "
-      "Embedding Search baselines. Writes OUT/eval.md, eval.json, eval.png. With --sweep, trains each "
+      "Evaluate models on a labelled dataset (its val/ split when present): mean error to the "
+      "nearest "
+      "ground truth (paper), Hungarian-matched error, precision/recall within 5 cm, right counts; "
+      "SAGrid and "
+      "Embedding Search baselines. Writes OUT/eval.md, eval.json, eval.png. With --sweep, trains "
+      "each "
       "architecture on DATA/train and compares them on DATA/val (Table I form).");
   struct Options {
     std::string data, models, out = "eval", cache, sweep, mode = "sparse";
@@ -31,15 +33,18 @@ void setupEval(CLI::App& root) {
     int epochs = 0;
   };
   auto o = std::make_shared<Options>();
-  cmd->add_option("--data", o->data, "Labelled dataset (manifest.jsonl or object folders)")->required();
+  cmd->add_option("--data", o->data, "Labelled dataset (manifest.jsonl or object folders)")
+      ->required();
   cmd->add_option("--models", o->models, "Model folder (default resources/models)");
   cmd->add_option("--out", o->out, "Report folder (default eval)");
   cmd->add_option("--cache", o->cache, "Feature cache (default DATA/.sagrid-cache)");
   cmd->add_option("--sweep", o->sweep, "Architectures to compare, ';'-separated Table I strings");
-  cmd->add_option("--sweep-models", o->only, "With --sweep: the models to train (default all four)");
+  cmd->add_option("--sweep-models", o->only,
+                  "With --sweep: the models to train (default all four)");
   cmd->add_option("--minutes", o->minutes, "With --sweep: training budget per model (default 2)");
   cmd->add_option("--epochs", o->epochs, "With --sweep: epochs per model instead of --minutes");
-  cmd->add_option("--mode", o->mode, "With --sweep: sparse or dense")->check(CLI::IsMember({"sparse", "dense"}));
+  cmd->add_option("--mode", o->mode, "With --sweep: sparse or dense")
+      ->check(CLI::IsMember({"sparse", "dense"}));
   cmd->callback([o] {
     std::unique_ptr<sagrid::app::ProgressBar> bar;
     auto progress = [&](std::size_t done, std::size_t total, const std::string& id) {
@@ -63,9 +68,10 @@ void setupEval(CLI::App& root) {
       std::fprintf(stderr, "sweep report: %s\n", (fs::path(o->out) / "sweep.md").string().c_str());
       return;
     }
-    const fs::path modelsDir = !o->models.empty()               ? fs::path(o->models)
-                               : fs::is_directory("resources/models") ? fs::path("resources/models")
-                                                                     : fs::path(SAGRID_SOURCE_DIR) / "resources/models";
+    const fs::path modelsDir = !o->models.empty() ? fs::path(o->models)
+                               : fs::is_directory("resources/models")
+                                   ? fs::path("resources/models")
+                                   : fs::path(SAGRID_SOURCE_DIR) / "resources/models";
     const auto models = sagrid::ModelSet::load(modelsDir);
     sagrid::EvaluationOptions options;
     options.dataDir = o->data;

@@ -2,7 +2,6 @@
 // models (--preset default: generates the bench split when missing, trains on its train half,
 // writes resources/models/). Parsing and progress display only; the work is in core/training.
 #include <CLI/CLI.hpp>
-
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -30,13 +29,15 @@ struct TrainCommandOptions {
 };
 
 fs::path defaultBenchDir() {
-  if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg && *xdg) return fs::path(xdg) / "sagrid" / "bench";
-  if (const char* home = std::getenv("HOME"); home && *home) return fs::path(home) / ".cache" / "sagrid" / "bench";
+  if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg && *xdg)
+    return fs::path(xdg) / "sagrid" / "bench";
+  if (const char* home = std::getenv("HOME"); home && *home)
+    return fs::path(home) / ".cache" / "sagrid" / "bench";
   return fs::path(".sagrid-data") / "bench";
 }
 
-std::string commandLine(const TrainCommandOptions& o, const std::string& data, const std::string& model,
-                        const std::string& out) {
+std::string commandLine(const TrainCommandOptions& o, const std::string& data,
+                        const std::string& model, const std::string& out) {
   std::ostringstream s;
   s << "sagrid train --data " << data << " --model " << model << " --out " << out;
   if (!o.arch.empty()) s << " --arch \"" << o.arch << "\"";
@@ -67,7 +68,8 @@ sagrid::DatasetTrainingResult trainOne(const TrainCommandOptions& o, const fs::p
   std::unique_ptr<sagrid::app::ProgressBar> featureBar, trainBar;
   std::size_t barSteps = 0;
   t.onFeatureProgress = [&](std::size_t done, std::size_t total, const std::string& id) {
-    if (!featureBar) featureBar = std::make_unique<sagrid::app::ProgressBar>("features " + model, total);
+    if (!featureBar)
+      featureBar = std::make_unique<sagrid::app::ProgressBar>("features " + model, total);
     featureBar->update(done, id);
     if (done == total) featureBar->finish();
   };
@@ -82,41 +84,49 @@ sagrid::DatasetTrainingResult trainOne(const TrainCommandOptions& o, const fs::p
   };
   sagrid::DatasetTrainingResult r = sagrid::trainFromDataset(t);
   if (trainBar) trainBar->finish();
-  std::fprintf(stderr,
-               "%s: %zu objects (%zu without %s skipped, %zu failed), features %.1f s, training %.1f s, "
-               "final loss %.4f -> %s\n",
-               model.c_str(), r.objectsUsed, r.objectsSkipped, r.card.type.c_str(), r.objectsFailed,
-               r.featureSeconds, r.trainingSeconds, r.curve.empty() ? 0.0 : r.curve.back().loss,
-               r.cardFile.string().c_str());
+  std::fprintf(
+      stderr,
+      "%s: %zu objects (%zu without %s skipped, %zu failed), features %.1f s, training %.1f s, "
+      "final loss %.4f -> %s\n",
+      model.c_str(), r.objectsUsed, r.objectsSkipped, r.card.type.c_str(), r.objectsFailed,
+      r.featureSeconds, r.trainingSeconds, r.curve.empty() ? 0.0 : r.curve.back().loss,
+      r.cardFile.string().c_str());
   return r;
 }
 
 void setupTrain(CLI::App& root) {
   auto* cmd = root.add_subcommand(
       "train",
-      "Train a SAGrid model (one per category.type) on a dataset folder, or the four shipped models "
+      "Train a SAGrid model (one per category.type) on a dataset folder, or the four shipped "
+      "models "
       "with --preset default. Writes <out>/<model>.pt + .json (model card) + loss curve CSV/PNG; "
       "checkpoints every epoch (--resume continues).");
   auto o = std::make_shared<TrainCommandOptions>();
-  cmd->add_option("--data", o->data, "Dataset folder (manifest.jsonl or object folders); with --preset: "
-                                     "where the bench split is (generated when missing)");
+  cmd->add_option("--data", o->data,
+                  "Dataset folder (manifest.jsonl or object folders); with --preset: "
+                  "where the bench split is (generated when missing)");
   cmd->add_option("--model", o->model, "Model to train: <category>.<type>, e.g. stove.heatsource");
-  cmd->add_option("--arch", o->arch, std::string("CNN architecture, Table I notation (default ") +
-                                         sagrid::model::kDefaultArchitecture + ")");
+  cmd->add_option("--arch", o->arch,
+                  std::string("CNN architecture, Table I notation (default ") +
+                      sagrid::model::kDefaultArchitecture + ")");
   cmd->add_option("--mode", o->mode, "sparse (default, CPU) or dense (Conv3d over the full grid)")
       ->check(CLI::IsMember({"sparse", "dense"}));
-  cmd->add_option("--epochs", o->epochs, "Epochs (default: from --minutes, else 40)")->check(CLI::NonNegativeNumber);
-  cmd->add_option("--minutes", o->minutes, "Time budget; sets the epoch count after timing the first epoch")
+  cmd->add_option("--epochs", o->epochs, "Epochs (default: from --minutes, else 40)")
+      ->check(CLI::NonNegativeNumber);
+  cmd->add_option("--minutes", o->minutes,
+                  "Time budget; sets the epoch count after timing the first epoch")
       ->check(CLI::NonNegativeNumber);
   cmd->add_option("--batch", o->batch, "Objects per step (default 4)")->check(CLI::PositiveNumber);
   cmd->add_option("--lr", o->lr, "Peak learning rate of AdamW (cosine schedule; default 3e-3)")
       ->check(CLI::PositiveNumber);
   cmd->add_option("--seed", o->seed, "Random seed (weights, order, augmentation)");
-  cmd->add_option("--out", o->out, "Output folder (default resources/models with --preset, else models)");
+  cmd->add_option("--out", o->out,
+                  "Output folder (default resources/models with --preset, else models)");
   cmd->add_option("--backend", o->backend, "Feature backend (default embedded)");
   cmd->add_option("--cache", o->cache, "Feature cache folder (default DATA/.sagrid-cache)");
   cmd->add_flag("--resume", o->resume, "Continue from <out>/<model>.checkpoint when it exists");
-  cmd->add_option("--preset", o->preset, "default: the four shipped models on the generated bench split")
+  cmd->add_option("--preset", o->preset,
+                  "default: the four shipped models on the generated bench split")
       ->check(CLI::IsMember({"default"}));
   cmd->callback([o] {
     if (o->preset == "default") {
@@ -125,16 +135,20 @@ void setupTrain(CLI::App& root) {
       if (!fs::exists(data / "train" / "manifest.jsonl")) {
         std::fprintf(stderr, "generating the bench split into %s\n", data.string().c_str());
         sagrid::app::ProgressBar bar("generate", 0);
-        sagrid::gen::generateBenchPreset(data, [&](int done, int) { bar.update(static_cast<std::size_t>(done)); });
+        sagrid::gen::generateBenchPreset(
+            data, [&](int done, int) { bar.update(static_cast<std::size_t>(done)); });
       }
       TrainCommandOptions preset = *o;
       if (preset.epochs == 0 && preset.minutes == 0) preset.minutes = 12;
-      if (preset.cache.empty()) preset.cache = (data / ".sagrid-cache").string();  // shared by both splits
-      for (const auto& name : sagrid::defaultModelNames()) trainOne(preset, data / "train", name, out);
+      if (preset.cache.empty())
+        preset.cache = (data / ".sagrid-cache").string();  // shared by both splits
+      for (const auto& name : sagrid::defaultModelNames())
+        trainOne(preset, data / "train", name, out);
       return;
     }
     if (o->data.empty()) throw sagrid::InvalidArgument("--data is required (or --preset default)");
-    if (o->model.empty()) throw sagrid::InvalidArgument("--model is required, e.g. --model stove.heatsource");
+    if (o->model.empty())
+      throw sagrid::InvalidArgument("--model is required, e.g. --model stove.heatsource");
     trainOne(*o, o->data, o->model, o->out.empty() ? fs::path("models") : fs::path(o->out));
   });
 }

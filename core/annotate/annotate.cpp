@@ -12,12 +12,14 @@ namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
 
 namespace {
-double secondsSince(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+double secondsSince(Clock::time_point t) {
+  return std::chrono::duration<double>(Clock::now() - t).count();
+}
 }  // namespace
 
 ModelPrediction predictWithModel(const model::AffordanceModel& model, const FeatureGrid& features,
-                                 const SurfaceScene& scene, UpAxis fileUp, InstanceMode mode, int count,
-                                 const ExtractionSettings* settings) {
+                                 const SurfaceScene& scene, UpAxis fileUp, InstanceMode mode,
+                                 int count, const ExtractionSettings* settings) {
   ModelPrediction p;
   const auto& card = model.card();
   const ExtractionSettings& extraction = settings ? *settings : card.extraction;
@@ -28,24 +30,32 @@ ModelPrediction predictWithModel(const model::AffordanceModel& model, const Feat
   p.field.voxels = features.voxels;
   p.field.distances = model.predictDistances(features);
   switch (mode) {
-    case InstanceMode::Single: p.points = {argminPoint(p.field, extraction)}; break;
-    case InstanceMode::Count: p.points = kMeansPoints(p.field, count, extraction); break;
-    case InstanceMode::Auto: p.points = autoCountPoints(p.field, extraction); break;
+    case InstanceMode::Single:
+      p.points = {argminPoint(p.field, extraction)};
+      break;
+    case InstanceMode::Count:
+      p.points = kMeansPoints(p.field, count, extraction);
+      break;
+    case InstanceMode::Auto:
+      p.points = autoCountPoints(p.field, extraction);
+      break;
   }
   for (const auto& point : p.points)
     p.surface.push_back(projectToSurface(point.position, features.normalization, scene, fileUp));
   return p;
 }
 
-AnnotationResult annotateMeshFile(const fs::path& meshFile, const std::string& id, const ModelSet& models,
-                                  const AnnotateOptions& options, const fs::path& labelsDir) {
+AnnotationResult annotateMeshFile(const fs::path& meshFile, const std::string& id,
+                                  const ModelSet& models, const AnnotateOptions& options,
+                                  const fs::path& labelsDir) {
   AnnotationResult r;
   auto t = Clock::now();
   const Mesh mesh = importMesh(meshFile, ImportOptions(options.features.up));
   r.importSeconds = secondsSince(t);
   t = Clock::now();
-  const FeatureGrid features = options.features.cacheDir.empty() ? computeFeatures(mesh, options.features)
-                                                                 : extractFeatures(meshFile, options.features);
+  const FeatureGrid features = options.features.cacheDir.empty()
+                                   ? computeFeatures(mesh, options.features)
+                                   : extractFeatures(meshFile, options.features);
   const SurfaceScene scene(mesh);
   r.featureSeconds = secondsSince(t);
 
@@ -57,12 +67,14 @@ AnnotationResult annotateMeshFile(const fs::path& meshFile, const std::string& i
     r.categoryRetrieved = true;
   } else {
     r.category = options.category;
-    r.categorySimilarity = cosineSimilarity(features.descriptor, models.categoryMean(options.category));
+    r.categorySimilarity =
+        cosineSimilarity(features.descriptor, models.categoryMean(options.category));
   }
 
   t = Clock::now();
   r.labels.object.id = id;
-  r.labels.object.mesh = fs::proximate(fs::absolute(meshFile), fs::absolute(labelsDir)).generic_string();
+  r.labels.object.mesh =
+      fs::proximate(fs::absolute(meshFile), fs::absolute(labelsDir)).generic_string();
   r.labels.object.sha256 = mesh.sha256;
   r.labels.object.category = r.category;
   r.labels.object.up = toString(mesh.fileUp);
@@ -70,8 +82,10 @@ AnnotationResult annotateMeshFile(const fs::path& meshFile, const std::string& i
     const auto count = options.counts.find(model->card().type);
     InstanceMode mode = options.mode;
     int n = 1;
-    if (count != options.counts.end()) mode = InstanceMode::Count, n = count->second;
-    else if (mode == InstanceMode::Count) mode = InstanceMode::Auto;
+    if (count != options.counts.end())
+      mode = InstanceMode::Count, n = count->second;
+    else if (mode == InstanceMode::Count)
+      mode = InstanceMode::Auto;
     ModelPrediction p = predictWithModel(*model, features, scene, mesh.fileUp, mode, n);
     for (std::size_t i = 0; i < p.points.size(); ++i) {
       AffordancePoint a;

@@ -30,19 +30,19 @@ struct ModelPrediction {
   std::string modelName;
   std::string type;
   PredictedField field;
-  std::vector<ExtractedPoint> points;     // normalized frame, best first
-  std::vector<SurfacePoint> surface;      // projected, mesh file frame
-  std::string source;                     // "<model>@<sha prefix>"
+  std::vector<ExtractedPoint> points;  // normalized frame, best first
+  std::vector<SurfacePoint> surface;   // projected, mesh file frame
+  std::string source;                  // "<model>@<sha prefix>"
 };
 
 // `settings` overrides the card's point-extraction settings when given.
 ModelPrediction predictWithModel(const model::AffordanceModel& model, const FeatureGrid& features,
-                                 const SurfaceScene& scene, UpAxis fileUp, InstanceMode mode, int count = 1,
-                                 const ExtractionSettings* settings = nullptr);
+                                 const SurfaceScene& scene, UpAxis fileUp, InstanceMode mode,
+                                 int count = 1, const ExtractionSettings* settings = nullptr);
 
 struct AnnotateOptions {
-  std::string category;            // empty: retrieval
-  FeatureOptions features;         // backend must match the cards; cacheDir optional
+  std::string category;     // empty: retrieval
+  FeatureOptions features;  // backend must match the cards; cacheDir optional
   InstanceMode mode = InstanceMode::Auto;
   std::map<std::string, int> counts;  // type -> known instance count (InstanceMode::Count)
 };
@@ -50,7 +50,7 @@ struct AnnotateOptions {
 struct AnnotationResult {
   ObjectLabels labels;
   std::string category;
-  double categorySimilarity = 0;   // cosine similarity to the category mean (retrieval)
+  double categorySimilarity = 0;  // cosine similarity to the category mean (retrieval)
   bool categoryRetrieved = false;
   std::vector<ModelPrediction> predictions;
   double importSeconds = 0, featureSeconds = 0, modelSeconds = 0;

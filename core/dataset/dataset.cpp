@@ -2,9 +2,8 @@
 
 #include <algorithm>
 #include <cctype>
-#include <sstream>
-
 #include <nlohmann/json.hpp>
+#include <sstream>
 
 #include "core/common/atomic_file.h"
 #include "core/common/error.h"
@@ -23,7 +22,8 @@ std::string lower(std::string s) {
 
 bool isMeshFile(const fs::path& path) {
   const auto& extensions = supportedMeshExtensions();
-  return std::find(extensions.begin(), extensions.end(), lower(path.extension().string())) != extensions.end();
+  return std::find(extensions.begin(), extensions.end(), lower(path.extension().string())) !=
+         extensions.end();
 }
 
 fs::path findMeshFile(const fs::path& dir) {

@@ -27,7 +27,9 @@ std::vector<std::string> splitArchitectures(const std::string& text) {
 
 SweepResult runArchitectureSweep(const SweepOptions& o) {
   if (!fs::is_directory(o.dataDir / "train") || !fs::is_directory(o.dataDir / "val"))
-    throw FileError(o.dataDir, "an architecture sweep needs train/ and val/ splits (sagrid generate --preset bench)");
+    throw FileError(
+        o.dataDir,
+        "an architecture sweep needs train/ and val/ splits (sagrid generate --preset bench)");
   const std::vector<std::string> names = o.modelNames.empty() ? defaultModelNames() : o.modelNames;
   const fs::path cache = o.cacheDir.empty() ? o.dataDir / ".sagrid-cache" : o.cacheDir;
   SweepResult result;
@@ -80,10 +82,15 @@ SweepResult runArchitectureSweep(const SweepOptions& o) {
   writeFileAtomic(o.outDir / "sweep.md", sweepMarkdown(result));
   nlohmann::json j = nlohmann::json::array();
   for (const auto& r : result.rows)
-    j.push_back({{"id", r.id}, {"architecture", r.architecture}, {"error_m", r.meanError},
-                 {"error_by_model_m", r.errorByModel}, {"train_seconds", r.trainSeconds},
-                 {"forward_gmac", r.forwardGmac}, {"dense_gmac", r.denseGmac},
-                 {"model_ms_per_object", r.modelMilliseconds}, {"parameters", r.parameters}});
+    j.push_back({{"id", r.id},
+                 {"architecture", r.architecture},
+                 {"error_m", r.meanError},
+                 {"error_by_model_m", r.errorByModel},
+                 {"train_seconds", r.trainSeconds},
+                 {"forward_gmac", r.forwardGmac},
+                 {"dense_gmac", r.denseGmac},
+                 {"model_ms_per_object", r.modelMilliseconds},
+                 {"parameters", r.parameters}});
   writeFileAtomic(o.outDir / "sweep.json", j.dump(2) + "\n");
   return result;
 }
@@ -91,13 +98,16 @@ SweepResult runArchitectureSweep(const SweepOptions& o) {
 std::string sweepMarkdown(const SweepResult& r) {
   std::ostringstream md;
   char line[512];
-  md << "| Model ID | CNN Architecture | Error (cm) | Train (s, all models) | GMAC/forward (sparse, "
-     << static_cast<long>(r.meanOccupiedVoxels) << " voxels) | GMAC dense 64^3 | ms/object | Parameters |\n"
+  md << "| Model ID | CNN Architecture | Error (cm) | Train (s, all models) | GMAC/forward "
+        "(sparse, "
+     << static_cast<long>(r.meanOccupiedVoxels)
+     << " voxels) | GMAC dense 64^3 | ms/object | Parameters |\n"
      << "|---|---|---|---|---|---|---|---|\n";
   for (const auto& row : r.rows) {
-    std::snprintf(line, sizeof line, "| %s | %s | %.2f | %.0f | %.2f | %.1f | %.0f | %lld |\n", row.id.c_str(),
-                  row.architecture.c_str(), 100 * row.meanError, row.trainSeconds, row.forwardGmac, row.denseGmac,
-                  row.modelMilliseconds, static_cast<long long>(row.parameters));
+    std::snprintf(line, sizeof line, "| %s | %s | %.2f | %.0f | %.2f | %.1f | %.0f | %lld |\n",
+                  row.id.c_str(), row.architecture.c_str(), 100 * row.meanError, row.trainSeconds,
+                  row.forwardGmac, row.denseGmac, row.modelMilliseconds,
+                  static_cast<long long>(row.parameters));
     md << line;
   }
   return md.str();

@@ -24,15 +24,15 @@ struct SweepOptions {
 };
 
 struct SweepRow {
-  std::string id;            // "A1", "A2", ... in the order given
+  std::string id;  // "A1", "A2", ... in the order given
   std::string architecture;
   std::map<std::string, double> errorByModel;  // paper metric (m)
-  double meanError = 0;      // over models (m)
-  double trainSeconds = 0;   // all models
-  double forwardGmac = 0;    // per model forward on a mean-sized val object
-  double denseGmac = 0;      // the same architecture run dense over 64^3
-  double modelMilliseconds = 0;  // all models of a category + extraction per object
-  std::int64_t parameters = 0;   // per model
+  double meanError = 0;                        // over models (m)
+  double trainSeconds = 0;                     // all models
+  double forwardGmac = 0;                      // per model forward on a mean-sized val object
+  double denseGmac = 0;                        // the same architecture run dense over 64^3
+  double modelMilliseconds = 0;                // all models of a category + extraction per object
+  std::int64_t parameters = 0;                 // per model
 };
 
 struct SweepResult {

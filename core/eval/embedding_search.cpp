@@ -8,11 +8,13 @@
 
 namespace sagrid {
 
-std::size_t embeddingSearchVoxel(const FeatureGrid& f, const std::vector<float>& mean, EmbeddingMetric metric) {
+std::size_t embeddingSearchVoxel(const FeatureGrid& f, const std::vector<float>& mean,
+                                 EmbeddingMetric metric) {
   if (f.voxels.empty()) throw InvalidArgument("embedding search: no occupied voxels");
   if (static_cast<int>(mean.size()) != f.channels)
     throw InvalidArgument("embedding search: the model card's affordance feature has " +
-                          std::to_string(mean.size()) + " channels, the features " + std::to_string(f.channels));
+                          std::to_string(mean.size()) + " channels, the features " +
+                          std::to_string(f.channels));
   double meanNorm = 0;
   for (float v : mean) meanNorm += v * v;
   meanNorm = std::sqrt(meanNorm);
@@ -26,9 +28,10 @@ std::size_t embeddingSearchVoxel(const FeatureGrid& f, const std::vector<float>&
       norm += x[c] * x[c];
       l2 += (x[c] - mean[c]) * (x[c] - mean[c]);
     }
-    const double score = metric == EmbeddingMetric::Cosine
-                             ? (norm > 0 && meanNorm > 0 ? dot / (std::sqrt(norm) * meanNorm) : -1.0)
-                             : -l2;
+    const double score =
+        metric == EmbeddingMetric::Cosine
+            ? (norm > 0 && meanNorm > 0 ? dot / (std::sqrt(norm) * meanNorm) : -1.0)
+            : -l2;
     if (score > bestScore) bestScore = score, best = v;
   }
   return best;

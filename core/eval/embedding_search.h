@@ -14,7 +14,7 @@ enum class EmbeddingMetric { Cosine, L2 };
 
 // Index into features.voxels of the best-matching voxel. Throws InvalidArgument when the
 // feature length differs from the mean's or the grid is empty.
-std::size_t embeddingSearchVoxel(const FeatureGrid& features, const std::vector<float>& affordanceMean,
-                                 EmbeddingMetric metric);
+std::size_t embeddingSearchVoxel(const FeatureGrid& features,
+                                 const std::vector<float>& affordanceMean, EmbeddingMetric metric);
 
 }  // namespace sagrid

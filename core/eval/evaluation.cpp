@@ -27,8 +27,8 @@ const char* const kPaperOrder[] = {"sink.togglebutton", "sink.fluidsource", "sto
                                    "stove.heatsource"};
 
 enum Method { kArgmin, kRefined, kAuto, kKMeans, kCosine, kL2, kMethodCount };
-const char* const kMethodNames[] = {"SAGrid argmin (paper)", "SAGrid argmin refined", "SAGrid auto count",
-                                    "SAGrid k-means, true count",
+const char* const kMethodNames[] = {"SAGrid argmin (paper)",   "SAGrid argmin refined",
+                                    "SAGrid auto count",       "SAGrid k-means, true count",
                                     "Embedding search cosine", "Embedding search L2"};
 
 std::string formatValue(double v, const char* format) {
@@ -50,9 +50,11 @@ std::string paperColumnName(const std::string& name) {
 
 EvaluationReport evaluateModels(const ModelSet& models, const EvaluationOptions& options) {
   EvaluationReport report;
-  report.dataDir = fs::is_directory(options.dataDir / "val") ? options.dataDir / "val" : options.dataDir;
+  report.dataDir =
+      fs::is_directory(options.dataDir / "val") ? options.dataDir / "val" : options.dataDir;
   const auto entries = readDataset(report.dataDir);
-  if (entries.empty()) throw InvalidArgument("dataset " + report.dataDir.string() + " has no objects");
+  if (entries.empty())
+    throw InvalidArgument("dataset " + report.dataDir.string() + " has no objects");
   FeatureOptions features = options.features;
   if (features.cacheDir.empty()) features.cacheDir = options.dataDir / ".sagrid-cache";
 
@@ -60,7 +62,8 @@ EvaluationReport evaluateModels(const ModelSet& models, const EvaluationOptions&
     for (const auto& m : models.models())
       if (m.card().name == name) report.modelNames.push_back(name);
   for (const auto& m : models.models())
-    if (std::find(report.modelNames.begin(), report.modelNames.end(), m.card().name) == report.modelNames.end())
+    if (std::find(report.modelNames.begin(), report.modelNames.end(), m.card().name) ==
+        report.modelNames.end())
       report.modelNames.push_back(m.card().name);
 
   std::vector<std::map<std::string, TypeMetricsAccumulator>> acc(kMethodCount);
@@ -105,16 +108,22 @@ EvaluationReport evaluateModels(const ModelSet& models, const EvaluationOptions&
         };
         ExtractionSettings paper = card.extraction;
         paper.refineVoxels = 0;  // the paper's argmin: a voxel centre
-        record(kArgmin, surfaceOf(predictWithModel(*model, grid, scene, mesh.fileUp, InstanceMode::Single, 1, &paper)));
-        record(kRefined, surfaceOf(predictWithModel(*model, grid, scene, mesh.fileUp, InstanceMode::Single)));
-        record(kAuto, surfaceOf(predictWithModel(*model, grid, scene, mesh.fileUp, InstanceMode::Auto)));
-        record(kKMeans, surfaceOf(predictWithModel(*model, grid, scene, mesh.fileUp, InstanceMode::Count,
-                                                   static_cast<int>(truth.size()))));
+        record(kArgmin, surfaceOf(predictWithModel(*model, grid, scene, mesh.fileUp,
+                                                   InstanceMode::Single, 1, &paper)));
+        record(kRefined,
+               surfaceOf(predictWithModel(*model, grid, scene, mesh.fileUp, InstanceMode::Single)));
+        record(kAuto,
+               surfaceOf(predictWithModel(*model, grid, scene, mesh.fileUp, InstanceMode::Auto)));
+        record(kKMeans,
+               surfaceOf(predictWithModel(*model, grid, scene, mesh.fileUp, InstanceMode::Count,
+                                          static_cast<int>(truth.size()))));
         for (Method m : {kCosine, kL2}) {
-          const std::size_t v = embeddingSearchVoxel(
-              grid, card.affordanceFeatureMean, m == kCosine ? EmbeddingMetric::Cosine : EmbeddingMetric::L2);
-          record(m, {projectToSurface(voxelCenter(grid.voxels[v], grid.resolution), grid.normalization, scene,
-                                      mesh.fileUp).position});
+          const std::size_t v =
+              embeddingSearchVoxel(grid, card.affordanceFeatureMean,
+                                   m == kCosine ? EmbeddingMetric::Cosine : EmbeddingMetric::L2);
+          record(m, {projectToSurface(voxelCenter(grid.voxels[v], grid.resolution),
+                                      grid.normalization, scene, mesh.fileUp)
+                         .position});
         }
         nlohmann::json t = nlohmann::json::array();
         for (const auto& p : truth) t.push_back({p.x(), p.y(), p.z()});
@@ -131,7 +140,8 @@ EvaluationReport evaluateModels(const ModelSet& models, const EvaluationOptions&
   }
   if (options.onProgress) options.onProgress(entries.size(), entries.size(), "");
   if (report.objects == 0)
-    throw InvalidArgument("dataset " + report.dataDir.string() + " has no object of a category the models know");
+    throw InvalidArgument("dataset " + report.dataDir.string() +
+                          " has no object of a category the models know");
   report.modelMilliseconds = 1000.0 * modelSeconds / report.objects;
   report.meanOccupiedVoxels /= static_cast<double>(report.objects);
   for (int m = 0; m < kMethodCount; ++m) {
@@ -175,9 +185,11 @@ std::string evaluationMarkdown(const EvaluationReport& r) {
       const auto it = m.byModel.find(n);
       if (it == m.byModel.end()) continue;
       const TypeMetrics& t = it->second;
-      md << "| " << m.method << " | " << n << " | " << t.objects << " | " << formatValue(t.matchedError, "%.4f")
-         << " | " << formatValue(100 * t.precision, "%.1f %%") << " | " << formatValue(100 * t.recall, "%.1f %%")
-         << " | " << formatValue(100 * t.countRight, "%.1f %%") << " |\n";
+      md << "| " << m.method << " | " << n << " | " << t.objects << " | "
+         << formatValue(t.matchedError, "%.4f") << " | "
+         << formatValue(100 * t.precision, "%.1f %%") << " | "
+         << formatValue(100 * t.recall, "%.1f %%") << " | "
+         << formatValue(100 * t.countRight, "%.1f %%") << " |\n";
     }
   return md.str();
 }
@@ -189,7 +201,9 @@ nlohmann::json evaluationJson(const EvaluationReport& r) {
   j["failed"] = r.failed;
   j["model_ms_per_object"] = r.modelMilliseconds;
   j["models"] = r.modelNames;
-  auto number = [](double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); };
+  auto number = [](double v) {
+    return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr);
+  };
   for (const auto& m : r.methods)
     for (const auto& [name, t] : m.byModel)
       j["methods"][m.method][name] = {{"objects", t.objects},

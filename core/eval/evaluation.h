@@ -8,10 +8,9 @@
 #include <filesystem>
 #include <functional>
 #include <map>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
-
-#include <nlohmann/json.hpp>
 
 #include "core/annotate/model_set.h"
 #include "core/eval/metrics.h"
@@ -19,8 +18,8 @@
 namespace sagrid {
 
 struct EvaluationOptions {
-  std::filesystem::path dataDir;   // a dataset; when it has a val/ split, that is used
-  FeatureOptions features;         // from the models; cacheDir empty = DATA/.sagrid-cache
+  std::filesystem::path dataDir;  // a dataset; when it has a val/ split, that is used
+  FeatureOptions features;        // from the models; cacheDir empty = DATA/.sagrid-cache
   std::function<void(std::size_t, std::size_t, const std::string&)> onProgress;
 };
 
@@ -31,13 +30,13 @@ struct MethodMetrics {
 
 struct EvaluationReport {
   std::filesystem::path dataDir;
-  std::size_t objects = 0;   // evaluated (of a category with models)
-  std::size_t failed = 0;    // could not be evaluated (import/features), logged
+  std::size_t objects = 0;              // evaluated (of a category with models)
+  std::size_t failed = 0;               // could not be evaluated (import/features), logged
   std::vector<std::string> modelNames;  // columns, in the paper's order where known
   std::vector<MethodMetrics> methods;
   double meanOccupiedVoxels = 0;
-  double modelMilliseconds = 0;   // mean per object: all models of the category + auto extraction
-                                  // + projection, features cached
+  double modelMilliseconds = 0;  // mean per object: all models of the category + auto extraction
+                                 // + projection, features cached
   nlohmann::json perObject = nlohmann::json::array();
 };
 

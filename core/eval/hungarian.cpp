@@ -14,13 +14,16 @@ std::vector<int> hungarianAssignment(const std::vector<std::vector<double>>& inp
   for (const auto& r : input) {
     if (r.size() != cols) throw InvalidArgument("assignment: cost matrix rows differ in length");
     for (double v : r)
-      if (!std::isfinite(v)) throw InvalidArgument("assignment: cost matrix has a non-finite value");
+      if (!std::isfinite(v))
+        throw InvalidArgument("assignment: cost matrix has a non-finite value");
   }
   if (cols == 0) return std::vector<int>(rows, -1);
   // The classic formulation needs n <= m; transpose when there are more rows than columns.
   const bool transposed = rows > cols;
   const std::size_t n = transposed ? cols : rows, m = transposed ? rows : cols;
-  auto cost = [&](std::size_t i, std::size_t j) { return transposed ? input[j - 1][i - 1] : input[i - 1][j - 1]; };
+  auto cost = [&](std::size_t i, std::size_t j) {
+    return transposed ? input[j - 1][i - 1] : input[i - 1][j - 1];
+  };
   const double inf = std::numeric_limits<double>::infinity();
   std::vector<double> u(n + 1, 0), v(m + 1, 0);
   std::vector<std::size_t> p(m + 1, 0), way(m + 1, 0);
@@ -41,8 +44,10 @@ std::vector<int> hungarianAssignment(const std::vector<std::vector<double>>& inp
         if (minv[j] < delta) delta = minv[j], j1 = j;
       }
       for (std::size_t j = 0; j <= m; ++j) {
-        if (used[j]) u[p[j]] += delta, v[j] -= delta;
-        else minv[j] -= delta;
+        if (used[j])
+          u[p[j]] += delta, v[j] -= delta;
+        else
+          minv[j] -= delta;
       }
       j0 = j1;
     } while (p[j0] != 0);
@@ -55,8 +60,10 @@ std::vector<int> hungarianAssignment(const std::vector<std::vector<double>>& inp
   std::vector<int> result(rows, -1);
   for (std::size_t j = 1; j <= m; ++j) {
     if (p[j] == 0) continue;
-    if (transposed) result[j - 1] = static_cast<int>(p[j] - 1);
-    else result[p[j] - 1] = static_cast<int>(j - 1);
+    if (transposed)
+      result[j - 1] = static_cast<int>(p[j] - 1);
+    else
+      result[p[j] - 1] = static_cast<int>(j - 1);
   }
   return result;
 }

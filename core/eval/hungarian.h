@@ -8,7 +8,8 @@ namespace sagrid {
 
 // `cost` is rows x cols (rectangular allowed, every row the same length). Returns, for each row,
 // the matched column or -1 (when rows > cols, rows - cols rows stay unmatched). The total cost of
-// the min(rows, cols) matched pairs is minimal. Throws InvalidArgument on ragged or non-finite input.
+// the min(rows, cols) matched pairs is minimal. Throws InvalidArgument on ragged or non-finite
+// input.
 std::vector<int> hungarianAssignment(const std::vector<std::vector<double>>& cost);
 
 }  // namespace sagrid

@@ -54,8 +54,9 @@ TypeMetrics TypeMetricsAccumulator::result() const {
   TypeMetrics r;
   r.objects = std::max(m_singles, m_matches);
   r.paperError = m_singles ? m_singleSum / m_singles : nan;
-  r.matchedError = m_errors.empty() ? nan
-                                    : std::accumulate(m_errors.begin(), m_errors.end(), 0.0) / m_errors.size();
+  r.matchedError = m_errors.empty()
+                       ? nan
+                       : std::accumulate(m_errors.begin(), m_errors.end(), 0.0) / m_errors.size();
   r.precision = m_predicted ? static_cast<double>(m_tp) / m_predicted : nan;
   r.recall = m_truth ? static_cast<double>(m_tp) / m_truth : nan;
   r.countRight = m_matches ? static_cast<double>(m_right) / m_matches : nan;

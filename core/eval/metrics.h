@@ -4,9 +4,8 @@
 // and recall within a radius, share of objects with the right count). Distances in metres.
 #pragma once
 
-#include <vector>
-
 #include <Eigen/Core>
+#include <vector>
 
 namespace sagrid {
 
@@ -29,17 +28,17 @@ ObjectMatch matchPoints(const std::vector<Eigen::Vector3f>& predicted,
 // Aggregates over the objects of one type.
 struct TypeMetrics {
   std::size_t objects = 0;
-  double paperError = 0;      // mean over objects of nearestDistance(single prediction)
-  double matchedError = 0;    // mean over all matched pairs
-  double precision = 0;       // true positives / predicted points
-  double recall = 0;          // true positives / ground-truth points
-  double countRight = 0;      // share of objects with predicted == truth count
+  double paperError = 0;    // mean over objects of nearestDistance(single prediction)
+  double matchedError = 0;  // mean over all matched pairs
+  double precision = 0;     // true positives / predicted points
+  double recall = 0;        // true positives / ground-truth points
+  double countRight = 0;    // share of objects with predicted == truth count
 };
 
 class TypeMetricsAccumulator {
  public:
-  void addSingle(double nearestError);   // the paper's single-point prediction of one object
-  void addMatch(const ObjectMatch& m);   // the multi-instance prediction of one object
+  void addSingle(double nearestError);  // the paper's single-point prediction of one object
+  void addMatch(const ObjectMatch& m);  // the multi-instance prediction of one object
   TypeMetrics result() const;
 
  private:

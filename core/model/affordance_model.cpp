@@ -67,9 +67,8 @@ void deserializeWeights(SAGridNet& net, const std::string& bytes, const std::str
       throw FileError(name, "weights file is corrupt (cannot read \"" + key + "\")");
     }
     if (value.sizes() != target.sizes())
-      throw ModelError(name + ": weights \"" + key + "\" have shape " +
-                       c10::str(value.sizes()) + " but the card's architecture needs " +
-                       c10::str(target.sizes()));
+      throw ModelError(name + ": weights \"" + key + "\" have shape " + c10::str(value.sizes()) +
+                       " but the card's architecture needs " + c10::str(target.sizes()));
     target.copy_(value);
   };
   for (auto& p : net->named_parameters()) restore(p.key(), p.value(), false);
@@ -136,12 +135,14 @@ std::vector<float> AffordanceModel::predictDistances(const FeatureGrid& features
   const NetworkBatch batch =
       makeNetworkBatch({&object}, m_impl->shape, m_impl->mode, m_impl->device);
   // The network regresses D = log(1 + distance); report distances.
-  const torch::Tensor d = torch::expm1(m_impl->net->forward(batch, m_impl->mode)).cpu().contiguous();
+  const torch::Tensor d =
+      torch::expm1(m_impl->net->forward(batch, m_impl->mode)).cpu().contiguous();
   return std::vector<float>(d.data_ptr<float>(), d.data_ptr<float>() + d.numel());
 }
 
 double AffordanceModel::forwardMacs(std::int64_t occupiedVoxels, bool dense) const {
-  return model::forwardMacs(m_impl->shape, dense ? ExecutionMode::Dense : m_impl->mode, occupiedVoxels);
+  return model::forwardMacs(m_impl->shape, dense ? ExecutionMode::Dense : m_impl->mode,
+                            occupiedVoxels);
 }
 
 std::int64_t AffordanceModel::parameterCount() const {

@@ -46,7 +46,8 @@ Architecture Architecture::parse(const std::string& text) {
       std::size_t start = pos;
       if (pos < text.size() && (text[pos] == '-' || text[pos] == '+')) ++pos;
       while (pos < text.size() && std::isdigit(static_cast<unsigned char>(text[pos]))) ++pos;
-      if (start == pos || (pos - start == 1 && !std::isdigit(static_cast<unsigned char>(text[start]))))
+      if (start == pos ||
+          (pos - start == 1 && !std::isdigit(static_cast<unsigned char>(text[start]))))
         fail(text, where + ": expected an integer at position " + std::to_string(start + 1));
       if (pos - start > 7) fail(text, where + ": number too large");
       values.push_back(std::stol(text.substr(start, pos - start)));
@@ -71,8 +72,8 @@ Architecture Architecture::parse(const std::string& text) {
     if (layer.kernel < 1 || layer.kernel % 2 == 0)
       fail(text, where + ": kernel must be odd and positive, got " + std::to_string(layer.kernel));
     if (layer.outChannels < 1 || layer.outChannels > 4096)
-      fail(text, where + ": out_channels must be in 1..4096, got " +
-                     std::to_string(layer.outChannels));
+      fail(text,
+           where + ": out_channels must be in 1..4096, got " + std::to_string(layer.outChannels));
     if (layer.dilation < 1 || layer.dilation > 16)
       fail(text, where + ": dilation must be in 1..16, got " + std::to_string(layer.dilation));
     const int same = layer.dilation * (layer.kernel - 1) / 2;
@@ -84,7 +85,8 @@ Architecture Architecture::parse(const std::string& text) {
     arch.layers.push_back(layer);
     skipSpace();
     if (pos == text.size()) break;
-    if (text[pos] != ',') fail(text, "expected ',' between layers at position " + std::to_string(pos + 1));
+    if (text[pos] != ',')
+      fail(text, "expected ',' between layers at position " + std::to_string(pos + 1));
     ++pos;
   }
   if (arch.layers.size() > 32) fail(text, "more than 32 layers");

@@ -140,10 +140,12 @@ std::vector<fs::path> listModelCards(const fs::path& directory) {
   if (!fs::is_directory(directory)) throw FileError(directory, "model directory not found");
   std::vector<fs::path> cards;
   for (const auto& entry : fs::directory_iterator(directory))
-    if (entry.is_regular_file() && entry.path().extension() == ".json") cards.push_back(entry.path());
+    if (entry.is_regular_file() && entry.path().extension() == ".json")
+      cards.push_back(entry.path());
   std::sort(cards.begin(), cards.end());
   if (cards.empty())
-    throw ModelError(directory.string() + ": no model cards (*.json); train models with "
+    throw ModelError(directory.string() +
+                     ": no model cards (*.json); train models with "
                      "`sagrid train` or use --models");
   return cards;
 }

@@ -7,10 +7,9 @@
 #pragma once
 
 #include <filesystem>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
-
-#include <nlohmann/json.hpp>
 
 #include "core/points/point_extraction.h"
 
@@ -33,14 +32,14 @@ struct ModelCard {
   int featureChannels = 0;
   int descriptorSize = 0;
   int gridResolution = 64;
-  std::string weightsFile;    // relative to the card
+  std::string weightsFile;  // relative to the card
   std::string weightsSha256;
-  std::vector<float> descriptorMean;  // mean descriptor of the category's training objects
+  std::vector<float> descriptorMean;         // mean descriptor of the category's training objects
   std::vector<float> affordanceFeatureMean;  // mean voxel feature at training affordances
   ExtractionSettings extraction;
   nlohmann::json training = nlohmann::json::object();  // data, command, objects, epochs, time...
   nlohmann::json metrics = nlohmann::json::object();
-  nlohmann::json extra = nlohmann::json::object();     // unknown fields, kept on rewrite
+  nlohmann::json extra = nlohmann::json::object();  // unknown fields, kept on rewrite
 
   // Throws ModelError naming what differs when the features were not made the way the model
   // was trained (backend, config hash, channel count, descriptor size, grid size).

@@ -24,9 +24,10 @@ torch::Tensor descriptorTapVectors(const torch::Tensor& weight, std::int64_t fir
   const auto d = descriptors.size(1);
   const auto cout = weight.size(0);
   const auto t = weight.size(2) * weight.size(3) * weight.size(4);
-  torch::Tensor wd = weight.narrow(1, firstDescriptorChannel, d)   // (Cout, D, k, k, k)
+  torch::Tensor wd = weight
+                         .narrow(1, firstDescriptorChannel, d)  // (Cout, D, k, k, k)
                          .permute({2, 3, 4, 0, 1})
-                         .reshape({t * cout, d});                 // (T * Cout, D)
+                         .reshape({t * cout, d});  // (T * Cout, D)
   return descriptors.mm(wd.t()).view({descriptors.size(0), t, cout});
 }
 
@@ -61,7 +62,9 @@ class SparseConvolutionFunction : public torch::autograd::Function<SparseConvolu
     }
     if (ctx->needs_input_grad(1)) {
       // Recomputing the gathered input is cheaper than keeping it alive between passes.
-      gradW = gatherTaps(x, rows).t().mm(grad)  // (taps * Cin, Cout)
+      gradW = gatherTaps(x, rows)
+                  .t()
+                  .mm(grad)  // (taps * Cin, Cout)
                   .view({weight.size(2), weight.size(3), weight.size(4), cin, cout})
                   .permute({4, 3, 0, 1, 2})
                   .contiguous();
@@ -72,8 +75,8 @@ class SparseConvolutionFunction : public torch::autograd::Function<SparseConvolu
 
 }  // namespace
 
-torch::Tensor sparseConvolution(const torch::Tensor& x, const torch::Tensor& weight, const torch::Tensor& rows,
-                                bool reference) {
+torch::Tensor sparseConvolution(const torch::Tensor& x, const torch::Tensor& weight,
+                                const torch::Tensor& rows, bool reference) {
   if (reference) return gatherTaps(x, rows).mm(tapMatrix(weight));
   return SparseConvolutionFunction::apply(x, weight, rows);
 }
@@ -136,8 +139,7 @@ NetworkBatch makeNetworkBatch(const std::vector<const NetworkObject*>& objects,
         for (std::size_t e = 0; e < table.rows.size(); ++e)
           out[e] = table.rows[e] < 0 ? n : table.rows[e] + batch.offsets[o];
       }
-      batch.neighbors[key] =
-          torch::from_blob(rows.data(), {n, t}, longOptions).clone().to(device);
+      batch.neighbors[key] = torch::from_blob(rows.data(), {n, t}, longOptions).clone().to(device);
     }
   }
   return batch;
@@ -246,8 +248,8 @@ torch::Tensor SAGridNetImpl::forwardDense(const NetworkBatch& batch, bool fold) 
       const std::int64_t cout = l.outChannels;
       torch::Tensor perTap = descriptorTapVectors(m_convWeights[0], localChannels,
                                                   batch.descriptors);  // (B, T, Cout)
-      torch::Tensor kernel = perTap.permute({0, 2, 1})
-                                 .reshape({b * cout, 1, l.kernel, l.kernel, l.kernel});
+      torch::Tensor kernel =
+          perTap.permute({0, 2, 1}).reshape({b * cout, 1, l.kernel, l.kernel, l.kernel});
       torch::Tensor inside = torch::ones({1, b, r, r, r}, x.options());
       torch::Tensor shared = torch::conv3d(inside, kernel, {}, 1, l.padding, l.dilation, b);
       y = y + shared.view({b, cout, r, r, r});

@@ -11,11 +11,11 @@
 // (tested), at a fraction of the cost when the descriptor is long (paper: 1024-d).
 #pragma once
 
+#include <torch/torch.h>
+
 #include <map>
 #include <utility>
 #include <vector>
-
-#include <torch/torch.h>
 
 #include "core/grid/voxel_grid.h"
 #include "core/model/architecture.h"
@@ -33,17 +33,17 @@ struct NetworkShape {
 
 // One object as the network sees it (plain data; augmentation happens before this).
 struct NetworkObject {
-  std::vector<VoxelIndex> voxels;   // occupied, unique, inside the grid
-  std::vector<float> features;      // voxels.size() * featureChannels
-  std::vector<float> descriptor;    // descriptorSize
+  std::vector<VoxelIndex> voxels;  // occupied, unique, inside the grid
+  std::vector<float> features;     // voxels.size() * featureChannels
+  std::vector<float> descriptor;   // descriptorSize
 };
 
 // Several objects concatenated along the voxel axis, with what each mode needs.
 struct NetworkBatch {
-  torch::Tensor features;      // (N, C + 1): features and the mask (1 at every occupied voxel)
-  torch::Tensor descriptors;   // (B, D)
+  torch::Tensor features;     // (N, C + 1): features and the mask (1 at every occupied voxel)
+  torch::Tensor descriptors;  // (B, D)
   std::vector<std::int64_t> offsets;  // B + 1 prefix sums of voxel counts
-  torch::Tensor denseIndex;    // (N) int64: b * R^3 + linear voxel index (dense mode)
+  torch::Tensor denseIndex;           // (N) int64: b * R^3 + linear voxel index (dense mode)
   // (kernel, dilation) -> (N, taps) int64 rows into the batch, N = missing (the zero row).
   std::map<std::pair<int, int>, torch::Tensor> neighbors;
   int batchSize() const { return static_cast<int>(offsets.size()) - 1; }
@@ -82,8 +82,8 @@ TORCH_MODULE(SAGridNet);
 // The backward pass is itself a gather + GEMM (the transposed convolution uses the mirrored
 // taps, since the neighbour relation is symmetric) instead of index_select's scatter-add, which
 // is serial and slow on the CPU; `reference` uses plain autograd (for the gradient test).
-torch::Tensor sparseConvolution(const torch::Tensor& x, const torch::Tensor& weight, const torch::Tensor& rows,
-                                bool reference = false);
+torch::Tensor sparseConvolution(const torch::Tensor& x, const torch::Tensor& weight,
+                                const torch::Tensor& rows, bool reference = false);
 
 // Multiply-accumulate operations of one forward pass of one object, counted analytically as this
 // implementation executes them: sparse mode multiplies all taps of the `occupiedVoxels` rows

@@ -17,7 +17,8 @@ NeighborTable buildNeighborTable(const std::vector<VoxelIndex>& voxels, int reso
   auto linear = [&](int i, int j, int k) { return (static_cast<std::size_t>(i) * n + j) * n + k; };
   for (std::size_t v = 0; v < voxels.size(); ++v) {
     const auto& p = voxels[v];
-    if (p.i < 0 || p.j < 0 || p.k < 0 || p.i >= resolution || p.j >= resolution || p.k >= resolution)
+    if (p.i < 0 || p.j < 0 || p.k < 0 || p.i >= resolution || p.j >= resolution ||
+        p.k >= resolution)
       throw InvalidArgument("voxel outside the " + std::to_string(resolution) + "^3 grid");
     slot[linear(p.i, p.j, p.k)] = static_cast<std::int32_t>(v);
   }

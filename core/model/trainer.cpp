@@ -38,7 +38,8 @@ torch::Tensor batchLoss(const torch::Tensor& predicted, const NetworkBatch& batc
       weights[v] = 1.0f / static_cast<float>(count * batch.batchSize());
   }
   const auto device = predicted.device();
-  const torch::Tensor target = torch::from_blob(const_cast<float*>(targets.data()), {n}).clone().to(device);
+  const torch::Tensor target =
+      torch::from_blob(const_cast<float*>(targets.data()), {n}).clone().to(device);
   const torch::Tensor w = torch::from_blob(weights.data(), {n}).clone().to(device);
   return (w * (predicted - target).abs()).sum();
 }
@@ -109,13 +110,15 @@ bool loadCheckpoint(const fs::path& file, SAGridNet& net, torch::optim::AdamW& o
   state.epochsDone = meta.at("epochs_done").get<int>();
   state.epochsTotal = meta.at("epochs_total").get<int>();
   for (const auto& e : meta.at("curve"))
-    state.curve.push_back({e[0].get<int>(), e[1].get<double>(), e[2].get<double>(), e[3].get<double>()});
+    state.curve.push_back(
+        {e[0].get<int>(), e[1].get<double>(), e[2].get<double>(), e[3].get<double>()});
   return true;
 }
 
 }  // namespace
 
-std::vector<EpochRecord> trainModel(AffordanceModel& model, const std::vector<TrainingSample>& samples,
+std::vector<EpochRecord> trainModel(AffordanceModel& model,
+                                    const std::vector<TrainingSample>& samples,
                                     const TrainingOptions& options) {
   if (samples.empty()) throw InvalidArgument("training: no training objects");
   for (const auto& s : samples)
@@ -131,7 +134,8 @@ std::vector<EpochRecord> trainModel(AffordanceModel& model, const std::vector<Tr
   if (options.resume && !options.checkpointFile.empty() &&
       loadCheckpoint(options.checkpointFile, net, optimizer, state, impl.card))
     logger()->info("resuming {} after epoch {}", impl.card.name, state.epochsDone);
-  if (state.epochsTotal == 0) state.epochsTotal = options.epochs > 0 ? options.epochs : kDefaultEpochs;
+  if (state.epochsTotal == 0)
+    state.epochsTotal = options.epochs > 0 ? options.epochs : kDefaultEpochs;
   const bool timed = options.epochs <= 0 && options.minutes > 0 && state.epochsDone == 0;
 
   const int batchSize = std::max(1, options.batchSize);
@@ -154,7 +158,8 @@ std::vector<EpochRecord> trainModel(AffordanceModel& model, const std::vector<Tr
       if (options.cancel && options.cancel->load()) throw Cancelled();
       if (timed && epoch == 1 && step > 0) {
         // Until the first epoch is timed, plan (schedule, progress) from the steps so far.
-        const double perEpoch = elapsed() / static_cast<double>(step) * static_cast<double>(stepsPerEpoch);
+        const double perEpoch =
+            elapsed() / static_cast<double>(step) * static_cast<double>(stepsPerEpoch);
         state.epochsTotal = std::max(1, static_cast<int>(options.minutes * 60.0 / perEpoch));
       }
       // Cosine schedule over all steps of the run, from learningRate down to 1% of it.
@@ -167,10 +172,11 @@ std::vector<EpochRecord> trainModel(AffordanceModel& model, const std::vector<Tr
       std::vector<TrainingSample> augmented;
       std::vector<NetworkObject> objects;
       std::vector<float> targets;
-      for (std::size_t b = step * batchSize; b < std::min(samples.size(), (step + 1) * batchSize); ++b) {
+      for (std::size_t b = step * batchSize; b < std::min(samples.size(), (step + 1) * batchSize);
+           ++b) {
         const TrainingSample& s = samples[order[b]];
-        TrainingSample a = augment(s, randomAugmentation(s, options.augmentation, rng),
-                                   options.vectorChannels);
+        TrainingSample a =
+            augment(s, randomAugmentation(s, options.augmentation, rng), options.vectorChannels);
         if (a.voxels.empty() || a.targets.empty()) a = s;
         const auto d = distanceTargets(a);
         targets.insert(targets.end(), d.begin(), d.end());
@@ -206,8 +212,8 @@ std::vector<EpochRecord> trainModel(AffordanceModel& model, const std::vector<Tr
     if (!options.checkpointFile.empty()) {
       const auto saveStart = Clock::now();
       saveCheckpoint(options.checkpointFile, net, optimizer, state, impl.card);
-      logger()->info("{}: epoch {} loss {:.5f}, checkpoint written in {:.2f} s", impl.card.name, epoch,
-                     state.curve.back().loss,
+      logger()->info("{}: epoch {} loss {:.5f}, checkpoint written in {:.2f} s", impl.card.name,
+                     epoch, state.curve.back().loss,
                      std::chrono::duration<double>(Clock::now() - saveStart).count());
     }
   }

@@ -16,12 +16,12 @@
 namespace sagrid::model {
 
 struct TrainingProgress {
-  int epoch = 0;            // 1-based, current epoch
+  int epoch = 0;  // 1-based, current epoch
   int epochs = 0;
-  std::size_t step = 0;     // steps done in total
-  std::size_t steps = 0;    // total steps (known after the first epoch when timed)
-  double loss = 0;          // running mean loss of the current epoch
-  double seconds = 0;       // elapsed
+  std::size_t step = 0;   // steps done in total
+  std::size_t steps = 0;  // total steps (known after the first epoch when timed)
+  double loss = 0;        // running mean loss of the current epoch
+  double seconds = 0;     // elapsed
 };
 
 struct EpochRecord {
@@ -32,16 +32,16 @@ struct EpochRecord {
 };
 
 struct TrainingOptions {
-  int epochs = 0;           // 0: from `minutes` (timed on the first epoch), else 40
-  double minutes = 0;       // time budget; used only when epochs == 0
+  int epochs = 0;      // 0: from `minutes` (timed on the first epoch), else 40
+  double minutes = 0;  // time budget; used only when epochs == 0
   int batchSize = 4;
   double learningRate = 3e-3;
   double weightDecay = 1e-4;
   unsigned seed = 1;
   AugmentationRanges augmentation;
   std::vector<std::array<int, 3>> vectorChannels;  // rotated with the grid (normals)
-  std::filesystem::path checkpointFile;  // written after every epoch; empty = none
-  bool resume = false;                   // continue from checkpointFile when it exists
+  std::filesystem::path checkpointFile;            // written after every epoch; empty = none
+  bool resume = false;                             // continue from checkpointFile when it exists
   std::function<void(const TrainingProgress&)> onProgress;
   const std::atomic<bool>* cancel = nullptr;  // throws Cancelled after saving a checkpoint
 };

@@ -24,14 +24,16 @@ namespace {
 
 const Color kAxis{40, 40, 40};
 const Color kGrid{225, 225, 225};
-const Color kPalette[] = {{31, 119, 180}, {255, 127, 14}, {44, 160, 44}, {214, 39, 40},
-                          {148, 103, 189}, {140, 86, 75}, {227, 119, 194}, {127, 127, 127}};
+const Color kPalette[] = {{31, 119, 180},  {255, 127, 14}, {44, 160, 44},   {214, 39, 40},
+                          {148, 103, 189}, {140, 86, 75},  {227, 119, 194}, {127, 127, 127}};
 
 std::string formatTick(double v) {
   char buffer[32];
   const double a = std::abs(v);
-  if (a != 0 && (a < 1e-3 || a >= 1e5)) std::snprintf(buffer, sizeof buffer, "%.1e", v);
-  else std::snprintf(buffer, sizeof buffer, "%.4g", v);
+  if (a != 0 && (a < 1e-3 || a >= 1e5))
+    std::snprintf(buffer, sizeof buffer, "%.1e", v);
+  else
+    std::snprintf(buffer, sizeof buffer, "%.4g", v);
   return buffer;
 }
 
@@ -52,7 +54,8 @@ void writePng(const std::filesystem::path& file, const Canvas& canvas) {
 
 Canvas::Canvas(int width, int height, Color background)
     : m_width(width), m_height(height), m_rgb(static_cast<std::size_t>(width) * height * 3) {
-  for (std::size_t i = 0; i < m_rgb.size(); i += 3) std::copy(background.begin(), background.end(), &m_rgb[i]);
+  for (std::size_t i = 0; i < m_rgb.size(); i += 3)
+    std::copy(background.begin(), background.end(), &m_rgb[i]);
 }
 
 void Canvas::set(int x, int y, Color c) {
@@ -110,7 +113,8 @@ std::string Canvas::encodePng() const {
   return out;
 }
 
-void writeLinePlotPng(const std::filesystem::path& file, const LinePlot& plot, int width, int height) {
+void writeLinePlotPng(const std::filesystem::path& file, const LinePlot& plot, int width,
+                      int height) {
   double xMin = std::numeric_limits<double>::max(), xMax = -xMin, yMin = xMin, yMax = -xMin;
   auto ty = [&](double y) { return plot.logY ? std::log10(std::max(y, 1e-12)) : y; };
   for (const auto& s : plot.series)
@@ -157,7 +161,8 @@ void writeLinePlotPng(const std::filesystem::path& file, const LinePlot& plot, i
   writePng(file, c);
 }
 
-void writeBarChartPng(const std::filesystem::path& file, const BarChart& chart, int width, int height) {
+void writeBarChartPng(const std::filesystem::path& file, const BarChart& chart, int width,
+                      int height) {
   if (chart.groups.empty() || chart.methods.empty())
     throw InvalidArgument("bar chart \"" + chart.title + "\": no data");
   double yMax = 0;
@@ -186,7 +191,8 @@ void writeBarChartPng(const std::filesystem::path& file, const BarChart& chart, 
                  static_cast<int>(x0 + (m + 1) * barWidth) - 2, bottom, kPalette[m % 8]);
     }
     const std::string& label = chart.groups[g].label;
-    c.text(static_cast<int>(x0 + groupWidth * 0.4) - Canvas::textWidth(label) / 2, bottom + 8, label, kAxis);
+    c.text(static_cast<int>(x0 + groupWidth * 0.4) - Canvas::textWidth(label) / 2, bottom + 8,
+           label, kAxis);
   }
   c.line(left, top, left, bottom, kAxis);
   c.line(left, bottom, right, bottom, kAxis);

@@ -25,8 +25,8 @@ struct LinePlot {
 };
 
 struct BarGroup {
-  std::string label;            // e.g. an affordance type
-  std::vector<double> values;   // one per method; NaN = missing
+  std::string label;           // e.g. an affordance type
+  std::vector<double> values;  // one per method; NaN = missing
 };
 
 struct BarChart {

@@ -12,7 +12,8 @@ namespace sagrid {
 namespace {
 
 void validate(const PredictedField& field) {
-  if (field.voxels.empty()) throw InvalidArgument("point extraction: the object has no occupied voxels");
+  if (field.voxels.empty())
+    throw InvalidArgument("point extraction: the object has no occupied voxels");
   if (field.voxels.size() != field.distances.size())
     throw InvalidArgument("point extraction: " + std::to_string(field.distances.size()) +
                           " distances for " + std::to_string(field.voxels.size()) + " voxels");
@@ -47,7 +48,8 @@ ExtractedPoint pointAt(const PredictedField& field, std::size_t v, const Extract
   return p;
 }
 
-std::vector<Eigen::Vector3f> centres(const PredictedField& field, const std::vector<std::size_t>& ids) {
+std::vector<Eigen::Vector3f> centres(const PredictedField& field,
+                                     const std::vector<std::size_t>& ids) {
   std::vector<Eigen::Vector3f> out;
   out.reserve(ids.size());
   for (auto v : ids) out.push_back(voxelCenter(field.voxels[v], field.resolution));
@@ -55,8 +57,8 @@ std::vector<Eigen::Vector3f> centres(const PredictedField& field, const std::vec
 }
 
 // k-means with k-means++ seeding; returns assignments of the best of several restarts.
-std::vector<int> kMeans(const std::vector<Eigen::Vector3f>& points, const std::vector<float>& weights,
-                        int k, unsigned seed) {
+std::vector<int> kMeans(const std::vector<Eigen::Vector3f>& points,
+                        const std::vector<float>& weights, int k, unsigned seed) {
   const std::size_t n = points.size();
   std::mt19937 rng(seed);
   std::vector<int> best(n, 0);
@@ -69,7 +71,8 @@ std::vector<int> kMeans(const std::vector<Eigen::Vector3f>& points, const std::v
       double total = 0;
       for (std::size_t i = 0; i < n; ++i) {
         double m = std::numeric_limits<double>::max();
-        for (const auto& c : centers) m = std::min(m, static_cast<double>((points[i] - c).squaredNorm()));
+        for (const auto& c : centers)
+          m = std::min(m, static_cast<double>((points[i] - c).squaredNorm()));
         d2[i] = m * weights[i];
         total += d2[i];
       }
@@ -102,13 +105,15 @@ std::vector<int> kMeans(const std::vector<Eigen::Vector3f>& points, const std::v
       }
       std::vector<Eigen::Vector3f> sum(centers.size(), Eigen::Vector3f::Zero());
       std::vector<float> mass(centers.size(), 0.0f);
-      for (std::size_t i = 0; i < n; ++i) sum[assign[i]] += weights[i] * points[i], mass[assign[i]] += weights[i];
+      for (std::size_t i = 0; i < n; ++i)
+        sum[assign[i]] += weights[i] * points[i], mass[assign[i]] += weights[i];
       for (std::size_t c = 0; c < centers.size(); ++c)
         if (mass[c] > 0) centers[c] = sum[c] / mass[c];
       if (!changed && iteration > 0) break;
     }
     double inertia = 0;
-    for (std::size_t i = 0; i < n; ++i) inertia += weights[i] * (points[i] - centers[assign[i]]).squaredNorm();
+    for (std::size_t i = 0; i < n; ++i)
+      inertia += weights[i] * (points[i] - centers[assign[i]]).squaredNorm();
     if (inertia < bestInertia) bestInertia = inertia, best = assign;
   }
   return best;
@@ -127,7 +132,8 @@ std::vector<std::size_t> localMinima(const PredictedField& field) {
   const std::size_t r = static_cast<std::size_t>(field.resolution);
   std::vector<std::int32_t> slot(r * r * r, -1);
   auto linear = [&](const VoxelIndex& v) { return (v.i * r + v.j) * r + v.k; };
-  for (std::size_t v = 0; v < field.voxels.size(); ++v) slot[linear(field.voxels[v])] = static_cast<std::int32_t>(v);
+  for (std::size_t v = 0; v < field.voxels.size(); ++v)
+    slot[linear(field.voxels[v])] = static_cast<std::int32_t>(v);
   std::vector<std::size_t> minima;
   for (std::size_t v = 0; v < field.voxels.size(); ++v) {
     const VoxelIndex& p = field.voxels[v];
@@ -148,8 +154,9 @@ std::vector<std::size_t> localMinima(const PredictedField& field) {
         }
     if (isMinimum) minima.push_back(v);
   }
-  std::stable_sort(minima.begin(), minima.end(),
-                   [&](std::size_t x, std::size_t y) { return field.distances[x] < field.distances[y]; });
+  std::stable_sort(minima.begin(), minima.end(), [&](std::size_t x, std::size_t y) {
+    return field.distances[x] < field.distances[y];
+  });
   return minima;
 }
 
@@ -212,8 +219,9 @@ std::vector<ExtractedPoint> kMeansPoints(const PredictedField& field, int count,
     out[c].confidence = confidenceOf(out[c].distance, settings);
     result.push_back(out[c]);
   }
-  std::sort(result.begin(), result.end(),
-            [](const ExtractedPoint& a, const ExtractedPoint& b) { return a.distance < b.distance; });
+  std::sort(result.begin(), result.end(), [](const ExtractedPoint& a, const ExtractedPoint& b) {
+    return a.distance < b.distance;
+  });
   return result;
 }
 

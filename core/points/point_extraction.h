@@ -6,9 +6,8 @@
 // calibrated on training objects and stored in the model card. No torch here.
 #pragma once
 
-#include <vector>
-
 #include <Eigen/Core>
+#include <vector>
 
 #include "core/grid/voxel_grid.h"
 

@@ -4,8 +4,9 @@
 
 namespace sagrid {
 
-SurfacePoint projectToSurface(const Eigen::Vector3f& normalizedPoint, const Normalization& normalization,
-                              const SurfaceScene& scene, UpAxis fileUp) {
+SurfacePoint projectToSurface(const Eigen::Vector3f& normalizedPoint,
+                              const Normalization& normalization, const SurfaceScene& scene,
+                              UpAxis fileUp) {
   const Eigen::Vector3f meshPoint = normalization.toMesh(normalizedPoint);
   const ClosestPoint closest = scene.closestPoint(meshPoint);
   SurfacePoint p;

@@ -20,7 +20,8 @@ struct SurfacePoint {
 };
 
 // `scene` must be built from the z-up mesh that `normalization` belongs to.
-SurfacePoint projectToSurface(const Eigen::Vector3f& normalizedPoint, const Normalization& normalization,
-                              const SurfaceScene& scene, UpAxis fileUp);
+SurfacePoint projectToSurface(const Eigen::Vector3f& normalizedPoint,
+                              const Normalization& normalization, const SurfaceScene& scene,
+                              UpAxis fileUp);
 
 }  // namespace sagrid

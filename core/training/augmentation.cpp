@@ -10,7 +10,8 @@ constexpr float kTwoPi = 6.28318530718f;
 
 // The rigid part (rotation, then reflections) on x and y; z is unchanged.
 Eigen::Vector3f rotateFlip(Eigen::Vector3f p, const Augmentation& a) {
-  for (int t = 0; t < ((a.quarterTurns % 4) + 4) % 4; ++t) p = Eigen::Vector3f(-p.y(), p.x(), p.z());
+  for (int t = 0; t < ((a.quarterTurns % 4) + 4) % 4; ++t)
+    p = Eigen::Vector3f(-p.y(), p.x(), p.z());
   if (a.flipX) p.x() = -p.x();
   if (a.flipY) p.y() = -p.y();
   return p;
@@ -42,8 +43,8 @@ Augmentation randomAugmentation(const TrainingSample& s, const AugmentationRange
   if (ranges.warpVoxels > 0 && ranges.warpWaves > 0) {
     // Amplitudes split over the waves; frequencies up to 1.5 cycles per unit keep the warp's
     // gradient (2 pi f A) far below 1, so it stays a smooth, invertible deformation.
-    const float amplitude = ranges.warpVoxels / static_cast<float>(s.resolution) /
-                            static_cast<float>(ranges.warpWaves);
+    const float amplitude =
+        ranges.warpVoxels / static_cast<float>(s.resolution) / static_cast<float>(ranges.warpWaves);
     for (int m = 0; m < ranges.warpWaves; ++m) {
       Augmentation::WarpWave w;
       w.amplitude = Eigen::Vector3f(unit(rng), unit(rng), unit(rng)) * amplitude;
@@ -55,7 +56,8 @@ Augmentation randomAugmentation(const TrainingSample& s, const AugmentationRange
   if (ranges.translate && !s.voxels.empty()) {
     Augmentation rigid = a;
     rigid.warp.clear();
-    Eigen::Vector3i lo = Eigen::Vector3i::Constant(s.resolution), hi = Eigen::Vector3i::Constant(-1);
+    Eigen::Vector3i lo = Eigen::Vector3i::Constant(s.resolution),
+                    hi = Eigen::Vector3i::Constant(-1);
     for (const auto& v : s.voxels) {
       const Eigen::Vector3f p = rotateFlip(voxelCenter(v, s.resolution), rigid);
       const VoxelIndex q = voxelContaining(p, s.resolution);

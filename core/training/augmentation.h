@@ -3,19 +3,18 @@
 // and vector-valued feature channels (normals) move together, so the target field stays exact.
 #pragma once
 
+#include <Eigen/Core>
 #include <array>
 #include <random>
 #include <vector>
-
-#include <Eigen/Core>
 
 #include "core/training/training_sample.h"
 
 namespace sagrid {
 
 struct Augmentation {
-  int quarterTurns = 0;   // about the z axis through the grid centre, counter-clockwise
-  bool flipX = false;     // x -> -x (applied after the rotation)
+  int quarterTurns = 0;  // about the z axis through the grid centre, counter-clockwise
+  bool flipX = false;    // x -> -x (applied after the rotation)
   bool flipY = false;
   Eigen::Vector3i shift = Eigen::Vector3i::Zero();  // whole voxels, applied last
   // Smooth warp p -> p + sum_m amplitude_m * sin(2 pi frequency_m . p + phase_m) (normalized
@@ -34,7 +33,7 @@ struct AugmentationRanges {
   bool rotate = true;
   bool reflect = true;
   bool translate = true;
-  float warpVoxels = 1.5f;   // largest warp displacement, in voxels (0 = no warp)
+  float warpVoxels = 1.5f;  // largest warp displacement, in voxels (0 = no warp)
   int warpWaves = 3;
 };
 

@@ -43,7 +43,8 @@ void writeLossCurve(const fs::path& csv, const fs::path& png, const std::string&
                     const std::vector<model::EpochRecord>& curve) {
   std::ostringstream out;
   out << "epoch,loss,learning_rate,seconds\n";
-  for (const auto& e : curve) out << e.epoch << ',' << e.loss << ',' << e.learningRate << ',' << e.seconds << '\n';
+  for (const auto& e : curve)
+    out << e.epoch << ',' << e.loss << ',' << e.learningRate << ',' << e.seconds << '\n';
   writeFileAtomic(csv, out.str());
   plot::LinePlot p;
   p.title = name + " training loss";
@@ -86,7 +87,8 @@ DatasetTrainingResult trainFromDataset(const DatasetTrainingOptions& options) {
     const DatasetEntry& entry = entries[e];
     if (options.onFeatureProgress) options.onFeatureProgress(e, entries.size(), entry.id);
     ObjectLabels labels = readLabels(entry.labels);
-    const std::string objectCategory = entry.category.empty() ? labels.object.category : entry.category;
+    const std::string objectCategory =
+        entry.category.empty() ? labels.object.category : entry.category;
     if (objectCategory != category) continue;
     ++ofCategory;
     if (labels.ofType(type).empty()) {
@@ -124,19 +126,23 @@ DatasetTrainingResult trainFromDataset(const DatasetTrainingOptions& options) {
   card.name = options.modelName;
   card.category = category;
   card.type = type;
-  card.architecture = model::Architecture::parse(
-      options.architecture.empty() ? model::kDefaultArchitecture : options.architecture).toString();
+  card.architecture =
+      model::Architecture::parse(options.architecture.empty() ? model::kDefaultArchitecture
+                                                              : options.architecture)
+          .toString();
   card.mode = model::toString(model::parseExecutionMode(options.mode));
   card.featureBackend = features.backend;
   card.featureConfigHash = configHash;
   card.featureChannels = samples.front().channels;
   card.descriptorSize = static_cast<int>(samples.front().descriptor.size());
   card.gridResolution = samples.front().resolution;
-  for (double v : descriptorSum) card.descriptorMean.push_back(static_cast<float>(v / samples.size()));
+  for (double v : descriptorSum)
+    card.descriptorMean.push_back(static_cast<float>(v / samples.size()));
   std::vector<double> featureSum(card.featureChannels, 0.0);
   std::size_t featureCount = 0;
   for (const auto& s : samples) addAffordanceFeatures(s, featureSum, featureCount);
-  for (double v : featureSum) card.affordanceFeatureMean.push_back(static_cast<float>(v / featureCount));
+  for (double v : featureSum)
+    card.affordanceFeatureMean.push_back(static_cast<float>(v / featureCount));
 
   fs::create_directories(options.outDir);
   result.cardFile = options.outDir / (options.modelName + ".json");
@@ -195,7 +201,8 @@ DatasetTrainingResult trainFromDataset(const DatasetTrainingOptions& options) {
   c.metrics["train_argmin_error_normalized"] = argminError / samples.size();
   net.save(result.cardFile);
   writeLossCurve(options.outDir / (options.modelName + ".loss.csv"),
-                 options.outDir / (options.modelName + ".loss.png"), options.modelName, result.curve);
+                 options.outDir / (options.modelName + ".loss.png"), options.modelName,
+                 result.curve);
   std::error_code ignored;
   fs::remove(training.checkpointFile, ignored);  // finished: the weights are saved
   result.card = net.card();

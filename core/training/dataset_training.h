@@ -18,7 +18,7 @@ namespace sagrid {
 
 struct DatasetTrainingOptions {
   std::filesystem::path dataDir;
-  std::string modelName;  // "<category>.<type>"
+  std::string modelName;     // "<category>.<type>"
   std::string architecture;  // empty = kDefaultArchitecture
   std::string mode = "sparse";
   model::TrainingOptions training;  // epochs / minutes / seed / batch size / resume ...

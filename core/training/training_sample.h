@@ -4,10 +4,9 @@
 // (paper, Section III-C). Plain C++: the trainer turns samples into tensors.
 #pragma once
 
+#include <Eigen/Core>
 #include <string>
 #include <vector>
-
-#include <Eigen/Core>
 
 #include "core/features/feature_grid.h"
 #include "core/grid/voxel_grid.h"
@@ -20,7 +19,7 @@ struct TrainingSample {
   int resolution = kDefaultGridResolution;
   int channels = 0;
   std::vector<VoxelIndex> voxels;
-  std::vector<float> features;       // voxels.size() * channels
+  std::vector<float> features;  // voxels.size() * channels
   std::vector<float> descriptor;
   std::vector<Eigen::Vector3f> targets;  // ground truth, normalized frame (z up)
 };

@@ -26,7 +26,8 @@ Fixture& fixture() {
     x.models = std::make_unique<sagrid::ModelSet>(
         sagrid::ModelSet::load(fs::path(SAGRID_SOURCE_DIR) / "resources" / "models"));
     const fs::path dir = fs::temp_directory_path() / "sagrid-annotate-bench";
-    sagrid::gen::generateDataset({{"stove", 1, 4242}, {"sink", 1, 4242}}, sagrid::gen::MeshFormat::Obj, dir);
+    sagrid::gen::generateDataset({{"stove", 1, 4242}, {"sink", 1, 4242}},
+                                 sagrid::gen::MeshFormat::Obj, dir);
     for (const auto& e : sagrid::readDataset(dir)) {
       x.meshes.push_back(sagrid::importMesh(e.mesh));
       x.features.push_back(sagrid::computeFeatures(x.meshes.back(), x.models->featureOptions()));
@@ -43,7 +44,8 @@ void BM_FourModelsAndExtraction(benchmark::State& state) {
   for (auto _ : state)
     for (const auto& m : f.models->models())
       benchmark::DoNotOptimize(sagrid::predictWithModel(m, f.features[object], *f.scenes[object],
-                                                        f.meshes[object].fileUp, sagrid::InstanceMode::Auto));
+                                                        f.meshes[object].fileUp,
+                                                        sagrid::InstanceMode::Auto));
   state.SetLabel(std::string(object == 0 ? "stove" : "sink") + ", " +
                  std::to_string(f.features[object].voxels.size()) + " occupied voxels, " +
                  std::to_string(f.models->models().size()) + " models");

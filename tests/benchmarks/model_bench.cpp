@@ -18,7 +18,8 @@ NetworkObject boxSurface() {
   for (int i = 2; i < 62; ++i)
     for (int j = 10; j < 54; ++j)
       for (int k = 6; k < 58; ++k)
-        if (i == 2 || i == 61 || j == 10 || j == 53 || k == 6 || k == 57) o.voxels.push_back({i, j, k});
+        if (i == 2 || i == 61 || j == 10 || j == 53 || k == 6 || k == 57)
+          o.voxels.push_back({i, j, k});
   for (std::size_t v = 0; v < o.voxels.size() * 16; ++v) o.features.push_back(value(rng));
   for (int d = 0; d < 64; ++d) o.descriptor.push_back(value(rng));
   return o;
@@ -32,8 +33,8 @@ NetworkShape shapeFor(const std::string& arch) {
   return s;
 }
 
-const char* const kArchitectures[] = {kDefaultArchitecture, "[3,1,16],[3,2,16,2],[3,4,16,4],[3,1,16]",
-                                      "[3,1,32],[3,1,16]"};
+const char* const kArchitectures[] = {
+    kDefaultArchitecture, "[3,1,16],[3,2,16,2],[3,4,16,4],[3,1,16]", "[3,1,32],[3,1,16]"};
 
 void BM_SparseForward(benchmark::State& state) {
   configureTorchRuntime();
@@ -46,9 +47,11 @@ void BM_SparseForward(benchmark::State& state) {
     const auto batch = makeNetworkBatch({&object}, shape, ExecutionMode::Sparse, torch::kCPU);
     benchmark::DoNotOptimize(net->forward(batch, ExecutionMode::Sparse).sum().item<float>());
   }
-  state.SetLabel(std::string(kArchitectures[state.range(0)]) + ", " + std::to_string(object.voxels.size()) +
-                 " voxels, " + std::to_string(forwardMacs(shape, ExecutionMode::Sparse, object.voxels.size()) / 1e9) +
-                 " GMAC");
+  state.SetLabel(
+      std::string(kArchitectures[state.range(0)]) + ", " + std::to_string(object.voxels.size()) +
+      " voxels, " +
+      std::to_string(forwardMacs(shape, ExecutionMode::Sparse, object.voxels.size()) / 1e9) +
+      " GMAC");
 }
 BENCHMARK(BM_SparseForward)->DenseRange(0, 2)->Unit(benchmark::kMillisecond);
 
@@ -72,7 +75,8 @@ void BM_NeighborTables(benchmark::State& state) {
   const auto object = boxSurface();
   const auto shape = shapeFor(kDefaultArchitecture);
   for (auto _ : state)
-    benchmark::DoNotOptimize(makeNetworkBatch({&object}, shape, ExecutionMode::Sparse, torch::kCPU));
+    benchmark::DoNotOptimize(
+        makeNetworkBatch({&object}, shape, ExecutionMode::Sparse, torch::kCPU));
 }
 BENCHMARK(BM_NeighborTables)->Unit(benchmark::kMillisecond);
 

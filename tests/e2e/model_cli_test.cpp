@@ -1,9 +1,9 @@
 // sagrid train / annotate / filter / eval from the command line: bad input gives one clear error,
 // a directory with a broken mesh is annotated except for that mesh, reports are written.
-#include <fstream>
-
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+
+#include <fstream>
 
 #include "core/generate/dataset_generator.h"
 #include "core/labels/labels.h"
@@ -12,23 +12,24 @@
 namespace sagrid {
 namespace {
 namespace fs = std::filesystem;
-using ::testing::HasSubstr;
 using test::runSagrid;
 using test::shellQuote;
+using ::testing::HasSubstr;
 
-const std::string kModels = shellQuote((fs::path(SAGRID_SOURCE_DIR) / "resources" / "models").string());
+const std::string kModels =
+    shellQuote((fs::path(SAGRID_SOURCE_DIR) / "resources" / "models").string());
 
 TEST(ModelCli, TrainRejectsEmptyDatasetsMissingCategoriesAndBadArchitectures) {
   const fs::path dir = test::freshTempDir();
   fs::create_directories(dir / "empty");
-  auto r = runSagrid("train --data " + shellQuote((dir / "empty").string()) + " --model stove.heatsource --out " +
-                     shellQuote((dir / "m").string()));
+  auto r = runSagrid("train --data " + shellQuote((dir / "empty").string()) +
+                     " --model stove.heatsource --out " + shellQuote((dir / "m").string()));
   EXPECT_EQ(r.exitCode, 1) << r.output;
   EXPECT_THAT(r.output, HasSubstr("has no objects"));
 
   gen::generateDataset({{"sink", 2, 3}}, gen::MeshFormat::Obj, dir / "sinks");
-  r = runSagrid("train --data " + shellQuote((dir / "sinks").string()) + " --model stove.heatsource --out " +
-                shellQuote((dir / "m").string()));
+  r = runSagrid("train --data " + shellQuote((dir / "sinks").string()) +
+                " --model stove.heatsource --out " + shellQuote((dir / "m").string()));
   EXPECT_EQ(r.exitCode, 1) << r.output;
   EXPECT_THAT(r.output, HasSubstr("no stove objects"));
 
@@ -45,9 +46,10 @@ TEST(ModelCli, TrainRejectsEmptyDatasetsMissingCategoriesAndBadArchitectures) {
 TEST(ModelCli, TrainWritesWeightsCardAndLossCurve) {
   const fs::path dir = test::freshTempDir();
   gen::generateDataset({{"sink", 2, 4}}, gen::MeshFormat::Obj, dir / "data");
-  const auto r = runSagrid("train --data " + shellQuote((dir / "data").string()) +
-                           " --model sink.fluidsource --arch '[3,1,4],[3,2,4,2]' --epochs 2 --out " +
-                           shellQuote((dir / "m").string()));
+  const auto r =
+      runSagrid("train --data " + shellQuote((dir / "data").string()) +
+                " --model sink.fluidsource --arch '[3,1,4],[3,2,4,2]' --epochs 2 --out " +
+                shellQuote((dir / "m").string()));
   ASSERT_EQ(r.exitCode, 0) << r.output;
   for (const char* f : {"sink.fluidsource.json", "sink.fluidsource.pt", "sink.fluidsource.loss.csv",
                         "sink.fluidsource.loss.png"})
@@ -60,8 +62,8 @@ TEST(ModelCli, AnnotateReportsABrokenMeshAndCarriesOn) {
   const fs::path dir = test::freshTempDir();
   gen::generateDataset({{"stove", 1, 9}}, gen::MeshFormat::Obj, dir / "in");
   std::ofstream(dir / "in" / "broken.obj") << "v 0 0 0\nf 1 2 3\n";
-  const auto r = runSagrid("annotate " + shellQuote((dir / "in").string()) + " --models " + kModels +
-                           " --out " + shellQuote((dir / "out").string()));
+  const auto r = runSagrid("annotate " + shellQuote((dir / "in").string()) + " --models " +
+                           kModels + " --out " + shellQuote((dir / "out").string()));
   EXPECT_EQ(r.exitCode, 0) << r.output;
   EXPECT_THAT(r.output, HasSubstr("broken.obj: failed"));
   EXPECT_THAT(r.output, HasSubstr("annotated 1 of 2 objects"));
@@ -77,14 +79,16 @@ TEST(ModelCli, AnnotateReportsABrokenMeshAndCarriesOn) {
 TEST(ModelCli, EvalAndFilterWriteTheirReports) {
   const fs::path dir = test::freshTempDir();
   gen::generateDataset({{"stove", 2, 11}, {"sink", 2, 11}}, gen::MeshFormat::Mixed, dir / "data");
-  auto r = runSagrid("eval --data " + shellQuote((dir / "data").string()) + " --models " + kModels + " --out " +
-                     shellQuote((dir / "eval").string()));
+  auto r = runSagrid("eval --data " + shellQuote((dir / "data").string()) + " --models " + kModels +
+                     " --out " + shellQuote((dir / "eval").string()));
   ASSERT_EQ(r.exitCode, 0) << r.output;
   EXPECT_THAT(r.output, HasSubstr("| SAGrid argmin (paper) |"));
   EXPECT_THAT(r.output, HasSubstr("Embedding search L2"));
-  for (const char* f : {"eval.md", "eval.json", "eval.png"}) EXPECT_TRUE(fs::exists(dir / "eval" / f)) << f;
+  for (const char* f : {"eval.md", "eval.json", "eval.png"})
+    EXPECT_TRUE(fs::exists(dir / "eval" / f)) << f;
 
-  r = runSagrid("filter " + shellQuote((dir / "data").string()) + " --like stove --models " + kModels);
+  r = runSagrid("filter " + shellQuote((dir / "data").string()) + " --like stove --models " +
+                kModels);
   ASSERT_EQ(r.exitCode, 0) << r.output;
   EXPECT_THAT(r.output, HasSubstr("mesh."));
 }

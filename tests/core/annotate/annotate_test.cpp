@@ -59,14 +59,16 @@ class AnnotateTest : public ::testing::Test {
 };
 
 TEST_F(AnnotateTest, PredictsEveryModelOfTheRetrievedCategoryOnTheSurface) {
-  const AnnotationResult r = annotateMeshFile(entries[0].mesh, "stove0", *set, annotate, dir / "out" / "stove0");
+  const AnnotationResult r =
+      annotateMeshFile(entries[0].mesh, "stove0", *set, annotate, dir / "out" / "stove0");
   EXPECT_EQ(r.category, "stove");  // retrieval: its own descriptor is the stove mean
   EXPECT_TRUE(r.categoryRetrieved);
   EXPECT_NEAR(r.categorySimilarity, 1.0, 1e-6);
   ASSERT_EQ(r.predictions.size(), 2u);
   EXPECT_EQ(r.labels.object.category, "stove");
   EXPECT_EQ(r.labels.object.up, "y");
-  EXPECT_EQ(r.labels.object.mesh, "../../data/" + entries[0].mesh.parent_path().filename().string() + "/mesh.glb");
+  EXPECT_EQ(r.labels.object.mesh,
+            "../../data/" + entries[0].mesh.parent_path().filename().string() + "/mesh.glb");
   ASSERT_FALSE(r.labels.affordances.empty());
   const Mesh mesh = importMesh(entries[0].mesh);
   const SurfaceScene scene(mesh);

@@ -1,9 +1,9 @@
 #include "core/dataset/dataset.h"
 
-#include <fstream>
-
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+
+#include <fstream>
 
 #include "core/common/error.h"
 #include "support/test_paths.h"
@@ -16,8 +16,10 @@ using ::testing::HasSubstr;
 TEST(Dataset, ReadsTheManifest) {
   const fs::path dir = test::freshTempDir();
   std::ofstream(dir / "manifest.jsonl")
-      << R"({"id":"a","category":"stove","mesh":"a/mesh.obj","labels":"a/labels.json"})" << "\n\n"
-      << R"({"id":"b","category":"sink","mesh":"b/mesh.glb"})" << "\n";
+      << R"({"id":"a","category":"stove","mesh":"a/mesh.obj","labels":"a/labels.json"})"
+      << "\n\n"
+      << R"({"id":"b","category":"sink","mesh":"b/mesh.glb"})"
+      << "\n";
   const auto entries = readDataset(dir);
   ASSERT_EQ(entries.size(), 2u);
   EXPECT_EQ(entries[0].category, "stove");
@@ -27,7 +29,8 @@ TEST(Dataset, ReadsTheManifest) {
 
 TEST(Dataset, MalformedManifestLinesNameTheLine) {
   const fs::path dir = test::freshTempDir();
-  std::ofstream(dir / "manifest.jsonl") << R"({"id":"a","mesh":"a/mesh.obj"})" << "\n{oops\n";
+  std::ofstream(dir / "manifest.jsonl") << R"({"id":"a","mesh":"a/mesh.obj"})"
+                                        << "\n{oops\n";
   try {
     readDataset(dir);
     FAIL() << "no error";

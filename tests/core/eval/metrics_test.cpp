@@ -1,11 +1,11 @@
 #include "core/eval/metrics.h"
 
-#include <cmath>
+#include <gtest/gtest.h>
+
 #include <algorithm>
+#include <cmath>
 #include <numeric>
 #include <random>
-
-#include <gtest/gtest.h>
 
 #include "core/common/error.h"
 #include "core/eval/hungarian.h"

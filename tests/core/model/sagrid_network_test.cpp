@@ -1,8 +1,8 @@
 #include "core/model/sagrid_network.h"
 
-#include <random>
-
 #include <gtest/gtest.h>
+
+#include <random>
 
 #include "core/common/error.h"
 
@@ -70,10 +70,10 @@ TEST(SAGridNetwork, SparseEqualsDenseWhenEveryVoxelIsOccupied) {
   const auto full = randomObject(8, 5, 7, 4, 1.0);
   ASSERT_EQ(full.voxels.size(), 512u);
   torch::NoGradGuard noGrad;
-  const auto sparse = net->forward(makeNetworkBatch({&full}, shape, ExecutionMode::Sparse,
-                                                    torch::kCPU), ExecutionMode::Sparse);
-  const auto dense = net->forward(makeNetworkBatch({&full}, shape, ExecutionMode::Dense,
-                                                   torch::kCPU), ExecutionMode::Dense);
+  const auto sparse = net->forward(
+      makeNetworkBatch({&full}, shape, ExecutionMode::Sparse, torch::kCPU), ExecutionMode::Sparse);
+  const auto dense = net->forward(
+      makeNetworkBatch({&full}, shape, ExecutionMode::Dense, torch::kCPU), ExecutionMode::Dense);
   EXPECT_LT((sparse - dense).abs().max().item<float>(), 1e-5f);
 }
 
@@ -92,8 +92,9 @@ TEST(SAGridNetwork, SparseOutputIgnoresUnoccupiedNeighboursFeatures) {
   torch::NoGradGuard noGrad;
   const auto y0 = net->forward(makeNetworkBatch({&far}, shape, ExecutionMode::Sparse, torch::kCPU),
                                ExecutionMode::Sparse);
-  const auto y1 = net->forward(
-      makeNetworkBatch({&changed}, shape, ExecutionMode::Sparse, torch::kCPU), ExecutionMode::Sparse);
+  const auto y1 =
+      net->forward(makeNetworkBatch({&changed}, shape, ExecutionMode::Sparse, torch::kCPU),
+                   ExecutionMode::Sparse);
   EXPECT_FLOAT_EQ(y0[0].item<float>(), y1[0].item<float>());
   EXPECT_NE(y0[1].item<float>(), y1[1].item<float>());
 }
@@ -107,7 +108,8 @@ TEST(SAGridNetwork, SparseConvolutionBackwardEqualsAutogradReference) {
     const torch::Tensor rows = batch.neighbors.at({3, dilation});
     const auto n = static_cast<std::int64_t>(object.voxels.size());
     torch::Tensor grads[2][2];
-    const torch::Tensor x0 = torch::randn({n, 6}), w0 = torch::randn({4, 6, 3, 3, 3}), g = torch::randn({n, 4});
+    const torch::Tensor x0 = torch::randn({n, 6}), w0 = torch::randn({4, 6, 3, 3, 3}),
+                        g = torch::randn({n, 4});
     for (int reference = 0; reference < 2; ++reference) {
       torch::Tensor x = x0.clone().requires_grad_(true), w = w0.clone().requires_grad_(true);
       const torch::Tensor y = sparseConvolution(x, w, rows, reference == 1);
@@ -115,8 +117,10 @@ TEST(SAGridNetwork, SparseConvolutionBackwardEqualsAutogradReference) {
       grads[reference][0] = x.grad();
       grads[reference][1] = w.grad();
     }
-    EXPECT_LT((grads[0][0] - grads[1][0]).abs().max().item<float>(), 1e-4f) << "dilation " << dilation;
-    EXPECT_LT((grads[0][1] - grads[1][1]).abs().max().item<float>(), 1e-3f) << "dilation " << dilation;
+    EXPECT_LT((grads[0][0] - grads[1][0]).abs().max().item<float>(), 1e-4f)
+        << "dilation " << dilation;
+    EXPECT_LT((grads[0][1] - grads[1][1]).abs().max().item<float>(), 1e-3f)
+        << "dilation " << dilation;
     EXPECT_GT(grads[0][0].abs().max().item<float>(), 0.1f);
   }
 }

@@ -1,8 +1,8 @@
-#include <fstream>
-#include <random>
-
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+
+#include <fstream>
+#include <random>
 
 #include "core/common/atomic_file.h"
 #include "core/common/error.h"
@@ -40,8 +40,7 @@ FeatureGrid plateFeatures(int spotI, int spotJ, unsigned seed) {
 
 TrainingSample plateSample(int i, int j, unsigned seed) {
   FeatureGrid f = plateFeatures(i, j, seed);
-  return makeTrainingSample("plate" + std::to_string(seed), f,
-                            {voxelCenter({i, j, 5}, kRes)});
+  return makeTrainingSample("plate" + std::to_string(seed), f, {voxelCenter({i, j, 5}, kRes)});
 }
 
 ModelCard smallCard() {

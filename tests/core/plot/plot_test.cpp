@@ -1,9 +1,9 @@
 #include "core/plot/plot.h"
 
-#include <cmath>
-
 #include <gtest/gtest.h>
 #include <stb/stb_image.h>
+
+#include <cmath>
 
 #include "core/common/atomic_file.h"
 #include "core/common/error.h"
@@ -36,8 +36,9 @@ TEST(Plot, LinePlotAndBarChartWriteDecodablePngs) {
   writeLinePlotPng(dir / "loss.png", plot, 320, 200);
   int w = 0, h = 0, n = 0;
   const std::string bytes = readFileBytes(dir / "loss.png");
-  unsigned char* pixels = stbi_load_from_memory(reinterpret_cast<const unsigned char*>(bytes.data()),
-                                                static_cast<int>(bytes.size()), &w, &h, &n, 3);
+  unsigned char* pixels =
+      stbi_load_from_memory(reinterpret_cast<const unsigned char*>(bytes.data()),
+                            static_cast<int>(bytes.size()), &w, &h, &n, 3);
   ASSERT_NE(pixels, nullptr);
   EXPECT_EQ(w, 320);
   EXPECT_EQ(h, 200);

@@ -1,8 +1,8 @@
 #include "core/points/point_extraction.h"
 
-#include <random>
-
 #include <gtest/gtest.h>
+
+#include <random>
 
 #include "core/common/error.h"
 
@@ -72,7 +72,8 @@ TEST(PointExtraction, AutoCountFindsFiveBurnersAmongNoise) {
   ASSERT_EQ(points.size(), 5u);
   for (const auto& b : burners) EXPECT_LE(nearest(points, b), 1.5f * kVoxel);
   // Sorted best first and confidences in (0, 1].
-  for (std::size_t i = 1; i < points.size(); ++i) EXPECT_LE(points[i - 1].distance, points[i].distance);
+  for (std::size_t i = 1; i < points.size(); ++i)
+    EXPECT_LE(points[i - 1].distance, points[i].distance);
   for (const auto& p : points) EXPECT_GT(p.confidence, 0.0f);
   // Without non-maximum suppression and the distance threshold, noise gives many more minima.
   s.nmsRadius = 0.0f;

@@ -1,8 +1,8 @@
 #include "core/training/augmentation.h"
 
-#include <random>
-
 #include <gtest/gtest.h>
+
+#include <random>
 
 #include "core/features/vector_channels.h"
 
@@ -37,8 +37,8 @@ const float* featuresAt(const TrainingSample& s, const VoxelIndex& v) {
 }
 
 TEST(VectorChannels, FindsXyzTriplesByName) {
-  const auto t = vectorChannelTriples({"albedo_r", "normal_x", "normal_y", "normal_z", "height",
-                                       "dir_x", "dir_y", "other_z"});
+  const auto t = vectorChannelTriples(
+      {"albedo_r", "normal_x", "normal_y", "normal_z", "height", "dir_x", "dir_y", "other_z"});
   ASSERT_EQ(t.size(), 1u);
   EXPECT_EQ(t[0], (std::array<int, 3>{1, 2, 3}));
 }
@@ -77,7 +77,8 @@ TEST(Augmentation, ReflectionsAndShiftKeepTheStructure) {
   ASSERT_NE(f, nullptr);
   EXPECT_FLOAT_EQ(f[3], 106.0f);
   EXPECT_NEAR(f[1], -1.0f, 1e-6f);  // normal +y reflected to -y
-  EXPECT_LT((r.targets[0] - voxelCenter({kRes - 1 - 11 + 1, kRes - 1 - 4 + 2, 3}, kRes)).norm(), 1e-6f);
+  EXPECT_LT((r.targets[0] - voxelCenter({kRes - 1 - 11 + 1, kRes - 1 - 4 + 2, 3}, kRes)).norm(),
+            1e-6f);
 }
 
 TEST(Augmentation, WarpIsSmoothAndMovesTargetsWithTheSurface) {
