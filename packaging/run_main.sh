@@ -4,11 +4,15 @@
 # instead, so `make run` always shows something.
 set -euo pipefail
 build_dir=${1:-build}
-samples=resources/samples
 models=resources/models
-if [ ! -d "$samples" ]; then
-  echo "sagrid: no bundled samples in $samples; opening the GUI empty" >&2
-  samples=""
+samples=""
+# The curator works on a copy, so saved labels never touch the repository; a second run resumes
+# the same copy where the curator stopped.
+if [ -d resources/samples ]; then
+  samples="$build_dir/samples"
+  [ -d "$samples" ] || cp -r resources/samples "$samples"
+else
+  echo "sagrid: no bundled samples in resources/samples; opening the GUI empty" >&2
 fi
 if [ -n "${DISPLAY:-}${WAYLAND_DISPLAY:-}" ]; then
   exec "$build_dir/sagrid" gui --models "$models" ${samples:+"$samples"}
