@@ -75,14 +75,7 @@ void writeFeatureNpz(const std::filesystem::path& path, const FeatureGrid& grid,
 }
 
 FeatureGrid readFeatureNpz(const std::filesystem::path& path, nlohmann::json* metadata) {
-  NpzArchive npz;
-  try {
-    npz = readNpz(path);
-  } catch (const FileError&) {
-    throw;
-  } catch (const Error& e) {
-    throw FileError(path, e.what());
-  }
+  const NpzArchive npz = readNpz(path);
   const NpyArray& metaArray = entry(npz, "metadata", "uint8", path);
   nlohmann::json meta;
   try {

@@ -8,14 +8,7 @@
 namespace sagrid {
 
 TrellisLatents readTrellisLatents(const std::filesystem::path& path, int resolution) {
-  NpzArchive npz;
-  try {
-    npz = readNpz(path);
-  } catch (const FileError&) {
-    throw;
-  } catch (const Error& e) {
-    throw FileError(path, e.what());
-  }
+  const NpzArchive npz = readNpz(path);
   const auto coordsIt = npz.find("coords"), featsIt = npz.find("feats");
   if (coordsIt == npz.end() || featsIt == npz.end()) {
     throw FileError(path,

@@ -296,7 +296,13 @@ NpzArchive readNpz(const fs::path& path) {
     }
     std::string key = name;
     if (key.size() > 4 && key.compare(key.size() - 4, 4, ".npy") == 0) key.resize(key.size() - 4);
-    archive[key] = parseNpy(content, path.string() + ":" + name);
+    try {
+      archive[key] = parseNpy(content, path.string() + ":" + name);
+    } catch (const FileError&) {
+      throw;
+    } catch (const Error& e) {
+      throw FileError(path, "entry '" + name + "': " + e.what());
+    }
   }
   return archive;
 }
