@@ -25,6 +25,7 @@ struct TrainCommandOptions {
   int batch = 4;
   double lr = 3e-3;
   unsigned seed = 1;
+  double targetCap = 0;
   bool resume = false;
 };
 
@@ -45,6 +46,7 @@ std::string commandLine(const TrainCommandOptions& o, const std::string& data,
   if (o.epochs) s << " --epochs " << o.epochs;
   if (o.minutes > 0) s << " --minutes " << o.minutes;
   s << " --batch " << o.batch << " --lr " << o.lr << " --seed " << o.seed;
+  if (o.targetCap > 0) s << " --target-cap " << o.targetCap;
   return s.str();
 }
 
@@ -63,6 +65,7 @@ sagrid::DatasetTrainingResult trainOne(const TrainCommandOptions& o, const fs::p
   t.training.batchSize = o.batch;
   t.training.learningRate = o.lr;
   t.training.seed = o.seed;
+  t.training.targetCap = static_cast<float>(o.targetCap);
   t.training.resume = o.resume;
   t.command = commandLine(o, data.string(), model, out.string());
   std::unique_ptr<sagrid::app::ProgressBar> featureBar, trainBar;
@@ -120,6 +123,9 @@ void setupTrain(CLI::App& root) {
   cmd->add_option("--lr", o->lr, "Peak learning rate of AdamW (cosine schedule; default 3e-3)")
       ->check(CLI::PositiveNumber);
   cmd->add_option("--seed", o->seed, "Random seed (weights, order, augmentation)");
+  cmd->add_option("--target-cap", o->targetCap,
+                  "Clip the target distance at this many normalized units (0 = the paper's target)")
+      ->check(CLI::NonNegativeNumber);
   cmd->add_option("--out", o->out,
                   "Output folder (default resources/models with --preset, else models)");
   cmd->add_option("--backend", o->backend, "Feature backend (default embedded)");

@@ -178,7 +178,7 @@ std::vector<EpochRecord> trainModel(AffordanceModel& model,
         TrainingSample a =
             augment(s, randomAugmentation(s, options.augmentation, rng), options.vectorChannels);
         if (a.voxels.empty() || a.targets.empty()) a = s;
-        const auto d = distanceTargets(a);
+        const auto d = distanceTargets(a, options.targetCap);
         targets.insert(targets.end(), d.begin(), d.end());
         objects.push_back(toNetworkObject(a));
       }
@@ -221,7 +221,8 @@ std::vector<EpochRecord> trainModel(AffordanceModel& model,
   return state.curve;
 }
 
-double evaluateLoss(AffordanceModel& model, const std::vector<TrainingSample>& samples) {
+double evaluateLoss(AffordanceModel& model, const std::vector<TrainingSample>& samples,
+                    float targetCap) {
   AffordanceModelImpl& impl = model.impl();
   impl.net->eval();
   torch::NoGradGuard noGrad;
@@ -229,7 +230,7 @@ double evaluateLoss(AffordanceModel& model, const std::vector<TrainingSample>& s
   for (const auto& s : samples) {
     const NetworkObject o = toNetworkObject(s);
     const NetworkBatch batch = makeNetworkBatch({&o}, impl.shape, impl.mode, impl.device);
-    sum += batchLoss(impl.net->forward(batch, impl.mode), batch, distanceTargets(s)).item<double>();
+    sum += batchLoss(impl.net->forward(batch, impl.mode), batch, distanceTargets(s, targetCap)).item<double>();
   }
   return samples.empty() ? 0.0 : sum / static_cast<double>(samples.size());
 }

@@ -38,6 +38,7 @@ struct TrainingOptions {
   double learningRate = 3e-3;
   double weightDecay = 1e-4;
   unsigned seed = 1;
+  float targetCap = 0;      // > 0: train on log(1 + min(d, cap)) (see distanceTargets)
   AugmentationRanges augmentation;
   std::vector<std::array<int, 3>> vectorChannels;  // rotated with the grid (normals)
   std::filesystem::path checkpointFile;            // written after every epoch; empty = none
@@ -55,6 +56,7 @@ std::vector<EpochRecord> trainModel(AffordanceModel& model,
                                     const TrainingOptions& options);
 
 // Mean L1 loss on D over the samples without augmentation (eval mode), for tests and reports.
-double evaluateLoss(AffordanceModel& model, const std::vector<TrainingSample>& samples);
+double evaluateLoss(AffordanceModel& model, const std::vector<TrainingSample>& samples,
+                    float targetCap = 0);
 
 }  // namespace sagrid::model

@@ -194,6 +194,7 @@ DatasetTrainingResult trainFromDataset(const DatasetTrainingOptions& options) {
                 {"learning_rate", training.learningRate},
                 {"weight_decay", training.weightDecay},
                 {"seed", training.seed},
+                {"target_cap", training.targetCap},
                 {"seconds", result.curve.empty() ? 0.0 : result.curve.back().seconds},
                 {"feature_seconds", result.featureSeconds},
                 {"cuda", model::cudaAvailable()}};

@@ -32,14 +32,14 @@ TrainingSample makeTrainingSample(std::string id, const FeatureGrid& f,
   return s;
 }
 
-std::vector<float> distanceTargets(const TrainingSample& s) {
+std::vector<float> distanceTargets(const TrainingSample& s, float cap) {
   if (s.targets.empty()) throw InvalidArgument(s.id + ": no ground-truth points for the target");
   std::vector<float> d(s.voxels.size());
   for (std::size_t v = 0; v < s.voxels.size(); ++v) {
     const Eigen::Vector3f c = voxelCenter(s.voxels[v], s.resolution);
     float best = std::numeric_limits<float>::max();
     for (const auto& t : s.targets) best = std::min(best, (c - t).norm());
-    d[v] = std::log1p(best);
+    d[v] = std::log1p(cap > 0 ? std::min(best, cap) : best);
   }
   return d;
 }

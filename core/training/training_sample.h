@@ -33,6 +33,9 @@ TrainingSample makeTrainingSample(std::string id, const FeatureGrid& features,
                                   std::vector<Eigen::Vector3f> targets);
 
 // D(v) per voxel of the sample (distances between voxel centres and targets, normalized frame).
-std::vector<float> distanceTargets(const TrainingSample& sample);
+// `cap` > 0 clips the distance first (log(1 + min(d, cap))): beyond the network's receptive field
+// the distance to the nearest instance cannot be seen locally, and a capped target keeps the loss
+// on what can (an option beyond the paper; 0 = the paper's target).
+std::vector<float> distanceTargets(const TrainingSample& sample, float cap = 0.0f);
 
 }  // namespace sagrid

@@ -115,3 +115,24 @@ TEST(Augmentation, RandomShiftKeepsEveryVoxelInsideTheGrid) {
 
 }  // namespace
 }  // namespace sagrid
+
+namespace sagrid {
+namespace {
+
+TEST(TrainingSample, DistanceTargetsAreLogDistancesOptionallyCapped) {
+  TrainingSample s;
+  s.resolution = 4;
+  s.voxels = {{0, 0, 0}, {3, 3, 3}};
+  s.targets = {voxelCenter({0, 0, 0}, 4)};
+  const float far = (voxelCenter({3, 3, 3}, 4) - s.targets[0]).norm();
+  auto d = distanceTargets(s);
+  EXPECT_FLOAT_EQ(d[0], 0.0f);
+  EXPECT_FLOAT_EQ(d[1], std::log1p(far));
+  d = distanceTargets(s, 0.2f);
+  EXPECT_FLOAT_EQ(d[1], std::log1p(0.2f));
+  s.targets.clear();
+  EXPECT_THROW(distanceTargets(s), std::exception);
+}
+
+}  // namespace
+}  // namespace sagrid
