@@ -63,7 +63,7 @@ TEST(ModelCli, AnnotateReportsABrokenMeshAndCarriesOn) {
   gen::generateDataset({{"stove", 1, 9}}, gen::MeshFormat::Obj, dir / "in");
   std::ofstream(dir / "in" / "broken.obj") << "v 0 0 0\nf 1 2 3\n";
   const auto r = runSagrid("annotate " + shellQuote((dir / "in").string()) + " --models " +
-                           kModels + " --out " + shellQuote((dir / "out").string()));
+                           kModels + " --category stove --out " + shellQuote((dir / "out").string()));
   EXPECT_EQ(r.exitCode, 0) << r.output;
   EXPECT_THAT(r.output, HasSubstr("broken.obj: failed"));
   EXPECT_THAT(r.output, HasSubstr("annotated 1 of 2 objects"));
