@@ -26,6 +26,7 @@ struct TrainCommandOptions {
   double lr = 3e-3;
   unsigned seed = 1;
   double targetCap = 0;
+  double nearWeight = 0;
   bool resume = false;
 };
 
@@ -47,6 +48,7 @@ std::string commandLine(const TrainCommandOptions& o, const std::string& data,
   if (o.minutes > 0) s << " --minutes " << o.minutes;
   s << " --batch " << o.batch << " --lr " << o.lr << " --seed " << o.seed;
   if (o.targetCap > 0) s << " --target-cap " << o.targetCap;
+  if (o.nearWeight > 0) s << " --near-weight " << o.nearWeight;
   return s.str();
 }
 
@@ -66,6 +68,7 @@ sagrid::DatasetTrainingResult trainOne(const TrainCommandOptions& o, const fs::p
   t.training.learningRate = o.lr;
   t.training.seed = o.seed;
   t.training.targetCap = static_cast<float>(o.targetCap);
+  t.training.nearWeight = static_cast<float>(o.nearWeight);
   t.training.resume = o.resume;
   t.command = commandLine(o, data.string(), model, out.string());
   std::unique_ptr<sagrid::app::ProgressBar> featureBar, trainBar;
@@ -125,6 +128,9 @@ void setupTrain(CLI::App& root) {
   cmd->add_option("--seed", o->seed, "Random seed (weights, order, augmentation)");
   cmd->add_option("--target-cap", o->targetCap,
                   "Clip the target distance at this many normalized units (0 = the paper's target)")
+      ->check(CLI::NonNegativeNumber);
+  cmd->add_option("--near-weight", o->nearWeight,
+                  "Extra L1 weight of voxels near an instance: 1 + W exp(-d / 0.05) (0 = paper)")
       ->check(CLI::NonNegativeNumber);
   cmd->add_option("--out", o->out,
                   "Output folder (default resources/models with --preset, else models)");

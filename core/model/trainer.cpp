@@ -27,15 +27,22 @@ NetworkObject toNetworkObject(const TrainingSample& s) {
   return o;
 }
 
-// Mean over objects of the per-object mean |pred - target| (paper: L1 over occupied voxels).
+// Mean over objects of the per-object (weighted) mean |pred - target| (paper: L1 over occupied
+// voxels, uniform weights when nearWeight = 0).
 torch::Tensor batchLoss(const torch::Tensor& predicted, const NetworkBatch& batch,
-                        const std::vector<float>& targets) {
+                        const std::vector<float>& targets, float nearWeight = 0,
+                        float nearRadius = 0.05f) {
   const std::int64_t n = batch.voxelCount();
   std::vector<float> weights(static_cast<std::size_t>(n));
   for (int o = 0; o < batch.batchSize(); ++o) {
-    const auto count = batch.offsets[o + 1] - batch.offsets[o];
+    double sum = 0;
+    for (auto v = batch.offsets[o]; v < batch.offsets[o + 1]; ++v) {
+      // targets hold log(1 + d): recover d for the weight.
+      weights[v] = 1.0f + nearWeight * std::exp(-std::expm1(targets[v]) / nearRadius);
+      sum += weights[v];
+    }
     for (auto v = batch.offsets[o]; v < batch.offsets[o + 1]; ++v)
-      weights[v] = 1.0f / static_cast<float>(count * batch.batchSize());
+      weights[v] = static_cast<float>(weights[v] / (sum * batch.batchSize()));
   }
   const auto device = predicted.device();
   const torch::Tensor target =
@@ -186,7 +193,8 @@ std::vector<EpochRecord> trainModel(AffordanceModel& model,
       for (const auto& o : objects) pointers.push_back(&o);
       const NetworkBatch batch = makeNetworkBatch(pointers, impl.shape, impl.mode, impl.device);
       optimizer.zero_grad();
-      torch::Tensor loss = batchLoss(net->forward(batch, impl.mode), batch, targets);
+      torch::Tensor loss = batchLoss(net->forward(batch, impl.mode), batch, targets,
+                                     options.nearWeight, options.nearRadius);
       loss.backward();
       optimizer.step();
       lossSum += loss.item<double>();
@@ -230,7 +238,8 @@ double evaluateLoss(AffordanceModel& model, const std::vector<TrainingSample>& s
   for (const auto& s : samples) {
     const NetworkObject o = toNetworkObject(s);
     const NetworkBatch batch = makeNetworkBatch({&o}, impl.shape, impl.mode, impl.device);
-    sum += batchLoss(impl.net->forward(batch, impl.mode), batch, distanceTargets(s, targetCap)).item<double>();
+    sum += batchLoss(impl.net->forward(batch, impl.mode), batch, distanceTargets(s, targetCap))
+               .item<double>();
   }
   return samples.empty() ? 0.0 : sum / static_cast<double>(samples.size());
 }

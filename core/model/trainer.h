@@ -38,7 +38,12 @@ struct TrainingOptions {
   double learningRate = 3e-3;
   double weightDecay = 1e-4;
   unsigned seed = 1;
-  float targetCap = 0;      // > 0: train on log(1 + min(d, cap)) (see distanceTargets)
+  float targetCap = 0;  // > 0: train on log(1 + min(d, cap)) (see distanceTargets)
+  // Beyond the paper: voxels near an instance weigh 1 + nearWeight * exp(-d / nearRadius) in the
+  // L1 loss (normalized per object), so the few voxels that decide the argmin are not drowned
+  // by the many far ones. 0 = the paper's uniform loss.
+  float nearWeight = 0;
+  float nearRadius = 0.05f;
   AugmentationRanges augmentation;
   std::vector<std::array<int, 3>> vectorChannels;  // rotated with the grid (normals)
   std::filesystem::path checkpointFile;            // written after every epoch; empty = none

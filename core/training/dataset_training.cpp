@@ -195,6 +195,8 @@ DatasetTrainingResult trainFromDataset(const DatasetTrainingOptions& options) {
                 {"weight_decay", training.weightDecay},
                 {"seed", training.seed},
                 {"target_cap", training.targetCap},
+                {"near_weight", training.nearWeight},
+                {"near_radius", training.nearRadius},
                 {"seconds", result.curve.empty() ? 0.0 : result.curve.back().seconds},
                 {"feature_seconds", result.featureSeconds},
                 {"cuda", model::cudaAvailable()}};
