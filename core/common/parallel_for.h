@@ -1,4 +1,4 @@
-// A minimal fork-join loop over [0, count) in contiguous chunks, one per hardware thread, for
+// A minimal fork-join loop over [0, count) in contiguous chunks, one per worker thread (defaultThreadCount), for
 // batches of independent queries (ray casts, closest points). Small counts run inline.
 #pragma once
 
@@ -8,12 +8,14 @@
 #include <thread>
 #include <vector>
 
+#include "core/common/thread_count.h"
+
 namespace sagrid {
 
 inline void parallelFor(std::size_t count, std::size_t minParallelCount,
                         const std::function<void(std::size_t begin, std::size_t end)>& body) {
   const std::size_t threads =
-      std::min<std::size_t>(std::max(1u, std::thread::hardware_concurrency()),
+      std::min<std::size_t>(static_cast<std::size_t>(defaultThreadCount()),
                             count / std::max<std::size_t>(1, minParallelCount / 2));
   if (count < minParallelCount || threads <= 1) {
     if (count > 0) body(0, count);

@@ -2,6 +2,7 @@
 #include <torch/torch.h>
 
 #include "core/common/error.h"
+#include "core/common/thread_count.h"
 #include "core/features/dinov2_encoder.h"
 #include "core/render/multiview_renderer.h"
 

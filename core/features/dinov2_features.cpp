@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "core/common/thread_count.h"
 #include "core/features/image_encoder.h"
 #include "core/features/voxel_aggregation.h"
 #include "core/render/multiview_renderer.h"

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "core/common/log.h"
+#include "core/common/thread_count.h"
 #include "core/features/embedded_view_encoder.h"
 #include "core/features/surface_samples.h"
 #include "core/features/voxel_aggregation.h"

@@ -2,11 +2,11 @@
 
 #include <cmath>
 #include <sstream>
-#include <thread>
 
 #include "core/common/atomic_file.h"
 #include "core/common/error.h"
 #include "core/common/sha256.h"
+#include "core/common/thread_count.h"
 #include "core/model/affordance_model_impl.h"
 
 namespace sagrid::model {
@@ -14,8 +14,7 @@ namespace fs = std::filesystem;
 
 void configureTorchRuntime() {
   static const bool configured = [] {
-    const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
-    torch::set_num_threads(static_cast<int>(cores));
+    torch::set_num_threads(defaultThreadCount());
     return true;
   }();
   (void)configured;

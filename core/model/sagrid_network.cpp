@@ -164,7 +164,9 @@ SAGridNetImpl::SAGridNetImpl(const NetworkShape& shape) : m_shape(shape) {
     m_bnVars.push_back(register_buffer(p + "bn_running_var", torch::ones({cout})));
     cin = cout;
   }
-  m_headWeight = register_parameter("head_weight", torch::randn({1, cin}) * (0.1 / std::sqrt(cin)));
+  // Unit-gain head: with a small head (0.1 / sqrt(C)) the last layer's units get tiny gradients,
+  // many die, and the output floors near the prior at small parts (measured on an overfit run).
+  m_headWeight = register_parameter("head_weight", torch::randn({1, cin}) / std::sqrt(cin));
   // Start near the typical target: log(1 + 0.25) ~ 0.22, softplus^-1(0.22) ~ -1.4.
   m_headBias = register_parameter("head_bias", torch::full({1}, -1.4));
 }

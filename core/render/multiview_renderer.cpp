@@ -60,8 +60,6 @@ void renderInto(const Mesh& mesh, const SurfaceScene& scene, const ViewCamera& c
 }
 }  // namespace
 
-int defaultThreadCount() { return std::max(1u, std::thread::hardware_concurrency()); }
-
 void MultiViewRenderer::render(const ViewCamera& camera, int size, RenderedView& out) const {
   RayBuffers rays;
   renderInto(m_mesh, m_scene, camera, size, out, rays);

@@ -37,7 +37,4 @@ class MultiViewRenderer {
   const SurfaceScene& m_scene;
 };
 
-// Worker count for CPU-parallel work: hardware threads, at least 1.
-int defaultThreadCount();
-
 }  // namespace sagrid

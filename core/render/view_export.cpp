@@ -8,6 +8,7 @@
 
 #include "core/common/atomic_file.h"
 #include "core/common/error.h"
+#include "core/common/thread_count.h"
 #include "core/geometry/surface_scene.h"
 #include "core/render/multiview_renderer.h"
 #include "core/render/trellis_views.h"
