@@ -26,6 +26,18 @@ Eigen::Vector3f closestOnRange(const Mesh& mesh, const Eigen::Vector3f& p, std::
 }
 }  // namespace
 
+GeneratedObject makeGeneratedObject(std::string category, Mesh mesh,
+                                    std::vector<GroundTruthPoint> points, nlohmann::json params) {
+  GeneratedObject out;
+  out.category = std::move(category);
+  out.mesh = std::move(mesh);
+  out.points = std::move(points);
+  out.generator = std::move(params);
+  return out;
+}
+
+float roundedToMillimetre(float metres) { return std::round(metres * 1000.0f) / 1000.0f; }
+
 void keepPointsNearParts(const Mesh& mesh, std::vector<GroundTruthPoint>& points, float maxDistance) {
   for (auto& point : points) {
     float d = 0;

@@ -29,6 +29,13 @@ struct GeneratedObject {
   nlohmann::json generator = nlohmann::json::object();  // parameters, for variety tables
 };
 
+// Packs a finished generator run.
+GeneratedObject makeGeneratedObject(std::string category, Mesh mesh,
+                                    std::vector<GroundTruthPoint> points, nlohmann::json params);
+
+// A length in metres rounded to the millimetre, as recorded in the generator parameters.
+float roundedToMillimetre(float metres);
+
 // Moves each point that lies farther than `maxDistance` from its part's triangles towards its
 // closest point there, until it is `maxDistance` away. Centroids of thick parts (a big knob)
 // otherwise sit inside the solid, farther from the surface than the ground-truth tolerance.

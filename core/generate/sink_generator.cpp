@@ -261,7 +261,7 @@ void SinkBuilder::buildCounterAndBasins() {
     m_distractors.push_back("backsplash");
     if (m_wall) m_faucetY = m_wallY;
   }
-  m_params["counter_width_m"] = std::round(counterW * 1000.0f) / 1000.0f;
+  m_params["counter_width_m"] = roundedToMillimetre(counterW);
 }
 
 void SinkBuilder::buildVesselBasin() {
@@ -655,18 +655,13 @@ GeneratedObject SinkBuilder::run() {
   m_params["faucet"] = m_faucet;
   m_params["handle"] = m_handle;
   m_params["handles"] = handles;
-  m_params["reach_m"] = std::round(m_reach * 1000.0f) / 1000.0f;
-  m_params["spout_height_m"] = std::round(m_spoutHeight * 1000.0f) / 1000.0f;
+  m_params["reach_m"] = roundedToMillimetre(m_reach);
+  m_params["spout_height_m"] = roundedToMillimetre(m_spoutHeight);
   m_params["finish"] = m_finish;
   std::sort(m_distractors.begin(), m_distractors.end());
   m_params["distractors"] = m_distractors;
 
-  GeneratedObject out;
-  out.category = "sink";
-  out.mesh = std::move(m_b).build();
-  out.points = std::move(m_points);
-  out.generator = m_params;
-  return out;
+  return makeGeneratedObject("sink", std::move(m_b).build(), std::move(m_points), m_params);
 }
 
 }  // namespace

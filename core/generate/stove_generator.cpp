@@ -707,17 +707,12 @@ GeneratedObject StoveBuilder::run() {
   m_params["knobs"] = m_knobCount;
   m_params["knob_style"] = m_controls == "touch" ? "touch" : toString(m_knobShape.style);
   m_params["finish"] = m_pal.finishName;
-  m_params["width_m"] = std::round(m_width * 1000.0f) / 1000.0f;
+  m_params["width_m"] = roundedToMillimetre(m_width);
   std::sort(m_extras.begin(), m_extras.end());
   m_extras.erase(std::unique(m_extras.begin(), m_extras.end()), m_extras.end());
   m_params["extras"] = m_extras;
 
-  GeneratedObject out;
-  out.category = "stove";
-  out.mesh = std::move(m_b).build();
-  out.points = std::move(m_points);
-  out.generator = m_params;
-  return out;
+  return makeGeneratedObject("stove", std::move(m_b).build(), std::move(m_points), m_params);
 }
 
 }  // namespace

@@ -5,15 +5,10 @@
 #include <cstdio>
 #include <limits>
 
-#if defined(__GNUC__)
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wunused-function"
-#pragma GCC diagnostic ignored "-Wsign-compare"
-#endif
+#include "core/common/third_party_warnings.h"
+SAGRID_THIRD_PARTY_BEGIN
 #include <stb_easy_font.h>
-#if defined(__GNUC__)
-#pragma GCC diagnostic pop
-#endif
+SAGRID_THIRD_PARTY_END
 #include <stb_image_write.h>
 
 #include "core/common/atomic_file.h"

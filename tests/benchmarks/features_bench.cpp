@@ -1,8 +1,8 @@
 // Feature extraction speed: the CPU renderer (rays/s) and the embedded backend end to end (mesh
 // file -> cached features), on the real-dev objects and on ~100k-triangle versions of them
 // (each triangle split into n x n, colours baked into vertex colours, written as OBJ).
-//   build-x/tests/benchmarks/features_bench --benchmark_repetitions=5 \
-//       --benchmark_report_aggregates_only=true
+//   build-x/tests/benchmarks/features_bench --benchmark_repetitions=5
+//     --benchmark_report_aggregates_only=true
 #include <benchmark/benchmark.h>
 
 #include <cmath>
@@ -11,6 +11,7 @@
 #include <fstream>
 #include <map>
 
+#include "core/common/thread_count.h"
 #include "core/features/feature_pipeline.h"
 #include "core/geometry/surface_scene.h"
 #include "core/grid/normalization.h"

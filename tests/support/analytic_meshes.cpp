@@ -1,6 +1,10 @@
 #include "analytic_meshes.h"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
+
+#include "core/geometry/closest_point_on_triangle.h"
 
 namespace sagrid::test {
 
@@ -71,6 +75,16 @@ void append(Mesh& a, const Mesh& b) {
 
 void paint(Mesh& mesh, const Eigen::Vector3f& rgb) {
   mesh.colors.assign(mesh.positions.size(), rgb);
+}
+
+float bruteForceDistance(const Mesh& mesh, const Eigen::Vector3f& p) {
+  float best = std::numeric_limits<float>::infinity();
+  for (const auto& t : mesh.triangles) {
+    const Eigen::Vector3f q = closestPointOnTriangle(p, mesh.positions[t[0]], mesh.positions[t[1]],
+                                                     mesh.positions[t[2]]);
+    best = std::min(best, (q - p).norm());
+  }
+  return best;
 }
 
 }  // namespace sagrid::test

@@ -18,5 +18,7 @@ Mesh quadZ(const Eigen::Vector2f& lo, const Eigen::Vector2f& hi, float z);
 void append(Mesh& a, const Mesh& b);
 // Gives every vertex the colour `rgb`.
 void paint(Mesh& mesh, const Eigen::Vector3f& rgb);
+// Exact distance from p to the mesh by brute force over all triangles, independent of any BVH.
+float bruteForceDistance(const Mesh& mesh, const Eigen::Vector3f& p);
 
 }  // namespace sagrid::test

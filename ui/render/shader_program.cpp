@@ -27,6 +27,17 @@ std::string expandIncludes(std::string_view file) {
   return source;
 }
 
+// The driver's log of a shader or program object (glGetShaderiv/glGetShaderInfoLog or the
+// program pair).
+template <typename GetParameter, typename GetLog>
+std::string infoLog(GLuint object, GetParameter getParameter, GetLog getLog) {
+  GLint logLength = 0;
+  getParameter(object, GL_INFO_LOG_LENGTH, &logLength);
+  std::vector<char> log(static_cast<std::size_t>(std::max(logLength, 1)));
+  getLog(object, logLength, nullptr, log.data());
+  return log.data();
+}
+
 GLuint compile(GLenum stage, std::string_view file) {
   const std::string source = expandIncludes(file);
   GLuint shader = glCreateShader(stage);
@@ -37,12 +48,9 @@ GLuint compile(GLenum stage, std::string_view file) {
   GLint ok = 0;
   glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
   if (!ok) {
-    GLint logLength = 0;
-    glGetShaderiv(shader, GL_INFO_LOG_LENGTH, &logLength);
-    std::vector<char> log(std::max(logLength, 1));
-    glGetShaderInfoLog(shader, logLength, nullptr, log.data());
+    const std::string log = infoLog(shader, glGetShaderiv, glGetShaderInfoLog);
     glDeleteShader(shader);
-    throw Error("shader " + std::string(file) + " does not compile: " + log.data());
+    throw Error("shader " + std::string(file) + " does not compile: " + log);
   }
   return shader;
 }
@@ -67,14 +75,11 @@ ShaderProgram::ShaderProgram(std::string_view vertexFile, std::string_view fragm
   GLint ok = 0;
   glGetProgramiv(m_program, GL_LINK_STATUS, &ok);
   if (!ok) {
-    GLint logLength = 0;
-    glGetProgramiv(m_program, GL_INFO_LOG_LENGTH, &logLength);
-    std::vector<char> log(std::max(logLength, 1));
-    glGetProgramInfoLog(m_program, logLength, nullptr, log.data());
+    const std::string log = infoLog(m_program, glGetProgramiv, glGetProgramInfoLog);
     glDeleteProgram(m_program);
     m_program = 0;
     throw Error("shaders " + std::string(vertexFile) + " + " + std::string(fragmentFile) +
-                " do not link: " + log.data());
+                " do not link: " + log);
   }
 }
 

@@ -16,19 +16,12 @@
 #include "core/labels/labels.h"
 #include "core/mesh/mesh_import.h"
 #include "support/test_paths.h"
+#include "support/analytic_meshes.h"
 
 namespace sagrid::gen {
 namespace {
 
-// Exact distance to the mesh by brute force (the meshes are small), independent of the BVH.
-inline float bruteForceDistance(const Mesh& mesh, const Eigen::Vector3f& p) {
-  float best = std::numeric_limits<float>::infinity();
-  for (const auto& t : mesh.triangles) {
-    const Eigen::Vector3f q = closestPointOnTriangle(p, mesh.positions[t[0]], mesh.positions[t[1]], mesh.positions[t[2]]);
-    best = std::min(best, (q - p).norm());
-  }
-  return best;
-}
+using test::bruteForceDistance;
 
 namespace fs = std::filesystem;
 

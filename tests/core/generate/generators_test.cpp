@@ -11,19 +11,12 @@
 #include "core/generate/sink_generator.h"
 #include "core/generate/stove_generator.h"
 #include "core/geometry/closest_point_on_triangle.h"
+#include "support/analytic_meshes.h"
 
 namespace sagrid::gen {
 namespace {
 
-// Exact distance to the mesh by brute force (the meshes are small), independent of the BVH.
-inline float bruteForceDistance(const Mesh& mesh, const Eigen::Vector3f& p) {
-  float best = std::numeric_limits<float>::infinity();
-  for (const auto& t : mesh.triangles) {
-    const Eigen::Vector3f q = closestPointOnTriangle(p, mesh.positions[t[0]], mesh.positions[t[1]], mesh.positions[t[2]]);
-    best = std::min(best, (q - p).norm());
-  }
-  return best;
-}
+using test::bruteForceDistance;
 
 // Every affordance of every object lies within 1 cm (in metres) of the merged mesh, in the frame
 // the labels are written in (file units, file up axis), after all realism transforms.

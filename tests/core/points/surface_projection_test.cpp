@@ -24,7 +24,7 @@ TEST(SurfaceProjection, PutsPointsOnTheSurfaceInTheFileFrame) {
   EXPECT_NEAR(p.normal.y(), 1.0f, 1e-5f);
 
   // Points anywhere end on the surface: distance to the box surface is zero.
-  for (const Eigen::Vector3f q :
+  for (const Eigen::Vector3f& q :
        {Eigen::Vector3f(0.4f, -0.3f, 0.1f), Eigen::Vector3f(-0.45f, 0.2f, 0.35f),
         Eigen::Vector3f(0.0f, 0.0f, 0.0f)}) {
     const SurfacePoint s = projectToSurface(q, n, scene, UpAxis::Y);
