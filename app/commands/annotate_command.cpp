@@ -129,7 +129,7 @@ void setupFilter(CLI::App& root) {
   cmd->callback([o] {
     const auto models =
         sagrid::ModelSet::load(o->models.empty() ? defaultModelsDir() : fs::path(o->models));
-    const auto mean = models.categoryMean(o->like);
+    models.categoryMean(o->like);  // an unknown category fails here, before any work
     auto features = models.featureOptions();
     features.cacheDir = !o->cache.empty()            ? fs::path(o->cache)
                         : fs::is_directory(o->input) ? fs::path(o->input) / ".sagrid-cache"
@@ -148,7 +148,7 @@ void setupFilter(CLI::App& root) {
         const auto f = sagrid::extractFeatures(files[i].path, features);
         const auto categories = models.rankCategories(f.descriptor);
         ranked.push_back({files[i].id, files[i].path.string(),
-                          sagrid::cosineSimilarity(f.descriptor, mean),
+                          models.categorySimilarity(f.descriptor, o->like),
                           categories.empty() ? "" : categories.front().category});
       } catch (const sagrid::Error& e) {
         std::fprintf(stderr, "\nsagrid: %s: skipped: %s\n", files[i].path.string().c_str(),

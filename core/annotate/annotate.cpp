@@ -67,8 +67,7 @@ AnnotationResult annotateMeshFile(const fs::path& meshFile, const std::string& i
     r.categoryRetrieved = true;
   } else {
     r.category = options.category;
-    r.categorySimilarity =
-        cosineSimilarity(features.descriptor, models.categoryMean(options.category));
+    r.categorySimilarity = models.categorySimilarity(features.descriptor, options.category);
   }
 
   t = Clock::now();

@@ -58,28 +58,89 @@ std::vector<const model::AffordanceModel*> ModelSet::forCategory(
   return out;
 }
 
-std::vector<float> ModelSet::categoryMean(const std::string& category) const {
+namespace {
+
+// Mean over the category's cards of one recorded vector (the cards of a category see nearly the
+// same objects); empty when no card records it.
+std::vector<float> meanOverCards(const std::vector<const model::AffordanceModel*>& models,
+                                 std::vector<float> model::ModelCard::*field) {
   std::vector<double> sum;
   int count = 0;
-  for (const auto* m : forCategory(category)) {
-    const auto& d = m->card().descriptorMean;
+  for (const auto* m : models) {
+    const auto& d = m->card().*field;
     if (d.empty()) continue;
     if (sum.empty()) sum.assign(d.size(), 0.0);
     if (d.size() != sum.size()) continue;
     for (std::size_t i = 0; i < d.size(); ++i) sum[i] += d[i];
     ++count;
   }
-  if (count == 0)
-    throw ModelError("the " + category + " model cards record no descriptor mean for retrieval");
   std::vector<float> mean;
   for (double v : sum) mean.push_back(static_cast<float>(v / count));
   return mean;
 }
 
+std::vector<float> standardized(const std::vector<float>& v, const std::vector<float>& centre,
+                                const std::vector<float>& scale) {
+  std::vector<float> out(v.size(), 0.0f);
+  for (std::size_t i = 0; i < v.size() && i < centre.size() && i < scale.size(); ++i)
+    out[i] = (v[i] - centre[i]) / scale[i];
+  return out;
+}
+
+}  // namespace
+
+std::vector<float> ModelSet::categoryMean(const std::string& category) const {
+  auto mean = meanOverCards(forCategory(category), &model::ModelCard::descriptorMean);
+  if (mean.empty())
+    throw ModelError("the " + category + " model cards record no descriptor mean for retrieval");
+  return mean;
+}
+
+std::vector<float> ModelSet::categoryStd(const std::string& category) const {
+  return meanOverCards(forCategory(category), &model::ModelCard::descriptorStd);
+}
+
+ModelSet::RetrievalSpace ModelSet::retrievalSpace() const {
+  RetrievalSpace space;
+  const auto names = categories();
+  std::vector<std::vector<float>> means, stds;
+  for (const auto& c : names) {
+    means.push_back(categoryMean(c));
+    stds.push_back(categoryStd(c));
+  }
+  const std::size_t size = means.front().size();
+  for (const auto& m : means)
+    if (m.size() != size)
+      throw ModelError("model cards record descriptors of different sizes; retrain them together");
+  space.centre.assign(size, 0.0f);
+  space.scale.assign(size, 0.0f);
+  for (std::size_t i = 0; i < size; ++i) {
+    double centre = 0, variance = 0;
+    int withStd = 0;
+    for (std::size_t c = 0; c < means.size(); ++c) {
+      centre += means[c][i];
+      if (stds[c].size() == size) variance += stds[c][i] * stds[c][i], ++withStd;
+    }
+    space.centre[i] = static_cast<float>(centre / means.size());
+    // Old cards without a spread: unit scale (centring alone).
+    const double pooled = withStd > 0 ? std::sqrt(variance / withStd) : 1.0;
+    space.scale[i] = static_cast<float>(std::max(pooled, 1e-3));
+  }
+  return space;
+}
+
+double ModelSet::categorySimilarity(const std::vector<float>& descriptor,
+                                    const std::string& category) const {
+  const auto mean = categoryMean(category);
+  if (categories().size() < 2) return cosineSimilarity(descriptor, mean);
+  const auto space = retrievalSpace();
+  return cosineSimilarity(standardized(descriptor, space.centre, space.scale),
+                          standardized(mean, space.centre, space.scale));
+}
+
 std::vector<CategoryScore> ModelSet::rankCategories(const std::vector<float>& descriptor) const {
   std::vector<CategoryScore> scores;
-  for (const auto& c : categories())
-    scores.push_back({c, cosineSimilarity(descriptor, categoryMean(c))});
+  for (const auto& c : categories()) scores.push_back({c, categorySimilarity(descriptor, c)});
   std::stable_sort(
       scores.begin(), scores.end(),
       [](const CategoryScore& a, const CategoryScore& b) { return a.similarity > b.similarity; });

@@ -1,7 +1,10 @@
 // The models `annotate`, `filter` and `eval` use: every model card in a folder (default
 // resources/models), loaded with its weights, grouped by category, with category retrieval by
 // cosine similarity of an object's descriptor to the category means recorded at training
-// (paper, III-D: filtering a collection in DINOv2 feature space).
+// (paper, III-D: filtering a collection in DINOv2 feature space). With two or more categories
+// the similarity is taken after centring on the mean of the category means and dividing each
+// dimension by the categories' pooled spread, so that large, uninformative dimensions (shared
+// by every category) do not decide it; with one category it is the plain cosine.
 #pragma once
 
 #include <filesystem>
@@ -31,14 +34,24 @@ class ModelSet {
   std::vector<const model::AffordanceModel*> forCategory(const std::string& category) const;
   const std::vector<model::AffordanceModel>& models() const { return m_models; }
 
-  // Categories ranked by cosine similarity of `descriptor` to their training means, best first.
+  // Categories ranked by similarity of `descriptor` to their training means, best first.
   std::vector<CategoryScore> rankCategories(const std::vector<float>& descriptor) const;
+  // Similarity in [-1, 1] of `descriptor` to one category; throws when the category is unknown.
+  double categorySimilarity(const std::vector<float>& descriptor,
+                            const std::string& category) const;
   std::vector<float> categoryMean(const std::string& category) const;  // throws when unknown
 
   // Feature options matching the cards (backend, grid size); the cache folder is the caller's.
   FeatureOptions featureOptions() const;
 
  private:
+  // Centre and per-dimension scale of the retrieval space (see the file comment).
+  struct RetrievalSpace {
+    std::vector<float> centre, scale;
+  };
+  RetrievalSpace retrievalSpace() const;
+  std::vector<float> categoryStd(const std::string& category) const;  // empty when not recorded
+
   std::vector<model::AffordanceModel> m_models;
 };
 

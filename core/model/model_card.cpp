@@ -60,7 +60,7 @@ json toJson(const ModelCard& c) {
                            {"nms_radius", c.extraction.nmsRadius},
                            {"confidence_scale", c.extraction.confidenceScale},
                            {"refine_voxels", c.extraction.refineVoxels}};
-  j["retrieval"] = {{"descriptor_mean", c.descriptorMean}};
+  j["retrieval"] = {{"descriptor_mean", c.descriptorMean}, {"descriptor_std", c.descriptorStd}};
   j["embedding_search"] = {{"affordance_feature_mean", c.affordanceFeatureMean}};
   j["training"] = c.training;
   j["metrics"] = c.metrics;
@@ -101,8 +101,10 @@ ModelCard modelCardFromJson(const json& j, const fs::path& path) {
       c.extraction.confidenceScale = p.value("confidence_scale", c.extraction.confidenceScale);
       c.extraction.refineVoxels = p.value("refine_voxels", c.extraction.refineVoxels);
     }
-    if (j.contains("retrieval"))
+    if (j.contains("retrieval")) {
       c.descriptorMean = j.at("retrieval").value("descriptor_mean", std::vector<float>{});
+      c.descriptorStd = j.at("retrieval").value("descriptor_std", std::vector<float>{});
+    }
     if (j.contains("embedding_search"))
       c.affordanceFeatureMean =
           j.at("embedding_search").value("affordance_feature_mean", std::vector<float>{});

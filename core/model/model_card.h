@@ -35,6 +35,7 @@ struct ModelCard {
   std::string weightsFile;  // relative to the card
   std::string weightsSha256;
   std::vector<float> descriptorMean;         // mean descriptor of the category's training objects
+  std::vector<float> descriptorStd;          // their per-dimension spread (empty on old cards)
   std::vector<float> affordanceFeatureMean;  // mean voxel feature at training affordances
   ExtractionSettings extraction;
   nlohmann::json training = nlohmann::json::object();  // data, command, objects, epochs, time...

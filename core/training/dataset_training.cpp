@@ -1,5 +1,6 @@
 #include "core/training/dataset_training.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <sstream>
@@ -22,6 +23,27 @@ namespace {
 
 double secondsSince(Clock::time_point t) {
   return std::chrono::duration<double>(Clock::now() - t).count();
+}
+
+// Per-dimension mean and standard deviation of the training objects' descriptors, for category
+// retrieval.
+void setDescriptorStatistics(const std::vector<TrainingSample>& samples, model::ModelCard& card) {
+  const std::size_t size = samples.front().descriptor.size();
+  std::vector<double> sum(size, 0.0), squares(size, 0.0);
+  for (const auto& s : samples)
+    for (std::size_t d = 0; d < size && d < s.descriptor.size(); ++d) {
+      sum[d] += s.descriptor[d];
+      squares[d] += static_cast<double>(s.descriptor[d]) * s.descriptor[d];
+    }
+  const double n = static_cast<double>(samples.size());
+  card.descriptorMean.clear();
+  card.descriptorStd.clear();
+  for (std::size_t d = 0; d < size; ++d) {
+    const double mean = sum[d] / n;
+    card.descriptorMean.push_back(static_cast<float>(mean));
+    card.descriptorStd.push_back(
+        static_cast<float>(std::sqrt(std::max(0.0, squares[d] / n - mean * mean))));
+  }
 }
 
 // Mean feature vector at the ground-truth points: the occupied voxel nearest to each point
@@ -79,7 +101,6 @@ DatasetTrainingResult trainFromDataset(const DatasetTrainingOptions& options) {
 
   DatasetTrainingResult result;
   std::vector<TrainingSample> samples;
-  std::vector<double> descriptorSum;
   std::string configHash;
   std::size_t ofCategory = 0;
   const auto featureStart = Clock::now();
@@ -104,8 +125,6 @@ DatasetTrainingResult trainFromDataset(const DatasetTrainingOptions& options) {
       continue;
     }
     configHash = grid.configHash;
-    if (descriptorSum.empty()) descriptorSum.assign(grid.descriptor.size(), 0.0);
-    for (std::size_t d = 0; d < grid.descriptor.size(); ++d) descriptorSum[d] += grid.descriptor[d];
     samples.push_back(makeTrainingSample(entry.id, grid, normalizedTargets(labels, type, grid)));
   }
   if (options.onFeatureProgress) options.onFeatureProgress(entries.size(), entries.size(), "");
@@ -136,8 +155,7 @@ DatasetTrainingResult trainFromDataset(const DatasetTrainingOptions& options) {
   card.featureChannels = samples.front().channels;
   card.descriptorSize = static_cast<int>(samples.front().descriptor.size());
   card.gridResolution = samples.front().resolution;
-  for (double v : descriptorSum)
-    card.descriptorMean.push_back(static_cast<float>(v / samples.size()));
+  setDescriptorStatistics(samples, card);
   std::vector<double> featureSum(card.featureChannels, 0.0);
   std::size_t featureCount = 0;
   for (const auto& s : samples) addAffordanceFeatures(s, featureSum, featureCount);
