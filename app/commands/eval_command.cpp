@@ -31,6 +31,7 @@ void setupEval(CLI::App& root) {
     std::vector<std::string> only;
     double minutes = 2;
     int epochs = 0;
+    double nearWeight = sagrid::SweepOptions{}.nearWeight;
   };
   auto o = std::make_shared<Options>();
   cmd->add_option("--data", o->data, "Labelled dataset (manifest.jsonl or object folders)")
@@ -43,6 +44,9 @@ void setupEval(CLI::App& root) {
                   "With --sweep: the models to train (default all four)");
   cmd->add_option("--minutes", o->minutes, "With --sweep: training budget per model (default 2)");
   cmd->add_option("--epochs", o->epochs, "With --sweep: epochs per model instead of --minutes");
+  cmd->add_option("--near-weight", o->nearWeight,
+                  "With --sweep: near-instance loss weight (default 30, as the shipped models)")
+      ->check(CLI::NonNegativeNumber);
   cmd->add_option("--mode", o->mode, "With --sweep: sparse or dense")
       ->check(CLI::IsMember({"sparse", "dense"}));
   cmd->callback([o] {
@@ -61,6 +65,7 @@ void setupEval(CLI::App& root) {
       s.minutes = o->minutes;
       s.epochs = o->epochs;
       s.mode = o->mode;
+      s.nearWeight = static_cast<float>(o->nearWeight);
       if (!o->cache.empty()) s.cacheDir = o->cache;
       s.onProgress = progress;
       const auto result = sagrid::runArchitectureSweep(s);

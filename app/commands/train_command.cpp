@@ -74,7 +74,6 @@ sagrid::DatasetTrainingResult trainOne(const TrainCommandOptions& o, const fs::p
   t.training.resume = o.resume;
   t.command = commandLine(o, data.string(), model, out.string());
   std::unique_ptr<sagrid::app::ProgressBar> featureBar, trainBar;
-  std::size_t barSteps = 0;
   t.onFeatureProgress = [&](std::size_t done, std::size_t total, const std::string& id) {
     if (!featureBar)
       featureBar = std::make_unique<sagrid::app::ProgressBar>("features " + model, total);
@@ -82,10 +81,8 @@ sagrid::DatasetTrainingResult trainOne(const TrainCommandOptions& o, const fs::p
     if (done == total) featureBar->finish();
   };
   t.training.onProgress = [&](const sagrid::model::TrainingProgress& p) {
-    if (!trainBar || barSteps != p.steps) {  // the total is fixed after a timed first epoch
-      trainBar = std::make_unique<sagrid::app::ProgressBar>("train " + model, p.steps);
-      barSteps = p.steps;
-    }
+    if (!trainBar) trainBar = std::make_unique<sagrid::app::ProgressBar>("train " + model, p.steps);
+    trainBar->setTotal(p.steps);  // fixed only after a timed first epoch
     char status[96];
     std::snprintf(status, sizeof status, "epoch %d/%d loss %.4f", p.epoch, p.epochs, p.loss);
     trainBar->update(p.step, status);

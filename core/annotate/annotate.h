@@ -5,7 +5,9 @@
 // file's frame and projected onto the surface, with a confidence.
 #pragma once
 
+#include <atomic>
 #include <filesystem>
+#include <functional>
 #include <map>
 #include <string>
 #include <vector>
@@ -45,6 +47,12 @@ struct AnnotateOptions {
   FeatureOptions features;  // backend must match the cards; cacheDir optional
   InstanceMode mode = InstanceMode::Auto;
   std::map<std::string, int> counts;  // type -> known instance count (InstanceMode::Count)
+  // Checked before each stage (import, features, each model); when set, annotateMeshFile throws
+  // Cancelled. May be null.
+  const std::atomic<bool>* cancel = nullptr;
+  // Called before each stage with the fraction done in [0, 1] and the stage's name ("import",
+  // "features", a model name), and with 1 at the end.
+  std::function<void(float fraction, const std::string& stage)> onProgress;
 };
 
 struct AnnotationResult {

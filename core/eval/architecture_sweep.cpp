@@ -48,6 +48,7 @@ SweepResult runArchitectureSweep(const SweepOptions& o) {
       t.features.cacheDir = cache;
       t.training.epochs = o.epochs;
       t.training.minutes = o.epochs > 0 ? 0 : o.minutes;
+      t.training.nearWeight = o.nearWeight;
       t.command = "sagrid eval --sweep (architecture " + row.id + ")";
       const auto trained = trainFromDataset(t);
       row.trainSeconds += trained.trainingSeconds;

@@ -20,6 +20,7 @@ struct SweepOptions {
   double minutes = 2;
   int epochs = 0;
   std::string mode = "sparse";
+  float nearWeight = 30;  // as the shipped models (train --preset default)
   std::function<void(std::size_t, std::size_t, const std::string&)> onProgress;
 };
 

@@ -53,9 +53,12 @@ std::optional<PredictionJob> ModelPredictor::jobFor(const AnnotationDocument& do
   const Normalization normalization = document.normalization();
   return PredictionJob([models = m_models, options, mesh, labelsDir, id,
                         normalization](PredictionProgress& progress) {
-    progress.fraction = 0.1f;
-    AnnotationResult r = annotateMeshFile(mesh, id, *models, options, labelsDir);
-    // annotate has no cancellation points; a cancelled job's result is dropped here.
+    AnnotateOptions withProgress = options;
+    withProgress.cancel = &progress.cancel;
+    withProgress.onProgress = [&progress](float fraction, const std::string&) {
+      progress.fraction = 0.95f * fraction;  // the rest: handing the fields to the document
+    };
+    AnnotationResult r = annotateMeshFile(mesh, id, *models, withProgress, labelsDir);
     if (progress.cancel) throw Cancelled();
     PredictionResult result;
     result.category = r.category;

@@ -117,5 +117,35 @@ TEST(ModelSetTest, CosineSimilarity) {
   EXPECT_EQ(cosineSimilarity({1}, {1, 2}), 0.0);
 }
 
+TEST_F(AnnotateTest, ReportsStagesInOrderAndStopsWhenCancelled) {
+  std::vector<std::pair<float, std::string>> stages;
+  annotate.onProgress = [&](float fraction, const std::string& stage) {
+    stages.emplace_back(fraction, stage);
+  };
+  annotate.category = "stove";
+  annotateMeshFile(entries[0].mesh, "stove0", *set, annotate, dir / "out" / "stove0");
+  std::vector<std::string> names;
+  for (std::size_t i = 0; i < stages.size(); ++i) {
+    names.push_back(stages[i].second);
+    if (i > 0) {
+      EXPECT_GT(stages[i].first, stages[i - 1].first);
+    }
+  }
+  EXPECT_EQ(names, (std::vector<std::string>{"import", "features", "stove.heatsource",
+                                             "stove.togglebutton", "done"}));
+  EXPECT_FLOAT_EQ(stages.back().first, 1.0f);
+
+  // Cancelled before the first model: no result, no labels written by this call.
+  std::atomic<bool> cancel{false};
+  annotate.cancel = &cancel;
+  annotate.onProgress = [&](float, const std::string& stage) {
+    if (stage == "features") cancel = true;
+  };
+  EXPECT_THROW(
+      annotateMeshFile(entries[0].mesh, "stove0", *set, annotate, dir / "out" / "cancelled"),
+      Cancelled);
+  EXPECT_FALSE(fs::exists(dir / "out" / "cancelled" / "labels.json"));
+}
+
 }  // namespace
 }  // namespace sagrid
