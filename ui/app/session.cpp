@@ -7,6 +7,7 @@
 #include "core/export/mjcf_export.h"
 #include "core/export/omnigibson_export.h"
 #include "core/export/training_set.h"
+#include "core/training/dataset_training.h"
 #include "ui/document/object_loader.h"
 #include "ui/document/point_commands.h"
 
@@ -82,6 +83,7 @@ void Session::openEntry(int index) {
     return;
   }
   logger()->info("opened {} ({} of {})", m_document->displayName(), i + 1, m_queue.size());
+  chooseNewPointType();
   applyDefaultFieldSettings();
   frameObject();
   addModeArmed = false;
@@ -164,6 +166,17 @@ void Session::skip() {
 void Session::deleteSelected() {
   if (m_document && m_document->selected() >= 0)
     execute(std::make_unique<DeletePointCommand>(m_document->selected()));
+}
+
+void Session::chooseNewPointType() {
+  // Keep the curator's choice when this category has that type (a stove has no fluidsource);
+  // else its first type from the default models (stove.heatsource, sink.fluidsource, ...).
+  const std::string& category = m_document->labels().object.category;
+  std::vector<std::string> types;
+  for (const auto& name : defaultModelNames())
+    if (name.rfind(category + ".", 0) == 0) types.push_back(name.substr(category.size() + 1));
+  if (types.empty() || std::find(types.begin(), types.end(), m_currentType) != types.end()) return;
+  m_currentType = types.front();
 }
 
 void Session::changeSelectedType(const std::string& type) {

@@ -77,6 +77,26 @@ TEST(Interaction, ShiftClickAddsPointOfCurrentTypeOnSurface) {
   EXPECT_EQ(readLabels(dir / "labels.json").affordances.size(), 2u);
 }
 
+TEST(Interaction, NewPointTypeFollowsTheObjectsCategory) {
+  const auto dir = sagrid::test::freshTempDir();
+  ScriptedApp s(dir);
+  EXPECT_EQ(s.app->session().currentType(), "heatsource");
+  s.key(GLFW_KEY_2);  // fluidsource, which a stove does not have
+  s.app->session().openObject(dir / "mesh.obj", dir / "labels.json");
+  EXPECT_EQ(s.app->session().currentType(), "heatsource");
+  // A sink: heatsource becomes its first type; togglebutton, which it has, is kept.
+  ObjectLabels sink = readLabels(dir / "labels.json");
+  sink.object.category = "sink";
+  std::filesystem::create_directories(dir / "sink");
+  writeLabels(dir / "sink" / "labels.json", sink);
+  std::filesystem::copy_file(dir / "mesh.obj", dir / "sink" / "mesh.obj");
+  s.app->session().openObject(dir / "sink" / "mesh.obj", dir / "sink" / "labels.json");
+  EXPECT_EQ(s.app->session().currentType(), "fluidsource");
+  s.key(GLFW_KEY_3);  // togglebutton
+  s.app->session().openObject(dir / "sink" / "mesh.obj", dir / "sink" / "labels.json");
+  EXPECT_EQ(s.app->session().currentType(), "togglebutton");
+}
+
 TEST(Interaction, AWithNothingSelectedAcceptsAllAndMarksObjectReviewed) {
   const auto dir = sagrid::test::freshTempDir();
   ScriptedApp s(dir);
