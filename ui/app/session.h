@@ -85,8 +85,6 @@ class Session {
   const ReviewQueue& queue() const { return m_queue; }
   const std::string& currentType() const { return m_currentType; }
   void setCurrentType(const std::string& type) { m_currentType = type; }
-  // On opening an object: a type its category has (see session.cpp).
-  void chooseNewPointType();
   const RecentFiles& recent() const { return m_recent; }
   bool addModeArmed = false;  // next click on the surface adds a point
   bool showHelp = false;
@@ -100,6 +98,9 @@ class Session {
   void dismissError();
 
  private:
+  // On opening an object: a new-point type its category has (see session.cpp).
+  void chooseNewPointType();
+
   void updateQueueState();
   void applyDefaultFieldSettings();
 
