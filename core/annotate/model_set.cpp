@@ -34,6 +34,12 @@ ModelSet::ModelSet(std::vector<model::AffordanceModel> models) : m_models(std::m
           " need different features (backend, config or grid size); keep models of one "
           "feature setup in a folder");
   }
+  if (categories().size() < 2) return;
+  try {
+    m_retrieval = retrievalSpace();
+  } catch (const ModelError&) {
+    // Cards without retrieval statistics still annotate with a given category.
+  }
 }
 
 std::vector<std::string> ModelSet::categories() const {
@@ -133,7 +139,7 @@ double ModelSet::categorySimilarity(const std::vector<float>& descriptor,
                                     const std::string& category) const {
   const auto mean = categoryMean(category);
   if (categories().size() < 2) return cosineSimilarity(descriptor, mean);
-  const auto space = retrievalSpace();
+  const RetrievalSpace space = m_retrieval ? *m_retrieval : retrievalSpace();
   return cosineSimilarity(standardized(descriptor, space.centre, space.scale),
                           standardized(mean, space.centre, space.scale));
 }

@@ -8,6 +8,7 @@
 #pragma once
 
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -53,6 +54,9 @@ class ModelSet {
   std::vector<float> categoryStd(const std::string& category) const;  // empty when not recorded
 
   std::vector<model::AffordanceModel> m_models;
+  // Computed once when the cards allow it (every category records a mean of one size); otherwise
+  // retrievalSpace() is called at use and throws its clear error there.
+  std::optional<RetrievalSpace> m_retrieval;
 };
 
 }  // namespace sagrid
