@@ -67,6 +67,8 @@ EvaluationReport evaluateModels(const ModelSet& models, const EvaluationOptions&
       report.modelNames.push_back(m.card().name);
 
   std::vector<std::map<std::string, TypeMetricsAccumulator>> acc(kMethodCount);
+  CuratorEffortAccumulator effort;
+  std::map<std::string, CuratorEffortAccumulator> effortByCategory;
   double modelSeconds = 0;
   const auto categories = models.categories();
   for (std::size_t e = 0; e < entries.size(); ++e) {
@@ -89,10 +91,25 @@ EvaluationReport evaluateModels(const ModelSet& models, const EvaluationOptions&
       for (const auto* model : models.forCategory(category))
         (void)predictWithModel(*model, grid, scene, mesh.fileUp, InstanceMode::Auto);
       modelSeconds += std::chrono::duration<double>(Clock::now() - t).count();
+      auto surfaceOf = [](const ModelPrediction& p) {
+        std::vector<Eigen::Vector3f> out;
+        for (const auto& s : p.surface) out.push_back(s.position);
+        return out;
+      };
+      PointEdits objectEdits;
       for (const auto* model : models.forCategory(category)) {
         const auto& card = model->card();
         std::vector<Eigen::Vector3f> truth;
         for (const auto* a : labels.ofType(card.type)) truth.push_back(a->position);
+        // What the GUI shows: the automatic count. Extra points on a type the object lacks are
+        // edits too (deletions), so this comes before skipping types without ground truth.
+        const auto autoPoints =
+            surfaceOf(predictWithModel(*model, grid, scene, mesh.fileUp, InstanceMode::Auto));
+        const PointEdits edits = pointEdits(matchPoints(autoPoints, truth, mpu));
+        objectEdits += edits;
+        object["edits"][card.name] = {{"drags", edits.drags},
+                                      {"deletions", edits.deletions},
+                                      {"additions", edits.additions}};
         if (truth.empty()) continue;
         auto record = [&](Method method, const std::vector<Eigen::Vector3f>& predicted) {
           acc[method][card.name].addSingle(nearestDistance(predicted.front(), truth, mpu));
@@ -101,19 +118,13 @@ EvaluationReport evaluateModels(const ModelSet& models, const EvaluationOptions&
           for (const auto& p : predicted) points.push_back({p.x(), p.y(), p.z()});
           object["predictions"][card.name][kMethodNames[method]] = points;
         };
-        auto surfaceOf = [](const ModelPrediction& p) {
-          std::vector<Eigen::Vector3f> out;
-          for (const auto& s : p.surface) out.push_back(s.position);
-          return out;
-        };
         ExtractionSettings paper = card.extraction;
         paper.refineVoxels = 0;  // the paper's argmin: a voxel centre
         record(kArgmin, surfaceOf(predictWithModel(*model, grid, scene, mesh.fileUp,
                                                    InstanceMode::Single, 1, &paper)));
         record(kRefined,
                surfaceOf(predictWithModel(*model, grid, scene, mesh.fileUp, InstanceMode::Single)));
-        record(kAuto,
-               surfaceOf(predictWithModel(*model, grid, scene, mesh.fileUp, InstanceMode::Auto)));
+        record(kAuto, autoPoints);
         record(kKMeans,
                surfaceOf(predictWithModel(*model, grid, scene, mesh.fileUp, InstanceMode::Count,
                                           static_cast<int>(truth.size()))));
@@ -129,6 +140,8 @@ EvaluationReport evaluateModels(const ModelSet& models, const EvaluationOptions&
         for (const auto& p : truth) t.push_back({p.x(), p.y(), p.z()});
         object["truth"][card.name] = t;
       }
+      effort.addObject(objectEdits);
+      effortByCategory[category].addObject(objectEdits);
       report.perObject.push_back(object);
       ++report.objects;
     } catch (const Cancelled&) {
@@ -150,6 +163,8 @@ EvaluationReport evaluateModels(const ModelSet& models, const EvaluationOptions&
     for (const auto& [name, a] : acc[m]) mm.byModel[name] = a.result();
     report.methods.push_back(mm);
   }
+  report.effort = effort.result();
+  for (const auto& [category, a] : effortByCategory) report.effortByCategory[category] = a.result();
   return report;
 }
 
@@ -191,6 +206,23 @@ std::string evaluationMarkdown(const EvaluationReport& r) {
          << formatValue(100 * t.recall, "%.1f %%") << " | "
          << formatValue(100 * t.countRight, "%.1f %%") << " |\n";
     }
+  md << "\n## Curator effort (SAGrid auto count; " << kMatchRadiusMeters * 100
+     << " cm tolerance)\n\nPoint edits per object: a predicted point too far from its matched "
+        "truth is dragged, an extra one deleted, a missing one added. By hand, every point is "
+        "placed.\n\n"
+     << "| Objects | Edits / object | Drags | Deletions | Additions | By hand (points / object) "
+        "| Edits ÷ by hand | Right with one key |\n|---|---|---|---|---|---|---|---|\n";
+  auto effortRow = [&](const std::string& label, const CuratorEffort& e) {
+    md << "| " << label << e.objects << " | " << formatValue(e.editsPerObject, "%.2f") << " | "
+       << formatValue(e.dragsPerObject, "%.2f") << " | "
+       << formatValue(e.deletionsPerObject, "%.2f") << " | "
+       << formatValue(e.additionsPerObject, "%.2f") << " | "
+       << formatValue(e.handPointsPerObject, "%.2f") << " | "
+       << formatValue(e.editsPerObject / e.handPointsPerObject, "%.2f") << " | "
+       << formatValue(100 * e.oneKeyShare, "%.1f %%") << " |\n";
+  };
+  effortRow("all: ", r.effort);
+  for (const auto& [category, e] : r.effortByCategory) effortRow(category + ": ", e);
   return md.str();
 }
 
@@ -212,6 +244,18 @@ nlohmann::json evaluationJson(const EvaluationReport& r) {
                                       {"precision", number(t.precision)},
                                       {"recall", number(t.recall)},
                                       {"count_right", number(t.countRight)}};
+  auto effortJson = [&](const CuratorEffort& e) {
+    return nlohmann::json{{"objects", e.objects},
+                          {"edits_per_object", number(e.editsPerObject)},
+                          {"drags_per_object", number(e.dragsPerObject)},
+                          {"deletions_per_object", number(e.deletionsPerObject)},
+                          {"additions_per_object", number(e.additionsPerObject)},
+                          {"hand_points_per_object", number(e.handPointsPerObject)},
+                          {"one_key_share", number(e.oneKeyShare)}};
+  };
+  j["curator_effort"] = effortJson(r.effort);
+  for (const auto& [category, e] : r.effortByCategory)
+    j["curator_effort_by_category"][category] = effortJson(e);
   j["per_object"] = r.perObject;
   return j;
 }

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "core/annotate/model_set.h"
+#include "core/eval/curator_effort.h"
 #include "core/eval/metrics.h"
 
 namespace sagrid {
@@ -37,6 +38,8 @@ struct EvaluationReport {
   double meanOccupiedVoxels = 0;
   double modelMilliseconds = 0;  // mean per object: all models of the category + auto extraction
                                  // + projection, features cached
+  CuratorEffort effort;  // SAGrid auto count, all objects
+  std::map<std::string, CuratorEffort> effortByCategory;
   nlohmann::json perObject = nlohmann::json::array();
 };
 

@@ -8,6 +8,7 @@
 #include <random>
 
 #include "core/common/error.h"
+#include "core/eval/curator_effort.h"
 #include "core/eval/hungarian.h"
 
 namespace sagrid {
@@ -82,6 +83,43 @@ TEST(Metrics, MatchingCountsPrecisionRecallAndRightCount) {
   EXPECT_NEAR(r.precision, 3.0 / 5.0, 1e-9);
   EXPECT_NEAR(r.recall, 3.0 / 4.0, 1e-9);
   EXPECT_NEAR(r.countRight, 0.5, 1e-9);
+}
+
+TEST(CuratorEffort, CountsDragsDeletionsAndAdditions) {
+  // Two truths; three predictions: one within 5 cm, one 20 cm off, one extra far away.
+  const std::vector<Eigen::Vector3f> truth = {{0, 0, 0}, {1, 0, 0}};
+  const std::vector<Eigen::Vector3f> predicted = {{0.01f, 0, 0}, {1.2f, 0, 0}, {5, 5, 5}};
+  const PointEdits e = pointEdits(matchPoints(predicted, truth, 1.0));
+  EXPECT_EQ(e.drags, 1u);
+  EXPECT_EQ(e.deletions, 1u);
+  EXPECT_EQ(e.additions, 0u);
+  EXPECT_EQ(e.handPoints, 2u);
+  // One prediction for two truths, correct: one point to add.
+  const PointEdits missing = pointEdits(matchPoints({{1, 0, 0}}, truth, 1.0));
+  EXPECT_EQ(missing.total(), 1u);
+  EXPECT_EQ(missing.additions, 1u);
+  // Predictions where the object has none of the type: each one is deleted.
+  const PointEdits extras = pointEdits(matchPoints({{1, 0, 0}, {2, 0, 0}}, {}, 1.0));
+  EXPECT_EQ(extras.deletions, 2u);
+  EXPECT_EQ(extras.handPoints, 0u);
+}
+
+TEST(CuratorEffort, AggregatesPerObjectAndOneKeyShare) {
+  CuratorEffortAccumulator acc;
+  PointEdits perfect;
+  perfect.handPoints = 4;
+  PointEdits twoEdits;
+  twoEdits.drags = 1;
+  twoEdits.additions = 1;
+  twoEdits.handPoints = 2;
+  acc.addObject(perfect);
+  acc.addObject(twoEdits);
+  const CuratorEffort r = acc.result();
+  EXPECT_EQ(r.objects, 2u);
+  EXPECT_DOUBLE_EQ(r.editsPerObject, 1.0);
+  EXPECT_DOUBLE_EQ(r.handPointsPerObject, 3.0);
+  EXPECT_DOUBLE_EQ(r.oneKeyShare, 0.5);
+  EXPECT_TRUE(std::isnan(CuratorEffortAccumulator().result().editsPerObject));
 }
 
 }  // namespace
