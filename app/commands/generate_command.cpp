@@ -31,14 +31,17 @@ void setupGenerate(CLI::App& root) {
     bool stats = false;
   };
   auto o = std::make_shared<Options>();
-  cmd->add_option("--category", o->category, "stove or sink")->check(CLI::IsMember({"stove", "sink"}));
+  cmd->add_option("--category", o->category, "stove, sink or none (distractors: microwaves, ovens, dishwashers, hoods, cabinets)")
+      ->check(CLI::IsMember({"stove", "sink", "none"}));
   cmd->add_option("--count", o->count, "Number of objects")->check(CLI::NonNegativeNumber);
   cmd->add_option("--seed", o->seed, "Random seed (object i depends only on seed, category and i)");
   cmd->add_option("--out", o->out, "Output dataset folder")->required();
   cmd->add_option("--format", o->format, "obj (z-up), glb (y-up) or mixed (half each)")
       ->check(CLI::IsMember({"obj", "glb", "mixed"}));
-  cmd->add_option("--preset", o->preset, "bench: the fixed benchmark split (OUT/train, OUT/val; see README)")
-      ->check(CLI::IsMember({"bench"}));
+  cmd->add_option("--preset", o->preset,
+                  "bench: the fixed benchmark split (OUT/train, OUT/val; see README); distractors: category "
+                  "\"none\" objects for the category classifier (OUT/train 150, OUT/val 50)")
+      ->check(CLI::IsMember({"bench", "distractors"}));
   cmd->add_option("--contact-sheet", o->contactSheet, "Also render a PNG grid of thumbnails with the labels drawn");
   cmd->add_option("--sheet-limit", o->sheetLimit, "At most this many objects on the contact sheet")->check(CLI::PositiveNumber);
   cmd->add_flag("--stats", o->stats, "Print the variety table of what was written");
@@ -47,15 +50,16 @@ void setupGenerate(CLI::App& root) {
     const auto start = std::chrono::steady_clock::now();
     int written = 0;
     std::vector<fs::path> dirs;
-    if (o->preset == "bench") {
+    if (!o->preset.empty()) {
+      const auto& preset = o->preset == "bench" ? sagrid::gen::benchPreset() : sagrid::gen::distractorPreset();
       int total = 0;
-      for (const auto& s : sagrid::gen::benchPreset())
+      for (const auto& s : preset)
         for (const auto& r : s.requests) total += r.count;
       sagrid::app::ProgressBar bar("generate", static_cast<std::size_t>(total));
-      sagrid::gen::generateBenchPreset(o->out, [&](int done, int) { bar.update(static_cast<std::size_t>(done)); });
+      sagrid::gen::generatePreset(preset, o->out, [&](int done, int) { bar.update(static_cast<std::size_t>(done)); });
       bar.finish();
       written = total;
-      for (const auto& s : sagrid::gen::benchPreset()) dirs.push_back(fs::path(o->out) / s.name);
+      for (const auto& s : preset) dirs.push_back(fs::path(o->out) / s.name);
     } else {
       if (o->category.empty()) throw sagrid::InvalidArgument("--category is required (or --preset bench)");
       sagrid::app::ProgressBar bar("generate " + o->category, static_cast<std::size_t>(o->count));

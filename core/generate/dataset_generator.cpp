@@ -5,6 +5,7 @@
 #include "core/common/atomic_file.h"
 #include "core/common/error.h"
 #include "core/common/sha256.h"
+#include "core/generate/distractor_generator.h"
 #include "core/generate/random.h"
 #include "core/generate/realism.h"
 #include "core/generate/sink_generator.h"
@@ -26,7 +27,8 @@ GeneratedObject makeRawObject(const std::string& category, std::uint64_t seed, i
   Rng rng(deriveSeed(seed, category, static_cast<std::uint64_t>(index)));
   if (category == "stove") return generateStove(rng);
   if (category == "sink") return generateSink(rng);
-  throw InvalidArgument("unknown category '" + category + "' (expected stove or sink)");
+  if (category == kDistractorCategory) return generateDistractor(rng);
+  throw InvalidArgument("unknown category '" + category + "' (expected stove, sink or none)");
 }
 
 namespace {
@@ -113,8 +115,8 @@ ManifestLine writeObject(FinishedObject& object, const fs::path& outDir) {
 std::vector<ManifestLine> generateDataset(const std::vector<GenerateRequest>& requests, MeshFormat format,
                                           const fs::path& outDir, const ProgressCallback& progress) {
   for (const auto& r : requests) {
-    if (r.category != "stove" && r.category != "sink") {
-      throw InvalidArgument("unknown category '" + r.category + "' (expected stove or sink)");
+    if (r.category != "stove" && r.category != "sink" && r.category != kDistractorCategory) {
+      throw InvalidArgument("unknown category '" + r.category + "' (expected stove, sink or none)");
     }
     if (r.count < 0) throw InvalidArgument("--count must be >= 0");
   }
@@ -150,12 +152,22 @@ const std::vector<BenchSplit>& benchPreset() {
   return preset;
 }
 
-void generateBenchPreset(const fs::path& outDir, const ProgressCallback& progress) {
+const std::vector<BenchSplit>& distractorPreset() {
+  // Seeds of their own: the bench split's streams are untouched.
+  static const std::vector<BenchSplit> preset = {
+      {"train", {{kDistractorCategory, 150, 3001}}},
+      {"val", {{kDistractorCategory, 50, 4001}}},
+  };
+  return preset;
+}
+
+void generatePreset(const std::vector<BenchSplit>& preset, const fs::path& outDir,
+                    const ProgressCallback& progress) {
   int total = 0;
-  for (const auto& split : benchPreset())
+  for (const auto& split : preset)
     for (const auto& r : split.requests) total += r.count;
   int offset = 0;
-  for (const auto& split : benchPreset()) {
+  for (const auto& split : preset) {
     int splitCount = 0;
     for (const auto& r : split.requests) splitCount += r.count;
     generateDataset(split.requests, MeshFormat::Mixed, outDir / split.name, [&](int done, int) {
@@ -163,6 +175,10 @@ void generateBenchPreset(const fs::path& outDir, const ProgressCallback& progres
     });
     offset += splitCount;
   }
+}
+
+void generateBenchPreset(const fs::path& outDir, const ProgressCallback& progress) {
+  generatePreset(benchPreset(), outDir, progress);
 }
 
 }  // namespace sagrid::gen

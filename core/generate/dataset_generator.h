@@ -34,7 +34,7 @@ struct FinishedObject {
   double metersPerUnit = 1.0;
 };
 
-// Builds object `index` of category ("stove" | "sink") for `seed`, realism applied.
+// Builds object `index` of category ("stove" | "sink" | "none": a distractor) for `seed`, realism applied.
 FinishedObject makeObject(const std::string& category, std::uint64_t seed, int index, MeshFormat format);
 
 // The whole raw object (metres, z-up, no realism), e.g. for previews.
@@ -66,5 +66,11 @@ struct BenchSplit {
 };
 const std::vector<BenchSplit>& benchPreset();
 void generateBenchPreset(const std::filesystem::path& outDir, const ProgressCallback& progress = {});
+// Distractors for the category classifier's rejection: outDir/train (150, seed 3001) and
+// outDir/val (50, seed 4001), category "none", no affordances, mixed OBJ/GLB.
+const std::vector<BenchSplit>& distractorPreset();
+// Writes every split of a preset into outDir/<split name>.
+void generatePreset(const std::vector<BenchSplit>& preset, const std::filesystem::path& outDir,
+                    const ProgressCallback& progress = {});
 
 }  // namespace sagrid::gen
