@@ -12,6 +12,8 @@
 #include "core/common/error.h"
 #include "core/eval/architecture_sweep.h"
 #include "core/eval/evaluation.h"
+#include "core/eval/evaluation_comparison.h"
+#include "core/common/atomic_file.h"
 
 namespace {
 namespace fs = std::filesystem;
@@ -28,7 +30,7 @@ void setupEval(CLI::App& root) {
       "architecture on DATA/train and compares them on DATA/val (Table I form).");
   struct Options {
     std::string data, models, out = "eval", cache, sweep, mode = "sparse";
-    std::vector<std::string> only;
+    std::vector<std::string> only, compare;
     double minutes = 2;
     int epochs = 0;
     double nearWeight = sagrid::SweepOptions{}.nearWeight;
@@ -38,6 +40,10 @@ void setupEval(CLI::App& root) {
       ->required();
   cmd->add_option("--models", o->models, "Model folder (default resources/models)");
   cmd->add_option("--out", o->out, "Report folder (default eval)");
+  cmd->add_option("--compare", o->compare,
+                  "Other model folders to evaluate on the same objects (repeatable); writes "
+                  "OUT/compare.md + compare.json with every set side by side and each set's own "
+                  "report in OUT/compare-<n>/");
   cmd->add_option("--cache", o->cache, "Feature cache (default DATA/.sagrid-cache)");
   cmd->add_option("--sweep", o->sweep, "Architectures to compare, ';'-separated Table I strings");
   cmd->add_option("--sweep-models", o->only,
@@ -87,6 +93,26 @@ void setupEval(CLI::App& root) {
     sagrid::writeEvaluationReport(report, o->out);
     std::cout << sagrid::evaluationMarkdown(report);
     std::fprintf(stderr, "report: %s/eval.md, eval.json, eval.png\n", o->out.c_str());
+    if (o->compare.empty()) return;
+    std::vector<sagrid::EvaluationReport> others;
+    others.reserve(o->compare.size());
+    for (std::size_t i = 0; i < o->compare.size(); ++i) {
+      const auto otherModels = sagrid::ModelSet::load(o->compare[i]);
+      sagrid::EvaluationOptions other = options;
+      other.features = otherModels.featureOptions();
+      other.features.cacheDir = o->cache;
+      others.push_back(sagrid::evaluateModels(otherModels, other));
+      sagrid::writeEvaluationReport(others.back(),
+                                    fs::path(o->out) / ("compare-" + std::to_string(i + 1)));
+    }
+    std::vector<sagrid::LabelledReport> table{{modelsDir.string(), &report}};
+    for (std::size_t i = 0; i < others.size(); ++i) table.push_back({o->compare[i], &others[i]});
+    const std::string md = sagrid::comparisonMarkdown(table);
+    sagrid::writeFileAtomic(fs::path(o->out) / "compare.md", md);
+    sagrid::writeFileAtomic(fs::path(o->out) / "compare.json",
+                            sagrid::comparisonJson(table).dump(2) + "\n");
+    std::cout << '\n' << md;
+    std::fprintf(stderr, "comparison: %s/compare.md, compare.json\n", o->out.c_str());
   });
 }
 

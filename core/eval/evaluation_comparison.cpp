@@ -1,0 +1,127 @@
+#include "core/eval/evaluation_comparison.h"
+
+#include <cmath>
+#include <cstdio>
+#include <set>
+#include <sstream>
+
+#include "core/common/error.h"
+
+namespace sagrid {
+namespace {
+
+constexpr const char* kPaperMethod = "SAGrid argmin (paper)";
+constexpr const char* kAutoMethod = "SAGrid auto count";
+
+const TypeMetrics* metricsOf(const EvaluationReport& r, const std::string& method,
+                             const std::string& model) {
+  for (const auto& m : r.methods)
+    if (m.method == method) {
+      const auto it = m.byModel.find(model);
+      return it == m.byModel.end() ? nullptr : &it->second;
+    }
+  return nullptr;
+}
+
+std::vector<std::string> modelColumns(const std::vector<LabelledReport>& reports) {
+  std::vector<std::string> names;
+  std::set<std::string> seen;
+  for (const auto& lr : reports)
+    for (const auto& n : lr.report->modelNames)
+      if (seen.insert(n).second) names.push_back(n);
+  return names;
+}
+
+double paperAverage(const EvaluationReport& r, const std::vector<std::string>& names) {
+  double sum = 0;
+  int count = 0;
+  for (const auto& n : names)
+    if (const auto* t = metricsOf(r, kPaperMethod, n); t && std::isfinite(t->paperError))
+      sum += t->paperError, ++count;
+  return count ? sum / count : NAN;
+}
+
+std::string cell(double v, const char* format) {
+  if (!std::isfinite(v)) return "–";
+  char b[32];
+  std::snprintf(b, sizeof b, format, v);
+  return b;
+}
+
+void checkSameData(const std::vector<LabelledReport>& reports) {
+  if (reports.empty()) throw InvalidArgument("comparison: no reports");
+  for (const auto& lr : reports)
+    if (lr.report->objects != reports.front().report->objects ||
+        lr.report->dataDir != reports.front().report->dataDir)
+      throw InvalidArgument("comparison: " + lr.label + " was evaluated on " +
+                            std::to_string(lr.report->objects) + " objects of " +
+                            lr.report->dataDir.string() + ", " + reports.front().label + " on " +
+                            std::to_string(reports.front().report->objects) + " of " +
+                            reports.front().report->dataDir.string());
+}
+
+}  // namespace
+
+std::string comparisonMarkdown(const std::vector<LabelledReport>& reports) {
+  checkSameData(reports);
+  const auto names = modelColumns(reports);
+  std::ostringstream md;
+  md << "# Model sets side by side\n\nData: `" << reports.front().report->dataDir.string()
+     << "` — " << reports.front().report->objects << " objects.\n\n"
+     << "## Single-point error (m, paper's metric)\n\n| Models |";
+  for (const auto& n : names) md << ' ' << paperColumnName(n) << " |";
+  md << " Avg |\n|---|";
+  for (std::size_t i = 0; i <= names.size(); ++i) md << "---|";
+  md << '\n';
+  for (const auto& lr : reports) {
+    md << "| " << lr.label << " |";
+    for (const auto& n : names) {
+      const auto* t = metricsOf(*lr.report, kPaperMethod, n);
+      md << ' ' << cell(t ? t->paperError : NAN, "%.4f") << " |";
+    }
+    md << ' ' << cell(paperAverage(*lr.report, names), "%.4f") << " |\n";
+  }
+  md << "\n## Automatic count: recall within 5 cm / right count\n\n| Models |";
+  for (const auto& n : names) md << ' ' << paperColumnName(n) << " |";
+  md << "\n|---|";
+  for (std::size_t i = 0; i < names.size(); ++i) md << "---|";
+  md << '\n';
+  for (const auto& lr : reports) {
+    md << "| " << lr.label << " |";
+    for (const auto& n : names) {
+      const auto* t = metricsOf(*lr.report, kAutoMethod, n);
+      md << ' ' << cell(t ? 100 * t->recall : NAN, "%.0f %%") << " / "
+         << cell(t ? 100 * t->countRight : NAN, "%.0f %%") << " |";
+    }
+    md << '\n';
+  }
+  md << "\n## Curator effort\n\n| Models | Edits / object | By hand (points / object) | "
+        "Edits ÷ by hand | Right with one key |\n|---|---|---|---|---|\n";
+  for (const auto& lr : reports) {
+    const CuratorEffort& e = lr.report->effort;
+    md << "| " << lr.label << " | " << cell(e.editsPerObject, "%.2f") << " | "
+       << cell(e.handPointsPerObject, "%.2f") << " | "
+       << cell(e.editsPerObject / e.handPointsPerObject, "%.2f") << " | "
+       << cell(100 * e.oneKeyShare, "%.1f %%") << " |\n";
+  }
+  return md.str();
+}
+
+nlohmann::json comparisonJson(const std::vector<LabelledReport>& reports) {
+  checkSameData(reports);
+  const auto names = modelColumns(reports);
+  nlohmann::json j = nlohmann::json::array();
+  for (const auto& lr : reports) {
+    const double avg = paperAverage(*lr.report, names);
+    const CuratorEffort& e = lr.report->effort;
+    j.push_back({{"models", lr.label},
+                 {"paper_error_avg_m", std::isfinite(avg) ? nlohmann::json(avg) : nullptr},
+                 {"edits_per_object", e.editsPerObject},
+                 {"hand_points_per_object", e.handPointsPerObject},
+                 {"one_key_share", e.oneKeyShare},
+                 {"report", evaluationJson(*lr.report)}});
+  }
+  return j;
+}
+
+}  // namespace sagrid
