@@ -1,6 +1,6 @@
 // `sagrid train`: trains one model (<category>.<type>) on a dataset folder — features through the
 // feature pipeline with its cache (default DIR/.sagrid-cache), objects lacking the type skipped
-// and counted, the network trained (core/model/trainer.h), point extraction calibrated on the
+// and counted, the network trained (core/training/trainer.h), point extraction calibrated on the
 // training objects, then weights + model card + loss curve (CSV and PNG) written to the output
 // folder. Also the default preset: the four shipped models on the generated bench split.
 #pragma once
@@ -12,7 +12,7 @@
 
 #include "core/features/feature_pipeline.h"
 #include "core/model/model_card.h"
-#include "core/model/trainer.h"
+#include "core/training/trainer.h"
 
 namespace sagrid {
 

@@ -8,7 +8,7 @@
 #include "core/common/error.h"
 #include "core/features/feature_grid.h"
 #include "core/model/affordance_model.h"
-#include "core/model/trainer.h"
+#include "core/training/trainer.h"
 #include "support/test_paths.h"
 
 namespace sagrid::model {

@@ -1,6 +1,8 @@
 // Training one SAGrid model on prepared samples (paper, Section III-C): L1 on D(v) over occupied
 // voxels, augmentation per step, AdamW with a cosine schedule, fixed seeds, a checkpoint after
-// every epoch and resume from it, a loss curve. Plain header; the loop runs in libtorch.
+// every epoch and resume from it, a loss curve. Plain header; the loop runs in libtorch
+// (trainer_torch.cpp, so it shares the torch precompiled header). It lives in core/training, above
+// core/model, so dependencies point downward only.
 #pragma once
 
 #include <atomic>

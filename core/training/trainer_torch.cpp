@@ -1,4 +1,4 @@
-#include "core/model/trainer.h"
+#include "core/training/trainer.h"
 
 #include <chrono>
 #include <cmath>
