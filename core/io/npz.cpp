@@ -3,9 +3,8 @@
 #include <algorithm>
 #include <cctype>
 
-#include <zlib.h>
-
 #include "core/common/atomic_file.h"
+#include "core/io/zip_archive.h"
 
 namespace sagrid {
 namespace fs = std::filesystem;
@@ -43,16 +42,9 @@ std::uint16_t u16(std::string_view b, std::size_t at) {
 std::uint32_t u32(std::string_view b, std::size_t at) {
   return static_cast<std::uint32_t>(u16(b, at)) | (static_cast<std::uint32_t>(u16(b, at + 2)) << 16);
 }
-std::uint64_t u64(std::string_view b, std::size_t at) {
-  return static_cast<std::uint64_t>(u32(b, at)) | (static_cast<std::uint64_t>(u32(b, at + 4)) << 32);
-}
 void put16(std::string& out, std::uint32_t v) {
   out += static_cast<char>(v & 0xFF);
   out += static_cast<char>((v >> 8) & 0xFF);
-}
-void put32(std::string& out, std::uint32_t v) {
-  put16(out, v & 0xFFFF);
-  put16(out, v >> 16);
 }
 
 // Value of `key` in the header dict, e.g. "'<f4'" or "(3, 4)" or "False".
@@ -205,159 +197,29 @@ NpyArray readNpy(const fs::path& path) { return parseNpy(readFileBytes(path), pa
 
 void writeNpy(const fs::path& path, const NpyArray& array) { writeFileAtomic(path, serializeNpy(array)); }
 
-namespace {
-
-std::string inflateRaw(std::string_view compressed, std::size_t size, const fs::path& source,
-                       const std::string& entry) {
-  std::string out(size, '\0');
-  z_stream stream{};
-  if (inflateInit2(&stream, -MAX_WBITS) != Z_OK) throw FileError(source, "zlib initialisation failed");
-  stream.next_in = reinterpret_cast<Bytef*>(const_cast<char*>(compressed.data()));
-  stream.avail_in = static_cast<uInt>(compressed.size());
-  stream.next_out = reinterpret_cast<Bytef*>(out.data());
-  stream.avail_out = static_cast<uInt>(out.size());
-  const int status = inflate(&stream, Z_FINISH);
-  const std::size_t produced = stream.total_out;
-  inflateEnd(&stream);
-  if (status != Z_STREAM_END || produced != size) {
-    throw FileError(source, "entry '" + entry + "' is corrupt (deflate data does not decompress)");
-  }
-  return out;
-}
-
-}  // namespace
-
 NpzArchive readNpz(const fs::path& path) {
-  const std::string bytes = readFileBytes(path);
-  const std::string_view b(bytes);
-  // End of central directory: 22 bytes plus a comment of at most 64 KiB at the end of the file.
-  if (b.size() < 22) throw FileError(path, "is not an .npz (zip) archive: too short");
-  std::size_t eocd = std::string_view::npos;
-  const std::size_t lowest = b.size() > 22 + 65535 ? b.size() - 22 - 65535 : 0;
-  for (std::size_t at = b.size() - 22 + 1; at-- > lowest;) {
-    if (u32(b, at) == 0x06054b50) {
-      eocd = at;
-      break;
-    }
-  }
-  if (eocd == std::string_view::npos) throw FileError(path, "is not an .npz (zip) archive or is truncated");
-  std::uint64_t entries = u16(b, eocd + 10);
-  std::uint64_t directoryOffset = u32(b, eocd + 16);
-  if (directoryOffset == 0xFFFFFFFFu && eocd >= 20 && u32(b, eocd - 20) == 0x07064b50) {
-    const std::uint64_t zip64End = u64(b, eocd - 20 + 8);  // zip64 end of central directory
-    if (zip64End + 56 > b.size() || u32(b, zip64End) != 0x06064b50) {
-      throw FileError(path, "zip64 directory is corrupt");
-    }
-    entries = u64(b, zip64End + 32);
-    directoryOffset = u64(b, zip64End + 48);
-  }
-
+  const ZipArchive zip = ZipArchive::open(path);
   NpzArchive archive;
-  std::size_t at = directoryOffset;
-  for (std::uint64_t e = 0; e < entries; ++e) {
-    if (at + 46 > b.size() || u32(b, at) != 0x02014b50) throw FileError(path, "zip central directory is corrupt");
-    const int method = u16(b, at + 10);
-    const std::uint32_t crc = u32(b, at + 16);
-    std::uint64_t compressedSize = u32(b, at + 20), size = u32(b, at + 24);
-    const std::size_t nameLength = u16(b, at + 28), extraLength = u16(b, at + 30), commentLength = u16(b, at + 32);
-    std::uint64_t localOffset = u32(b, at + 42);
-    if (at + 46 + nameLength + extraLength > b.size()) throw FileError(path, "zip central directory is truncated");
-    const std::string name(b.substr(at + 46, nameLength));
-    // Zip64 extra field: the 64-bit values of whichever fields were saturated, in this order.
-    for (std::size_t x = at + 46 + nameLength; x + 4 <= at + 46 + nameLength + extraLength;) {
-      const std::size_t id = u16(b, x), length = u16(b, x + 2);
-      if (id == 0x0001) {
-        std::size_t field = x + 4;
-        if (size == 0xFFFFFFFFu) size = u64(b, field), field += 8;
-        if (compressedSize == 0xFFFFFFFFu) compressedSize = u64(b, field), field += 8;
-        if (localOffset == 0xFFFFFFFFu) localOffset = u64(b, field);
-      }
-      x += 4 + length;
-    }
-    at += 46 + nameLength + extraLength + commentLength;
-
-    if (localOffset + 30 > b.size() || u32(b, localOffset) != 0x04034b50) {
-      throw FileError(path, "entry '" + name + "' is corrupt (bad local header)");
-    }
-    const std::size_t dataStart = localOffset + 30 + u16(b, localOffset + 26) + u16(b, localOffset + 28);
-    if (dataStart + compressedSize > b.size()) throw FileError(path, "entry '" + name + "' is truncated");
-    const std::string_view stored = b.substr(dataStart, compressedSize);
-    std::string content;
-    if (method == 0) {
-      content = std::string(stored);
-    } else if (method == 8) {
-      content = inflateRaw(stored, size, path, name);
-    } else {
-      throw FileError(path, "entry '" + name + "' uses zip compression method " + std::to_string(method) +
-                                " (only stored and deflate are supported)");
-    }
-    if (crc32(0L, reinterpret_cast<const Bytef*>(content.data()), static_cast<uInt>(content.size())) != crc) {
-      throw FileError(path, "entry '" + name + "' is corrupt (CRC mismatch)");
-    }
-    std::string key = name;
+  for (const ZipEntry& entry : zip.entries()) {
+    if (entry.isDirectory()) continue;
+    const std::string content = zip.read(entry);
+    std::string key = entry.name;
     if (key.size() > 4 && key.compare(key.size() - 4, 4, ".npy") == 0) key.resize(key.size() - 4);
     try {
-      archive[key] = parseNpy(content, path.string() + ":" + name);
+      archive[key] = parseNpy(content, path.string() + ":" + entry.name);
     } catch (const FileError&) {
       throw;
     } catch (const Error& e) {
-      throw FileError(path, "entry '" + name + "': " + e.what());
+      throw FileError(path, "entry '" + entry.name + "': " + e.what());
     }
   }
   return archive;
 }
 
 void writeNpz(const fs::path& path, const NpzArchive& archive) {
-  std::string out, directory;
-  std::uint32_t count = 0;
-  for (const auto& [key, array] : archive) {
-    const std::string name = key + ".npy";
-    const std::string content = serializeNpy(array);
-    if (content.size() >= 0xFFFFFFFFu || out.size() >= 0xFFFFFFFFu) {
-      throw FileError(path, "array '" + key + "' is too large for a non-zip64 archive");
-    }
-    const std::uint32_t crc = static_cast<std::uint32_t>(
-        crc32(0L, reinterpret_cast<const Bytef*>(content.data()), static_cast<uInt>(content.size())));
-    const auto offset = static_cast<std::uint32_t>(out.size());
-    auto common = [&](std::string& h) {
-      put16(h, 20);      // version needed: 2.0
-      put16(h, 0);       // flags
-      put16(h, 0);       // method: stored
-      put16(h, 0);       // time
-      put16(h, 0x21);    // date: 1980-01-01
-      put32(h, crc);
-      put32(h, static_cast<std::uint32_t>(content.size()));
-      put32(h, static_cast<std::uint32_t>(content.size()));
-      put16(h, static_cast<std::uint32_t>(name.size()));
-      put16(h, 0);       // extra length
-    };
-    put32(out, 0x04034b50);
-    common(out);
-    out += name;
-    out += content;
-
-    put32(directory, 0x02014b50);
-    put16(directory, 20);  // version made by
-    common(directory);
-    put16(directory, 0);   // comment length
-    put16(directory, 0);   // disk number
-    put16(directory, 0);   // internal attributes
-    put32(directory, 0);   // external attributes
-    put32(directory, offset);
-    directory += name;
-    ++count;
-  }
-  const auto directoryOffset = static_cast<std::uint32_t>(out.size());
-  out += directory;
-  put32(out, 0x06054b50);
-  put16(out, 0);
-  put16(out, 0);
-  put16(out, count);
-  put16(out, count);
-  put32(out, static_cast<std::uint32_t>(directory.size()));
-  put32(out, directoryOffset);
-  put16(out, 0);
-  writeFileAtomic(path, out);
+  std::vector<std::pair<std::string, std::string>> entries;
+  for (const auto& [key, array] : archive) entries.emplace_back(key + ".npy", serializeNpy(array));
+  writeStoredZip(path, entries);
 }
 
 }  // namespace sagrid

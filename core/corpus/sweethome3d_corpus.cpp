@@ -1,0 +1,590 @@
+#include "core/corpus/sweethome3d_corpus.h"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <memory>
+#include <set>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "core/common/atomic_file.h"
+#include "core/common/error.h"
+#include "core/common/sha256.h"
+#include "core/io/zip_archive.h"
+#include "core/labels/labels.h"
+
+namespace sagrid {
+namespace fs = std::filesystem;
+using json = nlohmann::ordered_json;
+
+namespace {
+
+constexpr const char* kFurniturePackage = "sweethome3d-furniture";
+constexpr const char* kAppPackage = "sweethome3d";
+constexpr const char* kPluginCatalog = "PluginFurnitureCatalog.properties";
+constexpr const char* kDefaultCatalog = "com/eteks/sweethome3d/io/DefaultFurnitureCatalog.properties";
+
+std::string shellQuote(const std::string& text) {
+  std::string out = "'";
+  for (const char c : text) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return out + "'";
+}
+
+// Runs a shell command; returns its exit status and combined output.
+std::pair<int, std::string> runCommand(const std::string& command) {
+  std::string output;
+  FILE* pipe = ::popen((command + " 2>&1").c_str(), "r");
+  if (!pipe) return {-1, "cannot start a shell"};
+  std::array<char, 4096> buffer{};
+  while (const std::size_t n = std::fread(buffer.data(), 1, buffer.size(), pipe)) output.append(buffer.data(), n);
+  const int status = ::pclose(pipe);
+  return {status, output};
+}
+
+std::string lastLine(std::string text) {
+  while (!text.empty() && (text.back() == '\n' || text.back() == '\r')) text.pop_back();
+  const auto at = text.find_last_of('\n');
+  return at == std::string::npos ? text : text.substr(at + 1);
+}
+
+std::string trimmed(std::string text) {
+  while (!text.empty() && std::isspace(static_cast<unsigned char>(text.back()))) text.pop_back();
+  std::size_t start = 0;
+  while (start < text.size() && std::isspace(static_cast<unsigned char>(text[start]))) ++start;
+  return text.substr(start);
+}
+
+std::string installedVersion(const std::string& package) {
+  const auto [status, output] = runCommand("dpkg-query -W -f='${Version}' " + shellQuote(package));
+  return status == 0 ? trimmed(output) : std::string();
+}
+
+std::vector<fs::path> sh3fFiles(const fs::path& furnitureDir) {
+  std::vector<fs::path> files;
+  if (!fs::is_directory(furnitureDir)) return files;
+  for (const auto& e : fs::directory_iterator(furnitureDir)) {
+    if (e.is_regular_file() && e.path().extension() == ".sh3f") files.push_back(e.path());
+  }
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+// The unpacked root of `package` from the .deb cache, downloading it when no .deb is cached.
+// Returns the root and the package version.
+std::pair<fs::path, std::string> unpackedPackage(const std::string& package, const fs::path& cache,
+                                                 const std::function<void(const std::string&)>& log) {
+  auto cachedDeb = [&]() -> fs::path {
+    std::vector<fs::path> debs;
+    if (fs::is_directory(cache)) {
+      for (const auto& e : fs::directory_iterator(cache)) {
+        const std::string name = e.path().filename().string();
+        if (e.is_regular_file() && name.rfind(package + "_", 0) == 0 && e.path().extension() == ".deb") {
+          debs.push_back(e.path());
+        }
+      }
+    }
+    std::sort(debs.begin(), debs.end());
+    return debs.empty() ? fs::path() : debs.back();
+  };
+  fs::path deb = cachedDeb();
+  if (deb.empty()) {
+    std::error_code ec;
+    fs::create_directories(cache, ec);
+    if (ec) throw FileError(cache, "cannot create the .deb cache folder: " + ec.message());
+    if (log) log("downloading " + package + " with apt-get download into " + cache.string());
+    const auto [status, output] =
+        runCommand("cd " + shellQuote(cache.string()) + " && apt-get download " + shellQuote(package));
+    deb = cachedDeb();
+    if (status != 0 || deb.empty()) {
+      throw Error("Sweet Home 3D package '" + package + "' is not installed and `apt-get download " + package +
+                  "` failed (" + lastLine(output) + "). Install it (sudo apt-get install " + package +
+                  "), check that Debian's apt sources are reachable, or pass the archives with --sh3f FILE / "
+                  "--jar FILE.");
+    }
+  }
+  const auto [vStatus, vOutput] = runCommand("dpkg-deb -f " + shellQuote(deb.string()) + " Version");
+  if (vStatus != 0) throw FileError(deb, "is not a readable .deb (" + lastLine(vOutput) + ")");
+  const std::string version = trimmed(vOutput);
+  const fs::path root = cache / (deb.stem().string() + ".unpacked");
+  if (!fs::is_directory(root)) {
+    const fs::path temp = cache / (deb.stem().string() + ".unpacking-" + std::to_string(::getpid()));
+    fs::remove_all(temp);
+    if (log) log("unpacking " + deb.filename().string());
+    const auto [xStatus, xOutput] = runCommand("dpkg -x " + shellQuote(deb.string()) + " " + shellQuote(temp.string()));
+    if (xStatus != 0) {
+      fs::remove_all(temp);
+      throw FileError(deb, "dpkg -x failed (" + lastLine(xOutput) + ")");
+    }
+    fs::rename(temp, root);
+  }
+  return {root, version};
+}
+
+// ---- archive paths and references
+
+// "a/b/../c" -> "a/c"; nullopt when the path is absolute or climbs above the archive root.
+std::optional<std::string> normalizeArchivePath(std::string path) {
+  std::replace(path.begin(), path.end(), '\\', '/');
+  if (path.empty() || path.front() == '/' || (path.size() >= 2 && path[1] == ':')) return std::nullopt;
+  std::vector<std::string> parts;
+  std::stringstream stream(path);
+  for (std::string part; std::getline(stream, part, '/');) {
+    if (part.empty() || part == ".") continue;
+    if (part == "..") {
+      if (parts.empty()) return std::nullopt;
+      parts.pop_back();
+    } else {
+      parts.push_back(part);
+    }
+  }
+  std::string out;
+  for (const auto& p : parts) out += (out.empty() ? "" : "/") + p;
+  return out;
+}
+
+std::string directoryOf(const std::string& entry) {
+  const auto at = entry.find_last_of('/');
+  return at == std::string::npos ? std::string() : entry.substr(0, at + 1);
+}
+
+// File names an OBJ (mtllib) or MTL (map_*, bump, ...) refers to, as written.
+std::vector<std::string> references(const std::string& text, bool isMtl) {
+  std::vector<std::string> names;
+  std::istringstream lines(text);
+  for (std::string line; std::getline(lines, line);) {
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    std::istringstream tokens(line);
+    std::string keyword;
+    tokens >> keyword;
+    std::vector<std::string> rest;
+    for (std::string t; tokens >> t;) rest.push_back(t);
+    if (rest.empty()) continue;
+    if (!isMtl && keyword == "mtllib") {
+      names.insert(names.end(), rest.begin(), rest.end());
+    } else if (isMtl) {
+      std::string k = keyword;
+      std::transform(k.begin(), k.end(), k.begin(), [](unsigned char c) { return std::tolower(c); });
+      if (k.rfind("map_", 0) == 0 || k == "bump" || k == "disp" || k == "decal" || k == "refl" || k == "norm") {
+        names.push_back(rest.back());  // options (-s 1 1 1, -bm 0.5 ...) come first
+      }
+    }
+  }
+  return names;
+}
+
+struct ObjectFiles {
+  std::vector<std::pair<std::string, std::string>> files;  // name in the object folder, archive entry
+  std::vector<std::string> warnings;
+};
+
+// Which archive entries make up an object. `root` is the object folder's prefix in the archive
+// ("scopia/cooker/"); with `wholeFolder` every entry under it is taken (a plugin model's folder),
+// else only the OBJ and what it references. References resolving outside `root` are refused.
+ObjectFiles collectObjectFiles(const ZipArchive& zip, const std::string& objEntry, const std::string& root,
+                               bool wholeFolder) {
+  ObjectFiles result;
+  std::set<std::string> taken;
+  auto add = [&](const std::string& entry) {
+    if (taken.insert(entry).second) result.files.emplace_back(entry.substr(root.size()), entry);
+  };
+  if (wholeFolder) {
+    for (const ZipEntry& e : zip.entries()) {
+      if (e.isDirectory() || e.name.rfind(root, 0) != 0) continue;
+      const auto normal = normalizeArchivePath(e.name);
+      if (!normal || *normal != e.name) {
+        result.warnings.push_back("refused archive entry '" + e.name + "': not a plain relative path");
+        continue;
+      }
+      add(e.name);
+    }
+  }
+  add(objEntry);
+  // Follow OBJ -> MTL -> textures, checking every reference.
+  std::vector<std::pair<std::string, bool>> pending = {{objEntry, false}};
+  std::set<std::string> visited;
+  while (!pending.empty()) {
+    const auto [entry, isMtl] = pending.back();
+    pending.pop_back();
+    if (!visited.insert(entry).second) continue;
+    for (const std::string& ref : references(zip.read(entry), isMtl)) {
+      const auto resolved = normalizeArchivePath(directoryOf(entry) + ref);
+      const bool absolute = !ref.empty() && (ref.front() == '/' || ref.front() == '\\' || (ref.size() >= 2 && ref[1] == ':'));
+      if (absolute || !resolved || resolved->rfind(root, 0) != 0) {
+        result.warnings.push_back("refused reference '" + ref + "' in " + entry.substr(root.size()) +
+                                  ": it resolves outside the object folder");
+        continue;
+      }
+      if (!zip.contains(*resolved)) {
+        result.warnings.push_back("missing file '" + ref + "' referenced by " + entry.substr(root.size()));
+        continue;
+      }
+      add(*resolved);
+      if (!isMtl) pending.emplace_back(*resolved, true);
+    }
+  }
+  return result;
+}
+
+// ---- shipped labels
+
+struct ShippedLabels {
+  fs::path dir;
+  std::map<std::string, std::string> split;  // id -> "real-train" | "real-val"
+  bool hasSplit = false;
+};
+
+ShippedLabels readShippedLabels(const fs::path& dir) {
+  ShippedLabels shipped;
+  shipped.dir = dir;
+  const fs::path splitFile = dir / "split.json";
+  if (dir.empty() || !fs::is_regular_file(splitFile)) return shipped;
+  shipped.hasSplit = true;
+  try {
+    const auto j = nlohmann::json::parse(readFileBytes(splitFile));
+    for (const char* name : {"real-train", "real-val"}) {
+      if (!j.contains(name)) continue;
+      for (const auto& id : j.at(name)) shipped.split[id.get<std::string>()] = name;
+    }
+  } catch (const nlohmann::json::exception& e) {
+    throw FileError(splitFile, std::string("expected {\"real-train\":[ids],\"real-val\":[ids]} (") + e.what() + ")");
+  }
+  return shipped;
+}
+
+// Removes the temporary corpus folder unless released.
+class TempFolderGuard {
+ public:
+  explicit TempFolderGuard(fs::path path) : m_path(std::move(path)) {}
+  ~TempFolderGuard() {
+    if (!m_released) {
+      std::error_code ec;
+      fs::remove_all(m_path, ec);
+    }
+  }
+  void release() { m_released = true; }
+
+ private:
+  fs::path m_path;
+  bool m_released = false;
+};
+
+}  // namespace
+
+std::vector<SweetHome3dSource> locateSweetHome3dSources(const SweetHome3dPackageOptions& options,
+                                                        const std::function<void(const std::string&)>& log) {
+  std::vector<SweetHome3dSource> sources;
+  const fs::path installedShare = options.installedRoot / "usr/share/sweethome3d";
+  auto versionOf = [&](const fs::path& file, const std::string& package) {
+    std::error_code ec;
+    const fs::path canonical = fs::weakly_canonical(file, ec);
+    return canonical.string().rfind("/usr/share/sweethome3d/", 0) == 0 ? installedVersion(package) : std::string();
+  };
+  if (!options.sh3f.empty() || options.jar) {
+    for (const auto& file : options.sh3f) {
+      if (!fs::is_regular_file(file)) throw FileError(file, "furniture library (.sh3f) not found");
+      sources.push_back({file, false, file.stem().string(), kFurniturePackage, versionOf(file, kFurniturePackage)});
+    }
+    if (options.jar) {
+      if (!fs::is_regular_file(*options.jar)) throw FileError(*options.jar, "Sweet Home 3D jar not found");
+      sources.push_back({*options.jar, true, "default", kAppPackage, versionOf(*options.jar, kAppPackage)});
+    }
+    return sources;
+  }
+
+  std::vector<fs::path> libraries = sh3fFiles(installedShare / "furniture");
+  std::string furnitureVersion;
+  if (!libraries.empty()) {
+    furnitureVersion = installedVersion(kFurniturePackage);
+  } else {
+    const auto [root, version] = unpackedPackage(kFurniturePackage, options.debCache, log);
+    libraries = sh3fFiles(root / "usr/share/sweethome3d/furniture");
+    furnitureVersion = version;
+    if (libraries.empty()) throw FileError(root, "the unpacked sweethome3d-furniture package holds no .sh3f files");
+  }
+  for (const auto& file : libraries) {
+    sources.push_back({file, false, file.stem().string(), kFurniturePackage, furnitureVersion});
+  }
+
+  fs::path jar = installedShare / "sweethome3d.jar";
+  std::string appVersion;
+  if (fs::is_regular_file(jar)) {
+    appVersion = installedVersion(kAppPackage);
+  } else {
+    const auto [root, version] = unpackedPackage(kAppPackage, options.debCache, log);
+    jar = root / "usr/share/sweethome3d/sweethome3d.jar";
+    appVersion = version;
+    if (!fs::is_regular_file(jar)) throw FileError(jar, "not found in the unpacked sweethome3d package");
+  }
+  sources.push_back({jar, true, "default", kAppPackage, appVersion});
+  return sources;
+}
+
+std::vector<double> objVertexExtent(std::string_view text) {
+  std::array<double, 3> low{}, high{};
+  bool any = false;
+  std::size_t at = 0;
+  while (at < text.size()) {
+    std::size_t end = text.find('\n', at);
+    if (end == std::string_view::npos) end = text.size();
+    const std::string_view line = text.substr(at, end - at);
+    at = end + 1;
+    if (line.size() < 2 || line[0] != 'v' || (line[1] != ' ' && line[1] != '\t')) continue;
+    std::string copy(line.substr(2));
+    const char* p = copy.c_str();
+    char* next = nullptr;
+    std::array<double, 3> v{};
+    int count = 0;
+    for (; count < 3; ++count) {
+      v[count] = std::strtod(p, &next);
+      if (next == p) break;
+      p = next;
+    }
+    if (count < 3) continue;
+    for (int k = 0; k < 3; ++k) {
+      low[k] = any ? std::min(low[k], v[k]) : v[k];
+      high[k] = any ? std::max(high[k], v[k]) : v[k];
+    }
+    any = true;
+  }
+  return {high[0] - low[0], high[1] - low[1], high[2] - low[2]};
+}
+
+double estimateMetersPerUnit(const std::vector<double>& catalogSizeCm, const std::vector<double>& meshExtent) {
+  std::vector<double> catalog = catalogSizeCm, mesh = meshExtent;
+  std::sort(catalog.begin(), catalog.end());
+  std::sort(mesh.begin(), mesh.end());
+  std::vector<double> ratios;
+  for (std::size_t i = 0; i < std::min(catalog.size(), mesh.size()); ++i) {
+    // A flat side (a cooktop's thickness, a 2D decal) carries no scale.
+    if (catalog[i] > 0 && mesh[i] > 1e-9 * mesh.back()) ratios.push_back(catalog[i] / 100.0 / mesh[i]);
+  }
+  if (ratios.empty()) return 0;
+  std::sort(ratios.begin(), ratios.end());
+  const std::size_t n = ratios.size();
+  return n % 2 ? ratios[n / 2] : 0.5 * (ratios[n / 2 - 1] + ratios[n / 2]);
+}
+
+CorpusSummary buildSweetHome3dCorpus(const SweetHome3dCorpusOptions& options) {
+  const fs::path out = options.out;
+  if (out.empty()) throw InvalidArgument("corpus: --out is required");
+  if (fs::exists(out)) {
+    if (!fs::is_directory(out)) throw FileError(out, "exists and is not a folder");
+    if (!fs::is_empty(out) && !fs::exists(out / "corpus.json")) {
+      throw FileError(out, "is a non-empty folder that holds no corpus.json; choose an empty or new folder");
+    }
+  }
+  const ShippedLabels shipped = readShippedLabels(options.labelsDir);
+
+  // Select every object first, so the progress total is known and nothing is written when a
+  // catalog is unreadable.
+  struct Pending {
+    const SweetHome3dSource* source;
+    std::shared_ptr<ZipArchive> zip;
+    FurnitureCatalog catalog;  // library-level fields only are used from here
+    FurnitureCatalogEntry entry;
+    CorpusRole role;
+    std::string id;
+  };
+  std::vector<Pending> pending;
+  std::set<std::string> ids;
+  CorpusSummary summary;
+  std::vector<const SweetHome3dSource*> ordered;
+  for (const auto& s : options.sources) ordered.push_back(&s);
+  std::stable_sort(ordered.begin(), ordered.end(), [](const auto* a, const auto* b) {
+    return std::make_pair(a->isJar, a->library) < std::make_pair(b->isJar, b->library);
+  });
+  for (const SweetHome3dSource* source : ordered) {
+    auto zip = std::make_shared<ZipArchive>(ZipArchive::open(source->archive));
+    const std::string catalogEntry = source->isJar ? kDefaultCatalog : kPluginCatalog;
+    if (!zip->contains(catalogEntry)) {
+      throw FileError(source->archive, std::string("holds no ") + catalogEntry +
+                                           (source->isJar ? " (is it the Sweet Home 3D jar?)" : " (is it a furniture library?)"));
+    }
+    FurnitureCatalog catalog =
+        parseFurnitureCatalog(zip->read(catalogEntry), source->archive.string() + ":" + catalogEntry);
+    for (const auto& entry : catalog.entries) {
+      const auto role = selectCorpusRole(entry);
+      if (!role) continue;
+      const std::string base = corpusObjectId(entry.id);
+      std::string id = base;
+      for (int n = 2; ids.count(id); ++n) id = base + "_" + std::to_string(n);
+      ids.insert(id);
+      FurnitureCatalog header = catalog;
+      header.entries.clear();
+      pending.push_back({source, zip, std::move(header), entry, *role, id});
+    }
+  }
+
+  const fs::path parent = out.has_parent_path() ? out.parent_path() : fs::path(".");
+  fs::create_directories(parent);
+  const fs::path temp = parent / ("." + out.filename().string() + ".tmp-" + std::to_string(::getpid()));
+  fs::remove_all(temp);
+  TempFolderGuard guard(temp);
+  std::map<std::string, std::string> manifests;  // dataset -> manifest.jsonl text
+  for (const char* d : {"real-train", "real-val", "distractors", "unlabelled"}) {
+    fs::create_directories(temp / d);
+    manifests[d];
+  }
+  json byLibrary = json::object();
+  std::map<std::string, std::string> packages;
+
+  for (std::size_t i = 0; i < pending.size(); ++i) {
+    const Pending& p = pending[i];
+    if (options.progress) options.progress(i, pending.size(), p.id);
+    CorpusObjectRecord record;
+    record.id = p.id;
+    record.library = p.source->library;
+    record.catalogId = p.entry.id;
+    record.name = p.entry.name;
+    record.role = p.role;
+
+    const auto objEntry = normalizeArchivePath(p.entry.model.rfind('/', 0) == 0 ? p.entry.model.substr(1) : p.entry.model);
+    const std::string lowerModel = [&] {
+      std::string m = p.entry.model;
+      std::transform(m.begin(), m.end(), m.begin(), [](unsigned char c) { return std::tolower(c); });
+      return m;
+    }();
+    if (!objEntry || lowerModel.size() < 4 || lowerModel.compare(lowerModel.size() - 4, 4, ".obj") != 0 ||
+        !p.zip->contains(*objEntry)) {
+      summary.warnings.push_back(p.id + ": skipped, model '" + p.entry.model + "' is not an OBJ entry of " +
+                                 p.source->archive.filename().string());
+      continue;
+    }
+    const std::string root = directoryOf(*objEntry);
+    // A plugin model's folder is its own; the jar's resources folder holds every default model.
+    const bool wholeFolder = !p.source->isJar && !root.empty();
+    ObjectFiles files = collectObjectFiles(*p.zip, *objEntry, root, wholeFolder);
+    record.warnings = files.warnings;
+
+    const std::string objBytes = p.zip->read(*objEntry);
+    const std::string sha = sha256Hex(objBytes);
+    const std::vector<double> extent = objVertexExtent(objBytes);
+    std::vector<double> catalogSize;
+    for (const auto& v : {p.entry.width, p.entry.depth, p.entry.height}) {
+      if (v) catalogSize.push_back(*v);
+    }
+    record.metersPerUnit = estimateMetersPerUnit(catalogSize, extent);
+    if (record.metersPerUnit <= 0) record.warnings.push_back("no usable size: meters_per_unit unknown");
+
+    // Which dataset: shipped labels decide for stoves and sinks.
+    const fs::path shippedLabels = shipped.dir.empty() ? fs::path() : shipped.dir / p.id / "labels.json";
+    const bool labelled = p.role != CorpusRole::None && !shippedLabels.empty() && fs::is_regular_file(shippedLabels);
+    if (p.role == CorpusRole::None) {
+      record.dataset = "distractors";
+    } else if (!labelled) {
+      record.dataset = "unlabelled";
+    } else if (const auto it = shipped.split.find(p.id); it != shipped.split.end()) {
+      record.dataset = it->second;
+    } else {
+      record.dataset = "real-train";
+      record.warnings.push_back(std::string("labelled but not listed in ") +
+                                (shipped.hasSplit ? "split.json" : "a split.json (none found)") + "; put in real-train");
+    }
+
+    const fs::path objectDir = temp / record.dataset / p.id;
+    for (const auto& [name, entry] : files.files) {
+      const fs::path target = objectDir / name;
+      fs::create_directories(target.parent_path());
+      writeFileAtomic(target, p.zip->read(entry));
+    }
+    const std::string meshName = objEntry->substr(root.size());
+    record.mesh = p.id + "/" + meshName;
+
+    if (labelled) {
+      const ObjectLabels labels = readLabels(shippedLabels);
+      if (labels.object.sha256 != sha) {
+        throw FileError(shippedLabels, "object " + p.id + ": object.sha256 " + labels.object.sha256 +
+                                           " does not match the extracted mesh " + meshName + " (" + sha +
+                                           "); the Sweet Home 3D package changed, so these labels need review");
+      }
+      writeFileAtomic(objectDir / "labels.json", readFileBytes(shippedLabels));
+    } else if (p.role == CorpusRole::None) {
+      ObjectLabels labels;
+      labels.object.id = p.id;
+      labels.object.mesh = meshName;
+      labels.object.sha256 = sha;
+      labels.object.category = "none";
+      labels.object.up = "y";
+      if (record.metersPerUnit > 0) labels.object.extra["meters_per_unit"] = record.metersPerUnit;
+      labels.reviewState = ReviewState::Done;
+      labels.reviewUpdated = currentUtcTimestamp();
+      labels.extra["source"] = "sagrid corpus sweethome3d: appliance distractor, no affordances";
+      writeLabels(objectDir / "labels.json", labels);
+    }
+
+    json provenance = json::object();
+    provenance["package"] = p.source->package;
+    provenance["package_version"] = p.source->packageVersion.empty() ? json(nullptr) : json(p.source->packageVersion);
+    provenance["archive"] = p.source->archive.filename().string();
+    provenance["library"] = p.source->library;
+    if (!p.catalog.name.empty()) provenance["library_name"] = p.catalog.name;
+    provenance["catalog_id"] = p.entry.id;
+    provenance["name"] = p.entry.name;
+    provenance["category"] = p.entry.category;
+    provenance["creator"] = p.entry.creator;
+    provenance["license"] = p.catalog.license.empty() ? json(nullptr) : json(p.catalog.license);
+    provenance["path_in_archive"] = *objEntry;
+    provenance["catalog_size_cm"] = {{"width", p.entry.width ? json(*p.entry.width) : json(nullptr)},
+                                     {"depth", p.entry.depth ? json(*p.entry.depth) : json(nullptr)},
+                                     {"height", p.entry.height ? json(*p.entry.height) : json(nullptr)}};
+    if (p.entry.modelRotation) provenance["model_rotation"] = *p.entry.modelRotation;
+    provenance["mesh"] = meshName;
+    provenance["mesh_sha256"] = sha;
+    provenance["mesh_extent"] = extent;
+    provenance["up"] = "y";
+    provenance["meters_per_unit"] = record.metersPerUnit > 0 ? json(record.metersPerUnit) : json(nullptr);
+    provenance["role"] = toString(p.role);
+    provenance["dataset"] = record.dataset;
+    json fileList = json::array();
+    for (const auto& f : files.files) fileList.push_back(f.first);
+    provenance["files"] = fileList;
+    provenance["warnings"] = record.warnings;
+    writeFileAtomic(objectDir / "provenance.json", provenance.dump(2) + "\n");
+
+    json line = {{"id", p.id}, {"category", toString(p.role)}, {"mesh", record.mesh}, {"labels", p.id + "/labels.json"}};
+    manifests[record.dataset] += line.dump() + "\n";
+    for (const auto& w : record.warnings) summary.warnings.push_back(p.id + ": " + w);
+    ++summary.countsByRole[toString(p.role)];
+    ++summary.countsByDataset[record.dataset];
+    auto& lib = byLibrary[record.library];
+    if (lib.is_null()) lib = {{"stove", 0}, {"sink", 0}, {"none", 0}};
+    lib[toString(p.role)] = lib[toString(p.role)].get<int>() + 1;
+    packages[p.source->package] = p.source->packageVersion;
+    summary.objects.push_back(std::move(record));
+  }
+  if (options.progress) options.progress(pending.size(), pending.size(), "");
+
+  for (const auto& [dataset, text] : manifests) writeFileAtomic(temp / dataset / "manifest.jsonl", text);
+  json corpus = json::object();
+  corpus["source"] = "Debian sweethome3d-furniture and sweethome3d (Sweet Home 3D furniture catalogs)";
+  json packageJson = json::object();
+  for (const auto& [name, version] : packages) packageJson[name] = version.empty() ? json(nullptr) : json(version);
+  corpus["packages"] = packageJson;
+  corpus["counts_by_role"] = summary.countsByRole;
+  corpus["counts_by_dataset"] = summary.countsByDataset;
+  corpus["counts_by_library"] = byLibrary;
+  json objects = json::array();
+  for (const auto& r : summary.objects) {
+    objects.push_back({{"id", r.id}, {"role", toString(r.role)}, {"dataset", r.dataset}, {"library", r.library},
+                       {"catalog_id", r.catalogId}, {"name", r.name}});
+  }
+  corpus["objects"] = objects;
+  corpus["warnings"] = summary.warnings;
+  writeFileAtomic(temp / "corpus.json", corpus.dump(2) + "\n");
+
+  // Swap into place: the old corpus is removed only once the new one is complete.
+  const fs::path old = parent / ("." + out.filename().string() + ".old-" + std::to_string(::getpid()));
+  if (fs::exists(out)) fs::rename(out, old);
+  fs::rename(temp, out);
+  guard.release();
+  std::error_code ec;
+  fs::remove_all(old, ec);
+  return summary;
+}
+
+}  // namespace sagrid

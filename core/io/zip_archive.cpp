@@ -1,0 +1,207 @@
+#include "core/io/zip_archive.h"
+
+#include <zlib.h>
+
+#include "core/common/atomic_file.h"
+#include "core/common/error.h"
+
+namespace sagrid {
+namespace fs = std::filesystem;
+
+namespace {
+
+std::uint16_t u16(std::string_view b, std::size_t at) {
+  return static_cast<std::uint16_t>(static_cast<unsigned char>(b[at]) |
+                                    (static_cast<unsigned char>(b[at + 1]) << 8));
+}
+std::uint32_t u32(std::string_view b, std::size_t at) {
+  return static_cast<std::uint32_t>(u16(b, at)) | (static_cast<std::uint32_t>(u16(b, at + 2)) << 16);
+}
+std::uint64_t u64(std::string_view b, std::size_t at) {
+  return static_cast<std::uint64_t>(u32(b, at)) | (static_cast<std::uint64_t>(u32(b, at + 4)) << 32);
+}
+void put16(std::string& out, std::uint32_t v) {
+  out += static_cast<char>(v & 0xFF);
+  out += static_cast<char>((v >> 8) & 0xFF);
+}
+void put32(std::string& out, std::uint32_t v) {
+  put16(out, v & 0xFFFF);
+  put16(out, v >> 16);
+}
+
+std::string inflateRaw(std::string_view compressed, std::size_t size, const fs::path& source,
+                       const std::string& entry) {
+  std::string out(size, '\0');
+  z_stream stream{};
+  if (inflateInit2(&stream, -MAX_WBITS) != Z_OK) throw FileError(source, "zlib initialisation failed");
+  stream.next_in = reinterpret_cast<Bytef*>(const_cast<char*>(compressed.data()));
+  stream.avail_in = static_cast<uInt>(compressed.size());
+  stream.next_out = reinterpret_cast<Bytef*>(out.data());
+  stream.avail_out = static_cast<uInt>(out.size());
+  const int status = inflate(&stream, Z_FINISH);
+  const std::size_t produced = stream.total_out;
+  inflateEnd(&stream);
+  if (status != Z_STREAM_END || produced != size) {
+    throw FileError(source, "entry '" + entry + "' is corrupt (deflate data does not decompress)");
+  }
+  return out;
+}
+
+}  // namespace
+
+ZipArchive ZipArchive::open(const fs::path& path) { return fromBytes(readFileBytes(path), path); }
+
+ZipArchive ZipArchive::fromBytes(std::string bytes, const fs::path& source) {
+  ZipArchive archive;
+  archive.m_path = source;
+  archive.m_bytes = std::move(bytes);
+  const std::string_view b(archive.m_bytes);
+  const fs::path& path = archive.m_path;
+  // End of central directory: 22 bytes plus a comment of at most 64 KiB at the end of the file.
+  if (b.size() < 22) throw FileError(path, "is not a zip archive: too short");
+  std::size_t eocd = std::string_view::npos;
+  const std::size_t lowest = b.size() > 22 + 65535 ? b.size() - 22 - 65535 : 0;
+  for (std::size_t at = b.size() - 22 + 1; at-- > lowest;) {
+    if (u32(b, at) == 0x06054b50) {
+      eocd = at;
+      break;
+    }
+  }
+  if (eocd == std::string_view::npos) throw FileError(path, "is not a zip archive or is truncated");
+  std::uint64_t entries = u16(b, eocd + 10);
+  std::uint64_t directoryOffset = u32(b, eocd + 16);
+  if ((directoryOffset == 0xFFFFFFFFu || entries == 0xFFFF) && eocd >= 20 &&
+      u32(b, eocd - 20) == 0x07064b50) {
+    const std::uint64_t zip64End = u64(b, eocd - 20 + 8);  // zip64 end of central directory
+    if (zip64End + 56 > b.size() || u32(b, zip64End) != 0x06064b50) {
+      throw FileError(path, "zip64 directory is corrupt");
+    }
+    entries = u64(b, zip64End + 32);
+    directoryOffset = u64(b, zip64End + 48);
+  }
+
+  std::size_t at = directoryOffset;
+  for (std::uint64_t e = 0; e < entries; ++e) {
+    if (at + 46 > b.size() || u32(b, at) != 0x02014b50) throw FileError(path, "zip central directory is corrupt");
+    ZipEntry entry;
+    entry.method = u16(b, at + 10);
+    entry.crc = u32(b, at + 16);
+    entry.compressedSize = u32(b, at + 20);
+    entry.size = u32(b, at + 24);
+    const std::size_t nameLength = u16(b, at + 28), extraLength = u16(b, at + 30), commentLength = u16(b, at + 32);
+    entry.localOffset = u32(b, at + 42);
+    if (at + 46 + nameLength + extraLength > b.size()) throw FileError(path, "zip central directory is truncated");
+    entry.name = std::string(b.substr(at + 46, nameLength));
+    // Zip64 extra field: the 64-bit values of whichever fields were saturated, in this order.
+    for (std::size_t x = at + 46 + nameLength; x + 4 <= at + 46 + nameLength + extraLength;) {
+      const std::size_t id = u16(b, x), length = u16(b, x + 2);
+      if (id == 0x0001) {
+        std::size_t field = x + 4;
+        if (entry.size == 0xFFFFFFFFu) entry.size = u64(b, field), field += 8;
+        if (entry.compressedSize == 0xFFFFFFFFu) entry.compressedSize = u64(b, field), field += 8;
+        if (entry.localOffset == 0xFFFFFFFFu) entry.localOffset = u64(b, field);
+      }
+      x += 4 + length;
+    }
+    at += 46 + nameLength + extraLength + commentLength;
+    archive.m_entries.push_back(std::move(entry));
+  }
+  return archive;
+}
+
+const ZipEntry* ZipArchive::find(const std::string& name) const {
+  for (const auto& e : m_entries) {
+    if (e.name == name) return &e;
+  }
+  return nullptr;
+}
+
+std::string ZipArchive::read(const std::string& name) const {
+  const ZipEntry* entry = find(name);
+  if (!entry) throw FileError(m_path, "has no entry '" + name + "'");
+  return read(*entry);
+}
+
+std::string ZipArchive::read(const ZipEntry& entry) const {
+  const std::string_view b(m_bytes);
+  const std::string& name = entry.name;
+  if (entry.localOffset + 30 > b.size() || u32(b, entry.localOffset) != 0x04034b50) {
+    throw FileError(m_path, "entry '" + name + "' is corrupt (bad local header)");
+  }
+  const std::size_t dataStart =
+      entry.localOffset + 30 + u16(b, entry.localOffset + 26) + u16(b, entry.localOffset + 28);
+  if (dataStart + entry.compressedSize > b.size()) throw FileError(m_path, "entry '" + name + "' is truncated");
+  const std::string_view stored = b.substr(dataStart, entry.compressedSize);
+  std::string content;
+  if (entry.method == 0) {
+    content = std::string(stored);
+  } else if (entry.method == 8) {
+    content = inflateRaw(stored, entry.size, m_path, name);
+  } else {
+    throw FileError(m_path, "entry '" + name + "' uses zip compression method " + std::to_string(entry.method) +
+                                " (only stored and deflate are supported)");
+  }
+  if (crc32(0L, reinterpret_cast<const Bytef*>(content.data()), static_cast<uInt>(content.size())) != entry.crc) {
+    throw FileError(m_path, "entry '" + name + "' is corrupt (CRC mismatch)");
+  }
+  return content;
+}
+
+std::string serializeStoredZip(const std::vector<std::pair<std::string, std::string>>& entries,
+                               const fs::path& target) {
+  std::string out, directory;
+  std::uint32_t count = 0;
+  for (const auto& [name, content] : entries) {
+    if (content.size() >= 0xFFFFFFFFu || out.size() >= 0xFFFFFFFFu) {
+      throw FileError(target, "entry '" + name + "' is too large for a non-zip64 archive");
+    }
+    if (count == 0xFFFF) throw FileError(target, "too many entries for a non-zip64 archive");
+    const std::uint32_t crc = static_cast<std::uint32_t>(
+        crc32(0L, reinterpret_cast<const Bytef*>(content.data()), static_cast<uInt>(content.size())));
+    const auto offset = static_cast<std::uint32_t>(out.size());
+    auto common = [&](std::string& h) {
+      put16(h, 20);      // version needed: 2.0
+      put16(h, 0);       // flags
+      put16(h, 0);       // method: stored
+      put16(h, 0);       // time
+      put16(h, 0x21);    // date: 1980-01-01
+      put32(h, crc);
+      put32(h, static_cast<std::uint32_t>(content.size()));
+      put32(h, static_cast<std::uint32_t>(content.size()));
+      put16(h, static_cast<std::uint32_t>(name.size()));
+      put16(h, 0);       // extra length
+    };
+    put32(out, 0x04034b50);
+    common(out);
+    out += name;
+    out += content;
+
+    put32(directory, 0x02014b50);
+    put16(directory, 20);  // version made by
+    common(directory);
+    put16(directory, 0);   // comment length
+    put16(directory, 0);   // disk number
+    put16(directory, 0);   // internal attributes
+    put32(directory, 0);   // external attributes
+    put32(directory, offset);
+    directory += name;
+    ++count;
+  }
+  const auto directoryOffset = static_cast<std::uint32_t>(out.size());
+  out += directory;
+  put32(out, 0x06054b50);
+  put16(out, 0);
+  put16(out, 0);
+  put16(out, count);
+  put16(out, count);
+  put32(out, static_cast<std::uint32_t>(directory.size()));
+  put32(out, directoryOffset);
+  put16(out, 0);
+  return out;
+}
+
+void writeStoredZip(const fs::path& path, const std::vector<std::pair<std::string, std::string>>& entries) {
+  writeFileAtomic(path, serializeStoredZip(entries, path));
+}
+
+}  // namespace sagrid
