@@ -1,5 +1,7 @@
 #include "core/corpus/sweethome3d_corpus.h"
 
+#include <cstdlib>
+
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
@@ -208,6 +210,113 @@ TEST(SweetHome3dCorpus, PackageLookupErrorsAreClear) {
     EXPECT_THAT(e.what(), HasSubstr("PluginFurnitureCatalog.properties"));
   }
   EXPECT_FALSE(fs::exists(dir / "out"));
+}
+
+// Puts a fake `apt-get` first on PATH for the duration of a test; it copies .debs from `debs`
+// into the current folder, or fails like apt-get does for an unknown package.
+class FakeAptGet {
+ public:
+  FakeAptGet(const fs::path& bin, const fs::path& debs) : m_oldPath(std::getenv("PATH")) {
+    fs::create_directories(bin);
+    writeFileAtomic(bin / "apt-get",
+                    "#!/bin/sh\n"
+                    "for f in " + test::shellQuote(debs.string()) + "/\"$2\"_*.deb; do\n"
+                    "  [ -f \"$f\" ] && cp \"$f\" . && exit 0\n"
+                    "done\n"
+                    "echo \"E: Unable to locate package $2\" >&2; exit 100\n");
+    fs::permissions(bin / "apt-get", fs::perms::owner_all);
+    ::setenv("PATH", (bin.string() + ":" + m_oldPath).c_str(), 1);
+  }
+  ~FakeAptGet() { ::setenv("PATH", m_oldPath.c_str(), 1); }
+
+ private:
+  std::string m_oldPath;
+};
+
+// A .deb holding `file` at `path`, built with dpkg-deb.
+void buildDeb(const fs::path& debs, const std::string& package, const std::string& version,
+              const std::string& path, const std::string& file) {
+  const fs::path root = debs / ("root-" + package);
+  fs::create_directories(root / "DEBIAN");
+  fs::create_directories((root / path).parent_path());
+  writeFileAtomic(root / "DEBIAN" / "control", "Package: " + package + "\nVersion: " + version +
+                                                   "\nArchitecture: all\nMaintainer: t <t@t>\n"
+                                                   "Description: test\n");
+  writeFileAtomic(root / path, file);
+  const auto r = test::runCommand("dpkg-deb --build --root-owner-group " + test::shellQuote(root.string()) +
+                                  " " + test::shellQuote((debs / (package + "_" + version + "_all.deb")).string()));
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  fs::remove_all(root);
+}
+
+TEST(SweetHome3dCorpus, DownloadsAndUnpacksPackagesWhenNotInstalled) {
+  if (test::runCommand("dpkg-deb --version").exitCode != 0) GTEST_SKIP() << "no dpkg-deb";
+  const fs::path dir = test::freshTempDir();
+  const auto f = test::writeSweetHome3dFixture(dir / "in");
+  const fs::path debs = dir / "repo";
+  fs::create_directories(debs);
+  buildDeb(debs, "sweethome3d-furniture", "1.8-1", "usr/share/sweethome3d/furniture/TestLib.sh3f",
+           readFileBytes(f.sh3f));
+  // The default catalog: only the OBJ, its MTL and the MTL's texture are taken from the shared
+  // resources folder, not its other files.
+  const std::string jar = serializeStoredZip(
+      {{"com/eteks/sweethome3d/io/DefaultFurnitureCatalog.properties",
+        "id#1=eTeks#cooker\nname#1=Cooker\ncategory#1=Kitchen\ncreator#1=eTeks\n"
+        "model#1=/com/eteks/sweethome3d/io/resources/cooker.obj\nwidth#1=60\ndepth#1=50\nheight#1=90\n"},
+       {"com/eteks/sweethome3d/io/resources/cooker.obj", f.cookerObj},
+       {"com/eteks/sweethome3d/io/resources/cooker.mtl", f.cookerMtl},
+       {"com/eteks/sweethome3d/io/resources/textures/cooker.png", f.cookerTexture},
+       {"com/eteks/sweethome3d/io/resources/sofa.obj", "v 0 0 0\n"}},
+      "jar");
+  buildDeb(debs, "sweethome3d", "7.0.2+dfsg-3", "usr/share/sweethome3d/sweethome3d.jar", jar);
+  FakeAptGet fake(dir / "bin", debs);
+
+  SweetHome3dPackageOptions packages;
+  packages.debCache = dir / "cache";
+  packages.installedRoot = dir / "nothing-installed";
+  std::vector<std::string> log;
+  SweetHome3dCorpusOptions o;
+  o.sources = locateSweetHome3dSources(packages, [&](const std::string& l) { log.push_back(l); });
+  ASSERT_EQ(o.sources.size(), 2u);
+  EXPECT_EQ(o.sources[0].library, "TestLib");
+  EXPECT_EQ(o.sources[0].packageVersion, "1.8-1");
+  EXPECT_TRUE(o.sources[1].isJar);
+  EXPECT_EQ(o.sources[1].packageVersion, "7.0.2+dfsg-3");
+  EXPECT_THAT(log, Contains(HasSubstr("downloading sweethome3d-furniture")));
+  o.out = dir / "out";
+  const CorpusSummary s = buildSweetHome3dCorpus(o);
+  ASSERT_EQ(s.objects.size(), 5u);
+  EXPECT_EQ(s.objects[4].id, "eteks_cooker");
+  EXPECT_EQ(s.objects[4].library, "default");
+  const fs::path cooker = dir / "out" / "unlabelled" / "eteks_cooker";
+  EXPECT_EQ(readFileBytes(cooker / "textures" / "cooker.png"), f.cookerTexture);
+  EXPECT_FALSE(fs::exists(cooker / "sofa.obj"));
+  const auto p = json::parse(readFileBytes(cooker / "provenance.json"));
+  EXPECT_EQ(p["package"], "sweethome3d");
+  EXPECT_EQ(p["package_version"], "7.0.2+dfsg-3");
+  EXPECT_EQ(p["files"], json({"cooker.obj", "cooker.mtl", "textures/cooker.png"}));
+
+  // A second lookup reuses the cached .debs: no download.
+  log.clear();
+  locateSweetHome3dSources(packages, [&](const std::string& l) { log.push_back(l); });
+  EXPECT_TRUE(log.empty());
+}
+
+TEST(SweetHome3dCorpus, UndownloadablePackageSaysWhatToInstall) {
+  const fs::path dir = test::freshTempDir();
+  fs::create_directories(dir / "empty-repo");
+  FakeAptGet fake(dir / "bin", dir / "empty-repo");
+  SweetHome3dPackageOptions packages;
+  packages.debCache = dir / "cache";
+  packages.installedRoot = dir / "nothing-installed";
+  try {
+    locateSweetHome3dSources(packages);
+    FAIL() << "expected Error";
+  } catch (const Error& e) {
+    EXPECT_THAT(e.what(), HasSubstr("sudo apt-get install sweethome3d-furniture"));
+    EXPECT_THAT(e.what(), HasSubstr("Unable to locate package sweethome3d-furniture"));
+    EXPECT_THAT(e.what(), HasSubstr("--sh3f"));
+  }
 }
 
 TEST(SweetHome3dCorpus, MetersPerUnitMatchesSortedDimensions) {
