@@ -1,6 +1,8 @@
 // `sagrid train`: one model from a dataset (--data DIR --model category.type), or the four shipped
 // models (--preset default: generates the bench split when missing, trains on its train half,
-// writes resources/models/). Parsing and progress display only; the work is in core/training.
+// writes resources/models/). Fine-tuning: --init MODEL(.pt|DIR), several --data DIR[:w], the bench
+// split replayed beside them (--replay). Parsing and progress display only; the work is in
+// core/training.
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <cstdlib>
@@ -19,45 +21,85 @@ namespace {
 namespace fs = std::filesystem;
 
 struct TrainCommandOptions {
-  std::string data, model, arch, mode = "sparse", out, preset, backend = "embedded", cache;
+  std::vector<std::string> data;
+  std::string model, arch, mode = "sparse", out, preset, backend = "embedded", cache, init, replay;
   int epochs = 0;
   double minutes = 0;
   int batch = 4;
-  double lr = 3e-3;
+  double lr = 0;  // 0: kFineTuneLearningRate with --init, else kFromScratchLearningRate
   unsigned seed = 1;
   double targetCap = 0;
   double nearWeight = 0;
   bool resume = false;
+  bool lossGiven = false;  // --near-weight or --target-cap on the command line
 };
 
 constexpr double kPresetNearWeight = 30;
 
-fs::path defaultBenchDir() {
-  if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg && *xdg)
-    return fs::path(xdg) / "sagrid" / "bench";
-  if (const char* home = std::getenv("HOME"); home && *home)
-    return fs::path(home) / ".cache" / "sagrid" / "bench";
-  return fs::path(".sagrid-data") / "bench";
+double learningRate(const TrainCommandOptions& o) {
+  if (o.lr > 0) return o.lr;
+  return o.init.empty() ? sagrid::kFromScratchLearningRate : sagrid::kFineTuneLearningRate;
 }
 
-std::string commandLine(const TrainCommandOptions& o, const std::string& data,
+std::string commandLine(const TrainCommandOptions& o, const std::vector<std::string>& data,
                         const std::string& model, const std::string& out) {
   std::ostringstream s;
-  s << "sagrid train --data " << data << " --model " << model << " --out " << out;
+  s << "sagrid train";
+  for (const auto& d : data) s << " --data " << d;
+  s << " --model " << model << " --out " << out;
+  if (!o.init.empty()) s << " --init " << o.init;
+  if (!o.replay.empty()) s << " --replay " << o.replay;
   if (!o.arch.empty()) s << " --arch \"" << o.arch << "\"";
   s << " --mode " << o.mode << " --backend " << o.backend;
   if (o.epochs) s << " --epochs " << o.epochs;
   if (o.minutes > 0) s << " --minutes " << o.minutes;
-  s << " --batch " << o.batch << " --lr " << o.lr << " --seed " << o.seed;
+  s << " --batch " << o.batch << " --lr " << learningRate(o) << " --seed " << o.seed;
   if (o.targetCap > 0) s << " --target-cap " << o.targetCap;
   if (o.nearWeight > 0) s << " --near-weight " << o.nearWeight;
   return s.str();
 }
 
-sagrid::DatasetTrainingResult trainOne(const TrainCommandOptions& o, const fs::path& data,
+// The datasets of one run: every --data DIR[:w], and with --init the replay (unless --replay none)
+// at a weight that draws replay and new data 1:1 unless given.
+std::vector<sagrid::TrainingDataSource> dataSources(const TrainCommandOptions& o) {
+  std::vector<sagrid::TrainingDataSource> sources;
+  double dataWeight = 0;
+  for (const auto& d : o.data) {
+    sources.push_back(sagrid::parseTrainingDataSource(d));
+    dataWeight += sources.back().weight;
+  }
+  if (o.init.empty() || o.replay == "none") {
+    if (!o.replay.empty() && o.replay != "none")
+      throw sagrid::InvalidArgument("--replay is for fine-tuning; give --init too");
+    return sources;
+  }
+  sagrid::TrainingDataSource replay;
+  if (o.replay.empty()) {
+    const fs::path bench = sagrid::defaultBenchDir();
+    std::unique_ptr<sagrid::app::ProgressBar> bar;
+    if (!fs::exists(bench / "train" / "manifest.jsonl")) {
+      std::fprintf(stderr, "generating the bench split (replay) into %s\n", bench.string().c_str());
+      bar = std::make_unique<sagrid::app::ProgressBar>("generate", 0);
+    }
+    replay = sagrid::defaultReplaySource([&](int done, int) {
+      if (bar) bar->update(static_cast<std::size_t>(done));
+    });
+    replay.weight = dataWeight;
+  } else {
+    replay = sagrid::parseTrainingDataSource(o.replay, "replay");
+    if (replay.dir.string() == o.replay) replay.weight = dataWeight;  // no ":w" given
+  }
+  sources.push_back(replay);
+  return sources;
+}
+
+sagrid::DatasetTrainingResult trainOne(const TrainCommandOptions& o,
+                                       const std::vector<sagrid::TrainingDataSource>& data,
                                        const std::string& model, const fs::path& out) {
   sagrid::DatasetTrainingOptions t;
-  t.dataDir = data;
+  t.datasets = data;
+  t.init = o.init;
+  t.lossFromInit = !o.lossGiven;
   t.modelName = model;
   t.architecture = o.arch;
   t.mode = o.mode;
@@ -67,12 +109,20 @@ sagrid::DatasetTrainingResult trainOne(const TrainCommandOptions& o, const fs::p
   t.training.epochs = o.epochs;
   t.training.minutes = o.minutes;
   t.training.batchSize = o.batch;
-  t.training.learningRate = o.lr;
+  t.training.learningRate = learningRate(o);
   t.training.seed = o.seed;
   t.training.targetCap = static_cast<float>(o.targetCap);
   t.training.nearWeight = static_cast<float>(o.nearWeight);
   t.training.resume = o.resume;
-  t.command = commandLine(o, data.string(), model, out.string());
+  std::vector<std::string> dataArgs;
+  for (const auto& d : data)
+    if (d.role == "data") {
+      std::ostringstream arg;
+      arg << d.dir.string();
+      if (d.weight != 1) arg << ':' << d.weight;
+      dataArgs.push_back(arg.str());
+    }
+  t.command = commandLine(o, dataArgs, model, out.string());
   std::unique_ptr<sagrid::app::ProgressBar> featureBar, trainBar;
   t.onFeatureProgress = [&](std::size_t done, std::size_t total, const std::string& id) {
     if (!featureBar)
@@ -92,10 +142,10 @@ sagrid::DatasetTrainingResult trainOne(const TrainCommandOptions& o, const fs::p
   std::fprintf(
       stderr,
       "%s: %zu objects (%zu without %s skipped, %zu failed), features %.1f s, training %.1f s, "
-      "final loss %.4f -> %s\n",
+      "final loss %.4f%s -> %s\n",
       model.c_str(), r.objectsUsed, r.objectsSkipped, r.card.type.c_str(), r.objectsFailed,
       r.featureSeconds, r.trainingSeconds, r.curve.empty() ? 0.0 : r.curve.back().loss,
-      r.cardFile.string().c_str());
+      r.recalibrated ? "" : ", point extraction kept from --init", r.cardFile.string().c_str());
   return r;
 }
 
@@ -108,8 +158,17 @@ void setupTrain(CLI::App& root) {
       "checkpoints every epoch (--resume continues).");
   auto o = std::make_shared<TrainCommandOptions>();
   cmd->add_option("--data", o->data,
-                  "Dataset folder (manifest.jsonl or object folders); with --preset: "
-                  "where the bench split is (generated when missing)");
+                  "Dataset folder (manifest.jsonl or object folders), optionally DIR:w with a "
+                  "sampling weight (default 1); repeat to mix datasets: each step picks a dataset "
+                  "by weight, then an object uniformly; an epoch is as many draws as all datasets "
+                  "hold objects. With --preset: where the bench split is (generated when missing)");
+  cmd->add_option("--init", o->init,
+                  "Fine-tune: start from MODEL.pt (card beside it) or a folder holding "
+                  "<model>.json, e.g. resources/models. Architecture, mode and features must match");
+  cmd->add_option("--replay", o->replay,
+                  "With --init: DIR[:w] replayed beside the new data (default: the bench split's "
+                  "train half, generated like --preset default does, weighted 1:1 with the new "
+                  "data); none = no replay");
   cmd->add_option("--model", o->model, "Model to train: <category>.<type>, e.g. stove.heatsource");
   cmd->add_option("--arch", o->arch,
                   std::string("CNN architecture, Table I notation (default ") +
@@ -122,15 +181,17 @@ void setupTrain(CLI::App& root) {
                   "Time budget; sets the epoch count after timing the first epoch")
       ->check(CLI::NonNegativeNumber);
   cmd->add_option("--batch", o->batch, "Objects per step (default 4)")->check(CLI::PositiveNumber);
-  cmd->add_option("--lr", o->lr, "Peak learning rate of AdamW (cosine schedule; default 3e-3)")
+  cmd->add_option("--lr", o->lr,
+                  "Peak learning rate of AdamW (cosine schedule; default 3e-3, 1e-3 with --init)")
       ->check(CLI::PositiveNumber);
   cmd->add_option("--seed", o->seed, "Random seed (weights, order, augmentation)");
   cmd->add_option("--target-cap", o->targetCap,
-                  "Clip the target distance at this many normalized units (0 = the paper's target)")
+                  "Clip the target distance at this many normalized units (0 = the paper's target; "
+                  "with --init default: the init model's)")
       ->check(CLI::NonNegativeNumber);
   cmd->add_option("--near-weight", o->nearWeight,
                   "Extra L1 weight of voxels near an instance: 1 + W exp(-d / 0.05) (0 = paper; "
-                  "--preset default uses 30)")
+                  "--preset default uses 30; with --init default: the init model's)")
       ->check(CLI::NonNegativeNumber);
   cmd->add_option("--out", o->out,
                   "Output folder (default resources/models with --preset, else models)");
@@ -141,8 +202,11 @@ void setupTrain(CLI::App& root) {
                   "default: the four shipped models on the generated bench split")
       ->check(CLI::IsMember({"default"}));
   cmd->callback([o, cmd] {
+    o->lossGiven = cmd->count("--near-weight") + cmd->count("--target-cap") > 0;
     if (o->preset == "default") {
-      const fs::path data = o->data.empty() ? defaultBenchDir() : fs::path(o->data);
+      if (o->data.size() > 1 || !o->init.empty() || !o->replay.empty())
+        throw sagrid::InvalidArgument("--preset default takes at most one --data and no --init");
+      const fs::path data = o->data.empty() ? sagrid::defaultBenchDir() : fs::path(o->data[0]);
       const fs::path out = o->out.empty() ? fs::path("resources/models") : fs::path(o->out);
       if (!fs::exists(data / "train" / "manifest.jsonl")) {
         std::fprintf(stderr, "generating the bench split into %s\n", data.string().c_str());
@@ -159,13 +223,14 @@ void setupTrain(CLI::App& root) {
       if (preset.cache.empty())
         preset.cache = (data / ".sagrid-cache").string();  // shared by both splits
       for (const auto& name : sagrid::defaultModelNames())
-        trainOne(preset, data / "train", name, out);
+        trainOne(preset, {{data / "train", 1.0, "data", {}}}, name, out);
       return;
     }
     if (o->data.empty()) throw sagrid::InvalidArgument("--data is required (or --preset default)");
     if (o->model.empty())
       throw sagrid::InvalidArgument("--model is required, e.g. --model stove.heatsource");
-    trainOne(*o, o->data, o->model, o->out.empty() ? fs::path("models") : fs::path(o->out));
+    trainOne(*o, dataSources(*o), o->model,
+             o->out.empty() ? fs::path("models") : fs::path(o->out));
   });
 }
 

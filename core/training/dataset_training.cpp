@@ -3,17 +3,20 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <optional>
 #include <sstream>
 
 #include "core/common/atomic_file.h"
 #include "core/common/error.h"
 #include "core/common/log.h"
+#include "core/common/sha256.h"
 #include "core/dataset/dataset.h"
 #include "core/features/vector_channels.h"
 #include "core/labels/labels.h"
 #include "core/model/affordance_model.h"
 #include "core/model/architecture.h"
 #include "core/plot/plot.h"
+#include "core/training/sample_mixing.h"
 
 namespace sagrid {
 namespace fs = std::filesystem;
@@ -87,70 +90,149 @@ const std::vector<std::string>& defaultModelNames() {
   return names;
 }
 
+namespace {
+
+// One dataset's usable samples (objects of the category with the type, features computed).
+struct LoadedDataset {
+  TrainingDataSource source;
+  std::vector<TrainingSample> samples;
+  std::size_t objects = 0, ofCategory = 0, skipped = 0, failed = 0, used = 0;
+  std::string configHash;
+};
+
+// Throws ModelError naming both values when the init model and the requested one differ.
+void checkInitMatches(const model::ModelCard& init, const model::ModelCard& requested,
+                      const fs::path& initCard) {
+  auto differ = [&](const std::string& what, const std::string& a, const std::string& b) {
+    if (a != b)
+      throw ModelError("--init " + initCard.string() + ": " + what + " differs: the init model " +
+                       init.name + " has " + a + ", the requested " + requested.name + " has " +
+                       b + "; fine-tuning keeps the network and its input, so they must match");
+  };
+  differ("model", init.name, requested.name);
+  differ("architecture", init.architecture, requested.architecture);
+  differ("mode", init.mode, requested.mode);
+  differ("feature backend", init.featureBackend, requested.featureBackend);
+  if (!init.featureConfigHash.empty())
+    differ("feature config", init.featureConfigHash, requested.featureConfigHash);
+  differ("feature channels", std::to_string(init.featureChannels),
+         std::to_string(requested.featureChannels));
+  differ("descriptor size", std::to_string(init.descriptorSize),
+         std::to_string(requested.descriptorSize));
+  differ("grid", std::to_string(init.gridResolution) + "^3",
+         std::to_string(requested.gridResolution) + "^3");
+}
+
+}  // namespace
+
 DatasetTrainingResult trainFromDataset(const DatasetTrainingOptions& options) {
   const auto [category, type] = model::splitModelName(options.modelName);
-  const std::vector<DatasetEntry> entries = readDataset(options.dataDir);
-  if (entries.empty())
-    throw InvalidArgument("dataset " + options.dataDir.string() +
-                          " has no objects (expected manifest.jsonl or object folders with "
-                          "labels.json and a mesh)");
-  FeatureOptions features = options.features;
-  if (features.cacheDir.empty()) features.cacheDir = options.dataDir / ".sagrid-cache";
+  std::vector<TrainingDataSource> sources = options.datasets;
+  if (sources.empty()) {
+    if (options.dataDir.empty()) throw InvalidArgument("training: no dataset given");
+    sources.push_back({options.dataDir, 1.0, "data", {}});
+  }
   const std::vector<std::array<int, 3>> vectorChannels =
-      vectorChannelTriples(featureChannelNames(features));
+      vectorChannelTriples(featureChannelNames(options.features));
+  // Resolved before the (slow) feature extraction, so a wrong --init fails at once.
+  fs::path initCard;
+  std::optional<model::ModelCard> init;
+  if (!options.init.empty()) {
+    initCard = resolveInitCard(options.init, options.modelName);
+    init = model::readModelCard(initCard);
+  }
+
+  // Read every manifest first, so feature progress counts over all datasets.
+  std::vector<std::vector<DatasetEntry>> entries;
+  std::size_t totalEntries = 0;
+  for (const auto& source : sources) {
+    entries.push_back(readDataset(source.dir));
+    if (entries.back().empty())
+      throw InvalidArgument("dataset " + source.dir.string() +
+                            " has no objects (expected manifest.jsonl or object folders with "
+                            "labels.json and a mesh)");
+    totalEntries += entries.back().size();
+  }
 
   DatasetTrainingResult result;
-  std::vector<TrainingSample> samples;
-  std::string configHash;
-  std::size_t ofCategory = 0;
+  std::vector<LoadedDataset> loaded;
+  std::size_t done = 0;
   const auto featureStart = Clock::now();
-  for (std::size_t e = 0; e < entries.size(); ++e) {
-    const DatasetEntry& entry = entries[e];
-    if (options.onFeatureProgress) options.onFeatureProgress(e, entries.size(), entry.id);
-    ObjectLabels labels = readLabels(entry.labels);
-    const std::string objectCategory =
-        entry.category.empty() ? labels.object.category : entry.category;
-    if (objectCategory != category) continue;
-    ++ofCategory;
-    if (labels.ofType(type).empty()) {
-      ++result.objectsSkipped;
-      continue;
+  for (std::size_t d = 0; d < sources.size(); ++d) {
+    LoadedDataset data;
+    data.source = sources[d];
+    FeatureOptions features = options.features;
+    if (!data.source.cacheDir.empty())
+      features.cacheDir = data.source.cacheDir;
+    else if (features.cacheDir.empty())
+      features.cacheDir = data.source.dir / ".sagrid-cache";
+    data.objects = entries[d].size();
+    for (const DatasetEntry& entry : entries[d]) {
+      if (options.onFeatureProgress) options.onFeatureProgress(done, totalEntries, entry.id);
+      ++done;
+      ObjectLabels labels = readLabels(entry.labels);
+      const std::string objectCategory =
+          entry.category.empty() ? labels.object.category : entry.category;
+      if (objectCategory != category) continue;
+      ++data.ofCategory;
+      if (labels.ofType(type).empty()) {
+        ++data.skipped;
+        continue;
+      }
+      FeatureGrid grid;
+      try {
+        grid = extractFeatures(entry.mesh, features);
+      } catch (const Error& error) {
+        logger()->warn("skipping {}: {}", entry.id, error.what());
+        ++data.failed;
+        continue;
+      }
+      data.configHash = grid.configHash;
+      data.samples.push_back(
+          makeTrainingSample(entry.id, grid, normalizedTargets(labels, type, grid)));
     }
-    FeatureGrid grid;
-    try {
-      grid = extractFeatures(entry.mesh, features);
-    } catch (const Error& error) {
-      logger()->warn("skipping {}: {}", entry.id, error.what());
-      ++result.objectsFailed;
-      continue;
-    }
-    configHash = grid.configHash;
-    samples.push_back(makeTrainingSample(entry.id, grid, normalizedTargets(labels, type, grid)));
+    if (data.ofCategory == 0)
+      throw InvalidArgument("dataset " + data.source.dir.string() + " has no " + category +
+                            " objects for model " + options.modelName + " (" +
+                            std::to_string(data.objects) + " objects in total)");
+    if (data.samples.empty())
+      throw InvalidArgument("dataset " + data.source.dir.string() + ": none of its " +
+                            std::to_string(data.ofCategory) + " " + category + " objects has a " +
+                            type + " affordance for model " + options.modelName +
+                            (data.failed ? " with usable features" : std::string()));
+    if (data.skipped)
+      logger()->warn("{}: skipped {} {} objects without a {} affordance in {}", options.modelName,
+                     data.skipped, category, type, data.source.dir.string());
+    result.objectsSkipped += data.skipped;
+    result.objectsFailed += data.failed;
+    loaded.push_back(std::move(data));
   }
-  if (options.onFeatureProgress) options.onFeatureProgress(entries.size(), entries.size(), "");
+  if (options.onFeatureProgress) options.onFeatureProgress(totalEntries, totalEntries, "");
   result.featureSeconds = secondsSince(featureStart);
-  if (ofCategory == 0)
-    throw InvalidArgument("dataset " + options.dataDir.string() + " has no " + category +
-                          " objects (" + std::to_string(entries.size()) + " objects in total)");
-  if (samples.empty())
-    throw InvalidArgument("dataset " + options.dataDir.string() + ": none of its " +
-                          std::to_string(ofCategory) + " " + category + " objects has a " + type +
-                          " affordance" +
-                          (result.objectsFailed ? " with usable features" : std::string()));
-  if (result.objectsSkipped)
-    logger()->warn("{}: skipped {} {} objects without a {} affordance", options.modelName,
-                   result.objectsSkipped, category, type);
+
+  std::vector<TrainingSample> samples;
+  std::vector<std::size_t> sizes;
+  std::vector<double> weights;
+  std::string configHash;
+  for (auto& data : loaded) {
+    data.used = data.samples.size();
+    sizes.push_back(data.used);
+    weights.push_back(data.source.weight);
+    configHash = data.configHash;
+    for (auto& s : data.samples) samples.push_back(std::move(s));
+    data.samples.clear();
+  }
 
   model::ModelCard card;
   card.name = options.modelName;
   card.category = category;
   card.type = type;
-  card.architecture =
-      model::Architecture::parse(options.architecture.empty() ? model::kDefaultArchitecture
-                                                              : options.architecture)
-          .toString();
+  std::string architecture = options.architecture;
+  if (architecture.empty())
+    architecture = init ? init->architecture : std::string(model::kDefaultArchitecture);
+  card.architecture = model::Architecture::parse(architecture).toString();
   card.mode = model::toString(model::parseExecutionMode(options.mode));
-  card.featureBackend = features.backend;
+  card.featureBackend = options.features.backend;
   card.featureConfigHash = configHash;
   card.featureChannels = samples.front().channels;
   card.descriptorSize = static_cast<int>(samples.front().descriptor.size());
@@ -166,9 +248,22 @@ DatasetTrainingResult trainFromDataset(const DatasetTrainingOptions& options) {
   result.cardFile = options.outDir / (options.modelName + ".json");
   model::TrainingOptions training = options.training;
   training.vectorChannels = vectorChannels;
+  if (sources.size() > 1) training.sampleWeights = mixedSampleWeights(sizes, weights);
   if (training.checkpointFile.empty())
     training.checkpointFile = options.outDir / (options.modelName + ".checkpoint");
-  model::AffordanceModel net(card, training.seed);
+  if (init) {
+    checkInitMatches(*init, card, initCard);
+    if (options.lossFromInit) {
+      training.targetCap = init->training.value("target_cap", training.targetCap);
+      training.nearWeight = init->training.value("near_weight", training.nearWeight);
+      training.nearRadius = init->training.value("near_radius", training.nearRadius);
+    }
+  }
+  // With --resume, a checkpoint (written by an interrupted run of this same fine-tune) replaces
+  // these weights inside trainModel: resume wins over init.
+  model::AffordanceModel net =
+      init ? model::AffordanceModel::load(initCard) : model::AffordanceModel(card, training.seed);
+  if (init) net.card() = card;
   const auto trainStart = Clock::now();
   result.curve = model::trainModel(net, samples, training);
   result.trainingSeconds = secondsSince(trainStart);
@@ -197,12 +292,31 @@ DatasetTrainingResult trainFromDataset(const DatasetTrainingOptions& options) {
   // Sub-voxel refinement: 4.22 -> 4.00 cm on bench val stove.heatsource (1-epoch model).
   ExtractionSettings refined;
   refined.refineVoxels = 2.0f;
-  ExtractionSettings extraction = calibrateExtraction(fields, truths, refined);
-  extraction.confidenceScale = extraction.maxDistance;
-  net.card().extraction = extraction;
+  // A fine-tune changes the field, so by default it recalibrates on its training objects (new
+  // data and replay together, as training from scratch calibrates on its training set); with too
+  // few of them it keeps the init model's calibration.
+  result.recalibrated = !init || samples.size() >= kMinCalibrationObjects;
+  if (result.recalibrated) {
+    ExtractionSettings extraction = calibrateExtraction(fields, truths, refined);
+    extraction.confidenceScale = extraction.maxDistance;
+    net.card().extraction = extraction;
+  } else {
+    net.card().extraction = init->extraction;
+  }
 
   auto& c = net.card();
-  c.training = {{"data", fs::absolute(options.dataDir).lexically_normal().string()},
+  nlohmann::json datasets = nlohmann::json::array();
+  for (const auto& data : loaded) {
+    const DatasetFingerprint fingerprint = datasetFingerprint(data.source.dir);
+    datasets.push_back({{"path", fs::absolute(data.source.dir).lexically_normal().string()},
+                        {"sha256", fingerprint.sha256},
+                        {"sha256_of", fingerprint.of},
+                        {"weight", data.source.weight},
+                        {"objects", data.used},
+                        {"role", data.source.role}});
+  }
+  c.training = {{"data", fs::absolute(loaded.front().source.dir).lexically_normal().string()},
+                {"datasets", datasets},
                 {"command", options.command},
                 {"objects", samples.size()},
                 {"skipped_without_type", result.objectsSkipped},
@@ -217,7 +331,14 @@ DatasetTrainingResult trainFromDataset(const DatasetTrainingOptions& options) {
                 {"near_radius", training.nearRadius},
                 {"seconds", result.curve.empty() ? 0.0 : result.curve.back().seconds},
                 {"feature_seconds", result.featureSeconds},
-                {"cuda", model::cudaAvailable()}};
+                {"cuda", model::cudaAvailable()},
+                {"point_extraction", result.recalibrated ? "calibrated on the training objects"
+                                                         : "kept from the init model"}};
+  if (init)
+    c.training["init"] = {{"path", fs::absolute(initCard).lexically_normal().string()},
+                          {"name", init->name},
+                          {"card_sha256", sha256Hex(readFileBytes(initCard))},
+                          {"weights_sha256", init->weightsSha256}};
   c.metrics["final_train_loss"] = result.curve.empty() ? 0.0 : result.curve.back().loss;
   c.metrics["train_argmin_error_normalized"] = argminError / samples.size();
   net.save(result.cardFile);

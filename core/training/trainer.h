@@ -47,6 +47,10 @@ struct TrainingOptions {
   float nearWeight = 0;
   float nearRadius = 0.05f;
   AugmentationRanges augmentation;
+  // Mixed data: one sampling weight per sample (core/training/sample_mixing.h). Empty = every
+  // sample once per epoch in a shuffled order; else each epoch draws samples.size() samples with
+  // replacement in proportion to these weights.
+  std::vector<double> sampleWeights;
   std::vector<std::array<int, 3>> vectorChannels;  // rotated with the grid (normals)
   std::filesystem::path checkpointFile;            // written after every epoch; empty = none
   bool resume = false;                             // continue from checkpointFile when it exists
@@ -63,7 +67,10 @@ std::vector<EpochRecord> trainModel(AffordanceModel& model,
                                     const TrainingOptions& options);
 
 // Mean L1 loss on D over the samples without augmentation (eval mode), for tests and reports.
+// `batchStatistics`: normalize with each sample's own batch statistics, as a training step on a
+// batch of that one sample does (the running statistics are left unchanged), so a step's loss
+// can be compared with it.
 double evaluateLoss(AffordanceModel& model, const std::vector<TrainingSample>& samples,
-                    float targetCap = 0);
+                    float targetCap = 0, bool batchStatistics = false);
 
 }  // namespace sagrid::model

@@ -10,6 +10,7 @@
 #include "core/common/error.h"
 #include "core/common/log.h"
 #include "core/model/affordance_model_impl.h"
+#include "core/training/sample_mixing.h"
 
 namespace sagrid::model {
 namespace fs = std::filesystem;
@@ -128,6 +129,9 @@ std::vector<EpochRecord> trainModel(AffordanceModel& model,
                                     const std::vector<TrainingSample>& samples,
                                     const TrainingOptions& options) {
   if (samples.empty()) throw InvalidArgument("training: no training objects");
+  if (!options.sampleWeights.empty() && options.sampleWeights.size() != samples.size())
+    throw InvalidArgument("training: " + std::to_string(options.sampleWeights.size()) +
+                          " sampling weights for " + std::to_string(samples.size()) + " samples");
   for (const auto& s : samples)
     if (s.targets.empty()) throw InvalidArgument("training: object " + s.id + " has no targets");
   configureTorchRuntime();
@@ -156,9 +160,7 @@ std::vector<EpochRecord> trainModel(AffordanceModel& model,
     // Seeded per epoch, so a resumed run continues with the same draws as an uninterrupted one.
     std::mt19937 rng(options.seed * 7919u + static_cast<unsigned>(epoch));
     torch::manual_seed(options.seed * 7919u + static_cast<unsigned>(epoch));
-    std::vector<std::size_t> order(samples.size());
-    std::iota(order.begin(), order.end(), 0);
-    std::shuffle(order.begin(), order.end(), rng);
+    const std::vector<std::size_t> order = drawEpochOrder(samples.size(), options.sampleWeights, rng);
     double lossSum = 0;
     double lr = options.learningRate;
     for (std::size_t step = 0; step < stepsPerEpoch; ++step) {
@@ -230,16 +232,25 @@ std::vector<EpochRecord> trainModel(AffordanceModel& model,
 }
 
 double evaluateLoss(AffordanceModel& model, const std::vector<TrainingSample>& samples,
-                    float targetCap) {
+                    float targetCap, bool batchStatistics) {
   AffordanceModelImpl& impl = model.impl();
-  impl.net->eval();
   torch::NoGradGuard noGrad;
+  // Training-mode batch norm updates the running statistics: keep a copy and put it back.
+  std::vector<torch::Tensor> buffers;
+  if (batchStatistics)
+    for (const auto& b : impl.net->buffers()) buffers.push_back(b.clone());
+  impl.net->train(batchStatistics);
   double sum = 0;
   for (const auto& s : samples) {
     const NetworkObject o = toNetworkObject(s);
     const NetworkBatch batch = makeNetworkBatch({&o}, impl.shape, impl.mode, impl.device);
     sum += batchLoss(impl.net->forward(batch, impl.mode), batch, distanceTargets(s, targetCap))
                .item<double>();
+  }
+  if (batchStatistics) {
+    auto current = impl.net->buffers();
+    for (std::size_t b = 0; b < current.size(); ++b) current[b].copy_(buffers[b]);
+    impl.net->eval();
   }
   return samples.empty() ? 0.0 : sum / static_cast<double>(samples.size());
 }
