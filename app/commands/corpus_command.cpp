@@ -16,8 +16,10 @@ namespace {
 namespace fs = std::filesystem;
 
 fs::path defaultDebCache() {
-  if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg && *xdg) return fs::path(xdg) / "sagrid" / "debs";
-  if (const char* home = std::getenv("HOME"); home && *home) return fs::path(home) / ".cache" / "sagrid" / "debs";
+  if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg && *xdg)
+    return fs::path(xdg) / "sagrid" / "debs";
+  if (const char* home = std::getenv("HOME"); home && *home)
+    return fs::path(home) / ".cache" / "sagrid" / "debs";
   return fs::temp_directory_path() / "sagrid-debs";
 }
 
@@ -27,7 +29,8 @@ fs::path defaultLabelsDir() {
 }
 
 void setupCorpus(CLI::App& root) {
-  auto* corpus = root.add_subcommand("corpus", "Build a real corpus of objects from a public source");
+  auto* corpus =
+      root.add_subcommand("corpus", "Build a real corpus of objects from a public source");
   corpus->require_subcommand(1);
   auto* cmd = corpus->add_subcommand(
       "sweethome3d",
@@ -41,10 +44,13 @@ void setupCorpus(CLI::App& root) {
     std::vector<std::string> sh3f;
   };
   auto o = std::make_shared<Options>();
-  cmd->add_option("--out", o->out, "Output folder (replaced only if empty or an earlier corpus)")->required();
+  cmd->add_option("--out", o->out, "Output folder (replaced only if empty or an earlier corpus)")
+      ->required();
   cmd->add_option("--debs", o->debs, "Folder for downloaded .debs (default ~/.cache/sagrid/debs)");
-  cmd->add_option("--sh3f", o->sh3f, "Furniture library archive to read instead of the package (repeatable)");
-  cmd->add_option("--jar", o->jar, "sweethome3d.jar to read the default catalog from instead of the package");
+  cmd->add_option("--sh3f", o->sh3f,
+                  "Furniture library archive to read instead of the package (repeatable)");
+  cmd->add_option("--jar", o->jar,
+                  "sweethome3d.jar to read the default catalog from instead of the package");
   cmd->add_option("--labels", o->labels,
                   "Shipped labels folder (<id>/labels.json, split.json); default "
                   "<source>/resources/datasets/sweethome3d");
@@ -53,7 +59,9 @@ void setupCorpus(CLI::App& root) {
     packages.debCache = o->debs.empty() ? defaultDebCache() : fs::path(o->debs);
     for (const auto& f : o->sh3f) packages.sh3f.emplace_back(f);
     if (!o->jar.empty()) packages.jar = fs::path(o->jar);
-    const auto log = [](const std::string& line) { std::fprintf(stderr, "corpus: %s\n", line.c_str()); };
+    const auto log = [](const std::string& line) {
+      std::fprintf(stderr, "corpus: %s\n", line.c_str());
+    };
 
     sagrid::SweetHome3dCorpusOptions options;
     options.out = o->out;

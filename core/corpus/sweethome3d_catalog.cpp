@@ -44,16 +44,20 @@ std::vector<std::pair<int, std::string>> logicalLines(std::string_view bytes) {
     while (end < bytes.size() && bytes[end] != '\n' && bytes[end] != '\r') ++end;
     std::string_view line = bytes.substr(at, end - at);
     ++number;
-    if (end < bytes.size() && bytes[end] == '\r' && end + 1 < bytes.size() && bytes[end + 1] == '\n') ++end;
+    if (end < bytes.size() && bytes[end] == '\r' && end + 1 < bytes.size() &&
+        bytes[end + 1] == '\n')
+      ++end;
     at = end + 1;
     if (continuing) {
       std::size_t skip = 0;
-      while (skip < line.size() && (line[skip] == ' ' || line[skip] == '\t' || line[skip] == '\f')) ++skip;
+      while (skip < line.size() && (line[skip] == ' ' || line[skip] == '\t' || line[skip] == '\f'))
+        ++skip;
       line = line.substr(skip);
     } else {
       startNumber = number;
       std::size_t skip = 0;
-      while (skip < line.size() && (line[skip] == ' ' || line[skip] == '\t' || line[skip] == '\f')) ++skip;
+      while (skip < line.size() && (line[skip] == ' ' || line[skip] == '\t' || line[skip] == '\f'))
+        ++skip;
       if (skip == line.size() || line[skip] == '#' || line[skip] == '!') {
         if (end >= bytes.size()) break;
         continue;
@@ -94,12 +98,13 @@ std::string unescape(std::string_view text, const fs::path& source, int line) {
     }
     const char e = text[++i];
     if (e == 'u') {
-      if (i + 4 >= text.size() || !std::all_of(text.begin() + i + 1, text.begin() + i + 5, [](char h) {
-            return std::isxdigit(static_cast<unsigned char>(h)) != 0;
-          })) {
+      if (i + 4 >= text.size() ||
+          !std::all_of(text.begin() + i + 1, text.begin() + i + 5,
+                       [](char h) { return std::isxdigit(static_cast<unsigned char>(h)) != 0; })) {
         throw FileError(source, "line " + std::to_string(line) + ": malformed \\uXXXX escape");
       }
-      const auto unit = static_cast<std::uint32_t>(std::strtoul(std::string(text.substr(i + 1, 4)).c_str(), nullptr, 16));
+      const auto unit = static_cast<std::uint32_t>(
+          std::strtoul(std::string(text.substr(i + 1, 4)).c_str(), nullptr, 16));
       i += 4;
       if (unit >= 0xD800 && unit < 0xDC00) {
         flushHigh();
@@ -119,11 +124,20 @@ std::string unescape(std::string_view text, const fs::path& source, int line) {
     }
     flushHigh();
     switch (e) {
-      case 't': out += '\t'; break;
-      case 'n': out += '\n'; break;
-      case 'r': out += '\r'; break;
-      case 'f': out += '\f'; break;
-      default: appendUtf8(out, static_cast<unsigned char>(e));
+      case 't':
+        out += '\t';
+        break;
+      case 'n':
+        out += '\n';
+        break;
+      case 'r':
+        out += '\r';
+        break;
+      case 'f':
+        out += '\f';
+        break;
+      default:
+        appendUtf8(out, static_cast<unsigned char>(e));
     }
   }
   flushHigh();
@@ -149,7 +163,8 @@ std::string lowerAscii(std::string text) {
 
 }  // namespace
 
-std::map<std::string, std::string> parseJavaProperties(std::string_view bytes, const fs::path& source) {
+std::map<std::string, std::string> parseJavaProperties(std::string_view bytes,
+                                                       const fs::path& source) {
   std::map<std::string, std::string> properties;
   for (const auto& [lineNumber, line] : logicalLines(bytes)) {
     std::size_t keyEnd = 0;
@@ -164,12 +179,14 @@ std::map<std::string, std::string> parseJavaProperties(std::string_view bytes, c
     }
     keyEnd = std::min(keyEnd, line.size());
     std::size_t valueStart = keyEnd;
-    while (valueStart < line.size() && (line[valueStart] == ' ' || line[valueStart] == '\t' || line[valueStart] == '\f')) {
+    while (valueStart < line.size() &&
+           (line[valueStart] == ' ' || line[valueStart] == '\t' || line[valueStart] == '\f')) {
       ++valueStart;
     }
     if (valueStart < line.size() && (line[valueStart] == '=' || line[valueStart] == ':')) {
       ++valueStart;
-      while (valueStart < line.size() && (line[valueStart] == ' ' || line[valueStart] == '\t' || line[valueStart] == '\f')) {
+      while (valueStart < line.size() &&
+             (line[valueStart] == ' ' || line[valueStart] == '\t' || line[valueStart] == '\f')) {
         ++valueStart;
       }
     }
@@ -194,7 +211,9 @@ FurnitureCatalog parseFurnitureCatalog(std::string_view bytes, const fs::path& s
   for (const auto& [key, value] : p) {
     if (key.rfind("id#", 0) != 0) continue;
     const std::string digits = key.substr(3);
-    if (digits.empty() || !std::all_of(digits.begin(), digits.end(), [](char c) { return std::isdigit(static_cast<unsigned char>(c)) != 0; })) {
+    if (digits.empty() || !std::all_of(digits.begin(), digits.end(), [](char c) {
+          return std::isdigit(static_cast<unsigned char>(c)) != 0;
+        })) {
       continue;
     }
     indices.push_back(std::atoi(digits.c_str()));
@@ -234,9 +253,12 @@ FurnitureCatalog parseFurnitureCatalog(std::string_view bytes, const fs::path& s
 
 const char* toString(CorpusRole role) {
   switch (role) {
-    case CorpusRole::Stove: return "stove";
-    case CorpusRole::Sink: return "sink";
-    case CorpusRole::None: return "none";
+    case CorpusRole::Stove:
+      return "stove";
+    case CorpusRole::Sink:
+      return "sink";
+    case CorpusRole::None:
+      return "none";
   }
   return "none";
 }

@@ -20,13 +20,13 @@ std::map<std::string, std::string> parseJavaProperties(std::string_view bytes,
                                                        const std::filesystem::path& source);
 
 struct FurnitureCatalogEntry {
-  int index = 0;             // N of the "key#N" properties
-  std::string id;            // e.g. "eTeks#cooker", "Blend Swap CC-0#stove"
-  std::string name;          // English name
-  std::string category;      // e.g. "Kitchen", "Bathroom"
+  int index = 0;         // N of the "key#N" properties
+  std::string id;        // e.g. "eTeks#cooker", "Blend Swap CC-0#stove"
+  std::string name;      // English name
+  std::string category;  // e.g. "Kitchen", "Bathroom"
   std::string creator;
-  std::string model;         // path inside the archive, e.g. "/scopia/cooker/cooker.obj"
-  std::optional<double> width, depth, height;  // cm
+  std::string model;  // path inside the archive, e.g. "/scopia/cooker/cooker.obj"
+  std::optional<double> width, depth, height;        // cm
   std::optional<std::vector<double>> modelRotation;  // 3x3, row-major, when given
 };
 

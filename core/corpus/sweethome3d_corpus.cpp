@@ -7,10 +7,9 @@
 #include <cmath>
 #include <cstdio>
 #include <memory>
+#include <nlohmann/json.hpp>
 #include <set>
 #include <sstream>
-
-#include <nlohmann/json.hpp>
 
 #include "core/common/atomic_file.h"
 #include "core/common/error.h"
@@ -27,7 +26,8 @@ namespace {
 constexpr const char* kFurniturePackage = "sweethome3d-furniture";
 constexpr const char* kAppPackage = "sweethome3d";
 constexpr const char* kPluginCatalog = "PluginFurnitureCatalog.properties";
-constexpr const char* kDefaultCatalog = "com/eteks/sweethome3d/io/DefaultFurnitureCatalog.properties";
+constexpr const char* kDefaultCatalog =
+    "com/eteks/sweethome3d/io/DefaultFurnitureCatalog.properties";
 
 std::string shellQuote(const std::string& text) {
   std::string out = "'";
@@ -41,7 +41,8 @@ std::pair<int, std::string> runCommand(const std::string& command) {
   FILE* pipe = ::popen((command + " 2>&1").c_str(), "r");
   if (!pipe) return {-1, "cannot start a shell"};
   std::array<char, 4096> buffer{};
-  while (const std::size_t n = std::fread(buffer.data(), 1, buffer.size(), pipe)) output.append(buffer.data(), n);
+  while (const std::size_t n = std::fread(buffer.data(), 1, buffer.size(), pipe))
+    output.append(buffer.data(), n);
   const int status = ::pclose(pipe);
   return {status, output};
 }
@@ -76,14 +77,16 @@ std::vector<fs::path> sh3fFiles(const fs::path& furnitureDir) {
 
 // The unpacked root of `package` from the .deb cache, downloading it when no .deb is cached.
 // Returns the root and the package version.
-std::pair<fs::path, std::string> unpackedPackage(const std::string& package, const fs::path& cache,
-                                                 const std::function<void(const std::string&)>& log) {
+std::pair<fs::path, std::string> unpackedPackage(
+    const std::string& package, const fs::path& cache,
+    const std::function<void(const std::string&)>& log) {
   auto cachedDeb = [&]() -> fs::path {
     std::vector<fs::path> debs;
     if (fs::is_directory(cache)) {
       for (const auto& e : fs::directory_iterator(cache)) {
         const std::string name = e.path().filename().string();
-        if (e.is_regular_file() && name.rfind(package + "_", 0) == 0 && e.path().extension() == ".deb") {
+        if (e.is_regular_file() && name.rfind(package + "_", 0) == 0 &&
+            e.path().extension() == ".deb") {
           debs.push_back(e.path());
         }
       }
@@ -97,25 +100,30 @@ std::pair<fs::path, std::string> unpackedPackage(const std::string& package, con
     fs::create_directories(cache, ec);
     if (ec) throw FileError(cache, "cannot create the .deb cache folder: " + ec.message());
     if (log) log("downloading " + package + " with apt-get download into " + cache.string());
-    const auto [status, output] =
-        runCommand("cd " + shellQuote(cache.string()) + " && apt-get download " + shellQuote(package));
+    const auto [status, output] = runCommand("cd " + shellQuote(cache.string()) +
+                                             " && apt-get download " + shellQuote(package));
     deb = cachedDeb();
     if (status != 0 || deb.empty()) {
-      throw Error("Sweet Home 3D package '" + package + "' is not installed and `apt-get download " + package +
-                  "` failed (" + lastLine(output) + "). Install it (sudo apt-get install " + package +
-                  "), check that Debian's apt sources are reachable, or pass the archives with --sh3f FILE / "
+      throw Error("Sweet Home 3D package '" + package +
+                  "' is not installed and `apt-get download " + package + "` failed (" +
+                  lastLine(output) + "). Install it (sudo apt-get install " + package +
+                  "), check that Debian's apt sources are reachable, or pass the archives with "
+                  "--sh3f FILE / "
                   "--jar FILE.");
     }
   }
-  const auto [vStatus, vOutput] = runCommand("dpkg-deb -f " + shellQuote(deb.string()) + " Version");
+  const auto [vStatus, vOutput] =
+      runCommand("dpkg-deb -f " + shellQuote(deb.string()) + " Version");
   if (vStatus != 0) throw FileError(deb, "is not a readable .deb (" + lastLine(vOutput) + ")");
   const std::string version = trimmed(vOutput);
   const fs::path root = cache / (deb.stem().string() + ".unpacked");
   if (!fs::is_directory(root)) {
-    const fs::path temp = cache / (deb.stem().string() + ".unpacking-" + std::to_string(::getpid()));
+    const fs::path temp =
+        cache / (deb.stem().string() + ".unpacking-" + std::to_string(::getpid()));
     fs::remove_all(temp);
     if (log) log("unpacking " + deb.filename().string());
-    const auto [xStatus, xOutput] = runCommand("dpkg -x " + shellQuote(deb.string()) + " " + shellQuote(temp.string()));
+    const auto [xStatus, xOutput] =
+        runCommand("dpkg -x " + shellQuote(deb.string()) + " " + shellQuote(temp.string()));
     if (xStatus != 0) {
       fs::remove_all(temp);
       throw FileError(deb, "dpkg -x failed (" + lastLine(xOutput) + ")");
@@ -130,7 +138,8 @@ std::pair<fs::path, std::string> unpackedPackage(const std::string& package, con
 // "a/b/../c" -> "a/c"; nullopt when the path is absolute or climbs above the archive root.
 std::optional<std::string> normalizeArchivePath(std::string path) {
   std::replace(path.begin(), path.end(), '\\', '/');
-  if (path.empty() || path.front() == '/' || (path.size() >= 2 && path[1] == ':')) return std::nullopt;
+  if (path.empty() || path.front() == '/' || (path.size() >= 2 && path[1] == ':'))
+    return std::nullopt;
   std::vector<std::string> parts;
   std::stringstream stream(path);
   for (std::string part; std::getline(stream, part, '/');) {
@@ -168,8 +177,10 @@ std::vector<std::string> references(const std::string& text, bool isMtl) {
       names.insert(names.end(), rest.begin(), rest.end());
     } else if (isMtl) {
       std::string k = keyword;
-      std::transform(k.begin(), k.end(), k.begin(), [](unsigned char c) { return std::tolower(c); });
-      if (k.rfind("map_", 0) == 0 || k == "bump" || k == "disp" || k == "decal" || k == "refl" || k == "norm") {
+      std::transform(k.begin(), k.end(), k.begin(),
+                     [](unsigned char c) { return std::tolower(c); });
+      if (k.rfind("map_", 0) == 0 || k == "bump" || k == "disp" || k == "decal" || k == "refl" ||
+          k == "norm") {
         names.push_back(rest.back());  // options (-s 1 1 1, -bm 0.5 ...) come first
       }
     }
@@ -178,15 +189,16 @@ std::vector<std::string> references(const std::string& text, bool isMtl) {
 }
 
 struct ObjectFiles {
-  std::vector<std::pair<std::string, std::string>> files;  // name in the object folder, archive entry
+  std::vector<std::pair<std::string, std::string>>
+      files;  // name in the object folder, archive entry
   std::vector<std::string> warnings;
 };
 
 // Which archive entries make up an object. `root` is the object folder's prefix in the archive
 // ("scopia/cooker/"); with `wholeFolder` every entry under it is taken (a plugin model's folder),
 // else only the OBJ and what it references. References resolving outside `root` are refused.
-ObjectFiles collectObjectFiles(const ZipArchive& zip, const std::string& objEntry, const std::string& root,
-                               bool wholeFolder) {
+ObjectFiles collectObjectFiles(const ZipArchive& zip, const std::string& objEntry,
+                               const std::string& root, bool wholeFolder) {
   ObjectFiles result;
   std::set<std::string> taken;
   auto add = [&](const std::string& entry) {
@@ -197,7 +209,8 @@ ObjectFiles collectObjectFiles(const ZipArchive& zip, const std::string& objEntr
       if (e.isDirectory() || e.name.rfind(root, 0) != 0) continue;
       const auto normal = normalizeArchivePath(e.name);
       if (!normal || *normal != e.name) {
-        result.warnings.push_back("refused archive entry '" + e.name + "': not a plain relative path");
+        result.warnings.push_back("refused archive entry '" + e.name +
+                                  "': not a plain relative path");
         continue;
       }
       add(e.name);
@@ -213,14 +226,17 @@ ObjectFiles collectObjectFiles(const ZipArchive& zip, const std::string& objEntr
     if (!visited.insert(entry).second) continue;
     for (const std::string& ref : references(zip.read(entry), isMtl)) {
       const auto resolved = normalizeArchivePath(directoryOf(entry) + ref);
-      const bool absolute = !ref.empty() && (ref.front() == '/' || ref.front() == '\\' || (ref.size() >= 2 && ref[1] == ':'));
+      const bool absolute = !ref.empty() && (ref.front() == '/' || ref.front() == '\\' ||
+                                             (ref.size() >= 2 && ref[1] == ':'));
       if (absolute || !resolved || resolved->rfind(root, 0) != 0) {
-        result.warnings.push_back("refused reference '" + ref + "' in " + entry.substr(root.size()) +
+        result.warnings.push_back("refused reference '" + ref + "' in " +
+                                  entry.substr(root.size()) +
                                   ": it resolves outside the object folder");
         continue;
       }
       if (!zip.contains(*resolved)) {
-        result.warnings.push_back("missing file '" + ref + "' referenced by " + entry.substr(root.size()));
+        result.warnings.push_back("missing file '" + ref + "' referenced by " +
+                                  entry.substr(root.size()));
         continue;
       }
       add(*resolved);
@@ -251,7 +267,8 @@ ShippedLabels readShippedLabels(const fs::path& dir) {
       for (const auto& id : j.at(name)) shipped.split[id.get<std::string>()] = name;
     }
   } catch (const nlohmann::json::exception& e) {
-    throw FileError(splitFile, std::string("expected {\"real-train\":[ids],\"real-val\":[ids]} (") + e.what() + ")");
+    throw FileError(splitFile, std::string("expected {\"real-train\":[ids],\"real-val\":[ids]} (") +
+                                   e.what() + ")");
   }
   return shipped;
 }
@@ -275,23 +292,27 @@ class TempFolderGuard {
 
 }  // namespace
 
-std::vector<SweetHome3dSource> locateSweetHome3dSources(const SweetHome3dPackageOptions& options,
-                                                        const std::function<void(const std::string&)>& log) {
+std::vector<SweetHome3dSource> locateSweetHome3dSources(
+    const SweetHome3dPackageOptions& options, const std::function<void(const std::string&)>& log) {
   std::vector<SweetHome3dSource> sources;
   const fs::path installedShare = options.installedRoot / "usr/share/sweethome3d";
   auto versionOf = [&](const fs::path& file, const std::string& package) {
     std::error_code ec;
     const fs::path canonical = fs::weakly_canonical(file, ec);
-    return canonical.string().rfind("/usr/share/sweethome3d/", 0) == 0 ? installedVersion(package) : std::string();
+    return canonical.string().rfind("/usr/share/sweethome3d/", 0) == 0 ? installedVersion(package)
+                                                                       : std::string();
   };
   if (!options.sh3f.empty() || options.jar) {
     for (const auto& file : options.sh3f) {
       if (!fs::is_regular_file(file)) throw FileError(file, "furniture library (.sh3f) not found");
-      sources.push_back({file, false, file.stem().string(), kFurniturePackage, versionOf(file, kFurniturePackage)});
+      sources.push_back({file, false, file.stem().string(), kFurniturePackage,
+                         versionOf(file, kFurniturePackage)});
     }
     if (options.jar) {
-      if (!fs::is_regular_file(*options.jar)) throw FileError(*options.jar, "Sweet Home 3D jar not found");
-      sources.push_back({*options.jar, true, "default", kAppPackage, versionOf(*options.jar, kAppPackage)});
+      if (!fs::is_regular_file(*options.jar))
+        throw FileError(*options.jar, "Sweet Home 3D jar not found");
+      sources.push_back(
+          {*options.jar, true, "default", kAppPackage, versionOf(*options.jar, kAppPackage)});
     }
     return sources;
   }
@@ -304,7 +325,8 @@ std::vector<SweetHome3dSource> locateSweetHome3dSources(const SweetHome3dPackage
     const auto [root, version] = unpackedPackage(kFurniturePackage, options.debCache, log);
     libraries = sh3fFiles(root / "usr/share/sweethome3d/furniture");
     furnitureVersion = version;
-    if (libraries.empty()) throw FileError(root, "the unpacked sweethome3d-furniture package holds no .sh3f files");
+    if (libraries.empty())
+      throw FileError(root, "the unpacked sweethome3d-furniture package holds no .sh3f files");
   }
   for (const auto& file : libraries) {
     sources.push_back({file, false, file.stem().string(), kFurniturePackage, furnitureVersion});
@@ -318,7 +340,8 @@ std::vector<SweetHome3dSource> locateSweetHome3dSources(const SweetHome3dPackage
     const auto [root, version] = unpackedPackage(kAppPackage, options.debCache, log);
     jar = root / "usr/share/sweethome3d/sweethome3d.jar";
     appVersion = version;
-    if (!fs::is_regular_file(jar)) throw FileError(jar, "not found in the unpacked sweethome3d package");
+    if (!fs::is_regular_file(jar))
+      throw FileError(jar, "not found in the unpacked sweethome3d package");
   }
   sources.push_back({jar, true, "default", kAppPackage, appVersion});
   return sources;
@@ -354,14 +377,16 @@ std::vector<double> objVertexExtent(std::string_view text) {
   return {high[0] - low[0], high[1] - low[1], high[2] - low[2]};
 }
 
-double estimateMetersPerUnit(const std::vector<double>& catalogSizeCm, const std::vector<double>& meshExtent) {
+double estimateMetersPerUnit(const std::vector<double>& catalogSizeCm,
+                             const std::vector<double>& meshExtent) {
   std::vector<double> catalog = catalogSizeCm, mesh = meshExtent;
   std::sort(catalog.begin(), catalog.end());
   std::sort(mesh.begin(), mesh.end());
   std::vector<double> ratios;
   for (std::size_t i = 0; i < std::min(catalog.size(), mesh.size()); ++i) {
     // A flat side (a cooktop's thickness, a 2D decal) carries no scale.
-    if (catalog[i] > 0 && mesh[i] > 1e-9 * mesh.back()) ratios.push_back(catalog[i] / 100.0 / mesh[i]);
+    if (catalog[i] > 0 && mesh[i] > 1e-9 * mesh.back())
+      ratios.push_back(catalog[i] / 100.0 / mesh[i]);
   }
   if (ratios.empty()) return 0;
   std::sort(ratios.begin(), ratios.end());
@@ -375,7 +400,8 @@ CorpusSummary buildSweetHome3dCorpus(const SweetHome3dCorpusOptions& options) {
   if (fs::exists(out)) {
     if (!fs::is_directory(out)) throw FileError(out, "exists and is not a folder");
     if (!fs::is_empty(out) && !fs::exists(out / "corpus.json")) {
-      throw FileError(out, "is a non-empty folder that holds no corpus.json; choose an empty or new folder");
+      throw FileError(
+          out, "is a non-empty folder that holds no corpus.json; choose an empty or new folder");
     }
   }
   const ShippedLabels shipped = readShippedLabels(options.labelsDir);
@@ -403,10 +429,11 @@ CorpusSummary buildSweetHome3dCorpus(const SweetHome3dCorpusOptions& options) {
     const std::string catalogEntry = source->isJar ? kDefaultCatalog : kPluginCatalog;
     if (!zip->contains(catalogEntry)) {
       throw FileError(source->archive, std::string("holds no ") + catalogEntry +
-                                           (source->isJar ? " (is it the Sweet Home 3D jar?)" : " (is it a furniture library?)"));
+                                           (source->isJar ? " (is it the Sweet Home 3D jar?)"
+                                                          : " (is it a furniture library?)"));
     }
-    FurnitureCatalog catalog =
-        parseFurnitureCatalog(zip->read(catalogEntry), source->archive.string() + ":" + catalogEntry);
+    FurnitureCatalog catalog = parseFurnitureCatalog(zip->read(catalogEntry),
+                                                     source->archive.string() + ":" + catalogEntry);
     for (const auto& entry : catalog.entries) {
       const auto role = selectCorpusRole(entry);
       if (!role) continue;
@@ -422,7 +449,8 @@ CorpusSummary buildSweetHome3dCorpus(const SweetHome3dCorpusOptions& options) {
 
   const fs::path parent = out.has_parent_path() ? out.parent_path() : fs::path(".");
   fs::create_directories(parent);
-  const fs::path temp = parent / ("." + out.filename().string() + ".tmp-" + std::to_string(::getpid()));
+  const fs::path temp =
+      parent / ("." + out.filename().string() + ".tmp-" + std::to_string(::getpid()));
   fs::remove_all(temp);
   TempFolderGuard guard(temp);
   std::map<std::string, std::string> manifests;  // dataset -> manifest.jsonl text
@@ -443,15 +471,18 @@ CorpusSummary buildSweetHome3dCorpus(const SweetHome3dCorpusOptions& options) {
     record.name = p.entry.name;
     record.role = p.role;
 
-    const auto objEntry = normalizeArchivePath(p.entry.model.rfind('/', 0) == 0 ? p.entry.model.substr(1) : p.entry.model);
+    const auto objEntry = normalizeArchivePath(
+        p.entry.model.rfind('/', 0) == 0 ? p.entry.model.substr(1) : p.entry.model);
     const std::string lowerModel = [&] {
       std::string m = p.entry.model;
-      std::transform(m.begin(), m.end(), m.begin(), [](unsigned char c) { return std::tolower(c); });
+      std::transform(m.begin(), m.end(), m.begin(),
+                     [](unsigned char c) { return std::tolower(c); });
       return m;
     }();
-    if (!objEntry || lowerModel.size() < 4 || lowerModel.compare(lowerModel.size() - 4, 4, ".obj") != 0 ||
-        !p.zip->contains(*objEntry)) {
-      summary.warnings.push_back(p.id + ": skipped, model '" + p.entry.model + "' is not an OBJ entry of " +
+    if (!objEntry || lowerModel.size() < 4 ||
+        lowerModel.compare(lowerModel.size() - 4, 4, ".obj") != 0 || !p.zip->contains(*objEntry)) {
+      summary.warnings.push_back(p.id + ": skipped, model '" + p.entry.model +
+                                 "' is not an OBJ entry of " +
                                  p.source->archive.filename().string());
       continue;
     }
@@ -469,11 +500,14 @@ CorpusSummary buildSweetHome3dCorpus(const SweetHome3dCorpusOptions& options) {
       if (v) catalogSize.push_back(*v);
     }
     record.metersPerUnit = estimateMetersPerUnit(catalogSize, extent);
-    if (record.metersPerUnit <= 0) record.warnings.push_back("no usable size: meters_per_unit unknown");
+    if (record.metersPerUnit <= 0)
+      record.warnings.push_back("no usable size: meters_per_unit unknown");
 
     // Which dataset: shipped labels decide for stoves and sinks.
-    const fs::path shippedLabels = shipped.dir.empty() ? fs::path() : shipped.dir / p.id / "labels.json";
-    const bool labelled = p.role != CorpusRole::None && !shippedLabels.empty() && fs::is_regular_file(shippedLabels);
+    const fs::path shippedLabels =
+        shipped.dir.empty() ? fs::path() : shipped.dir / p.id / "labels.json";
+    const bool labelled =
+        p.role != CorpusRole::None && !shippedLabels.empty() && fs::is_regular_file(shippedLabels);
     if (p.role == CorpusRole::None) {
       record.dataset = "distractors";
     } else if (!labelled) {
@@ -483,7 +517,8 @@ CorpusSummary buildSweetHome3dCorpus(const SweetHome3dCorpusOptions& options) {
     } else {
       record.dataset = "real-train";
       record.warnings.push_back(std::string("labelled but not listed in ") +
-                                (shipped.hasSplit ? "split.json" : "a split.json (none found)") + "; put in real-train");
+                                (shipped.hasSplit ? "split.json" : "a split.json (none found)") +
+                                "; put in real-train");
     }
 
     const fs::path objectDir = temp / record.dataset / p.id;
@@ -498,9 +533,10 @@ CorpusSummary buildSweetHome3dCorpus(const SweetHome3dCorpusOptions& options) {
     if (labelled) {
       const ObjectLabels labels = readLabels(shippedLabels);
       if (labels.object.sha256 != sha) {
-        throw FileError(shippedLabels, "object " + p.id + ": object.sha256 " + labels.object.sha256 +
-                                           " does not match the extracted mesh " + meshName + " (" + sha +
-                                           "); the Sweet Home 3D package changed, so these labels need review");
+        throw FileError(shippedLabels,
+                        "object " + p.id + ": object.sha256 " + labels.object.sha256 +
+                            " does not match the extracted mesh " + meshName + " (" + sha +
+                            "); the Sweet Home 3D package changed, so these labels need review");
       }
       writeFileAtomic(objectDir / "labels.json", readFileBytes(shippedLabels));
     } else if (p.role == CorpusRole::None) {
@@ -519,7 +555,8 @@ CorpusSummary buildSweetHome3dCorpus(const SweetHome3dCorpusOptions& options) {
 
     json provenance = json::object();
     provenance["package"] = p.source->package;
-    provenance["package_version"] = p.source->packageVersion.empty() ? json(nullptr) : json(p.source->packageVersion);
+    provenance["package_version"] =
+        p.source->packageVersion.empty() ? json(nullptr) : json(p.source->packageVersion);
     provenance["archive"] = p.source->archive.filename().string();
     provenance["library"] = p.source->library;
     if (!p.catalog.name.empty()) provenance["library_name"] = p.catalog.name;
@@ -529,15 +566,17 @@ CorpusSummary buildSweetHome3dCorpus(const SweetHome3dCorpusOptions& options) {
     provenance["creator"] = p.entry.creator;
     provenance["license"] = p.catalog.license.empty() ? json(nullptr) : json(p.catalog.license);
     provenance["path_in_archive"] = *objEntry;
-    provenance["catalog_size_cm"] = {{"width", p.entry.width ? json(*p.entry.width) : json(nullptr)},
-                                     {"depth", p.entry.depth ? json(*p.entry.depth) : json(nullptr)},
-                                     {"height", p.entry.height ? json(*p.entry.height) : json(nullptr)}};
+    provenance["catalog_size_cm"] = {
+        {"width", p.entry.width ? json(*p.entry.width) : json(nullptr)},
+        {"depth", p.entry.depth ? json(*p.entry.depth) : json(nullptr)},
+        {"height", p.entry.height ? json(*p.entry.height) : json(nullptr)}};
     if (p.entry.modelRotation) provenance["model_rotation"] = *p.entry.modelRotation;
     provenance["mesh"] = meshName;
     provenance["mesh_sha256"] = sha;
     provenance["mesh_extent"] = extent;
     provenance["up"] = "y";
-    provenance["meters_per_unit"] = record.metersPerUnit > 0 ? json(record.metersPerUnit) : json(nullptr);
+    provenance["meters_per_unit"] =
+        record.metersPerUnit > 0 ? json(record.metersPerUnit) : json(nullptr);
     provenance["role"] = toString(p.role);
     provenance["dataset"] = record.dataset;
     json fileList = json::array();
@@ -546,7 +585,10 @@ CorpusSummary buildSweetHome3dCorpus(const SweetHome3dCorpusOptions& options) {
     provenance["warnings"] = record.warnings;
     writeFileAtomic(objectDir / "provenance.json", provenance.dump(2) + "\n");
 
-    json line = {{"id", p.id}, {"category", toString(p.role)}, {"mesh", record.mesh}, {"labels", p.id + "/labels.json"}};
+    json line = {{"id", p.id},
+                 {"category", toString(p.role)},
+                 {"mesh", record.mesh},
+                 {"labels", p.id + "/labels.json"}};
     manifests[record.dataset] += line.dump() + "\n";
     for (const auto& w : record.warnings) summary.warnings.push_back(p.id + ": " + w);
     ++summary.countsByRole[toString(p.role)];
@@ -559,26 +601,34 @@ CorpusSummary buildSweetHome3dCorpus(const SweetHome3dCorpusOptions& options) {
   }
   if (options.progress) options.progress(pending.size(), pending.size(), "");
 
-  for (const auto& [dataset, text] : manifests) writeFileAtomic(temp / dataset / "manifest.jsonl", text);
+  for (const auto& [dataset, text] : manifests)
+    writeFileAtomic(temp / dataset / "manifest.jsonl", text);
   json corpus = json::object();
-  corpus["source"] = "Debian sweethome3d-furniture and sweethome3d (Sweet Home 3D furniture catalogs)";
+  corpus["source"] =
+      "Debian sweethome3d-furniture and sweethome3d (Sweet Home 3D furniture catalogs)";
   json packageJson = json::object();
-  for (const auto& [name, version] : packages) packageJson[name] = version.empty() ? json(nullptr) : json(version);
+  for (const auto& [name, version] : packages)
+    packageJson[name] = version.empty() ? json(nullptr) : json(version);
   corpus["packages"] = packageJson;
   corpus["counts_by_role"] = summary.countsByRole;
   corpus["counts_by_dataset"] = summary.countsByDataset;
   corpus["counts_by_library"] = byLibrary;
   json objects = json::array();
   for (const auto& r : summary.objects) {
-    objects.push_back({{"id", r.id}, {"role", toString(r.role)}, {"dataset", r.dataset}, {"library", r.library},
-                       {"catalog_id", r.catalogId}, {"name", r.name}});
+    objects.push_back({{"id", r.id},
+                       {"role", toString(r.role)},
+                       {"dataset", r.dataset},
+                       {"library", r.library},
+                       {"catalog_id", r.catalogId},
+                       {"name", r.name}});
   }
   corpus["objects"] = objects;
   corpus["warnings"] = summary.warnings;
   writeFileAtomic(temp / "corpus.json", corpus.dump(2) + "\n");
 
   // Swap into place: the old corpus is removed only once the new one is complete.
-  const fs::path old = parent / ("." + out.filename().string() + ".old-" + std::to_string(::getpid()));
+  const fs::path old =
+      parent / ("." + out.filename().string() + ".old-" + std::to_string(::getpid()));
   if (fs::exists(out)) fs::rename(out, old);
   fs::rename(temp, out);
   guard.release();

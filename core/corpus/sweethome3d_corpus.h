@@ -22,15 +22,15 @@ namespace sagrid {
 struct SweetHome3dSource {
   std::filesystem::path archive;
   bool isJar = false;
-  std::string library;          // the .sh3f file's stem, or "default" for the jar
-  std::string package;          // Debian package, e.g. "sweethome3d-furniture"
-  std::string packageVersion;   // empty when unknown
+  std::string library;         // the .sh3f file's stem, or "default" for the jar
+  std::string package;         // Debian package, e.g. "sweethome3d-furniture"
+  std::string packageVersion;  // empty when unknown
 };
 
 struct SweetHome3dPackageOptions {
-  std::filesystem::path debCache;           // where .debs are downloaded and unpacked
+  std::filesystem::path debCache;             // where .debs are downloaded and unpacked
   std::filesystem::path installedRoot = "/";  // where an installed package's files are looked for
-  std::vector<std::filesystem::path> sh3f;  // explicit archives: skip the package lookup
+  std::vector<std::filesystem::path> sh3f;    // explicit archives: skip the package lookup
   std::optional<std::filesystem::path> jar;
 };
 

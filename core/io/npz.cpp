@@ -28,7 +28,8 @@ const DtypeInfo* findByName(const std::string& name) {
 
 const DtypeInfo* findByDescr(std::string descr) {
   // '<' little-endian, '|' not applicable, '=' native (little-endian on every platform we run).
-  if (!descr.empty() && (descr[0] == '=' || descr[0] == '<' || descr[0] == '|')) descr = descr.substr(1);
+  if (!descr.empty() && (descr[0] == '=' || descr[0] == '<' || descr[0] == '|'))
+    descr = descr.substr(1);
   for (const auto& d : kDtypes) {
     if (descr == std::string(d.descr).substr(1)) return &d;
   }
@@ -40,7 +41,8 @@ std::uint16_t u16(std::string_view b, std::size_t at) {
                                     (static_cast<unsigned char>(b[at + 1]) << 8));
 }
 std::uint32_t u32(std::string_view b, std::size_t at) {
-  return static_cast<std::uint32_t>(u16(b, at)) | (static_cast<std::uint32_t>(u16(b, at + 2)) << 16);
+  return static_cast<std::uint32_t>(u16(b, at)) |
+         (static_cast<std::uint32_t>(u16(b, at + 2)) << 16);
 }
 void put16(std::string& out, std::uint32_t v) {
   out += static_cast<char>(v & 0xFF);
@@ -112,12 +114,18 @@ std::vector<double> NpyArray::asDouble() const {
       values[i] = static_cast<double>(v);
     }
   };
-  if (dtype == "uint8" || dtype == "bool") convert(std::uint8_t{});
-  else if (dtype == "int32") convert(std::int32_t{});
-  else if (dtype == "int64") convert(std::int64_t{});
-  else if (dtype == "float32") convert(float{});
-  else if (dtype == "float64") convert(double{});
-  else throw InvalidArgument("npy: unsupported dtype '" + dtype + "'");
+  if (dtype == "uint8" || dtype == "bool")
+    convert(std::uint8_t{});
+  else if (dtype == "int32")
+    convert(std::int32_t{});
+  else if (dtype == "int64")
+    convert(std::int64_t{});
+  else if (dtype == "float32")
+    convert(float{});
+  else if (dtype == "float64")
+    convert(double{});
+  else
+    throw InvalidArgument("npy: unsupported dtype '" + dtype + "'");
   return values;
 }
 
@@ -163,7 +171,8 @@ NpyArray parseNpy(std::string_view bytes, const fs::path& source) {
     throw FileError(source, "npy data is truncated (" + std::to_string(available) + " of " +
                                 std::to_string(expected) + " bytes)");
   }
-  const auto* begin = reinterpret_cast<const std::uint8_t*>(bytes.data() + headerStart + headerLength);
+  const auto* begin =
+      reinterpret_cast<const std::uint8_t*>(bytes.data() + headerStart + headerLength);
   array.data.assign(begin, begin + expected);
   return array;
 }
@@ -172,16 +181,17 @@ std::string serializeNpy(const NpyArray& array) {
   const DtypeInfo* info = findByName(array.dtype);
   if (!info) throw InvalidArgument("npy: unsupported dtype '" + array.dtype + "'");
   if (array.data.size() != array.elementCount() * info->size) {
-    throw InvalidArgument("npy: " + std::to_string(array.data.size()) + " data bytes do not fit shape and dtype " +
-                          array.dtype);
+    throw InvalidArgument("npy: " + std::to_string(array.data.size()) +
+                          " data bytes do not fit shape and dtype " + array.dtype);
   }
   std::string shape = "(";
   for (std::size_t i = 0; i < array.shape.size(); ++i) {
-    shape += std::to_string(array.shape[i]) + (array.shape.size() == 1 ? "," : (i + 1 < array.shape.size() ? ", " : ""));
+    shape += std::to_string(array.shape[i]) +
+             (array.shape.size() == 1 ? "," : (i + 1 < array.shape.size() ? ", " : ""));
   }
   shape += ")";
-  std::string header = std::string("{'descr': '") + info->descr + "', 'fortran_order': False, 'shape': " +
-                       shape + ", }";
+  std::string header = std::string("{'descr': '") + info->descr +
+                       "', 'fortran_order': False, 'shape': " + shape + ", }";
   // numpy pads the header with spaces and a newline so the data starts 64-byte aligned.
   const std::size_t total = 10 + header.size() + 1;
   header.append((64 - total % 64) % 64, ' ');
@@ -195,7 +205,9 @@ std::string serializeNpy(const NpyArray& array) {
 
 NpyArray readNpy(const fs::path& path) { return parseNpy(readFileBytes(path), path); }
 
-void writeNpy(const fs::path& path, const NpyArray& array) { writeFileAtomic(path, serializeNpy(array)); }
+void writeNpy(const fs::path& path, const NpyArray& array) {
+  writeFileAtomic(path, serializeNpy(array));
+}
 
 NpzArchive readNpz(const fs::path& path) {
   const ZipArchive zip = ZipArchive::open(path);

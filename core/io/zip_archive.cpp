@@ -15,10 +15,12 @@ std::uint16_t u16(std::string_view b, std::size_t at) {
                                     (static_cast<unsigned char>(b[at + 1]) << 8));
 }
 std::uint32_t u32(std::string_view b, std::size_t at) {
-  return static_cast<std::uint32_t>(u16(b, at)) | (static_cast<std::uint32_t>(u16(b, at + 2)) << 16);
+  return static_cast<std::uint32_t>(u16(b, at)) |
+         (static_cast<std::uint32_t>(u16(b, at + 2)) << 16);
 }
 std::uint64_t u64(std::string_view b, std::size_t at) {
-  return static_cast<std::uint64_t>(u32(b, at)) | (static_cast<std::uint64_t>(u32(b, at + 4)) << 32);
+  return static_cast<std::uint64_t>(u32(b, at)) |
+         (static_cast<std::uint64_t>(u32(b, at + 4)) << 32);
 }
 void put16(std::string& out, std::uint32_t v) {
   out += static_cast<char>(v & 0xFF);
@@ -33,7 +35,8 @@ std::string inflateRaw(std::string_view compressed, std::size_t size, const fs::
                        const std::string& entry) {
   std::string out(size, '\0');
   z_stream stream{};
-  if (inflateInit2(&stream, -MAX_WBITS) != Z_OK) throw FileError(source, "zlib initialisation failed");
+  if (inflateInit2(&stream, -MAX_WBITS) != Z_OK)
+    throw FileError(source, "zlib initialisation failed");
   stream.next_in = reinterpret_cast<Bytef*>(const_cast<char*>(compressed.data()));
   stream.avail_in = static_cast<uInt>(compressed.size());
   stream.next_out = reinterpret_cast<Bytef*>(out.data());
@@ -82,15 +85,18 @@ ZipArchive ZipArchive::fromBytes(std::string bytes, const fs::path& source) {
 
   std::size_t at = directoryOffset;
   for (std::uint64_t e = 0; e < entries; ++e) {
-    if (at + 46 > b.size() || u32(b, at) != 0x02014b50) throw FileError(path, "zip central directory is corrupt");
+    if (at + 46 > b.size() || u32(b, at) != 0x02014b50)
+      throw FileError(path, "zip central directory is corrupt");
     ZipEntry entry;
     entry.method = u16(b, at + 10);
     entry.crc = u32(b, at + 16);
     entry.compressedSize = u32(b, at + 20);
     entry.size = u32(b, at + 24);
-    const std::size_t nameLength = u16(b, at + 28), extraLength = u16(b, at + 30), commentLength = u16(b, at + 32);
+    const std::size_t nameLength = u16(b, at + 28), extraLength = u16(b, at + 30),
+                      commentLength = u16(b, at + 32);
     entry.localOffset = u32(b, at + 42);
-    if (at + 46 + nameLength + extraLength > b.size()) throw FileError(path, "zip central directory is truncated");
+    if (at + 46 + nameLength + extraLength > b.size())
+      throw FileError(path, "zip central directory is truncated");
     entry.name = std::string(b.substr(at + 46, nameLength));
     // Zip64 extra field: the 64-bit values of whichever fields were saturated, in this order.
     for (std::size_t x = at + 46 + nameLength; x + 4 <= at + 46 + nameLength + extraLength;) {
@@ -130,7 +136,8 @@ std::string ZipArchive::read(const ZipEntry& entry) const {
   }
   const std::size_t dataStart =
       entry.localOffset + 30 + u16(b, entry.localOffset + 26) + u16(b, entry.localOffset + 28);
-  if (dataStart + entry.compressedSize > b.size()) throw FileError(m_path, "entry '" + name + "' is truncated");
+  if (dataStart + entry.compressedSize > b.size())
+    throw FileError(m_path, "entry '" + name + "' is truncated");
   const std::string_view stored = b.substr(dataStart, entry.compressedSize);
   std::string content;
   if (entry.method == 0) {
@@ -138,10 +145,12 @@ std::string ZipArchive::read(const ZipEntry& entry) const {
   } else if (entry.method == 8) {
     content = inflateRaw(stored, entry.size, m_path, name);
   } else {
-    throw FileError(m_path, "entry '" + name + "' uses zip compression method " + std::to_string(entry.method) +
+    throw FileError(m_path, "entry '" + name + "' uses zip compression method " +
+                                std::to_string(entry.method) +
                                 " (only stored and deflate are supported)");
   }
-  if (crc32(0L, reinterpret_cast<const Bytef*>(content.data()), static_cast<uInt>(content.size())) != entry.crc) {
+  if (crc32(0L, reinterpret_cast<const Bytef*>(content.data()),
+            static_cast<uInt>(content.size())) != entry.crc) {
     throw FileError(m_path, "entry '" + name + "' is corrupt (CRC mismatch)");
   }
   return content;
@@ -156,20 +165,20 @@ std::string serializeStoredZip(const std::vector<std::pair<std::string, std::str
       throw FileError(target, "entry '" + name + "' is too large for a non-zip64 archive");
     }
     if (count == 0xFFFF) throw FileError(target, "too many entries for a non-zip64 archive");
-    const std::uint32_t crc = static_cast<std::uint32_t>(
-        crc32(0L, reinterpret_cast<const Bytef*>(content.data()), static_cast<uInt>(content.size())));
+    const std::uint32_t crc = static_cast<std::uint32_t>(crc32(
+        0L, reinterpret_cast<const Bytef*>(content.data()), static_cast<uInt>(content.size())));
     const auto offset = static_cast<std::uint32_t>(out.size());
     auto common = [&](std::string& h) {
-      put16(h, 20);      // version needed: 2.0
-      put16(h, 0);       // flags
-      put16(h, 0);       // method: stored
-      put16(h, 0);       // time
-      put16(h, 0x21);    // date: 1980-01-01
+      put16(h, 20);    // version needed: 2.0
+      put16(h, 0);     // flags
+      put16(h, 0);     // method: stored
+      put16(h, 0);     // time
+      put16(h, 0x21);  // date: 1980-01-01
       put32(h, crc);
       put32(h, static_cast<std::uint32_t>(content.size()));
       put32(h, static_cast<std::uint32_t>(content.size()));
       put16(h, static_cast<std::uint32_t>(name.size()));
-      put16(h, 0);       // extra length
+      put16(h, 0);  // extra length
     };
     put32(out, 0x04034b50);
     common(out);
@@ -179,10 +188,10 @@ std::string serializeStoredZip(const std::vector<std::pair<std::string, std::str
     put32(directory, 0x02014b50);
     put16(directory, 20);  // version made by
     common(directory);
-    put16(directory, 0);   // comment length
-    put16(directory, 0);   // disk number
-    put16(directory, 0);   // internal attributes
-    put32(directory, 0);   // external attributes
+    put16(directory, 0);  // comment length
+    put16(directory, 0);  // disk number
+    put16(directory, 0);  // internal attributes
+    put32(directory, 0);  // external attributes
     put32(directory, offset);
     directory += name;
     ++count;
@@ -200,7 +209,8 @@ std::string serializeStoredZip(const std::vector<std::pair<std::string, std::str
   return out;
 }
 
-void writeStoredZip(const fs::path& path, const std::vector<std::pair<std::string, std::string>>& entries) {
+void writeStoredZip(const fs::path& path,
+                    const std::vector<std::pair<std::string, std::string>>& entries) {
   writeFileAtomic(path, serializeStoredZip(entries, path));
 }
 

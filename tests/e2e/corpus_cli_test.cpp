@@ -23,8 +23,9 @@ TEST(CorpusCommand, SweetHome3dFromExplicitLibrary) {
   const auto f = test::writeSweetHome3dFixture(dir / "in");
   fs::create_directories(dir / "labels");
   const fs::path out = dir / "out";
-  const auto r = runSagrid("corpus sweethome3d --out " + shellQuote(out.string()) + " --sh3f " +
-                           shellQuote(f.sh3f.string()) + " --labels " + shellQuote((dir / "labels").string()));
+  const auto r =
+      runSagrid("corpus sweethome3d --out " + shellQuote(out.string()) + " --sh3f " +
+                shellQuote(f.sh3f.string()) + " --labels " + shellQuote((dir / "labels").string()));
   ASSERT_EQ(r.exitCode, 0) << r.output;
   EXPECT_THAT(r.output, HasSubstr("corpus: 4 objects"));
   EXPECT_THAT(r.output, HasSubstr("stove 2, sink 1, none 1"));

@@ -1,8 +1,7 @@
 #include "support/sweethome3d_fixture.h"
 
-#include <vector>
-
 #include <nlohmann/json.hpp>
+#include <vector>
 
 #include "core/io/zip_archive.h"
 
@@ -48,7 +47,8 @@ SweetHome3dFixture writeSweetHome3dFixture(const fs::path& dir) {
       "id#3=Test Lib#oven\nname#3=Small oven\ncategory#3=Kitchen\ncreator#3=Carol\n"
       "model#3=/testlib/oven/oven.obj\nwidth#3=40\ndepth#3=30\nheight#3=20\n"
       "modelRotation#3=1 0 0 0 0 1 0 -1 0\n\n"
-      "id#4=Test Lib#chair\nname#4=Chair\ncategory#4=Living room\nmodel#4=/testlib/chair/chair.obj\n"
+      "id#4=Test Lib#chair\nname#4=Chair\ncategory#4=Living "
+      "room\nmodel#4=/testlib/chair/chair.obj\n"
       "width#4=40\ndepth#4=40\nheight#4=90\n\n"
       "id#5=Test-Lib#Cooker\nname#5=Cooker\ncategory#5=Kitchen\n"
       "model#5=/testlib/cooker/cooker.obj\nwidth#5=60\ndepth#5=50\nheight#5=90\n";
@@ -71,17 +71,21 @@ SweetHome3dFixture writeSweetHome3dFixture(const fs::path& dir) {
   return f;
 }
 
-std::string fixtureLabelsJson(const std::string& id, const std::string& mesh, const std::string& sha256,
-                              const std::string& category) {
-  nlohmann::json j = {
-      {"schema", "sagrid.labels/1"},
-      {"object", {{"id", id}, {"mesh", mesh}, {"sha256", sha256}, {"category", category}, {"up", "y"},
-                  {"meters_per_unit", 0.01}}},
-      {"affordances", nlohmann::json::array({{{"type", "heatsource"},
-                                              {"position", {10.0, 90.0, 20.0}},
-                                              {"status", "added"},
-                                              {"source", "human"}}})},
-      {"review", {{"state", "done"}, {"updated", "2026-11-23T12:00:00Z"}}}};
+std::string fixtureLabelsJson(const std::string& id, const std::string& mesh,
+                              const std::string& sha256, const std::string& category) {
+  nlohmann::json j = {{"schema", "sagrid.labels/1"},
+                      {"object",
+                       {{"id", id},
+                        {"mesh", mesh},
+                        {"sha256", sha256},
+                        {"category", category},
+                        {"up", "y"},
+                        {"meters_per_unit", 0.01}}},
+                      {"affordances", nlohmann::json::array({{{"type", "heatsource"},
+                                                              {"position", {10.0, 90.0, 20.0}},
+                                                              {"status", "added"},
+                                                              {"source", "human"}}})},
+                      {"review", {{"state", "done"}, {"updated", "2026-11-23T12:00:00Z"}}}};
   return j.dump(2) + "\n";
 }
 

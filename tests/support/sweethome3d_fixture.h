@@ -10,7 +10,7 @@
 namespace sagrid::test {
 
 struct SweetHome3dFixture {
-  std::filesystem::path sh3f;       // <dir>/TestLib.sh3f
+  std::filesystem::path sh3f;  // <dir>/TestLib.sh3f
   std::string cookerObj, cookerMtl, cookerTexture, sinkObj, sinkMtl, sinkTexture, ovenObj;
 };
 
@@ -19,7 +19,7 @@ struct SweetHome3dFixture {
 SweetHome3dFixture writeSweetHome3dFixture(const std::filesystem::path& dir);
 
 // labels.json for `id` whose object.sha256 is `sha256`, like the labeller ships.
-std::string fixtureLabelsJson(const std::string& id, const std::string& mesh, const std::string& sha256,
-                              const std::string& category);
+std::string fixtureLabelsJson(const std::string& id, const std::string& mesh,
+                              const std::string& sha256, const std::string& category);
 
 }  // namespace sagrid::test

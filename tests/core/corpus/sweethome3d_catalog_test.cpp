@@ -47,7 +47,8 @@ TEST(FurnitureCatalog, ParsesEntriesInIndexOrder) {
       "id=Lib#All\nname=Lib\nlicense=CC-BY \\u00a9 Someone\n"
       "id#10=Lib#b\nname#10=B\ncategory#10=Kitchen\nmodel#10=/b/b.obj\nwidth#10=10.5\n"
       "modelRotation#10=0 0 1 0 1 0 -1 0 0\n"
-      "id#2=Lib#a\nname#2=A\ncategory#2=Bathroom\nmodel#2=/a/a.obj\nwidth#2=1\ndepth#2=2\nheight#2=3\n"
+      "id#2=Lib#a\nname#2=A\ncategory#2=Bathroom\nmodel#2=/a/"
+      "a.obj\nwidth#2=1\ndepth#2=2\nheight#2=3\n"
       "id#3=Lib#nomodel\nname#3=No model\n";
   const FurnitureCatalog c = parseFurnitureCatalog(bytes, "x.properties");
   EXPECT_EQ(c.license, "CC-BY \xc2\xa9 Someone");
@@ -62,7 +63,8 @@ TEST(FurnitureCatalog, ParsesEntriesInIndexOrder) {
   ASSERT_TRUE(c.entries[1].modelRotation);
   EXPECT_DOUBLE_EQ((*c.entries[1].modelRotation)[6], -1.0);
   EXPECT_THROW(parseFurnitureCatalog("id#1=a\nmodel#1=/a.obj\nwidth#1=wide\n", "x"), FileError);
-  EXPECT_THROW(parseFurnitureCatalog("id#1=a\nmodel#1=/a.obj\nmodelRotation#1=1 0 0\n", "x"), FileError);
+  EXPECT_THROW(parseFurnitureCatalog("id#1=a\nmodel#1=/a.obj\nmodelRotation#1=1 0 0\n", "x"),
+               FileError);
 }
 
 std::optional<CorpusRole> roleOf(const std::string& name, const std::string& category = "Kitchen") {

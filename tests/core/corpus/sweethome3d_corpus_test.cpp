@@ -1,10 +1,9 @@
 #include "core/corpus/sweethome3d_corpus.h"
 
-#include <cstdlib>
-
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <cstdlib>
 #include <nlohmann/json.hpp>
 
 #include "core/common/atomic_file.h"
@@ -220,10 +219,12 @@ class FakeAptGet {
     fs::create_directories(bin);
     writeFileAtomic(bin / "apt-get",
                     "#!/bin/sh\n"
-                    "for f in " + test::shellQuote(debs.string()) + "/\"$2\"_*.deb; do\n"
-                    "  [ -f \"$f\" ] && cp \"$f\" . && exit 0\n"
-                    "done\n"
-                    "echo \"E: Unable to locate package $2\" >&2; exit 100\n");
+                    "for f in " +
+                        test::shellQuote(debs.string()) +
+                        "/\"$2\"_*.deb; do\n"
+                        "  [ -f \"$f\" ] && cp \"$f\" . && exit 0\n"
+                        "done\n"
+                        "echo \"E: Unable to locate package $2\" >&2; exit 100\n");
     fs::permissions(bin / "apt-get", fs::perms::owner_all);
     ::setenv("PATH", (bin.string() + ":" + m_oldPath).c_str(), 1);
   }
@@ -243,8 +244,9 @@ void buildDeb(const fs::path& debs, const std::string& package, const std::strin
                                                    "\nArchitecture: all\nMaintainer: t <t@t>\n"
                                                    "Description: test\n");
   writeFileAtomic(root / path, file);
-  const auto r = test::runCommand("dpkg-deb --build --root-owner-group " + test::shellQuote(root.string()) +
-                                  " " + test::shellQuote((debs / (package + "_" + version + "_all.deb")).string()));
+  const auto r = test::runCommand(
+      "dpkg-deb --build --root-owner-group " + test::shellQuote(root.string()) + " " +
+      test::shellQuote((debs / (package + "_" + version + "_all.deb")).string()));
   ASSERT_EQ(r.exitCode, 0) << r.output;
   fs::remove_all(root);
 }
@@ -262,7 +264,8 @@ TEST(SweetHome3dCorpus, DownloadsAndUnpacksPackagesWhenNotInstalled) {
   const std::string jar = serializeStoredZip(
       {{"com/eteks/sweethome3d/io/DefaultFurnitureCatalog.properties",
         "id#1=eTeks#cooker\nname#1=Cooker\ncategory#1=Kitchen\ncreator#1=eTeks\n"
-        "model#1=/com/eteks/sweethome3d/io/resources/cooker.obj\nwidth#1=60\ndepth#1=50\nheight#1=90\n"},
+        "model#1=/com/eteks/sweethome3d/io/resources/"
+        "cooker.obj\nwidth#1=60\ndepth#1=50\nheight#1=90\n"},
        {"com/eteks/sweethome3d/io/resources/cooker.obj", f.cookerObj},
        {"com/eteks/sweethome3d/io/resources/cooker.mtl", f.cookerMtl},
        {"com/eteks/sweethome3d/io/resources/textures/cooker.png", f.cookerTexture},
