@@ -1,0 +1,70 @@
+// `sagrid train --init`: the exact fine-tuning form the README gives, run from the repository
+// root on a folder of objects with labels.json (the real-dev layout, no manifest), one epoch and a
+// tiny replay folder so it takes seconds.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include "core/common/atomic_file.h"
+#include "core/generate/dataset_generator.h"
+#include "support/test_paths.h"
+
+namespace sagrid {
+namespace {
+namespace fs = std::filesystem;
+using test::shellQuote;
+using ::testing::HasSubstr;
+
+TEST(FineTuneCli, InitFromShippedModelsOnARealDevStyleFolder) {
+  const fs::path dir = test::freshTempDir();
+  gen::generateDataset({{"stove", 1, 21}}, gen::MeshFormat::Obj, dir / "real");
+  fs::remove(dir / "real" / "manifest.jsonl");  // object folders with labels.json only
+  gen::generateDataset({{"stove", 1, 22}, {"sink", 1, 22}}, gen::MeshFormat::Obj, dir / "replay");
+  const auto r = test::runCommand(
+      "cd " + shellQuote(SAGRID_SOURCE_DIR) + " && " + shellQuote(test::sagridBinary().string()) +
+      " train --data " + shellQuote((dir / "real").string()) +
+      " --init resources/models --model stove.togglebutton --epochs 1 --replay " +
+      shellQuote((dir / "replay").string()) + " --out " + shellQuote((dir / "out").string()));
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("stove.togglebutton: 2 objects"));
+  const auto card =
+      nlohmann::json::parse(readFileBytes(dir / "out" / "stove.togglebutton.json"));
+  const auto shipped = nlohmann::json::parse(
+      readFileBytes(fs::path(SAGRID_SOURCE_DIR) / "resources/models/stove.togglebutton.json"));
+  EXPECT_EQ(card.at("architecture"), shipped.at("architecture"));
+  const auto& training = card.at("training");
+  EXPECT_DOUBLE_EQ(training.at("learning_rate").get<double>(), 1e-3);  // fine-tune default
+  EXPECT_EQ(training.at("near_weight"), shipped.at("training").at("near_weight"));
+  ASSERT_EQ(training.at("datasets").size(), 2u);
+  EXPECT_EQ(training.at("datasets")[0].at("role"), "data");
+  EXPECT_EQ(training.at("datasets")[0].at("sha256_of"), "labels.json files");
+  EXPECT_EQ(training.at("datasets")[1].at("role"), "replay");
+  EXPECT_EQ(training.at("datasets")[1].at("objects"), 1);  // the stove only
+  // Replay drawn 1:1 with the new data by default.
+  EXPECT_EQ(training.at("datasets")[1].at("weight"), training.at("datasets")[0].at("weight"));
+  EXPECT_EQ(training.at("init").at("weights_sha256"), shipped.at("weights").at("sha256"));
+  EXPECT_NE(card.at("weights").at("sha256"), shipped.at("weights").at("sha256"));
+}
+
+TEST(FineTuneCli, ReplayWithoutInitAndMismatchedArchitectureAreClearErrors) {
+  const fs::path dir = test::freshTempDir();
+  gen::generateDataset({{"stove", 1, 23}}, gen::MeshFormat::Obj, dir / "real");
+  auto r = test::runSagrid("train --data " + shellQuote((dir / "real").string()) +
+                           " --model stove.togglebutton --epochs 1 --replay " +
+                           shellQuote((dir / "real").string()) + " --out " +
+                           shellQuote((dir / "out").string()));
+  EXPECT_EQ(r.exitCode, 1) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("give --init"));
+  r = test::runSagrid(
+      "train --data " + shellQuote((dir / "real").string()) + " --init " +
+      shellQuote((fs::path(SAGRID_SOURCE_DIR) / "resources/models").string()) +
+      " --model stove.togglebutton --replay none --arch '[3,1,8]' --epochs 1 --out " +
+      shellQuote((dir / "out").string()));
+  EXPECT_NE(r.exitCode, 0) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("architecture differs"));
+  EXPECT_THAT(r.output, HasSubstr("[3,1,8]"));
+}
+
+}  // namespace
+}  // namespace sagrid
