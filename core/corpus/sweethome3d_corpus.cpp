@@ -600,6 +600,27 @@ CorpusSummary buildSweetHome3dCorpus(const SweetHome3dCorpusOptions& options) {
     summary.objects.push_back(std::move(record));
   }
   if (options.progress) options.progress(pending.size(), pending.size(), "");
+  // Shipped labels that match no extracted stove or sink: a renamed catalog id or a typo.
+  std::set<std::string> used;
+  for (const auto& r : summary.objects) {
+    if (r.role != CorpusRole::None) used.insert(r.id);
+  }
+  if (!shipped.dir.empty() && fs::is_directory(shipped.dir)) {
+    std::vector<std::string> orphans;
+    for (const auto& e : fs::directory_iterator(shipped.dir)) {
+      const std::string id = e.path().filename().string();
+      if (e.is_directory() && fs::is_regular_file(e.path() / "labels.json") && !used.count(id)) {
+        orphans.push_back(id);
+      }
+    }
+    for (const auto& [id, split] : shipped.split) {
+      if (!used.count(id)) orphans.push_back(id + " (in split.json)");
+    }
+    std::sort(orphans.begin(), orphans.end());
+    for (const auto& id : orphans) {
+      summary.warnings.push_back("shipped labels " + id + " match no extracted stove or sink");
+    }
+  }
 
   for (const auto& [dataset, text] : manifests)
     writeFileAtomic(temp / dataset / "manifest.jsonl", text);

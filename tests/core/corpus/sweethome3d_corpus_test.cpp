@@ -58,8 +58,12 @@ TEST(SweetHome3dCorpus, ExtractsSelectedObjectsIntoDatasets) {
   const fs::path dir = test::freshTempDir();
   const auto f = test::writeSweetHome3dFixture(dir / "in");
   const fs::path labels = writeShippedLabels(dir / "labels", sha256Hex(f.cookerObj));
+  fs::create_directories(labels / "test_lib_renamed");
+  writeFileAtomic(labels / "test_lib_renamed" / "labels.json", "{}");
   const fs::path out = dir / "corpus";
   const CorpusSummary s = buildSweetHome3dCorpus(optionsFor(f, out, labels));
+  EXPECT_THAT(s.warnings,
+              Contains("shipped labels test_lib_renamed match no extracted stove or sink"));
 
   ASSERT_EQ(s.objects.size(), 4u);  // the chair is not selected
   EXPECT_EQ(s.objects[0].id, "test_lib_cooker");
