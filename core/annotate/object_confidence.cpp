@@ -1,0 +1,108 @@
+#include "core/annotate/object_confidence.h"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include "core/annotate/annotate.h"
+#include "core/common/atomic_file.h"
+#include "core/common/error.h"
+
+namespace sagrid {
+namespace {
+
+constexpr double kUncalibratedScale = 0.02;  // the point confidence's own map (ExtractionSettings)
+constexpr double kDistanceUnit = 0.01;       // slope per 0.01 normalized units: readable numbers
+constexpr double kRidge = 1e-3;
+
+double sigmoid(double z) { return 1.0 / (1.0 + std::exp(-z)); }
+
+}  // namespace
+
+double leastSurePointDistance(const std::vector<ModelPrediction>& predictions) {
+  double worst = 0;
+  for (const auto& p : predictions)
+    for (const auto& point : p.points) worst = std::max(worst, static_cast<double>(point.distance));
+  return worst;
+}
+
+double ConfidenceCalibration::probability(double d) const {
+  if (!std::isfinite(d)) return 0;
+  if (!fitted) return std::exp(-std::max(0.0, d) / kUncalibratedScale);
+  return sigmoid(intercept + slope * d / kDistanceUnit);
+}
+
+ConfidenceCalibration fitConfidence(const std::vector<double>& d, const std::vector<bool>& y) {
+  if (d.empty() || d.size() != y.size())
+    throw InvalidArgument("confidence fit: " + std::to_string(d.size()) + " signals for " +
+                          std::to_string(y.size()) + " outcomes");
+  double a = 0, b = 0;
+  for (int iteration = 0; iteration < 50; ++iteration) {
+    // Gradient and Hessian of the negative log-likelihood plus ridge on (a, b).
+    double ga = kRidge * a, gb = kRidge * b, haa = kRidge, hab = 0, hbb = kRidge;
+    for (std::size_t i = 0; i < d.size(); ++i) {
+      const double x = d[i] / kDistanceUnit;
+      const double p = sigmoid(a + b * x);
+      const double r = p - (y[i] ? 1.0 : 0.0);
+      const double w = std::max(p * (1 - p), 1e-9);
+      ga += r, gb += r * x;
+      haa += w, hab += w * x, hbb += w * x * x;
+    }
+    const double det = haa * hbb - hab * hab;
+    if (std::abs(det) < 1e-12) break;
+    const double da = (hbb * ga - hab * gb) / det, db = (haa * gb - hab * ga) / det;
+    a -= da, b -= db;
+    if (std::abs(da) + std::abs(db) < 1e-9) break;
+  }
+  ConfidenceCalibration c;
+  c.fitted = true;
+  c.intercept = a;
+  c.slope = b;
+  c.objects = d.size();
+  c.oneKeyShare = static_cast<double>(std::count(y.begin(), y.end(), true)) / d.size();
+  return c;
+}
+
+nlohmann::json toJson(const ConfidenceCalibration& c) {
+  return {{"schema", "sagrid.confidence/1"},
+          {"signal", "least-sure point: largest predicted distance among the object's points"},
+          {"target", "right with one key (every point within 5 cm, right counts)"},
+          {"intercept", c.intercept},
+          {"slope_per_0.01", c.slope},
+          {"objects", c.objects},
+          {"one_key_share", c.oneKeyShare},
+          {"fitted_on", c.fittedOn}};
+}
+
+ConfidenceCalibration readConfidenceCalibration(const std::filesystem::path& modelsDir) {
+  const auto file = modelsDir / kConfidenceFile;
+  ConfidenceCalibration c;
+  if (!std::filesystem::exists(file)) return c;
+  std::ifstream in(file);
+  std::stringstream text;
+  text << in.rdbuf();
+  try {
+    const auto j = nlohmann::json::parse(text.str());
+    if (j.value("schema", "") != "sagrid.confidence/1")
+      throw FileError(file, "not a SAGrid confidence calibration (schema)");
+    c.intercept = j.at("intercept").get<double>();
+    c.slope = j.at("slope_per_0.01").get<double>();
+    c.objects = j.value("objects", std::size_t{0});
+    c.oneKeyShare = j.value("one_key_share", 0.0);
+    c.fittedOn = j.value("fitted_on", "");
+    if (!std::isfinite(c.intercept) || !std::isfinite(c.slope))
+      throw FileError(file, "intercept and slope must be finite");
+    c.fitted = true;
+  } catch (const nlohmann::json::exception& e) {
+    throw FileError(file, e.what());
+  }
+  return c;
+}
+
+void writeConfidenceCalibration(const std::filesystem::path& modelsDir,
+                                const ConfidenceCalibration& c) {
+  writeFileAtomic(modelsDir / kConfidenceFile, toJson(c).dump(2) + "\n");
+}
+
+}  // namespace sagrid

@@ -1,0 +1,49 @@
+// Object-level confidence: the probability that an object's predicted points are all right, i.e.
+// that the curator accepts it with one key (every point within 5 cm of the truth, right counts;
+// core/eval/curator_effort.h). It is a logistic map of one signal, the least sure predicted point
+// of the object (its predicted distance, normalized units: large when some type's best minimum is
+// shallow, or when a weak extra minimum was kept), fitted on labelled objects (`sagrid eval
+// --fit-confidence`) and stored beside the models as confidence.json. Without a fit the raw
+// signal is mapped by exp(-d / 0.02) and flagged uncalibrated. The review queue orders by it
+// (least sure first) and "accept automatically above X" uses it.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+namespace sagrid {
+
+struct ModelPrediction;
+
+inline constexpr const char* kConfidenceFile = "confidence.json";
+
+// The signal: the largest predicted distance among the points of all predictions (0 when there are
+// no points: nothing to check).
+double leastSurePointDistance(const std::vector<ModelPrediction>& predictions);
+
+struct ConfidenceCalibration {
+  bool fitted = false;
+  double intercept = 0, slope = 0;  // P(one key) = 1 / (1 + exp(-(intercept + slope * d / 0.01)))
+  std::size_t objects = 0;          // objects it was fitted on
+  double oneKeyShare = 0;           // among them
+  std::string fittedOn;             // dataset path(s)
+
+  double probability(double leastSureDistance) const;
+};
+
+// Maximum-likelihood logistic fit (Newton's method with a small ridge, so all-right or all-wrong
+// sets still give a finite map). Throws InvalidArgument for no objects or mismatched sizes.
+ConfidenceCalibration fitConfidence(const std::vector<double>& leastSureDistances,
+                                    const std::vector<bool>& oneKey);
+
+nlohmann::json toJson(const ConfidenceCalibration& c);
+// Reads DIR/confidence.json; an unfitted calibration when the file is absent. Throws FileError
+// naming the file when it exists but is not a valid calibration.
+ConfidenceCalibration readConfidenceCalibration(const std::filesystem::path& modelsDir);
+void writeConfidenceCalibration(const std::filesystem::path& modelsDir,
+                                const ConfidenceCalibration& c);  // atomic
+
+}  // namespace sagrid

@@ -1,0 +1,79 @@
+#include "core/annotate/object_confidence.h"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <random>
+
+#include "core/annotate/annotate.h"
+#include "core/common/error.h"
+#include "support/test_paths.h"
+
+namespace sagrid {
+namespace {
+
+TEST(ObjectConfidence, SignalIsTheLeastSurePointOfAllPredictions) {
+  std::vector<ModelPrediction> predictions(2);
+  predictions[0].points.resize(2);
+  predictions[0].points[0].distance = 0.01f;
+  predictions[0].points[1].distance = 0.03f;
+  predictions[1].points.resize(1);
+  predictions[1].points[0].distance = 0.02f;
+  EXPECT_FLOAT_EQ(static_cast<float>(leastSurePointDistance(predictions)), 0.03f);
+  EXPECT_EQ(leastSurePointDistance({}), 0.0);
+}
+
+TEST(ObjectConfidence, FitRecoversAKnownLogisticMap) {
+  // Outcomes drawn from P(right) = sigmoid(2 - 1.5 * d / 0.01).
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(0, 0.04);
+  std::uniform_real_distribution<double> coin(0, 1);
+  std::vector<double> d;
+  std::vector<bool> right;
+  for (int i = 0; i < 4000; ++i) {
+    d.push_back(u(rng));
+    right.push_back(coin(rng) < 1 / (1 + std::exp(-(2 - 1.5 * d.back() / 0.01))));
+  }
+  const ConfidenceCalibration c = fitConfidence(d, right);
+  EXPECT_TRUE(c.fitted);
+  EXPECT_NEAR(c.intercept, 2.0, 0.25);
+  EXPECT_NEAR(c.slope, -1.5, 0.15);
+  EXPECT_GT(c.probability(0.0), c.probability(0.03));
+}
+
+TEST(ObjectConfidence, SeparableDataGivesAFiniteMap) {
+  const ConfidenceCalibration c = fitConfidence({0.001, 0.002, 0.05, 0.06}, {true, true, false, false});
+  EXPECT_TRUE(std::isfinite(c.intercept) && std::isfinite(c.slope));
+  EXPECT_GT(c.probability(0.001), 0.9);
+  EXPECT_LT(c.probability(0.06), 0.1);
+  EXPECT_THROW(fitConfidence({}, {}), InvalidArgument);
+  EXPECT_THROW(fitConfidence({0.1}, {true, false}), InvalidArgument);
+}
+
+TEST(ObjectConfidence, FileRoundTripsAndBadFilesAreNamed) {
+  const auto dir = test::freshTempDir();
+  EXPECT_FALSE(readConfidenceCalibration(dir).fitted);  // absent: uncalibrated
+  EXPECT_NEAR(readConfidenceCalibration(dir).probability(0.02), std::exp(-1.0), 1e-9);
+  ConfidenceCalibration c;
+  c.fitted = true;
+  c.intercept = 1.25;
+  c.slope = -0.5;
+  c.objects = 12;
+  c.fittedOn = "real-train";
+  writeConfidenceCalibration(dir, c);
+  const ConfidenceCalibration back = readConfidenceCalibration(dir);
+  EXPECT_TRUE(back.fitted);
+  EXPECT_DOUBLE_EQ(back.intercept, 1.25);
+  EXPECT_DOUBLE_EQ(back.slope, -0.5);
+  EXPECT_EQ(back.objects, 12u);
+  std::ofstream(dir / kConfidenceFile) << "{\"schema\": \"sagrid.confidence/1\", \"intercept\": 1";
+  try {
+    readConfidenceCalibration(dir);
+    FAIL() << "truncated file accepted";
+  } catch (const FileError& e) {
+    EXPECT_NE(std::string(e.what()).find(kConfidenceFile), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace sagrid
