@@ -20,7 +20,42 @@ ModelSet ModelSet::load(const std::filesystem::path& directory) {
   std::vector<model::AffordanceModel> models;
   for (const auto& card : model::listModelCards(directory))
     models.push_back(model::AffordanceModel::load(card));
-  return ModelSet(std::move(models));
+  ModelSet set(std::move(models));
+  // Old model folders have no classifier and keep retrieval.
+  const auto classifierFile = directory / kCategoryClassifierFile;
+  if (std::filesystem::exists(classifierFile))
+    set.setCategoryClassifier(CategoryClassifier::load(classifierFile), classifierFile);
+  return set;
+}
+
+void ModelSet::setCategoryClassifier(CategoryClassifier classifier,
+                                     const std::filesystem::path& file) {
+  if (!m_models.empty()) {
+    const auto& card = m_models.front().card();
+    if (classifier.featureBackend != card.featureBackend ||
+        (!classifier.featureConfigHash.empty() &&
+         classifier.featureConfigHash != card.featureConfigHash) ||
+        (classifier.gridResolution != 0 && classifier.gridResolution != card.gridResolution))
+      throw ModelError(file.string() + ": the category classifier was trained on other features (" +
+                       classifier.featureBackend + ") than the model cards (" +
+                       card.featureBackend + "); retrain it with `sagrid category train`");
+  }
+  const auto known = categories();
+  for (const auto& c : classifier.classes())
+    if (c != kRejectedCategory && std::find(known.begin(), known.end(), c) == known.end())
+      throw ModelError(file.string() + ": the category classifier knows \"" + c +
+                       "\" but no model card has that category");
+  m_classifier = std::move(classifier);
+}
+
+CategoryDecision ModelSet::decideCategory(const std::vector<float>& descriptor) const {
+  if (m_classifier) return m_classifier->classify(descriptor);
+  const auto ranked = rankCategories(descriptor);
+  if (ranked.empty()) throw ModelError("no models to choose a category from");
+  CategoryDecision d;
+  d.category = d.best = ranked.front().category;
+  d.score = ranked.front().similarity;
+  return d;
 }
 
 ModelSet::ModelSet(std::vector<model::AffordanceModel> models) : m_models(std::move(models)) {

@@ -5,6 +5,8 @@
 // the similarity is taken after centring on the mean of the category means and dividing each
 // dimension by the categories' pooled spread, so that large, uninformative dimensions (shared
 // by every category) do not decide it; with one category it is the plain cosine.
+// When the folder holds a category classifier (category.json, category_classifier.h) it decides
+// the category instead, and may answer "none" (not a stove or sink); without it, retrieval.
 #pragma once
 
 #include <filesystem>
@@ -12,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "core/annotate/category_classifier.h"
 #include "core/features/feature_pipeline.h"
 #include "core/model/affordance_model.h"
 
@@ -42,6 +45,16 @@ class ModelSet {
                             const std::string& category) const;
   std::vector<float> categoryMean(const std::string& category) const;  // throws when unknown
 
+  // The category of an object: the classifier's decision (possibly rejected, category "none")
+  // when the folder has one, else the best retrieved category (never rejected).
+  CategoryDecision decideCategory(const std::vector<float>& descriptor) const;
+  const CategoryClassifier* categoryClassifier() const {
+    return m_classifier ? &*m_classifier : nullptr;
+  }
+  // Throws ModelError naming `file` when the classifier needs other features than the cards or
+  // knows a category no card has.
+  void setCategoryClassifier(CategoryClassifier classifier, const std::filesystem::path& file);
+
   // Feature options matching the cards (backend, grid size); the cache folder is the caller's.
   FeatureOptions featureOptions() const;
 
@@ -57,6 +70,7 @@ class ModelSet {
   // Computed once when the cards allow it (every category records a mean of one size); otherwise
   // retrievalSpace() is called at use and throws its clear error there.
   std::optional<RetrievalSpace> m_retrieval;
+  std::optional<CategoryClassifier> m_classifier;
 };
 
 }  // namespace sagrid

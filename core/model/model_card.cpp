@@ -142,7 +142,10 @@ std::vector<fs::path> listModelCards(const fs::path& directory) {
   if (!fs::is_directory(directory)) throw FileError(directory, "model directory not found");
   std::vector<fs::path> cards;
   for (const auto& entry : fs::directory_iterator(directory))
-    if (entry.is_regular_file() && entry.path().extension() == ".json")
+    // Cards are <category>.<type>.json; other JSON beside them (category.json, the category
+    // classifier; confidence.json) is not a card.
+    if (entry.is_regular_file() && entry.path().extension() == ".json" &&
+        entry.path().stem().string().find('.') != std::string::npos)
       cards.push_back(entry.path());
   std::sort(cards.begin(), cards.end());
   if (cards.empty())

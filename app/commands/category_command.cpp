@@ -1,0 +1,168 @@
+// `sagrid category train|eval|split`: the category classifier with rejection (stove | sink |
+// none) that `annotate`, `filter --like` and the GUI use when the models folder has category.json.
+// Parsing, progress and printing only; the work is in core/annotate/category_*.
+#include <CLI/CLI.hpp>
+
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+
+#include "app/command_registry.h"
+#include "app/progress_bar.h"
+#include "core/annotate/category_training.h"
+#include "core/annotate/model_set.h"
+#include "core/common/error.h"
+#include "core/dataset/dataset.h"
+#include "core/model/model_card.h"
+
+namespace {
+namespace fs = std::filesystem;
+
+fs::path defaultModelsDir() {
+  if (fs::is_directory("resources/models")) return "resources/models";
+  return fs::path(SAGRID_SOURCE_DIR) / "resources" / "models";
+}
+
+
+// Descriptors of every --data folder, minus the excluded ids, with a progress bar per folder.
+std::vector<sagrid::CategorySample> collect(const std::vector<std::string>& dirs,
+                                            const sagrid::FeatureOptions& features,
+                                            const std::set<std::string>& exclude) {
+  std::vector<sagrid::CategorySample> all;
+  for (const auto& dir : dirs) {
+    std::unique_ptr<sagrid::app::ProgressBar> bar;
+    std::size_t failed = 0;
+    auto samples = sagrid::collectCategorySamples(
+        dir, features, exclude,
+        [&](std::size_t done, std::size_t total, const std::string&) {
+          if (!bar) bar = std::make_unique<sagrid::app::ProgressBar>("features " + dir, total);
+          bar->update(done);
+        },
+        &failed);
+    if (bar) bar->finish();
+    if (failed) std::fprintf(stderr, "%s: %zu objects skipped (features failed)\n", dir.c_str(), failed);
+    all.insert(all.end(), samples.begin(), samples.end());
+  }
+  return all;
+}
+
+// Feature options of the cards in `modelsDir` (the classifier must see what they saw); the
+// defaults when the folder has no cards.
+sagrid::FeatureOptions featuresFor(const fs::path& modelsDir) {
+  if (fs::is_directory(modelsDir) && !sagrid::model::listModelCards(modelsDir).empty())
+    return sagrid::ModelSet::load(modelsDir).featureOptions();
+  return {};
+}
+
+void setupCategory(CLI::App& root) {
+  auto* cmd = root.add_subcommand(
+      "category",
+      "The category classifier with rejection (stove | sink | none): train it into the models "
+      "folder (category.json), evaluate it, or split a folder's ids for training and validation.");
+  cmd->require_subcommand(1);
+
+  struct Options {
+    std::vector<std::string> data;
+    std::string out, models, exclude, split, splitOut;
+    double threshold = -1, l2 = 1e-2;
+    int iterations = 3000;
+    bool retrieval = false;
+  };
+  auto o = std::make_shared<Options>();
+
+  auto* train = cmd->add_subcommand(
+      "train",
+      "Train the classifier on labelled dataset folders (stove and sink objects; every other "
+      "category, e.g. \"none\" from `generate --preset distractors`, is a distractor) and write "
+      "OUT/category.json.");
+  train->add_option("--data", o->data, "Dataset folder (repeat for several)")->required();
+  train->add_option("--out", o->out, "Models folder to write category.json into (default resources/models)");
+  train->add_option("--exclude-split", o->exclude,
+                    "Id split file (category split): its val ids are held out of training");
+  train->add_option("--threshold", o->threshold,
+                    "Rejection threshold on the best category's probability (default 0.5)");
+  train->add_option("--l2", o->l2, "L2 penalty on the weights");
+  train->add_option("--iterations", o->iterations, "Gradient steps")->check(CLI::PositiveNumber);
+  train->callback([o] {
+    const fs::path out = o->out.empty() ? defaultModelsDir() : fs::path(o->out);
+    const auto features = featuresFor(out);
+    std::set<std::string> exclude;
+    if (!o->exclude.empty()) exclude = sagrid::readIdSplit(o->exclude).val;
+    const auto samples = collect(o->data, features, exclude);
+    sagrid::CategoryTrainingOptions options;
+    options.l2 = o->l2;
+    options.iterations = o->iterations;
+    if (o->threshold >= 0) options.threshold = o->threshold;
+    auto classifier = sagrid::CategoryClassifier::train(samples, options);
+    classifier.featureBackend = features.backend;
+    classifier.featureConfigHash = sagrid::featureConfigHash(features);
+    classifier.gridResolution = features.resolution;
+    classifier.training["data"] = o->data;
+    if (!o->exclude.empty()) classifier.training["held_out_split"] = o->exclude;
+    std::string command = "sagrid category train";
+    for (const auto& d : o->data) command += " --data " + d;
+    if (!o->exclude.empty()) command += " --exclude-split " + o->exclude;
+    command += " --out " + out.string() + " --threshold " + std::to_string(options.threshold) +
+               " --l2 " + std::to_string(o->l2) + " --iterations " + std::to_string(o->iterations);
+    classifier.training["command"] = command;
+    const auto ev = sagrid::evaluateCategories(
+        [&](const std::vector<float>& d) { return classifier.classify(d); }, samples);
+    for (const auto& [cls, c] : ev.byClass)
+      classifier.training["train_share_right"][cls] = c.total ? double(c.right) / c.total : 0.0;
+    const fs::path file = out / sagrid::kCategoryClassifierFile;
+    classifier.save(file);
+    std::cout << "# training objects\n\n" << sagrid::categoryEvaluationTable(ev) << "\n";
+    std::fprintf(stderr, "wrote %s (%zu objects)\n", file.string().c_str(), samples.size());
+  });
+
+  auto* eval = cmd->add_subcommand(
+      "eval",
+      "Category table on labelled dataset folders: share right on stoves, on sinks, and share of "
+      "distractors rejected (with the models folder's classifier, or retrieval without one).");
+  eval->add_option("--data", o->data, "Dataset folder (repeat for several)")->required();
+  eval->add_option("--models", o->models, "Models folder (default resources/models)");
+  eval->add_option("--split", o->split, "Id split file: its train ids are left out (evaluate on val)");
+  eval->add_option("--threshold", o->threshold, "Rejection threshold (default: the file's)");
+  eval->add_flag("--retrieval", o->retrieval,
+                 "Evaluate today's retrieval by similarity (no rejection) instead of the classifier");
+  eval->callback([o] {
+    const fs::path dir = o->models.empty() ? defaultModelsDir() : fs::path(o->models);
+    const auto models = sagrid::ModelSet::load(dir);
+    std::set<std::string> exclude;
+    if (!o->split.empty()) exclude = sagrid::readIdSplit(o->split).train;
+    const auto samples = collect(o->data, models.featureOptions(), exclude);
+    const auto* classifier = models.categoryClassifier();
+    if (!classifier && !o->retrieval)
+      std::fprintf(stderr, "%s has no %s: evaluating retrieval\n", dir.string().c_str(),
+                   sagrid::kCategoryClassifierFile);
+    const double threshold = o->threshold >= 0 ? o->threshold : classifier ? classifier->threshold() : 0.5;
+    const auto ev = sagrid::evaluateCategories(
+        [&](const std::vector<float>& d) {
+          if (classifier && !o->retrieval) return classifier->classify(d, threshold);
+          sagrid::CategoryDecision r;
+          const auto ranked = models.rankCategories(d);
+          r.category = r.best = ranked.front().category;
+          r.score = ranked.front().similarity;
+          return r;
+        },
+        samples);
+    std::cout << sagrid::categoryEvaluationTable(ev);
+  });
+
+  auto* split = cmd->add_subcommand(
+      "split", "Split a dataset folder's ids deterministically: 2/3 train, 1/3 val (by sha256 of the id).");
+  split->add_option("--data", o->data, "Dataset folder")->required()->expected(1);
+  split->add_option("--out", o->splitOut, "Split file to write (JSON)")->required();
+  split->callback([o] {
+    std::vector<std::string> ids;
+    for (const auto& e : sagrid::readDataset(o->data.front())) ids.push_back(e.id);
+    const auto s = sagrid::splitIds(ids);
+    sagrid::writeIdSplit(s, o->splitOut, fs::path(o->data.front()).filename().string());
+    std::fprintf(stderr, "wrote %s: %zu train, %zu val\n", o->splitOut.c_str(), s.train.size(), s.val.size());
+  });
+}
+
+}  // namespace
+
+SAGRID_REGISTER_COMMAND("category", setupCategory);

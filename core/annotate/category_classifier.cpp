@@ -1,0 +1,222 @@
+#include "core/annotate/category_classifier.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+#include <Eigen/Core>
+
+#include "core/common/atomic_file.h"
+#include "core/common/error.h"
+#include "core/common/sha256.h"
+
+namespace sagrid {
+
+namespace {
+constexpr const char* kFormat = "sagrid.category_classifier";
+constexpr int kVersion = 1;
+
+// The class order: known categories sorted, "none" last (so a file reads the same every run).
+std::vector<std::string> classOrder(const std::vector<CategorySample>& samples) {
+  std::vector<std::string> known;
+  bool none = false;
+  for (const auto& s : samples) {
+    const std::string c = categoryClass(s.category);
+    if (c == kRejectedCategory) none = true;
+    else if (std::find(known.begin(), known.end(), c) == known.end()) known.push_back(c);
+  }
+  std::sort(known.begin(), known.end());
+  if (none) known.push_back(kRejectedCategory);
+  return known;
+}
+
+std::string contentSha(const nlohmann::json& j) {
+  nlohmann::json copy = j;
+  copy.erase("sha256");
+  return sha256Hex(copy.dump());
+}
+}  // namespace
+
+std::string categoryClass(const std::string& labelledCategory) {
+  if (labelledCategory == "stove" || labelledCategory == "sink") return labelledCategory;
+  return kRejectedCategory;
+}
+
+CategoryClassifier CategoryClassifier::train(const std::vector<CategorySample>& samples,
+                                             const CategoryTrainingOptions& options) {
+  if (samples.empty()) throw InvalidArgument("no objects to train the category classifier on");
+  CategoryClassifier c;
+  c.m_classes = classOrder(samples);
+  if (c.m_classes.size() < 2)
+    throw InvalidArgument("the category classifier needs objects of at least two classes (got only " +
+                          c.m_classes.front() + ")");
+  const std::size_t d = samples.front().descriptor.size();
+  if (d == 0) throw InvalidArgument("objects have empty descriptors");
+  const std::size_t n = samples.size(), k = c.m_classes.size();
+  Eigen::MatrixXd x(n, d);
+  Eigen::MatrixXd y = Eigen::MatrixXd::Zero(n, k);
+  std::map<std::string, int> counts;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (samples[i].descriptor.size() != d)
+      throw InvalidArgument("object " + samples[i].id + " has a descriptor of size " +
+                            std::to_string(samples[i].descriptor.size()) + ", others " +
+                            std::to_string(d));
+    for (std::size_t j = 0; j < d; ++j) x(i, j) = samples[i].descriptor[j];
+    const std::string cls = categoryClass(samples[i].category);
+    const auto at = std::find(c.m_classes.begin(), c.m_classes.end(), cls) - c.m_classes.begin();
+    y(i, at) = 1.0;
+    ++counts[cls];
+  }
+  // Standardize; near-constant dimensions get a floor so a new object cannot blow them up.
+  c.m_centre.resize(d);
+  c.m_scale.resize(d);
+  for (std::size_t j = 0; j < d; ++j) {
+    const double mean = x.col(j).mean();
+    const double sd = std::sqrt((x.col(j).array() - mean).square().mean());
+    c.m_centre[j] = static_cast<float>(mean);
+    c.m_scale[j] = static_cast<float>(std::max(sd, 1e-3));
+    x.col(j) = (x.col(j).array() - mean) / c.m_scale[j];
+  }
+  // Class-balanced sample weights (distractors and categories come in different numbers).
+  Eigen::VectorXd w(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    Eigen::Index cls;
+    y.row(i).maxCoeff(&cls);
+    w(i) = static_cast<double>(n) / (static_cast<double>(k) * counts[c.m_classes[cls]]);
+  }
+  w /= w.sum();
+  // Step size from the curvature bound of the weighted softmax loss (0.5 lambda_max(X^T W X)),
+  // found by power iteration: plain gradient descent then converges without tuning.
+  Eigen::MatrixXd xtwx = x.transpose() * w.asDiagonal() * x;
+  Eigen::VectorXd v = Eigen::VectorXd::Ones(d).normalized();
+  double lambda = 1.0;
+  for (int it = 0; it < 100; ++it) {
+    Eigen::VectorXd next = xtwx * v;
+    lambda = next.norm();
+    if (lambda <= 0) break;
+    v = next / lambda;
+  }
+  const double step = options.learningRate / (0.5 * std::max(lambda, 1e-6) + options.l2);
+  Eigen::MatrixXd weights = Eigen::MatrixXd::Zero(k, d);
+  Eigen::VectorXd bias = Eigen::VectorXd::Zero(k);
+  for (int it = 0; it < options.iterations; ++it) {
+    Eigen::MatrixXd logits = x * weights.transpose();
+    logits.rowwise() += bias.transpose();
+    for (std::size_t i = 0; i < n; ++i) {
+      const double m = logits.row(i).maxCoeff();
+      logits.row(i) = (logits.row(i).array() - m).exp();
+      logits.row(i) /= logits.row(i).sum();
+    }
+    const Eigen::MatrixXd residual = w.asDiagonal() * (logits - y);  // n x k
+    weights -= step * (residual.transpose() * x + options.l2 * weights);
+    bias -= step * residual.colwise().sum().transpose();
+  }
+  c.m_weights.assign(k, std::vector<double>(d));
+  c.m_bias.assign(k, 0.0);
+  for (std::size_t a = 0; a < k; ++a) {
+    c.m_bias[a] = bias(a);
+    for (std::size_t j = 0; j < d; ++j) c.m_weights[a][j] = weights(a, j);
+  }
+  c.m_threshold = options.threshold;
+  nlohmann::json objects = nlohmann::json::object();
+  for (const auto& [cls, count] : counts) objects[cls] = count;
+  c.training["objects"] = objects;
+  c.training["l2"] = options.l2;
+  c.training["iterations"] = options.iterations;
+  return c;
+}
+
+std::vector<double> CategoryClassifier::probabilities(const std::vector<float>& descriptor) const {
+  if (descriptor.size() != m_centre.size())
+    throw InvalidArgument("descriptor of size " + std::to_string(descriptor.size()) +
+                          " for a category classifier trained on size " +
+                          std::to_string(m_centre.size()));
+  std::vector<double> logits(m_classes.size());
+  for (std::size_t a = 0; a < m_classes.size(); ++a) {
+    double z = m_bias[a];
+    for (std::size_t j = 0; j < descriptor.size(); ++j)
+      z += m_weights[a][j] * (descriptor[j] - m_centre[j]) / m_scale[j];
+    logits[a] = z;
+  }
+  const double m = *std::max_element(logits.begin(), logits.end());
+  double sum = 0;
+  for (double& z : logits) sum += (z = std::exp(z - m));
+  for (double& z : logits) z /= sum;
+  return logits;
+}
+
+CategoryDecision CategoryClassifier::classify(const std::vector<float>& descriptor) const {
+  return classify(descriptor, m_threshold);
+}
+
+CategoryDecision CategoryClassifier::classify(const std::vector<float>& descriptor,
+                                              double threshold) const {
+  const auto p = probabilities(descriptor);
+  CategoryDecision out;
+  double bestAny = -1;
+  std::string argmax;
+  for (std::size_t a = 0; a < m_classes.size(); ++a) {
+    if (p[a] > bestAny) bestAny = p[a], argmax = m_classes[a];
+    if (m_classes[a] != kRejectedCategory && p[a] > out.score) out.score = p[a], out.best = m_classes[a];
+  }
+  out.rejected = argmax == kRejectedCategory || out.score < threshold;
+  out.category = out.rejected ? kRejectedCategory : out.best;
+  return out;
+}
+
+void CategoryClassifier::save(const std::filesystem::path& file) const {
+  nlohmann::json j;
+  j["format"] = kFormat;
+  j["version"] = kVersion;
+  j["classes"] = m_classes;
+  j["threshold"] = m_threshold;
+  j["feature_backend"] = featureBackend;
+  j["feature_config_hash"] = featureConfigHash;
+  j["grid_resolution"] = gridResolution;
+  j["descriptor_size"] = m_centre.size();
+  j["centre"] = m_centre;
+  j["scale"] = m_scale;
+  j["weights"] = m_weights;
+  j["bias"] = m_bias;
+  j["training"] = training;
+  j["sha256"] = contentSha(j);
+  writeFileAtomic(file, j.dump(1) + "\n");
+}
+
+CategoryClassifier CategoryClassifier::load(const std::filesystem::path& file) {
+  const std::string text = readFileBytes(file);
+  CategoryClassifier c;
+  try {
+    const nlohmann::json j = nlohmann::json::parse(text);
+    if (j.value("format", "") != kFormat)
+      throw FileError(file, std::string("not a category classifier (format is not \"") + kFormat + "\")");
+    if (j.at("version").get<int>() != kVersion)
+      throw FileError(file, "category classifier version " + j.at("version").dump() +
+                                " is not supported (expected " + std::to_string(kVersion) + ")");
+    if (j.contains("sha256") && j.at("sha256").get<std::string>() != contentSha(j))
+      throw FileError(file, "category classifier content does not match its sha256 (edited or "
+                            "truncated); retrain it with `sagrid category train`");
+    c.m_classes = j.at("classes").get<std::vector<std::string>>();
+    c.m_threshold = j.at("threshold").get<double>();
+    c.featureBackend = j.at("feature_backend").get<std::string>();
+    c.featureConfigHash = j.value("feature_config_hash", "");
+    c.gridResolution = j.value("grid_resolution", 0);
+    c.m_centre = j.at("centre").get<std::vector<float>>();
+    c.m_scale = j.at("scale").get<std::vector<float>>();
+    c.m_weights = j.at("weights").get<std::vector<std::vector<double>>>();
+    c.m_bias = j.at("bias").get<std::vector<double>>();
+    c.training = j.value("training", nlohmann::json::object());
+  } catch (const nlohmann::json::exception& e) {
+    throw FileError(file, std::string("malformed category classifier: ") + e.what());
+  }
+  const std::size_t d = c.m_centre.size(), k = c.m_classes.size();
+  bool ok = d > 0 && k >= 2 && c.m_scale.size() == d && c.m_weights.size() == k && c.m_bias.size() == k;
+  for (const auto& row : c.m_weights) ok = ok && row.size() == d;
+  for (float s : c.m_scale) ok = ok && s > 0;
+  if (!ok)
+    throw FileError(file, "malformed category classifier: classes, centre, scale, weights and bias "
+                          "do not agree in size");
+  return c;
+}
+
+}  // namespace sagrid

@@ -1,0 +1,86 @@
+// The category classifier with rejection: stove | sink | none from an object's descriptor (the
+// feature pipeline's, the same that model cards record for retrieval). Retrieval by similarity to
+// the category means alone always answers one of the known categories, so microwaves, ovens and
+// cabinets got stove or sink points; this classifier has a "none" class trained on distractors.
+//
+// Model: multinomial logistic regression (linear softmax) over the descriptor standardized with
+// the training set's mean and spread, trained full-batch with class-balanced weights and an L2
+// penalty (convex, deterministic, no libtorch). Decision: the most probable class; an object is
+// rejected ("none") when that class is "none" or its probability is below `threshold`.
+// Stored as <models folder>/category.json (kCategoryClassifierFile) next to the model cards.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+namespace sagrid {
+
+inline constexpr const char* kCategoryClassifierFile = "category.json";
+inline constexpr const char* kRejectedCategory = "none";
+
+struct CategoryDecision {
+  std::string category;  // a known category, or kRejectedCategory
+  double score = 0;      // probability of the best non-"none" class (retrieval: similarity)
+  bool rejected = false;
+  std::string best;      // the best non-"none" class even when rejected (what a curator may pick)
+};
+
+struct CategorySample {
+  std::string id;
+  std::string category;  // "stove", "sink", or anything else = distractor ("none")
+  std::string group;     // where it came from (dataset folder, distractor kind), for reports
+  std::vector<float> descriptor;
+};
+
+struct CategoryTrainingOptions {
+  double l2 = 1e-2;         // penalty on the weights (standardized inputs)
+  int iterations = 3000;    // full-batch gradient steps
+  double learningRate = 0.5;
+  double threshold = 0.5;   // rejection threshold stored in the file
+};
+
+class CategoryClassifier {
+ public:
+  // Throws FileError naming the file when it is unreadable or malformed, or its sha256 does not
+  // match its content (a hand-edited or truncated file).
+  static CategoryClassifier load(const std::filesystem::path& file);
+  // Writes JSON with a sha256 over the content (atomically).
+  void save(const std::filesystem::path& file) const;
+
+  // Throws InvalidArgument when there are no samples, fewer than two classes, or descriptors of
+  // different sizes.
+  static CategoryClassifier train(const std::vector<CategorySample>& samples,
+                                  const CategoryTrainingOptions& options);
+
+  // Class probabilities in classes() order; throws InvalidArgument for a descriptor of the wrong
+  // size.
+  std::vector<double> probabilities(const std::vector<float>& descriptor) const;
+  CategoryDecision classify(const std::vector<float>& descriptor) const;
+  CategoryDecision classify(const std::vector<float>& descriptor, double threshold) const;
+
+  const std::vector<std::string>& classes() const { return m_classes; }
+  double threshold() const { return m_threshold; }
+  void setThreshold(double t) { m_threshold = t; }
+  std::size_t descriptorSize() const { return m_centre.size(); }
+
+  // Feature setup the descriptors came from (checked against the model cards).
+  std::string featureBackend, featureConfigHash;
+  int gridResolution = 0;
+  // Free-form record of the training run (data folders, command, counts, accuracy).
+  nlohmann::json training = nlohmann::json::object();
+
+ private:
+  std::vector<std::string> m_classes;  // "none" always last
+  std::vector<float> m_centre, m_scale;
+  std::vector<std::vector<double>> m_weights;  // classes x descriptor
+  std::vector<double> m_bias;
+  double m_threshold = 0.5;
+};
+
+// The class a labelled category trains: stove and sink as they are, everything else "none".
+std::string categoryClass(const std::string& labelledCategory);
+
+}  // namespace sagrid

@@ -1,0 +1,60 @@
+// Data for the category classifier (category_classifier.h): object descriptors of labelled dataset
+// folders through the feature pipeline and its per-dataset cache (DIR/.sagrid-cache), a
+// deterministic train/val split of a folder's ids written to a file, and the evaluation table
+// (share right on stoves, on sinks, share of distractors rejected).
+#pragma once
+
+#include <filesystem>
+#include <functional>
+#include <map>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "core/annotate/category_classifier.h"
+#include "core/features/feature_pipeline.h"
+
+namespace sagrid {
+
+// Descriptors of every object of a dataset folder whose id is not in `excludeIds`. The group of a
+// sample is the folder's name, plus the generator kind for generated distractors. Objects whose
+// features fail are skipped and counted in `failed` (when given).
+std::vector<CategorySample> collectCategorySamples(
+    const std::filesystem::path& dataDir, const FeatureOptions& features,
+    const std::set<std::string>& excludeIds = {},
+    const std::function<void(std::size_t, std::size_t, const std::string&)>& onProgress = {},
+    std::size_t* failed = nullptr);
+
+// A split of object ids into "train" and "val".
+struct IdSplit {
+  std::set<std::string> train, val;
+};
+// Deterministic: ids ordered by the sha256 of the id, every third to val (1/3), the rest train.
+IdSplit splitIds(const std::vector<std::string>& ids);
+// JSON {"train": [...], "val": [...], "rule": "..."}; readIdSplit throws FileError naming the file.
+void writeIdSplit(const IdSplit& split, const std::filesystem::path& file, const std::string& source);
+IdSplit readIdSplit(const std::filesystem::path& file);
+
+struct CategoryEvaluation {
+  struct Count {
+    int total = 0, right = 0;
+  };
+  // By true class ("stove", "sink", "none"): right = predicted category equals it ("none" =
+  // rejected).
+  std::map<std::string, Count> byClass;
+  // By sample group (dataset folder / distractor kind) and true class.
+  std::map<std::string, Count> byGroup;
+  std::map<std::string, std::map<std::string, int>> confusion;  // true -> predicted -> count
+};
+
+// `decide` is the classifier under test (a CategoryClassifier at a threshold, or ModelSet's
+// decideCategory for retrieval without a classifier).
+CategoryEvaluation evaluateCategories(
+    const std::function<CategoryDecision(const std::vector<float>&)>& decide,
+    const std::vector<CategorySample>& samples);
+
+// Markdown: the per-class table (stoves right, sinks right, distractors rejected), per group and
+// the confusion matrix.
+std::string categoryEvaluationTable(const CategoryEvaluation& evaluation);
+
+}  // namespace sagrid

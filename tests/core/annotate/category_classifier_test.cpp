@@ -1,0 +1,174 @@
+// The category classifier with rejection: separable synthetic classes, the file round-trip,
+// corrupted files named in the error, ModelSet with and without category.json, and rejection of
+// generated distractors by a tiny classifier trained on generated stoves, sinks and distractors.
+#include "core/annotate/category_classifier.h"
+
+#include <fstream>
+#include <random>
+
+#include <gtest/gtest.h>
+
+#include "core/annotate/category_training.h"
+#include "core/annotate/model_set.h"
+#include "core/common/atomic_file.h"
+#include "core/common/error.h"
+#include "core/generate/dataset_generator.h"
+#include "support/test_paths.h"
+
+namespace sagrid {
+namespace {
+
+// Three Gaussian blobs in 6-d, with a large shared nuisance dimension.
+std::vector<CategorySample> blobs(int perClass, std::uint32_t seed) {
+  std::mt19937 rng(seed);
+  std::normal_distribution<float> noise(0.0f, 0.2f), nuisance(0.0f, 50.0f);
+  const std::vector<std::pair<std::string, std::vector<float>>> centres = {
+      {"stove", {1, 0, 0, 0, 0}}, {"sink", {0, 1, 0, 0, 0}}, {"none", {0, 0, 1, 0, 0}}};
+  std::vector<CategorySample> out;
+  for (const auto& [cls, c] : centres)
+    for (int i = 0; i < perClass; ++i) {
+      CategorySample s;
+      s.id = cls + std::to_string(i);
+      s.category = cls == "none" ? "microwave" : cls;  // any other category is a distractor
+      for (float v : c) s.descriptor.push_back(v + noise(rng));
+      s.descriptor.push_back(nuisance(rng));
+      out.push_back(s);
+    }
+  return out;
+}
+
+TEST(CategoryClassifier, SeparatesAndRejectsSyntheticClasses) {
+  const auto train = blobs(30, 1), test = blobs(20, 2);
+  const auto c = CategoryClassifier::train(train, {});
+  ASSERT_EQ(c.classes(), (std::vector<std::string>{"sink", "stove", "none"}));
+  int right = 0;
+  for (const auto& s : test) right += c.classify(s.descriptor).category == categoryClass(s.category);
+  EXPECT_GE(right, 57);  // of 60
+  // A distractor is rejected but still says which category it resembles most.
+  const auto d = c.classify({0.1f, 0.0f, 1.0f, 0.0f, 0.0f, 0.0f});
+  EXPECT_TRUE(d.rejected);
+  EXPECT_EQ(d.category, "none");
+  EXPECT_FALSE(d.best.empty());
+  // A threshold above every probability rejects everything.
+  EXPECT_TRUE(c.classify({1, 0, 0, 0, 0, 0}, 1.01).rejected);
+  EXPECT_FALSE(c.classify({1, 0, 0, 0, 0, 0}, 0.5).rejected);
+  EXPECT_THROW(c.probabilities({1, 2}), InvalidArgument);
+}
+
+TEST(CategoryClassifier, FileRoundTripsAndCorruptionIsNamed) {
+  auto c = CategoryClassifier::train(blobs(10, 3), {});
+  c.featureBackend = "embedded";
+  c.training["command"] = "test";
+  const auto dir = test::freshTempDir();
+  const auto file = dir / kCategoryClassifierFile;
+  c.save(file);
+  const auto back = CategoryClassifier::load(file);
+  EXPECT_EQ(back.classes(), c.classes());
+  EXPECT_EQ(back.featureBackend, "embedded");
+  for (const auto& s : blobs(5, 4)) {
+    const auto p = c.probabilities(s.descriptor), q = back.probabilities(s.descriptor);
+    for (std::size_t i = 0; i < p.size(); ++i) EXPECT_NEAR(p[i], q[i], 1e-6);
+  }
+  // A changed number: the sha256 no longer matches.
+  std::string text = readFileBytes(file);
+  const auto at = text.find("\"threshold\": 0.5");
+  ASSERT_NE(at, std::string::npos);
+  text.replace(at, 16, "\"threshold\": 0.1");
+  writeFileAtomic(file, text);
+  try {
+    CategoryClassifier::load(file);
+    FAIL() << "edited file accepted";
+  } catch (const FileError& e) {
+    EXPECT_NE(std::string(e.what()).find(file.string()), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("sha256"), std::string::npos) << e.what();
+  }
+  // Truncated: malformed JSON, also named.
+  writeFileAtomic(file, readFileBytes(dir / kCategoryClassifierFile).substr(0, 100));
+  try {
+    CategoryClassifier::load(file);
+    FAIL() << "truncated file accepted";
+  } catch (const FileError& e) {
+    EXPECT_NE(std::string(e.what()).find(file.string()), std::string::npos) << e.what();
+  }
+}
+
+model::AffordanceModel cardOnly(const std::string& name, std::vector<float> mean) {
+  model::ModelCard card;
+  card.name = name;
+  std::tie(card.category, card.type) = model::splitModelName(name);
+  card.architecture = "[3,1,4]";
+  card.featureBackend = "embedded";
+  card.featureChannels = 2;
+  card.descriptorSize = static_cast<int>(mean.size());
+  card.descriptorStd.assign(mean.size(), 1.0f);
+  card.descriptorMean = std::move(mean);
+  return model::AffordanceModel(card, 1);
+}
+
+ModelSet stoveAndSinkCards() {
+  std::vector<model::AffordanceModel> models;
+  models.push_back(cardOnly("stove.heatsource", {1, 0, 0, 0, 0, 0}));
+  models.push_back(cardOnly("sink.fluidsource", {0, 1, 0, 0, 0, 0}));
+  return ModelSet(std::move(models));
+}
+
+TEST(CategoryClassifier, ModelSetFallsBackToRetrievalWithoutAClassifier) {
+  const ModelSet set = stoveAndSinkCards();
+  EXPECT_EQ(set.categoryClassifier(), nullptr);
+  // Retrieval never rejects: a distractor-like descriptor still gets a category.
+  const auto d = set.decideCategory({0, 0, 1, 0, 0, 0});
+  EXPECT_FALSE(d.rejected);
+  EXPECT_NE(d.category, "none");
+  EXPECT_EQ(set.decideCategory({1, 0, 0, 0, 0, 0}).category, "stove");
+}
+
+TEST(CategoryClassifier, ModelSetUsesTheClassifierAndChecksIt) {
+  ModelSet set = stoveAndSinkCards();
+  auto c = CategoryClassifier::train(blobs(20, 5), {});
+  c.featureBackend = "embedded";
+  set.setCategoryClassifier(c, "category.json");
+  ASSERT_NE(set.categoryClassifier(), nullptr);
+  EXPECT_EQ(set.decideCategory({0, 0, 1, 0, 0, 0}).category, "none");
+  EXPECT_EQ(set.decideCategory({1, 0, 0, 0, 0, 0}).category, "stove");
+  // Other features than the cards: refused, naming the file.
+  ModelSet other = stoveAndSinkCards();
+  c.featureBackend = "dinov2";
+  try {
+    other.setCategoryClassifier(c, "models/category.json");
+    FAIL() << "classifier of other features accepted";
+  } catch (const ModelError& e) {
+    EXPECT_NE(std::string(e.what()).find("models/category.json"), std::string::npos);
+  }
+}
+
+// Cheap features for generated objects (the real pipeline at a small grid and few views).
+std::vector<float> descriptorOf(const gen::FinishedObject& o) {
+  FeatureOptions f;
+  f.resolution = 32;
+  f.views = 24;
+  f.renderSize = 48;
+  return computeFeatures(o.mesh, f).descriptor;
+}
+
+TEST(CategoryClassifier, RejectsGeneratedDistractorsSlow) {
+  std::vector<CategorySample> train, test;
+  const std::vector<std::pair<std::string, std::uint64_t>> sets = {
+      {"stove", 91}, {"sink", 92}, {"none", 93}};
+  for (const auto& [category, seed] : sets)
+    for (int i = 0; i < 40; ++i) {
+      const auto o = gen::makeObject(category, seed, i, gen::MeshFormat::Obj);
+      (i < 30 ? train : test).push_back({o.id, category, category, descriptorOf(o)});
+    }
+  CategoryTrainingOptions options;
+  options.l2 = 0.1;  // 90 objects for 64 dimensions: keep the weights small
+  const auto c = CategoryClassifier::train(train, options);
+  const auto ev = evaluateCategories([&](const std::vector<float>& d) { return c.classify(d); }, test);
+  // 10 held-out objects per class; a distractor counts as right only when rejected.
+  EXPECT_GE(ev.byClass.at("none").right, 8) << categoryEvaluationTable(ev);
+  // Cheap features and 30 objects per class: well above chance (1/3), not the real figure.
+  EXPECT_GE(ev.byClass.at("stove").right + ev.byClass.at("sink").right, 12)
+      << categoryEvaluationTable(ev);
+}
+
+}  // namespace
+}  // namespace sagrid
