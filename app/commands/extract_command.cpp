@@ -94,8 +94,11 @@ void setupExtract(CLI::App& root) {
       "--cache", o->cache,
       "Feature cache folder (keyed by mesh sha256 + feature config; damaged entries are rebuilt)");
   cmd->add_option("--up", o->up,
-                  "Up axis of the mesh files (y or z); default: y for glTF/GLB, else z")
-      ->check(CLI::IsMember({"y", "z"}));
+                  "Up axis of the file: x, -x, y, -y, z or -z (write --up=-y for negative "
+                  "axes); default: y for glTF/GLB, else z")
+      ->check([](const std::string& v) {
+        return sagrid::parseUpAxis(v) ? std::string() : "must be x, -x, y, -y, z or -z, got " + v;
+      });
   cmd->add_option("--dinov2-model", o->dinov2Model,
                   "TorchScript DINOv2 file (packaging/python/export_dinov2.py) for dinov2, and for "
                   "trellis descriptors");

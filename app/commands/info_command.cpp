@@ -19,13 +19,17 @@ void setupInfo(CLI::App& root) {
   };
   auto o = std::make_shared<Options>();
   cmd->add_option("mesh", o->mesh, "Mesh file (.obj .gltf .glb .fbx .dae .ply .stl)")->required();
-  cmd->add_option("--up", o->up, "Up axis of the file (default: y for glTF/GLB, else z)")
-      ->check(CLI::IsMember({"y", "z"}));
+  cmd->add_option("--up", o->up,
+                  "Up axis of the file: x, -x, y, -y, z or -z (write --up=-y for negative "
+                  "axes); default: y for glTF/GLB, else detected from the geometry")
+      ->check([](const std::string& v) {
+        return sagrid::parseUpAxis(v) ? std::string() : "must be x, -x, y, -y, z or -z, got " + v;
+      });
   cmd->add_option("--resolution", o->resolution, "Grid resolution N for the occupancy count (N^3)")
       ->check(CLI::Range(1, 1024));
   cmd->add_flag("--json", o->json, "Print the report as one JSON object");
   cmd->callback([o] {
-    const auto summary = sagrid::summarizeMesh(o->mesh, sagrid::ImportOptions(sagrid::parseUpAxis(o->up)),
+    const auto summary = sagrid::summarizeMesh(o->mesh, sagrid::ImportOptions(sagrid::parseUpAxis(o->up), /*detect=*/true),
                                                o->resolution);
     if (o->json) std::cout << sagrid::summaryJson(summary).dump(2) << "\n";
     else std::cout << sagrid::formatSummary(summary);

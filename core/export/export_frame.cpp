@@ -8,7 +8,7 @@
 
 #include "core/common/atomic_file.h"
 #include "core/common/error.h"
-#include "core/mesh/mesh.h"
+#include "core/mesh/mesh_import.h"
 
 namespace sagrid::exportdetail {
 
@@ -20,11 +20,31 @@ std::string objectId(const ObjectLabels& labels, const fs::path& meshPath) {
                                    : meshPath.stem().string();
 }
 
-bool fileIsYUp(const ObjectLabels& labels) { return labels.object.up == "y"; }
+std::string uprightRollPitchYaw(const ObjectLabels& labels) {
+  switch (upAxisOrZ(labels.object.up)) {
+    case UpAxis::PosX: return "0 -1.5707963 0";
+    case UpAxis::NegX: return "0 1.5707963 0";
+    case UpAxis::PosY: return "1.5707963 0 0";
+    case UpAxis::NegY: return "-1.5707963 0 0";
+    case UpAxis::NegZ: return "3.1415927 0 0";
+    default: return "0 0 0";
+  }
+}
+
+std::string uprightQuaternion(const ObjectLabels& labels) {
+  switch (upAxisOrZ(labels.object.up)) {
+    case UpAxis::PosX: return "0.7071068 0 -0.7071068 0";
+    case UpAxis::NegX: return "0.7071068 0 0.7071068 0";
+    case UpAxis::PosY: return "0.7071068 0.7071068 0 0";
+    case UpAxis::NegY: return "0.7071068 -0.7071068 0 0";
+    case UpAxis::NegZ: return "0 1 0 0";
+    default: return "";
+  }
+}
 
 Eigen::Vector3f toSimulatorFrame(const ObjectLabels& labels, const Eigen::Vector3f& filePosition) {
-  const auto up = fileIsYUp(labels) ? UpAxis::Y : UpAxis::Z;
-  return fileToZUp(filePosition, up) * static_cast<float>(metersPerUnit(labels));
+  return fileToZUp(filePosition, upAxisOrZ(labels.object.up)) *
+         static_cast<float>(metersPerUnit(labels));
 }
 
 namespace {

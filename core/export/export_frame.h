@@ -12,7 +12,10 @@
 namespace sagrid::exportdetail {
 
 std::string objectId(const ObjectLabels& labels, const std::filesystem::path& meshPath);
-bool fileIsYUp(const ObjectLabels& labels);
+// The rotation that stands the mesh file up in a z-up world (object.up -> +z): URDF
+// "roll pitch yaw" and an MJCF "w x y z" quaternion ("" when the file is already z-up).
+std::string uprightRollPitchYaw(const ObjectLabels& labels);
+std::string uprightQuaternion(const ObjectLabels& labels);
 // Label position (mesh file frame) -> z-up metres.
 Eigen::Vector3f toSimulatorFrame(const ObjectLabels& labels, const Eigen::Vector3f& filePosition);
 // Copies `mesh` to dir/<newName or its own name> plus the .mtl files and textures an OBJ names

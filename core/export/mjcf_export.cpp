@@ -51,9 +51,9 @@ SimulatorExport exportMjcf(const ObjectLabels& labels, const fs::path& meshPath,
       << "\" scale=\"" << formatNumber(s) << " " << formatNumber(s) << " " << formatNumber(s)
       << "\"/>\n  </asset>\n"
       << "  <worldbody>\n    <body name=\"object\">\n";
-  // A y-up file is stood up by +90 degrees about x (w x y z quaternion).
-  const std::string quat =
-      exportdetail::fileIsYUp(labels) ? " quat=\"0.7071068 0.7071068 0 0\"" : "";
+  // The file's up axis is turned to +z (a y-up file: +90 degrees about x).
+  const std::string upright = exportdetail::uprightQuaternion(labels);
+  const std::string quat = upright.empty() ? "" : " quat=\"" + upright + "\"";
   xml << "      <geom name=\"" << id << "_visual\" type=\"mesh\" mesh=\"" << id << "_mesh\"" << quat
       << " contype=\"0\" conaffinity=\"0\" group=\"1\"/>\n";
   std::map<std::string, int> perType;

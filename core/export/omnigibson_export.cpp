@@ -44,8 +44,8 @@ SimulatorExport exportOmniGibson(const ObjectLabels& labels, const fs::path& mes
       exportdetail::copyMeshWithDependencies(meshPath, result.root / "shape" / "visual");
   const std::string meshRef = "../shape/visual/" + copied.filename().string();
   const double scale = metersPerUnit(labels);
-  // A y-up file needs +90 degrees about x to stand up in OmniGibson's z-up world.
-  const std::string rpy = exportdetail::fileIsYUp(labels) ? "1.5707963 0 0" : "0 0 0";
+  // The file's up axis is turned to OmniGibson's +z (a y-up file: +90 degrees about x).
+  const std::string rpy = exportdetail::uprightRollPitchYaw(labels);
 
   std::ostringstream urdf;
   urdf << "<?xml version=\"1.0\"?>\n<robot name=\"" << id << "\">\n";

@@ -1,6 +1,8 @@
 #include "core/labels/labels.h"
 
+#include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <ctime>
 #include <set>
 
@@ -195,7 +197,11 @@ ObjectLabels parseCurrent(const json& root, const Validator& v) {
     info.sha256 = v.string(*it, "object.sha256");
   }
   if (auto it = object.find("up"); it != object.end()) info.up = v.string(*it, "object.up");
-  info.extra = unknownFields(object, {"id", "mesh", "sha256", "category", "up"});
+  if (auto it = object.find("up_confidence"); it != object.end()) {
+    if (!it->is_number()) v.fail("object.up_confidence", "must be a number");
+    info.upConfidence = it->get<double>();
+  }
+  info.extra = unknownFields(object, {"id", "mesh", "sha256", "category", "up", "up_confidence"});
 
   labels.affordances = parseAffordances(root, v, /*legacy=*/false);
 
@@ -239,9 +245,10 @@ ObjectLabels parseLabels(const json& root, const fs::path& pathForErrors) {
   } else {
     v.fail("object", "is missing");
   }
-  if (labels.object.up != "y" && labels.object.up != "z") {
+  static const char* const kAxes[] = {"x", "-x", "y", "-y", "z", "-z", "+x", "+y", "+z"};
+  if (std::find(std::begin(kAxes), std::end(kAxes), labels.object.up) == std::end(kAxes)) {
     v.fail(root.contains("schema") ? "object.up" : "up",
-           "must be \"y\" or \"z\", got \"" + labels.object.up + "\"");
+           "must be one of x, -x, y, -y, z, -z, got \"" + labels.object.up + "\"");
   }
   return labels;
 }
@@ -287,6 +294,7 @@ json toJson(const ObjectLabels& labels) {
   object["sha256"] = labels.object.sha256;
   object["category"] = labels.object.category;
   object["up"] = labels.object.up;
+  if (labels.object.upConfidence) object["up_confidence"] = *labels.object.upConfidence;
   root["object"] = object;
 
   json list = json::array();

@@ -40,7 +40,10 @@ struct ObjectInfo {
   std::string mesh;       // mesh file name relative to the labels file
   std::string sha256;
   std::string category;   // "stove", "sink", ...
-  std::string up = "z";   // the mesh file's up axis: "y" or "z"
+  std::string up = "z";   // the mesh file's up axis: "x", "-x", "y", "-y", "z" or "-z"
+  // How sure the up axis is when it was detected from the geometry (0..1); unset when it was
+  // given (--up) or fixed by the format. Written as object.up_confidence.
+  std::optional<double> upConfidence;
   nlohmann::json extra = nlohmann::json::object();
 };
 

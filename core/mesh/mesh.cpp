@@ -65,14 +65,31 @@ void Mesh::computeVertexNormals() {
   }
 }
 
+Eigen::Matrix3f fileToZUpRotation(UpAxis fileUp) {
+  Eigen::Matrix3f r;
+  switch (fileUp) {
+    case UpAxis::PosX: r << 0, 0, -1, 0, 1, 0, 1, 0, 0; break;   // -90 about y
+    case UpAxis::NegX: r << 0, 0, 1, 0, 1, 0, -1, 0, 0; break;   // +90 about y
+    case UpAxis::PosY: r << 1, 0, 0, 0, 0, -1, 0, 1, 0; break;   // +90 about x
+    case UpAxis::NegY: r << 1, 0, 0, 0, 0, 1, 0, -1, 0; break;   // -90 about x
+    case UpAxis::NegZ: r << 1, 0, 0, 0, -1, 0, 0, 0, -1; break;  // 180 about x
+    case UpAxis::PosZ:
+    default: r.setIdentity(); break;
+  }
+  return r;
+}
+
+Eigen::Vector3f upAxisVector(UpAxis up) {
+  // The rotation takes the up vector to +z, so it is the rotation's last row.
+  return fileToZUpRotation(up).row(2).transpose();
+}
+
 Eigen::Vector3f fileToZUp(const Eigen::Vector3f& p, UpAxis fileUp) {
-  if (fileUp == UpAxis::Z) return p;
-  return {p.x(), -p.z(), p.y()};
+  return fileToZUpRotation(fileUp) * p;
 }
 
 Eigen::Vector3f zUpToFile(const Eigen::Vector3f& p, UpAxis fileUp) {
-  if (fileUp == UpAxis::Z) return p;
-  return {p.x(), p.z(), -p.y()};
+  return fileToZUpRotation(fileUp).transpose() * p;
 }
 
 }  // namespace sagrid

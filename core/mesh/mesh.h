@@ -28,7 +28,12 @@ struct Material {
   int texture = -1;                              // index into Mesh::textures, or -1
 };
 
-enum class UpAxis { Y, Z };
+// The file axis that points up. Y and Z name +y and +z (glTF's and SAGrid's own up axes).
+enum class UpAxis { PosX, NegX, PosY, NegY, PosZ, NegZ, Y = PosY, Z = PosZ };
+
+// The six axes in enum order, for loops over candidates.
+constexpr UpAxis kAllUpAxes[] = {UpAxis::PosX, UpAxis::NegX, UpAxis::PosY,
+                                 UpAxis::NegY, UpAxis::PosZ, UpAxis::NegZ};
 
 struct Mesh {
   std::vector<Eigen::Vector3f> positions;  // z-up frame (after any up-axis conversion)
@@ -41,6 +46,12 @@ struct Mesh {
   std::vector<Texture> textures;
 
   UpAxis fileUp = UpAxis::Z;  // the up axis of the source file (labels are written in it)
+  // How sure the up axis is: 1 when given (--up, labels) or fixed by the format. With
+  // fileUpDetected (the geometry was looked at, ImportOptions::detectUp): the detection's
+  // confidence when its axis was taken, or the kept default's softmax probability when the
+  // detection was too unsure to turn the file.
+  float fileUpConfidence = 1.0f;
+  bool fileUpDetected = false;
   std::string sha256;         // of the source file's bytes; empty for generated meshes
 
   std::size_t vertexCount() const { return positions.size(); }
@@ -55,8 +66,13 @@ struct Mesh {
   void computeVertexNormals();
 };
 
-// Converts between the file's frame and SAGrid's z-up frame. A y-up file (glTF) maps
-// (x, y, z)_file -> (x, -z, y)_zup, a rotation of +90 degrees about x.
+// Converts between the file's frame and SAGrid's z-up frame with a proper rotation (det +1) that
+// takes the file's up axis to +z. A y-up file (glTF) maps (x, y, z)_file -> (x, -z, y)_zup, a
+// rotation of +90 degrees about x; -y: -90 about x; +x: -90 about y; -x: +90 about y; -z: 180
+// about x. The entries are 0/+-1, so conversions are exact.
+Eigen::Matrix3f fileToZUpRotation(UpAxis fileUp);
+// The unit vector of `up` in the file's frame (e.g. NegY -> (0,-1,0)).
+Eigen::Vector3f upAxisVector(UpAxis up);
 Eigen::Vector3f fileToZUp(const Eigen::Vector3f& p, UpAxis fileUp);
 Eigen::Vector3f zUpToFile(const Eigen::Vector3f& p, UpAxis fileUp);
 

@@ -18,6 +18,7 @@
 #include "core/common/log.h"
 #include "core/common/sha256.h"
 #include "core/grid/normalization.h"
+#include "core/mesh/up_axis_detection.h"
 
 namespace sagrid {
 namespace fs = std::filesystem;
@@ -29,12 +30,31 @@ const std::vector<std::string>& supportedMeshExtensions() {
 }
 
 std::optional<UpAxis> parseUpAxis(const std::string& text) {
-  if (text == "y" || text == "Y") return UpAxis::Y;
-  if (text == "z" || text == "Z") return UpAxis::Z;
+  std::string t;
+  for (char c : text) t += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (!t.empty() && t[0] == '+') t.erase(0, 1);
+  if (t == "x") return UpAxis::PosX;
+  if (t == "-x") return UpAxis::NegX;
+  if (t == "y") return UpAxis::PosY;
+  if (t == "-y") return UpAxis::NegY;
+  if (t == "z") return UpAxis::PosZ;
+  if (t == "-z") return UpAxis::NegZ;
   return std::nullopt;
 }
 
-const char* toString(UpAxis up) { return up == UpAxis::Y ? "y" : "z"; }
+const char* toString(UpAxis up) {
+  switch (up) {
+    case UpAxis::PosX: return "x";
+    case UpAxis::NegX: return "-x";
+    case UpAxis::PosY: return "y";
+    case UpAxis::NegY: return "-y";
+    case UpAxis::NegZ: return "-z";
+    case UpAxis::PosZ:
+    default: return "z";
+  }
+}
+
+UpAxis upAxisOrZ(const std::string& text) { return parseUpAxis(text).value_or(UpAxis::Z); }
 
 namespace {
 
@@ -321,6 +341,21 @@ Mesh importMesh(const fs::path& path, const ImportOptions& options) {
   if (auto problem = normalizationProblem(mesh.bounds())) throw FileError(path, "mesh " + *problem);
 
   mesh.fileUp = options.up ? *options.up : defaultUpAxis(extension, *scene);
+  const bool fixedByFormat = extension == ".gltf" || extension == ".glb";
+  if (!options.up && options.detectUp && !fixedByFormat) {
+    // Still in the file's frame here, so the detected axis is a file axis.
+    const UpAxisDetection detection = detectUpAxis(mesh, mesh.fileUp);
+    const bool declares = extension == ".fbx" || extension == ".dae";
+    const float needed = declares ? kOverrideDeclaredUpConfidence : kMinDetectedUpConfidence;
+    if (detection.axis == mesh.fileUp || detection.confidence >= needed) {
+      mesh.fileUp = detection.axis;
+      mesh.fileUpConfidence = detection.confidence;
+      mesh.fileUpDetected = true;
+    } else if (!declares) {
+      mesh.fileUpConfidence = detection.probabilities[static_cast<std::size_t>(mesh.fileUp)];
+      mesh.fileUpDetected = true;  // looked at, kept the default
+    }
+  }
   for (auto& p : mesh.positions) p = fileToZUp(p, mesh.fileUp);
   for (auto& n : mesh.normals) n = fileToZUp(n, mesh.fileUp);
   fillMissingNormals(mesh, merger.missingNormals());

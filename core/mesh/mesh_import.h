@@ -14,11 +14,23 @@
 namespace sagrid {
 
 struct ImportOptions {
-  // The file's up axis; when unset, y for glTF/GLB (and FBX files that declare y-up), else z.
+  // The file's up axis; when unset, y for glTF/GLB (and FBX files that declare y-up), else z,
+  // unless detectUp.
   std::optional<UpAxis> up;
+  // With `up` unset: choose the up axis from the geometry (detectUpAxis) for formats that do not
+  // fix it (OBJ, PLY, STL); FBX/DAE keep their declared axis unless the geometry contradicts it
+  // with confidence >= kOverrideDeclaredUpConfidence. glTF/GLB are always y-up. Off by default so
+  // datasets, caches and trained models keep reading files exactly as before.
+  bool detectUp = false;
 
-  ImportOptions(std::optional<UpAxis> upAxis = std::nullopt) : up(upAxis) {}  // NOLINT: implicit
+  ImportOptions(std::optional<UpAxis> upAxis = std::nullopt, bool detect = false)  // NOLINT
+      : up(upAxis), detectUp(detect) {}
 };
+
+constexpr float kOverrideDeclaredUpConfidence = 0.9f;
+// Below this detection confidence an OBJ/PLY/STL keeps SAGrid's z-up default (recorded with the
+// default's probability as its confidence): a wrong turn costs more than a kept default.
+constexpr float kMinDetectedUpConfidence = 0.1f;
 
 // Throws FileError ("path: problem") for a missing file, a directory, an unsupported extension,
 // an empty or corrupt file, no triangles, only degenerate triangles, NaN/Inf coordinates, and
@@ -28,8 +40,13 @@ Mesh importMesh(const std::filesystem::path& path, const ImportOptions& options 
 // Lower-case extensions importMesh accepts, with the dot (".obj", ".glb", ...).
 const std::vector<std::string>& supportedMeshExtensions();
 
-// Parses "y" / "z" (as in --up and labels object.up); nullopt for anything else.
+// Parses an up axis as in --up and labels object.up: "x", "-x", "y", "-y", "z", "-z" (a leading
+// "+" and upper case accepted); nullopt for anything else.
 std::optional<UpAxis> parseUpAxis(const std::string& text);
+// "x", "-x", "y", "-y", "z", "-z" (what labels.json stores).
 const char* toString(UpAxis up);
+// The labels' object.up as an axis; z (SAGrid's default) for text parseUpAxis rejects (labels
+// are validated on reading, so that only happens for hand-built labels).
+UpAxis upAxisOrZ(const std::string& text);
 
 }  // namespace sagrid

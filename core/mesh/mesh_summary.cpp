@@ -43,6 +43,8 @@ MeshSummary summarizeMesh(const std::filesystem::path& path, const ImportOptions
   s.materials = mesh.materials.size();
   s.textures = mesh.textures.size();
   s.fileUp = mesh.fileUp;
+  s.fileUpDetected = mesh.fileUpDetected;
+  s.fileUpConfidence = mesh.fileUpConfidence;
   s.sha256 = mesh.sha256;
   s.bounds = mesh.bounds();
   s.normalization = Normalization::fromBounds(s.bounds);
@@ -66,7 +68,12 @@ std::string formatSummary(const MeshSummary& s) {
   add("triangles:   %zu", s.triangles);
   add("vertices:    %zu", s.vertices);
   add("materials:   %zu (%zu textures)", s.materials, s.textures);
-  add("file up:     %s (mesh frame is z-up)", toString(s.fileUp));
+  if (s.fileUpDetected) {
+    add("file up:     %s (detected, confidence %.2f; mesh frame is z-up)", toString(s.fileUp),
+        s.fileUpConfidence);
+  } else {
+    add("file up:     %s (mesh frame is z-up)", toString(s.fileUp));
+  }
   add("bounds min:  %s", formatVector(s.bounds.min()).c_str());
   add("bounds max:  %s", formatVector(s.bounds.max()).c_str());
   add("size:        %s", formatVector(s.bounds.sizes()).c_str());
@@ -87,6 +94,8 @@ nlohmann::json summaryJson(const MeshSummary& s) {
           {"materials", s.materials},
           {"textures", s.textures},
           {"file_up", toString(s.fileUp)},
+          {"file_up_detected", s.fileUpDetected},
+          {"file_up_confidence", s.fileUpConfidence},
           {"bounds", {{"min", vectorJson(s.bounds.min())}, {"max", vectorJson(s.bounds.max())}}},
           {"normalization", {{"center", vectorJson(s.normalization.center)}, {"scale", s.normalization.scale}}},
           {"resolution", s.resolution},

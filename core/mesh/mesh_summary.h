@@ -21,6 +21,8 @@ struct MeshSummary {
   std::filesystem::path path;
   std::size_t triangles = 0, vertices = 0, materials = 0, textures = 0;
   UpAxis fileUp = UpAxis::Z;
+  bool fileUpDetected = false;   // chosen from the geometry (then with a confidence)
+  float fileUpConfidence = 1.0f;
   std::string sha256;
   Eigen::AlignedBox3f bounds;       // mesh frame (z-up)
   Normalization normalization;

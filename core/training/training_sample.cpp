@@ -4,13 +4,13 @@
 #include <limits>
 
 #include "core/common/error.h"
-#include "core/mesh/mesh.h"
+#include "core/mesh/mesh_import.h"
 
 namespace sagrid {
 
 std::vector<Eigen::Vector3f> normalizedTargets(const ObjectLabels& labels, const std::string& type,
                                                const FeatureGrid& features) {
-  const UpAxis up = labels.object.up == "y" ? UpAxis::Y : UpAxis::Z;
+  const UpAxis up = upAxisOrZ(labels.object.up);
   std::vector<Eigen::Vector3f> points;
   for (const auto* a : labels.ofType(type))
     points.push_back(features.normalization.toNormalized(fileToZUp(a->position, up)));

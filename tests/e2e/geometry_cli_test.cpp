@@ -159,7 +159,7 @@ TEST(GeometryCli, HelpAndUpOption) {
   const auto report = nlohmann::json::parse(r.output);
   EXPECT_EQ(report["file_up"], "y");
   EXPECT_NEAR(report["bounds"]["max"][2].get<double>(), 2.0, 1e-6);  // file y became z
-  EXPECT_NE(runSagrid("info " + shellQuote(mesh.string()) + " --up x").exitCode, 0);
+  EXPECT_NE(runSagrid("info " + shellQuote(mesh.string()) + " --up w").exitCode, 0);
 }
 
 }  // namespace

@@ -16,8 +16,9 @@ std::unique_ptr<AnnotationDocument> openDocument(const fs::path& meshPath,
   if (fs::exists(labelsPath, ec)) existing = readLabels(labelsPath);
 
   std::optional<UpAxis> up;
-  if (existing) up = existing->object.up == "y" ? UpAxis::Y : UpAxis::Z;
-  auto mesh = std::make_shared<Mesh>(importMesh(meshPath, up));
+  if (existing) up = upAxisOrZ(existing->object.up);
+  // A new object's up axis is detected from the geometry; a labelled one keeps its labels' axis.
+  auto mesh = std::make_shared<Mesh>(importMesh(meshPath, ImportOptions(up, /*detect=*/!existing)));
 
   ObjectLabels labels;
   if (existing) {
@@ -31,7 +32,8 @@ std::unique_ptr<AnnotationDocument> openDocument(const fs::path& meshPath,
         genericName ? meshPath.parent_path().filename().string() : meshPath.stem().string();
     labels.object.mesh = meshPath.filename().string();
     labels.object.sha256 = mesh->sha256;
-    labels.object.up = mesh->fileUp == UpAxis::Y ? "y" : "z";
+    labels.object.up = toString(mesh->fileUp);
+    if (mesh->fileUpDetected) labels.object.upConfidence = mesh->fileUpConfidence;
   }
   return std::make_unique<AnnotationDocument>(std::move(mesh), std::move(labels), labelsPath,
                                               meshPath);

@@ -106,6 +106,25 @@ TEST(Labels, RewriteKeepsUnknownFieldsEverywhere) {
   EXPECT_FALSE(fs::exists(dir / "out.json.tmp"));
 }
 
+TEST(Labels, SixUpAxesAndTheDetectionConfidenceRoundTrip) {
+  const fs::path dir = test::freshTempDir();
+  auto labels = readLabels(writeText(dir, withReplaced("\"up\": \"y\"", "\"up\": \"-x\", \"up_confidence\": 0.25")));
+  EXPECT_EQ(labels.object.up, "-x");
+  ASSERT_TRUE(labels.object.upConfidence.has_value());
+  EXPECT_DOUBLE_EQ(*labels.object.upConfidence, 0.25);
+  EXPECT_FALSE(labels.object.extra.contains("up_confidence"));  // a field, not an unknown extra
+  const fs::path out = dir / "out.json";
+  writeLabels(out, labels);
+  const json written = json::parse(readFileBytes(out));
+  EXPECT_EQ(written["object"]["up"], "-x");
+  EXPECT_EQ(written["object"]["up_confidence"], 0.25);
+  // Given or format-fixed axes carry no confidence.
+  labels.object.upConfidence.reset();
+  EXPECT_FALSE(toJson(labels)["object"].contains("up_confidence"));
+  EXPECT_THAT(errorFor(withReplaced("\"up\": \"y\"", "\"up\": \"y\", \"up_confidence\": \"high\"")),
+              HasSubstr("object.up_confidence"));
+}
+
 TEST(Labels, WriteIsAtomicAndFailsCleanlyForMissingFolder) {
   const fs::path dir = test::freshTempDir();
   ObjectLabels labels;
@@ -193,7 +212,7 @@ TEST(LabelsErrors, WrongTypesNameTheField) {
   EXPECT_THAT(errorFor(withReplaced("0.87", "\"high\"")), HasSubstr("affordances[0].confidence"));
   EXPECT_THAT(errorFor(withReplaced("\"accepted\"", "\"maybe\"")),
               HasSubstr("affordances[0].status' has unknown value 'maybe'"));
-  EXPECT_THAT(errorFor(withReplaced("\"up\": \"y\"", "\"up\": \"x\"")), HasSubstr("object.up"));
+  EXPECT_THAT(errorFor(withReplaced("\"up\": \"y\"", "\"up\": \"w\"")), HasSubstr("object.up"));
   EXPECT_THAT(errorFor(withReplaced("\"state\": \"done\"", "\"state\": 1")), HasSubstr("review.state"));
   EXPECT_THAT(errorFor(withReplaced("\"affordances\": [", "\"affordances\": {\"a\": 1}, \"x\": [")),
               HasSubstr("field 'affordances' must be an array"));

@@ -340,7 +340,13 @@ TEST(MeshImport, CoordinatesOf1e9) {
 TEST(MeshImport, UpAxisStrings) {
   EXPECT_EQ(parseUpAxis("y"), UpAxis::Y);
   EXPECT_EQ(parseUpAxis("Z"), UpAxis::Z);
-  EXPECT_FALSE(parseUpAxis("x").has_value());
+  EXPECT_EQ(parseUpAxis("x"), UpAxis::PosX);
+  EXPECT_EQ(parseUpAxis("+x"), UpAxis::PosX);
+  EXPECT_EQ(parseUpAxis("-Y"), UpAxis::NegY);
+  EXPECT_EQ(parseUpAxis("-z"), UpAxis::NegZ);
+  EXPECT_FALSE(parseUpAxis("w").has_value());
+  EXPECT_FALSE(parseUpAxis("--x").has_value());
+  for (UpAxis up : kAllUpAxes) EXPECT_EQ(parseUpAxis(toString(up)), up);
   EXPECT_STREQ(toString(UpAxis::Y), "y");
 }
 
