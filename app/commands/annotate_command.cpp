@@ -43,8 +43,12 @@ void setupAnnotate(CLI::App& root) {
                   "Object category (default: chosen by descriptor retrieval)");
   cmd->add_option("--models", o->models, "Model folder (default resources/models)");
   cmd->add_option("--cache", o->cache, "Feature cache folder (default: none)");
-  cmd->add_option("--up", o->up, "Up axis of the mesh files (y or z; default from the format)")
-      ->check(CLI::IsMember({"y", "z"}));
+  cmd->add_option("--up", o->up,
+                  "Up axis of the file: x, -x, y, -y, z or -z (write --up=-y for negative "
+                  "axes); default: y for glTF/GLB, else detected from the geometry")
+      ->check([](const std::string& v) {
+        return sagrid::parseUpAxis(v) ? std::string() : "must be x, -x, y, -y, z or -z, got " + v;
+      });
   cmd->add_option("--instances", o->instances,
                   "auto (local minima + suppression), single (argmin, as the paper)")
       ->check(CLI::IsMember({"auto", "single"}));

@@ -56,13 +56,17 @@ AnnotationResult annotateMeshFile(const fs::path& meshFile, const std::string& i
   };
   stage(0.0f, "import");
   auto t = Clock::now();
-  const Mesh mesh = importMesh(meshFile, ImportOptions(options.features.up));
+  // Without --up the up axis is detected from the geometry (formats that do not fix it); the
+  // features are then computed in that frame too.
+  const Mesh mesh = importMesh(meshFile, ImportOptions(options.features.up, /*detect=*/true));
   r.importSeconds = secondsSince(t);
   stage(0.1f, "features");
   t = Clock::now();
-  const FeatureGrid features = options.features.cacheDir.empty()
-                                   ? computeFeatures(mesh, options.features)
-                                   : extractFeatures(meshFile, options.features);
+  FeatureOptions featureOptions = options.features;
+  featureOptions.up = mesh.fileUp;
+  const FeatureGrid features = featureOptions.cacheDir.empty()
+                                   ? computeFeatures(mesh, featureOptions)
+                                   : extractFeatures(meshFile, featureOptions);
   const SurfaceScene scene(mesh);
   r.featureSeconds = secondsSince(t);
 
@@ -84,6 +88,7 @@ AnnotationResult annotateMeshFile(const fs::path& meshFile, const std::string& i
   r.labels.object.sha256 = mesh.sha256;
   r.labels.object.category = r.category;
   r.labels.object.up = toString(mesh.fileUp);
+  if (mesh.fileUpDetected) r.labels.object.upConfidence = mesh.fileUpConfidence;
   const auto categoryModels = models.forCategory(r.category);
   for (std::size_t m = 0; m < categoryModels.size(); ++m) {
     const auto* model = categoryModels[m];

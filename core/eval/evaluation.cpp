@@ -79,7 +79,7 @@ EvaluationReport evaluateModels(const ModelSet& models, const EvaluationOptions&
       const std::string category = entry.category.empty() ? labels.object.category : entry.category;
       if (std::find(categories.begin(), categories.end(), category) == categories.end()) continue;
       FeatureOptions objectFeatures = features;
-      const UpAxis up = labels.object.up == "y" ? UpAxis::Y : UpAxis::Z;
+      const UpAxis up = upAxisOrZ(labels.object.up);
       objectFeatures.up = up;
       const Mesh mesh = importMesh(entry.mesh, ImportOptions(up));
       const FeatureGrid grid = extractFeatures(entry.mesh, objectFeatures);
