@@ -11,8 +11,16 @@ void drawObjectPanel(Session& session) {
   AnnotationDocument* doc = session.document();
   if (!ImGui::CollapsingHeader("Object", ImGuiTreeNodeFlags_DefaultOpen) || !doc) return;
   ImGui::TextWrapped("%s", doc->displayName().c_str());
-  ImGui::TextDisabled("%zu vertices, %zu triangles, up %s", doc->mesh().vertexCount(),
-                      doc->mesh().triangleCount(), doc->labels().object.up.c_str());
+  ImGui::TextDisabled("%zu vertices, %zu triangles", doc->mesh().vertexCount(),
+                      doc->mesh().triangleCount());
+  // The file's up axis; a detected one shows how sure the detection was (--up or a labelled
+  // file fixes it).
+  if (const auto& confidence = doc->labels().object.upConfidence) {
+    ImGui::TextDisabled("up %s (detected, confidence %.2f)", doc->labels().object.up.c_str(),
+                        *confidence);
+  } else {
+    ImGui::TextDisabled("up %s", doc->labels().object.up.c_str());
+  }
   const auto size = doc->mesh().bounds().sizes() * doc->metersPerUnit();
   ImGui::TextDisabled("size %.3f x %.3f x %.3f %s", size.x(), size.y(), size.z(),
                       doc->lengthUnit());
