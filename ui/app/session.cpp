@@ -10,6 +10,7 @@
 #include "core/training/dataset_training.h"
 #include "ui/document/object_loader.h"
 #include "ui/document/point_commands.h"
+#include "ui/document/up_axis_commands.h"
 
 namespace sagrid::ui {
 
@@ -247,6 +248,19 @@ void Session::runPrediction() {
   m_worker.start(m_document->labelsPath().string(), std::move(*job));
 }
 
+void Session::turnUpAxis(UpAxis up) {
+  if (!m_document || m_document->mesh().fileUp == up) return;
+  if (m_worker.running()) m_worker.cancel();  // its points would be for the old axis
+  try {
+    m_document->execute(std::make_unique<TurnUpAxisCommand>(*m_document, up));
+  } catch (const Error& e) {
+    reportError(e.what());
+    return;
+  }
+  frameObject();
+  runPrediction();
+}
+
 void Session::pollPrediction() {
   auto outcome = m_worker.poll();
   if (!outcome) return;
@@ -265,7 +279,14 @@ void Session::pollPrediction() {
   // Predictions fill an object with no points yet; existing (reviewed) points are never replaced.
   if (m_document->points().empty() && !result.points.empty()) {
     try {
-      m_document->adoptPredictedPoints(std::move(result.points));
+      // With edits in the history (e.g. a turned up axis) the prediction is one more undoable
+      // step; otherwise it is the starting point of the review.
+      if (m_document->historySize() > 0) {
+        m_document->execute(
+            std::make_unique<ReplacePointsCommand>(std::move(result.points), "predicted points"));
+      } else {
+        m_document->adoptPredictedPoints(std::move(result.points));
+      }
     } catch (const Error& e) {
       reportError(e.what());
     }

@@ -73,6 +73,9 @@ class Session {
   const PredictionWorker& worker() const { return m_worker; }
   bool autoPredict = true;
   void pollPrediction();  // applies a finished prediction (UI thread, once per frame)
+  // Turns the object to another file up axis (an undoable command that drops the predicted
+  // points of the old axis) and predicts again.
+  void turnUpAxis(UpAxis up);
 
   // Export ---------------------------------------------------------------------------------------
   void exportCurrent(const std::string& format, const std::filesystem::path& outDir);

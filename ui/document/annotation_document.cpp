@@ -95,6 +95,24 @@ void AnnotationDocument::setReviewState(ReviewState state) {
   save();
 }
 
+void AnnotationDocument::setMeshUpAxis(UpAxis up) {
+  if (up == m_mesh->fileUp) return;
+  auto turned = std::make_shared<Mesh>(*m_mesh);
+  const UpAxis from = m_mesh->fileUp;
+  for (auto& p : turned->positions) p = fileToZUp(zUpToFile(p, from), up);
+  for (auto& n : turned->normals) n = fileToZUp(zUpToFile(n, from), up);
+  turned->fileUp = up;
+  turned->fileUpDetected = false;
+  turned->fileUpConfidence = 1.0f;
+  m_mesh = std::move(turned);  // a new identity: renderers upload it again
+  m_surface.reset();
+  m_normalization = Normalization::fromMesh(*m_mesh);
+  m_occupied.clear();
+  m_occupiedReady = false;
+  m_predictedFields.clear();
+  ++m_fieldsRevision;
+}
+
 void AnnotationDocument::setCategory(const std::string& category) {
   m_labels.object.category = category;
   ++m_revision;

@@ -67,6 +67,11 @@ class AnnotationDocument {
   // edit, not undoable); saved at once.
   void adoptPredictedPoints(std::vector<AffordancePoint> points);
 
+  // Turns the view mesh to another file up axis and rebuilds what depends on it (surface,
+  // normalization, voxels; predicted fields are dropped). Labels are the caller's: this is for
+  // TurnUpAxisCommand, which also changes object.up.
+  void setMeshUpAxis(UpAxis up);
+
   void save() const;  // atomic; no-op without a labels path or with autosave off
   // Off for previews (sagrid render): edits and predictions stay in memory.
   void setAutosave(bool enabled) { m_autosave = enabled; }

@@ -2,6 +2,7 @@
 
 #include <cstdio>
 
+#include "core/mesh/mesh_import.h"
 #include "ui/app/session.h"
 #include "ui/panels/panels.h"
 
@@ -20,6 +21,14 @@ void drawObjectPanel(Session& session) {
                         *confidence);
   } else {
     ImGui::TextDisabled("up %s", doc->labels().object.up.c_str());
+  }
+  // Turning the up axis is an undoable command; the prediction runs again for the new axis.
+  ImGui::SetNextItemWidth(-1);
+  if (ImGui::BeginCombo("##up", "turn up axis...")) {
+    for (UpAxis up : kAllUpAxes) {
+      if (ImGui::Selectable(toString(up), up == doc->mesh().fileUp)) session.turnUpAxis(up);
+    }
+    ImGui::EndCombo();
   }
   const auto size = doc->mesh().bounds().sizes() * doc->metersPerUnit();
   ImGui::TextDisabled("size %.3f x %.3f x %.3f %s", size.x(), size.y(), size.z(),
