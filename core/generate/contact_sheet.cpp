@@ -107,8 +107,9 @@ void writeDatasetContactSheet(const std::filesystem::path& datasetDir, const std
   std::vector<std::vector<SheetPoint>> points;
   for (const auto& entry : entries) {
     if (static_cast<int>(meshes.size()) >= limit) break;
-    Mesh mesh = importMesh(entry.mesh);
+    // The labels record the file's up axis (a y-up OBJ would otherwise lie on its side).
     const ObjectLabels labels = readLabels(entry.labels);
+    Mesh mesh = importMesh(entry.mesh, ImportOptions(upAxisOrZ(labels.object.up)));
     std::vector<SheetPoint> pts;
     for (const auto& a : labels.affordances) pts.push_back({a.type, fileToZUp(a.position, mesh.fileUp)});
     meshes.push_back(std::move(mesh));
