@@ -14,6 +14,7 @@
 #include "core/annotate/model_set.h"
 #include "core/common/error.h"
 #include "core/dataset/dataset.h"
+#include "core/mesh/mesh_import.h"
 #include "core/model/model_card.h"
 
 namespace {
@@ -30,7 +31,19 @@ std::vector<sagrid::CategorySample> collect(const std::vector<std::string>& dirs
                                             const sagrid::FeatureOptions& features,
                                             const std::set<std::string>& exclude) {
   std::vector<sagrid::CategorySample> all;
-  for (const auto& dir : dirs) {
+  for (const auto& arg : dirs) {
+    // DIR@W weighs the folder's objects W times (a few real objects among many generated ones).
+    std::string dir = arg;
+    double weight = 1.0;
+    const auto at = arg.rfind('@');
+    if (at != std::string::npos) {
+      try {
+        weight = std::stod(arg.substr(at + 1));
+        dir = arg.substr(0, at);
+      } catch (const std::exception&) {
+        throw sagrid::InvalidArgument("--data " + arg + ": expected DIR or DIR@WEIGHT");
+      }
+    }
     std::unique_ptr<sagrid::app::ProgressBar> bar;
     std::size_t failed = 0;
     auto samples = sagrid::collectCategorySamples(
@@ -42,6 +55,7 @@ std::vector<sagrid::CategorySample> collect(const std::vector<std::string>& dirs
         &failed);
     if (bar) bar->finish();
     if (failed) std::fprintf(stderr, "%s: %zu objects skipped (features failed)\n", dir.c_str(), failed);
+    for (auto& s : samples) s.weight = weight;
     all.insert(all.end(), samples.begin(), samples.end());
   }
   return all;
@@ -64,10 +78,10 @@ void setupCategory(CLI::App& root) {
 
   struct Options {
     std::vector<std::string> data;
-    std::string out, models, exclude, split, splitOut;
+    std::string out, models, exclude, split, splitOut, up;
     double threshold = -1, l2 = 1e-2;
     int iterations = 3000;
-    bool retrieval = false;
+    bool retrieval = false, linear = false;
   };
   auto o = std::make_shared<Options>();
 
@@ -76,23 +90,30 @@ void setupCategory(CLI::App& root) {
       "Train the classifier on labelled dataset folders (stove and sink objects; every other "
       "category, e.g. \"none\" from `generate --preset distractors`, is a distractor) and write "
       "OUT/category.json.");
-  train->add_option("--data", o->data, "Dataset folder (repeat for several)")->required();
+  train->add_option("--data", o->data,
+                    "Dataset folder (repeat for several); DIR@W weighs its objects W times")
+      ->required();
   train->add_option("--out", o->out, "Models folder to write category.json into (default resources/models)");
   train->add_option("--exclude-split", o->exclude,
                     "Id split file (category split): its val ids are held out of training");
   train->add_option("--threshold", o->threshold,
                     "Rejection threshold on the best category's probability (default 0.5)");
   train->add_option("--l2", o->l2, "L2 penalty on the weights");
+  train->add_option("--up", o->up, "Up axis (y or z) of objects whose labels do not say")
+      ->check(CLI::IsMember({"y", "z"}));
   train->add_option("--iterations", o->iterations, "Gradient steps")->check(CLI::PositiveNumber);
+  train->add_flag("--linear", o->linear, "Descriptor only, without its squares");
   train->callback([o] {
     const fs::path out = o->out.empty() ? defaultModelsDir() : fs::path(o->out);
-    const auto features = featuresFor(out);
+    auto features = featuresFor(out);
+    if (!o->up.empty()) features.up = sagrid::parseUpAxis(o->up);
     std::set<std::string> exclude;
     if (!o->exclude.empty()) exclude = sagrid::readIdSplit(o->exclude).val;
     const auto samples = collect(o->data, features, exclude);
     sagrid::CategoryTrainingOptions options;
     options.l2 = o->l2;
     options.iterations = o->iterations;
+    options.quadratic = !o->linear;
     if (o->threshold >= 0) options.threshold = o->threshold;
     auto classifier = sagrid::CategoryClassifier::train(samples, options);
     classifier.featureBackend = features.backend;
@@ -103,8 +124,10 @@ void setupCategory(CLI::App& root) {
     std::string command = "sagrid category train";
     for (const auto& d : o->data) command += " --data " + d;
     if (!o->exclude.empty()) command += " --exclude-split " + o->exclude;
+    if (!o->up.empty()) command += " --up " + o->up;
     command += " --out " + out.string() + " --threshold " + std::to_string(options.threshold) +
-               " --l2 " + std::to_string(o->l2) + " --iterations " + std::to_string(o->iterations);
+               " --l2 " + std::to_string(o->l2) + " --iterations " + std::to_string(o->iterations) +
+               (o->linear ? " --linear" : "");
     classifier.training["command"] = command;
     const auto ev = sagrid::evaluateCategories(
         [&](const std::vector<float>& d) { return classifier.classify(d); }, samples);
@@ -124,6 +147,8 @@ void setupCategory(CLI::App& root) {
   eval->add_option("--models", o->models, "Models folder (default resources/models)");
   eval->add_option("--split", o->split, "Id split file: its train ids are left out (evaluate on val)");
   eval->add_option("--threshold", o->threshold, "Rejection threshold (default: the file's)");
+  eval->add_option("--up", o->up, "Up axis (y or z) of objects whose labels do not say")
+      ->check(CLI::IsMember({"y", "z"}));
   eval->add_flag("--retrieval", o->retrieval,
                  "Evaluate today's retrieval by similarity (no rejection) instead of the classifier");
   eval->callback([o] {
@@ -131,7 +156,9 @@ void setupCategory(CLI::App& root) {
     const auto models = sagrid::ModelSet::load(dir);
     std::set<std::string> exclude;
     if (!o->split.empty()) exclude = sagrid::readIdSplit(o->split).train;
-    const auto samples = collect(o->data, models.featureOptions(), exclude);
+    auto features = models.featureOptions();
+    if (!o->up.empty()) features.up = sagrid::parseUpAxis(o->up);
+    const auto samples = collect(o->data, features, exclude);
     const auto* classifier = models.categoryClassifier();
     if (!classifier && !o->retrieval)
       std::fprintf(stderr, "%s has no %s: evaluating retrieval\n", dir.string().c_str(),
@@ -152,13 +179,17 @@ void setupCategory(CLI::App& root) {
 
   auto* split = cmd->add_subcommand(
       "split", "Split a dataset folder's ids deterministically: 2/3 train, 1/3 val (by sha256 of the id).");
-  split->add_option("--data", o->data, "Dataset folder")->required()->expected(1);
+  split->add_option("--data", o->data, "Dataset folder (repeat for several: one split of all ids)")->required();
   split->add_option("--out", o->splitOut, "Split file to write (JSON)")->required();
   split->callback([o] {
     std::vector<std::string> ids;
-    for (const auto& e : sagrid::readDataset(o->data.front())) ids.push_back(e.id);
+    std::string source;
+    for (const auto& dir : o->data) {
+      for (const auto& e : sagrid::readDataset(dir)) ids.push_back(e.id);
+      source += (source.empty() ? "" : ", ") + fs::path(dir).filename().string();
+    }
     const auto s = sagrid::splitIds(ids);
-    sagrid::writeIdSplit(s, o->splitOut, fs::path(o->data.front()).filename().string());
+    sagrid::writeIdSplit(s, o->splitOut, source);
     std::fprintf(stderr, "wrote %s: %zu train, %zu val\n", o->splitOut.c_str(), s.train.size(), s.val.size());
   });
 }

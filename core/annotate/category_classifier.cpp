@@ -15,6 +15,9 @@ namespace sagrid {
 namespace {
 constexpr const char* kFormat = "sagrid.category_classifier";
 constexpr int kVersion = 1;
+// Standardized values beyond this say "far off" already; clamping keeps one odd dimension of a
+// new mesh (and its square) from deciding alone.
+constexpr double kClamp = 6.0;
 
 // The class order: known categories sorted, "none" last (so a file reads the same every run).
 std::vector<std::string> classOrder(const std::vector<CategorySample>& samples) {
@@ -75,20 +78,28 @@ CategoryClassifier CategoryClassifier::train(const std::vector<CategorySample>& 
     const double sd = std::sqrt((x.col(j).array() - mean).square().mean());
     c.m_centre[j] = static_cast<float>(mean);
     c.m_scale[j] = static_cast<float>(std::max(sd, 1e-3));
-    x.col(j) = (x.col(j).array() - mean) / c.m_scale[j];
+    x.col(j) = ((x.col(j).array() - mean) / c.m_scale[j]).cwiseMax(-kClamp).cwiseMin(kClamp);
   }
+  c.m_quadratic = options.quadratic;
+  if (c.m_quadratic) {
+    Eigen::MatrixXd expanded(n, 2 * d);
+    expanded << x, x.array().square().matrix();
+    x = expanded;
+  }
+  const std::size_t inputs = static_cast<std::size_t>(x.cols());
   // Class-balanced sample weights (distractors and categories come in different numbers).
   Eigen::VectorXd w(n);
   for (std::size_t i = 0; i < n; ++i) {
     Eigen::Index cls;
     y.row(i).maxCoeff(&cls);
-    w(i) = static_cast<double>(n) / (static_cast<double>(k) * counts[c.m_classes[cls]]);
+    w(i) = samples[i].weight * static_cast<double>(n) /
+           (static_cast<double>(k) * counts[c.m_classes[cls]]);
   }
   w /= w.sum();
   // Step size from the curvature bound of the weighted softmax loss (0.5 lambda_max(X^T W X)),
   // found by power iteration: plain gradient descent then converges without tuning.
   Eigen::MatrixXd xtwx = x.transpose() * w.asDiagonal() * x;
-  Eigen::VectorXd v = Eigen::VectorXd::Ones(d).normalized();
+  Eigen::VectorXd v = Eigen::VectorXd::Ones(inputs).normalized();
   double lambda = 1.0;
   for (int it = 0; it < 100; ++it) {
     Eigen::VectorXd next = xtwx * v;
@@ -97,7 +108,7 @@ CategoryClassifier CategoryClassifier::train(const std::vector<CategorySample>& 
     v = next / lambda;
   }
   const double step = options.learningRate / (0.5 * std::max(lambda, 1e-6) + options.l2);
-  Eigen::MatrixXd weights = Eigen::MatrixXd::Zero(k, d);
+  Eigen::MatrixXd weights = Eigen::MatrixXd::Zero(k, inputs);
   Eigen::VectorXd bias = Eigen::VectorXd::Zero(k);
   for (int it = 0; it < options.iterations; ++it) {
     Eigen::MatrixXd logits = x * weights.transpose();
@@ -111,11 +122,11 @@ CategoryClassifier CategoryClassifier::train(const std::vector<CategorySample>& 
     weights -= step * (residual.transpose() * x + options.l2 * weights);
     bias -= step * residual.colwise().sum().transpose();
   }
-  c.m_weights.assign(k, std::vector<double>(d));
+  c.m_weights.assign(k, std::vector<double>(inputs));
   c.m_bias.assign(k, 0.0);
   for (std::size_t a = 0; a < k; ++a) {
     c.m_bias[a] = bias(a);
-    for (std::size_t j = 0; j < d; ++j) c.m_weights[a][j] = weights(a, j);
+    for (std::size_t j = 0; j < inputs; ++j) c.m_weights[a][j] = weights(a, j);
   }
   c.m_threshold = options.threshold;
   nlohmann::json objects = nlohmann::json::object();
@@ -123,6 +134,7 @@ CategoryClassifier CategoryClassifier::train(const std::vector<CategorySample>& 
   c.training["objects"] = objects;
   c.training["l2"] = options.l2;
   c.training["iterations"] = options.iterations;
+  c.training["quadratic"] = options.quadratic;
   return c;
 }
 
@@ -131,11 +143,11 @@ std::vector<double> CategoryClassifier::probabilities(const std::vector<float>& 
     throw InvalidArgument("descriptor of size " + std::to_string(descriptor.size()) +
                           " for a category classifier trained on size " +
                           std::to_string(m_centre.size()));
+  const std::vector<double> in = inputs(descriptor);
   std::vector<double> logits(m_classes.size());
   for (std::size_t a = 0; a < m_classes.size(); ++a) {
     double z = m_bias[a];
-    for (std::size_t j = 0; j < descriptor.size(); ++j)
-      z += m_weights[a][j] * (descriptor[j] - m_centre[j]) / m_scale[j];
+    for (std::size_t j = 0; j < in.size(); ++j) z += m_weights[a][j] * in[j];
     logits[a] = z;
   }
   const double m = *std::max_element(logits.begin(), logits.end());
@@ -143,6 +155,18 @@ std::vector<double> CategoryClassifier::probabilities(const std::vector<float>& 
   for (double& z : logits) sum += (z = std::exp(z - m));
   for (double& z : logits) z /= sum;
   return logits;
+}
+
+std::vector<double> CategoryClassifier::inputs(const std::vector<float>& descriptor) const {
+  const std::size_t d = m_centre.size();
+  std::vector<double> out(m_quadratic ? 2 * d : d);
+  for (std::size_t j = 0; j < d; ++j) {
+    const double z = std::clamp((descriptor[j] - m_centre[j]) / static_cast<double>(m_scale[j]),
+                                -kClamp, kClamp);
+    out[j] = z;
+    if (m_quadratic) out[d + j] = z * z;
+  }
+  return out;
 }
 
 CategoryDecision CategoryClassifier::classify(const std::vector<float>& descriptor) const {
@@ -174,6 +198,7 @@ void CategoryClassifier::save(const std::filesystem::path& file) const {
   j["feature_config_hash"] = featureConfigHash;
   j["grid_resolution"] = gridResolution;
   j["descriptor_size"] = m_centre.size();
+  j["quadratic"] = m_quadratic;
   j["centre"] = m_centre;
   j["scale"] = m_scale;
   j["weights"] = m_weights;
@@ -203,6 +228,7 @@ CategoryClassifier CategoryClassifier::load(const std::filesystem::path& file) {
     c.gridResolution = j.value("grid_resolution", 0);
     c.m_centre = j.at("centre").get<std::vector<float>>();
     c.m_scale = j.at("scale").get<std::vector<float>>();
+    c.m_quadratic = j.value("quadratic", false);
     c.m_weights = j.at("weights").get<std::vector<std::vector<double>>>();
     c.m_bias = j.at("bias").get<std::vector<double>>();
     c.training = j.value("training", nlohmann::json::object());
@@ -211,7 +237,7 @@ CategoryClassifier CategoryClassifier::load(const std::filesystem::path& file) {
   }
   const std::size_t d = c.m_centre.size(), k = c.m_classes.size();
   bool ok = d > 0 && k >= 2 && c.m_scale.size() == d && c.m_weights.size() == k && c.m_bias.size() == k;
-  for (const auto& row : c.m_weights) ok = ok && row.size() == d;
+  for (const auto& row : c.m_weights) ok = ok && row.size() == (c.m_quadratic ? 2 * d : d);
   for (float s : c.m_scale) ok = ok && s > 0;
   if (!ok)
     throw FileError(file, "malformed category classifier: classes, centre, scale, weights and bias "

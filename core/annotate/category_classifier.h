@@ -4,7 +4,7 @@
 // cabinets got stove or sink points; this classifier has a "none" class trained on distractors.
 //
 // Model: multinomial logistic regression (linear softmax) over the descriptor standardized with
-// the training set's mean and spread, trained full-batch with class-balanced weights and an L2
+// the training set's mean and spread (and, by default, its squares: a quadratic boundary), trained full-batch with class-balanced weights and an L2
 // penalty (convex, deterministic, no libtorch). Decision: the most probable class; an object is
 // rejected ("none") when that class is "none" or its probability is below `threshold`.
 // Stored as <models folder>/category.json (kCategoryClassifierFile) next to the model cards.
@@ -33,6 +33,7 @@ struct CategorySample {
   std::string category;  // "stove", "sink", or anything else = distractor ("none")
   std::string group;     // where it came from (dataset folder, distractor kind), for reports
   std::vector<float> descriptor;
+  double weight = 1.0;  // relative weight in training (few real objects among many generated)
 };
 
 struct CategoryTrainingOptions {
@@ -40,6 +41,9 @@ struct CategoryTrainingOptions {
   int iterations = 3000;    // full-batch gradient steps
   double learningRate = 0.5;
   double threshold = 0.5;   // rejection threshold stored in the file
+  // Also the squares of the standardized dimensions (a quadratic boundary: "far from the
+  // stoves in this dimension" is not linear in it).
+  bool quadratic = true;
 };
 
 class CategoryClassifier {
@@ -75,7 +79,10 @@ class CategoryClassifier {
  private:
   std::vector<std::string> m_classes;  // "none" always last
   std::vector<float> m_centre, m_scale;
-  std::vector<std::vector<double>> m_weights;  // classes x descriptor
+  // Standardized (clamped to +-kClamp) descriptor, then its squares when m_quadratic.
+  std::vector<double> inputs(const std::vector<float>& descriptor) const;
+  bool m_quadratic = false;
+  std::vector<std::vector<double>> m_weights;  // classes x inputs
   std::vector<double> m_bias;
   double m_threshold = 0.5;
 };

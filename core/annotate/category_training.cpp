@@ -37,7 +37,10 @@ std::vector<CategorySample> collectCategorySamples(
     if (onProgress) onProgress(e, entries.size(), entry.id);
     if (excludeIds.count(entry.id)) continue;
     try {
-      const ObjectLabels labels = readLabels(entry.labels);
+      // Unlabelled folders (a manifest with categories, no labels.json yet) still train and
+      // test the category; their up axis is then the caller's features.up.
+      const ObjectLabels labels =
+          fs::exists(entry.labels) ? readLabels(entry.labels) : ObjectLabels{};
       CategorySample s;
       s.id = entry.id;
       s.category = entry.category.empty() ? labels.object.category : entry.category;

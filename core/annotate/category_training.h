@@ -17,7 +17,9 @@
 namespace sagrid {
 
 // Descriptors of every object of a dataset folder whose id is not in `excludeIds`. The group of a
-// sample is the folder's name, plus the generator kind for generated distractors. Objects whose
+// sample is the folder's name, plus the generator kind for generated distractors. An object's
+// labels.json up axis overrides features.up; objects without labels.json take the manifest's
+// category and features.up. Objects whose
 // features fail are skipped and counted in `failed` (when given).
 std::vector<CategorySample> collectCategorySamples(
     const std::filesystem::path& dataDir, const FeatureOptions& features,
