@@ -79,7 +79,7 @@ void setupAnnotate(CLI::App& root) {
     const auto files = sagrid::findMeshFiles(o->input);
     if (files.empty()) throw sagrid::FileError(o->input, "no mesh files found");
     sagrid::app::ProgressBar bar("annotate", files.size());
-    std::size_t failed = 0, points = 0;
+    std::size_t failed = 0, points = 0, rejected = 0;
     for (std::size_t i = 0; i < files.size(); ++i) {
       bar.update(i, files[i].id);
       const fs::path dir = fs::path(o->out) / files[i].id;
@@ -88,6 +88,7 @@ void setupAnnotate(CLI::App& root) {
         fs::create_directories(dir);
         sagrid::writeLabels(dir / "labels.json", r.labels);
         points += r.labels.affordances.size();
+        rejected += r.rejected;
         sagrid::logger()->info(
             "{}: {} ({}{:.3f}), {} points; import {:.2f} s, features {:.2f} s, models {:.3f} s",
             files[i].id, r.category, r.categoryRetrieved ? "retrieved, similarity " : "similarity ",
@@ -104,8 +105,10 @@ void setupAnnotate(CLI::App& root) {
     }
     bar.update(files.size());
     bar.finish();
-    std::fprintf(stderr, "annotated %zu of %zu objects (%zu points) into %s%s\n",
-                 files.size() - failed, files.size(), points, o->out.c_str(),
+    std::fprintf(stderr,
+                 "annotated %zu of %zu objects (%zu points, %zu rejected as not a known "
+                 "category) into %s%s\n",
+                 files.size() - failed, files.size(), points, rejected, o->out.c_str(),
                  failed ? "; see the failures above" : "");
     if (failed == files.size()) throw sagrid::Error("every object failed");
   });
@@ -115,7 +118,8 @@ void setupFilter(CLI::App& root) {
   auto* cmd = root.add_subcommand(
       "filter",
       "Rank the meshes of a folder by cosine similarity of their object descriptor to a category's "
-      "training mean (from the model cards), most similar first.");
+      "training mean (from the model cards), most similar first; objects the category classifier "
+      "(category.json in the models folder) rejects as no known category come last, marked none.");
   struct Options {
     std::string input, like, models, cache, json;
     int top = 0;
@@ -142,7 +146,8 @@ void setupFilter(CLI::App& root) {
     struct Ranked {
       std::string id, path;
       double similarity;
-      std::string best;
+      std::string best;  // the decided category ("none" when the classifier rejects it)
+      bool rejected = false;
     };
     std::vector<Ranked> ranked;
     sagrid::app::ProgressBar bar("filter", files.size());
@@ -150,10 +155,10 @@ void setupFilter(CLI::App& root) {
       bar.update(i, files[i].id);
       try {
         const auto f = sagrid::extractFeatures(files[i].path, features);
-        const auto categories = models.rankCategories(f.descriptor);
+        const auto decision = models.decideCategory(f.descriptor);
         ranked.push_back({files[i].id, files[i].path.string(),
-                          models.categorySimilarity(f.descriptor, o->like),
-                          categories.empty() ? "" : categories.front().category});
+                          models.categorySimilarity(f.descriptor, o->like), decision.category,
+                          decision.rejected});
       } catch (const sagrid::Error& e) {
         std::fprintf(stderr, "\nsagrid: %s: skipped: %s\n", files[i].path.string().c_str(),
                      e.what());
@@ -161,18 +166,23 @@ void setupFilter(CLI::App& root) {
     }
     bar.update(files.size());
     bar.finish();
-    std::stable_sort(ranked.begin(), ranked.end(),
-                     [](const Ranked& a, const Ranked& b) { return a.similarity > b.similarity; });
+    // Objects the category classifier rejects (not a stove or sink) rank after all others,
+    // with the same threshold `annotate` uses.
+    std::stable_sort(ranked.begin(), ranked.end(), [](const Ranked& a, const Ranked& b) {
+      if (a.rejected != b.rejected) return b.rejected;
+      return a.similarity > b.similarity;
+    });
     nlohmann::json j = nlohmann::json::array();
     std::size_t shown = 0;
     for (const auto& r : ranked) {
-      if (r.similarity < o->threshold || (o->top > 0 && shown >= static_cast<std::size_t>(o->top)))
-        break;
+      if (o->top > 0 && shown >= static_cast<std::size_t>(o->top)) break;
+      if (r.similarity < o->threshold) continue;  // rejected objects follow, in their own order
       std::printf("%.4f  %-8s %s\n", r.similarity, r.best.c_str(), r.path.c_str());
       j.push_back({{"id", r.id},
                    {"mesh", r.path},
                    {"similarity", r.similarity},
-                   {"closest_category", r.best}});
+                   {"closest_category", r.best},
+                   {"rejected", r.rejected}});
       ++shown;
     }
     if (!o->json.empty()) sagrid::writeFileAtomic(o->json, j.dump(2) + "\n");

@@ -71,11 +71,13 @@ AnnotationResult annotateMeshFile(const fs::path& meshFile, const std::string& i
   r.featureSeconds = secondsSince(t);
 
   if (options.category.empty()) {
-    const auto ranked = models.rankCategories(features.descriptor);
-    if (ranked.empty()) throw ModelError("no models to choose a category from");
-    r.category = ranked.front().category;
-    r.categorySimilarity = ranked.front().similarity;
+    // The classifier with rejection when the models folder has one, else retrieval.
+    const CategoryDecision decision = models.decideCategory(features.descriptor);
+    r.category = decision.category;
+    r.categorySimilarity = decision.score;
     r.categoryRetrieved = true;
+    r.rejected = decision.rejected;
+    r.closestCategory = decision.best;
   } else {
     r.category = options.category;
     r.categorySimilarity = models.categorySimilarity(features.descriptor, options.category);
@@ -89,6 +91,16 @@ AnnotationResult annotateMeshFile(const fs::path& meshFile, const std::string& i
   r.labels.object.category = r.category;
   r.labels.object.up = toString(mesh.fileUp);
   if (mesh.fileUpDetected) r.labels.object.upConfidence = mesh.fileUpConfidence;
+  if (r.rejected) {
+    // Not a stove or sink: no points; the closest category is kept for the curator.
+    r.labels.extra["prediction"] = {{"category_score", r.categorySimilarity},
+                                    {"category_retrieved", true},
+                                    {"category_rejected", true},
+                                    {"closest_category", r.closestCategory}};
+    r.modelSeconds = secondsSince(t);
+    if (options.onProgress) options.onProgress(1.0f, "done");
+    return r;
+  }
   const auto categoryModels = models.forCategory(r.category);
   for (std::size_t m = 0; m < categoryModels.size(); ++m) {
     const auto* model = categoryModels[m];

@@ -60,6 +60,10 @@ struct AnnotationResult {
   std::string category;
   double categorySimilarity = 0;  // cosine similarity to the category mean (retrieval)
   bool categoryRetrieved = false;
+  // The category classifier (models folder's category.json) found no known category: category
+  // "none", no points. closestCategory is its best guess, for a curator to pick.
+  bool rejected = false;
+  std::string closestCategory;
   std::vector<ModelPrediction> predictions;
   double importSeconds = 0, featureSeconds = 0, modelSeconds = 0;
 };
