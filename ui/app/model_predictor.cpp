@@ -62,6 +62,8 @@ std::optional<PredictionJob> ModelPredictor::jobFor(const AnnotationDocument& do
     if (progress.cancel) throw Cancelled();
     PredictionResult result;
     result.category = r.category;
+    result.rejected = r.rejected;
+    result.closestCategory = r.closestCategory;
     result.points = r.labels.affordances;
     for (const ModelPrediction& p : r.predictions) {
       DistanceField field;

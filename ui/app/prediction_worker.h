@@ -18,6 +18,10 @@ namespace sagrid::ui {
 
 struct PredictionResult {
   std::string category;
+  // The category classifier rejected the object (category "none", no points); closestCategory
+  // is its best guess for the curator.
+  bool rejected = false;
+  std::string closestCategory;
   std::vector<AffordancePoint> points;  // mesh file coordinates, status "predicted"
   std::vector<DistanceField> fields;
 };

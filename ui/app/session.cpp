@@ -276,6 +276,12 @@ void Session::pollPrediction() {
   PredictionResult& result = *outcome->result;
   if (m_document->labels().object.category.empty() && !result.category.empty())
     m_document->setCategory(result.category);
+  if (result.rejected) {
+    // Opened with no points; the curator picks the category (object panel) and runs SAGrid.
+    logger()->info("{}: not a known category (closest: {}): no points; pick the category and run "
+                   "SAGrid, or place the points by hand",
+                   m_document->displayName(), result.closestCategory);
+  }
   // Predictions fill an object with no points yet; existing (reviewed) points are never replaced.
   if (m_document->points().empty() && !result.points.empty()) {
     try {

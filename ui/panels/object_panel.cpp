@@ -34,7 +34,8 @@ void drawObjectPanel(Session& session) {
   ImGui::TextDisabled("size %.3f x %.3f x %.3f %s", size.x(), size.y(), size.z(),
                       doc->lengthUnit());
   // Category: retrieval/prediction fills it; the curator can override (training is per category).
-  static const char* kCategories[] = {"stove", "sink", "microwave", "oven", "lamp", "other"};
+  // "none": the category classifier's rejection (no points predicted).
+  static const char* kCategories[] = {"stove", "sink", "none", "microwave", "oven", "lamp", "other"};
   const std::string& category = doc->labels().object.category;
   ImGui::SetNextItemWidth(-1);
   if (ImGui::BeginCombo("##category", category.empty() ? "category: unknown"

@@ -1,0 +1,54 @@
+// An object the category classifier rejects opens with category "none" and no points, and the
+// curator can then pick its category (the prediction is replayed through a scripted job, the
+// session and worker are the real ones).
+#include <chrono>
+#include <thread>
+
+#include <gtest/gtest.h>
+
+#include "support/test_paths.h"
+#include "tests/ui/app/scripted_scene.h"
+
+namespace sagrid::ui {
+namespace {
+
+using test::ScriptedApp;
+
+TEST(CategoryRejection, RejectedObjectOpensWithNoPointsAndCuratorPicksCategory) {
+  const auto dir = sagrid::test::freshTempDir();
+  ScriptedApp s(dir);
+  // The object as `annotate` would leave it before a category is known: no category, no points.
+  ObjectLabels fresh = readLabels(dir / "labels.json");
+  fresh.object.category.clear();
+  fresh.affordances.clear();
+  std::filesystem::create_directories(dir / "fresh");
+  writeLabels(dir / "fresh" / "labels.json", fresh);
+  std::filesystem::copy_file(dir / "mesh.obj", dir / "fresh" / "mesh.obj");
+  auto& session = s.app->session();
+  session.setPredictorLookup([](const AnnotationDocument&) -> std::optional<PredictionJob> {
+    return PredictionJob([](PredictionProgress& progress) {
+      PredictionResult r;
+      r.category = "none";  // what annotateMeshFile returns for a rejected object
+      r.rejected = true;
+      r.closestCategory = "stove";
+      progress.fraction = 1.0f;
+      return r;
+    });
+  });
+  session.openObject(dir / "fresh" / "mesh.obj", dir / "fresh" / "labels.json");
+  session.runPrediction();
+  for (int i = 0; i < 200 && session.worker().running(); ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    s.frame({});
+  }
+  s.frame({});
+  EXPECT_EQ(s.document().labels().object.category, "none");
+  EXPECT_TRUE(s.document().points().empty());
+  EXPECT_EQ(readLabels(dir / "fresh" / "labels.json").object.category, "none");
+  // The curator picks the category (the object panel's combo calls setCategory).
+  session.document()->setCategory("stove");
+  EXPECT_EQ(readLabels(dir / "fresh" / "labels.json").object.category, "stove");
+}
+
+}  // namespace
+}  // namespace sagrid::ui
