@@ -13,6 +13,7 @@
 #include "core/dataset/dataset.h"
 #include "core/features/vector_channels.h"
 #include "core/labels/labels.h"
+#include "core/mesh/mesh_import.h"
 #include "core/model/affordance_model.h"
 #include "core/model/architecture.h"
 #include "core/plot/plot.h"
@@ -181,7 +182,11 @@ DatasetTrainingResult trainFromDataset(const DatasetTrainingOptions& options) {
       }
       FeatureGrid grid;
       try {
-        grid = extractFeatures(entry.mesh, features);
+        // Features in the frame the labels were written in (a y-up OBJ, as Sweet Home 3D writes
+        // them, would otherwise be read z-up while its targets are mapped from y-up).
+        FeatureOptions objectFeatures = features;
+        objectFeatures.up = upAxisOrZ(labels.object.up);
+        grid = extractFeatures(entry.mesh, objectFeatures);
       } catch (const Error& error) {
         logger()->warn("skipping {}: {}", entry.id, error.what());
         ++data.failed;
