@@ -35,6 +35,7 @@ void setupAnnotate(CLI::App& root) {
   struct Options {
     std::string input, out, category, models, cache, up, instances = "auto";
     std::vector<std::string> counts;
+    int symmetries = 1;
   };
   auto o = std::make_shared<Options>();
   cmd->add_option("input", o->input, "Mesh file or folder of meshes")->required();
@@ -52,6 +53,10 @@ void setupAnnotate(CLI::App& root) {
   cmd->add_option("--instances", o->instances,
                   "auto (local minima + suppression), single (argmin, as the paper)")
       ->check(CLI::IsMember({"auto", "single"}));
+  cmd->add_option("--symmetries", o->symmetries,
+                  "Test-time augmentation: average each field over this many symmetric copies "
+                  "of the object (z quarter turns x reflections; 1 = off, 8 = all)")
+      ->check(CLI::Range(1, 8));
   cmd->add_option("--count", o->counts,
                   "Known instance count per type, e.g. --count heatsource=5 (k-means)");
   cmd->callback([o] {
@@ -59,6 +64,9 @@ void setupAnnotate(CLI::App& root) {
         sagrid::ModelSet::load(o->models.empty() ? defaultModelsDir() : fs::path(o->models));
     sagrid::AnnotateOptions options;
     options.category = o->category;
+    options.symmetries = o->symmetries;
+    options.confidence = sagrid::readConfidenceCalibration(
+        o->models.empty() ? defaultModelsDir() : fs::path(o->models));
     options.features = models.featureOptions();
     options.features.cacheDir = o->cache;
     if (!o->up.empty()) options.features.up = sagrid::parseUpAxis(o->up);

@@ -2,8 +2,10 @@
 
 #include <chrono>
 
+#include "core/annotate/symmetry_averaging.h"
 #include "core/common/error.h"
 #include "core/features/feature_grid.h"
+#include "core/features/vector_channels.h"
 #include "core/geometry/surface_scene.h"
 #include "core/mesh/mesh_import.h"
 
@@ -17,18 +19,34 @@ double secondsSince(Clock::time_point t) {
 }
 }  // namespace
 
-ModelPrediction predictWithModel(const model::AffordanceModel& model, const FeatureGrid& features,
-                                 const SurfaceScene& scene, UpAxis fileUp, InstanceMode mode,
-                                 int count, const ExtractionSettings* settings) {
+PredictedField predictField(const model::AffordanceModel& model, const FeatureGrid& features,
+                            int symmetries) {
+  PredictedField field;
+  field.resolution = features.resolution;
+  field.voxels = features.voxels;
+  if (symmetries > 1) {
+    FeatureOptions featureShape;
+    featureShape.backend = model.card().featureBackend;
+    featureShape.resolution = model.card().gridResolution;
+    field.distances = symmetryAveragedDistances(
+        model, features, vectorChannelTriples(featureChannelNames(featureShape)), symmetries);
+  } else {
+    field.distances = model.predictDistances(features);
+  }
+  return field;
+}
+
+ModelPrediction predictionFromField(const model::AffordanceModel& model, PredictedField field,
+                                    const FeatureGrid& features, const SurfaceScene& scene,
+                                    UpAxis fileUp, InstanceMode mode, int count,
+                                    const ExtractionSettings* settings) {
   ModelPrediction p;
   const auto& card = model.card();
   const ExtractionSettings& extraction = settings ? *settings : card.extraction;
   p.modelName = card.name;
   p.type = card.type;
   p.source = card.sourceTag();
-  p.field.resolution = features.resolution;
-  p.field.voxels = features.voxels;
-  p.field.distances = model.predictDistances(features);
+  p.field = std::move(field);
   switch (mode) {
     case InstanceMode::Single:
       p.points = {argminPoint(p.field, extraction)};
@@ -43,6 +61,13 @@ ModelPrediction predictWithModel(const model::AffordanceModel& model, const Feat
   for (const auto& point : p.points)
     p.surface.push_back(projectToSurface(point.position, features.normalization, scene, fileUp));
   return p;
+}
+
+ModelPrediction predictWithModel(const model::AffordanceModel& model, const FeatureGrid& features,
+                                 const SurfaceScene& scene, UpAxis fileUp, InstanceMode mode,
+                                 int count, const ExtractionSettings* settings, int symmetries) {
+  return predictionFromField(model, predictField(model, features, symmetries), features, scene,
+                             fileUp, mode, count, settings);
 }
 
 AnnotationResult annotateMeshFile(const fs::path& meshFile, const std::string& id,
@@ -113,7 +138,8 @@ AnnotationResult annotateMeshFile(const fs::path& meshFile, const std::string& i
       mode = InstanceMode::Count, n = count->second;
     else if (mode == InstanceMode::Count)
       mode = InstanceMode::Auto;
-    ModelPrediction p = predictWithModel(*model, features, scene, mesh.fileUp, mode, n);
+    ModelPrediction p = predictWithModel(*model, features, scene, mesh.fileUp, mode, n, nullptr,
+                                         options.symmetries);
     for (std::size_t i = 0; i < p.points.size(); ++i) {
       AffordancePoint a;
       a.type = p.type;
@@ -126,8 +152,12 @@ AnnotationResult annotateMeshFile(const fs::path& meshFile, const std::string& i
     }
     r.predictions.push_back(std::move(p));
   }
+  r.objectConfidence = options.confidence.probability(leastSurePointDistance(r.predictions));
   r.labels.extra["prediction"] = {{"category_similarity", r.categorySimilarity},
-                                  {"category_retrieved", r.categoryRetrieved}};
+                                  {"category_retrieved", r.categoryRetrieved},
+                                  {"object_confidence", r.objectConfidence},
+                                  {"object_confidence_calibrated", options.confidence.fitted},
+                                  {"symmetries", options.symmetries}};
   r.modelSeconds = secondsSince(t);
   if (options.onProgress) options.onProgress(1.0f, "done");
   return r;

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "core/annotate/model_set.h"
+#include "core/annotate/object_confidence.h"
 #include "core/labels/labels.h"
 #include "core/points/point_extraction.h"
 #include "core/points/surface_projection.h"
@@ -37,16 +38,33 @@ struct ModelPrediction {
   std::string source;                  // "<model>@<sha prefix>"
 };
 
-// `settings` overrides the card's point-extraction settings when given.
+// The model's distance field over the occupied voxels. `symmetries` > 1 averages it over that many
+// symmetric copies of the object (test-time augmentation, core/annotate/symmetry_averaging.h).
+PredictedField predictField(const model::AffordanceModel& model, const FeatureGrid& features,
+                            int symmetries = 1);
+// Points (instance mode) from a field predicted by `model`, projected onto the surface.
+ModelPrediction predictionFromField(const model::AffordanceModel& model, PredictedField field,
+                                    const FeatureGrid& features, const SurfaceScene& scene,
+                                    UpAxis fileUp, InstanceMode mode, int count = 1,
+                                    const ExtractionSettings* settings = nullptr);
+
+// `settings` overrides the card's point-extraction settings when given. `symmetries` > 1 averages
+// the field over that many symmetric copies of the object (test-time augmentation, see
+// core/annotate/symmetry_averaging.h; 8 = all of them).
 ModelPrediction predictWithModel(const model::AffordanceModel& model, const FeatureGrid& features,
                                  const SurfaceScene& scene, UpAxis fileUp, InstanceMode mode,
-                                 int count = 1, const ExtractionSettings* settings = nullptr);
+                                 int count = 1, const ExtractionSettings* settings = nullptr,
+                                 int symmetries = 1);
 
 struct AnnotateOptions {
   std::string category;     // empty: retrieval
   FeatureOptions features;  // backend must match the cards; cacheDir optional
   InstanceMode mode = InstanceMode::Auto;
   std::map<std::string, int> counts;  // type -> known instance count (InstanceMode::Count)
+  int symmetries = 1;  // test-time augmentation: copies averaged per model (1 = off, 8 = all)
+  // Maps the least-sure point to P(right with one key) (core/annotate/object_confidence.h);
+  // unfitted = the uncalibrated map.
+  ConfidenceCalibration confidence;
   // Checked before each stage (import, features, each model); when set, annotateMeshFile throws
   // Cancelled. May be null.
   const std::atomic<bool>* cancel = nullptr;
@@ -65,6 +83,7 @@ struct AnnotationResult {
   bool rejected = false;
   std::string closestCategory;
   std::vector<ModelPrediction> predictions;
+  double objectConfidence = 0;  // P(right with one key), see AnnotateOptions::confidence
   double importSeconds = 0, featureSeconds = 0, modelSeconds = 0;
 };
 

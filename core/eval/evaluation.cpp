@@ -87,9 +87,15 @@ EvaluationReport evaluateModels(const ModelSet& models, const EvaluationOptions&
       const double mpu = metersPerUnit(labels);
       report.meanOccupiedVoxels += static_cast<double>(grid.voxels.size());
       nlohmann::json object = {{"id", entry.id}, {"category", category}, {"meters_per_unit", mpu}};
+      // One field per model (the timed part: fields + automatic count, as annotate does); every
+      // extraction mode below reads the same field.
       const auto t = Clock::now();
-      for (const auto* model : models.forCategory(category))
-        (void)predictWithModel(*model, grid, scene, mesh.fileUp, InstanceMode::Auto);
+      std::map<std::string, PredictedField> fields;
+      for (const auto* model : models.forCategory(category)) {
+        fields[model->card().name] = predictField(*model, grid, options.symmetries);
+        (void)predictionFromField(*model, fields[model->card().name], grid, scene, mesh.fileUp,
+                                  InstanceMode::Auto);
+      }
       modelSeconds += std::chrono::duration<double>(Clock::now() - t).count();
       auto surfaceOf = [](const ModelPrediction& p) {
         std::vector<Eigen::Vector3f> out;
@@ -97,14 +103,22 @@ EvaluationReport evaluateModels(const ModelSet& models, const EvaluationOptions&
         return out;
       };
       PointEdits objectEdits;
+      std::vector<ModelPrediction> autoPredictions;
       for (const auto* model : models.forCategory(category)) {
         const auto& card = model->card();
         std::vector<Eigen::Vector3f> truth;
         for (const auto* a : labels.ofType(card.type)) truth.push_back(a->position);
         // What the GUI shows: the automatic count. Extra points on a type the object lacks are
         // edits too (deletions), so this comes before skipping types without ground truth.
-        const auto autoPoints =
-            surfaceOf(predictWithModel(*model, grid, scene, mesh.fileUp, InstanceMode::Auto));
+        const PredictedField& field = fields.at(card.name);
+        auto predict = [&](InstanceMode mode, int count = 1,
+                           const ExtractionSettings* settings = nullptr) {
+          return surfaceOf(predictionFromField(*model, field, grid, scene, mesh.fileUp, mode,
+                                               count, settings));
+        };
+        autoPredictions.push_back(
+            predictionFromField(*model, field, grid, scene, mesh.fileUp, InstanceMode::Auto));
+        const auto autoPoints = surfaceOf(autoPredictions.back());
         const PointEdits edits = pointEdits(matchPoints(autoPoints, truth, mpu));
         objectEdits += edits;
         object["edits"][card.name] = {{"drags", edits.drags},
@@ -120,14 +134,10 @@ EvaluationReport evaluateModels(const ModelSet& models, const EvaluationOptions&
         };
         ExtractionSettings paper = card.extraction;
         paper.refineVoxels = 0;  // the paper's argmin: a voxel centre
-        record(kArgmin, surfaceOf(predictWithModel(*model, grid, scene, mesh.fileUp,
-                                                   InstanceMode::Single, 1, &paper)));
-        record(kRefined,
-               surfaceOf(predictWithModel(*model, grid, scene, mesh.fileUp, InstanceMode::Single)));
+        record(kArgmin, predict(InstanceMode::Single, 1, &paper));
+        record(kRefined, predict(InstanceMode::Single));
         record(kAuto, autoPoints);
-        record(kKMeans,
-               surfaceOf(predictWithModel(*model, grid, scene, mesh.fileUp, InstanceMode::Count,
-                                          static_cast<int>(truth.size()))));
+        record(kKMeans, predict(InstanceMode::Count, static_cast<int>(truth.size())));
         for (Method m : {kCosine, kL2}) {
           const std::size_t v =
               embeddingSearchVoxel(grid, card.affordanceFeatureMean,
@@ -140,6 +150,12 @@ EvaluationReport evaluateModels(const ModelSet& models, const EvaluationOptions&
         for (const auto& p : truth) t.push_back({p.x(), p.y(), p.z()});
         object["truth"][card.name] = t;
       }
+      const double signal = leastSurePointDistance(autoPredictions);
+      report.confidenceSignal.push_back(signal);
+      report.confidence.push_back(options.confidence.probability(signal));
+      report.oneKey.push_back(objectEdits.total() == 0);
+      object["confidence"] = report.confidence.back();
+      object["one_key"] = objectEdits.total() == 0;
       effort.addObject(objectEdits);
       effortByCategory[category].addObject(objectEdits);
       report.perObject.push_back(object);
@@ -164,6 +180,8 @@ EvaluationReport evaluateModels(const ModelSet& models, const EvaluationOptions&
     report.methods.push_back(mm);
   }
   report.effort = effort.result();
+  report.confidenceCalibrated = options.confidence.fitted;
+  report.reliability = reliabilityReport(report.confidence, report.oneKey);
   for (const auto& [category, a] : effortByCategory) report.effortByCategory[category] = a.result();
   return report;
 }
@@ -223,6 +241,9 @@ std::string evaluationMarkdown(const EvaluationReport& r) {
   };
   effortRow("all: ", r.effort);
   for (const auto& [category, e] : r.effortByCategory) effortRow(category + ": ", e);
+  md << "\n## Object confidence (" << (r.confidenceCalibrated ? "calibrated" : "uncalibrated")
+     << "): does it predict \"right with one key\"?\n\n"
+     << reliabilityMarkdown(r.reliability);
   return md.str();
 }
 
@@ -256,6 +277,8 @@ nlohmann::json evaluationJson(const EvaluationReport& r) {
   j["curator_effort"] = effortJson(r.effort);
   for (const auto& [category, e] : r.effortByCategory)
     j["curator_effort_by_category"][category] = effortJson(e);
+  j["confidence_calibrated"] = r.confidenceCalibrated;
+  j["reliability"] = toJson(r.reliability);
   j["per_object"] = r.perObject;
   return j;
 }
@@ -278,6 +301,7 @@ void writeEvaluationReport(const EvaluationReport& r, const fs::path& outDir) {
     chart.groups.push_back(g);
   }
   plot::writeBarChartPng(outDir / "eval.png", chart, 1000, 500);
+  writeReliabilityPng(outDir / "reliability.png", r.reliability);
 }
 
 }  // namespace sagrid

@@ -13,14 +13,18 @@
 #include <vector>
 
 #include "core/annotate/model_set.h"
+#include "core/annotate/object_confidence.h"
 #include "core/eval/curator_effort.h"
 #include "core/eval/metrics.h"
+#include "core/eval/reliability.h"
 
 namespace sagrid {
 
 struct EvaluationOptions {
   std::filesystem::path dataDir;  // a dataset; when it has a val/ split, that is used
   FeatureOptions features;        // from the models; cacheDir empty = DATA/.sagrid-cache
+  int symmetries = 1;             // test-time augmentation for SAGrid (see predictWithModel)
+  ConfidenceCalibration confidence;  // object confidence map (the models folder's, or unfitted)
   std::function<void(std::size_t, std::size_t, const std::string&)> onProgress;
 };
 
@@ -40,6 +44,12 @@ struct EvaluationReport {
                                  // + projection, features cached
   CuratorEffort effort;  // SAGrid auto count, all objects
   std::map<std::string, CuratorEffort> effortByCategory;
+  // Per evaluated object: the confidence signal (least-sure point), its calibrated confidence and
+  // whether the automatic prediction was right with one key; and their reliability.
+  std::vector<double> confidenceSignal, confidence;
+  std::vector<bool> oneKey;
+  bool confidenceCalibrated = false;
+  ReliabilityReport reliability;
   nlohmann::json perObject = nlohmann::json::array();
 };
 

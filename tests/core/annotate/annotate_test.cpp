@@ -86,6 +86,37 @@ TEST_F(AnnotateTest, PredictsEveryModelOfTheRetrievedCategoryOnTheSurface) {
   }
 }
 
+TEST_F(AnnotateTest, WritesTheObjectConfidenceOfTheLeastSurePoint) {
+  annotate.category = "stove";
+  annotate.confidence.fitted = true;
+  annotate.confidence.intercept = 1.0;
+  annotate.confidence.slope = -0.5;
+  const AnnotationResult r = annotateMeshFile(entries[0].mesh, "s", *set, annotate, dir);
+  const double expected = annotate.confidence.probability(leastSurePointDistance(r.predictions));
+  EXPECT_DOUBLE_EQ(r.objectConfidence, expected);
+  EXPECT_DOUBLE_EQ(r.labels.extra["prediction"]["object_confidence"].get<double>(), expected);
+  EXPECT_TRUE(r.labels.extra["prediction"]["object_confidence_calibrated"].get<bool>());
+}
+
+TEST_F(AnnotateTest, SymmetryAveragingKeepsThePointsOnTheSurface) {
+  annotate.category = "stove";
+  annotate.symmetries = 8;
+  const AnnotationResult r = annotateMeshFile(entries[0].mesh, "s", *set, annotate, dir);
+  EXPECT_EQ(r.labels.extra["prediction"]["symmetries"].get<int>(), 8);
+  ASSERT_EQ(r.predictions.size(), 2u);
+  // The averaged field differs from the plain one (the untrained model is not symmetric).
+  const ModelPrediction plain = predictWithModel(*set->forCategory("stove")[0], stoveFeatures,
+                                                 SurfaceScene(importMesh(entries[0].mesh)),
+                                                 UpAxis::Y, InstanceMode::Auto);
+  ASSERT_EQ(plain.field.distances.size(), r.predictions[0].field.distances.size());
+  EXPECT_NE(plain.field.distances, r.predictions[0].field.distances);
+  const Mesh mesh = importMesh(entries[0].mesh);
+  const SurfaceScene scene(mesh);
+  for (const auto& a : r.labels.affordances)
+    EXPECT_LT(scene.closestPoint(fileToZUp(a.position, UpAxis::Y)).distance,
+              1e-4f * mesh.bounds().diagonal().norm());
+}
+
 TEST_F(AnnotateTest, SingleAndCountModesGiveThatManyPoints) {
   annotate.category = "stove";
   annotate.mode = InstanceMode::Single;
