@@ -80,7 +80,7 @@ void setupCategory(CLI::App& root) {
     std::vector<std::string> data;
     std::string out, models, exclude, split, splitOut, up;
     double threshold = -1, l2 = 1e-2;
-    int iterations = 3000;
+    int iterations = 20000;
     bool retrieval = false, linear = false;
   };
   auto o = std::make_shared<Options>();
