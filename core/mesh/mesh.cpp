@@ -84,12 +84,31 @@ Eigen::Vector3f upAxisVector(UpAxis up) {
   return fileToZUpRotation(up).row(2).transpose();
 }
 
+// Written out as signed permutations (the rotations above, row by row) rather than as matrix
+// products: a product turns -0.0 into +0.0, which changed the bytes of every y-up GLB the
+// generator writes (the bench split is promised byte-identical for a generator version).
 Eigen::Vector3f fileToZUp(const Eigen::Vector3f& p, UpAxis fileUp) {
-  return fileToZUpRotation(fileUp) * p;
+  switch (fileUp) {
+    case UpAxis::PosX: return {-p.z(), p.y(), p.x()};
+    case UpAxis::NegX: return {p.z(), p.y(), -p.x()};
+    case UpAxis::PosY: return {p.x(), -p.z(), p.y()};
+    case UpAxis::NegY: return {p.x(), p.z(), -p.y()};
+    case UpAxis::NegZ: return {p.x(), -p.y(), -p.z()};
+    case UpAxis::PosZ:
+    default: return p;
+  }
 }
 
 Eigen::Vector3f zUpToFile(const Eigen::Vector3f& p, UpAxis fileUp) {
-  return fileToZUpRotation(fileUp).transpose() * p;
+  switch (fileUp) {
+    case UpAxis::PosX: return {p.z(), p.y(), -p.x()};
+    case UpAxis::NegX: return {-p.z(), p.y(), p.x()};
+    case UpAxis::PosY: return {p.x(), p.z(), -p.y()};
+    case UpAxis::NegY: return {p.x(), -p.z(), p.y()};
+    case UpAxis::NegZ: return {p.x(), -p.y(), -p.z()};
+    case UpAxis::PosZ:
+    default: return p;
+  }
 }
 
 }  // namespace sagrid

@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include <Eigen/LU>
 
 #include "core/generate/dataset_generator.h"
@@ -34,7 +36,12 @@ TEST(UpAxisRotation, ProperExactAndRoundTrips) {
     EXPECT_EQ(fileToZUp(upAxisVector(up), up), Eigen::Vector3f::UnitZ()) << toString(up);
     EXPECT_EQ(zUpToFile(fileToZUp(p, up), up), p) << toString(up);  // exact: entries are 0/+-1
     EXPECT_EQ(fileToZUp(zUpToFile(p, up), up), p) << toString(up);
+    EXPECT_EQ(fileToZUp(p, up), r * p) << toString(up);  // the conversion is this rotation
+    EXPECT_EQ(zUpToFile(p, up), r.transpose() * p) << toString(up);
   }
+  // Signed zeros survive (a y-up GLB written by the generator keeps its exact bytes).
+  EXPECT_TRUE(std::signbit(zUpToFile({1, 0.0f, 2}, UpAxis::PosY).z()));
+  EXPECT_TRUE(std::signbit(fileToZUp({1, 2, 0.0f}, UpAxis::PosY).y()));
   // The y-up turn is the one glTF files always had.
   EXPECT_EQ(fileToZUp({1, 2, 3}, UpAxis::Y), Eigen::Vector3f(1, -3, 2));
   EXPECT_EQ(upAxisVector(UpAxis::NegX), Eigen::Vector3f(-1, 0, 0));
