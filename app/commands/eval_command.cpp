@@ -8,6 +8,7 @@
 #include <memory>
 
 #include "app/command_registry.h"
+#include "app/commands/learning_curve_options.h"
 #include "app/progress_bar.h"
 #include "core/common/error.h"
 #include "core/eval/architecture_sweep.h"
@@ -55,7 +56,11 @@ void setupEval(CLI::App& root) {
       ->check(CLI::NonNegativeNumber);
   cmd->add_option("--mode", o->mode, "With --sweep: sparse or dense")
       ->check(CLI::IsMember({"sparse", "dense"}));
-  cmd->callback([o] {
+  const auto learningCurve = sagrid::app::addLearningCurveOptions(*cmd);
+  cmd->callback([o, learningCurve, cmd] {
+    if (sagrid::app::runLearningCurveIfAsked(*learningCurve, *cmd, o->data, o->out, o->cache,
+                                             o->minutes, o->epochs))
+      return;
     std::unique_ptr<sagrid::app::ProgressBar> bar;
     auto progress = [&](std::size_t done, std::size_t total, const std::string& id) {
       if (!bar) bar = std::make_unique<sagrid::app::ProgressBar>("eval", total);

@@ -1,0 +1,384 @@
+#include "core/eval/learning_curve.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <map>
+#include <numeric>
+#include <random>
+#include <set>
+#include <sstream>
+
+#include "core/annotate/model_set.h"
+#include "core/common/atomic_file.h"
+#include "core/common/error.h"
+#include "core/dataset/dataset.h"
+#include "core/eval/evaluation.h"
+#include "core/labels/labels.h"
+#include "core/model/model_card.h"
+#include "core/plot/plot.h"
+#include "core/training/dataset_training.h"
+
+namespace sagrid {
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace {
+
+constexpr int kDefaultEpochs = 5;
+
+struct RealObject {
+  DatasetEntry entry;
+  std::string category;
+  std::set<std::string> types;
+};
+
+std::string kLabel(int k) { return k == kAllObjects ? "all" : std::to_string(k); }
+
+// A dataset folder that lists `objects` by absolute path (the objects stay where they are).
+void writeSubsetDataset(const fs::path& dir, const std::vector<const RealObject*>& objects) {
+  std::string lines;
+  for (const auto* o : objects)
+    lines += json{{"id", o->entry.id},
+                  {"category", o->category},
+                  {"mesh", fs::absolute(o->entry.mesh).lexically_normal().string()},
+                  {"labels", fs::absolute(o->entry.labels).lexically_normal().string()}}
+                 .dump() +
+             "\n";
+  fs::create_directories(dir);
+  writeFileAtomic(dir / "manifest.jsonl", lines);
+}
+
+void copyModelFiles(const fs::path& from, const fs::path& to, const std::string& only = "") {
+  fs::create_directories(to);
+  for (const auto& e : fs::directory_iterator(from)) {
+    if (!e.is_regular_file()) continue;
+    const std::string name = e.path().filename().string();
+    if (!only.empty() && name != only + ".json" && name != only + ".pt") continue;
+    fs::copy_file(e.path(), to / name, fs::copy_options::overwrite_existing);
+  }
+}
+
+struct Stats {
+  double mean = NAN, sd = NAN, kUsed = 0;
+  int folds = 0;
+};
+
+Stats statsOf(const LearningCurveReport& r, const std::string& model, int k) {
+  Stats s;
+  std::vector<double> values;
+  double kSum = 0;
+  for (const auto& p : r.points)
+    if (p.model == model && p.k == k && p.testObjects > 0 && std::isfinite(p.paperError)) {
+      values.push_back(p.paperError);
+      kSum += p.kUsed;
+    }
+  s.folds = static_cast<int>(values.size());
+  if (values.empty()) return s;
+  s.kUsed = kSum / values.size();
+  s.mean = std::accumulate(values.begin(), values.end(), 0.0) / values.size();
+  double squares = 0;
+  for (double v : values) squares += (v - s.mean) * (v - s.mean);
+  s.sd = values.size() > 1 ? std::sqrt(squares / (values.size() - 1)) : 0.0;
+  return s;
+}
+
+std::string centimetres(double metres) {
+  if (!std::isfinite(metres)) return "–";
+  char b[32];
+  std::snprintf(b, sizeof b, "%.1f", metres * 100);
+  return b;
+}
+
+}  // namespace
+
+std::vector<std::vector<std::size_t>> kFoldSplit(std::size_t count, int folds, unsigned seed) {
+  if (count < 2 || folds < 2)
+    throw InvalidArgument("learning curve: k-fold needs at least 2 objects and 2 folds (got " +
+                          std::to_string(count) + " objects, " + std::to_string(folds) +
+                          " folds)");
+  const std::size_t f = std::min<std::size_t>(static_cast<std::size_t>(folds), count);
+  std::vector<std::size_t> order(count);
+  std::iota(order.begin(), order.end(), 0);
+  std::mt19937 rng(seed);
+  std::shuffle(order.begin(), order.end(), rng);
+  std::vector<std::vector<std::size_t>> result(f);
+  for (std::size_t i = 0; i < count; ++i) result[i % f].push_back(order[i]);
+  return result;
+}
+
+std::vector<int> parseLearningCurveKs(const std::string& text) {
+  std::vector<int> ks;
+  std::stringstream in(text);
+  std::string item;
+  while (std::getline(in, item, ',')) {
+    if (item == "all") {
+      ks.push_back(kAllObjects);
+      continue;
+    }
+    char* end = nullptr;
+    const long k = std::strtol(item.c_str(), &end, 10);
+    if (item.empty() || *end != '\0' || k < 0)
+      throw InvalidArgument("--ks: \"" + item +
+                            "\" is not a count of objects (expected e.g. 0,2,5,10,all)");
+    ks.push_back(static_cast<int>(k));
+  }
+  if (ks.empty()) throw InvalidArgument("--ks: no values (expected e.g. 0,2,5,10,all)");
+  return ks;
+}
+
+LearningCurveReport runLearningCurve(const LearningCurveOptions& options) {
+  auto say = [&](const std::string& line) {
+    if (options.onMessage) options.onMessage(line);
+  };
+  std::vector<RealObject> objects;
+  for (const auto& e : readDataset(options.dataDir)) {
+    RealObject o{e, e.category, {}};
+    const ObjectLabels labels = readLabels(e.labels);
+    if (o.category.empty()) o.category = labels.object.category;
+    for (const auto& a : labels.affordances) o.types.insert(a.type);
+    objects.push_back(std::move(o));
+  }
+  LearningCurveReport report;
+  report.dataDir = options.dataDir;
+  report.initDir = options.initDir;
+  report.seed = options.seed;
+  report.ks = options.ks;
+  report.replay = options.replay;
+  report.epochs = options.epochs > 0 || options.minutes > 0 ? options.epochs : kDefaultEpochs;
+  report.minutes = options.minutes;
+
+  // The models: those asked for, else every init model with objects of its type in the data.
+  std::set<std::string> available;
+  for (const auto& card : model::listModelCards(options.initDir))
+    available.insert(card.stem().string());
+  auto hasObjects = [&](const std::string& name) {
+    const auto [category, type] = model::splitModelName(name);
+    for (const auto& o : objects)
+      if (o.category == category && o.types.count(type)) return true;
+    return false;
+  };
+  if (options.modelNames.empty()) {
+    for (const auto& name : available)
+      if (hasObjects(name)) report.modelNames.push_back(name);
+    if (report.modelNames.empty())
+      throw InvalidArgument("learning curve: " + options.dataDir.string() +
+                            " has no object for any model in " + options.initDir.string());
+  } else {
+    for (const auto& name : options.modelNames) {
+      if (!available.count(name))
+        throw ModelError("learning curve: " + options.initDir.string() + " has no model " + name);
+      if (!hasObjects(name))
+        throw InvalidArgument("learning curve: " + options.dataDir.string() + " has no object for " +
+                              name);
+      report.modelNames.push_back(name);
+    }
+  }
+
+  const auto split = kFoldSplit(objects.size(), options.folds, options.seed);
+  for (const auto& fold : split) {
+    report.folds.emplace_back();
+    for (std::size_t i : fold) report.folds.back().push_back(objects[i].entry.id);
+  }
+  FeatureOptions features = ModelSet::load(options.initDir).featureOptions();
+  features.cacheDir =
+      options.cacheDir.empty() ? options.dataDir / ".sagrid-cache" : options.cacheDir;
+  std::optional<TrainingDataSource> replay;
+  if (options.replay) {
+    if (options.replayDir.empty())
+      replay = defaultReplaySource();
+    else
+      replay = TrainingDataSource{options.replayDir, 1.0, "replay", {}};
+  }
+
+  const fs::path work = options.outDir / "work";
+  for (std::size_t f = 0; f < split.size(); ++f) {
+    const int foldNumber = static_cast<int>(f) + 1;
+    const fs::path foldDir = work / ("fold" + std::to_string(foldNumber));
+    std::vector<const RealObject*> test, pool;
+    for (std::size_t i : split[f]) test.push_back(&objects[i]);
+    // The training folds' objects in their seeded order: the k objects of a model are the first k
+    // of its type, so a larger k adds objects to a smaller k's (nested subsets, less noise).
+    for (std::size_t g = 0; g < split.size(); ++g)
+      if (g != f)
+        for (std::size_t i : split[g]) pool.push_back(&objects[i]);
+    writeSubsetDataset(foldDir / "test", test);
+
+    std::map<std::pair<std::string, int>, fs::path> tuned;  // (model, k used) -> its folder
+    std::map<std::vector<int>, std::vector<LearningCurvePoint>> evaluated;  // by all k used
+    for (const int k : options.ks) {
+      const fs::path modelsDir = foldDir / ("k" + kLabel(k)) / "models";
+      fs::remove_all(modelsDir);
+      copyModelFiles(options.initDir, modelsDir);
+      std::vector<int> kUsed;
+      for (const auto& name : report.modelNames) {
+        const auto [category, type] = model::splitModelName(name);
+        std::vector<const RealObject*> ofType;
+        for (const auto* o : pool)
+          if (o->category == category && o->types.count(type)) ofType.push_back(o);
+        const int used = k == kAllObjects ? static_cast<int>(ofType.size())
+                                          : std::min(k, static_cast<int>(ofType.size()));
+        kUsed.push_back(used);
+        if (used == 0) continue;
+        const auto key = std::make_pair(name, used);
+        if (tuned.count(key)) {
+          copyModelFiles(tuned[key], modelsDir, name);
+          continue;
+        }
+        const fs::path dataDir = foldDir / (name + ".k" + std::to_string(used));
+        writeSubsetDataset(dataDir, {ofType.begin(), ofType.begin() + used});
+        DatasetTrainingOptions t;
+        t.datasets.push_back({dataDir, 1.0, "data", features.cacheDir});
+        if (replay) t.datasets.push_back(*replay);  // weight 1: drawn 1:1 with the k objects
+        t.init = options.initDir;
+        t.modelName = name;
+        t.features = features;
+        t.features.cacheDir.clear();  // per dataset (above)
+        t.outDir = modelsDir;
+        t.training.epochs = report.epochs;
+        t.training.minutes = options.minutes;
+        t.training.learningRate = kFineTuneLearningRate;
+        t.training.seed = options.seed;
+        t.command = "sagrid eval --learning-curve (fold " + std::to_string(foldNumber) + ", k " +
+                    std::to_string(used) + ")";
+        const auto start = std::chrono::steady_clock::now();
+        const auto result = trainFromDataset(t);
+        tuned[key] = modelsDir;
+        char line[256];
+        std::snprintf(line, sizeof line,
+                      "fold %d/%zu k=%s %s: fine-tuned on %d object(s)%s, %d epoch(s), loss "
+                      "%.4f, %.0f s",
+                      foldNumber, split.size(), kLabel(k).c_str(), name.c_str(), used,
+                      replay ? " + replay" : "",
+                      result.curve.empty() ? 0 : result.curve.back().epoch,
+                      result.curve.empty() ? 0.0 : result.curve.back().loss,
+                      std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
+                          .count());
+        say(line);
+      }
+      // Same models as an earlier k of this fold (k beyond what the fold holds): same result.
+      if (!evaluated.count(kUsed)) {
+        EvaluationOptions e;
+        e.dataDir = foldDir / "test";
+        e.features = features;
+        const EvaluationReport r = evaluateModels(ModelSet::load(modelsDir), e);
+        std::vector<LearningCurvePoint> points;
+        for (std::size_t m = 0; m < report.modelNames.size(); ++m) {
+          LearningCurvePoint p;
+          p.model = report.modelNames[m];
+          p.fold = foldNumber;
+          p.kUsed = kUsed[m];
+          p.paperError = NAN;
+          const auto& byModel = r.methods.front().byModel;  // "SAGrid argmin (paper)"
+          if (const auto it = byModel.find(p.model); it != byModel.end()) {
+            p.testObjects = it->second.objects;
+            p.paperError = it->second.objects ? it->second.paperError : NAN;
+          }
+          points.push_back(p);
+        }
+        evaluated[kUsed] = points;
+      }
+      for (auto p : evaluated[kUsed]) {
+        p.k = k;
+        report.points.push_back(p);
+        say("fold " + std::to_string(foldNumber) + " k=" + kLabel(k) + " " + p.model + ": " +
+            centimetres(p.paperError) + " cm on " + std::to_string(p.testObjects) +
+            " held-out object(s)");
+      }
+    }
+  }
+  return report;
+}
+
+std::string learningCurveMarkdown(const LearningCurveReport& r) {
+  std::ostringstream md;
+  md << "# Learning curve\n\n"
+     << "Fine-tuning " << r.initDir.string() << " on k objects of " << r.dataDir.string() << " ("
+     << r.folds.size() << "-fold, seed " << r.seed << ", "
+     << (r.minutes > 0 && r.epochs == 0 ? std::to_string(r.minutes) + " min"
+                                        : std::to_string(r.epochs) + " epoch(s)")
+     << " per fine-tune, " << (r.replay ? "with" : "without")
+     << " bench replay). Error: the paper's metric (distance from the single predicted point to "
+        "the nearest ground truth) on the held-out fold, mean ± sd across folds, in cm. k = 0 "
+        "is the init model.\n";
+  for (const auto& model : r.modelNames) {
+    md << "\n## " << model << "\n\n| k | k used (mean) | folds | error (cm) | sd (cm) |\n"
+       << "|---|---|---|---|---|\n";
+    for (int k : r.ks) {
+      const Stats s = statsOf(r, model, k);
+      char used[32];
+      std::snprintf(used, sizeof used, "%.1f", s.kUsed);
+      md << "| " << kLabel(k) << " | " << used << " | " << s.folds << " | " << centimetres(s.mean)
+         << " | " << centimetres(s.sd) << " |\n";
+    }
+  }
+  return md.str();
+}
+
+json learningCurveJson(const LearningCurveReport& r) {
+  auto number = [](double v) { return std::isfinite(v) ? json(v) : json(nullptr); };
+  json j;
+  j["data"] = fs::absolute(r.dataDir).lexically_normal().string();
+  j["init"] = fs::absolute(r.initDir).lexically_normal().string();
+  j["seed"] = r.seed;
+  j["folds"] = r.folds;
+  j["epochs"] = r.epochs;
+  j["minutes"] = r.minutes;
+  j["replay"] = r.replay;
+  j["ks"] = json::array();
+  for (int k : r.ks) j["ks"].push_back(kLabel(k));
+  j["points"] = json::array();
+  for (const auto& p : r.points)
+    j["points"].push_back({{"model", p.model},
+                           {"fold", p.fold},
+                           {"k", kLabel(p.k)},
+                           {"k_used", p.kUsed},
+                           {"test_objects", p.testObjects},
+                           {"paper_error_m", number(p.paperError)}});
+  j["summary"] = json::object();
+  for (const auto& model : r.modelNames)
+    for (int k : r.ks) {
+      const Stats s = statsOf(r, model, k);
+      j["summary"][model].push_back({{"k", kLabel(k)},
+                                     {"k_used_mean", s.kUsed},
+                                     {"folds", s.folds},
+                                     {"paper_error_m_mean", number(s.mean)},
+                                     {"paper_error_m_sd", number(s.sd)}});
+    }
+  return j;
+}
+
+void writeLearningCurveReport(const LearningCurveReport& r, const fs::path& outDir) {
+  fs::create_directories(outDir);
+  writeFileAtomic(outDir / "learning_curve.md", learningCurveMarkdown(r));
+  writeFileAtomic(outDir / "learning_curve.json", learningCurveJson(r).dump(2) + "\n");
+  const plot::Color palette[] = {{31, 119, 180}, {255, 127, 14}, {44, 160, 44}, {214, 39, 40},
+                                 {148, 103, 189}, {140, 86, 75}};
+  plot::LinePlot p;
+  p.title = "Fine-tuning learning curve (" + std::to_string(r.folds.size()) + " folds)";
+  p.xLabel = "k (real objects fine-tuned on)";
+  p.yLabel = "paper error (cm), mean and +-1 sd";
+  for (std::size_t m = 0; m < r.modelNames.size(); ++m) {
+    plot::Series mean, low, high;
+    mean.name = r.modelNames[m];
+    low.name = r.modelNames[m] + " -1 sd";
+    high.name = r.modelNames[m] + " +1 sd";
+    mean.color = low.color = high.color = palette[m % std::size(palette)];
+    for (int k : r.ks) {
+      const Stats s = statsOf(r, r.modelNames[m], k);
+      if (!std::isfinite(s.mean)) continue;
+      mean.x.push_back(s.kUsed), mean.y.push_back(100 * s.mean);
+      low.x.push_back(s.kUsed), low.y.push_back(100 * (s.mean - s.sd));
+      high.x.push_back(s.kUsed), high.y.push_back(100 * (s.mean + s.sd));
+    }
+    if (mean.x.empty()) continue;
+    for (auto* c : {&low.color, &high.color})
+      for (auto& channel : *c) channel = static_cast<unsigned char>((channel + 255) / 2);
+    p.series.push_back(mean);
+    p.series.push_back(low);
+    p.series.push_back(high);
+  }
+  if (!p.series.empty()) writeLinePlotPng(outDir / "learning_curve.png", p);
+}
+
+}  // namespace sagrid
