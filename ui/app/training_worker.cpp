@@ -77,10 +77,22 @@ void TrainingWorker::run(TrainingRequest request) {
     const double steps = double(types.size()) + 1.0;  // models, then the queue
     for (std::size_t t = 0; t < types.size(); ++t) {
       DatasetTrainingOptions options;
-      options.dataDir = request.dataset;
       options.modelName = request.category + "." + types[t];
+      options.datasets.push_back({request.dataset, 1.0, "data", {}});
+      // The same fine-tune as `sagrid train --init DIR` (replay weighted 1:1, fine-tune rate).
+      if (!request.initDir.empty() &&
+          fs::is_regular_file(request.initDir / (options.modelName + ".json"))) {
+        options.init = request.initDir;
+        options.training.learningRate = kFineTuneLearningRate;
+        if (request.replay) {
+          update([&](TrainingStatus& s) { s.phase = "replay: bench split (generated if missing)"; });
+          options.datasets.push_back(defaultReplaySource());
+        }
+      }
       options.outDir = request.outDir;
-      options.command = "sagrid gui (Train panel)";
+      options.command = options.init.empty() ? "sagrid gui (Train panel)"
+                                             : "sagrid gui (Train panel, fine-tune of " +
+                                                   request.initDir.string() + ")";
       options.training.minutes = request.minutesPerModel;
       options.training.epochs = request.epochs;
       options.training.cancel = &m_cancel;

@@ -24,6 +24,10 @@ struct TrainingRequest {
   double minutesPerModel = 1.0;
   int epochs = 0;                   // > 0: fixed epoch count instead of the time budget
   std::vector<QueueEntry> requeue;  // objects to predict again afterwards
+  // Fine-tune these models (the ones the GUI loaded) instead of training from scratch, as
+  // `sagrid train --init DIR` does; a type without a model there is trained from scratch.
+  std::filesystem::path initDir;
+  bool replay = true;  // with initDir: the bench split's train half replayed 1:1 beside the set
 };
 
 struct TrainingStatus {

@@ -6,6 +6,10 @@
 
 #include "ui/app/log_buffer.h"
 
+namespace sagrid {
+struct ConfidenceCalibration;
+}
+
 namespace sagrid::ui {
 
 class Session;
@@ -21,14 +25,18 @@ struct PanelLayout {
 
 // Returns true when the user chose File -> Quit.
 bool drawMainMenu(Session& session, FileBrowser& browser);
-void drawQueuePanel(Session& session);
+// `confidence`: the models' confidence map, for the precision measured at the auto-accept setting.
+void drawQueuePanel(Session& session, const ConfidenceCalibration& confidence);
 void drawPointsPanel(Session& session);
 void drawFieldPanel(Session& session, const SceneRenderer& scene);
 void drawObjectPanel(Session& session);
 void drawLogPanel(const LogBuffer& log);
 // Retrain the open object's category on the training set, live loss curve, then re-predict.
+// `initModels`: the models the GUI uses, fine-tuned (with the bench replay) instead of trained
+// from scratch; empty = from scratch.
 void drawTrainPanel(Session& session, TrainingWorker& worker,
-                    const std::filesystem::path& modelsOut);
+                    const std::filesystem::path& modelsOut,
+                    const std::filesystem::path& initModels = {});
 void drawHelpOverlay(Session& session);
 void drawErrorModal(Session& session);
 // Labels next to the markers, the axes gizmo and the colour legend, over the 3D viewport.

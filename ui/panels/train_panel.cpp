@@ -9,19 +9,23 @@
 namespace sagrid::ui {
 
 void drawTrainPanel(Session& session, TrainingWorker& worker,
-                    const std::filesystem::path& modelsOut) {
+                    const std::filesystem::path& modelsOut,
+                    const std::filesystem::path& initModels) {
   if (!ImGui::CollapsingHeader("Train")) return;
   static float minutes = 1.0f;  // UI preference only, not document state
   const AnnotationDocument* doc = session.document();
   const std::string category = doc ? doc->labels().object.category : std::string();
   ImGui::TextWrapped("Training set: %s", session.trainingSetDir.string().c_str());
+  if (!initModels.empty())
+    ImGui::TextWrapped("Fine-tunes %s with the bench replay", initModels.string().c_str());
   const TrainingStatus status = worker.status();
   if (!status.running) {
     ImGui::SetNextItemWidth(-110);
     ImGui::SliderFloat("min / model", &minutes, 0.2f, 10.0f, "%.1f");
     ImGui::BeginDisabled(category.empty());
-    const std::string label =
-        category.empty() ? "Train (set a category)" : "Train " + category + " models";
+    const std::string label = category.empty()        ? "Train (set a category)"
+                              : initModels.empty() ? "Train " + category + " models"
+                                                   : "Fine-tune " + category + " models";
     if (ImGui::Button(label.c_str(), ImVec2(-1, 0))) {
       TrainingRequest request;
       request.dataset = session.trainingSetDir;
@@ -29,6 +33,7 @@ void drawTrainPanel(Session& session, TrainingWorker& worker,
       request.outDir = modelsOut;
       request.minutesPerModel = minutes;
       request.requeue = session.queue().entries();
+      request.initDir = initModels;
       worker.start(std::move(request));
     }
     ImGui::EndDisabled();
