@@ -6,10 +6,6 @@
 
 #include "ui/app/log_buffer.h"
 
-namespace sagrid {
-struct ConfidenceCalibration;
-}
-
 namespace sagrid::ui {
 
 class Session;
@@ -25,8 +21,7 @@ struct PanelLayout {
 
 // Returns true when the user chose File -> Quit.
 bool drawMainMenu(Session& session, FileBrowser& browser);
-// `confidence`: the models' confidence map, for the precision measured at the auto-accept setting.
-void drawQueuePanel(Session& session, const ConfidenceCalibration& confidence);
+void drawQueuePanel(Session& session);
 void drawPointsPanel(Session& session);
 void drawFieldPanel(Session& session, const SceneRenderer& scene);
 void drawObjectPanel(Session& session);
