@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <limits>
 #include <sstream>
 
 #include "core/annotate/annotate.h"
@@ -33,6 +34,22 @@ double ConfidenceCalibration::probability(double d) const {
   return sigmoid(intercept + slope * d / kDistanceUnit);
 }
 
+AutoAcceptRow autoAcceptAt(const std::vector<double>& confidence, const std::vector<bool>& right,
+                           double threshold) {
+  if (confidence.empty() || confidence.size() != right.size())
+    throw InvalidArgument("auto-accept: " + std::to_string(confidence.size()) +
+                          " confidences for " + std::to_string(right.size()) + " outcomes");
+  AutoAcceptRow row;
+  row.threshold = threshold;
+  std::size_t accepted = 0, correct = 0;
+  for (std::size_t i = 0; i < confidence.size(); ++i)
+    if (confidence[i] >= threshold) ++accepted, correct += right[i];
+  row.coverage = static_cast<double>(accepted) / confidence.size();
+  row.precision = accepted ? static_cast<double>(correct) / accepted
+                           : std::numeric_limits<double>::quiet_NaN();
+  return row;
+}
+
 ConfidenceCalibration fitConfidence(const std::vector<double>& d, const std::vector<bool>& y) {
   if (d.empty() || d.size() != y.size())
     throw InvalidArgument("confidence fit: " + std::to_string(d.size()) + " signals for " +
@@ -61,6 +78,8 @@ ConfidenceCalibration fitConfidence(const std::vector<double>& d, const std::vec
   c.slope = b;
   c.objects = d.size();
   c.oneKeyShare = static_cast<double>(std::count(y.begin(), y.end(), true)) / d.size();
+  for (double signal : d) c.measuredConfidence.push_back(c.probability(signal));
+  c.measuredRight = y;
   return c;
 }
 
@@ -72,7 +91,9 @@ nlohmann::json toJson(const ConfidenceCalibration& c) {
           {"slope_per_0.01", c.slope},
           {"objects", c.objects},
           {"one_key_share", c.oneKeyShare},
-          {"fitted_on", c.fittedOn}};
+          {"fitted_on", c.fittedOn},
+          {"measured_confidence", c.measuredConfidence},
+          {"measured_right", c.measuredRight}};
 }
 
 ConfidenceCalibration readConfidenceCalibration(const std::filesystem::path& modelsDir) {
@@ -91,6 +112,10 @@ ConfidenceCalibration readConfidenceCalibration(const std::filesystem::path& mod
     c.objects = j.value("objects", std::size_t{0});
     c.oneKeyShare = j.value("one_key_share", 0.0);
     c.fittedOn = j.value("fitted_on", "");
+    c.measuredConfidence = j.value("measured_confidence", std::vector<double>{});
+    c.measuredRight = j.value("measured_right", std::vector<bool>{});
+    if (c.measuredConfidence.size() != c.measuredRight.size())
+      throw FileError(file, "measured_confidence and measured_right differ in length");
     if (!std::isfinite(c.intercept) || !std::isfinite(c.slope))
       throw FileError(file, "intercept and slope must be finite");
     c.fitted = true;

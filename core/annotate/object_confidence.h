@@ -24,12 +24,27 @@ inline constexpr const char* kConfidenceFile = "confidence.json";
 // no points: nothing to check).
 double leastSurePointDistance(const std::vector<ModelPrediction>& predictions);
 
+// "Accept automatically above X": the share of objects at or above X and the share right among
+// them (NaN when none reaches X).
+struct AutoAcceptRow {
+  double threshold = 0;
+  double coverage = 0;
+  double precision = 0;
+};
+// Throws InvalidArgument for mismatched sizes or no objects.
+AutoAcceptRow autoAcceptAt(const std::vector<double>& confidence, const std::vector<bool>& right,
+                           double threshold);
+
 struct ConfidenceCalibration {
   bool fitted = false;
   double intercept = 0, slope = 0;  // P(one key) = 1 / (1 + exp(-(intercept + slope * d / 0.01)))
   std::size_t objects = 0;          // objects it was fitted on
   double oneKeyShare = 0;           // among them
   std::string fittedOn;             // dataset path(s)
+  // The fitted objects' confidences and outcomes, so the GUI can show the precision measured at
+  // any "accept automatically above X" (optimistic: measured on the data it was fitted on).
+  std::vector<double> measuredConfidence;
+  std::vector<bool> measuredRight;
 
   double probability(double leastSureDistance) const;
 };

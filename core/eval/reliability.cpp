@@ -28,19 +28,6 @@ std::string cell(double v, const char* format) {
 
 }  // namespace
 
-AutoAcceptRow autoAcceptAt(const std::vector<double>& confidence, const std::vector<bool>& right,
-                           double threshold) {
-  checkSizes(confidence, right);
-  AutoAcceptRow row;
-  row.threshold = threshold;
-  std::size_t accepted = 0, correct = 0;
-  for (std::size_t i = 0; i < confidence.size(); ++i)
-    if (confidence[i] >= threshold) ++accepted, correct += right[i];
-  row.coverage = static_cast<double>(accepted) / confidence.size();
-  row.precision = accepted ? static_cast<double>(correct) / accepted : kNan;
-  return row;
-}
-
 ReliabilityReport reliabilityReport(const std::vector<double>& confidence,
                                     const std::vector<bool>& right, int binCount,
                                     const std::vector<double>& thresholds) {

@@ -9,6 +9,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/annotate/object_confidence.h"
+
 namespace sagrid {
 
 struct ReliabilityBin {
@@ -18,11 +20,6 @@ struct ReliabilityBin {
   double observed = 0;        // share right with one key; NaN when empty
 };
 
-struct AutoAcceptRow {
-  double threshold = 0;
-  double coverage = 0;   // share of objects with confidence >= threshold
-  double precision = 0;  // share right among them; NaN when none
-};
 
 struct ReliabilityReport {
   std::vector<ReliabilityBin> bins;
@@ -35,9 +32,6 @@ ReliabilityReport reliabilityReport(const std::vector<double>& confidence,
                                     const std::vector<bool>& right, int bins = 5,
                                     const std::vector<double>& thresholds = {0.5, 0.7, 0.8, 0.9,
                                                                              0.95});
-// The precision of "accept automatically above threshold" (NaN when no object reaches it).
-AutoAcceptRow autoAcceptAt(const std::vector<double>& confidence, const std::vector<bool>& right,
-                           double threshold);
 
 nlohmann::json toJson(const ReliabilityReport& r);
 std::string reliabilityMarkdown(const ReliabilityReport& r);

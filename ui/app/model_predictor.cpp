@@ -30,6 +30,7 @@ std::optional<PredictionJob> ModelPredictor::jobFor(const AnnotationDocument& do
     } else {
       try {
         m_models = std::make_shared<const ModelSet>(ModelSet::load(m_modelsDir));
+        m_confidence = readConfidenceCalibration(m_modelsDir);
       } catch (const Error& e) {
         m_loadFailed = true;  // say it once, not for every object
         logger()->warn("models in {} cannot be used: {}", m_modelsDir.string(), e.what());
@@ -47,6 +48,7 @@ std::optional<PredictionJob> ModelPredictor::jobFor(const AnnotationDocument& do
   options.category = category;  // empty: retrieval
   options.features = m_models->featureOptions();
   options.features.up = document.mesh().fileUp;
+  options.confidence = m_confidence;
   const fs::path mesh = document.meshPath();
   const fs::path labelsDir = document.labelsPath().parent_path();
   const std::string id = document.labels().object.id;
@@ -65,6 +67,7 @@ std::optional<PredictionJob> ModelPredictor::jobFor(const AnnotationDocument& do
     result.rejected = r.rejected;
     result.closestCategory = r.closestCategory;
     result.points = r.labels.affordances;
+    result.objectConfidence = r.objectConfidence;
     for (const ModelPrediction& p : r.predictions) {
       DistanceField field;
       field.type = p.type;

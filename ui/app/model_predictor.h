@@ -8,6 +8,8 @@
 #include <memory>
 #include <optional>
 
+#include "core/annotate/object_confidence.h"
+
 #include "ui/app/prediction_worker.h"
 
 namespace sagrid {
@@ -25,6 +27,8 @@ class ModelPredictor {
   std::optional<PredictionJob> jobFor(const AnnotationDocument& document);
   // Drops the loaded models so the next job reads the folder again (after training).
   void reload() { m_models.reset(), m_loadFailed = false; }
+  // The models folder's confidence map (confidence.json), read with the models.
+  const ConfidenceCalibration& confidence() const { return m_confidence; }
   const std::filesystem::path& modelsDir() const { return m_modelsDir; }
   void setModelsDir(std::filesystem::path dir) { m_modelsDir = std::move(dir), reload(); }
 
@@ -32,6 +36,7 @@ class ModelPredictor {
   std::filesystem::path m_modelsDir;
   std::shared_ptr<const ModelSet> m_models;
   bool m_loadFailed = false;
+  ConfidenceCalibration m_confidence;
 };
 
 }  // namespace sagrid::ui

@@ -23,6 +23,7 @@ struct PredictionResult {
   bool rejected = false;
   std::string closestCategory;
   std::vector<AffordancePoint> points;  // mesh file coordinates, status "predicted"
+  double objectConfidence = 0;          // P(right with one key), core/annotate/object_confidence.h
   std::vector<DistanceField> fields;
 };
 

@@ -153,6 +153,39 @@ void Session::accept() {
   next();
 }
 
+std::size_t Session::acceptAutomaticallyAbove(double threshold) {
+  std::size_t accepted = 0;
+  for (std::size_t i : m_queue.unreviewedAtOrAbove(threshold)) {
+    if (static_cast<int>(i) == m_queue.current() && m_document) continue;  // open: the curator's
+    const QueueEntry& entry = m_queue.entry(i);
+    try {
+      ObjectLabels labels = readLabels(entry.labels);
+      for (auto& a : labels.affordances)
+        if (a.status == AffordanceStatus::Predicted) a.status = AffordanceStatus::Accepted;
+      labels.reviewState = ReviewState::Done;
+      labels.reviewUpdated = currentUtcTimestamp();
+      labels.reviewExtra["accepted_automatically_above"] = threshold;
+      writeLabels(entry.labels, labels);
+      m_queue.setState(i, QueueState::Accepted);
+      ++accepted;
+    } catch (const Error& e) {
+      m_queue.setError(i, e.what());
+      reportError(e.what());
+    }
+  }
+  logger()->info("accepted {} object(s) automatically at confidence >= {:.2f}", accepted,
+                 threshold);
+  return accepted;
+}
+
+void Session::orderQueueLeastSureFirst() {
+  try {
+    m_queue.orderLeastSureFirst();
+  } catch (const Error& e) {
+    reportError(e.what());
+  }
+}
+
 void Session::skip() {
   if (!m_document) return;
   try {
@@ -274,6 +307,8 @@ void Session::pollPrediction() {
   }
   if (!m_document || outcome->objectKey != m_document->labelsPath().string()) return;  // moved on
   PredictionResult& result = *outcome->result;
+  if (!m_queue.empty() && !result.rejected)
+    m_queue.setConfidence(std::size_t(m_queue.current()), result.objectConfidence);
   if (m_document->labels().object.category.empty() && !result.category.empty())
     m_document->setCategory(result.category);
   if (result.rejected) {

@@ -49,6 +49,12 @@ class Session {
   // accepted and moves on — one keypress for an object whose predictions are right.
   void accept();
   void skip();
+  // "Accept automatically above X": every unreviewed queued object (not the open one) whose
+  // prediction's confidence is at least `threshold` gets its predicted points accepted and its
+  // review marked done in its labels.json. Returns how many.
+  std::size_t acceptAutomaticallyAbove(double threshold);
+  void orderQueueLeastSureFirst();
+  double autoAcceptThreshold = 0.9;  // the queue panel's setting
   void execute(std::unique_ptr<Command> command);  // on the open document, with error handling
   void undo();
   void redo();

@@ -78,10 +78,51 @@ QueueEntry entryFor(const fs::path& mesh) {
   QueueEntry entry;
   entry.mesh = fs::absolute(mesh).lexically_normal();
   entry.labels = labelsPathFor(entry.mesh);
+  entry.confidence = recordedObjectConfidence(entry.labels);
   return entry;
 }
 
 }  // namespace
+
+std::optional<double> recordedObjectConfidence(const fs::path& labels) {
+  std::error_code ec;
+  if (!fs::is_regular_file(labels, ec)) return std::nullopt;
+  try {
+    const auto json = nlohmann::json::parse(readFileBytes(labels));
+    const auto* prediction = json.is_object() && json.contains("prediction") ? &json["prediction"]
+                                                                              : nullptr;
+    if (prediction && prediction->is_object() && prediction->contains("object_confidence") &&
+        (*prediction)["object_confidence"].is_number())
+      return (*prediction)["object_confidence"].get<double>();
+  } catch (const std::exception&) {
+    // Unreadable labels are reported when the object is opened; here they just have no confidence.
+  }
+  return std::nullopt;
+}
+
+void ReviewQueue::setConfidence(std::size_t index, std::optional<double> confidence) {
+  m_entries.at(index).confidence = confidence;
+}
+
+void ReviewQueue::orderLeastSureFirst() {
+  if (m_entries.empty()) return;
+  const fs::path current = m_entries.at(static_cast<std::size_t>(m_current)).mesh;
+  std::stable_sort(m_entries.begin(), m_entries.end(), [](const QueueEntry& a, const QueueEntry& b) {
+    return a.confidence.value_or(-1.0) < b.confidence.value_or(-1.0);
+  });
+  for (std::size_t i = 0; i < m_entries.size(); ++i)
+    if (m_entries[i].mesh == current) m_current = static_cast<int>(i);
+  save();
+}
+
+std::vector<std::size_t> ReviewQueue::unreviewedAtOrAbove(double threshold) const {
+  std::vector<std::size_t> out;
+  for (std::size_t i = 0; i < m_entries.size(); ++i)
+    if (m_entries[i].state == QueueState::Unreviewed && m_entries[i].confidence &&
+        *m_entries[i].confidence >= threshold)
+      out.push_back(i);
+  return out;
+}
 
 ReviewQueue ReviewQueue::openFolder(const fs::path& dir) {
   ReviewQueue queue;

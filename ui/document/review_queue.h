@@ -4,6 +4,7 @@
 #pragma once
 
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -18,7 +19,13 @@ struct QueueEntry {
   std::filesystem::path labels;  // where its labels.json is read and autosaved
   QueueState state = QueueState::Unreviewed;
   std::string error;  // last load error, shown in the queue (the queue goes on)
+  // P(right with one key) of its prediction (labels' prediction.object_confidence), when predicted.
+  std::optional<double> confidence;
 };
+
+// The object confidence a labels.json records (prediction.object_confidence); nullopt when the file
+// is missing, unreadable or has none (an unreadable file is reported when the object is opened).
+std::optional<double> recordedObjectConfidence(const std::filesystem::path& labels);
 
 inline constexpr const char* kQueueStateFile = ".sagrid-review.json";
 
@@ -50,6 +57,12 @@ class ReviewQueue {
   bool previous();
   void setState(std::size_t index, QueueState state);  // saves
   void setError(std::size_t index, std::string error);
+  void setConfidence(std::size_t index, std::optional<double> confidence);
+  // Least sure first: objects without a prediction, then by increasing confidence (stable); the
+  // current object stays current. Saves.
+  void orderLeastSureFirst();
+  // Unreviewed entries whose confidence is at least `threshold` ("accept automatically above X").
+  std::vector<std::size_t> unreviewedAtOrAbove(double threshold) const;
   // Adds files (drag-and-drop, File -> Open) after the current entry; returns the first new index
   // or -1 when none was a mesh. Paths already queued are not added twice (their index is returned).
   int add(const std::vector<std::filesystem::path>& paths);

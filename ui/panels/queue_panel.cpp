@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "core/annotate/object_confidence.h"
 #include "ui/app/session.h"
 #include "ui/panels/panels.h"
 
@@ -24,7 +25,43 @@ ImVec4 stateColor(QueueState state) {
 }
 }  // namespace
 
-void drawQueuePanel(Session& session) {
+namespace {
+
+// Least-sure-first ordering and "accept automatically above X" with the precision measured at X.
+void drawConfidenceControls(Session& session, const ConfidenceCalibration& confidence) {
+  if (ImGui::Button("Least sure first")) session.orderQueueLeastSureFirst();
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("Order the queue by the prediction's confidence, lowest first");
+  float threshold = static_cast<float>(session.autoAcceptThreshold);
+  ImGui::SetNextItemWidth(120);
+  if (ImGui::SliderFloat("accept above", &threshold, 0.5f, 1.0f, "%.2f"))
+    session.autoAcceptThreshold = threshold;
+  if (confidence.fitted && !confidence.measuredConfidence.empty()) {
+    const AutoAcceptRow row =
+        autoAcceptAt(confidence.measuredConfidence, confidence.measuredRight, threshold);
+    if (row.coverage > 0)
+      ImGui::TextWrapped("Measured at %.2f: %.0f %% of objects, %.0f %% of them right (%zu "
+                         "objects of the fit)",
+                         threshold, 100 * row.coverage, 100 * row.precision,
+                         confidence.measuredConfidence.size());
+    else
+      ImGui::TextWrapped("Measured at %.2f: no object of the fit reaches it", threshold);
+  } else {
+    ImGui::TextWrapped("Confidence not calibrated for these models (no confidence.json)");
+  }
+  const std::size_t candidates =
+      session.queue().unreviewedAtOrAbove(session.autoAcceptThreshold).size();
+  char label[64];
+  std::snprintf(label, sizeof label, "Accept %zu above %.2f", candidates,
+                session.autoAcceptThreshold);
+  ImGui::BeginDisabled(candidates == 0);
+  if (ImGui::Button(label)) session.acceptAutomaticallyAbove(session.autoAcceptThreshold);
+  ImGui::EndDisabled();
+}
+
+}  // namespace
+
+void drawQueuePanel(Session& session, const ConfidenceCalibration& confidence) {
   const ReviewQueue& queue = session.queue();
   if (!ImGui::CollapsingHeader("Review queue", ImGuiTreeNodeFlags_DefaultOpen)) return;
   if (queue.empty()) {
@@ -41,6 +78,7 @@ void drawQueuePanel(Session& session) {
   if (ImGui::Button("Next (N) >")) session.next();
   ImGui::SameLine();
   if (ImGui::Button("Skip (S)")) session.skip();
+  drawConfidenceControls(session, confidence);
   const float rows = std::min<float>(float(queue.size()), 8.0f);
   ImGui::BeginChild("queue", ImVec2(0, rows * ImGui::GetTextLineHeightWithSpacing() + 8), true);
   for (std::size_t i = 0; i < queue.size(); ++i) {
@@ -48,6 +86,11 @@ void drawQueuePanel(Session& session) {
     ImGui::PushID(static_cast<int>(i));
     ImGui::TextColored(stateColor(entry.state), "%-10s",
                        entry.error.empty() ? toString(entry.state) : "error");
+    ImGui::SameLine();
+    if (entry.confidence)
+      ImGui::Text("%3.0f%%", 100 * *entry.confidence);
+    else
+      ImGui::TextDisabled("  – ");
     ImGui::SameLine();
     const std::string name =
         entry.mesh.parent_path().filename().string() + "/" + entry.mesh.filename().string();

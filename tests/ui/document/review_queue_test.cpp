@@ -75,5 +75,34 @@ TEST(ReviewQueue, AddingPathsInsertsAfterCurrentWithoutDuplicates) {
   EXPECT_EQ(queue.size(), 2u);
 }
 
+TEST(ReviewQueue, OrdersLeastSureFirstAndFindsAutoAcceptCandidates) {
+  const auto dir = test::freshTempDir();
+  const std::pair<const char*, const char*> objects[] = {
+      {"o1", R"({"prediction": {"object_confidence": 0.95}})"},
+      {"o2", R"({"prediction": {"object_confidence": 0.20}})"},
+      {"o3", nullptr},                            // not predicted yet
+      {"o4", R"({"prediction": {"object_confidence": "high"}})"},  // not a number: none
+      {"o5", R"({"prediction": {"object_confidence": 0.90}})"}};
+  for (const auto& [id, labels] : objects) {
+    touch(dir / id / "mesh.obj");
+    if (labels) std::ofstream(dir / id / "labels.json") << labels;
+  }
+  ReviewQueue queue = ReviewQueue::openFolder(dir);
+  ASSERT_EQ(queue.size(), 5u);
+  EXPECT_DOUBLE_EQ(queue.entry(0).confidence.value(), 0.95);
+  EXPECT_FALSE(queue.entry(2).confidence.has_value());
+  EXPECT_FALSE(queue.entry(3).confidence.has_value());
+  queue.setCurrent(4);  // o5
+  queue.setState(0, QueueState::Edited);  // o1 reviewed already
+  EXPECT_EQ(queue.unreviewedAtOrAbove(0.9), std::vector<std::size_t>{4});
+  queue.orderLeastSureFirst();
+  std::vector<std::string> order;
+  for (const auto& e : queue.entries()) order.push_back(e.mesh.parent_path().filename().string());
+  EXPECT_EQ(order, (std::vector<std::string>{"o3", "o4", "o2", "o5", "o1"}));
+  EXPECT_EQ(queue.current(), 3);  // still o5
+  queue.setConfidence(0, 0.99);   // o3 predicted now
+  EXPECT_EQ(queue.unreviewedAtOrAbove(0.9), (std::vector<std::size_t>{0, 3}));
+}
+
 }  // namespace
 }  // namespace sagrid::ui
