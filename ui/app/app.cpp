@@ -100,7 +100,7 @@ void App::layoutPanels() {
     ImGui::SetNextWindowPos(ImVec2(0, top));
     ImGui::SetNextWindowSize(ImVec2(m_layout.leftWidth, viewport.height));
     ImGui::Begin("##left", nullptr, flags);
-    drawQueuePanel(m_session);
+    drawQueuePanel(m_session, m_predictor.confidence());
     drawPointsPanel(m_session);
     ImGui::End();
     ImGui::SetNextWindowPos(ImVec2(display.x - m_layout.rightWidth, top));

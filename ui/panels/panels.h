@@ -6,6 +6,10 @@
 
 #include "ui/app/log_buffer.h"
 
+namespace sagrid {
+struct ConfidenceCalibration;
+}
+
 namespace sagrid::ui {
 
 class Session;
@@ -21,7 +25,8 @@ struct PanelLayout {
 
 // Returns true when the user chose File -> Quit.
 bool drawMainMenu(Session& session, FileBrowser& browser);
-void drawQueuePanel(Session& session);
+// `confidence`: the models' confidence map, for the precision measured at the auto-accept setting.
+void drawQueuePanel(Session& session, const ConfidenceCalibration& confidence);
 void drawPointsPanel(Session& session);
 void drawFieldPanel(Session& session, const SceneRenderer& scene);
 void drawObjectPanel(Session& session);
