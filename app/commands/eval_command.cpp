@@ -30,10 +30,11 @@ void setupEval(CLI::App& root) {
       "each "
       "architecture on DATA/train and compares them on DATA/val (Table I form).");
   struct Options {
-    std::string data, models, out = "eval", cache, sweep, mode = "sparse";
+    std::string data, models, out = "eval", cache, sweep, mode = "sparse", fitConfidence;
     std::vector<std::string> only, compare;
     double minutes = 2;
     int epochs = 0;
+    int symmetries = 1;
     double nearWeight = sagrid::SweepOptions{}.nearWeight;
   };
   auto o = std::make_shared<Options>();
@@ -46,6 +47,13 @@ void setupEval(CLI::App& root) {
                   "OUT/compare.md + compare.json with every set side by side and each set's own "
                   "report in OUT/compare-<n>/");
   cmd->add_option("--cache", o->cache, "Feature cache (default DATA/.sagrid-cache)");
+  cmd->add_option("--symmetries", o->symmetries,
+                  "Test-time augmentation: average each field over this many symmetric copies "
+                  "of the object (z quarter turns x reflections; 1 = off, 8 = all)")
+      ->check(CLI::Range(1, 8));
+  cmd->add_option("--fit-confidence", o->fitConfidence,
+                  "Fit the object confidence (P(right with one key)) on this data and write "
+                  "DIR/confidence.json (put it beside the models to use it)");
   cmd->add_option("--sweep", o->sweep, "Architectures to compare, ';'-separated Table I strings");
   cmd->add_option("--sweep-models", o->only,
                   "With --sweep: the models to train (default all four)");
@@ -94,7 +102,18 @@ void setupEval(CLI::App& root) {
     options.features = models.featureOptions();
     options.features.cacheDir = o->cache;
     options.onProgress = progress;
+    options.symmetries = o->symmetries;
+    options.confidence = sagrid::readConfidenceCalibration(modelsDir);
     const auto report = sagrid::evaluateModels(models, options);
+    if (!o->fitConfidence.empty()) {
+      auto fit = sagrid::fitConfidence(report.confidenceSignal, report.oneKey);
+      fit.fittedOn = o->data;
+      fs::create_directories(o->fitConfidence);
+      sagrid::writeConfidenceCalibration(o->fitConfidence, fit);
+      std::fprintf(stderr, "confidence: fitted on %zu objects (%.0f %% right with one key) -> %s\n",
+                   fit.objects, 100 * fit.oneKeyShare,
+                   (fs::path(o->fitConfidence) / sagrid::kConfidenceFile).string().c_str());
+    }
     sagrid::writeEvaluationReport(report, o->out);
     std::cout << sagrid::evaluationMarkdown(report);
     std::fprintf(stderr, "report: %s/eval.md, eval.json, eval.png\n", o->out.c_str());
@@ -106,6 +125,7 @@ void setupEval(CLI::App& root) {
       sagrid::EvaluationOptions other = options;
       other.features = otherModels.featureOptions();
       other.features.cacheDir = o->cache;
+      other.confidence = sagrid::readConfidenceCalibration(o->compare[i]);
       others.push_back(sagrid::evaluateModels(otherModels, other));
       sagrid::writeEvaluationReport(others.back(),
                                     fs::path(o->out) / ("compare-" + std::to_string(i + 1)));
