@@ -14,10 +14,13 @@ namespace sagrid {
 namespace {
 
 constexpr double kUncalibratedScale = 0.02;  // the point confidence's own map (ExtractionSettings)
-constexpr double kDistanceUnit = 0.01;       // slope per 0.01 normalized units: readable numbers
 constexpr double kRidge = 1e-3;
 
 double sigmoid(double z) { return 1.0 / (1.0 + std::exp(-z)); }
+
+// The fit's input: the uncalibrated confidence exp(-d / 0.02) in [0, 1]. Linear in d, a few
+// far-off objects (d of 0.1 and more) flattened the fit on bench val to a slope of ~0.
+double signalOf(double d) { return std::exp(-std::max(0.0, d) / kUncalibratedScale); }
 
 }  // namespace
 
@@ -30,8 +33,8 @@ double leastSurePointDistance(const std::vector<ModelPrediction>& predictions) {
 
 double ConfidenceCalibration::probability(double d) const {
   if (!std::isfinite(d)) return 0;
-  if (!fitted) return std::exp(-std::max(0.0, d) / kUncalibratedScale);
-  return sigmoid(intercept + slope * d / kDistanceUnit);
+  if (!fitted) return signalOf(d);
+  return sigmoid(intercept + slope * signalOf(d));
 }
 
 AutoAcceptRow autoAcceptAt(const std::vector<double>& confidence, const std::vector<bool>& right,
@@ -59,7 +62,7 @@ ConfidenceCalibration fitConfidence(const std::vector<double>& d, const std::vec
     // Gradient and Hessian of the negative log-likelihood plus ridge on (a, b).
     double ga = kRidge * a, gb = kRidge * b, haa = kRidge, hab = 0, hbb = kRidge;
     for (std::size_t i = 0; i < d.size(); ++i) {
-      const double x = d[i] / kDistanceUnit;
+      const double x = signalOf(d[i]);
       const double p = sigmoid(a + b * x);
       const double r = p - (y[i] ? 1.0 : 0.0);
       const double w = std::max(p * (1 - p), 1e-9);
@@ -85,10 +88,11 @@ ConfidenceCalibration fitConfidence(const std::vector<double>& d, const std::vec
 
 nlohmann::json toJson(const ConfidenceCalibration& c) {
   return {{"schema", "sagrid.confidence/1"},
-          {"signal", "least-sure point: largest predicted distance among the object's points"},
+          {"signal", "x = exp(-d / 0.02), d the largest predicted distance among the object's "
+                     "points (normalized units); P = 1 / (1 + exp(-(intercept + slope x)))"},
           {"target", "right with one key (every point within 5 cm, right counts)"},
           {"intercept", c.intercept},
-          {"slope_per_0.01", c.slope},
+          {"slope", c.slope},
           {"objects", c.objects},
           {"one_key_share", c.oneKeyShare},
           {"fitted_on", c.fittedOn},
@@ -108,7 +112,7 @@ ConfidenceCalibration readConfidenceCalibration(const std::filesystem::path& mod
     if (j.value("schema", "") != "sagrid.confidence/1")
       throw FileError(file, "not a SAGrid confidence calibration (schema)");
     c.intercept = j.at("intercept").get<double>();
-    c.slope = j.at("slope_per_0.01").get<double>();
+    c.slope = j.at("slope").get<double>();
     c.objects = j.value("objects", std::size_t{0});
     c.oneKeyShare = j.value("one_key_share", 0.0);
     c.fittedOn = j.value("fitted_on", "");

@@ -1,8 +1,8 @@
 // Object-level confidence: the probability that an object's predicted points are all right, i.e.
 // that the curator accepts it with one key (every point within 5 cm of the truth, right counts;
 // core/eval/curator_effort.h). It is a logistic map of one signal, the least sure predicted point
-// of the object (its predicted distance, normalized units: large when some type's best minimum is
-// shallow, or when a weak extra minimum was kept), fitted on labelled objects (`sagrid eval
+// of the object (its predicted distance d, normalized units: large when some type's best minimum is
+// shallow, or when a weak extra minimum was kept), through x = exp(-d / 0.02), fitted on labelled objects (`sagrid eval
 // --fit-confidence`) and stored beside the models as confidence.json. Without a fit the raw
 // signal is mapped by exp(-d / 0.02) and flagged uncalibrated. The review queue orders by it
 // (least sure first) and "accept automatically above X" uses it.
@@ -37,7 +37,8 @@ AutoAcceptRow autoAcceptAt(const std::vector<double>& confidence, const std::vec
 
 struct ConfidenceCalibration {
   bool fitted = false;
-  double intercept = 0, slope = 0;  // P(one key) = 1 / (1 + exp(-(intercept + slope * d / 0.01)))
+  // P(one key) = 1 / (1 + exp(-(intercept + slope * x))), x = exp(-d / 0.02) the uncalibrated map.
+  double intercept = 0, slope = 0;
   std::size_t objects = 0;          // objects it was fitted on
   double oneKeyShare = 0;           // among them
   std::string fittedOn;             // dataset path(s)

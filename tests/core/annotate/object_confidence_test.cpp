@@ -24,20 +24,22 @@ TEST(ObjectConfidence, SignalIsTheLeastSurePointOfAllPredictions) {
 }
 
 TEST(ObjectConfidence, FitRecoversAKnownLogisticMap) {
-  // Outcomes drawn from P(right) = sigmoid(2 - 1.5 * d / 0.01).
+  // Outcomes drawn from P(right) = sigmoid(-2 + 4 x), x = exp(-d / 0.02).
   std::mt19937 rng(7);
-  std::uniform_real_distribution<double> u(0, 0.04);
+  std::uniform_real_distribution<double> u(0, 0.08);
   std::uniform_real_distribution<double> coin(0, 1);
   std::vector<double> d;
   std::vector<bool> right;
   for (int i = 0; i < 4000; ++i) {
     d.push_back(u(rng));
-    right.push_back(coin(rng) < 1 / (1 + std::exp(-(2 - 1.5 * d.back() / 0.01))));
+    right.push_back(coin(rng) < 1 / (1 + std::exp(-(-2 + 4 * std::exp(-d.back() / 0.02)))));
   }
   const ConfidenceCalibration c = fitConfidence(d, right);
   EXPECT_TRUE(c.fitted);
-  EXPECT_NEAR(c.intercept, 2.0, 0.25);
-  EXPECT_NEAR(c.slope, -1.5, 0.15);
+  EXPECT_NEAR(c.intercept, -2.0, 0.25);
+  EXPECT_NEAR(c.slope, 4.0, 0.4);
+  ASSERT_EQ(c.measuredConfidence.size(), d.size());
+  EXPECT_DOUBLE_EQ(c.measuredConfidence[0], c.probability(d[0]));
   EXPECT_GT(c.probability(0.0), c.probability(0.03));
 }
 
