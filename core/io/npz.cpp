@@ -4,12 +4,17 @@
 #include <cctype>
 
 #include "core/common/atomic_file.h"
+#include "core/io/little_endian.h"
 #include "core/io/zip_archive.h"
 
 namespace sagrid {
 namespace fs = std::filesystem;
 
 namespace {
+
+using io::u16;
+using io::u32;
+using io::put16;
 
 struct DtypeInfo {
   const char* name;
@@ -36,18 +41,6 @@ const DtypeInfo* findByDescr(std::string descr) {
   return nullptr;
 }
 
-std::uint16_t u16(std::string_view b, std::size_t at) {
-  return static_cast<std::uint16_t>(static_cast<unsigned char>(b[at]) |
-                                    (static_cast<unsigned char>(b[at + 1]) << 8));
-}
-std::uint32_t u32(std::string_view b, std::size_t at) {
-  return static_cast<std::uint32_t>(u16(b, at)) |
-         (static_cast<std::uint32_t>(u16(b, at + 2)) << 16);
-}
-void put16(std::string& out, std::uint32_t v) {
-  out += static_cast<char>(v & 0xFF);
-  out += static_cast<char>((v >> 8) & 0xFF);
-}
 
 // Value of `key` in the header dict, e.g. "'<f4'" or "(3, 4)" or "False".
 std::string headerValue(const std::string& header, const std::string& key, const fs::path& source) {

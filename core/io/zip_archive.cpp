@@ -4,32 +4,18 @@
 
 #include "core/common/atomic_file.h"
 #include "core/common/error.h"
+#include "core/io/little_endian.h"
 
 namespace sagrid {
 namespace fs = std::filesystem;
 
 namespace {
 
-std::uint16_t u16(std::string_view b, std::size_t at) {
-  return static_cast<std::uint16_t>(static_cast<unsigned char>(b[at]) |
-                                    (static_cast<unsigned char>(b[at + 1]) << 8));
-}
-std::uint32_t u32(std::string_view b, std::size_t at) {
-  return static_cast<std::uint32_t>(u16(b, at)) |
-         (static_cast<std::uint32_t>(u16(b, at + 2)) << 16);
-}
-std::uint64_t u64(std::string_view b, std::size_t at) {
-  return static_cast<std::uint64_t>(u32(b, at)) |
-         (static_cast<std::uint64_t>(u32(b, at + 4)) << 32);
-}
-void put16(std::string& out, std::uint32_t v) {
-  out += static_cast<char>(v & 0xFF);
-  out += static_cast<char>((v >> 8) & 0xFF);
-}
-void put32(std::string& out, std::uint32_t v) {
-  put16(out, v & 0xFFFF);
-  put16(out, v >> 16);
-}
+using io::u16;
+using io::u32;
+using io::u64;
+using io::put16;
+using io::put32;
 
 std::string inflateRaw(std::string_view compressed, std::size_t size, const fs::path& source,
                        const std::string& entry) {
