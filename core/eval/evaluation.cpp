@@ -8,6 +8,7 @@
 #include "core/annotate/annotate.h"
 #include "core/common/atomic_file.h"
 #include "core/common/error.h"
+#include "core/eval/report_cell.h"
 #include "core/common/log.h"
 #include "core/dataset/dataset.h"
 #include "core/eval/embedding_search.h"
@@ -30,13 +31,6 @@ enum Method { kArgmin, kRefined, kAuto, kKMeans, kCosine, kL2, kMethodCount };
 const char* const kMethodNames[] = {"SAGrid argmin (paper)",   "SAGrid argmin refined",
                                     "SAGrid auto count",       "SAGrid k-means, true count",
                                     "Embedding search cosine", "Embedding search L2"};
-
-std::string formatValue(double v, const char* format) {
-  if (!std::isfinite(v)) return "–";
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, format, v);
-  return buffer;
-}
 
 }  // namespace
 
@@ -190,7 +184,7 @@ std::string evaluationMarkdown(const EvaluationReport& r) {
   std::ostringstream md;
   md << "# SAGrid evaluation\n\nData: `" << r.dataDir.string() << "` — " << r.objects << " objects";
   if (r.failed) md << " (" << r.failed << " failed)";
-  md << ". Models + point extraction: " << formatValue(r.modelMilliseconds, "%.0f")
+  md << ". Models + point extraction: " << reportCell(r.modelMilliseconds, "%.0f")
      << " ms per object (features cached).\n\n";
   md << "## Mean localization error (m), paper's metric (Table II form)\n\n| Method |";
   for (const auto& n : r.modelNames) md << ' ' << paperColumnName(n) << " |";
@@ -205,9 +199,9 @@ std::string evaluationMarkdown(const EvaluationReport& r) {
       const auto it = m.byModel.find(n);
       const double v = it == m.byModel.end() ? NAN : it->second.paperError;
       if (std::isfinite(v)) sum += v, ++count;
-      md << ' ' << formatValue(v, "%.4f") << " |";
+      md << ' ' << reportCell(v, "%.4f") << " |";
     }
-    md << ' ' << formatValue(count ? sum / count : NAN, "%.4f") << " |\n";
+    md << ' ' << reportCell(count ? sum / count : NAN, "%.4f") << " |\n";
   }
   md << "\n## Multiple instances (Hungarian-matched error in m; precision/recall within "
      << kMatchRadiusMeters * 100 << " cm; share of objects with the right count)\n\n"
@@ -219,10 +213,10 @@ std::string evaluationMarkdown(const EvaluationReport& r) {
       if (it == m.byModel.end()) continue;
       const TypeMetrics& t = it->second;
       md << "| " << m.method << " | " << n << " | " << t.objects << " | "
-         << formatValue(t.matchedError, "%.4f") << " | "
-         << formatValue(100 * t.precision, "%.1f %%") << " | "
-         << formatValue(100 * t.recall, "%.1f %%") << " | "
-         << formatValue(100 * t.countRight, "%.1f %%") << " |\n";
+         << reportCell(t.matchedError, "%.4f") << " | "
+         << reportCell(100 * t.precision, "%.1f %%") << " | "
+         << reportCell(100 * t.recall, "%.1f %%") << " | "
+         << reportCell(100 * t.countRight, "%.1f %%") << " |\n";
     }
   md << "\n## Curator effort (SAGrid auto count; " << kMatchRadiusMeters * 100
      << " cm tolerance)\n\nPoint edits per object: a predicted point too far from its matched "
@@ -231,13 +225,13 @@ std::string evaluationMarkdown(const EvaluationReport& r) {
      << "| Objects | Edits / object | Drags | Deletions | Additions | By hand (points / object) "
         "| Edits ÷ by hand | Right with one key |\n|---|---|---|---|---|---|---|---|\n";
   auto effortRow = [&](const std::string& label, const CuratorEffort& e) {
-    md << "| " << label << e.objects << " | " << formatValue(e.editsPerObject, "%.2f") << " | "
-       << formatValue(e.dragsPerObject, "%.2f") << " | "
-       << formatValue(e.deletionsPerObject, "%.2f") << " | "
-       << formatValue(e.additionsPerObject, "%.2f") << " | "
-       << formatValue(e.handPointsPerObject, "%.2f") << " | "
-       << formatValue(e.editsPerObject / e.handPointsPerObject, "%.2f") << " | "
-       << formatValue(100 * e.oneKeyShare, "%.1f %%") << " |\n";
+    md << "| " << label << e.objects << " | " << reportCell(e.editsPerObject, "%.2f") << " | "
+       << reportCell(e.dragsPerObject, "%.2f") << " | "
+       << reportCell(e.deletionsPerObject, "%.2f") << " | "
+       << reportCell(e.additionsPerObject, "%.2f") << " | "
+       << reportCell(e.handPointsPerObject, "%.2f") << " | "
+       << reportCell(e.editsPerObject / e.handPointsPerObject, "%.2f") << " | "
+       << reportCell(100 * e.oneKeyShare, "%.1f %%") << " |\n";
   };
   effortRow("all: ", r.effort);
   for (const auto& [category, e] : r.effortByCategory) effortRow(category + ": ", e);

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "core/common/error.h"
+#include "core/eval/report_cell.h"
 
 namespace sagrid {
 namespace {
@@ -41,13 +42,6 @@ double paperAverage(const EvaluationReport& r, const std::vector<std::string>& n
   return count ? sum / count : NAN;
 }
 
-std::string cell(double v, const char* format) {
-  if (!std::isfinite(v)) return "–";
-  char b[32];
-  std::snprintf(b, sizeof b, format, v);
-  return b;
-}
-
 void checkSameData(const std::vector<LabelledReport>& reports) {
   if (reports.empty()) throw InvalidArgument("comparison: no reports");
   for (const auto& lr : reports)
@@ -77,9 +71,9 @@ std::string comparisonMarkdown(const std::vector<LabelledReport>& reports) {
     md << "| " << lr.label << " |";
     for (const auto& n : names) {
       const auto* t = metricsOf(*lr.report, kPaperMethod, n);
-      md << ' ' << cell(t ? t->paperError : NAN, "%.4f") << " |";
+      md << ' ' << reportCell(t ? t->paperError : NAN, "%.4f") << " |";
     }
-    md << ' ' << cell(paperAverage(*lr.report, names), "%.4f") << " |\n";
+    md << ' ' << reportCell(paperAverage(*lr.report, names), "%.4f") << " |\n";
   }
   md << "\n## Automatic count: recall within 5 cm / right count\n\n| Models |";
   for (const auto& n : names) md << ' ' << paperColumnName(n) << " |";
@@ -90,8 +84,8 @@ std::string comparisonMarkdown(const std::vector<LabelledReport>& reports) {
     md << "| " << lr.label << " |";
     for (const auto& n : names) {
       const auto* t = metricsOf(*lr.report, kAutoMethod, n);
-      md << ' ' << cell(t ? 100 * t->recall : NAN, "%.0f %%") << " / "
-         << cell(t ? 100 * t->countRight : NAN, "%.0f %%") << " |";
+      md << ' ' << reportCell(t ? 100 * t->recall : NAN, "%.0f %%") << " / "
+         << reportCell(t ? 100 * t->countRight : NAN, "%.0f %%") << " |";
     }
     md << '\n';
   }
@@ -99,10 +93,10 @@ std::string comparisonMarkdown(const std::vector<LabelledReport>& reports) {
         "Edits ÷ by hand | Right with one key |\n|---|---|---|---|---|\n";
   for (const auto& lr : reports) {
     const CuratorEffort& e = lr.report->effort;
-    md << "| " << lr.label << " | " << cell(e.editsPerObject, "%.2f") << " | "
-       << cell(e.handPointsPerObject, "%.2f") << " | "
-       << cell(e.editsPerObject / e.handPointsPerObject, "%.2f") << " | "
-       << cell(100 * e.oneKeyShare, "%.1f %%") << " |\n";
+    md << "| " << lr.label << " | " << reportCell(e.editsPerObject, "%.2f") << " | "
+       << reportCell(e.handPointsPerObject, "%.2f") << " | "
+       << reportCell(e.editsPerObject / e.handPointsPerObject, "%.2f") << " | "
+       << reportCell(100 * e.oneKeyShare, "%.1f %%") << " |\n";
   }
   return md.str();
 }

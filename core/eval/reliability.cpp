@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "core/common/error.h"
+#include "core/eval/report_cell.h"
 #include "core/plot/plot.h"
 
 namespace sagrid {
@@ -17,13 +18,6 @@ void checkSizes(const std::vector<double>& confidence, const std::vector<bool>& 
   if (confidence.empty() || confidence.size() != right.size())
     throw InvalidArgument("reliability: " + std::to_string(confidence.size()) +
                           " confidences for " + std::to_string(right.size()) + " outcomes");
-}
-
-std::string cell(double v, const char* format) {
-  if (!std::isfinite(v)) return "–";
-  char b[32];
-  std::snprintf(b, sizeof b, format, v);
-  return b;
 }
 
 }  // namespace
@@ -79,15 +73,15 @@ std::string reliabilityMarkdown(const ReliabilityReport& r) {
   std::ostringstream md;
   md << "| Confidence | Objects | Mean confidence | Right with one key |\n|---|---|---|---|\n";
   for (const auto& b : r.bins)
-    md << "| " << cell(b.low, "%.1f") << "–" << cell(b.high, "%.1f") << " | " << b.objects
-       << " | " << cell(b.meanConfidence, "%.2f") << " | " << cell(100 * b.observed, "%.0f %%")
+    md << "| " << reportCell(b.low, "%.1f") << "–" << reportCell(b.high, "%.1f") << " | " << b.objects
+       << " | " << reportCell(b.meanConfidence, "%.2f") << " | " << reportCell(100 * b.observed, "%.0f %%")
        << " |\n";
-  md << "\nExpected calibration error: " << cell(r.expectedCalibrationError, "%.3f") << "\n\n"
+  md << "\nExpected calibration error: " << reportCell(r.expectedCalibrationError, "%.3f") << "\n\n"
      << "| Accept automatically above | Objects accepted | Precision (right among them) |\n"
      << "|---|---|---|\n";
   for (const auto& a : r.autoAccept)
-    md << "| " << cell(a.threshold, "%.2f") << " | " << cell(100 * a.coverage, "%.0f %%") << " | "
-       << cell(100 * a.precision, "%.0f %%") << " |\n";
+    md << "| " << reportCell(a.threshold, "%.2f") << " | " << reportCell(100 * a.coverage, "%.0f %%") << " | "
+       << reportCell(100 * a.precision, "%.0f %%") << " |\n";
   return md.str();
 }
 
