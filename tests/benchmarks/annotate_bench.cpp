@@ -1,6 +1,10 @@
 // Inference speed with features cached: the four shipped models (resources/models) plus point
 // extraction (automatic count, refinement) and surface projection, on one generated stove and
-// one generated sink — the "<= 300 ms per object for all four models" target of the model issue.
+// one generated sink — the "<= 300 ms per object for all four models" target of the model issue —
+// with and without symmetry averaging; and `annotate` end to end (import, features, category,
+// models, points) on a ~100k-triangle mesh with each in-the-wild addition switched on or off:
+//   build/tests/benchmarks/annotate_bench --benchmark_repetitions=3
+//     --benchmark_report_aggregates_only=true
 #include <benchmark/benchmark.h>
 
 #include "core/annotate/annotate.h"
@@ -9,6 +13,7 @@
 #include "core/generate/dataset_generator.h"
 #include "core/geometry/surface_scene.h"
 #include "core/mesh/mesh_import.h"
+#include "real_dev_meshes.h"
 
 namespace {
 namespace fs = std::filesystem;
@@ -43,13 +48,49 @@ void BM_FourModelsAndExtraction(benchmark::State& state) {
   const std::size_t object = static_cast<std::size_t>(state.range(0));
   for (auto _ : state)
     for (const auto& m : f.models->models())
-      benchmark::DoNotOptimize(sagrid::predictWithModel(m, f.features[object], *f.scenes[object],
-                                                        f.meshes[object].fileUp,
-                                                        sagrid::InstanceMode::Auto));
+      benchmark::DoNotOptimize(sagrid::predictWithModel(
+          m, f.features[object], *f.scenes[object], f.meshes[object].fileUp,
+          sagrid::InstanceMode::Auto, 1, nullptr, static_cast<int>(state.range(1))));
   state.SetLabel(std::string(object == 0 ? "stove" : "sink") + ", " +
                  std::to_string(f.features[object].voxels.size()) + " occupied voxels, " +
-                 std::to_string(f.models->models().size()) + " models");
+                 std::to_string(f.models->models().size()) + " models, symmetries " +
+                 std::to_string(state.range(1)));
 }
-BENCHMARK(BM_FourModelsAndExtraction)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_FourModelsAndExtraction)
+    ->Args({0, 1})
+    ->Args({0, 8})
+    ->Args({1, 1})
+    ->Args({1, 8})
+    ->Unit(benchmark::kMillisecond);
+
+// `annotate` of the dense LIBERO flat stove (no feature cache): bit 1 = up axis detected from the
+// geometry (else given), bit 2 = category decided by the models folder's classifier (else given),
+// bit 4 = symmetry averaging over 8 copies.
+void BM_AnnotateDenseEndToEnd(benchmark::State& state) {
+  Fixture& f = fixture();
+  const fs::path mesh = sagrid::bench::denseCopy(2);
+  const int additions = static_cast<int>(state.range(0));
+  sagrid::AnnotateOptions options;
+  options.features = f.models->featureOptions();
+  if (!(additions & 1)) options.features.up = sagrid::UpAxis::PosZ;
+  if (!(additions & 2)) options.category = "stove";
+  options.symmetries = additions & 4 ? 8 : 1;
+  const fs::path out = sagrid::bench::benchDir() / "annotate-out";
+  for (auto _ : state)
+    benchmark::DoNotOptimize(
+        sagrid::annotateMeshFile(mesh, "flat_stove_dense", *f.models, options, out));
+  state.SetLabel(std::string(additions & 1 ? "up detected" : "up given") +
+                 (additions & 2 ? ", category classified" : ", category given") +
+                 (additions & 4 ? ", 8 symmetries" : ", 1 copy"));
+}
+BENCHMARK(BM_AnnotateDenseEndToEnd)
+    ->Arg(0)
+    ->Arg(1)
+    ->Arg(2)
+    ->Arg(4)
+    ->Arg(7)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->Iterations(2);
 
 }  // namespace
