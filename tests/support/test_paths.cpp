@@ -1,5 +1,7 @@
 #include "support/test_paths.h"
 
+#include <unistd.h>
+
 #include <array>
 #include <cstdio>
 #include <sys/wait.h>
@@ -15,7 +17,10 @@ fs::path realDevDir() { return sharedDir() / "data" / "real-dev"; }
 
 fs::path freshTempDir(const std::string& name) {
   const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-  std::string leaf = info ? std::string(info->test_suite_name()) + "." + info->name() : "adhoc";
+  // Outside a test (a suite's SetUpTestSuite) the folder is per process: CTest runs the tests of
+  // one suite as parallel processes, and each would otherwise wipe the others' shared folder.
+  std::string leaf = info ? std::string(info->test_suite_name()) + "." + info->name()
+                          : "suite." + std::to_string(::getpid());
   if (!name.empty()) leaf += "." + name;
   fs::path dir = fs::temp_directory_path() / "sagrid-tests" / leaf;
   fs::remove_all(dir);
