@@ -35,7 +35,7 @@ void setupAnnotate(CLI::App& root) {
   struct Options {
     std::string input, out, category, models, cache, up, instances = "auto";
     std::vector<std::string> counts;
-    int symmetries = 1;
+    int symmetries = sagrid::AnnotateOptions{}.symmetries;
   };
   auto o = std::make_shared<Options>();
   cmd->add_option("input", o->input, "Mesh file or folder of meshes")->required();
@@ -55,7 +55,7 @@ void setupAnnotate(CLI::App& root) {
       ->check(CLI::IsMember({"auto", "single"}));
   cmd->add_option("--symmetries", o->symmetries,
                   "Test-time augmentation: average each field over this many symmetric copies "
-                  "of the object (z quarter turns x reflections; 1 = off, 8 = all)")
+                  "of the object (z quarter turns x reflections; 1 = off, 8 = all, the default)")
       ->check(CLI::Range(1, 8));
   cmd->add_option("--count", o->counts,
                   "Known instance count per type, e.g. --count heatsource=5 (k-means)");

@@ -34,7 +34,7 @@ void setupEval(CLI::App& root) {
     std::vector<std::string> only, compare;
     double minutes = 2;
     int epochs = 0;
-    int symmetries = 1;
+    int symmetries = sagrid::EvaluationOptions{}.symmetries;
     double nearWeight = sagrid::SweepOptions{}.nearWeight;
   };
   auto o = std::make_shared<Options>();
@@ -49,7 +49,7 @@ void setupEval(CLI::App& root) {
   cmd->add_option("--cache", o->cache, "Feature cache (default DATA/.sagrid-cache)");
   cmd->add_option("--symmetries", o->symmetries,
                   "Test-time augmentation: average each field over this many symmetric copies "
-                  "of the object (z quarter turns x reflections; 1 = off, 8 = all)")
+                  "of the object (z quarter turns x reflections; 1 = off, 8 = all, the default)")
       ->check(CLI::Range(1, 8));
   cmd->add_option("--fit-confidence", o->fitConfidence,
                   "Fit the object confidence (P(right with one key)) on this data and write "

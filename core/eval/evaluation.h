@@ -23,7 +23,7 @@ namespace sagrid {
 struct EvaluationOptions {
   std::filesystem::path dataDir;  // a dataset; when it has a val/ split, that is used
   FeatureOptions features;        // from the models; cacheDir empty = DATA/.sagrid-cache
-  int symmetries = 1;             // test-time augmentation for SAGrid (see predictWithModel)
+  int symmetries = 8;             // test-time augmentation, as annotate (AnnotateOptions)
   ConfidenceCalibration confidence;  // object confidence map (the models folder's, or unfitted)
   std::function<void(std::size_t, std::size_t, const std::string&)> onProgress;
 };
