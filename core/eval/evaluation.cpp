@@ -81,15 +81,15 @@ EvaluationReport evaluateModels(const ModelSet& models, const EvaluationOptions&
       const double mpu = metersPerUnit(labels);
       report.meanOccupiedVoxels += static_cast<double>(grid.voxels.size());
       nlohmann::json object = {{"id", entry.id}, {"category", category}, {"meters_per_unit", mpu}};
-      // One field per model (the timed part: fields + automatic count, as annotate does); every
-      // extraction mode below reads the same field.
+      // One field and automatic-count prediction per model: the timed part, as annotate does it.
+      // Every other extraction mode below reads the same field.
+      const auto categoryModels = models.forCategory(category);
       const auto t = Clock::now();
-      std::map<std::string, PredictedField> fields;
-      for (const auto* model : models.forCategory(category)) {
-        fields[model->card().name] = predictField(*model, grid, options.symmetries);
-        (void)predictionFromField(*model, fields[model->card().name], grid, scene, mesh.fileUp,
-                                  InstanceMode::Auto);
-      }
+      std::vector<ModelPrediction> autoPredictions;
+      for (const auto* model : categoryModels)
+        autoPredictions.push_back(predictionFromField(*model,
+                                                      predictField(*model, grid, options.symmetries),
+                                                      grid, scene, mesh.fileUp, InstanceMode::Auto));
       modelSeconds += std::chrono::duration<double>(Clock::now() - t).count();
       auto surfaceOf = [](const ModelPrediction& p) {
         std::vector<Eigen::Vector3f> out;
@@ -97,22 +97,20 @@ EvaluationReport evaluateModels(const ModelSet& models, const EvaluationOptions&
         return out;
       };
       PointEdits objectEdits;
-      std::vector<ModelPrediction> autoPredictions;
-      for (const auto* model : models.forCategory(category)) {
+      for (std::size_t m = 0; m < categoryModels.size(); ++m) {
+        const auto* model = categoryModels[m];
         const auto& card = model->card();
         std::vector<Eigen::Vector3f> truth;
         for (const auto* a : labels.ofType(card.type)) truth.push_back(a->position);
         // What the GUI shows: the automatic count. Extra points on a type the object lacks are
         // edits too (deletions), so this comes before skipping types without ground truth.
-        const PredictedField& field = fields.at(card.name);
+        const PredictedField& field = autoPredictions[m].field;
         auto predict = [&](InstanceMode mode, int count = 1,
                            const ExtractionSettings* settings = nullptr) {
           return surfaceOf(predictionFromField(*model, field, grid, scene, mesh.fileUp, mode,
                                                count, settings));
         };
-        autoPredictions.push_back(
-            predictionFromField(*model, field, grid, scene, mesh.fileUp, InstanceMode::Auto));
-        const auto autoPoints = surfaceOf(autoPredictions.back());
+        const auto autoPoints = surfaceOf(autoPredictions[m]);
         const PointEdits edits = pointEdits(matchPoints(autoPoints, truth, mpu));
         objectEdits += edits;
         object["edits"][card.name] = {{"drags", edits.drags},
