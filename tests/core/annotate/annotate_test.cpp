@@ -10,28 +10,12 @@
 #include "core/geometry/surface_scene.h"
 #include "core/mesh/mesh_import.h"
 #include "support/test_paths.h"
+#include "support/untrained_models.h"
 
 namespace sagrid {
 namespace {
 namespace fs = std::filesystem;
 using ::testing::HasSubstr;
-
-// An untrained model whose card matches the features of `grid` (the pipeline, not accuracy, is
-// under test here).
-model::AffordanceModel untrainedModel(const std::string& name, const FeatureGrid& grid) {
-  model::ModelCard card;
-  card.name = name;
-  std::tie(card.category, card.type) = model::splitModelName(name);
-  card.architecture = "[3,1,4],[3,2,4,2]";
-  card.featureBackend = grid.backend;
-  card.featureConfigHash = grid.configHash;
-  card.featureChannels = grid.channels;
-  card.descriptorSize = static_cast<int>(grid.descriptor.size());
-  card.gridResolution = grid.resolution;
-  card.descriptorMean = grid.descriptor;
-  card.affordanceFeatureMean.assign(grid.channels, 0.5f);
-  return model::AffordanceModel(card, 3);
-}
 
 class AnnotateTest : public ::testing::Test {
  protected:
@@ -45,9 +29,9 @@ class AnnotateTest : public ::testing::Test {
     stoveFeatures = extractFeatures(entries[0].mesh, options);
     sinkFeatures = extractFeatures(entries[1].mesh, options);
     std::vector<model::AffordanceModel> models;
-    models.push_back(untrainedModel("stove.heatsource", stoveFeatures));
-    models.push_back(untrainedModel("stove.togglebutton", stoveFeatures));
-    models.push_back(untrainedModel("sink.fluidsource", sinkFeatures));
+    models.push_back(test::untrainedModelFor("stove.heatsource", stoveFeatures));
+    models.push_back(test::untrainedModelFor("stove.togglebutton", stoveFeatures));
+    models.push_back(test::untrainedModelFor("sink.fluidsource", sinkFeatures));
     set = std::make_unique<ModelSet>(std::move(models));
     annotate.features = options;
   }

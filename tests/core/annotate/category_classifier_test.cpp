@@ -16,6 +16,7 @@
 #include "core/generate/dataset_generator.h"
 #include "core/mesh/mesh_export.h"
 #include "support/test_paths.h"
+#include "support/untrained_models.h"
 
 namespace sagrid {
 namespace {
@@ -95,16 +96,8 @@ TEST(CategoryClassifier, FileRoundTripsAndCorruptionIsNamed) {
 }
 
 model::AffordanceModel cardOnly(const std::string& name, std::vector<float> mean) {
-  model::ModelCard card;
-  card.name = name;
-  std::tie(card.category, card.type) = model::splitModelName(name);
-  card.architecture = "[3,1,4]";
-  card.featureBackend = "embedded";
-  card.featureChannels = 2;
-  card.descriptorSize = static_cast<int>(mean.size());
-  card.descriptorStd.assign(mean.size(), 1.0f);
-  card.descriptorMean = std::move(mean);
-  return model::AffordanceModel(card, 1);
+  std::vector<float> spread(mean.size(), 1.0f);
+  return test::untrainedModelWithDescriptor(name, std::move(mean), std::move(spread));
 }
 
 ModelSet stoveAndSinkCards() {

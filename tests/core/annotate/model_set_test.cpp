@@ -3,25 +3,10 @@
 #include <gtest/gtest.h>
 
 #include "core/common/error.h"
+#include "support/untrained_models.h"
 
 namespace sagrid {
 namespace {
-
-// An untrained model whose card records the given descriptor statistics (retrieval only reads
-// the cards).
-model::AffordanceModel modelWithDescriptor(const std::string& name, std::vector<float> mean,
-                                           std::vector<float> spread) {
-  model::ModelCard card;
-  card.name = name;
-  std::tie(card.category, card.type) = model::splitModelName(name);
-  card.architecture = "[3,1,4]";
-  card.featureBackend = "embedded";
-  card.featureChannels = 2;
-  card.descriptorSize = static_cast<int>(mean.size());
-  card.descriptorMean = std::move(mean);
-  card.descriptorStd = std::move(spread);
-  return model::AffordanceModel(card, 1);
-}
 
 // Two large dimensions that vary a lot within each category and two small ones that separate
 // the categories: a stove whose large dimensions look like the sink mean.
@@ -33,8 +18,8 @@ TEST(ModelSet, RetrievalWeighsDimensionsByTheirSpread) {
   // Plain cosine on the raw descriptor files this stove as a sink ...
   EXPECT_GT(cosineSimilarity(kStove, kSinkMean), cosineSimilarity(kStove, kStoveMean));
   std::vector<model::AffordanceModel> models;
-  models.push_back(modelWithDescriptor("stove.heatsource", kStoveMean, kSpread));
-  models.push_back(modelWithDescriptor("sink.fluidsource", kSinkMean, kSpread));
+  models.push_back(test::untrainedModelWithDescriptor("stove.heatsource", kStoveMean, kSpread));
+  models.push_back(test::untrainedModelWithDescriptor("sink.fluidsource", kSinkMean, kSpread));
   const ModelSet set(std::move(models));
   // ... the standardized similarity does not.
   const auto ranked = set.rankCategories(kStove);
@@ -50,8 +35,8 @@ TEST(ModelSet, RetrievalWeighsDimensionsByTheirSpread) {
 
 TEST(ModelSet, RetrievalWithoutRecordedSpreadCentresOnly) {
   std::vector<model::AffordanceModel> models;
-  models.push_back(modelWithDescriptor("stove.heatsource", {1, 0, 0}, {}));
-  models.push_back(modelWithDescriptor("sink.fluidsource", {0, 1, 0}, {}));
+  models.push_back(test::untrainedModelWithDescriptor("stove.heatsource", {1, 0, 0}, {}));
+  models.push_back(test::untrainedModelWithDescriptor("sink.fluidsource", {0, 1, 0}, {}));
   const ModelSet set(std::move(models));
   // Centre (0.5, 0.5, 0): the stove mean is (0.5, -0.5, 0) from there, this descriptor
   // (0.5, 0.5, 7) - centre = (0, 0, 7): orthogonal to both categories.
@@ -61,7 +46,7 @@ TEST(ModelSet, RetrievalWithoutRecordedSpreadCentresOnly) {
 
 TEST(ModelSet, OneCategoryUsesThePlainCosine) {
   std::vector<model::AffordanceModel> models;
-  models.push_back(modelWithDescriptor("stove.heatsource", kStoveMean, kSpread));
+  models.push_back(test::untrainedModelWithDescriptor("stove.heatsource", kStoveMean, kSpread));
   const ModelSet set(std::move(models));
   EXPECT_DOUBLE_EQ(set.categorySimilarity(kStove, "stove"), cosineSimilarity(kStove, kStoveMean));
 }

@@ -6,7 +6,7 @@
 #include <set>
 
 #include "core/model/affordance_model.h"
-#include "core/model/model_card.h"
+#include "support/untrained_models.h"
 
 namespace sagrid {
 namespace {
@@ -86,19 +86,7 @@ TEST(SymmetryAveraging, AveragedFieldIsEquivariantForAnyModel) {
   // Averaging over the whole group makes the field equivariant even for an untrained model: the
   // field of a turned object is the turned field.
   const FeatureGrid g = randomGrid(8, 11);
-  model::ModelCard card;
-  card.name = "stove.heatsource";
-  card.category = "stove";
-  card.type = "heatsource";
-  card.architecture = "[3,1,4],[3,2,4,2]";
-  card.featureBackend = g.backend;
-  card.featureConfigHash = g.configHash;
-  card.featureChannels = g.channels;
-  card.descriptorSize = 2;
-  card.gridResolution = g.resolution;
-  card.descriptorMean = g.descriptor;
-  card.affordanceFeatureMean.assign(4, 0.5f);
-  const model::AffordanceModel model(card, 5);
+  const model::AffordanceModel model = test::untrainedModelFor("stove.heatsource", g, 5);
   const std::vector<float> field = symmetryAveragedDistances(model, g, kNormal);
   std::vector<std::size_t> order;
   const FeatureGrid turned = transformFeatureGrid(g, {1, true}, kNormal, &order);
