@@ -3,11 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
-namespace sagrid::gen {
+#include "core/generate/angles.h"
 
-namespace {
-constexpr float kPi = 3.14159265358979f;
-}
+namespace sagrid::gen {
 
 Vec3 jitter(Rng& rng, const Vec3& color, float amount) {
   const float shade = rng.uniformf(-amount, amount);

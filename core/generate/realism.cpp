@@ -2,11 +2,11 @@
 
 #include <cmath>
 
+#include "core/generate/angles.h"
+
 namespace sagrid::gen {
 
 namespace {
-
-constexpr float kPi = 3.14159265358979f;
 
 // Noise as a function of the (quantised) position, so coincident vertices of different parts
 // move together and no cracks open.

@@ -3,11 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
-namespace sagrid::gen {
+#include "core/generate/angles.h"
 
-namespace {
-constexpr float kPi = 3.14159265358979f;
-}
+namespace sagrid::gen {
 
 Affine translation(const Vec3& t) {
   Affine a = Affine::Identity();

@@ -3,14 +3,13 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/generate/angles.h"
 #include "core/generate/parts.h"
 #include "core/generate/shape_builder.h"
 
 namespace sagrid::gen {
 
 namespace {
-
-constexpr float kPi = 3.14159265358979f;
 
 class SinkBuilder {
  public:

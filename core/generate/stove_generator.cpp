@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/generate/angles.h"
 #include "core/generate/parts.h"
 #include "core/generate/shape_builder.h"
 #include "core/generate/texture_painter.h"
@@ -10,8 +11,6 @@
 namespace sagrid::gen {
 
 namespace {
-
-constexpr float kPi = 3.14159265358979f;
 
 struct Burner {
   Vec2 center;
