@@ -15,16 +15,14 @@
 #include "core/common/atomic_file.h"
 #include "core/common/error.h"
 #include "core/common/log.h"
+#include "core/common/resource_paths.h"
 #include "core/mesh/mesh_files.h"
 #include "core/mesh/mesh_import.h"
 
 namespace {
 namespace fs = std::filesystem;
 
-fs::path defaultModelsDir() {
-  if (fs::is_directory("resources/models")) return "resources/models";
-  return fs::path(SAGRID_SOURCE_DIR) / "resources" / "models";
-}
+using sagrid::defaultModelsDir;  // ./resources, <bin>/../share/sagrid or the source tree
 
 void setupAnnotate(CLI::App& root) {
   auto* cmd = root.add_subcommand("annotate",

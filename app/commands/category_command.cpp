@@ -13,6 +13,7 @@
 #include "core/annotate/category_training.h"
 #include "core/annotate/model_set.h"
 #include "core/common/error.h"
+#include "core/common/resource_paths.h"
 #include "core/dataset/dataset.h"
 #include "core/mesh/mesh_import.h"
 #include "core/model/model_card.h"
@@ -20,10 +21,7 @@
 namespace {
 namespace fs = std::filesystem;
 
-fs::path defaultModelsDir() {
-  if (fs::is_directory("resources/models")) return "resources/models";
-  return fs::path(SAGRID_SOURCE_DIR) / "resources" / "models";
-}
+using sagrid::defaultModelsDir;  // ./resources, <bin>/../share/sagrid or the source tree
 
 
 // Descriptors of every --data folder, minus the excluded ids, with a progress bar per folder.

@@ -10,6 +10,7 @@
 #include "app/command_registry.h"
 #include "app/progress_bar.h"
 #include "core/common/error.h"
+#include "core/common/resource_paths.h"
 #include "core/corpus/sweethome3d_corpus.h"
 
 namespace {
@@ -23,10 +24,7 @@ fs::path defaultDebCache() {
   return fs::temp_directory_path() / "sagrid-debs";
 }
 
-fs::path defaultLabelsDir() {
-  if (fs::is_directory("resources/datasets/sweethome3d")) return "resources/datasets/sweethome3d";
-  return fs::path(SAGRID_SOURCE_DIR) / "resources" / "datasets" / "sweethome3d";
-}
+fs::path defaultLabelsDir() { return sagrid::resourceDir("datasets/sweethome3d"); }
 
 void setupCorpus(CLI::App& root) {
   auto* corpus =

@@ -11,6 +11,7 @@
 #include "app/commands/learning_curve_options.h"
 #include "app/progress_bar.h"
 #include "core/common/error.h"
+#include "core/common/resource_paths.h"
 #include "core/eval/architecture_sweep.h"
 #include "core/eval/evaluation.h"
 #include "core/eval/evaluation_comparison.h"
@@ -92,10 +93,7 @@ void setupEval(CLI::App& root) {
       std::fprintf(stderr, "sweep report: %s\n", (fs::path(o->out) / "sweep.md").string().c_str());
       return;
     }
-    const fs::path modelsDir = !o->models.empty() ? fs::path(o->models)
-                               : fs::is_directory("resources/models")
-                                   ? fs::path("resources/models")
-                                   : fs::path(SAGRID_SOURCE_DIR) / "resources/models";
+    const fs::path modelsDir = !o->models.empty() ? fs::path(o->models) : sagrid::defaultModelsDir();
     const auto models = sagrid::ModelSet::load(modelsDir);
     sagrid::EvaluationOptions options;
     options.dataDir = o->data;

@@ -6,6 +6,7 @@
 #include <iostream>
 
 #include "core/common/error.h"
+#include "core/common/resource_paths.h"
 #include "core/eval/learning_curve.h"
 
 namespace sagrid::app {
@@ -40,9 +41,7 @@ bool runLearningCurveIfAsked(const LearningCurveCli& cli, CLI::App& eval, const 
   if (!cli.enabled) return false;
   LearningCurveOptions o;
   o.dataDir = data;
-  o.initDir = !cli.init.empty()                       ? fs::path(cli.init)
-              : fs::is_directory("resources/models") ? fs::path("resources/models")
-                                                     : fs::path(SAGRID_SOURCE_DIR) / "resources/models";
+  o.initDir = !cli.init.empty() ? fs::path(cli.init) : sagrid::defaultModelsDir();
   o.modelNames = cli.models;
   o.folds = cli.folds;
   o.ks = parseLearningCurveKs(cli.ks);

@@ -7,6 +7,7 @@
 #include "core/annotate/model_set.h"
 #include "core/common/error.h"
 #include "core/common/log.h"
+#include "core/common/resource_paths.h"
 #include "ui/document/annotation_document.h"
 
 namespace sagrid::ui {
@@ -15,11 +16,7 @@ namespace fs = std::filesystem;
 
 ModelPredictor::ModelPredictor(fs::path modelsDir) : m_modelsDir(std::move(modelsDir)) {}
 
-fs::path ModelPredictor::defaultModelsDir() {
-  std::error_code ec;
-  if (fs::is_directory("resources/models", ec)) return "resources/models";
-  return fs::path(SAGRID_SOURCE_DIR) / "resources" / "models";
-}
+fs::path ModelPredictor::defaultModelsDir() { return sagrid::defaultModelsDir(); }
 
 std::optional<PredictionJob> ModelPredictor::jobFor(const AnnotationDocument& document) {
   if (!m_models && !m_loadFailed) {
