@@ -1,12 +1,14 @@
 #include "core/export/export_frame.h"
 
 #include <cctype>
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <sstream>
 #include <system_error>
 
 #include "core/common/atomic_file.h"
+#include "core/common/contained_paths.h"
 #include "core/common/error.h"
 #include "core/mesh/mesh_import.h"
 
@@ -20,31 +22,9 @@ std::string objectId(const ObjectLabels& labels, const fs::path& meshPath) {
                                    : meshPath.stem().string();
 }
 
-std::string uprightRollPitchYaw(const ObjectLabels& labels) {
-  switch (upAxisOrZ(labels.object.up)) {
-    case UpAxis::PosX: return "0 -1.5707963 0";
-    case UpAxis::NegX: return "0 1.5707963 0";
-    case UpAxis::PosY: return "1.5707963 0 0";
-    case UpAxis::NegY: return "-1.5707963 0 0";
-    case UpAxis::NegZ: return "3.1415927 0 0";
-    default: return "0 0 0";
-  }
-}
-
-std::string uprightQuaternion(const ObjectLabels& labels) {
-  switch (upAxisOrZ(labels.object.up)) {
-    case UpAxis::PosX: return "0.7071068 0 -0.7071068 0";
-    case UpAxis::NegX: return "0.7071068 0 0.7071068 0";
-    case UpAxis::PosY: return "0.7071068 0.7071068 0 0";
-    case UpAxis::NegY: return "0.7071068 -0.7071068 0 0";
-    case UpAxis::NegZ: return "0 1 0 0";
-    default: return "";
-  }
-}
-
-Eigen::Vector3f toSimulatorFrame(const ObjectLabels& labels, const Eigen::Vector3f& filePosition) {
-  return fileToZUp(filePosition, upAxisOrZ(labels.object.up)) *
-         static_cast<float>(metersPerUnit(labels));
+Eigen::Vector3f toSimulatorFrame(const ObjectLabels& labels, const Eigen::Vector3f& filePosition,
+                                 double metersPerUnit) {
+  return fileToZUp(filePosition, upAxisOrZ(labels.object.up)) * static_cast<float>(metersPerUnit);
 }
 
 namespace {
@@ -86,25 +66,36 @@ fs::path copyMeshWithDependencies(const fs::path& mesh, const fs::path& dir,
   copyFileAtomic(mesh, target);
   std::string ext = mesh.extension().string();
   for (auto& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  if (ext == ".obj") {
-    const fs::path source = mesh.parent_path();
-    for (const auto& mtl : referencedFiles(mesh, {"mtllib"})) {
-      if (!fs::is_regular_file(source / mtl, ec)) continue;  // the importer already warned
-      copyFileAtomic(source / mtl, dir / mtl);
-      for (const auto& texture :
-           referencedFiles(source / mtl, {"map_Kd", "map_Ka", "map_Bump", "bump", "map_d"})) {
-        if (fs::is_regular_file(source / texture, ec))
-          copyFileAtomic(source / texture, dir / texture);
-      }
+  if (ext != ".obj") return target;
+  const fs::path source = mesh.parent_path();
+  for (const auto& mtlName : referencedFiles(mesh, {"mtllib"})) {
+    const fs::path mtl = resolveContained(source, mtlName, mesh);
+    if (!fs::is_regular_file(mtl, ec)) continue;  // the importer already warned
+    const fs::path relativeMtl = mtl.lexically_relative(source);
+    copyFileAtomic(mtl, dir / relativeMtl);
+    for (const auto& textureName :
+         referencedFiles(mtl, {"map_Kd", "map_Ka", "map_Bump", "map_bump", "bump", "map_d"})) {
+      // MTL texture names are relative to the MTL's folder, which lies inside the mesh's.
+      const fs::path texture =
+          resolveContained(source, (relativeMtl.parent_path() / textureName).generic_string(), mtl);
+      if (fs::is_regular_file(texture, ec))
+        copyFileAtomic(texture, dir / texture.lexically_relative(source));
     }
   }
   return target;
 }
 
 std::string formatNumber(double value) {
+  if (!std::isfinite(value))
+    throw Error("internal error: a non-finite number reached an export file");
+  if (value == 0.0) value = 0.0;  // no "-0"
   char buffer[32];
   std::snprintf(buffer, sizeof buffer, "%.6g", value);
   return buffer;
+}
+
+std::string formatVector(const Eigen::Vector3d& v) {
+  return formatNumber(v.x()) + " " + formatNumber(v.y()) + " " + formatNumber(v.z());
 }
 
 }  // namespace sagrid::exportdetail

@@ -4,29 +4,33 @@
 #include <cctype>
 #include <system_error>
 
+#include "core/common/contained_paths.h"
 #include "core/common/error.h"
 #include "core/export/mjcf_export.h"
+#include "core/export/omnigibson_export.h"
 #include "core/mesh/mesh_import.h"
 
 namespace sagrid {
 
 namespace fs = std::filesystem;
 
-namespace {
-
-// The mesh a labels file describes: object.mesh if set, else the one mesh-like file beside it.
-fs::path meshFor(const ObjectLabels& labels, const fs::path& labelsPath) {
-  const fs::path dir = labelsPath.parent_path();
-  if (!labels.object.mesh.empty()) return dir / labels.object.mesh;
+fs::path meshForLabels(const ObjectLabels& labels, const fs::path& labelsPath) {
+  const fs::path dir = labelsPath.parent_path().empty() ? fs::path(".") : labelsPath.parent_path();
+  if (!labels.object.mesh.empty()) return resolveContained(dir, labels.object.mesh, labelsPath);
   std::error_code ec;
-  for (const auto& item : fs::directory_iterator(dir, ec)) {
-    std::string ext = item.path().extension().string();
+  std::vector<fs::path> items;
+  for (const auto& item : fs::directory_iterator(dir, ec)) items.push_back(item.path());
+  std::sort(items.begin(), items.end());  // the same mesh every run
+  for (const auto& path : items) {
+    std::string ext = path.extension().string();
     for (auto& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
     const auto& supported = supportedMeshExtensions();
-    if (std::find(supported.begin(), supported.end(), ext) != supported.end()) return item.path();
+    if (std::find(supported.begin(), supported.end(), ext) != supported.end()) return path;
   }
   throw FileError(labelsPath, "no mesh named in object.mesh and none found beside it");
 }
+
+namespace {
 
 std::vector<fs::path> labelFiles(const fs::path& input) {
   std::error_code ec;
@@ -50,16 +54,19 @@ std::vector<fs::path> labelFiles(const fs::path& input) {
 }  // namespace
 
 std::vector<SimulatorExport> exportObjects(const fs::path& input, const std::string& format,
-                                           const fs::path& outDir) {
+                                           const fs::path& outDir, const ExportOptions& options) {
   if (format != "omnigibson" && format != "mjcf") {
     throw InvalidArgument("unknown export format '" + format + "' (use omnigibson or mjcf)");
   }
+  ExportNames names;
+  ExportOptions batch = options;
+  if (!batch.names) batch.names = &names;
   std::vector<SimulatorExport> results;
   for (const auto& labelsPath : labelFiles(input)) {
     const ObjectLabels labels = readLabels(labelsPath);
-    const fs::path mesh = meshFor(labels, labelsPath);
-    results.push_back(format == "mjcf" ? exportMjcf(labels, mesh, outDir)
-                                       : exportOmniGibson(labels, mesh, outDir));
+    const fs::path mesh = meshForLabels(labels, labelsPath);
+    results.push_back(format == "mjcf" ? exportMjcf(labels, mesh, outDir, batch, labelsPath)
+                                       : exportOmniGibson(labels, mesh, outDir, batch, labelsPath));
   }
   return results;
 }

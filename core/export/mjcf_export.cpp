@@ -1,19 +1,27 @@
 #include "core/export/mjcf_export.h"
 
-#include <cctype>
-#include <map>
 #include <sstream>
 
 #include "core/common/atomic_file.h"
+#include "core/common/contained_paths.h"
 #include "core/export/export_frame.h"
+#include "core/export/robocasa_sites.h"
+#include "core/export/simulator_geometry.h"
+#include "core/export/staged_folder.h"
+#include "core/export/stl_file.h"
+#include "core/export/xml_text.h"
+#include "core/physics/convex_decomposition.h"
 
 namespace sagrid {
 
 namespace fs = std::filesystem;
+using exportdetail::escapeXml;
 using exportdetail::formatNumber;
+using exportdetail::formatVector;
 
 namespace {
-constexpr double kSiteRadius = 0.008;  // metres
+
+constexpr double kMinRegionHalfSize = 0.0005;  // metres; MuJoCo refuses zero-sized boxes
 
 std::string rgbaFor(const std::string& type) {
   if (type == "heatsource") return "1 0.4 0.1 0.6";
@@ -22,51 +30,109 @@ std::string rgbaFor(const std::string& type) {
   return "0.9 0.9 0.2 0.6";
 }
 
-std::string siteName(const std::string& type, int index) {
-  std::string name;
-  for (unsigned char c : type)
-    name.push_back(std::isalnum(c) ? static_cast<char>(std::tolower(c)) : '_');
-  return name + "_" + std::to_string(index);
+void writeAssets(std::ostringstream& xml, const exportdetail::SimulatorGeometry& geometry,
+                 const fs::path& folder) {
+  fs::create_directories(folder / "meshes");
+  xml << "  <asset>\n";
+  for (const auto& part : geometry.visualParts) {
+    writeFileAtomic(folder / "meshes" / (part.name + ".stl"),
+                    exportdetail::encodeBinaryStl(part.mesh));
+    xml << "    <material name=\"" << part.name << "\" rgba=\""
+        << formatVector(part.color.cast<double>()) << " 1\"/>\n"
+        << "    <mesh name=\"" << part.name << "\" file=\"meshes/" << part.name << ".stl\"/>\n";
+  }
+  for (std::size_t i = 0; i < geometry.collisionParts.size(); ++i) {
+    const std::string name = "collision_" + std::to_string(i);
+    writeFileAtomic(folder / "meshes" / (name + ".stl"),
+                    exportdetail::encodeBinaryStl(physics::toMesh(geometry.collisionParts[i])));
+    xml << "    <mesh name=\"" << name << "\" file=\"meshes/" << name << ".stl\"/>\n";
+  }
+  xml << "  </asset>\n";
 }
+
+void writeInertial(std::ostringstream& xml, const physics::MassProperties& mass) {
+  const Eigen::Quaterniond& q = mass.principalAxes;
+  xml << "      <inertial pos=\"" << formatVector(mass.centerOfMass) << "\" quat=\""
+      << formatNumber(q.w()) << " " << formatNumber(q.x()) << " " << formatNumber(q.y()) << " "
+      << formatNumber(q.z()) << "\" mass=\"" << formatNumber(mass.mass) << "\" diaginertia=\""
+      << formatVector(mass.principalMoments) << "\"/>\n";
+}
+
+void writeGeoms(std::ostringstream& xml, const exportdetail::SimulatorGeometry& geometry) {
+  for (const auto& part : geometry.visualParts) {
+    xml << "      <geom name=\"" << part.name << "\" class=\"visual\" mesh=\"" << part.name
+        << "\" material=\"" << part.name << "\"/>\n";
+  }
+  for (std::size_t i = 0; i < geometry.collisionParts.size(); ++i) {
+    const std::string name = "collision_" + std::to_string(i);
+    xml << "      <geom name=\"" << name << "\" class=\"collision\" mesh=\"" << name << "\"/>\n";
+  }
+  // RoboCasa's fixtures carry their bounding box as the region geom "reg_main".
+  const Eigen::Vector3d center = geometry.bounds.center().cast<double>();
+  const Eigen::Vector3d half =
+      (0.5 * geometry.bounds.sizes().cast<double>()).cwiseMax(kMinRegionHalfSize);
+  xml << "      <geom name=\"reg_main\" type=\"box\" pos=\"" << formatVector(center) << "\" size=\""
+      << formatVector(half)
+      << "\" contype=\"0\" conaffinity=\"0\" group=\"3\" rgba=\"0 1 0 0\"/>\n";
+}
+
+void writeSites(std::ostringstream& xml, const ObjectLabels& labels,
+                const exportdetail::SimulatorGeometry& geometry) {
+  std::vector<exportdetail::SimulatorPoint> points;
+  for (const auto& point : labels.affordances) {
+    points.push_back({point.type, exportdetail::toSimulatorFrame(labels, point.position,
+                                                                 geometry.metersPerUnit)});
+  }
+  for (const auto& site :
+       exportdetail::robocasaSites(points, geometry.bounds, labels.object.category)) {
+    xml << "      <site name=\"" << escapeXml(site.name) << "\" type=\"" << site.shape
+        << "\" pos=\"" << formatVector(site.position.cast<double>()) << "\" size=\""
+        << formatNumber(site.size.x());
+    if (site.shape == "cylinder") xml << " " << formatNumber(site.size.y());
+    xml << "\" rgba=\"" << rgbaFor(site.affordanceType) << "\" group=\"3\"/>\n";
+  }
+}
+
 }  // namespace
 
 SimulatorExport exportMjcf(const ObjectLabels& labels, const fs::path& meshPath,
-                           const fs::path& outDir) {
+                           const fs::path& outDir, const ExportOptions& options,
+                           const fs::path& labelsPath) {
   const std::string id = exportdetail::objectId(labels, meshPath);
+  ExportNames localNames;
+  ExportNames& names = options.names ? *options.names : localNames;
+  const std::string folderName = names.folders.claim(id);
+
+  exportdetail::SimulatorGeometry geometry =
+      exportdetail::buildSimulatorGeometry(labels, meshPath, labelsPath, options);
   SimulatorExport result;
-  result.root = outDir / id;
-  const fs::path copied = exportdetail::copyMeshWithDependencies(meshPath, result.root);
-  std::string ext = copied.extension().string();
-  for (auto& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  if (ext != ".obj" && ext != ".stl") {
-    result.warnings.push_back(copied.filename().string() +
-                              ": MuJoCo loads only OBJ and STL meshes; convert it "
-                              "before loading " +
-                              id + ".xml");
-  }
-  const double s = metersPerUnit(labels);
+  result.warnings = std::move(geometry.warnings);
+  exportdetail::StagedFolder staged(outDir / folderName);
+
   std::ostringstream xml;
-  xml << "<mujoco model=\"" << id << "\">\n  <compiler angle=\"radian\"/>\n  <asset>\n"
-      << "    <mesh name=\"" << id << "_mesh\" file=\"" << copied.filename().string()
-      << "\" scale=\"" << formatNumber(s) << " " << formatNumber(s) << " " << formatNumber(s)
-      << "\"/>\n  </asset>\n"
-      << "  <worldbody>\n    <body name=\"object\">\n";
-  // The file's up axis is turned to +z (a y-up file: +90 degrees about x).
-  const std::string upright = exportdetail::uprightQuaternion(labels);
-  const std::string quat = upright.empty() ? "" : " quat=\"" + upright + "\"";
-  xml << "      <geom name=\"" << id << "_visual\" type=\"mesh\" mesh=\"" << id << "_mesh\"" << quat
-      << " contype=\"0\" conaffinity=\"0\" group=\"1\"/>\n";
-  std::map<std::string, int> perType;
-  for (const auto& point : labels.affordances) {
-    const Eigen::Vector3f p = exportdetail::toSimulatorFrame(labels, point.position);
-    xml << "      <site name=\"" << siteName(point.type, perType[point.type]++)
-        << "\" type=\"sphere\" pos=\"" << formatNumber(p.x()) << " " << formatNumber(p.y()) << " "
-        << formatNumber(p.z()) << "\" size=\"" << formatNumber(kSiteRadius) << "\" rgba=\""
-        << rgbaFor(point.type) << "\" group=\"3\"/>\n";
-  }
+  xml << "<mujoco model=\"" << escapeXml(id) << "\">\n"
+      << "  <compiler angle=\"radian\" balanceinertia=\"true\"/>\n"
+      << "  <default>\n"
+      << "    <default class=\"visual\"><geom type=\"mesh\" contype=\"0\" conaffinity=\"0\" "
+         "group=\"1\"/></default>\n"
+      << "    <default class=\"collision\"><geom type=\"mesh\" group=\"0\" "
+         "rgba=\"0.5 0.5 0.5 1\"/></default>\n"
+      << "  </default>\n";
+  writeAssets(xml, geometry, staged.path());
+  xml << "  <worldbody>\n    <body name=\"object\">\n";
+  writeInertial(xml, geometry.mass);
+  writeGeoms(xml, geometry);
+  writeSites(xml, labels, geometry);
   xml << "    </body>\n  </worldbody>\n</mujoco>\n";
-  result.mainFile = result.root / (id + ".xml");
-  writeFileAtomic(result.mainFile, xml.str());
+  writeFileAtomic(staged.path() / (folderName + ".xml"), xml.str());
+  staged.commit();
+
+  result.root = outDir / folderName;
+  result.mainFile = result.root / (folderName + ".xml");
+  for (const auto& part : geometry.visualParts)
+    result.visualTriangles += static_cast<int>(part.mesh.triangles.size());
+  result.collisionParts = static_cast<int>(geometry.collisionParts.size());
+  result.massKg = geometry.mass.mass;
   if (labels.affordances.empty())
     result.warnings.push_back(id + ": no affordance points to export");
   return result;

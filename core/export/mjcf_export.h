@@ -1,16 +1,26 @@
-// Simulator export for MuJoCo: an MJCF model of the object with one <site> per affordance, named
-// after its type and index as RoboCasa names its fixture sites (e.g. heatsource_0, togglebutton_1),
-// in the body frame: z up, metres. The mesh is copied beside the XML.
+// Simulator export for MuJoCo / RoboCasa: OUT/<id>/<id>.xml with
+//  - the visual mesh as one binary STL per part (meshes/visual_<i>.stl, see visual_parts.h), so
+//    every triangle reaches MuJoCo; visual geoms in group 1 with contype/conaffinity 0;
+//  - collision geoms in group 0 from the convex decomposition (meshes/collision_<i>.stl), or one
+//    hull, or none (ExportOptions::collision);
+//  - the body's mass and inertia (core/physics estimate, or the curator's object.mass_kg);
+//  - RoboCasa's site names (robocasa_sites.h) and a `reg_main` box geom with the bounding box;
+//  - <compiler angle="radian"/>; everything in the body frame: z up, metres.
+// The folder is written beside its final place and renamed into it at the end.
 #pragma once
 
 #include <filesystem>
 
-#include "core/export/omnigibson_export.h"
+#include "core/export/export_options.h"
+#include "core/export/simulator_export.h"
 #include "core/labels/labels.h"
 
 namespace sagrid {
 
+// `labelsPath` is named in errors about labels fields. Throws FileError/InvalidArgument on
+// unusable input; nothing is left under OUT then.
 SimulatorExport exportMjcf(const ObjectLabels& labels, const std::filesystem::path& meshPath,
-                           const std::filesystem::path& outDir);
+                           const std::filesystem::path& outDir, const ExportOptions& options = {},
+                           const std::filesystem::path& labelsPath = {});
 
 }  // namespace sagrid

@@ -1,99 +1,182 @@
 #include "core/export/omnigibson_export.h"
 
-#include <cctype>
-#include <map>
+#include <cmath>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
 #include "core/common/atomic_file.h"
+#include "core/common/contained_paths.h"
 #include "core/common/error.h"
 #include "core/export/export_frame.h"
+#include "core/export/omnigibson_meta_links.h"
+#include "core/export/simulator_geometry.h"
+#include "core/export/staged_folder.h"
+#include "core/export/xml_text.h"
+#include "core/mesh/mesh_export.h"
+#include "core/physics/convex_decomposition.h"
 
 namespace sagrid {
 
 namespace fs = std::filesystem;
 using exportdetail::formatNumber;
+using exportdetail::formatVector;
+using exportdetail::kBaseLink;
 
 namespace {
-constexpr const char* kBaseLink = "base_link";
-constexpr double kToggleSphereRadius = 0.01;  // metres; a fingertip-sized button volume
 
-std::string xyz(const Eigen::Vector3f& p) {
-  return formatNumber(p.x()) + " " + formatNumber(p.y()) + " " + formatNumber(p.z());
+constexpr double kMetaLinkMass = 0.0001;  // what _create_urdf_meta_link gives meta links
+constexpr double kMetaLinkInertia = 0.00001;
+
+// A collision part as the importer stores them (generate_urdf_for_mesh): vertices divided by the
+// part's bounding-box extents, the extents as the URDF mesh scale.
+struct UnitBoxPart {
+  std::string obj;
+  Eigen::Vector3d scale;
+};
+
+UnitBoxPart unitBoxPart(const physics::ConvexPart& part) {
+  Eigen::AlignedBox3d box;
+  for (const auto& v : part.vertices) box.extend(v.cast<double>());
+  UnitBoxPart out;
+  out.scale = box.sizes().cwiseMax(1e-6);  // parts span a volume; guard the division anyway
+  std::ostringstream obj;
+  obj << "# convex collision part written by sagrid (unit bounding box; URDF scale restores it)\n";
+  for (const auto& v : part.vertices)
+    obj << "v " << formatVector(v.cast<double>().cwiseQuotient(out.scale)) << "\n";
+  for (const auto& t : part.triangles)
+    obj << "f " << t[0] + 1 << " " << t[1] + 1 << " " << t[2] + 1 << "\n";
+  out.obj = obj.str();
+  return out;
 }
+
+std::string origin(const Eigen::Vector3d& xyz) {
+  return "<origin xyz=\"" + formatVector(xyz) + "\" rpy=\"0 0 0\"/>";
+}
+
+std::string inertialXml(const physics::MassProperties& mass) {
+  const Eigen::Matrix3d& I = mass.inertia;
+  std::ostringstream xml;
+  xml << "    <inertial>\n      " << origin(mass.centerOfMass) << "\n      <mass value=\""
+      << formatNumber(mass.mass) << "\"/>\n      <inertia ixx=\"" << formatNumber(I(0, 0))
+      << "\" ixy=\"" << formatNumber(I(0, 1)) << "\" ixz=\"" << formatNumber(I(0, 2)) << "\" iyy=\""
+      << formatNumber(I(1, 1)) << "\" iyz=\"" << formatNumber(I(1, 2)) << "\" izz=\""
+      << formatNumber(I(2, 2)) << "\"/>\n    </inertial>\n";
+  return xml.str();
+}
+
+std::string metaLinksXml(const std::vector<exportdetail::MetaLink>& links) {
+  std::ostringstream xml;
+  for (const auto& link : links) {
+    const std::string stem = link.linkName.substr(0, link.linkName.size() - 5);  // no "_link"
+    xml << "  <joint name=\"" << stem << "_joint\" type=\"fixed\">\n    "
+        << origin(link.position.cast<double>()) << "\n    <parent link=\"" << kBaseLink
+        << "\"/>\n    <child link=\"" << link.linkName << "\"/>\n  </joint>\n"
+        << "  <link name=\"" << link.linkName << "\">\n    <inertial>\n      <mass value=\""
+        << formatNumber(kMetaLinkMass) << "\"/>\n      <inertia ixx=\""
+        << formatNumber(kMetaLinkInertia) << "\" ixy=\"0\" ixz=\"0\" iyy=\""
+        << formatNumber(kMetaLinkInertia) << "\" iyz=\"0\" izz=\"" << formatNumber(kMetaLinkInertia)
+        << "\"/>\n    </inertial>\n  </link>\n";
+  }
+  return xml.str();
+}
+
+// nlohmann writes NaN and infinity as null; no such number may reach metadata.json.
+void requireFiniteNumbers(const nlohmann::json& json) {
+  if (json.is_number_float() && !std::isfinite(json.get<double>()))
+    throw Error("internal error: a non-finite number reached metadata.json");
+  if (json.is_structured())
+    for (const auto& item : json) requireFiniteNumbers(item);
+}
+
+std::string lowerCase(std::string text) {
+  for (auto& c : text) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return text;
+}
+
 }  // namespace
 
-const char* omnigibsonMetaLinkKind(const std::string& affordanceType) {
-  return affordanceType == "togglebutton" ? "sphere" : "point";
-}
-
-std::string omnigibsonId(const std::string& text) {
-  std::string id;
-  for (unsigned char c : text) {
-    if (std::isalnum(c)) id.push_back(static_cast<char>(std::tolower(c)));
-  }
-  return id.empty() ? "object" : id;
-}
-
 SimulatorExport exportOmniGibson(const ObjectLabels& labels, const fs::path& meshPath,
-                                 const fs::path& outDir) {
-  const std::string id = omnigibsonId(exportdetail::objectId(labels, meshPath));
+                                 const fs::path& outDir, const ExportOptions& options,
+                                 const fs::path& labelsPath) {
+  const std::string id = exportdetail::objectId(labels, meshPath);
+  exportdetail::SimulatorGeometry geometry =
+      exportdetail::buildSimulatorGeometry(labels, meshPath, labelsPath, options);
   SimulatorExport result;
-  result.root = outDir / id;
-  const fs::path copied =
-      exportdetail::copyMeshWithDependencies(meshPath, result.root / "shape" / "visual");
-  const std::string meshRef = "../shape/visual/" + copied.filename().string();
-  const double scale = metersPerUnit(labels);
-  // The file's up axis is turned to OmniGibson's +z (a y-up file: +90 degrees about x).
-  const std::string rpy = exportdetail::uprightRollPitchYaw(labels);
+  result.warnings = std::move(geometry.warnings);
 
-  std::ostringstream urdf;
-  urdf << "<?xml version=\"1.0\"?>\n<robot name=\"" << id << "\">\n";
-  urdf << "  <link name=\"" << kBaseLink << "\">\n";
-  for (const char* part : {"visual", "collision"}) {
-    urdf << "    <" << part << ">\n      <origin xyz=\"0 0 0\" rpy=\"" << rpy << "\"/>\n"
-         << "      <geometry><mesh filename=\"" << meshRef << "\" scale=\"" << formatNumber(scale)
-         << " " << formatNumber(scale) << " " << formatNumber(scale) << "\"/></geometry>\n    </"
-         << part << ">\n";
+  ExportNames localNames;
+  ExportNames& names = options.names ? *options.names : localNames;
+  const std::string model = names.models.claim(id, result.warnings);
+  if (labels.object.category.empty())
+    result.warnings.push_back(id + ": no category; exported under the category 'object'");
+  const std::string category = safeFileName(lowerCase(labels.object.category), 64, "object");
+  exportdetail::StagedFolder staged(outDir / category / model);
+  const fs::path root = staged.path();
+
+  // Visual mesh: the imported mesh, z up in metres, as one OBJ with one MTL (the importer's
+  // _force_asset_pipeline_materials allows one mtllib per OBJ) and its textures.
+  Mesh visual = geometry.mesh;
+  visual.fileUp = UpAxis::Z;
+  const std::string visualName = model + "_base_link_visual";
+  fs::create_directories(root / "shape" / "visual");
+  writeEncodedMeshFiles(encodeObj(visual, visualName), root / "shape" / "visual");
+
+  std::ostringstream link;
+  link << "  <link name=\"" << kBaseLink << "\">\n    <visual name=\"base_link_visual\">\n      "
+       << origin(Eigen::Vector3d::Zero()) << "\n      <geometry><mesh filename=\"../shape/visual/"
+       << visualName << ".obj\" scale=\"1 1 1\"/></geometry>\n    </visual>\n";
+  fs::create_directories(root / "shape" / "collision");
+  for (std::size_t i = 0; i < geometry.collisionParts.size(); ++i) {
+    const UnitBoxPart part = unitBoxPart(geometry.collisionParts[i]);
+    const std::string file = model + "_base_link_collision_" + std::to_string(i) + ".obj";
+    writeFileAtomic(root / "shape" / "collision" / file, part.obj);
+    link << "    <collision name=\"base_link_collision_" << i << "\">\n      "
+         << origin(Eigen::Vector3d::Zero()) << "\n      <geometry><mesh filename=\"../shape/"
+         << "collision/" << file << "\" scale=\"" << formatVector(part.scale)
+         << "\"/></geometry>\n    </collision>\n";
   }
-  urdf << "  </link>\n";
+  link << inertialXml(geometry.mass) << "  </link>\n";
 
-  nlohmann::json metaLinks = nlohmann::json::object();
-  std::map<std::string, int> perType;
+  std::vector<exportdetail::SimulatorPoint> points;
   for (const auto& point : labels.affordances) {
-    const std::string type = omnigibsonId(point.type);
-    const std::string metaId = std::to_string(perType[type]++);
-    const std::string link =
-        std::string("meta__") + kBaseLink + "_" + type + "_" + metaId + "_0_link";
-    const Eigen::Vector3f p = exportdetail::toSimulatorFrame(labels, point.position);
-    const std::string kind = omnigibsonMetaLinkKind(point.type);
-    urdf << "  <link name=\"" << link << "\">\n";
-    if (kind == "sphere") {
-      urdf << "    <visual><geometry><sphere radius=\"" << formatNumber(kToggleSphereRadius)
-           << "\"/></geometry></visual>\n";
-    }
-    urdf << "  </link>\n  <joint name=\"" << link << "_joint\" type=\"fixed\">\n"
-         << "    <parent link=\"" << kBaseLink << "\"/>\n    <child link=\"" << link << "\"/>\n"
-         << "    <origin xyz=\"" << xyz(p) << "\" rpy=\"0 0 0\"/>\n  </joint>\n";
-    nlohmann::json entry = {
-        {"type", kind}, {"position", {p.x(), p.y(), p.z()}}, {"orientation", {0.0, 0.0, 0.0, 1.0}}};
-    if (kind == "sphere")
-      entry["size"] = {kToggleSphereRadius, kToggleSphereRadius, kToggleSphereRadius};
-    metaLinks[kBaseLink][type][metaId] = nlohmann::json::array({entry});
+    points.push_back({point.type, exportdetail::toSimulatorFrame(labels, point.position,
+                                                                 geometry.metersPerUnit)});
   }
-  urdf << "</robot>\n";
+  const auto metaLinks =
+      exportdetail::omnigibsonMetaLinks(points, options.legacyFluidSource, result.warnings);
+  const std::string head = "<?xml version=\"1.0\"?>\n<robot name=\"" + model + "\">\n";
+  fs::create_directories(root / "urdf");
+  writeFileAtomic(root / "urdf" / (model + ".urdf"), head + link.str() + "</robot>\n");
+  writeFileAtomic(root / "urdf" / (model + "_with_meta_links.urdf"),
+                  head + link.str() + metaLinksXml(metaLinks) + "</robot>\n");
 
-  result.mainFile = result.root / "urdf" / (id + ".urdf");
-  fs::create_directories(result.mainFile.parent_path());
-  writeFileAtomic(result.mainFile, urdf.str());
-  nlohmann::json metadata = {{"meta_links", metaLinks},
-                             {"category", labels.object.category},
-                             {"source",
-                              {{"mesh", meshPath.filename().string()},
-                               {"sha256", labels.object.sha256},
-                               {"tool", std::string("sagrid ") + SAGRID_VERSION}}}};
-  fs::create_directories(result.root / "misc");
-  writeFileAtomic(result.root / "misc" / "metadata.json", metadata.dump(2) + "\n");
+  // misc/metadata.json as record_obj_metadata_from_urdf writes it, plus the meta links.
+  const Eigen::Vector3d size = geometry.bounds.sizes().cast<double>();
+  const Eigen::Vector3d offset = geometry.bounds.center().cast<double>();
+  nlohmann::json metadata = {
+      {"bbox_size", {size.x(), size.y(), size.z()}},
+      {"base_link_offset", {offset.x(), offset.y(), offset.z()}},
+      {"link_tags", nlohmann::json::object()},
+      {"object_parts", nlohmann::json::array()},
+      {"orientations", nlohmann::json::array()},
+      {"meta_links", exportdetail::metaLinksJson(metaLinks)},
+      {"sagrid",
+       {{"id", id},
+        {"mesh_sha256", geometry.mesh.sha256},
+        {"mass_kg", geometry.mass.mass},
+        {"mass_source", geometry.massFromLabels ? "labels object.mass_kg" : "estimated"},
+        {"tool", std::string("sagrid ") + SAGRID_VERSION}}}};
+  requireFiniteNumbers(metadata);
+  fs::create_directories(root / "misc");
+  writeFileAtomic(root / "misc" / "metadata.json",
+                  metadata.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n");
+  staged.commit();
+
+  result.root = outDir / category / model;
+  result.mainFile = result.root / "urdf" / (model + ".urdf");
+  result.visualTriangles = static_cast<int>(geometry.mesh.triangles.size());
+  result.collisionParts = static_cast<int>(geometry.collisionParts.size());
+  result.massKg = geometry.mass.mass;
   if (labels.affordances.empty())
     result.warnings.push_back(id + ": no affordance points to export");
   return result;

@@ -6,6 +6,7 @@
 #include <system_error>
 
 #include "core/common/atomic_file.h"
+#include "core/common/contained_paths.h"
 #include "core/common/error.h"
 #include "core/export/export_frame.h"
 
@@ -18,7 +19,7 @@ std::string datasetId(const std::string& text) {
   std::string id;
   for (unsigned char c : text)
     id.push_back(std::isalnum(c) || c == '-' || c == '_' ? static_cast<char>(c) : '-');
-  return id.empty() ? "object" : id;
+  return safeFileName(id);  // bounded length; '-' for everything but letters, digits, - and _
 }
 }  // namespace
 

@@ -1,0 +1,86 @@
+#include "core/export/simulator_geometry.h"
+
+#include "core/common/error.h"
+#include "core/export/export_units.h"
+#include "core/mesh/mesh_import.h"
+#include "core/physics/convex_decomposition.h"
+
+namespace sagrid::exportdetail {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr int kMaxHullVertices = 64;  // MuJoCo, V-HACD and OmniGibson (60) keep hulls this small
+
+std::vector<physics::ConvexPart> collisionParts(const Mesh& mesh, const ExportOptions& options,
+                                                std::vector<std::string>& warnings) {
+  switch (options.collision) {
+    case CollisionMode::None:
+      return {};
+    case CollisionMode::Hull:
+      return {physics::convexHullPart(mesh, kMaxHullVertices)};
+    case CollisionMode::Decompose: {
+      physics::DecompositionOptions decomposition;
+      decomposition.maxParts = options.maxCollisionParts;
+      decomposition.maxVerticesPerPart = kMaxHullVertices;
+      if (options.progress) {
+        decomposition.progress = [&options](float fraction, const std::string& stage) {
+          options.progress(0.1f + 0.8f * fraction, "collision: " + stage);
+        };
+      }
+      physics::Decomposition result = physics::decomposeConvex(mesh, decomposition);
+      warnings.insert(warnings.end(), result.warnings.begin(), result.warnings.end());
+      return std::move(result.parts);
+    }
+  }
+  return {};
+}
+
+}  // namespace
+
+SimulatorGeometry buildSimulatorGeometry(const ObjectLabels& labels, const fs::path& meshPath,
+                                         const fs::path& labelsPath, const ExportOptions& options) {
+  const fs::path shownLabels = labelsPath.empty() ? meshPath : labelsPath;
+  SimulatorGeometry geometry;
+  const UnitScale units = exportUnitScale(labels, shownLabels);
+  if (units.warning) geometry.warnings.push_back(*units.warning);
+  geometry.metersPerUnit = units.metersPerUnit;
+  validateAffordancePositions(labels, units.metersPerUnit, shownLabels);
+  const std::optional<double> curatedMass = curatedMassKg(labels, shownLabels);
+
+  if (options.progress) options.progress(0.0f, "importing");
+  const auto up = parseUpAxis(labels.object.up);
+  if (!up) throw FileError(shownLabels, "object.up '" + labels.object.up + "' is not an axis");
+  geometry.mesh = importMesh(meshPath, ImportOptions(*up));
+  if (!labels.object.sha256.empty() && labels.object.sha256 != geometry.mesh.sha256) {
+    geometry.warnings.push_back(meshPath.string() +
+                                ": differs from the mesh the labels were made for (sha256)");
+  }
+  for (auto& p : geometry.mesh.positions) p *= static_cast<float>(units.metersPerUnit);
+  geometry.bounds = geometry.mesh.bounds();
+  if (!geometry.bounds.min().allFinite() || !geometry.bounds.max().allFinite() ||
+      geometry.bounds.min().cwiseAbs().maxCoeff() > kMaxCoordinateMeters ||
+      geometry.bounds.max().cwiseAbs().maxCoeff() > kMaxCoordinateMeters) {
+    throw FileError(meshPath,
+                    "coordinates reach farther than 10 km once in metres; check the "
+                    "units (object.units / object.meters_per_unit in labels.json)");
+  }
+
+  geometry.visualParts = visualParts(geometry.mesh, geometry.warnings);
+  geometry.collisionParts = collisionParts(geometry.mesh, options, geometry.warnings);
+  if (options.progress) options.progress(0.9f, "mass");
+  physics::MassOptions massOptions;
+  massOptions.category = labels.object.category;
+  geometry.mass = physics::estimateMassProperties(geometry.mesh, massOptions);
+  geometry.warnings.insert(geometry.warnings.end(), geometry.mass.warnings.begin(),
+                           geometry.mass.warnings.end());
+  if (curatedMass) {
+    geometry.mass = physics::withMass(geometry.mass, *curatedMass);
+    geometry.massFromLabels = true;
+  }
+  if (options.progress) options.progress(1.0f, "writing");
+  return geometry;
+}
+
+}  // namespace sagrid::exportdetail

@@ -1,0 +1,39 @@
+// Everything a simulator export writes about an object's shape, computed once: the mesh loaded
+// through the same importer as every other command (import before export: what cannot be loaded
+// is refused), stood up (z up) and scaled to metres; its visual parts; its collision parts
+// (none, one hull or the convex decomposition); its mass and inertia (the curator's mass from
+// labels when set); and the warnings a user should see.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "core/export/export_options.h"
+#include "core/export/visual_parts.h"
+#include "core/labels/labels.h"
+#include "core/mesh/mesh.h"
+#include "core/physics/convex_part.h"
+#include "core/physics/mass_properties.h"
+
+namespace sagrid::exportdetail {
+
+struct SimulatorGeometry {
+  Mesh mesh;  // z up, metres
+  Eigen::AlignedBox3f bounds;
+  double metersPerUnit = 1.0;
+  std::vector<MeshPart> visualParts;
+  std::vector<physics::ConvexPart> collisionParts;
+  physics::MassProperties mass;
+  bool massFromLabels = false;  // object.mass_kg was set
+  std::vector<std::string> warnings;
+};
+
+// `labelsPath` is named in errors about labels fields (may be empty for unsaved labels). Throws
+// FileError for a mesh the importer refuses and for unusable numbers in the labels.
+SimulatorGeometry buildSimulatorGeometry(const ObjectLabels& labels,
+                                         const std::filesystem::path& meshPath,
+                                         const std::filesystem::path& labelsPath,
+                                         const ExportOptions& options);
+
+}  // namespace sagrid::exportdetail

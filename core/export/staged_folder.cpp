@@ -1,0 +1,54 @@
+#include "core/export/staged_folder.h"
+
+#include <unistd.h>
+
+#include <atomic>
+#include <string>
+#include <system_error>
+
+#include "core/common/error.h"
+
+namespace sagrid::exportdetail {
+
+namespace fs = std::filesystem;
+
+namespace {
+fs::path hiddenSibling(const fs::path& target, const char* kind) {
+  static std::atomic<unsigned> counter{0};
+  return target.parent_path() / ("." + target.filename().string() + "." + kind + "-" +
+                                 std::to_string(::getpid()) + "-" + std::to_string(counter++));
+}
+}  // namespace
+
+StagedFolder::StagedFolder(fs::path target)
+    : m_target(std::move(target)), m_staging(hiddenSibling(m_target, "partial")) {
+  std::error_code ec;
+  fs::create_directories(m_staging, ec);
+  if (ec) throw FileError(m_target.parent_path(), "cannot create a folder here: " + ec.message());
+}
+
+StagedFolder::~StagedFolder() {
+  if (m_committed) return;
+  std::error_code ignored;
+  fs::remove_all(m_staging, ignored);  // best effort: the target was never touched
+}
+
+void StagedFolder::commit() {
+  std::error_code ec;
+  fs::path previous;
+  if (fs::exists(fs::symlink_status(m_target, ec))) {
+    previous = hiddenSibling(m_target, "previous");
+    fs::rename(m_target, previous, ec);
+    if (ec) throw FileError(m_target, "cannot replace the earlier export: " + ec.message());
+  }
+  fs::rename(m_staging, m_target, ec);
+  if (ec) {
+    std::error_code ignored;
+    if (!previous.empty()) fs::rename(previous, m_target, ignored);
+    throw FileError(m_target, "cannot move the finished export into place: " + ec.message());
+  }
+  m_committed = true;
+  if (!previous.empty()) fs::remove_all(previous, ec);  // a leftover is hidden and harmless
+}
+
+}  // namespace sagrid::exportdetail

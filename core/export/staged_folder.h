@@ -1,0 +1,30 @@
+// An export folder that appears whole or not at all: files are written into a hidden sibling
+// (".<name>.partial-<pid>-<n>") and the folder is renamed onto its final name at the end, so an
+// error, a crash or kill -9 never leaves a half-written object folder under its real name.
+#pragma once
+
+#include <filesystem>
+
+namespace sagrid::exportdetail {
+
+class StagedFolder {
+ public:
+  // Creates the staging folder beside `target` (creating target's parent as needed). Throws
+  // FileError when it cannot.
+  explicit StagedFolder(std::filesystem::path target);
+  ~StagedFolder();  // removes the staging folder unless committed
+  StagedFolder(const StagedFolder&) = delete;
+  StagedFolder& operator=(const StagedFolder&) = delete;
+
+  const std::filesystem::path& path() const { return m_staging; }  // write here
+  const std::filesystem::path& target() const { return m_target; }
+  // Replaces `target` (an earlier export of the same object) with the staged folder.
+  void commit();
+
+ private:
+  std::filesystem::path m_target;
+  std::filesystem::path m_staging;
+  bool m_committed = false;
+};
+
+}  // namespace sagrid::exportdetail
