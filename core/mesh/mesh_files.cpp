@@ -35,6 +35,13 @@ std::string idFor(const std::filesystem::path& relative) {
 }
 }  // namespace
 
+std::string objectIdOfFile(const std::filesystem::path& meshFile) {
+  const std::string stem = lower(meshFile.stem().string()) == "mesh" && meshFile.has_parent_path()
+                               ? meshFile.parent_path().filename().string()
+                               : meshFile.stem().string();
+  return stem.empty() ? meshFile.stem().string() : stem;
+}
+
 std::vector<MeshFile> findMeshFiles(const std::filesystem::path& fileOrDir) {
   std::error_code ec;
   if (!std::filesystem::exists(fileOrDir, ec))
@@ -45,11 +52,7 @@ std::vector<MeshFile> findMeshFiles(const std::filesystem::path& fileOrDir) {
                       "not a supported mesh file (use .obj, .glb, .gltf, .fbx, .dae, "
                       ".ply or .stl)");
     }
-    const std::string stem =
-        lower(fileOrDir.stem().string()) == "mesh" && fileOrDir.has_parent_path()
-            ? fileOrDir.parent_path().filename().string()
-            : fileOrDir.stem().string();
-    return {{fileOrDir, stem.empty() ? fileOrDir.stem().string() : stem}};
+    return {{fileOrDir, objectIdOfFile(fileOrDir)}};
   }
   std::vector<std::filesystem::path> found;
   auto it = std::filesystem::recursive_directory_iterator(

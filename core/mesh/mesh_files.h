@@ -19,4 +19,8 @@ struct MeshFile {
 // Throws FileError when the path does not exist or is a file of an unsupported type.
 std::vector<MeshFile> findMeshFiles(const std::filesystem::path& fileOrDir);
 
+// The id a single mesh file gets: its name without extension, or its folder's name when it is
+// called mesh.<ext> ("a/stove1/mesh.glb" -> "stove1").
+std::string objectIdOfFile(const std::filesystem::path& meshFile);
+
 }  // namespace sagrid

@@ -1,0 +1,29 @@
+// Object descriptors alone, for filtering large collections (`sagrid filter`): a descriptor is
+// what retrieval and the category classifier read (64 floats with the embedded backend), a small
+// file beside the full feature entries in the cache folder, so a filter pass over a cached
+// collection reads ~1 KB per mesh instead of a whole per-voxel grid and never voxelizes or
+// renders. Keyed like the feature cache: mesh file sha256, feature-config hash, up override.
+#pragma once
+
+#include <filesystem>
+#include <vector>
+
+#include "core/features/feature_pipeline.h"
+
+namespace sagrid {
+
+enum class DescriptorSource {
+  DescriptorCache,  // the small descriptor entry
+  FeatureCache,     // a full feature entry (written by annotate/extract with the same cache)
+  Computed,         // imported and computed; the descriptor entry is written for next time
+};
+
+// The object descriptor of a mesh file with `options`' feature configuration. With a cache
+// folder (options.cacheDir) it reads the descriptor entry, else a full feature entry, else
+// computes the features and stores the descriptor entry (not the grid: a collection of a
+// million meshes would need terabytes). Unusable entries are ignored and rewritten.
+std::vector<float> extractDescriptor(const std::filesystem::path& meshFile,
+                                     const FeatureOptions& options,
+                                     DescriptorSource* source = nullptr);
+
+}  // namespace sagrid
