@@ -17,6 +17,19 @@ using io::u64;
 using io::put16;
 using io::put32;
 
+// Every offset and size below comes from the file: a range is checked as `at <= size && length <=
+// size - at`, never as `at + length > size`, which wraps around for offsets near 2^64 (a crafted
+// zip64 offset of 2^64 - 13 made that check pass and the read land 13 bytes before the buffer).
+bool inside(std::uint64_t at, std::uint64_t length, std::size_t size) {
+  return at <= size && length <= size - at;
+}
+
+// Deflate cannot expand data more than 1032:1, so a larger claimed size is a lie, refused before
+// anything is allocated for it.
+constexpr std::uint64_t kMaxDeflateRatio = 1032;
+// zlib's counters and our CRC check take 32-bit lengths.
+constexpr std::uint64_t kMaxEntrySize = 0xFFFFFFFFu;
+
 std::string inflateRaw(std::string_view compressed, std::size_t size, const fs::path& source,
                        const std::string& entry) {
   std::string out(size, '\0');
@@ -62,7 +75,7 @@ ZipArchive ZipArchive::fromBytes(std::string bytes, const fs::path& source) {
   if ((directoryOffset == 0xFFFFFFFFu || entries == 0xFFFF) && eocd >= 20 &&
       u32(b, eocd - 20) == 0x07064b50) {
     const std::uint64_t zip64End = u64(b, eocd - 20 + 8);  // zip64 end of central directory
-    if (zip64End + 56 > b.size() || u32(b, zip64End) != 0x06064b50) {
+    if (!inside(zip64End, 56, b.size()) || u32(b, zip64End) != 0x06064b50) {
       throw FileError(path, "zip64 directory is corrupt");
     }
     entries = u64(b, zip64End + 32);
@@ -71,7 +84,7 @@ ZipArchive ZipArchive::fromBytes(std::string bytes, const fs::path& source) {
 
   std::size_t at = directoryOffset;
   for (std::uint64_t e = 0; e < entries; ++e) {
-    if (at + 46 > b.size() || u32(b, at) != 0x02014b50)
+    if (!inside(at, 46, b.size()) || u32(b, at) != 0x02014b50)
       throw FileError(path, "zip central directory is corrupt");
     ZipEntry entry;
     entry.method = u16(b, at + 10);
@@ -81,19 +94,31 @@ ZipArchive ZipArchive::fromBytes(std::string bytes, const fs::path& source) {
     const std::size_t nameLength = u16(b, at + 28), extraLength = u16(b, at + 30),
                       commentLength = u16(b, at + 32);
     entry.localOffset = u32(b, at + 42);
-    if (at + 46 + nameLength + extraLength > b.size())
+    if (!inside(at + 46, nameLength + extraLength, b.size()))
       throw FileError(path, "zip central directory is truncated");
     entry.name = std::string(b.substr(at + 46, nameLength));
     // Zip64 extra field: the 64-bit values of whichever fields were saturated, in this order.
-    for (std::size_t x = at + 46 + nameLength; x + 4 <= at + 46 + nameLength + extraLength;) {
+    const std::size_t extraEnd = at + 46 + nameLength + extraLength;
+    for (std::size_t x = at + 46 + nameLength; x + 4 <= extraEnd;) {
       const std::size_t id = u16(b, x), length = u16(b, x + 2);
+      const std::size_t end = x + 4 + length;
+      if (end > extraEnd)
+        throw FileError(path, "entry '" + entry.name + "': an extra field overruns its header");
       if (id == 0x0001) {
         std::size_t field = x + 4;
-        if (entry.size == 0xFFFFFFFFu) entry.size = u64(b, field), field += 8;
-        if (entry.compressedSize == 0xFFFFFFFFu) entry.compressedSize = u64(b, field), field += 8;
-        if (entry.localOffset == 0xFFFFFFFFu) entry.localOffset = u64(b, field);
+        auto next = [&]() {
+          if (field + 8 > end) {
+            throw FileError(path, "entry '" + entry.name +
+                                      "': zip64 extra field is shorter than the sizes it replaces");
+          }
+          field += 8;
+          return u64(b, field - 8);
+        };
+        if (entry.size == 0xFFFFFFFFu) entry.size = next();
+        if (entry.compressedSize == 0xFFFFFFFFu) entry.compressedSize = next();
+        if (entry.localOffset == 0xFFFFFFFFu) entry.localOffset = next();
       }
-      x += 4 + length;
+      x = end;
     }
     at += 46 + nameLength + extraLength + commentLength;
     archive.m_entries.push_back(std::move(entry));
@@ -117,13 +142,23 @@ std::string ZipArchive::read(const std::string& name) const {
 std::string ZipArchive::read(const ZipEntry& entry) const {
   const std::string_view b(m_bytes);
   const std::string& name = entry.name;
-  if (entry.localOffset + 30 > b.size() || u32(b, entry.localOffset) != 0x04034b50) {
+  if (!inside(entry.localOffset, 30, b.size()) || u32(b, entry.localOffset) != 0x04034b50) {
     throw FileError(m_path, "entry '" + name + "' is corrupt (bad local header)");
   }
   const std::size_t dataStart =
       entry.localOffset + 30 + u16(b, entry.localOffset + 26) + u16(b, entry.localOffset + 28);
-  if (dataStart + entry.compressedSize > b.size())
+  if (!inside(dataStart, entry.compressedSize, b.size()))
     throw FileError(m_path, "entry '" + name + "' is truncated");
+  const bool sizeIsPossible = entry.method == 0
+                                  ? entry.size == entry.compressedSize
+                                  : entry.size <= kMaxDeflateRatio * entry.compressedSize + 64;
+  if (!sizeIsPossible || entry.size > kMaxEntrySize) {
+    throw FileError(m_path, "entry '" + name + "' claims " + std::to_string(entry.size) +
+                                " bytes uncompressed from " + std::to_string(entry.compressedSize) +
+                                (entry.size > kMaxEntrySize && sizeIsPossible
+                                     ? " (entries over 4 GiB are not supported)"
+                                     : " stored (impossible: the archive is corrupt or crafted)"));
+  }
   const std::string_view stored = b.substr(dataStart, entry.compressedSize);
   std::string content;
   if (entry.method == 0) {
