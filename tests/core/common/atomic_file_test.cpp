@@ -1,5 +1,9 @@
 #include "core/common/atomic_file.h"
 
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include "core/common/error.h"
@@ -43,6 +47,73 @@ TEST(AtomicFile, ReadErrorsNameTheFile) {
     EXPECT_NE(std::string(e.what()).find("missing.json"), std::string::npos);
   }
   EXPECT_THROW(readFileBytes(dir), FileError);
+}
+
+// Until commit() nothing but the old target is visible in the folder (the temporary is unnamed),
+// and after it only the target: a kill -9 at any moment leaves no temporary behind.
+TEST(AtomicFile, NothingButTheTargetIsEverVisible) {
+  const fs::path dir = test::freshTempDir();
+  const fs::path target = dir / "out.txt";
+  writeFileAtomic(target, "old");
+  AtomicOutputFile out(target);
+  out.stream() << std::string(1 << 20, 'x');
+  out.stream().flush();
+  EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator()), 1);
+  EXPECT_EQ(readFileBytes(target), "old");
+  out.commit();
+  EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator()), 1);
+  EXPECT_EQ(readFileBytes(target).size(), std::size_t{1} << 20);
+}
+
+TEST(AtomicFile, NewFilesGetTheUsualPermissions) {
+  const fs::path target = test::freshTempDir() / "new.txt";
+  writeFileAtomic(target, "x");
+  struct stat info {};
+  ASSERT_EQ(::stat(target.c_str(), &info), 0);
+  const mode_t mask = ::umask(0);
+  ::umask(mask);
+  EXPECT_EQ(info.st_mode & 0777, 0666 & ~mask);
+}
+
+// The message readFileBytes gives for `path`; fails the test when it reads.
+std::string readError(const fs::path& path, std::uint64_t maxBytes = kMaxInputFileBytes) {
+  try {
+    readFileBytes(path, maxBytes);
+  } catch (const FileError& e) {
+    const std::string message = e.what();
+    EXPECT_EQ(message.rfind(path.string() + ": ", 0), 0u) << message;
+    return message;
+  }
+  ADD_FAILURE() << path << " was read";
+  return "";
+}
+
+// Issue 14: a FIFO hung every command, /dev/zero ran out of memory after 10 s.
+TEST(ReadFileBytes, OnlyRegularFiles) {
+  const fs::path dir = test::freshTempDir();
+  const fs::path fifo = dir / "labels.json";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  EXPECT_THAT(readError(fifo), ::testing::HasSubstr("FIFO"));
+  EXPECT_THAT(readError("/dev/zero"), ::testing::HasSubstr("is a device"));
+  EXPECT_THAT(readError(dir), ::testing::HasSubstr("is a directory"));
+  EXPECT_THROW(requireRegularFile(fifo), FileError);
+  EXPECT_THROW(requireRegularFile("/dev/zero"), FileError);
+}
+
+TEST(ReadFileBytes, SymlinkLoopAndLongNamesAreNamed) {
+  const fs::path dir = test::freshTempDir();
+  fs::create_symlink(dir / "b.obj", dir / "a.obj");
+  fs::create_symlink(dir / "a.obj", dir / "b.obj");
+  EXPECT_THAT(readError(dir / "a.obj"), ::testing::HasSubstr("symbolic link loop"));
+  EXPECT_THAT(readError(dir / (std::string(300, 'x') + ".obj")),
+              ::testing::HasSubstr("file name too long"));
+}
+
+TEST(ReadFileBytes, RefusesFilesOverTheLimitBeforeReading) {
+  const fs::path path = test::freshTempDir() / "big.bin";
+  writeFileAtomic(path, std::string(4096, 'x'));
+  EXPECT_THAT(readError(path, 1000), ::testing::HasSubstr("larger than the 1000 bytes"));
+  EXPECT_EQ(readFileBytes(path, 4096).size(), 4096u);
 }
 
 }  // namespace sagrid
