@@ -2,13 +2,15 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <iterator>
 #include <ctime>
 #include <set>
 
 #include "core/common/atomic_file.h"
 #include "core/common/error.h"
-#include "core/common/utf8.h"
+#include "core/common/value_ranges.h"
+#include "core/io/json_file.h"
 
 namespace sagrid {
 namespace fs = std::filesystem;
@@ -58,6 +60,12 @@ std::vector<const AffordancePoint*> ObjectLabels::ofType(const std::string& type
 
 namespace {
 
+std::string shortNumber(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", value);
+  return text;
+}
+
 // Validation helpers: every failure names the file and the JSON path of the field.
 class Validator {
  public:
@@ -102,10 +110,24 @@ class Validator {
       if (!j[i].is_number()) fail(field, "must be an array of 3 numbers, got " + typeName(j[i]) +
                                              " at index " + std::to_string(i));
       const double value = j[i].get<double>();
-      if (!std::isfinite(value)) fail(field, "must contain finite numbers");
+      if (!isSaneCoordinate(value)) {
+        fail(field, "holds " + j[i].dump() + " at index " + std::to_string(i) +
+                        "; coordinates must be finite and within +-" + shortNumber(kMaxCoordinate));
+      }
       v[i] = static_cast<float>(value);
     }
     return v;
+  }
+
+  // A finite number in [low, high].
+  double number(const json& j, const std::string& field, double low, double high) const {
+    if (!j.is_number()) fail(field, "must be a number, got " + typeName(j));
+    const double value = j.get<double>();
+    if (!(value >= low && value <= high)) {
+      fail(field, "is " + j.dump() + "; it must be between " + shortNumber(low) + " and " +
+                      shortNumber(high));
+    }
+    return value;
   }
 
   static std::string join(const std::string& parent, const std::string& key) {
@@ -149,8 +171,7 @@ AffordancePoint parseAffordance(const json& j, const std::string& field, const V
     v.fail(field + ".status", "is missing");
   }
   if (auto it = j.find("confidence"); it != j.end() && !it->is_null()) {
-    if (!it->is_number()) v.fail(field + ".confidence", "must be a number, got " + v.typeName(*it));
-    a.confidence = it->get<float>();
+    a.confidence = static_cast<float>(v.number(*it, field + ".confidence", 0.0, 1.0));
   }
   if (auto it = j.find("source"); it != j.end()) a.source = v.string(*it, field + ".source");
   a.extra = unknownFields(j, {"type", "position", "normal", "status", "confidence", "source"});
@@ -160,6 +181,10 @@ AffordancePoint parseAffordance(const json& j, const std::string& field, const V
 std::vector<AffordancePoint> parseAffordances(const json& root, const Validator& v, bool legacy) {
   const json& list = v.require(root, "", "affordances");
   if (!list.is_array()) v.fail("affordances", "must be an array, got " + v.typeName(list));
+  if (list.size() > kMaxAffordancesPerObject) {
+    v.fail("affordances", "holds " + std::to_string(list.size()) + " points; at most " +
+                              std::to_string(kMaxAffordancesPerObject) + " per object are supported");
+  }
   std::vector<AffordancePoint> points;
   for (std::size_t i = 0; i < list.size(); ++i) {
     points.push_back(parseAffordance(list[i], "affordances[" + std::to_string(i) + "]", v, legacy));
@@ -198,8 +223,10 @@ ObjectLabels parseCurrent(const json& root, const Validator& v) {
   }
   if (auto it = object.find("up"); it != object.end()) info.up = v.string(*it, "object.up");
   if (auto it = object.find("up_confidence"); it != object.end()) {
-    if (!it->is_number()) v.fail("object.up_confidence", "must be a number");
-    info.upConfidence = it->get<double>();
+    info.upConfidence = v.number(*it, "object.up_confidence", 0.0, 1.0);
+  }
+  if (auto it = object.find("meters_per_unit"); it != object.end()) {
+    v.number(*it, "object.meters_per_unit", kMinMetersPerUnit, kMaxMetersPerUnit);
   }
   info.extra = unknownFields(object, {"id", "mesh", "sha256", "category", "up", "up_confidence"});
 
@@ -254,22 +281,7 @@ ObjectLabels parseLabels(const json& root, const fs::path& pathForErrors) {
 }
 
 ObjectLabels readLabels(const fs::path& path) {
-  const std::string bytes = readFileBytes(path);
-  if (bytes.empty()) throw FileError(path, "is empty (expected a labels.json object)");
-  if (auto bad = firstInvalidUtf8(bytes)) {
-    throw FileError(path, "is not valid UTF-8 (bad byte at offset " + std::to_string(*bad) + ")");
-  }
-  json root;
-  try {
-    root = json::parse(bytes);
-  } catch (const json::parse_error& e) {
-    // nlohmann's message is "[json.exception.parse_error.101] parse error at line 3, ...".
-    std::string what = e.what();
-    const auto start = what.find("] ");
-    throw FileError(path, "is not valid JSON: " +
-                              (start == std::string::npos ? what : what.substr(start + 2)));
-  }
-  ObjectLabels labels = parseLabels(root, path);
+  ObjectLabels labels = parseLabels(readJsonFile(path), path);
   if (labels.object.mesh.empty()) {
     // The earlier form does not name its mesh; it is the mesh.* beside the labels file.
     std::error_code ec;
@@ -338,8 +350,10 @@ double metersPerUnit(const ObjectLabels& labels) {
   };
   const json& object = labels.object.extra;
   if (object.is_object()) {
+    // Validated on reading; labels built in code that hold a value out of range get 1.
     if (auto it = object.find("meters_per_unit"); it != object.end() && it->is_number()) {
-      return it->get<double>();
+      const double value = it->get<double>();
+      return value >= kMinMetersPerUnit && value <= kMaxMetersPerUnit ? value : 1.0;
     }
     if (auto it = object.find("units"); it != object.end()) {
       if (auto m = fromUnits(*it)) return *m;

@@ -16,6 +16,8 @@
 namespace sagrid {
 
 inline constexpr const char* kLabelsSchema = "sagrid.labels/1";
+// More points than any object has (a keyboard has ~100 keys); a bound for what reading costs.
+inline constexpr std::size_t kMaxAffordancesPerObject = 1000;
 
 enum class AffordanceStatus { Predicted, Accepted, Edited, Added };
 enum class ReviewState { Unreviewed, Done, Skipped };
@@ -58,8 +60,10 @@ struct ObjectLabels {
   std::vector<const AffordancePoint*> ofType(const std::string& type) const;
 };
 
-// Throws FileError naming the file and the field for every problem (missing file, invalid
-// UTF-8, not JSON, wrong types, missing fields, unknown schema version).
+// Throws FileError naming the file and the field for every problem (missing or not a regular
+// file, too large, invalid UTF-8, not JSON, nested too deep, wrong types, missing fields, unknown
+// schema version, coordinates not finite or beyond kMaxCoordinate, meters_per_unit outside
+// [kMinMetersPerUnit, kMaxMetersPerUnit], more than kMaxAffordancesPerObject points).
 ObjectLabels readLabels(const std::filesystem::path& path);
 ObjectLabels parseLabels(const nlohmann::json& json, const std::filesystem::path& pathForErrors);
 

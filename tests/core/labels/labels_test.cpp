@@ -1,5 +1,7 @@
 #include "core/labels/labels.h"
 
+#include <sys/stat.h>
+
 #include <fstream>
 
 #include <gmock/gmock.h>
@@ -247,6 +249,73 @@ TEST(Labels, StatusAndReviewStrings) {
   EXPECT_FALSE(parseAffordanceStatus("Accepted").has_value());
   EXPECT_EQ(currentUtcTimestamp().size(), 20u);
   EXPECT_EQ(currentUtcTimestamp().back(), 'Z');
+}
+
+// Issue 14, numbers validated where they enter: each of these files read without error and
+// then became inf in URDF/MJCF, null in metadata.json, or crashed the viewport.
+TEST(LabelsHostile, NumbersOutOfRangeNameTheFileAndField) {
+  const fs::path bad = fs::path(SAGRID_TEST_DATA_DIR) / "bad";
+  const std::pair<const char*, const char*> cases[] = {
+      {"labels_number_overflow.json", "number overflow"},
+      {"labels_position_minus_1e308.json", "field 'affordances[0].position' holds -1e+308"},
+      {"labels_position_1e39.json", "field 'affordances[0].position' holds 1e+39"},
+      {"labels_meters_per_unit_zero.json", "field 'object.meters_per_unit' is 0;"},
+      {"labels_meters_per_unit_negative.json", "field 'object.meters_per_unit' is -1;"},
+      {"labels_meters_per_unit_1e308.json", "field 'object.meters_per_unit' is 1e+308;"},
+      {"labels_meters_per_unit_string.json",
+       "field 'object.meters_per_unit' must be a number, got a string"},
+  };
+  for (const auto& [name, expected] : cases) {
+    const fs::path path = bad / name;
+    try {
+      readLabels(path);
+      ADD_FAILURE() << name << " was accepted";
+    } catch (const FileError& e) {
+      EXPECT_EQ(std::string(e.what()).rfind(path.string() + ": ", 0), 0u) << e.what();
+      EXPECT_THAT(e.what(), HasSubstr(expected)) << name;
+    }
+  }
+}
+
+TEST(LabelsHostile, ConfidencesMustBeProbabilities) {
+  json j = json::parse(kValid);
+  j["affordances"][0]["confidence"] = 7.5;
+  EXPECT_THAT(errorFor(j.dump()), HasSubstr("'affordances[0].confidence' is 7.5"));
+  j = json::parse(kValid);
+  j["object"]["up_confidence"] = -0.5;
+  EXPECT_THAT(errorFor(j.dump()), HasSubstr("'object.up_confidence' is -0.5"));
+}
+
+// A million nested arrays crashed export and render (recursive copy); refused at parse.
+TEST(LabelsHostile, DeepNestingIsRefusedBeforeParsing) {
+  const std::string deep = R"({"schema": "sagrid.labels/1", "x": )" + std::string(1000000, '[') +
+                           std::string(1000000, ']') + "}";
+  EXPECT_THAT(errorFor(deep), HasSubstr("nests arrays and objects more than 64 levels deep"));
+  // Brackets inside strings do not count.
+  json j = json::parse(kValid);
+  j["license"] = std::string(200, '[');
+  EXPECT_EQ(errorFor(j.dump()), "");
+}
+
+// 200,000 points made render hang (20,000 took 8 s and 1.7 GB).
+TEST(LabelsHostile, TooManyPointsIsAClearError) {
+  json j = json::parse(kValid);
+  json point = j["affordances"][1];
+  j["affordances"] = json::array();
+  for (int i = 0; i < 200000; ++i) j["affordances"].push_back(point);
+  EXPECT_THAT(errorFor(j.dump()), HasSubstr("field 'affordances' holds 200000 points; at most "
+                                            "1000 per object are supported"));
+}
+
+TEST(LabelsHostile, FifoAsLabelsIsRefusedAtOnce) {
+  const fs::path fifo = test::freshTempDir() / "labels.json";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  try {
+    readLabels(fifo);
+    FAIL() << "a FIFO was read";
+  } catch (const FileError& e) {
+    EXPECT_THAT(e.what(), HasSubstr("FIFO"));
+  }
 }
 
 }  // namespace
