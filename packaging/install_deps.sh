@@ -12,6 +12,9 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   libspdlog-dev libfmt-dev libcli11-dev nlohmann-json3-dev libstb-dev zlib1g-dev
   xvfb xauth
+  # Simulator checks of the exports: MuJoCo 2.2.2 loads and simulates the MJCF export in tests,
+  # check_urdf (urdfdom) validates the OmniGibson URDFs.
+  libmujoco-dev liburdfdom-tools
 )
 
 missing=()
