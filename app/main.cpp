@@ -9,16 +9,22 @@
 #include "app/command_registry.h"
 #include "core/common/error.h"
 #include "core/common/log.h"
+#include "core/mesh/mesh_import.h"
 
 int main(int argc, char** argv) {
   CLI::App root{"SAGrid: simulation affordances (heat sources, fluid sources, toggle buttons) "
                 "on 3D meshes"};
   root.set_version_flag("--version", std::string("sagrid ") + SAGRID_VERSION);
   root.require_subcommand(1);
-  bool verbose = false;
+  bool verbose = false, lenient = false;
   root.add_flag("-v,--verbose", verbose, "Log progress details to stderr");
+  root.add_flag("--lenient", lenient,
+                "Use what can be read of a truncated mesh file (with a warning) instead of "
+                "refusing it");
+  root.fallthrough();  // root options may follow the subcommand: sagrid info --lenient x.obj
   root.parse_complete_callback([&] {
     if (verbose) sagrid::setLogLevel(spdlog::level::info);
+    sagrid::setLenientImportByDefault(lenient);
   });
 
   auto& entries = sagrid::app::commandRegistry();

@@ -3,10 +3,14 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdio>
 #include <map>
+#include <set>
 #include <system_error>
 
+#include <assimp/DefaultIOSystem.h>
 #include <assimp/Importer.hpp>
+#include <assimp/MemoryIOWrapper.h>
 #include <assimp/config.h>
 #include <assimp/material.h>
 #include <assimp/postprocess.h>
@@ -14,10 +18,13 @@
 #include <stb_image.h>
 
 #include "core/common/atomic_file.h"
+#include "core/common/contained_paths.h"
 #include "core/common/error.h"
 #include "core/common/log.h"
 #include "core/common/sha256.h"
+#include "core/common/value_ranges.h"
 #include "core/grid/normalization.h"
+#include "core/mesh/mesh_file_check.h"
 #include "core/mesh/up_axis_detection.h"
 
 namespace sagrid {
@@ -154,16 +161,22 @@ class MaterialReader {
     return texture;
   }
 
+  // As written, then just the file name beside the mesh (exports often carry absolute paths);
+  // either way only inside the mesh's own folder, and only regular files.
   std::optional<Texture> loadExternal(std::string reference) {
     std::replace(reference.begin(), reference.end(), '\\', '/');
-    const fs::path dir = m_meshPath.parent_path();
-    // As written, then just the file name beside the mesh (exports often carry absolute paths).
-    for (const fs::path& candidate : {dir / reference, dir / fs::path(reference).filename()}) {
-      std::error_code ec;
-      if (!fs::is_regular_file(candidate, ec)) continue;
-      const std::string bytes = readFileBytes(candidate);
-      if (auto texture = decodeImage(reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size())) {
-        return texture;
+    const fs::path dir = m_meshPath.parent_path().empty() ? fs::path(".") : m_meshPath.parent_path();
+    for (const std::string& candidate : {reference, fs::path(reference).filename().string()}) {
+      try {
+        const fs::path file = resolveContained(dir, candidate, m_meshPath);
+        std::error_code ec;
+        if (!fs::is_regular_file(file, ec)) continue;
+        const std::string bytes = readFileBytes(file);
+        if (auto texture = decodeImage(reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size())) {
+          return texture;
+        }
+      } catch (const FileError& e) {
+        logger()->warn("{}", e.what());
       }
     }
     return std::nullopt;
@@ -194,14 +207,21 @@ class GeometryMerger {
   const std::vector<bool>& missingNormals() const { return m_missingNormals; }
 
  private:
-  void visit(const aiNode& node, const aiMatrix4x4& parent) {
-    const aiMatrix4x4 transform = parent * node.mTransformation;
-    aiMatrix3x3 normalMatrix(transform);
-    normalMatrix.Inverse().Transpose();
-    for (unsigned i = 0; i < node.mNumMeshes; ++i) {
-      append(*m_scene.mMeshes[node.mMeshes[i]], transform, normalMatrix);
+  // Depth-first in the file's order, with an explicit stack: node depth is not bounded for
+  // every format before assimp reads it.
+  void visit(const aiNode& root, const aiMatrix4x4& rootParent) {
+    std::vector<std::pair<const aiNode*, aiMatrix4x4>> stack{{&root, rootParent}};
+    while (!stack.empty()) {
+      const auto [node, parent] = stack.back();
+      stack.pop_back();
+      const aiMatrix4x4 transform = parent * node->mTransformation;
+      aiMatrix3x3 normalMatrix(transform);
+      normalMatrix.Inverse().Transpose();
+      for (unsigned i = 0; i < node->mNumMeshes; ++i) {
+        append(*m_scene.mMeshes[node->mMeshes[i]], transform, normalMatrix);
+      }
+      for (unsigned c = node->mNumChildren; c-- > 0;) stack.push_back({node->mChildren[c], transform});
     }
-    for (unsigned c = 0; c < node.mNumChildren; ++c) visit(*node.mChildren[c], transform);
   }
 
   void append(const aiMesh& source, const aiMatrix4x4& transform, const aiMatrix3x3& normalMatrix) {
@@ -246,6 +266,50 @@ class GeometryMerger {
   std::vector<bool> m_missingNormals;
 };
 
+// Assimp's file access for one import: the mesh itself comes from the bytes already read (so
+// the bytes hashed are the bytes parsed), and the files it references (MTL, .bin buffers) only
+// from regular files inside the mesh's own folder; anything else is refused with a warning.
+class ContainedIOSystem : public Assimp::DefaultIOSystem {
+ public:
+  ContainedIOSystem(const fs::path& meshPath, const std::string& bytes)
+      : m_meshPath(meshPath),
+        m_folder(meshPath.parent_path().empty() ? fs::path(".") : meshPath.parent_path()),
+        m_bytes(bytes) {}
+
+  bool Exists(const char* file) const override { return isMesh(file) || allowed(file, false); }
+
+  Assimp::IOStream* Open(const char* file, const char* mode) override {
+    if (std::string(mode).find_first_of("wa+") != std::string::npos) return nullptr;
+    if (isMesh(file)) {
+      return new Assimp::MemoryIOStream(reinterpret_cast<const uint8_t*>(m_bytes.data()),
+                                        m_bytes.size());
+    }
+    return allowed(file, true) ? DefaultIOSystem::Open(file, mode) : nullptr;
+  }
+
+ private:
+  bool isMesh(const char* file) const {
+    std::error_code ec;
+    return fs::path(file) == m_meshPath || fs::equivalent(file, m_meshPath, ec);
+  }
+
+  bool allowed(const char* file, bool warn) const {
+    std::error_code ec;
+    const bool inside = isInsideFolder(file, m_folder);
+    if (inside && fs::is_regular_file(file, ec)) return true;
+    if (warn && (!inside || fs::exists(file, ec)) && m_warned.insert(file).second) {
+      logger()->warn("{}: not reading '{}': {}", m_meshPath.string(), file,
+                     inside ? "not a regular file" : "it lies outside the mesh's folder");
+    }
+    return false;
+  }
+
+  fs::path m_meshPath;
+  fs::path m_folder;
+  const std::string& m_bytes;
+  mutable std::set<std::string> m_warned;
+};
+
 UpAxis defaultUpAxis(const std::string& extension, const aiScene& scene) {
   if (extension == ".gltf" || extension == ".glb") return UpAxis::Y;  // by the glTF spec
   if (extension == ".fbx" && scene.mMetaData) {
@@ -273,6 +337,23 @@ std::size_t removeDegenerateTriangles(Mesh& mesh) {
   return removed;
 }
 
+// A truncated OBJ or PLY that assimp still reads yields fewer triangles than its faces declare,
+// or ends mid-statement: an error, or with --lenient a warning saying how much was read.
+void reportPartialRead(const fs::path& path, const MeshFileFacts& facts, std::size_t triangles,
+                       bool lenient) {
+  std::string problem;
+  if (facts.declaredTriangles && triangles < *facts.declaredTriangles) {
+    problem = "only " + std::to_string(triangles) + " of the " +
+              std::to_string(*facts.declaredTriangles) + " triangles its faces declare could be read";
+  }
+  if (problem.empty() && facts.truncation.empty()) return;
+  if (!lenient) throw FileError(path, "is incomplete: " + problem + "; --lenient uses what was read");
+  logger()->warn("{}: incomplete file (--lenient): {}", path.string(),
+                 problem.empty() ? "it " + facts.truncation + "; read " +
+                                       std::to_string(triangles) + " triangles"
+                                 : problem);
+}
+
 void fillMissingNormals(Mesh& mesh, const std::vector<bool>& missing) {
   if (std::none_of(missing.begin(), missing.end(), [](bool b) { return b; })) return;
   const std::vector<Eigen::Vector3f> fromFile = mesh.normals;
@@ -284,10 +365,15 @@ void fillMissingNormals(Mesh& mesh, const std::vector<bool>& missing) {
 
 }  // namespace
 
+namespace {
+bool g_lenientByDefault = false;
+}
+
+void setLenientImportByDefault(bool lenient) { g_lenientByDefault = lenient; }
+bool lenientImportByDefault() { return g_lenientByDefault; }
+
 Mesh importMesh(const fs::path& path, const ImportOptions& options) {
-  std::error_code ec;
-  if (!fs::exists(path, ec)) throw FileError(path, "file not found");
-  if (fs::is_directory(path, ec)) throw FileError(path, "is a directory, not a mesh file");
+  requireRegularFile(path);  // missing, a folder, a FIFO or a device: say so before anything
   const std::string extension = lowerExtension(path);
   const auto& supported = supportedMeshExtensions();
   if (std::find(supported.begin(), supported.end(), extension) == supported.end()) {
@@ -297,16 +383,20 @@ Mesh importMesh(const fs::path& path, const ImportOptions& options) {
   }
   const std::string bytes = readFileBytes(path);
   if (bytes.empty()) throw FileError(path, "is empty (0 bytes)");
+  const MeshFileFacts facts = checkMeshFile(bytes, extension, path);
+  if (!facts.truncation.empty() && !options.lenient) {
+    throw FileError(path, "is incomplete: it " + facts.truncation +
+                              " (truncated?); --lenient reads what is there");
+  }
 
   Assimp::Importer importer;
+  importer.SetIOHandler(new ContainedIOSystem(path, bytes));  // the importer owns it
   // Keep the file's own coordinates: SAGrid does the up-axis turn itself (labels are written in
   // the file's frame), so assimp's Collada z-up to y-up rotation must not happen.
   importer.SetPropertyBool(AI_CONFIG_IMPORT_COLLADA_IGNORE_UP_DIRECTION, true);
   importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
   const unsigned flags = aiProcess_Triangulate | aiProcess_JoinIdenticalVertices |
                          aiProcess_SortByPType | aiProcess_ValidateDataStructure;
-  // From memory with the extension as hint, so the bytes hashed are the bytes parsed; external
-  // references (MTL, .bin, textures) are still resolved next to the file by the IO system.
   const aiScene* scene = importer.ReadFile(path.string(), flags);
   if (!scene) {
     const std::string reason = oneLine(importer.GetErrorString());
@@ -326,10 +416,19 @@ Mesh importMesh(const fs::path& path, const ImportOptions& options) {
   GeometryMerger merger(*scene, mesh);
   merger.merge();
   if (mesh.triangles.empty()) throw FileError(path, "contains no triangles");
+  reportPartialRead(path, facts, mesh.triangles.size(), options.lenient);
 
   for (std::size_t v = 0; v < mesh.positions.size(); ++v) {
     if (!mesh.positions[v].allFinite()) {
       throw FileError(path, "has NaN or infinite coordinates (vertex " + std::to_string(v + 1) + ")");
+    }
+    for (int axis = 0; axis < 3; ++axis) {
+      if (!isSaneCoordinate(mesh.positions[v][axis])) {
+        char value[32];
+        std::snprintf(value, sizeof value, "%g", double(mesh.positions[v][axis]));
+        throw FileError(path, "has coordinate " + std::string(value) + " at vertex " +
+                                  std::to_string(v + 1) + "; coordinates must be within +-1e9");
+      }
     }
   }
   if (const std::size_t removed = removeDegenerateTriangles(mesh)) {

@@ -13,6 +13,10 @@
 
 namespace sagrid {
 
+// The default of ImportOptions::lenient: the command line's --lenient sets it for the run.
+void setLenientImportByDefault(bool lenient);
+bool lenientImportByDefault();
+
 struct ImportOptions {
   // The file's up axis; when unset, y for glTF/GLB (and FBX files that declare y-up), else z,
   // unless detectUp.
@@ -22,6 +26,9 @@ struct ImportOptions {
   // with confidence >= kOverrideDeclaredUpConfidence. glTF/GLB are always y-up. Off by default so
   // datasets, caches and trained models keep reading files exactly as before.
   bool detectUp = false;
+  // A file that was cut short but still reads in part (an OBJ ending mid-line, fewer triangles
+  // than its faces declare) is an error unless lenient; then a warning says how much was read.
+  bool lenient = lenientImportByDefault();
 
   ImportOptions(std::optional<UpAxis> upAxis = std::nullopt, bool detect = false)  // NOLINT
       : up(upAxis), detectUp(detect) {}
@@ -32,9 +39,12 @@ constexpr float kOverrideDeclaredUpConfidence = 0.9f;
 // default's probability as its confidence): a wrong turn costs more than a kept default.
 constexpr float kMinDetectedUpConfidence = 0.1f;
 
-// Throws FileError ("path: problem") for a missing file, a directory, an unsupported extension,
-// an empty or corrupt file, no triangles, only degenerate triangles, NaN/Inf coordinates, and
-// coordinates that cannot be normalized (see normalizationProblem).
+// Throws FileError ("path: problem") for a missing file, anything but a regular file, an
+// unsupported extension, content that does not match the extension, an empty, corrupt,
+// truncated or unsafe file (checkMeshFile), no triangles, only degenerate triangles, coordinates
+// that are not finite or beyond kMaxCoordinate, and coordinates that cannot be normalized (see
+// normalizationProblem). Referenced files (MTL, .bin, textures) are read only from inside the
+// mesh's folder.
 Mesh importMesh(const std::filesystem::path& path, const ImportOptions& options = {});
 
 // Lower-case extensions importMesh accepts, with the dot (".obj", ".glb", ...).
