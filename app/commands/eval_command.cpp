@@ -13,6 +13,7 @@
 #include "core/common/error.h"
 #include "core/common/resource_paths.h"
 #include "core/eval/architecture_sweep.h"
+#include "core/eval/count_fitting.h"
 #include "core/eval/evaluation.h"
 #include "core/eval/evaluation_comparison.h"
 #include "core/common/atomic_file.h"
@@ -31,7 +32,8 @@ void setupEval(CLI::App& root) {
       "each "
       "architecture on DATA/train and compares them on DATA/val (Table I form).");
   struct Options {
-    std::string data, models, out = "eval", cache, sweep, mode = "sparse", fitConfidence;
+    std::string data, models, out = "eval", cache, sweep, mode = "sparse", fitConfidence,
+        fitCounts;
     std::vector<std::string> only, compare;
     double minutes = 2;
     int epochs = 0;
@@ -55,6 +57,9 @@ void setupEval(CLI::App& root) {
   cmd->add_option("--fit-confidence", o->fitConfidence,
                   "Fit the object confidence (P(right with one key)) on this data and write "
                   "DIR/confidence.json (put it beside the models to use it)");
+  cmd->add_option("--fit-counts", o->fitCounts,
+                  "Refit each model's automatic instance count on the fields of this data and "
+                  "write a models folder DIR with the refitted cards (eval it with --models DIR)");
   cmd->add_option("--sweep", o->sweep, "Architectures to compare, ';'-separated Table I strings");
   cmd->add_option("--sweep-models", o->only,
                   "With --sweep: the models to train (default all four)");
@@ -102,7 +107,14 @@ void setupEval(CLI::App& root) {
     options.onProgress = progress;
     options.symmetries = o->symmetries;
     options.confidence = sagrid::readConfidenceCalibration(modelsDir);
+    options.keepFields = !o->fitCounts.empty();
     const auto report = sagrid::evaluateModels(models, options);
+    if (!o->fitCounts.empty()) {
+      const auto fits = sagrid::fitCounts(models, report);
+      sagrid::writeModelsWithFittedCounts(modelsDir, fits, o->fitCounts);
+      std::fprintf(stderr, "counts: refitted on %s -> %s\n%s", o->data.c_str(),
+                   o->fitCounts.c_str(), sagrid::countFitMarkdown(fits).c_str());
+    }
     if (!o->fitConfidence.empty()) {
       auto fit = sagrid::fitConfidence(report.confidenceSignal, report.oneKey);
       fit.fittedOn = o->data;

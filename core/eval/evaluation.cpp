@@ -141,6 +141,13 @@ EvaluationReport evaluateModels(const ModelSet& models, const EvaluationOptions&
         nlohmann::json t = nlohmann::json::array();
         for (const auto& p : truth) t.push_back({p.x(), p.y(), p.z()});
         object["truth"][card.name] = t;
+        if (options.keepFields) {
+          auto& kept = report.fieldsByModel[card.name];
+          kept.fields.push_back(field);
+          kept.truths.emplace_back();
+          for (const auto& p : truth)
+            kept.truths.back().push_back(grid.normalization.toNormalized(fileToZUp(p, up)));
+        }
       }
       const double signal = leastSurePointDistance(autoPredictions);
       report.confidenceSignal.push_back(signal);

@@ -26,6 +26,16 @@ struct EvaluationOptions {
   int symmetries = 8;             // test-time augmentation, as annotate (AnnotateOptions)
   ConfidenceCalibration confidence;  // object confidence map (the models folder's, or unfitted)
   std::function<void(std::size_t, std::size_t, const std::string&)> onProgress;
+  // Keep every model's field and ground truth (normalized frame) in the report, for refitting the
+  // automatic count (core/eval/count_fitting.h). Off by default: it holds every field in memory.
+  bool keepFields = false;
+};
+
+// The fields a model predicted on the evaluated objects that have its type, with their ground
+// truth in the normalized frame (what calibrateExtraction takes).
+struct FieldsWithTruth {
+  std::vector<PredictedField> fields;
+  std::vector<std::vector<Eigen::Vector3f>> truths;
 };
 
 struct MethodMetrics {
@@ -51,6 +61,7 @@ struct EvaluationReport {
   bool confidenceCalibrated = false;
   ReliabilityReport reliability;
   nlohmann::json perObject = nlohmann::json::array();
+  std::map<std::string, FieldsWithTruth> fieldsByModel;  // with EvaluationOptions::keepFields
 };
 
 EvaluationReport evaluateModels(const ModelSet& models, const EvaluationOptions& options);

@@ -5,33 +5,15 @@
 #include <random>
 
 #include "core/common/error.h"
+#include "support/synthetic_fields.h"
 
 namespace sagrid {
 namespace {
 
-constexpr int kRes = 32;
+using test::onPlate;
+using test::plateField;
+constexpr int kRes = test::kPlateResolution;
 const float kVoxel = 1.0f / kRes;
-
-// A flat plate of occupied voxels (k = 10) whose field is the distance to the nearest of `centres`
-// plus optional noise.
-PredictedField plateField(const std::vector<Eigen::Vector3f>& centres, float noise = 0.0f,
-                          unsigned seed = 1) {
-  std::mt19937 rng(seed);
-  std::uniform_real_distribution<float> jitter(-noise, noise);
-  PredictedField f;
-  f.resolution = kRes;
-  for (int i = 0; i < kRes; ++i)
-    for (int j = 0; j < kRes; ++j) {
-      const VoxelIndex v{i, j, 10};
-      float best = 1e9f;
-      for (const auto& c : centres) best = std::min(best, (voxelCenter(v, kRes) - c).norm());
-      f.voxels.push_back(v);
-      f.distances.push_back(std::max(0.0f, best + jitter(rng)));
-    }
-  return f;
-}
-
-Eigen::Vector3f onPlate(int i, int j) { return voxelCenter({i, j, 10}, kRes); }
 
 float nearest(const std::vector<ExtractedPoint>& points, const Eigen::Vector3f& p) {
   float best = 1e9f;

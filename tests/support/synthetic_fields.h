@@ -1,0 +1,21 @@
+// Predicted distance fields with known minima, for tests of point extraction and count fitting.
+#pragma once
+
+#include <Eigen/Core>
+#include <vector>
+
+#include "core/points/point_extraction.h"
+
+namespace sagrid::test {
+
+constexpr int kPlateResolution = 32;
+
+// A flat plate of occupied voxels (k = 10) of a kPlateResolution grid whose field is the distance
+// to the nearest of `centres` plus uniform noise in [-noise, noise] (clamped at 0).
+PredictedField plateField(const std::vector<Eigen::Vector3f>& centres, float noise = 0.0f,
+                          unsigned seed = 1);
+
+// The centre of plate voxel (i, j) in the normalized frame.
+Eigen::Vector3f onPlate(int i, int j);
+
+}  // namespace sagrid::test
