@@ -98,18 +98,25 @@ AffordanceModel& AffordanceModel::operator=(AffordanceModel&&) noexcept = defaul
 AffordanceModel AffordanceModel::load(const fs::path& cardFile) {
   ModelCard card = readModelCard(cardFile);
   const fs::path weightsPath = cardFile.parent_path() / card.weightsFile;
-  const std::string bytes = readFileBytes(weightsPath);
-  if (!card.weightsSha256.empty() && sha256Hex(bytes) != card.weightsSha256)
-    throw FileError(weightsPath, "weights sha256 differs from the model card " +
-                                     cardFile.filename().string() +
-                                     " (truncated, corrupt or replaced file)");
-  AffordanceModel model(card, 0);
-  auto net = model.m_impl->net;
-  net->to(torch::kCPU);
-  deserializeWeights(net, bytes, weightsPath.string());
-  net->to(model.m_impl->device);
-  net->eval();
-  return model;
+  // Every problem with the weights names the card first: it is what the user points us at.
+  try {
+    const std::string bytes = readFileBytes(weightsPath);
+    if (!card.weightsSha256.empty() && sha256Hex(bytes) != card.weightsSha256)
+      throw FileError(weightsPath, "weights sha256 differs from the model card " +
+                                       cardFile.filename().string() +
+                                       " (truncated, corrupt or replaced file)");
+    AffordanceModel model(card, 0);
+    auto net = model.m_impl->net;
+    net->to(torch::kCPU);
+    deserializeWeights(net, bytes, weightsPath.string());
+    net->to(model.m_impl->device);
+    net->eval();
+    return model;
+  } catch (const FileError& e) {
+    throw FileError(cardFile, e.what());
+  } catch (const ModelError& e) {
+    throw ModelError(cardFile.string() + ": " + e.what());
+  }
 }
 
 void AffordanceModel::save(const fs::path& cardFile) {

@@ -1,10 +1,15 @@
 #include "core/model/model_card.h"
 
 #include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <map>
 
 #include "core/common/atomic_file.h"
 #include "core/common/error.h"
 #include "core/features/feature_grid.h"
+#include "core/io/json_file.h"
+#include "core/model/architecture.h"
 
 namespace sagrid::model {
 namespace fs = std::filesystem;
@@ -21,7 +26,8 @@ std::pair<std::string, std::string> splitModelName(const std::string& name) {
 
 void ModelCard::checkFeatures(const FeatureGrid& f) const {
   auto mismatch = [&](const std::string& what, const std::string& model, const std::string& got) {
-    throw ModelError("model " + name + " was trained with " + what + " " + model +
+    throw ModelError((file.empty() ? "" : file.string() + ": ") + "model " + name +
+                     " was trained with " + what + " " + model +
                      " but the features have " + got +
                      "; extract features with the model's backend settings or retrain");
   };
@@ -115,23 +121,97 @@ ModelCard modelCardFromJson(const json& j, const fs::path& path) {
                               "features", "grid_resolution", "weights", "point_extraction",
                               "retrieval", "embedding_search", "training", "metrics"})
       c.extra.erase(known);
-    if (c.weightsFile.empty() || c.weightsFile.find('/') != std::string::npos)
-      throw FileError(path, "model card: weights.file must be a file name beside the card");
     return c;
   } catch (const json::exception& e) {
     throw FileError(path, std::string("model card: wrong field type (") + e.what() + ")");
   }
 }
 
-ModelCard readModelCard(const fs::path& cardFile) {
-  const std::string bytes = readFileBytes(cardFile);
-  json j;
+namespace {
+
+// The execution mode the weights were trained in: training.mode, else the --mode of the recorded
+// training command (cards written before training.mode existed); "" when the card does not say.
+std::string trainedMode(const json& training) {
+  if (auto it = training.find("mode"); it != training.end() && it->is_string())
+    return it->get<std::string>();
+  const std::string command = training.value("command", std::string());
+  const auto at = command.find("--mode ");
+  if (at == std::string::npos) return "";
+  const auto start = at + 7, end = command.find(' ', start);
+  return command.substr(start, end == std::string::npos ? std::string::npos : end - start);
+}
+
+// The checks a card must pass before its numbers steer a network or point extraction; every
+// message names the card and the field.
+void validateCard(const ModelCard& c, const fs::path& path) {
+  auto fail = [&](const std::string& field, const std::string& problem) {
+    throw FileError(path, "model card: field \"" + field + "\" " + problem);
+  };
   try {
-    j = json::parse(bytes);
-  } catch (const json::exception& e) {
-    throw FileError(cardFile, std::string("model card is not valid JSON: ") + e.what());
+    const auto [category, type] = splitModelName(c.name);
+    if (c.category != category || c.type != type)
+      fail("name", "is \"" + c.name + "\" but category and type say \"" + c.category + "." +
+                       c.type + "\"");
+  } catch (const InvalidArgument& e) {
+    fail("name", std::string("is invalid: ") + e.what());
   }
-  return modelCardFromJson(j, cardFile);
+  if (c.type.empty()) fail("type", "is empty");
+  try {
+    Architecture::parse(c.architecture);
+  } catch (const InvalidArgument& e) {
+    fail("architecture", std::string("is invalid: ") + e.what());
+  }
+  if (c.mode != "sparse" && c.mode != "dense")
+    fail("mode", "is \"" + c.mode + "\"; expected \"sparse\" or \"dense\"");
+  const std::string trained = trainedMode(c.training);
+  if (!trained.empty() && trained != c.mode)
+    fail("mode", "is \"" + c.mode + "\" but the weights were trained in \"" + trained +
+                     "\" mode (training); set it back or retrain");
+  if (c.featureBackend.empty()) fail("features.backend", "is empty");
+  if (c.featureChannels < 1 || c.featureChannels > 4096)
+    fail("features.channels", "is " + std::to_string(c.featureChannels) + "; expected 1..4096");
+  if (c.descriptorSize < 0 || c.descriptorSize > 65536)
+    fail("features.descriptor_size",
+         "is " + std::to_string(c.descriptorSize) + "; expected 0..65536");
+  if (c.gridResolution < 1 || c.gridResolution > 1024)
+    fail("grid_resolution", "is " + std::to_string(c.gridResolution) + "; expected 1..1024");
+  if (c.weightsFile.empty() || c.weightsFile.find('/') != std::string::npos ||
+      c.weightsFile.find('\\') != std::string::npos || c.weightsFile == "." || c.weightsFile == "..")
+    fail("weights.file", "must be a file name beside the card");
+  if (!c.weightsSha256.empty() &&
+      (c.weightsSha256.size() != 64 ||
+       !std::all_of(c.weightsSha256.begin(), c.weightsSha256.end(), ::isxdigit)))
+    fail("weights.sha256", "is not 64 hex digits");
+  const std::pair<const char*, float> positive[] = {
+      {"point_extraction.max_distance", c.extraction.maxDistance},
+      {"point_extraction.nms_radius", c.extraction.nmsRadius},
+      {"point_extraction.confidence_scale", c.extraction.confidenceScale}};
+  for (const auto& [field, value] : positive)
+    if (!(std::isfinite(value) && value > 0 && value <= 10))
+      fail(field, "is " + std::to_string(value) + "; expected a number in (0, 10]");
+  if (!(std::isfinite(c.extraction.refineVoxels) && c.extraction.refineVoxels >= 0 &&
+        c.extraction.refineVoxels <= 64))
+    fail("point_extraction.refine_voxels", "must be a number in [0, 64]");
+  auto statistics = [&](const char* field, const std::vector<float>& values, int expected) {
+    if (!values.empty() && static_cast<int>(values.size()) != expected)
+      fail(field, "has " + std::to_string(values.size()) + " values but the features have " +
+                      std::to_string(expected));
+    for (float v : values)
+      if (!std::isfinite(v)) fail(field, "holds a value that is not finite");
+  };
+  statistics("retrieval.descriptor_mean", c.descriptorMean, c.descriptorSize);
+  statistics("retrieval.descriptor_std", c.descriptorStd, c.descriptorSize);
+  statistics("embedding_search.affordance_feature_mean", c.affordanceFeatureMean,
+             c.featureChannels);
+}
+
+}  // namespace
+
+ModelCard readModelCard(const fs::path& cardFile) {
+  ModelCard card = modelCardFromJson(readJsonFile(cardFile), cardFile);
+  validateCard(card, cardFile);
+  card.file = cardFile;
+  return card;
 }
 
 void writeModelCard(const fs::path& cardFile, const ModelCard& card) {
@@ -148,6 +228,15 @@ std::vector<fs::path> listModelCards(const fs::path& directory) {
         entry.path().stem().string().find('.') != std::string::npos)
       cards.push_back(entry.path());
   std::sort(cards.begin(), cards.end());
+  // Two cards for one model would silently replace each other's points.
+  std::map<std::string, fs::path> byName;
+  for (const auto& card : cards) {
+    const std::string name = readModelCard(card).name;
+    if (auto [it, fresh] = byName.emplace(name, card); !fresh)
+      throw FileError(card, "model card for " + name + " duplicates " +
+                                it->second.filename().string() +
+                                " in the same folder; keep one card per model");
+  }
   if (cards.empty())
     throw ModelError(directory.string() +
                      ": no model cards (*.json); train models with "

@@ -41,6 +41,7 @@ struct ModelCard {
   nlohmann::json training = nlohmann::json::object();  // data, command, objects, epochs, time...
   nlohmann::json metrics = nlohmann::json::object();
   nlohmann::json extra = nlohmann::json::object();  // unknown fields, kept on rewrite
+  std::filesystem::path file;  // where readModelCard read it (for messages); not written
 
   // Throws ModelError naming what differs when the features were not made the way the model
   // was trained (backend, config hash, channel count, descriptor size, grid size).
@@ -53,11 +54,17 @@ std::pair<std::string, std::string> splitModelName(const std::string& name);
 
 nlohmann::json toJson(const ModelCard& card);
 ModelCard modelCardFromJson(const nlohmann::json& json, const std::filesystem::path& pathForErrors);
-ModelCard readModelCard(const std::filesystem::path& cardFile);  // throws FileError
+// Throws FileError naming the card and the field: not JSON, missing or mistyped fields, a name
+// that is not <category>.<type> or disagrees with them, an empty type, an architecture that does
+// not parse, a mode other than sparse/dense or other than the one the weights were trained in,
+// channel counts, grid size or point-extraction settings out of range, statistics whose size
+// disagrees with the channel counts.
+ModelCard readModelCard(const std::filesystem::path& cardFile);
 void writeModelCard(const std::filesystem::path& cardFile, const ModelCard& card);  // atomic
 
-// Every *.json model card in a directory, sorted by name; throws FileError when the directory
-// is missing, ModelError when it holds no cards.
+// Every *.json model card in a directory, sorted by name, each read and validated; throws
+// FileError when the directory is missing, a card is invalid or two cards name the same model,
+// ModelError when it holds no cards.
 std::vector<std::filesystem::path> listModelCards(const std::filesystem::path& directory);
 
 }  // namespace sagrid::model

@@ -323,6 +323,7 @@ DatasetTrainingResult trainFromDataset(const DatasetTrainingOptions& options) {
   c.training = {{"data", fs::absolute(loaded.front().source.dir).lexically_normal().string()},
                 {"datasets", datasets},
                 {"command", options.command},
+                {"mode", c.mode},  // the mode these weights were trained in (card validation)
                 {"objects", samples.size()},
                 {"skipped_without_type", result.objectsSkipped},
                 {"failed_features", result.objectsFailed},
