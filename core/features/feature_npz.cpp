@@ -1,9 +1,12 @@
 #include "core/features/feature_npz.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "core/common/error.h"
 #include "core/common/sha256.h"
+#include "core/common/value_ranges.h"
+#include "core/io/json_file.h"
 #include "core/io/npz.h"
 
 namespace sagrid {
@@ -78,11 +81,9 @@ FeatureGrid readFeatureNpz(const std::filesystem::path& path, nlohmann::json* me
   const NpzArchive npz = readNpz(path);
   const NpyArray& metaArray = entry(npz, "metadata", "uint8", path);
   nlohmann::json meta;
-  try {
-    meta = nlohmann::json::parse(metaArray.data.begin(), metaArray.data.end());
-  } catch (const nlohmann::json::exception& e) {
-    throw FileError(path, std::string("metadata is not valid JSON: ") + e.what());
-  }
+  meta = parseJsonDocument(
+      std::string_view(reinterpret_cast<const char*>(metaArray.data.data()), metaArray.data.size()),
+      path.string() + " (metadata entry)");
   FeatureGrid grid;
   try {
     grid.backend = meta.at("backend").get<std::string>();
@@ -92,6 +93,8 @@ FeatureGrid readFeatureNpz(const std::filesystem::path& path, nlohmann::json* me
   } catch (const nlohmann::json::exception& e) {
     throw FileError(path, std::string("metadata is incomplete: ") + e.what());
   }
+  if (grid.resolution < 1 || grid.resolution > 1024 || grid.channels < 1 || grid.channels > 4096)
+    throw FileError(path, "metadata resolution or channel count is out of range");
   const NpyArray& coords = entry(npz, "coords", "int32", path);
   const NpyArray& feats = entry(npz, "feats", "float32", path);
   if (coords.shape.size() != 2 || coords.shape[1] != 3)
@@ -119,6 +122,19 @@ FeatureGrid readFeatureNpz(const std::filesystem::path& path, nlohmann::json* me
     throw FileError(path, "normalization arrays have wrong sizes");
   grid.normalization.center = Eigen::Vector3f(centre[0], centre[1], centre[2]);
   grid.normalization.scale = scale[0];
+  // A recomputed checksum does not make the numbers usable: scale 0 or NaN gave points of
+  // [null, null, null].
+  if (!(std::isfinite(grid.normalization.scale) && grid.normalization.scale > 0))
+    throw FileError(path, "normalization scale is " + std::to_string(grid.normalization.scale) +
+                              "; it must be a positive finite number");
+  if (!grid.normalization.center.allFinite() ||
+      grid.normalization.center.cwiseAbs().maxCoeff() > kMaxCoordinate)
+    throw FileError(path, "normalization centre is not finite or beyond 1e9");
+  auto allFinite = [](const std::vector<float>& v) {
+    return std::all_of(v.begin(), v.end(), [](float x) { return std::isfinite(x); });
+  };
+  if (!allFinite(grid.values) || !allFinite(grid.descriptor))
+    throw FileError(path, "features hold values that are not finite");
   if (meta.value("checksum", std::string()) != featureChecksum(grid)) {
     throw FileError(path, "checksum mismatch: the feature file is damaged");
   }

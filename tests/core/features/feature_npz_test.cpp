@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <fstream>
 
 #include "core/common/atomic_file.h"
@@ -96,6 +97,28 @@ TEST(FeatureNpz, DamagedFilesAreRefusedWithTheirPath) {
   writeFileAtomic(dir / "junk.npz", "hello");
   EXPECT_THROW(readFeatureNpz(dir / "junk.npz"), FileError);
   EXPECT_THROW(readFeatureNpz(dir / "missing.npz"), FileError);
+}
+
+// Issue 14: a cached feature file with scale 0 or NaN and a recomputed checksum gave labels with
+// [null, null, null] positions; the numbers are validated on load.
+TEST(FeatureNpz, UnusableNormalizationIsRefusedEvenWithAValidChecksum) {
+  const auto dir = test::freshTempDir("npz_scale");
+  const float scales[] = {0.0f, std::nanf(""), -1.0f, INFINITY};
+  for (float scale : scales) {
+    FeatureGrid g = sampleGrid();
+    g.normalization.scale = scale;
+    writeFeatureNpz(dir / "f.npz", g);  // the checksum covers the bad scale
+    try {
+      readFeatureNpz(dir / "f.npz");
+      FAIL() << "scale " << scale << " accepted";
+    } catch (const FileError& e) {
+      EXPECT_NE(std::string(e.what()).find("normalization scale is"), std::string::npos) << e.what();
+    }
+  }
+  FeatureGrid g = sampleGrid();
+  g.values[2] = std::nanf("");
+  writeFeatureNpz(dir / "values.npz", g);
+  EXPECT_THROW(readFeatureNpz(dir / "values.npz"), FileError);
 }
 
 }  // namespace
