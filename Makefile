@@ -4,7 +4,7 @@ BUILD_DIR ?= build
 JOBS ?= $(shell nproc)
 CMAKE_ARGS ?=
 
-.PHONY: deps configure build test run models bench clean
+.PHONY: deps configure build test run models bench clean package install fuzz test-asan
 
 deps:
 	@bash packaging/install_deps.sh
@@ -27,6 +27,48 @@ models: build
 
 bench: build
 	@for b in $(BUILD_DIR)/tests/benchmarks/*_bench; do $$b --benchmark_repetitions=5 --benchmark_report_aggregates_only=true; done
+
+# The Debian package (packaging/cmake/SagridPackaging.cmake): BUILD_DIR/sagrid_<version>_<arch>.deb
+# with /usr/bin/sagrid, /usr/share/sagrid/{models,samples,datasets}, desktop entry, icon, man page.
+package: build
+	@cd $(BUILD_DIR) && cpack -G DEB
+
+# `make install DESTDIR=/tmp/root PREFIX=/usr`: the same files under DESTDIR/PREFIX. The binary
+# finds its models in PREFIX/share/sagrid from PREFIX/bin, wherever the tree is moved.
+PREFIX ?= /usr/local
+install: build
+	@DESTDIR="$(DESTDIR)" cmake --install $(BUILD_DIR) --prefix "$(PREFIX)"
+
+# libFuzzer targets (tests/fuzz): clang build in FUZZ_BUILD_DIR, every target for FUZZ_SECONDS,
+# all at once at low priority; FUZZ_TARGETS picks some (e.g. "fuzz_npz fuzz_labels").
+# Summary (time, executions, coverage, findings) in FUZZ_BUILD_DIR/fuzz-summary.txt.
+FUZZ_BUILD_DIR ?= build-fuzz
+FUZZ_SECONDS ?= 60
+FUZZ_TARGETS ?=
+fuzz:
+	@bash packaging/install_deps.sh fuzz
+	@CC=clang CXX=clang++ cmake -S . -B $(FUZZ_BUILD_DIR) -G Ninja -DCMAKE_BUILD_TYPE=Release \
+	  -DSAGRID_FUZZ=ON -DSAGRID_BUILD_TESTS=OFF -DSAGRID_BUILD_GUI=OFF -DSAGRID_BUILD_BENCHMARKS=OFF \
+	  > $(FUZZ_BUILD_DIR).configure.log 2>&1 || (cat $(FUZZ_BUILD_DIR).configure.log; exit 1)
+	@cmake --build $(FUZZ_BUILD_DIR) -j $(JOBS) --target fuzz_targets
+	@bash tests/fuzz/run_fuzzers.sh $(FUZZ_BUILD_DIR) $(FUZZ_SECONDS) $(FUZZ_TARGETS)
+
+# The whole suite with AddressSanitizer and UndefinedBehaviorSanitizer (SAGRID_SANITIZE) in
+# ASAN_BUILD_DIR. ASAN_OPTIONS: detect_leaks=0 because libtorch, OpenMP and Mesa (none of them
+# instrumented) keep allocations to exit that LeakSanitizer reports as leaks;
+# UBSAN_OPTIONS halt_on_error=1 makes any undefined behaviour fail its test.
+# CTEST_ARGS passes ctest options, e.g. CTEST_ARGS="-R Npz" or "-LE slow".
+ASAN_BUILD_DIR ?= build-asan
+ASAN_OPTIONS ?= detect_leaks=0
+UBSAN_OPTIONS ?= halt_on_error=1:print_stacktrace=1
+CTEST_ARGS ?=
+test-asan: deps
+	@cmake -S . -B $(ASAN_BUILD_DIR) -G Ninja -DCMAKE_BUILD_TYPE=Release \
+	  -DSAGRID_SANITIZE=address,undefined -DSAGRID_BUILD_BENCHMARKS=OFF \
+	  > $(ASAN_BUILD_DIR).configure.log 2>&1 || (cat $(ASAN_BUILD_DIR).configure.log; exit 1)
+	@cmake --build $(ASAN_BUILD_DIR) -j $(JOBS)
+	@cd $(ASAN_BUILD_DIR) && ASAN_OPTIONS=$(ASAN_OPTIONS) UBSAN_OPTIONS=$(UBSAN_OPTIONS) \
+	  ctest -j $(JOBS) --output-on-failure --timeout 1800 $(CTEST_ARGS)
 
 clean:
 	@rm -rf $(BUILD_DIR) $(BUILD_DIR).configure.log

@@ -15,7 +15,11 @@ packages=(
   # Simulator checks of the exports: MuJoCo 2.2.2 loads and simulates the MJCF export in tests,
   # check_urdf (urdfdom) validates the OmniGibson URDFs.
   libmujoco-dev liburdfdom-tools
+  # help2man: the man page of the Debian package (make package, tests/packaging)
+  help2man
 )
+# `install_deps.sh fuzz` adds the opt-in fuzzing toolchain of `make fuzz`: clang and libFuzzer.
+if [ "${1:-}" = fuzz ]; then packages+=(clang libclang-rt-14-dev); fi
 
 missing=()
 for p in "${packages[@]}"; do

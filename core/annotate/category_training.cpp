@@ -132,7 +132,8 @@ std::string categoryEvaluationTable(const CategoryEvaluation& ev) {
   out << "\n| group | objects | right | share |\n|---|---:|---:|---:|\n";
   for (const auto& [name, c] : ev.byGroup) row(name, c);
   out << "\n| true \\ predicted | stove | sink | none |\n|---|---:|---:|---:|\n";
-  for (const auto& [truth, predicted] : ev.confusion) {
+  for (const auto& [truth, predictions] : ev.confusion) {
+    const auto& predicted = predictions;  // C++17 lambdas cannot capture bindings (clang)
     auto get = [&](const char* p) {
       const auto it = predicted.find(p);
       return it == predicted.end() ? 0 : it->second;

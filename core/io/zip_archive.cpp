@@ -181,7 +181,10 @@ std::string serializeStoredZip(const std::vector<std::pair<std::string, std::str
                                const fs::path& target) {
   std::string out, directory;
   std::uint32_t count = 0;
-  for (const auto& [name, content] : entries) {
+  for (const auto& entry : entries) {
+    // Named references, not a structured binding: C++17 lambdas cannot capture bindings (clang).
+    const std::string& name = entry.first;
+    const std::string& content = entry.second;
     if (content.size() >= 0xFFFFFFFFu || out.size() >= 0xFFFFFFFFu) {
       throw FileError(target, "entry '" + name + "' is too large for a non-zip64 archive");
     }
