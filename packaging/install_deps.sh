@@ -17,6 +17,9 @@ packages=(
   libmujoco-dev liburdfdom-tools
   # help2man: the man page of the Debian package (make package, tests/packaging)
   help2man
+  # slurm-wlm, munge: the one-node Slurm cluster of the array-job test (tests/e2e/slurm_cluster_test.cpp,
+  # packaging/slurm/local_cluster.sh)
+  slurm-wlm munge
 )
 # `install_deps.sh fuzz` adds the opt-in fuzzing toolchain of `make fuzz`: clang and libFuzzer.
 if [ "${1:-}" = fuzz ]; then packages+=(clang libclang-rt-14-dev); fi
