@@ -38,6 +38,7 @@ void setupEval(CLI::App& root) {
     double minutes = 2;
     int epochs = 0;
     int symmetries = sagrid::EvaluationOptions{}.symmetries;
+    bool coarseToFine = false;
     double nearWeight = sagrid::SweepOptions{}.nearWeight;
   };
   auto o = std::make_shared<Options>();
@@ -57,6 +58,8 @@ void setupEval(CLI::App& root) {
   cmd->add_option("--fit-confidence", o->fitConfidence,
                   "Fit the object confidence (P(right with one key)) on this data and write "
                   "DIR/confidence.json (put it beside the models to use it)");
+  cmd->add_flag("--coarse-to-fine", o->coarseToFine,
+               "Second pass on a crop around each model's points (small parts on large objects)");
   cmd->add_option("--fit-counts", o->fitCounts,
                   "Refit each model's automatic instance count on the fields of this data and "
                   "write a models folder DIR with the refitted cards (eval it with --models DIR)");
@@ -108,6 +111,7 @@ void setupEval(CLI::App& root) {
     options.symmetries = o->symmetries;
     options.confidence = sagrid::readConfidenceCalibration(modelsDir);
     options.keepFields = !o->fitCounts.empty();
+    options.coarseToFine = o->coarseToFine;
     const auto report = sagrid::evaluateModels(models, options);
     if (!o->fitCounts.empty()) {
       const auto fits = sagrid::fitCounts(models, report);

@@ -2,6 +2,7 @@
 
 #include <chrono>
 
+#include "core/annotate/coarse_to_fine.h"
 #include "core/annotate/symmetry_averaging.h"
 #include "core/common/error.h"
 #include "core/features/feature_grid.h"
@@ -140,6 +141,9 @@ AnnotationResult annotateMeshFile(const fs::path& meshFile, const std::string& i
       mode = InstanceMode::Auto;
     ModelPrediction p = predictWithModel(*model, features, scene, mesh.fileUp, mode, n, nullptr,
                                          options.symmetries);
+    if (options.coarseToFine)
+      p = refineInCrop(*model, p, mesh, features, scene, featureOptions, mode, n,
+                       options.symmetries);
     for (std::size_t i = 0; i < p.points.size(); ++i) {
       AffordancePoint a;
       a.type = p.type;

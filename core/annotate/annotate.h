@@ -65,6 +65,9 @@ struct AnnotateOptions {
   // generated bench val split the paper error fell 4.55 -> 4.10 cm, on real-val 13.7 -> 9.4 cm,
   // real-dev unchanged (4.65 / 4.72 cm), for ~0.1-0.4 s more per object with two models.
   int symmetries = 8;
+  // Coarse-to-fine: a second pass on a crop around each model's points (core/annotate/
+  // coarse_to_fine.h), for small parts on large objects.
+  bool coarseToFine = false;
   // Maps the least-sure point to P(right with one key) (core/annotate/object_confidence.h);
   // unfitted = the uncalibrated map.
   ConfidenceCalibration confidence;

@@ -27,6 +27,7 @@ std::string annotateOptionsHash(const AnnotateOptions& options) {
                               {"mode", static_cast<int>(options.mode)},
                               {"counts", options.counts},
                               {"symmetries", options.symmetries},
+                              {"coarse_to_fine", options.coarseToFine},
                               {"features", featureConfigHash(options.features)},
                               {"up", options.features.up ? toString(*options.features.up) : ""}};
   return sha256Hex(config.dump()).substr(0, 16);

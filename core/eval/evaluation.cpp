@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "core/annotate/annotate.h"
+#include "core/annotate/coarse_to_fine.h"
 #include "core/common/atomic_file.h"
 #include "core/common/error.h"
 #include "core/eval/report_cell.h"
@@ -86,10 +87,15 @@ EvaluationReport evaluateModels(const ModelSet& models, const EvaluationOptions&
       const auto categoryModels = models.forCategory(category);
       const auto t = Clock::now();
       std::vector<ModelPrediction> autoPredictions;
-      for (const auto* model : categoryModels)
+      for (const auto* model : categoryModels) {
         autoPredictions.push_back(predictionFromField(*model,
                                                       predictField(*model, grid, options.symmetries),
                                                       grid, scene, mesh.fileUp, InstanceMode::Auto));
+        if (options.coarseToFine)
+          autoPredictions.back() =
+              refineInCrop(*model, autoPredictions.back(), mesh, grid, scene, objectFeatures,
+                           InstanceMode::Auto, 1, options.symmetries);
+      }
       modelSeconds += std::chrono::duration<double>(Clock::now() - t).count();
       auto surfaceOf = [](const ModelPrediction& p) {
         std::vector<Eigen::Vector3f> out;

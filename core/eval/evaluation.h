@@ -24,6 +24,7 @@ struct EvaluationOptions {
   std::filesystem::path dataDir;  // a dataset; when it has a val/ split, that is used
   FeatureOptions features;        // from the models; cacheDir empty = DATA/.sagrid-cache
   int symmetries = 8;             // test-time augmentation, as annotate (AnnotateOptions)
+  bool coarseToFine = false;      // second pass on a crop, as annotate (AnnotateOptions)
   ConfidenceCalibration confidence;  // object confidence map (the models folder's, or unfitted)
   std::function<void(std::size_t, std::size_t, const std::string&)> onProgress;
   // Keep every model's field and ground truth (normalized frame) in the report, for refitting the

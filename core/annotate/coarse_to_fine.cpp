@@ -1,0 +1,82 @@
+#include "core/annotate/coarse_to_fine.h"
+
+#include <algorithm>
+
+#include "core/common/error.h"
+#include "core/features/feature_grid.h"
+#include "core/features/feature_pipeline.h"
+#include "core/mesh/mesh.h"
+#include "core/mesh/mesh_crop.h"
+
+namespace sagrid {
+
+std::optional<Eigen::AlignedBox3f> cropRegion(const ModelPrediction& coarse,
+                                              const Normalization& objectNormalization,
+                                              const Eigen::AlignedBox3f& objectBounds,
+                                              const CoarseToFineOptions& options,
+                                              std::string* why) {
+  auto no = [why](const std::string& reason) -> std::optional<Eigen::AlignedBox3f> {
+    if (why) *why = reason;
+    return std::nullopt;
+  };
+  if (coarse.points.empty()) return no("no first-pass point");
+  const float extent = objectBounds.sizes().maxCoeff();
+  Eigen::AlignedBox3f box;
+  for (const auto& p : coarse.points) box.extend(objectNormalization.toMesh(p.position));
+  const Eigen::Vector3f grow = Eigen::Vector3f::Constant(options.margin * extent);
+  box.min() -= grow;
+  box.max() += grow;
+  box = box.intersection(objectBounds);
+  if (box.isEmpty()) return no("the region around the points lies outside the object");
+  if (box.sizes().maxCoeff() > options.maxCropShare * extent)
+    return no("the points spread over most of the object");
+  return box;
+}
+
+Eigen::Vector3f cropToObject(const Eigen::Vector3f& cropNormalized, const Normalization& crop,
+                             const Normalization& object) {
+  return object.toNormalized(crop.toMesh(cropNormalized));
+}
+
+ModelPrediction refineInCrop(const model::AffordanceModel& model, const ModelPrediction& coarse,
+                             const Mesh& mesh, const FeatureGrid& objectFeatures,
+                             const SurfaceScene& scene, const FeatureOptions& featureOptions,
+                             InstanceMode mode, int count, int symmetries,
+                             const CoarseToFineOptions& options, std::string* why) {
+  const auto region =
+      cropRegion(coarse, objectFeatures.normalization, mesh.bounds(), options, why);
+  if (!region) return coarse;
+  const Mesh crop = cropMesh(mesh, *region);
+  if (static_cast<int>(crop.triangleCount()) < options.minTriangles) {
+    if (why) *why = "the crop holds " + std::to_string(crop.triangleCount()) + " triangles";
+    return coarse;
+  }
+  FeatureGrid cropFeatures;
+  try {
+    FeatureOptions cropOptions = featureOptions;
+    cropOptions.cacheDir.clear();  // the crop is not a file: nothing to key a cache entry on
+    cropFeatures = computeFeatures(crop, cropOptions);
+  } catch (const Error& error) {
+    if (why) *why = std::string("the crop's features failed: ") + error.what();
+    return coarse;
+  }
+  if (cropFeatures.voxels.empty()) {
+    if (why) *why = "the crop has no occupied voxel";
+    return coarse;
+  }
+  ModelPrediction fine = predictionFromField(model, predictField(model, cropFeatures, symmetries),
+                                             cropFeatures, scene, mesh.fileUp, mode, count);
+  // Back to the object's normalized frame: positions through the mesh frame, distances by the
+  // ratio of the two scales.
+  const Normalization& object = objectFeatures.normalization;
+  const float distanceScale = object.scale / cropFeatures.normalization.scale;
+  for (auto& p : fine.points) {
+    p.position = cropToObject(p.position, cropFeatures.normalization, object);
+    p.distance *= distanceScale;
+  }
+  fine.field = coarse.field;
+  if (why) why->clear();
+  return fine;
+}
+
+}  // namespace sagrid
