@@ -11,6 +11,8 @@ packages=(
   libglfw3-dev libimgui-dev libegl-dev libgl-dev libegl-mesa0 libgl1-mesa-dri
   libgtest-dev libgmock-dev libbenchmark-dev
   libspdlog-dev libfmt-dev libcli11-dev nlohmann-json3-dev libstb-dev zlib1g-dev
+  # libqhull-dev: convex hulls of the collision parts (core/physics)
+  libqhull-dev
   xvfb xauth
   # Simulator checks of the exports: MuJoCo 2.2.2 loads and simulates the MJCF export in tests,
   # check_urdf (urdfdom) validates the OmniGibson URDFs.

@@ -34,7 +34,7 @@ struct MassOptions {
   std::string category;  // picks the density when density is 0
   double density = 0.0;  // kg/m^3; 0: from densityFor(category)
   int resolution = 128;  // voxels along the largest extent
-  int holeClosingVoxels = 1;
+  int holeClosingVoxels = 2;  // holes up to about 4 voxels across are closed
 };
 
 struct MassProperties {

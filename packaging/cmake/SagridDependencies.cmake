@@ -8,6 +8,8 @@ find_package(spdlog CONFIG REQUIRED)
 find_package(nlohmann_json CONFIG REQUIRED)
 find_package(CLI11 CONFIG REQUIRED)
 find_package(ZLIB REQUIRED)
+# Qhull (libqhull-dev): convex hulls of the collision parts (core/physics).
+find_package(Qhull CONFIG REQUIRED)
 
 # stb ships headers only; its implementations are compiled once in core/common/stb_impl.cpp.
 find_path(SAGRID_STB_INCLUDE_DIR stb_image.h PATH_SUFFIXES stb REQUIRED)
