@@ -47,7 +47,8 @@ void setupFilter(CLI::App& root) {
   cmd->add_option("--min-similarity", o->threshold, "Keep only meshes at least this similar");
   cmd->add_option("--json", o->json, "Also write the ranking as JSON");
   cmd->add_option("--list-out", o->listOut,
-                  "Write the kept meshes that are not rejected as an object list for "
+                  "Write the kept meshes whose decided category is the --like one (not another "
+                  "category, not rejected as none) as an object list for "
                   "`sagrid annotate --list FILE`");
   cmd->add_option("--shard", o->shard,
                   "Only the objects of shard I of N (I/N, I from 0), split by object id");
@@ -107,7 +108,7 @@ void setupFilter(CLI::App& root) {
                    {"similarity", r.similarity},
                    {"closest_category", r.best},
                    {"rejected", r.rejected}});
-      if (!r.rejected) candidates.push_back(r.file);
+      if (!r.rejected && r.best == o->like) candidates.push_back(r.file);
       ++shown;
     }
     if (!o->json.empty()) sagrid::writeFileAtomic(o->json, j.dump(2) + "\n");

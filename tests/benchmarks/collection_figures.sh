@@ -1,0 +1,145 @@
+#!/usr/bin/env bash
+# Figures of issue 13 for collections at scale, measured on this machine and printed as a
+# Markdown table:
+#  - filter throughput (objects/s), computing descriptors (cold) and from the descriptor cache;
+#  - peak RSS of `sagrid annotate` over 20 and over 200 objects (/usr/bin/time -v; the worker's
+#    resident memory after its first and last object from the run manifest);
+#  - objects per hour with a two-task Slurm array on a one-node cluster started here
+#    (packaging/slurm/local_cluster.sh; skipped without slurm-wlm and munge);
+#  - a projection for 1M meshes on a 100-node cluster: filter everything, then annotate the
+#    candidates, from the measured per-object times.
+#
+#   tests/benchmarks/collection_figures.sh [BUILD_DIR [WORK_DIR]]
+#
+# Environment: OBJECTS (default 200; RSS is measured over 20 and OBJECTS), ARRAY_OBJECTS (objects
+# for the Slurm run, default 40), NODES (100), CORES_PER_NODE (default: this machine's nproc),
+# CANDIDATE_SHARE (share of a wild collection that filter keeps for annotation, default 0.01),
+# ANNOTATE_OPTIONS (extra options for every annotate run). About 20 minutes on 2 cores.
+set -euo pipefail
+
+root=$(cd "$(dirname "$0")/../.." && pwd)
+build=$(cd "${1:-$root/build}" && pwd)
+work=${2:-$(mktemp -d /tmp/sagrid-collection-figures.XXXXXX)}
+mkdir -p "$work"
+work=$(cd "$work" && pwd)
+sagrid=$build/sagrid
+objects=${OBJECTS:-200}
+array_objects=${ARRAY_OBJECTS:-40}
+nodes=${NODES:-100}
+cores=${CORES_PER_NODE:-$(nproc)}
+share=${CANDIDATE_SHARE:-0.01}
+models=$root/resources/models
+read -r -a extra <<< "${ANNOTATE_OPTIONS:-}"
+
+[ -x "$sagrid" ] || { echo "collection_figures.sh: no $sagrid (build it first)" >&2; exit 1; }
+[ -x /usr/bin/time ] || { echo "collection_figures.sh: needs GNU time (apt-get install time)" >&2; exit 1; }
+log() { echo "collection_figures.sh: $*" >&2; }
+now() { date +%s.%N; }
+calc() { python3 -c "print($1)"; }
+
+# A collection like a wild one: stoves and sinks among other appliances (category none).
+log "generating $objects objects in $work/objects"
+rm -rf "$work/objects"
+n_stove=$((objects * 2 / 5)) n_sink=$((objects * 3 / 10))
+n_none=$((objects - n_stove - n_sink))
+"$sagrid" generate --category stove --count "$n_stove" --seed 71 --format mixed --out "$work/objects/stoves" > /dev/null 2>&1
+"$sagrid" generate --category sink --count "$n_sink" --seed 72 --format mixed --out "$work/objects/sinks" > /dev/null 2>&1
+"$sagrid" generate --category none --count "$n_none" --seed 73 --format mixed --out "$work/objects/other" > /dev/null 2>&1
+find "$work/objects" \( -name mesh.obj -o -name mesh.glb \) | sort > "$work/all.txt"
+head -n 20 "$work/all.txt" > "$work/first20.txt"
+
+# Filter: descriptors computed (no cache yet), then read from the cache.
+rm -rf "$work/cache"
+filter() {
+  "$sagrid" filter "$work/all.txt" --like stove --models "$models" --cache "$work/cache" \
+    --list-out "$work/candidates.txt" > /dev/null 2> "$work/filter.log"
+  grep -o '[0-9.]* objects/s' "$work/filter.log" | tail -n 1 | cut -d' ' -f1
+}
+log "filter, cold"
+filter_cold=$(filter)
+log "filter, cached"
+filter_cached=$(filter)
+candidates=$(grep -vc '^#' "$work/candidates.txt" || true)
+
+# Peak RSS and time per object, one process.
+annotate_rss() {  # LIST OUT -> "peak_MiB seconds first_worker_MiB last_worker_MiB"
+  rm -rf "$2"
+  local t0 t1
+  t0=$(now)
+  /usr/bin/time -v "$sagrid" annotate "$1" --out "$2" --models "$models" "${extra[@]}" \
+    > /dev/null 2> "$2.time"
+  t1=$(now)
+  local peak
+  peak=$(awk -F: '/Maximum resident set size/ {print int($2 / 1024)}' "$2.time")
+  python3 - "$2/annotate.jsonl" "$peak" "$(calc "round($t1 - $t0, 1)")" << 'PY'
+import json, sys
+rss = [json.loads(l).get("rss_mib") for l in open(sys.argv[1])]
+rss = [r for r in rss if r is not None]
+print(sys.argv[2], sys.argv[3], int(rss[0]) if rss else 0, int(rss[-1]) if rss else 0)
+PY
+}
+log "annotate 20 objects (peak RSS)"
+read -r rss20 sec20 first20 last20 <<< "$(annotate_rss "$work/first20.txt" "$work/out20")"
+log "annotate $objects objects (peak RSS)"
+read -r rssN secN firstN lastN <<< "$(annotate_rss "$work/all.txt" "$work/outN")"
+per_object=$(calc "round($secN / $objects, 3)")
+
+# Two array tasks on a one-node cluster, one CPU each.
+array_rate="not measured (no slurm-wlm/munge)"
+if command -v sbatch > /dev/null 2>&1 && [ -x /usr/sbin/slurmctld ]; then
+  log "Slurm: two array tasks over $array_objects objects"
+  head -n "$array_objects" "$work/all.txt" > "$work/array.txt"
+  cluster=$work/cluster
+  "$root/packaging/slurm/local_cluster.sh" start "$cluster" > /dev/null
+  trap '"$root/packaging/slurm/local_cluster.sh" stop "$cluster"' EXIT
+  rm -rf "$work/array_out"
+  mkdir -p "$work/jobs"
+  t0=$(now)
+  SLURM_CONF=$cluster/slurm.conf SAGRID=$sagrid sbatch --wait --array=0-1 --cpus-per-task=1 \
+    --output="$work/jobs/%A_%a.out" "$root/packaging/slurm/annotate.sbatch" "$work/array.txt" \
+    "$work/array_out" --models "$models" "${extra[@]}" > /dev/null
+  t1=$(now)
+  done_objects=$(grep -c '"status":"annotated"' "$work/array_out/annotate.jsonl")
+  array_rate=$(calc "round($done_objects / ($t1 - $t0) * 3600)")
+  "$root/packaging/slurm/local_cluster.sh" stop "$cluster"
+  trap - EXIT
+fi
+
+# Projection: 1M meshes, every one filtered (cold descriptor), the candidates annotated. Core-
+# seconds per object: annotate from the Slurm run (one CPU per task) when there was one, else the
+# one-process time x this machine's cores; filter from its one-process rate x the cores (an upper
+# bound: it assumes the threads kept every core busy).
+python3 - "$filter_cold" "$per_object" "$nodes" "$cores" "$share" "$array_rate" << 'PY' > "$work/projection.txt"
+import os, sys
+filter_rate, annotate_s, nodes, cores, share = map(float, sys.argv[1:6])
+here = os.cpu_count()
+try:
+    annotate_core_s = 2 * 3600 / float(sys.argv[6])  # two tasks, one CPU each
+except ValueError:
+    annotate_core_s = annotate_s * here
+filter_core_s = here / filter_rate
+meshes = 1_000_000
+filter_h = meshes * filter_core_s / (nodes * cores) / 3600
+annotate_h = meshes * share * annotate_core_s / (nodes * cores) / 3600
+print(f"{filter_h:.1f} {annotate_h:.2f} {filter_h + annotate_h:.1f} {filter_core_s:.2f} {annotate_core_s:.2f}")
+PY
+read -r proj_filter proj_annotate proj_total filter_core annotate_core < "$work/projection.txt"
+
+cat << EOF
+
+Measured on $(hostname) ($(nproc) cores, $(free -g | awk '/Mem:/ {print $2}') GiB), $(date -u +%Y-%m-%d); annotate options: defaults ${ANNOTATE_OPTIONS:-}
+| figure | value |
+| --- | --- |
+| filter, descriptors computed (cold) | $filter_cold objects/s |
+| filter, descriptors from the cache | $filter_cached objects/s |
+| filter candidates (decided stove) | $candidates of $objects |
+| annotate 20 objects: peak RSS (time -v) | $rss20 MiB ($sec20 s) |
+| annotate $objects objects: peak RSS (time -v) | $rssN MiB ($secN s, $per_object s/object) |
+| worker RSS after first / last object (20) | $first20 / $last20 MiB |
+| worker RSS after first / last object ($objects) | $firstN / $lastN MiB |
+| Slurm, 2 array tasks x 1 CPU, $array_objects objects | $array_rate objects/hour |
+| per object, one core: filter (cold) / annotate | $filter_core / $annotate_core core-seconds |
+| 1M meshes on $nodes nodes x $cores cores: filter all | $proj_filter h |
+| then annotate ${share} of them | $proj_annotate h |
+| total | $proj_total h |
+EOF
