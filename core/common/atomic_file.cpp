@@ -2,12 +2,14 @@
 
 #include <ext/stdio_filebuf.h>
 #include <fcntl.h>
+#include <signal.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
 #include <atomic>
 #include <cerrno>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <system_error>
 
@@ -30,6 +32,30 @@ fs::path temporarySibling(const fs::path& target) {
 fs::path folderOf(const fs::path& target) {
   return target.has_parent_path() ? target.parent_path() : fs::path(".");
 }
+
+// Removes "<target>.tmp-<pid>-<n>" siblings left by processes that no longer run (killed in the
+// instant between naming a temporary and renaming it), so a rerun leaves no temporary behind.
+// Only called before a named temporary is made, which is rare: first writes and O_TMPFILE
+// writes of a new file need none.
+void removeStaleTemporaries(const fs::path& target) {
+  const std::string prefix = target.filename().string() + ".tmp-";
+  std::error_code ec;
+  for (fs::directory_iterator it(folderOf(target), ec), end; !ec && it != end; it.increment(ec)) {
+    const std::string name = it->path().filename().string();
+    if (name.compare(0, prefix.size(), prefix) != 0) continue;
+    const std::string rest = name.substr(prefix.size());
+    const auto dash = rest.find('-');
+    if (dash == 0 || dash == std::string::npos ||
+        rest.find_first_not_of("0123456789-") != std::string::npos)
+      continue;
+    const long pid = std::strtol(rest.substr(0, dash).c_str(), nullptr, 10);
+    if (pid > 0 && ::kill(static_cast<pid_t>(pid), 0) != 0 && errno == ESRCH) {
+      std::error_code ignored;
+      fs::remove(it->path(), ignored);
+    }
+  }
+}
+
 
 std::string errnoText(int error) { return std::generic_category().message(error); }
 
@@ -90,6 +116,7 @@ AtomicOutputFile::AtomicOutputFile(fs::path target, bool binary) : m_target(std:
   static const bool procMounted = ::access("/proc/self/fd", X_OK) == 0;
   if (procMounted) m_fd = ::open(folder.c_str(), O_TMPFILE | O_WRONLY | O_CLOEXEC, 0666);
   if (m_fd < 0) {  // the file system has no O_TMPFILE: a named sibling
+    removeStaleTemporaries(m_target);
     m_temp = temporarySibling(m_target);
     m_fd = ::open(m_temp.c_str(), O_CREAT | O_EXCL | O_WRONLY | O_CLOEXEC, 0666);
   }
@@ -121,6 +148,7 @@ void AtomicOutputFile::publish() {
     return;
   }
   if (errno != EEXIST) throw FileError(m_target, "cannot be written: " + errnoText(errno));
+  removeStaleTemporaries(m_target);
   m_temp = temporarySibling(m_target);
   if (::linkat(AT_FDCWD, self.c_str(), AT_FDCWD, m_temp.c_str(), AT_SYMLINK_FOLLOW) != 0) {
     const int error = errno;

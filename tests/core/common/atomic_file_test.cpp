@@ -1,6 +1,7 @@
 #include "core/common/atomic_file.h"
 
 #include <sys/stat.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <gmock/gmock.h>
@@ -73,6 +74,27 @@ TEST(AtomicFile, NewFilesGetTheUsualPermissions) {
   const mode_t mask = ::umask(0);
   ::umask(mask);
   EXPECT_EQ(info.st_mode & 0777, 0666 & ~mask);
+}
+
+// A process killed between naming its temporary and renaming it leaves "<target>.tmp-<pid>-<n>";
+// the next overwrite of that target removes it, but never one of a process still running.
+TEST(AtomicFile, OverwriteRemovesTemporariesOfDeadProcesses) {
+  const fs::path dir = test::freshTempDir();
+  const fs::path target = dir / "labels.json";
+  writeFileAtomic(target, "old");
+  const pid_t child = ::fork();
+  if (child == 0) ::_exit(0);
+  ASSERT_GT(child, 0);
+  ::waitpid(child, nullptr, 0);  // its pid now names no process
+  const fs::path stale = dir / ("labels.json.tmp-" + std::to_string(child) + "-0");
+  const fs::path live = dir / ("labels.json.tmp-" + std::to_string(::getpid()) + "-999");
+  const fs::path other = dir / ("other.json.tmp-" + std::to_string(child) + "-0");
+  for (const auto& p : {stale, live, other}) writeFileAtomic(p, "partial");
+  writeFileAtomic(target, "new");
+  EXPECT_FALSE(fs::exists(stale));
+  EXPECT_TRUE(fs::exists(live));
+  EXPECT_TRUE(fs::exists(other));  // another target's business
+  EXPECT_EQ(readFileBytes(target), "new");
 }
 
 // The message readFileBytes gives for `path`; fails the test when it reads.
