@@ -13,6 +13,8 @@ namespace fs = std::filesystem;
 
 namespace {
 
+constexpr std::size_t kMaxFileNameBytes = 255;  // NAME_MAX of Linux file systems
+
 bool isKeptByte(unsigned char c) {
   return (c < 0x80 && std::isalnum(c)) || c == '-' || c == '_' || c == '.';
 }
@@ -85,6 +87,9 @@ fs::path resolveContained(const fs::path& folder, std::string_view reference,
   const fs::path relative = fs::path(text).lexically_normal();
   if (relative.empty() || *relative.begin() == ".." || relative == ".")
     refuse("it climbs out of the object's folder");
+  for (const auto& part : relative) {
+    if (part.native().size() > kMaxFileNameBytes) refuse("a name in it is longer than 255 bytes");
+  }
   const fs::path resolved = folder / relative;
   if (!isInsideFolder(resolved, folder)) refuse("it leads outside the folder through a link");
   return resolved;

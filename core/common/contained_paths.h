@@ -41,8 +41,8 @@ class UniqueFileNames {
 // The file `reference` names, as written inside `referencingFile`, resolved against `folder`
 // (the object's own folder). Backslashes count as separators (Windows-made OBJ/MTL files).
 // Throws FileError naming `referencingFile` when the reference is empty, holds a NUL byte, is
-// absolute (/x, \x, C:x), climbs out with "..", or leads outside `folder` through a symbolic
-// link. The file itself need not exist; callers check that.
+// absolute (/x, \x, C:x), climbs out with "..", has a name longer than 255 bytes, or leads
+// outside `folder` through a symbolic link. The file itself need not exist; callers check that.
 std::filesystem::path resolveContained(const std::filesystem::path& folder,
                                        std::string_view reference,
                                        const std::filesystem::path& referencingFile);

@@ -3,6 +3,7 @@
 #include <cctype>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <sstream>
 #include <system_error>
@@ -58,30 +59,39 @@ std::vector<std::string> referencedFiles(const fs::path& file,
 
 }  // namespace
 
+std::vector<fs::path> containedMeshReferences(const fs::path& mesh) {
+  std::string ext = mesh.extension().string();
+  for (auto& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  std::vector<fs::path> files;
+  std::error_code ec;
+  if (ext != ".obj" || !fs::is_regular_file(mesh, ec)) return files;
+  const fs::path source = mesh.parent_path().empty() ? fs::path(".") : mesh.parent_path();
+  for (const auto& mtlName : referencedFiles(mesh, {"mtllib"})) {
+    const fs::path mtl = resolveContained(source, mtlName, mesh);
+    if (!fs::is_regular_file(mtl, ec)) continue;  // the importer warns about missing ones
+    files.push_back(mtl);
+    const fs::path mtlFolder = mtl.lexically_relative(source).parent_path();
+    for (const auto& textureName :
+         referencedFiles(mtl, {"map_Kd", "map_Ka", "map_Ks", "map_Bump", "map_bump", "bump",
+                               "map_d", "disp", "decal", "refl", "norm"})) {
+      // MTL texture names are relative to the MTL's folder, which lies inside the mesh's.
+      const fs::path texture =
+          resolveContained(source, (mtlFolder / textureName).generic_string(), mtl);
+      if (fs::is_regular_file(texture, ec)) files.push_back(texture);
+    }
+  }
+  return files;
+}
+
 fs::path copyMeshWithDependencies(const fs::path& mesh, const fs::path& dir,
                                   const std::string& newName) {
   std::error_code ec;
   if (!fs::is_regular_file(mesh, ec)) throw FileError(mesh, "mesh file not found");
+  const std::vector<fs::path> references = containedMeshReferences(mesh);  // refuses first
   const fs::path target = dir / (newName.empty() ? mesh.filename().string() : newName);
   copyFileAtomic(mesh, target);
-  std::string ext = mesh.extension().string();
-  for (auto& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  if (ext != ".obj") return target;
-  const fs::path source = mesh.parent_path();
-  for (const auto& mtlName : referencedFiles(mesh, {"mtllib"})) {
-    const fs::path mtl = resolveContained(source, mtlName, mesh);
-    if (!fs::is_regular_file(mtl, ec)) continue;  // the importer already warned
-    const fs::path relativeMtl = mtl.lexically_relative(source);
-    copyFileAtomic(mtl, dir / relativeMtl);
-    for (const auto& textureName :
-         referencedFiles(mtl, {"map_Kd", "map_Ka", "map_Bump", "map_bump", "bump", "map_d"})) {
-      // MTL texture names are relative to the MTL's folder, which lies inside the mesh's.
-      const fs::path texture =
-          resolveContained(source, (relativeMtl.parent_path() / textureName).generic_string(), mtl);
-      if (fs::is_regular_file(texture, ec))
-        copyFileAtomic(texture, dir / texture.lexically_relative(source));
-    }
-  }
+  const fs::path source = mesh.parent_path().empty() ? fs::path(".") : mesh.parent_path();
+  for (const auto& file : references) copyFileAtomic(file, dir / file.lexically_relative(source));
   return target;
 }
 
@@ -92,6 +102,12 @@ std::string formatNumber(double value) {
   char buffer[32];
   std::snprintf(buffer, sizeof buffer, "%.6g", value);
   return buffer;
+}
+
+double jsonNumber(float value) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.7g", static_cast<double>(value));
+  return std::strtod(buffer, nullptr);
 }
 
 std::string formatVector(const Eigen::Vector3d& v) {

@@ -18,6 +18,10 @@ std::string objectId(const ObjectLabels& labels, const std::filesystem::path& me
 // Label position (mesh file frame, file units) -> z-up metres.
 Eigen::Vector3f toSimulatorFrame(const ObjectLabels& labels, const Eigen::Vector3f& filePosition,
                                  double metersPerUnit);
+// The existing files an OBJ mesh references (its mtllib files and their textures), each resolved
+// with resolveContained inside the mesh's folder: one that leaves it (absolute, "../", a link) is
+// refused with a FileError naming the OBJ or MTL. Empty for other formats.
+std::vector<std::filesystem::path> containedMeshReferences(const std::filesystem::path& mesh);
 // Copies `mesh` to dir/<newName or its own name> plus the .mtl files and textures an OBJ names
 // (kept at their relative paths). References are resolved with resolveContained: one that leaves
 // the mesh's folder (absolute, "../", a link) is refused with a FileError naming the OBJ or MTL.
@@ -27,6 +31,9 @@ std::filesystem::path copyMeshWithDependencies(const std::filesystem::path& mesh
                                                const std::string& newName = "");
 // "%.6g"; throws Error for NaN or infinity (validation upstream must have caught them).
 std::string formatNumber(double value);
+// A float coordinate as the double JSON writes, rounded to 7 significant digits (what a float
+// holds), so 0.2f reads 0.2 and not 0.20000000298023224.
+double jsonNumber(float value);
 // "x y z" with formatNumber.
 std::string formatVector(const Eigen::Vector3d& v);
 

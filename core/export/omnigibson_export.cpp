@@ -151,11 +151,13 @@ SimulatorExport exportOmniGibson(const ObjectLabels& labels, const fs::path& mes
                   head + link.str() + metaLinksXml(metaLinks) + "</robot>\n");
 
   // misc/metadata.json as record_obj_metadata_from_urdf writes it, plus the meta links.
-  const Eigen::Vector3d size = geometry.bounds.sizes().cast<double>();
-  const Eigen::Vector3d offset = geometry.bounds.center().cast<double>();
+  using exportdetail::jsonNumber;
+  const Eigen::Vector3f size = geometry.bounds.sizes();
+  const Eigen::Vector3f offset = geometry.bounds.center();
   nlohmann::json metadata = {
-      {"bbox_size", {size.x(), size.y(), size.z()}},
-      {"base_link_offset", {offset.x(), offset.y(), offset.z()}},
+      {"bbox_size", {jsonNumber(size.x()), jsonNumber(size.y()), jsonNumber(size.z())}},
+      {"base_link_offset",
+       {jsonNumber(offset.x()), jsonNumber(offset.y()), jsonNumber(offset.z())}},
       {"link_tags", nlohmann::json::object()},
       {"object_parts", nlohmann::json::array()},
       {"orientations", nlohmann::json::array()},

@@ -2,6 +2,7 @@
 
 #include <map>
 
+#include "core/export/export_frame.h"
 #include "core/export/omnigibson_export.h"
 
 namespace sagrid {
@@ -33,7 +34,8 @@ std::vector<MetaLink> omnigibsonMetaLinks(const std::vector<SimulatorPoint>& poi
     link.linkName = std::string("meta__") + kBaseLink + "_" + type + "_" + link.id + "_0_link";
     link.position = point.position;
     const auto& p = point.position;
-    link.entry = {{"position", {p.x(), p.y(), p.z()}}, {"orientation", {0.0, 0.0, 0.0, 1.0}}};
+    link.entry = {{"position", {jsonNumber(p.x()), jsonNumber(p.y()), jsonNumber(p.z())}},
+                  {"orientation", {0.0, 0.0, 0.0, 1.0}}};
     if (type == "togglebutton") {
       link.entry["type"] = "sphere";
       link.entry["size"] = {kToggleButtonRadius, kToggleButtonRadius, kToggleButtonRadius};

@@ -1,6 +1,9 @@
 #include "core/export/simulator_geometry.h"
 
+#include <algorithm>
+
 #include "core/common/error.h"
+#include "core/export/export_frame.h"
 #include "core/export/export_units.h"
 #include "core/mesh/mesh_import.h"
 #include "core/physics/convex_decomposition.h"
@@ -11,7 +14,9 @@ namespace fs = std::filesystem;
 
 namespace {
 
-constexpr int kMaxHullVertices = 64;  // MuJoCo, V-HACD and OmniGibson (60) keep hulls this small
+// OmniGibson simplifies every collision hull to at most 60 vertices (asset_conversion_utils.py,
+// generate_collision_meshes -> simplify_convex_hull) for its GPU physics; MuJoCo takes that too.
+constexpr int kMaxHullVertices = 60;
 
 std::vector<physics::ConvexPart> collisionParts(const Mesh& mesh, const ExportOptions& options,
                                                 std::vector<std::string>& warnings) {
@@ -26,7 +31,7 @@ std::vector<physics::ConvexPart> collisionParts(const Mesh& mesh, const ExportOp
       decomposition.maxVerticesPerPart = kMaxHullVertices;
       if (options.progress) {
         decomposition.progress = [&options](float fraction, const std::string& stage) {
-          options.progress(0.1f + 0.8f * fraction, "collision: " + stage);
+          options.progress(0.1f + 0.79f * std::clamp(fraction, 0.0f, 1.0f), "collision: " + stage);
         };
       }
       physics::Decomposition result = physics::decomposeConvex(mesh, decomposition);
@@ -52,6 +57,8 @@ SimulatorGeometry buildSimulatorGeometry(const ObjectLabels& labels, const fs::p
   if (options.progress) options.progress(0.0f, "importing");
   const auto up = parseUpAxis(labels.object.up);
   if (!up) throw FileError(shownLabels, "object.up '" + labels.object.up + "' is not an axis");
+  // Data never chooses what is read: the files an OBJ names must lie in its own folder.
+  containedMeshReferences(meshPath);
   geometry.mesh = importMesh(meshPath, ImportOptions(*up));
   if (!labels.object.sha256.empty() && labels.object.sha256 != geometry.mesh.sha256) {
     geometry.warnings.push_back(meshPath.string() +

@@ -29,6 +29,7 @@ TrainingSetEntry addToTrainingSet(const ObjectLabels& labels, const fs::path& me
     throw InvalidArgument(meshPath.string() +
                           ": set the object's category before adding it to a training set");
   }
+  exportdetail::containedMeshReferences(meshPath);  // refuse before anything is created
   TrainingSetEntry entry;
   entry.id = datasetId(exportdetail::objectId(labels, meshPath));
   const fs::path objectDir = datasetDir / entry.id;
