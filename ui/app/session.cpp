@@ -340,8 +340,11 @@ void Session::exportCurrent(const std::string& format, const fs::path& outDir) {
   if (!m_document) return;
   try {
     const SimulatorExport result =
-        format == "mjcf" ? exportMjcf(m_document->labels(), m_document->meshPath(), outDir)
-                         : exportOmniGibson(m_document->labels(), m_document->meshPath(), outDir);
+        format == "mjcf"
+            ? exportMjcf(m_document->labels(), m_document->meshPath(), outDir, {},
+                         m_document->labelsPath())
+            : exportOmniGibson(m_document->labels(), m_document->meshPath(), outDir, {},
+                               m_document->labelsPath());
     for (const auto& w : result.warnings) logger()->warn("{}", w);
     logger()->info("exported {}", result.mainFile.string());
   } catch (const Error& e) {

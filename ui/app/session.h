@@ -13,6 +13,7 @@
 #include "ui/app/prediction_worker.h"
 #include "ui/app/recent_files.h"
 #include "ui/document/annotation_document.h"
+#include "ui/document/mass_estimate.h"
 #include "ui/document/review_queue.h"
 #include "ui/render/camera.h"
 #include "ui/render/view_settings.h"
@@ -77,6 +78,7 @@ class Session {
   void runPrediction();  // no-op with a message when no model covers the category
   void cancelPrediction() { m_worker.cancel(); }
   const PredictionWorker& worker() const { return m_worker; }
+  MassEstimate& massEstimate() { return m_massEstimate; }  // the Object panel's mass (export)
   bool autoPredict = true;
   void pollPrediction();  // applies a finished prediction (UI thread, once per frame)
   // Turns the object to another file up axis (an undoable command that drops the predicted
@@ -123,6 +125,7 @@ class Session {
   std::vector<std::string> m_errors;
   PredictionWorker m_worker;
   PredictorLookup m_predictorLookup;
+  MassEstimate m_massEstimate;
 };
 
 }  // namespace sagrid::ui

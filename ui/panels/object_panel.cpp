@@ -1,12 +1,44 @@
 #include <imgui.h>
 
+#include <cmath>
 #include <cstdio>
+#include <memory>
 
 #include "core/mesh/mesh_import.h"
 #include "ui/app/session.h"
+#include "ui/document/mass_commands.h"
 #include "ui/panels/panels.h"
 
 namespace sagrid::ui {
+
+namespace {
+
+// Mass for the simulator exports: the estimate (solid volume x the category's density) unless the
+// curator sets one (labels object.mass_kg, an undoable edit; "Estimate" clears it again).
+void drawMass(Session& session, const AnnotationDocument& doc) {
+  const physics::MassProperties* estimate = session.massEstimate().forDocument(doc);
+  const std::optional<double> curated = curatedMass(doc.labels());
+  if (estimate) {
+    ImGui::TextDisabled("estimated mass %.3g kg (%.0f kg/m^3)", estimate->mass,
+                        estimate->density);
+  } else {
+    ImGui::TextDisabled("no mass estimate: %s", session.massEstimate().error().c_str());
+  }
+  double value = curated ? *curated : (estimate ? estimate->mass : 0.0);
+  ImGui::SetNextItemWidth(curated ? -80.0f : -1.0f);
+  if (ImGui::InputDouble("##mass", &value, 0.0, 0.0, curated ? "mass %.3f kg" : "mass %.3f kg (est.)",
+                         ImGuiInputTextFlags_EnterReturnsTrue) &&
+      std::isfinite(value) && value > 0.0 && value <= 1e6) {
+    session.execute(std::make_unique<SetMassCommand>(value));
+  }
+  if (curated) {
+    ImGui::SameLine();
+    if (ImGui::Button("Estimate", ImVec2(-1, 0)))
+      session.execute(std::make_unique<SetMassCommand>(std::nullopt));
+  }
+}
+
+}  // namespace
 
 void drawObjectPanel(Session& session) {
   AnnotationDocument* doc = session.document();
@@ -45,6 +77,7 @@ void drawObjectPanel(Session& session) {
     }
     ImGui::EndCombo();
   }
+  drawMass(session, *doc);
   const PredictionWorker& worker = session.worker();
   if (worker.running()) {
     ImGui::ProgressBar(worker.progress(), ImVec2(-70, 0), "predicting...");
