@@ -22,9 +22,10 @@ std::string hostName() {
 }
 
 // The body of a worker: set up once, then report "start I" and "done I <json>" for each object
-// from `first` on. A setup failure is reported as "fatal <message>".
-void workerBody(const std::vector<MeshFile>& files, std::size_t first, const WorkerSetup& setup,
-                const WorkerProcess::Report& report) {
+// from `first` on, and "retire" when it has done `quota` objects (0: no quota) with objects left.
+// A setup failure is reported as "fatal <message>".
+void workerBody(const std::vector<MeshFile>& files, std::size_t first, std::size_t quota,
+                const WorkerSetup& setup, const WorkerProcess::Report& report) {
   ObjectTask task;
   try {
     task = setup();
@@ -34,6 +35,10 @@ void workerBody(const std::vector<MeshFile>& files, std::size_t first, const Wor
   }
   report("ready");
   for (std::size_t i = first; i < files.size(); ++i) {
+    if (quota > 0 && i - first == quota) {
+      report("retire");
+      return;
+    }
     report("start " + std::to_string(i));
     nlohmann::json result;
     try {
@@ -127,8 +132,9 @@ BatchSummary runBatch(const std::vector<MeshFile>& files, const BatchOptions& op
 
   std::size_t next = 0;
   while (next < files.size()) {
-    WorkerProcess worker(
-        [&](const WorkerProcess::Report& report) { workerBody(files, next, setup, report); });
+    WorkerProcess worker([&](const WorkerProcess::Report& report) {
+      workerBody(files, next, options.objectsPerWorker, setup, report);
+    });
     std::string line;
     // Setup (model loading) has no time limit: it does not depend on the objects.
     if (worker.readLine(line, 0) != WorkerProcess::Read::Line || line.rfind("fatal ", 0) == 0) {
@@ -151,6 +157,7 @@ BatchSummary runBatch(const std::vector<MeshFile>& files, const BatchOptions& op
         replaced = true;
         break;
       }
+      if (line == "retire") break;  // its quota done: a fresh worker takes the rest
       if (!parseReport(line, "start", current, rest))
         throw Error("the worker process sent an unexpected report: " + line);
       if (options.onProgress) options.onProgress(finished, files[current].id);

@@ -45,6 +45,10 @@ struct BatchOptions {
   std::filesystem::path manifest;  // default out/annotate.jsonl
   Shard shard;                     // recorded in the manifest (files are already the shard's)
   double timeLimitSeconds = 600;   // per object; <= 0: none
+  // A worker is replaced by a fresh one after this many objects (0: never), so that memory a
+  // library keeps between objects (allocator fragmentation, caches) cannot grow over thousands
+  // of objects; a fresh worker costs one model load.
+  std::size_t objectsPerWorker = 100;
   // Called when an object starts (done = objects finished so far) and when the batch ends.
   std::function<void(std::size_t done, const std::string& current)> onProgress;
   // Called with each manifest line (e.g. to print failures).

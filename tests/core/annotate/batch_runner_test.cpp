@@ -69,6 +69,21 @@ TEST(BatchRunner, AHangingCrashingOrThrowingObjectFailsAloneAndTheBatchGoesOn) {
   EXPECT_EQ(lines[4].at("pid"), lines[6].at("pid"));
 }
 
+TEST(BatchRunner, AWorkerIsReplacedAfterItsQuotaOfObjects) {
+  BatchOptions options;
+  options.out = test::freshTempDir();
+  options.objectsPerWorker = 2;
+  const BatchSummary s = runBatch(objects({"a", "b", "c", "d", "e"}), options, scriptedTask);
+  EXPECT_EQ(s.count(batch_status::kAnnotated), 5u);
+  EXPECT_EQ(s.workerRestarts, 0u);  // retiring is not a failure
+  const auto lines = readManifest(options.out / kRunManifestFile);
+  ASSERT_EQ(lines.size(), 5u);
+  EXPECT_EQ(lines[0].at("pid"), lines[1].at("pid"));
+  EXPECT_NE(lines[1].at("pid"), lines[2].at("pid"));
+  EXPECT_EQ(lines[2].at("pid"), lines[3].at("pid"));
+  EXPECT_NE(lines[3].at("pid"), lines[4].at("pid"));
+}
+
 TEST(BatchRunner, ASetupFailureStopsTheBatchWithItsMessage) {
   BatchOptions options;
   options.out = test::freshTempDir();

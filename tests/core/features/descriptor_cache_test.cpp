@@ -1,0 +1,79 @@
+#include "core/features/descriptor_cache.h"
+
+#include <gtest/gtest.h>
+
+#include "core/common/atomic_file.h"
+#include "core/mesh/mesh_export.h"
+#include "support/analytic_meshes.h"
+#include "support/test_paths.h"
+
+namespace sagrid {
+namespace {
+namespace fs = std::filesystem;
+
+FeatureOptions smallOptions(const fs::path& cache) {
+  FeatureOptions o;
+  o.resolution = 16;
+  o.views = 24;
+  o.renderSize = 48;
+  o.cacheDir = cache;
+  return o;
+}
+
+fs::path writeBoxObj(const fs::path& dir) {
+  const auto path = dir / "box.obj";
+  exportMesh(test::box({-1, -0.5f, 0}, {1, 0.5f, 0.5f}), path);
+  return path;
+}
+
+std::vector<fs::path> descriptorEntries(const fs::path& cache) {
+  std::vector<fs::path> entries;
+  for (const auto& e : fs::directory_iterator(cache))
+    if (e.path().string().find(".descriptor.json") != std::string::npos)
+      entries.push_back(e.path());
+  return entries;
+}
+
+TEST(DescriptorCache, ComputesOnceThenReadsTheSmallEntryOnly) {
+  const fs::path dir = test::freshTempDir();
+  const fs::path mesh = writeBoxObj(dir);
+  const auto options = smallOptions(dir / "cache");
+  DescriptorSource source{};
+  const auto computed = extractDescriptor(mesh, options, &source);
+  EXPECT_EQ(source, DescriptorSource::Computed);
+  EXPECT_EQ(computed.size(), static_cast<std::size_t>(kEmbeddedDescriptorSize));
+  // Only the descriptor is stored, not the grid.
+  ASSERT_EQ(descriptorEntries(options.cacheDir).size(), 1u);
+  EXPECT_EQ(std::distance(fs::directory_iterator(options.cacheDir), fs::directory_iterator()), 1);
+
+  const auto cached = extractDescriptor(mesh, options, &source);
+  EXPECT_EQ(source, DescriptorSource::DescriptorCache);
+  EXPECT_EQ(cached, computed);
+  // The same as the full pipeline's descriptor.
+  FeatureOptions full = options;
+  full.cacheDir.clear();
+  EXPECT_EQ(extractFeatures(mesh, full).descriptor, computed);
+}
+
+TEST(DescriptorCache, TakesTheDescriptorOfAFullFeatureEntryAndRewritesADamagedEntry) {
+  const fs::path dir = test::freshTempDir();
+  const fs::path mesh = writeBoxObj(dir);
+  const auto options = smallOptions(dir / "cache");
+  const auto grid = extractFeatures(mesh, options);  // annotate/extract with the same cache
+  DescriptorSource source{};
+  EXPECT_EQ(extractDescriptor(mesh, options, &source), grid.descriptor);
+  EXPECT_EQ(source, DescriptorSource::FeatureCache);
+
+  const auto entries = descriptorEntries(options.cacheDir);
+  ASSERT_EQ(entries.size(), 1u);
+  writeFileAtomic(entries[0], "{\"mesh_sha256\": \"x\", \"descr");  // truncated by hand
+  for (const auto& e : fs::directory_iterator(options.cacheDir))
+    if (e.path().extension() == ".npz") fs::remove(e.path());
+  EXPECT_EQ(extractDescriptor(mesh, options, &source), grid.descriptor);
+  EXPECT_EQ(source, DescriptorSource::Computed);
+  EXPECT_EQ(extractDescriptor(mesh, options, &source), grid.descriptor);
+  EXPECT_EQ(source, DescriptorSource::DescriptorCache);
+}
+
+}  // namespace
+}  // namespace sagrid
