@@ -64,12 +64,18 @@ ModelPrediction refineInCrop(const model::AffordanceModel& model, const ModelPre
     if (why) *why = "the crop has no occupied voxel";
     return coarse;
   }
-  ModelPrediction fine = predictionFromField(model, predictField(model, cropFeatures, symmetries),
-                                             cropFeatures, scene, mesh.fileUp, mode, count);
-  // Back to the object's normalized frame: positions through the mesh frame, distances by the
-  // ratio of the two scales.
+  // The card's count settings are lengths in the object's normalized units: the same physical
+  // lengths are longer in the crop's (a burner's neighbour is as far away as before).
   const Normalization& object = objectFeatures.normalization;
   const float distanceScale = object.scale / cropFeatures.normalization.scale;
+  ExtractionSettings settings = model.card().extraction;
+  settings.maxDistance /= distanceScale;
+  settings.nmsRadius /= distanceScale;
+  ModelPrediction fine = predictionFromField(model, predictField(model, cropFeatures, symmetries),
+                                             cropFeatures, scene, mesh.fileUp, mode, count,
+                                             &settings);
+  // Back to the object's normalized frame: positions through the mesh frame, distances by the
+  // ratio of the two scales.
   for (auto& p : fine.points) {
     p.position = cropToObject(p.position, cropFeatures.normalization, object);
     p.distance *= distanceScale;
