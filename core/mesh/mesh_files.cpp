@@ -4,7 +4,10 @@
 #include <cctype>
 #include <set>
 
+#include "core/common/atomic_file.h"
 #include "core/common/error.h"
+#include "core/common/sha256.h"
+#include "core/common/utf8.h"
 #include "core/mesh/mesh_import.h"
 
 namespace sagrid {
@@ -20,6 +23,32 @@ bool supported(const std::filesystem::path& p) {
   return std::find(exts.begin(), exts.end(), lower(p.extension().string())) != exts.end();
 }
 
+// Ids become file and folder names (DIR/<id>/labels.json, <id>.npz) and JSON strings: bytes
+// that are not UTF-8 become '_', and an id longer than kMaxIdLength keeps a prefix plus 8 hex
+// digits of its sha256 (a 300-character id failed with "File name too long").
+std::string usableId(const std::string& raw) {
+  std::string id;
+  for (std::size_t i = 0; i < raw.size();) {
+    std::size_t length = 1;
+    while (length <= 4 && i + length <= raw.size() &&
+           firstInvalidUtf8(std::string_view(raw).substr(i, length)))
+      ++length;
+    if (length > 4 || i + length > raw.size()) {
+      id += '_';
+      ++i;
+    } else {
+      id += raw.substr(i, length);
+      i += length;
+    }
+  }
+  if (id.size() > kMaxIdLength) {
+    std::size_t cut = kMaxIdLength - 9;
+    while (cut > 0 && (static_cast<unsigned char>(id[cut]) & 0xC0) == 0x80) --cut;  // whole chars
+    id = id.substr(0, cut) + "-" + sha256Hex(raw).substr(0, 8);
+  }
+  return id;
+}
+
 // "a/b/mesh.obj" -> "a__b", "a/chair.glb" -> "a__chair" (relative to the listed folder).
 std::string idFor(const std::filesystem::path& relative) {
   std::filesystem::path stemPath = relative.parent_path();
@@ -31,7 +60,7 @@ std::string idFor(const std::filesystem::path& relative) {
     if (!id.empty()) id += "__";
     id += part.string();
   }
-  return id;
+  return usableId(id);
 }
 }  // namespace
 
@@ -39,7 +68,7 @@ std::string objectIdOfFile(const std::filesystem::path& meshFile) {
   const std::string stem = lower(meshFile.stem().string()) == "mesh" && meshFile.has_parent_path()
                                ? meshFile.parent_path().filename().string()
                                : meshFile.stem().string();
-  return stem.empty() ? meshFile.stem().string() : stem;
+  return usableId(stem.empty() ? meshFile.stem().string() : stem);
 }
 
 std::vector<MeshFile> findMeshFiles(const std::filesystem::path& fileOrDir) {
@@ -47,6 +76,7 @@ std::vector<MeshFile> findMeshFiles(const std::filesystem::path& fileOrDir) {
   if (!std::filesystem::exists(fileOrDir, ec))
     throw FileError(fileOrDir, "no such file or directory");
   if (!std::filesystem::is_directory(fileOrDir, ec)) {
+    requireRegularFile(fileOrDir);  // a FIFO or a device is named as such, whatever its name
     if (!supported(fileOrDir)) {
       throw FileError(fileOrDir,
                       "not a supported mesh file (use .obj, .glb, .gltf, .fbx, .dae, "

@@ -9,9 +9,11 @@
 
 namespace sagrid {
 
+inline constexpr std::size_t kMaxIdLength = 120;
+
 struct MeshFile {
   std::filesystem::path path;
-  std::string id;  // unique within one listing
+  std::string id;  // unique within one listing; valid UTF-8, at most kMaxIdLength bytes
 };
 
 // A file gives itself (id from its name, or its folder's name when it is called mesh.<ext>);

@@ -341,17 +341,15 @@ std::size_t removeDegenerateTriangles(Mesh& mesh) {
 // or ends mid-statement: an error, or with --lenient a warning saying how much was read.
 void reportPartialRead(const fs::path& path, const MeshFileFacts& facts, std::size_t triangles,
                        bool lenient) {
-  std::string problem;
+  std::string problem = facts.truncation.empty() ? "" : "it " + facts.truncation;
   if (facts.declaredTriangles && triangles < *facts.declaredTriangles) {
-    problem = "only " + std::to_string(triangles) + " of the " +
-              std::to_string(*facts.declaredTriangles) + " triangles its faces declare could be read";
+    problem += (problem.empty() ? "only " : "; only ") + std::to_string(triangles) + " of the " +
+               std::to_string(*facts.declaredTriangles) + " triangles its faces declare could be read";
   }
-  if (problem.empty() && facts.truncation.empty()) return;
+  if (problem.empty()) return;
   if (!lenient) throw FileError(path, "is incomplete: " + problem + "; --lenient uses what was read");
-  logger()->warn("{}: incomplete file (--lenient): {}", path.string(),
-                 problem.empty() ? "it " + facts.truncation + "; read " +
-                                       std::to_string(triangles) + " triangles"
-                                 : problem);
+  logger()->warn("{}: incomplete file (--lenient): {}; read {} triangles", path.string(), problem,
+                 triangles);
 }
 
 void fillMissingNormals(Mesh& mesh, const std::vector<bool>& missing) {
@@ -389,8 +387,13 @@ Mesh importMesh(const fs::path& path, const ImportOptions& options) {
                               " (truncated?); --lenient reads what is there");
   }
 
+  // With --lenient, a statement cut mid-line is left out: assimp would turn "f 1 2" into a line
+  // primitive and refuse the whole file.
+  const std::string parsed = facts.truncation.empty() || bytes.rfind('\n') == std::string::npos
+                                 ? bytes
+                                 : bytes.substr(0, bytes.rfind('\n') + 1);
   Assimp::Importer importer;
-  importer.SetIOHandler(new ContainedIOSystem(path, bytes));  // the importer owns it
+  importer.SetIOHandler(new ContainedIOSystem(path, parsed));  // the importer owns it
   // Keep the file's own coordinates: SAGrid does the up-axis turn itself (labels are written in
   // the file's frame), so assimp's Collada z-up to y-up rotation must not happen.
   importer.SetPropertyBool(AI_CONFIG_IMPORT_COLLADA_IGNORE_UP_DIRECTION, true);
