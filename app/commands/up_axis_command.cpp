@@ -5,6 +5,7 @@
 #include <iostream>
 
 #include "app/command_registry.h"
+#include "core/common/error.h"
 #include "core/mesh/mesh_import.h"
 #include "core/mesh/up_axis_benchmark.h"
 
@@ -51,6 +52,13 @@ void setupUpAxis(CLI::App& root) {
       return;
     }
     const auto result = sagrid::benchmarkUpAxis(paths, options);
+    if (result.cases.empty() && !result.failures.empty()) {
+      throw sagrid::Error(result.failures.front() +
+                          (result.failures.size() > 1
+                               ? " (and " + std::to_string(result.failures.size() - 1) +
+                                     " more files failed)"
+                               : ""));
+    }
     if (o->json) std::cout << sagrid::upAxisBenchmarkJson(result).dump(2) << "\n";
     else std::cout << sagrid::formatUpAxisBenchmark(result, o->cases);
   });

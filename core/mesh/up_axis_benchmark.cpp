@@ -69,7 +69,8 @@ UpAxisBenchmark benchmarkUpAxis(const std::vector<fs::path>& paths,
         result.cases.push_back({files[i].id, expected, detectUpAxis(file)});
       }
     } catch (const Error& e) {
-      result.failures.push_back(files[i].path.string() + ": " + e.what());
+      const std::string path = files[i].path.string(), what = e.what();
+      result.failures.push_back(what.rfind(path + ": ", 0) == 0 ? what : path + ": " + what);
     }
   }
   if (options.onProgress) options.onProgress(files.size(), files.size(), "");

@@ -4,11 +4,14 @@
 #include <cmath>
 #include <thread>
 
+#include "core/common/atomic_file.h"
 #include "core/common/error.h"
+#include "core/labels/labels.h"
 #include "ui/app/app.h"
 #include "ui/document/review_queue.h"
 
 namespace sagrid::ui {
+namespace fs = std::filesystem;
 
 void parseSize(const std::string& text, int& width, int& height) {
   const auto x = text.find('x');
@@ -25,6 +28,11 @@ void parseSize(const std::string& text, int& width, int& height) {
 }
 
 void renderScreenshot(const RenderOptions& options) {
+  // Bad input is answered before a GL context is made (that takes seconds).
+  const fs::path labelsPath = options.labels.empty() ? labelsPathFor(options.mesh) : fs::path(options.labels);
+  requireRegularFile(options.mesh);
+  std::error_code ec;
+  if (!options.labels.empty() || fs::exists(labelsPath, ec)) readLabels(labelsPath);
   ContextOptions contextOptions;
   contextOptions.width = options.width;
   contextOptions.height = options.height;
@@ -36,8 +44,8 @@ void renderScreenshot(const RenderOptions& options) {
   App app(*context, appOptions);
   Session& session = app.session();
   session.readOnly = true;  // a render never changes the object's labels.json
-  session.openObject(options.mesh,
-                     options.labels.empty() ? labelsPathFor(options.mesh) : options.labels);
+  session.logErrors = false;  // thrown below; main prints it once
+  session.openObject(options.mesh, labelsPath);
   if (!session.pendingErrors().empty()) throw Error(session.pendingErrors().front());
   if (!options.modelsDir.empty()) {
     session.runPrediction();

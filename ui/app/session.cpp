@@ -19,7 +19,7 @@ namespace fs = std::filesystem;
 Session::Session(fs::path recentFilesPath) : m_recent(std::move(recentFilesPath)) {}
 
 void Session::reportError(const std::string& message) {
-  logger()->error("{}", message);
+  if (logErrors) logger()->error("{}", message);
   m_errors.push_back(message);
 }
 

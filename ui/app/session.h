@@ -103,6 +103,7 @@ class Session {
   bool screenshotRequested = false;  // F12: the app saves the next frame to a PNG
   std::filesystem::path trainingSetDir;
   bool readOnly = false;  // documents never write labels.json (previews, sagrid render)
+  bool logErrors = true;  // false: errors only queue (sagrid render prints the one line itself)
 
   void reportError(const std::string& message);
   const std::vector<std::string>& pendingErrors() const { return m_errors; }

@@ -1,6 +1,7 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 #include "ui/app/session.h"
@@ -22,14 +23,17 @@ void drawFieldPanel(Session& session, const SceneRenderer& scene) {
   char format[16];
   std::snprintf(format, sizeof format, "%%.3f %s", doc->lengthUnit());
   const float largest = std::max(scene.field().largestDistance(), 1e-6f);
-  // Sliders work in metres (what the curator thinks in); the renderer gets mesh units.
-  float thresholdM = (f.threshold > 0 ? f.threshold : largest) * mpu;
+  // Sliders work in metres (what the curator thinks in); the renderer gets mesh units. ImGui
+  // asserts on slider bounds beyond FLT_MAX / 2, so the top is kept finite and sane even for
+  // labels built in code (files are validated on reading).
+  const float top = std::isfinite(largest * mpu) ? std::clamp(largest * mpu, 2e-4f, 1e9f) : 1.0f;
+  float thresholdM = std::min((f.threshold > 0 ? f.threshold : largest) * mpu, top);
   ImGui::SetNextItemWidth(-90);
-  if (ImGui::SliderFloat("closer than", &thresholdM, 0.0f, largest * mpu, format))
+  if (ImGui::SliderFloat("closer than", &thresholdM, 0.0f, top, format))
     f.threshold = thresholdM / mpu;
-  float colorM = (f.colorMax > 0 ? f.colorMax : largest) * mpu;
+  float colorM = std::min((f.colorMax > 0 ? f.colorMax : largest) * mpu, top);
   ImGui::SetNextItemWidth(-90);
-  if (ImGui::SliderFloat("colour max", &colorM, 1e-4f, largest * mpu, format))
+  if (ImGui::SliderFloat("colour max", &colorM, 1e-4f, top, format))
     f.colorMax = colorM / mpu;
   ImGui::SetNextItemWidth(-90);
   ImGui::SliderFloat("opacity", &f.opacity, 0.05f, 1.0f, "%.2f");

@@ -23,6 +23,11 @@ void pointLabels(const Session& session, ImDrawList* draw) {
   for (int i = 0; i < static_cast<int>(doc->points().size()); ++i) {
     Eigen::Vector2f pixel;
     if (!session.camera().project(doc->pointInView(i), pixel)) continue;
+    // Far off screen: nothing to draw, and ImGui's text clipping misbehaves at huge coordinates.
+    const float margin = 4096.0f;
+    if (pixel.x() < -margin || pixel.y() < -margin || pixel.x() > vp.width + margin ||
+        pixel.y() > vp.height + margin)
+      continue;
     const ImVec2 at(vp.x + pixel.x(), vp.y + pixel.y());
     const AffordancePoint& p = doc->points()[std::size_t(i)];
     if (doc->selected() == i)

@@ -94,10 +94,10 @@ Ray Camera::rayThrough(float x, float y) const {
 
 bool Camera::project(const Eigen::Vector3f& point, Eigen::Vector2f& pixel) const {
   const Eigen::Vector4f clip = viewProjection() * point.homogeneous();
-  if (clip.w() <= 1e-8f) return false;
+  if (!(clip.w() > 1e-8f)) return false;  // behind the eye, or NaN
   const Eigen::Vector3f ndc = clip.head<3>() / clip.w();
   pixel = {(ndc.x() + 1.0f) * 0.5f * float(m_width), (1.0f - ndc.y()) * 0.5f * float(m_height)};
-  return true;
+  return pixel.allFinite();
 }
 
 float Camera::worldPerPixelAt(const Eigen::Vector3f& point) const {

@@ -1,0 +1,95 @@
+// Issue 14: every importing subcommand answers each damaged mesh of the bad-input corpus with
+// exit 1 and a line naming the file and the problem, in seconds; before, these crashed
+// (stack overflow, abort), hung (FIFO, binary PLY cut in its header), took gigabytes, or exited 0.
+// `timeout` turns a hang into a failure instead of a stuck test run.
+#include <sys/stat.h>
+
+#include <fstream>
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include "support/test_paths.h"
+
+namespace sagrid {
+namespace {
+namespace fs = std::filesystem;
+using ::testing::HasSubstr;
+using test::shellQuote;
+
+const fs::path kBad = fs::path(SAGRID_TEST_DATA_DIR) / "bad";
+
+struct BadMesh {
+  fs::path path;
+  std::string problem;  // a fragment of the message
+};
+
+// The damaged meshes: the small ones from tests/data/bad, the big or special ones made here.
+std::vector<BadMesh> badMeshes(const fs::path& dir) {
+  std::string deep = "{\"asset\":{\"version\":\"2.0\"},\"nodes\":[";
+  for (int i = 0; i < 20000; ++i) deep += "{\"children\":[" + std::to_string(i + 1) + "]},";
+  deep += "{}]}";
+  std::ofstream(dir / "deep.gltf") << deep;
+  ::mkfifo((dir / "fifo.obj").c_str(), 0600);
+  return {{kBad / "ascii_truncated_half.ply", "(truncated?)"},
+          {kBad / "binary_cut_in_header.ply", "no end_header"},
+          {kBad / "claims_10m_vertices.ply", "declares 10000000 vertex elements"},
+          {kBad / "obj_text_named.glb", "holds OBJ text but is named .glb"},
+          {kBad / "glb_chunk_length_2_2gb.glb", "more than the file holds"},
+          {kBad / "coordinates_1e30.obj", "coordinates must be within"},
+          {dir / "deep.gltf", "nests its glTF nodes more than 256 levels deep"},
+          {dir / "fifo.obj", "is a FIFO"},
+          {"/dev/zero", "is a device, not a regular file"}};
+}
+
+// Runs `sagrid <command with {} replaced by the mesh>` and checks the answer.
+void expectClearError(const std::string& command, const BadMesh& bad) {
+  std::string line = command;
+  line.replace(line.find("{}"), 2, shellQuote(bad.path.string()));
+  const auto r = test::runCommand("timeout 60 " + shellQuote(test::sagridBinary().string()) + " " + line);
+  EXPECT_EQ(r.exitCode, 1) << line << "\n" << r.output;
+  EXPECT_THAT(r.output, HasSubstr(bad.path.string() + ": ")) << line;
+  EXPECT_THAT(r.output, HasSubstr(bad.problem)) << line;
+  EXPECT_THAT(r.output, ::testing::Not(HasSubstr("internal error"))) << line;
+}
+
+TEST(HostileInputCliSlow, EveryImportingCommandAnswersEveryDamagedMesh) {
+  const fs::path dir = test::freshTempDir();
+  const std::string out = shellQuote((dir / "out").string());
+  const std::string models = shellQuote((fs::path(SAGRID_SOURCE_DIR) / "resources" / "models").string());
+  for (const BadMesh& bad : badMeshes(dir)) {
+    expectClearError("info {}", bad);
+    expectClearError("voxelize {} --out " + shellQuote((dir / "v.npz").string()), bad);
+    expectClearError("extract {} --out " + out, bad);
+    expectClearError("up-axis {}", bad);
+    expectClearError("annotate {} --symmetries 1 --models " + models + " --out " + out, bad);
+  }
+}
+
+// Only the one error line: no duplicate from the log, nothing else.
+TEST(HostileInputCli, InfoSaysItOnOneLine) {
+  const fs::path dir = test::freshTempDir();
+  for (const BadMesh& bad : badMeshes(dir)) {
+    const auto r = test::runSagrid("info " + shellQuote(bad.path.string()));
+    EXPECT_EQ(r.output.rfind("sagrid: error: " + bad.path.string() + ": ", 0), 0u) << r.output;
+    EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
+  }
+}
+
+// --lenient is a global option and may follow the subcommand.
+TEST(HostileInputCli, LenientReadsATruncatedObjWithAWarning) {
+  const fs::path dir = test::freshTempDir();
+  std::ofstream(dir / "cut.obj") << "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nf 1 2 3\nf 2 4 3\nf 1 2";
+  const std::string mesh = shellQuote((dir / "cut.obj").string());
+  auto r = test::runSagrid("info " + mesh);
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_THAT(r.output, HasSubstr("is incomplete: it ends in the middle of a line"));
+  r = test::runSagrid("info --lenient " + mesh);
+  EXPECT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("incomplete file (--lenient): it ends in the middle of a line; "
+                                  "read 2 triangles"));
+  EXPECT_EQ(test::runSagrid("--lenient info " + mesh).exitCode, 0);
+}
+
+}  // namespace
+}  // namespace sagrid
