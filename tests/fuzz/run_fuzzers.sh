@@ -17,8 +17,8 @@ targets=("$@")
 seeds="$build/fuzz-seeds"
 "$build/fuzz/make_fuzz_seeds" "$seeds" "$source_dir" "$source_dir/../shared" > /dev/null
 
-# ASan/UBSan stop at the first report; leaks in uninstrumented libraries (libtorch, assimp) are
-# not ours to fix, so leak detection is off.
+# ASan/UBSan stop at the first report. Leak checks are left to `make test-asan` (libFuzzer's
+# per-input leak check slows the runs).
 export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=0:allocator_may_return_null=0}
 export UBSAN_OPTIONS=${UBSAN_OPTIONS:-halt_on_error=1:print_stacktrace=1}
 
@@ -41,7 +41,7 @@ fuzz_for() {
     echo "=== run $run" >> "$build/fuzz-logs/$t.log"
     # -timeout: an input taking longer than 10 s is a hang (the issue asks for answers within
     # seconds); -rss_limit_mb / -malloc_limit_mb: a blow-up past 2 GiB is a finding.
-    nice -n 15 "$build/fuzz/$t" -max_total_time=$((end - SECONDS)) -timeout=10 \
+    nice -n 19 "$build/fuzz/$t" -max_total_time=$((end - SECONDS)) -timeout=10 \
       -rss_limit_mb=2048 -malloc_limit_mb=2048 -max_len=262144 -use_value_profile=1 \
       -print_final_stats=1 -print_pcs=0 -artifact_prefix="$build/fuzz-findings/$t/" \
       "$build/fuzz-corpus/$t" "$(seed_dir "$t")" >> "$build/fuzz-logs/$t.log" 2>&1
