@@ -3,6 +3,9 @@
 #include <unistd.h>
 
 #include <atomic>
+#include <cerrno>
+#include <csignal>
+#include <cstdlib>
 #include <string>
 #include <system_error>
 
@@ -18,11 +21,34 @@ fs::path hiddenSibling(const fs::path& target, const char* kind) {
   return target.parent_path() / ("." + target.filename().string() + "." + kind + "-" +
                                  std::to_string(::getpid()) + "-" + std::to_string(counter++));
 }
+// Removes staging and replaced folders of `target` left by runs that were killed (their process
+// is gone), so a rerun leaves no debris. Folders of runs still alive are left alone.
+void removeStaleSiblings(const fs::path& target) {
+  std::error_code ec;
+  const std::string name = "." + target.filename().string() + ".";
+  for (const auto& item : fs::directory_iterator(target.parent_path(), ec)) {
+    const std::string entry = item.path().filename().string();
+    if (entry.rfind(name, 0) != 0) continue;
+    const std::string rest = entry.substr(name.size());  // partial-<pid>-<n> or previous-<pid>-<n>
+    const std::size_t dash = rest.find('-');
+    if (dash == std::string::npos ||
+        (rest.compare(0, dash, "partial") != 0 && rest.compare(0, dash, "previous") != 0))
+      continue;
+    const long pid = std::strtol(rest.c_str() + dash + 1, nullptr, 10);
+    if (pid <= 0 || pid == ::getpid()) continue;
+    if (::kill(static_cast<pid_t>(pid), 0) == -1 && errno == ESRCH) {
+      std::error_code ignored;
+      fs::remove_all(item.path(), ignored);
+    }
+  }
+}
+
 }  // namespace
 
 StagedFolder::StagedFolder(fs::path target)
     : m_target(std::move(target)), m_staging(hiddenSibling(m_target, "partial")) {
   std::error_code ec;
+  if (fs::is_directory(m_target.parent_path(), ec)) removeStaleSiblings(m_target);
   fs::create_directories(m_staging, ec);
   if (ec) throw FileError(m_target.parent_path(), "cannot create a folder here: " + ec.message());
 }

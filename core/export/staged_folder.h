@@ -1,6 +1,7 @@
 // An export folder that appears whole or not at all: files are written into a hidden sibling
 // (".<name>.partial-<pid>-<n>") and the folder is renamed onto its final name at the end, so an
-// error, a crash or kill -9 never leaves a half-written object folder under its real name.
+// error, a crash or kill -9 never leaves a half-written object folder under its real name; the
+// hidden leftovers of a killed run are removed by the next export of the same object.
 #pragma once
 
 #include <filesystem>

@@ -137,6 +137,34 @@ TEST(ExportBadInput, FailedReexportKeepsThePreviousExportWhole) {
   EXPECT_EQ(readFileBytes(first[0].mainFile), xml);
 }
 
+// kill -9 in the middle of an export leaves only a hidden staging folder; the next export of the
+// same object removes it (its process is gone) and leaves no debris.
+TEST(ExportBadInput, RerunRemovesTheLeftoversOfAKilledExport) {
+  const auto dir = test::freshTempDir();
+  const auto labels = test::writeAnalyticStove(dir / "in");
+  const fs::path stale = dir / "out" / ".my_stove_01.partial-2147483647-0";  // no such process
+  fs::create_directories(stale / "meshes");
+  std::ofstream(stale / "meshes" / "visual_0.stl") << "half";
+  const auto results = exportObjects(labels, "mjcf", dir / "out", fast());
+  EXPECT_FALSE(fs::exists(stale));
+  std::vector<fs::path> top;
+  for (const auto& item : fs::directory_iterator(dir / "out")) top.push_back(item.path());
+  EXPECT_EQ(top, std::vector<fs::path>{results[0].root});
+}
+
+// Numbers in labels that overflow or are absurd never reach a file: an error names labels.json.
+TEST(ExportBadInput, OverflowingLabelNumbersNameTheLabelsFile) {
+  const auto dir = test::freshTempDir();
+  int i = 0;
+  for (const json position : {json({1e39, 0, 0}), json({-1e308, 0, 0}), json({0, 1e300, 0})}) {
+    const auto labels = stoveWith(dir / ("in" + std::to_string(i++)),
+                                  [&](json& j) { j["affordances"][0]["position"] = position; });
+    for (const char* format : {"mjcf", "omnigibson"})
+      expectFileError([&] { exportObjects(labels, format, dir / "out", fast()); }, labels, "");
+  }
+  EXPECT_TRUE(entriesUnder(dir / "out").empty());
+}
+
 // Open, non-manifold and zero-volume meshes export with valid output (and warnings).
 TEST(ExportBadInput, OpenNonManifoldAndFlatMeshesGiveValidOutput) {
   Mesh open = test::box({0, 0, 0}, {0.4f, 0.4f, 0.2f});

@@ -172,6 +172,20 @@ TEST(MujocoExport, SphereStaysInSinkBasin) {
   EXPECT_TRUE(sink.mesh.bounds().contains(rest.position));
 }
 
+// An id holding markup characters still gives well-formed MJCF (issue 14): MuJoCo parses it and
+// the model keeps the name.
+TEST(MujocoExport, MarkupInTheIdStaysWellFormed) {
+  const auto dir = test::freshTempDir();
+  const fs::path labelsPath = test::writeAnalyticStove(dir / "in", "<x a=\"1\">&'y");
+  ExportOptions options;
+  options.collision = CollisionMode::None;
+  const auto exported =
+      exportMjcf(readLabels(labelsPath), dir / "in" / "mesh.obj", dir / "out", options);
+  const ModelPtr model = loadModel(exported.mainFile);
+  ASSERT_TRUE(model);
+  EXPECT_STREQ(model->names, "<x a=\"1\">&'y");  // MuJoCo keeps the model name first
+}
+
 TEST(MujocoExport, FlatMeshLoadsAsVisualOnly) {
   const auto dir = test::freshTempDir();
   const fs::path labelsPath = test::writeLabelledObject(
