@@ -12,11 +12,13 @@
 #include "core/annotate/run_manifest.h"
 #include "core/generate/dataset_generator.h"
 #include "core/labels/labels.h"
+#include "support/same_labels.h"
 #include "support/test_paths.h"
 
 namespace sagrid {
 namespace {
 namespace fs = std::filesystem;
+using test::expectSameLabels;
 using test::runCommand;
 using test::runSagrid;
 using test::shellQuote;
@@ -41,16 +43,6 @@ std::map<std::string, std::string> lastStatuses(const fs::path& out) {
   for (const auto& [id, line] : latestByObject(readManifest(out / kRunManifestFile)))
     statuses[id] = line.at("status");
   return statuses;
-}
-
-void expectSameLabels(const fs::path& a, const fs::path& b) {
-  const ObjectLabels la = readLabels(a), lb = readLabels(b);
-  EXPECT_EQ(la.object.category, lb.object.category) << a;
-  ASSERT_EQ(la.affordances.size(), lb.affordances.size()) << a;
-  for (std::size_t i = 0; i < la.affordances.size(); ++i) {
-    EXPECT_EQ(la.affordances[i].type, lb.affordances[i].type);
-    EXPECT_LT((la.affordances[i].position - lb.affordances[i].position).norm(), 1e-5) << a;
-  }
 }
 
 TEST(AnnotateBatchCli, ShardSpecsOutsideTheArrayAreRejectedBeforeAnyWork) {

@@ -15,11 +15,13 @@
 #include "core/annotate/run_manifest.h"
 #include "core/generate/dataset_generator.h"
 #include "core/labels/labels.h"
+#include "support/same_labels.h"
 #include "support/test_paths.h"
 
 namespace sagrid {
 namespace {
 namespace fs = std::filesystem;
+using test::expectSameLabels;
 using test::runCommand;
 using test::shellQuote;
 using ::testing::HasSubstr;
@@ -74,14 +76,6 @@ class SlurmClusterSlow : public ::testing::Test {
 
 std::map<std::string, nlohmann::json> latest(const fs::path& out) {
   return latestByObject(readManifest(out / kRunManifestFile));
-}
-
-void expectSameLabels(const fs::path& a, const fs::path& b) {
-  const ObjectLabels la = readLabels(a), lb = readLabels(b);
-  EXPECT_EQ(la.object.category, lb.object.category) << a;
-  ASSERT_EQ(la.affordances.size(), lb.affordances.size()) << a;
-  for (std::size_t i = 0; i < la.affordances.size(); ++i)
-    EXPECT_LT((la.affordances[i].position - lb.affordances[i].position).norm(), 1e-5) << a;
 }
 
 TEST_F(SlurmClusterSlow, ArrayJobEqualsOneProcessAndAResubmissionCompletesOnlyWhatWasKilled) {
