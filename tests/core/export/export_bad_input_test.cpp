@@ -14,6 +14,7 @@
 #include "core/export/omnigibson_model_name.h"
 #include "core/export/stl_file.h"
 #include "support/analytic_meshes.h"
+#include "support/folder_listing.h"
 #include "support/labelled_objects.h"
 #include "support/test_paths.h"
 
@@ -27,16 +28,6 @@ ExportOptions fast() {
   ExportOptions options;
   options.collision = CollisionMode::Hull;
   return options;
-}
-
-// Every entry under `dir`, recursively (hidden ones too).
-std::vector<fs::path> entriesUnder(const fs::path& dir) {
-  std::vector<fs::path> found;
-  std::error_code ec;
-  for (auto it = fs::recursive_directory_iterator(dir, ec);
-       it != fs::recursive_directory_iterator(); it.increment(ec))
-    found.push_back(it->path());
-  return found;
 }
 
 void expectFileError(const std::function<void()>& run, const fs::path& file,
@@ -71,7 +62,7 @@ TEST(ExportBadInput, MetersPerUnitOutsideSaneRangeNamesTheFile) {
                       "meters_per_unit");
     }
   }
-  EXPECT_TRUE(entriesUnder(dir / "out").empty());
+  EXPECT_TRUE(test::entriesBelow(dir / "out").empty());
 }
 
 TEST(ExportBadInput, UnknownUnitsWarnThatMetresAreAssumed) {
@@ -111,7 +102,7 @@ TEST(ExportBadInput, PositionsAndMassMustBeUsableNumbers) {
     expectFileError([&] { exportObjects(labelsPath, "mjcf", dir / "out", fast()); }, labelsPath,
                     "mass_kg");
   }
-  EXPECT_TRUE(entriesUnder(dir / "out").empty());
+  EXPECT_TRUE(test::entriesBelow(dir / "out").empty());
 }
 
 TEST(ExportBadInput, MeshesTheImporterRefusesLeaveNothing) {
@@ -122,18 +113,18 @@ TEST(ExportBadInput, MeshesTheImporterRefusesLeaveNothing) {
     expectFileError([&] { exportObjects(labels, format, dir / "out", fast()); },
                     dir / "in" / "mesh.obj", "");
   }
-  EXPECT_TRUE(entriesUnder(dir / "out").empty());
+  EXPECT_TRUE(test::entriesBelow(dir / "out").empty());
 }
 
 TEST(ExportBadInput, FailedReexportKeepsThePreviousExportWhole) {
   const auto dir = test::freshTempDir();
   const auto labels = test::writeAnalyticStove(dir / "in");
   const auto first = exportObjects(labels, "mjcf", dir / "out", fast());
-  const auto before = entriesUnder(dir / "out");
+  const auto before = test::entriesBelow(dir / "out");
   const std::string xml = readFileBytes(first[0].mainFile);
   stoveWith(dir / "in", [](json& j) { j["object"]["meters_per_unit"] = -1; });
   EXPECT_THROW(exportObjects(labels, "mjcf", dir / "out", fast()), FileError);
-  EXPECT_EQ(entriesUnder(dir / "out"), before);  // no .partial folder, nothing replaced
+  EXPECT_EQ(test::entriesBelow(dir / "out"), before);  // no .partial folder, nothing replaced
   EXPECT_EQ(readFileBytes(first[0].mainFile), xml);
 }
 
@@ -162,7 +153,7 @@ TEST(ExportBadInput, OverflowingLabelNumbersNameTheLabelsFile) {
     for (const char* format : {"mjcf", "omnigibson"})
       expectFileError([&] { exportObjects(labels, format, dir / "out", fast()); }, labels, "");
   }
-  EXPECT_TRUE(entriesUnder(dir / "out").empty());
+  EXPECT_TRUE(test::entriesBelow(dir / "out").empty());
 }
 
 // Open, non-manifold and zero-volume meshes export with valid output (and warnings).
@@ -194,7 +185,7 @@ TEST(ExportBadInput, OpenNonManifoldAndFlatMeshesGiveValidOutput) {
       EXPECT_GT(results[0].massKg, 0.0);
       EXPECT_GE(results[0].collisionParts, 1);
       EXPECT_EQ(results[0].visualTriangles, static_cast<int>(mesh->triangles.size()));
-      for (const auto& file : entriesUnder(results[0].root)) {
+      for (const auto& file : test::entriesBelow(results[0].root)) {
         if (!fs::is_regular_file(file) || file.extension() == ".stl") continue;
         const std::string text = readFileBytes(file);
         for (const char* bad : {"nan", "inf", "null"})

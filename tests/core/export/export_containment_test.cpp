@@ -15,6 +15,7 @@
 #include "core/export/mjcf_export.h"
 #include "core/export/omnigibson_export.h"
 #include "core/export/training_set.h"
+#include "support/folder_listing.h"
 #include "support/labelled_objects.h"
 #include "support/test_paths.h"
 
@@ -25,19 +26,10 @@ namespace fs = std::filesystem;
 using nlohmann::json;
 using namespace std::string_literals;
 
-std::set<fs::path> filesUnder(const fs::path& dir) {
-  std::set<fs::path> found;
-  std::error_code ec;
-  for (auto it = fs::recursive_directory_iterator(dir, ec);
-       it != fs::recursive_directory_iterator(); it.increment(ec))
-    found.insert(it->path());
-  return found;
-}
-
 // Every entry under `root` that was not there `before` lies under `out`.
 void expectNewEntriesOnlyUnder(const fs::path& root, const std::set<fs::path>& before,
                                const fs::path& out) {
-  for (const auto& path : filesUnder(root)) {
+  for (const auto& path : test::entriesBelow(root)) {
     if (before.count(path)) continue;
     const auto rel = path.lexically_relative(out);
     EXPECT_FALSE(rel.empty() || *rel.begin() == "..") << "written outside " << out << ": " << path;
@@ -62,7 +54,7 @@ std::vector<std::string> hostileNames() {
 TEST(ExportContainment, HostileIdsNeverLeaveTheOutputFolder) {
   const auto root = test::freshTempDir();
   const auto labelsPath = test::writeAnalyticStove(root / "in");
-  const auto before = filesUnder(root);
+  const auto before = test::entriesBelow(root);
   ExportOptions options;
   options.collision = CollisionMode::None;
   ExportNames names;  // one run: ids that map to the same file name still get their own folder
@@ -89,7 +81,7 @@ TEST(ExportContainment, HostileIdsNeverLeaveTheOutputFolder) {
   expectNewEntriesOnlyUnder(root, before, root / "out");
   // The markup id is escaped in the MJCF: <mujoco model="&lt;x&gt;&quot;&amp;&apos;y">.
   bool escaped = false;
-  for (const auto& path : filesUnder(root / "out"))
+  for (const auto& path : test::entriesBelow(root / "out"))
     if (path.extension() == ".xml" &&
         readFileBytes(path).find("model=\"&lt;x&gt;&quot;&amp;&apos;y\"") != std::string::npos)
       escaped = true;
@@ -120,7 +112,7 @@ TEST(ExportContainment, ObjectMeshOutsideTheObjectFolderIsRefused) {
       }
     }
   }
-  EXPECT_TRUE(filesUnder(root / "out").empty());
+  EXPECT_TRUE(test::entriesBelow(root / "out").empty());
 }
 
 // An OBJ naming an MTL outside its folder, or an MTL naming a texture outside, is refused by the
@@ -138,7 +130,7 @@ TEST(ExportContainment, MtllibAndTexturesOutsideTheObjectFolderAreRefused) {
       {"mtllib " + (root / "secret" / "evil.mtl").string() + "\n", ""},
       {"mtllib mesh.mtl\n", "newmtl body\nKd 1 1 1\nmap_Kd ../secret/secret.png\n"},
       {"mtllib mesh.mtl\n", "newmtl body\nmap_Kd -s 1 1 1 /etc/hostname\n"}};
-  const auto before = filesUnder(root);
+  const auto before = test::entriesBelow(root);
   for (const auto& [mtllib, mtl] : cases) {
     SCOPED_TRACE(mtllib + mtl);
     writeFileAtomic(root / "obj" / "mesh.obj", mtllib + body);
@@ -149,7 +141,7 @@ TEST(ExportContainment, MtllibAndTexturesOutsideTheObjectFolderAreRefused) {
                                   root / "set"),
                  FileError);
   }
-  for (const auto& path : filesUnder(root)) {
+  for (const auto& path : test::entriesBelow(root)) {
     if (before.count(path) || path.parent_path() == root / "obj") continue;
     ADD_FAILURE() << "written: " << path;
   }
@@ -158,7 +150,7 @@ TEST(ExportContainment, MtllibAndTexturesOutsideTheObjectFolderAreRefused) {
 TEST(ExportContainment, TrainingSetIdsStayInsideTheDataset) {
   const auto root = test::freshTempDir();
   const auto labelsPath = test::writeAnalyticStove(root / "obj");
-  const auto before = filesUnder(root);
+  const auto before = test::entriesBelow(root);
   for (const auto& id : hostileNames()) {
     ObjectLabels labels = readLabels(labelsPath);
     labels.object.id = id;
