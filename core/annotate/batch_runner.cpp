@@ -46,7 +46,8 @@ void workerBody(const std::vector<MeshFile>& files, std::size_t first, std::size
     } catch (const std::exception& e) {
       result = {{"status", batch_status::kFailed}, {"error", e.what()}};
     }
-    report("done " + std::to_string(i) + " " + result.dump());
+    report("done " + std::to_string(i) + " " +
+           result.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace));  // non-UTF-8 paths
   }
 }
 

@@ -14,7 +14,9 @@
 namespace sagrid {
 
 void appendManifestLine(const std::filesystem::path& manifest, const nlohmann::json& line) {
-  const std::string bytes = line.dump() + "\n";
+  // Non-UTF-8 file names must not make the write throw (issue 14): such bytes become U+FFFD.
+  const std::string bytes =
+      line.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
   const int fd = ::open(manifest.c_str(), O_WRONLY | O_APPEND | O_CREAT | O_CLOEXEC, 0644);
   if (fd < 0)
     throw FileError(manifest, std::string("cannot open run manifest: ") + std::strerror(errno));

@@ -64,7 +64,8 @@ void writeFeatureNpz(const std::filesystem::path& path, const FeatureGrid& grid,
   meta["resolution"] = grid.resolution;
   meta["channels"] = grid.channels;
   meta["checksum"] = featureChecksum(grid);
-  const std::string metaText = meta.dump();
+  // Paths from non-UTF-8 file names must not make the write throw (bytes become U+FFFD).
+  const std::string metaText = meta.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
   NpzArchive npz;
   npz["coords"] = NpyArray::from(coordsOf(grid), {grid.voxels.size(), 3});
   npz["feats"] =

@@ -91,5 +91,24 @@ TEST(HostileInputCli, LenientReadsATruncatedObjWithAWarning) {
   EXPECT_EQ(test::runSagrid("--lenient info " + mesh).exitCode, 0);
 }
 
+// A Latin-1 folder name (not UTF-8) made extract and annotate stop with "internal error" (the
+// path could not be written as JSON); now the id is "caf_" and the run completes.
+TEST(HostileInputCli, NonUtf8FileNamesWork) {
+  const fs::path dir = test::freshTempDir();
+  const fs::path object = dir / "in" / "caf\xE9";
+  fs::create_directories(object);
+  const fs::path sample = fs::path(SAGRID_SOURCE_DIR) / "resources" / "samples" / "stove_s42_00001";
+  for (const char* name : {"mesh.obj", "mesh.mtl"}) fs::copy_file(sample / name, object / name);
+  const std::string in = shellQuote((dir / "in").string());
+  auto r = test::runSagrid("extract " + in + " --out " + shellQuote((dir / "features").string()));
+  EXPECT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_TRUE(fs::exists(dir / "features" / "caf_.npz"));
+  r = test::runSagrid("annotate " + in + " --symmetries 1 --models " +
+                      shellQuote((fs::path(SAGRID_SOURCE_DIR) / "resources" / "models").string()) +
+                      " --out " + shellQuote((dir / "labels").string()));
+  EXPECT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_TRUE(fs::exists(dir / "labels" / "caf_" / "labels.json"));
+}
+
 }  // namespace
 }  // namespace sagrid
