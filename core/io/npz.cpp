@@ -158,8 +158,20 @@ NpyArray parseNpy(std::string_view bytes, const fs::path& source) {
   NpyArray array;
   array.dtype = info->name;
   array.shape = parseShape(headerValue(header, "shape", source), source);
-  const std::size_t expected = array.elementCount() * info->size;
   const std::size_t available = bytes.size() - headerStart - headerLength;
+  // The product of the dimensions, checked against the bytes there before it can wrap around
+  // (a shape of (2^40, 2^40) would otherwise claim a few bytes and allocate everything later).
+  std::size_t elements = 1;
+  for (std::size_t dim : array.shape) {
+    if (dim != 0 && elements > available / dim) {
+      bool empty = false;
+      for (std::size_t d : array.shape) empty |= d == 0;
+      if (empty) break;
+      throw FileError(source, "npy shape claims more elements than the file holds (truncated?)");
+    }
+    elements *= dim;
+  }
+  const std::size_t expected = array.elementCount() * info->size;
   if (available < expected) {
     throw FileError(source, "npy data is truncated (" + std::to_string(available) + " of " +
                                 std::to_string(expected) + " bytes)");

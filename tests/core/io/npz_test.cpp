@@ -155,4 +155,23 @@ TEST(NpzErrors, WriteIsAtomicAndValidatesShape) {
 }
 
 }  // namespace
+// Issue 14: dimensions whose product wraps around 2^64 claimed a few bytes, then allocated
+// everything when the array was used.
+TEST(NpzErrors, ShapeProductIsCheckedBeforeItWraps) {
+  std::string header = "{'descr': '<f4', 'fortran_order': False, 'shape': (4294967296, 4294967296, 16), }";
+  header += std::string(63 - (10 + header.size()) % 64, ' ') + "\n";
+  std::string bytes("\x93NUMPY\x01\x00", 8);
+  bytes += static_cast<char>(header.size() & 0xFF);
+  bytes += static_cast<char>(header.size() >> 8);
+  bytes += header + std::string(64, '\0');
+  try {
+    parseNpy(bytes, "wrap.npy");
+    FAIL() << "accepted";
+  } catch (const FileError& e) {
+    EXPECT_NE(std::string(e.what()).find("npy shape claims more elements than the file holds"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
 }  // namespace sagrid
