@@ -1,6 +1,7 @@
 #include "core/export/simulator_geometry.h"
 
 #include <algorithm>
+#include <system_error>
 
 #include "core/common/error.h"
 #include "core/export/export_frame.h"
@@ -57,6 +58,10 @@ SimulatorGeometry buildSimulatorGeometry(const ObjectLabels& labels, const fs::p
   if (options.progress) options.progress(0.0f, "importing");
   const auto up = parseUpAxis(labels.object.up);
   if (!up) throw FileError(shownLabels, "object.up '" + labels.object.up + "' is not an axis");
+  // Only regular files are opened: a FIFO or device would block or never end.
+  std::error_code ec;
+  if (fs::exists(meshPath, ec) && !fs::is_regular_file(meshPath, ec))
+    throw FileError(meshPath, "is not a regular file (a folder, FIFO or device?)");
   // Data never chooses what is read: the files an OBJ names must lie in its own folder.
   containedMeshReferences(meshPath);
   geometry.mesh = importMesh(meshPath, ImportOptions(*up));

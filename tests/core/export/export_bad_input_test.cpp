@@ -2,6 +2,7 @@
 // one clear error naming the file and field, or a warning with valid output; never a
 // half-written folder, never inf/nan/null in a file.
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -114,6 +115,15 @@ TEST(ExportBadInput, MeshesTheImporterRefusesLeaveNothing) {
                     dir / "in" / "mesh.obj", "");
   }
   EXPECT_TRUE(test::entriesBelow(dir / "out").empty());
+}
+
+TEST(ExportBadInput, AFifoAsMeshIsRefusedWithoutBlocking) {
+  const auto dir = test::freshTempDir();
+  const auto labels = test::writeAnalyticStove(dir / "in");
+  fs::remove(dir / "in" / "mesh.obj");
+  if (::mkfifo((dir / "in" / "mesh.obj").c_str(), 0600) != 0) GTEST_SKIP() << "no FIFOs here";
+  expectFileError([&] { exportObjects(labels, "mjcf", dir / "out", fast()); },
+                  dir / "in" / "mesh.obj", "not a regular file");
 }
 
 TEST(ExportBadInput, FailedReexportKeepsThePreviousExportWhole) {
