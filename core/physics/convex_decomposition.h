@@ -31,7 +31,7 @@ using DecompositionProgress = std::function<void(float fraction, const std::stri
 struct DecompositionOptions {
   int maxParts = 32;
   // Voxels along the mesh's largest extent. Time and memory grow with its cube.
-  int resolution = 96;
+  int resolution = 64;
   // Stop cutting a part when its concavity is below this fraction of the largest extent.
   float concavityTolerance = 0.01f;
   // Vertices per hull (MuJoCo and V-HACD use 64-ish; 0 = unlimited).

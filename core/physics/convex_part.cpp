@@ -132,14 +132,42 @@ bool ConvexPart::contains(const Eigen::Vector3f& p, float tolerance) const {
   return !triangles.empty();
 }
 
+namespace {
+
+std::optional<ConvexPart> hullOf(const std::vector<Eigen::Vector3f>& points, int maxVertices,
+                                 bool joggle) {
+  std::vector<double> coords;
+  coords.reserve(points.size() * 3);
+  for (const auto& p : points) coords.insert(coords.end(), {p.x(), p.y(), p.z()});
+  // "Qt": triangulated output. "TA<n>": stop after n points added to the initial simplex; Qhull
+  // adds the farthest point first, so the result is the greedy best hull of that many vertices.
+  std::string options = "Qt";
+  if (maxVertices >= 4 && static_cast<int>(points.size()) > maxVertices)
+    options += " TA" + std::to_string(maxVertices - 4);
+  std::optional<ConvexPart> part = runQhull(coords, options);
+  if (!part && joggle) part = runQhull(coords, options + " QJ");  // past precision trouble
+  return part;
+}
+
+bool hasThinAxis(const PrincipalExtent& principal, float minThickness) {
+  const double flatness = std::max(1e-5 * principal.extent[0], 0.25 * minThickness);
+  return principal.extent[1] <= flatness || principal.extent[2] <= flatness;
+}
+
+}  // namespace
+
 std::optional<ConvexPart> convexHull(const std::vector<Eigen::Vector3f>& points, int maxVertices,
                                      float minThickness) {
   if (points.size() < 2) return std::nullopt;
+  // Most point sets are solid: hull them as they are and check the shape on the hull's few
+  // vertices (same extents as the points).
+  if (auto hull = hullOf(points, maxVertices, false))
+    if (!hasThinAxis(principalExtent(hull->vertices), minThickness)) return hull;
   const PrincipalExtent principal = principalExtent(points);
   const double largest = principal.extent[0];
   if (!(largest > 0)) return std::nullopt;
-  // Flat (or line-like) sets: offset copies of the points along the thin axes give a slab.
   const double flatness = 1e-5 * largest;
+  // Flat (or line-like) sets: offset copies of the points along the thin axes give a slab.
   std::vector<Eigen::Vector3f> solidPoints = points;
   for (int axis = 1; axis < 3; ++axis) {
     if (principal.extent[axis] > std::max(flatness, 0.25 * minThickness)) continue;
@@ -154,17 +182,7 @@ std::optional<ConvexPart> convexHull(const std::vector<Eigen::Vector3f>& points,
     }
     solidPoints.swap(thick);
   }
-  std::vector<double> coords;
-  coords.reserve(solidPoints.size() * 3);
-  for (const auto& p : solidPoints) coords.insert(coords.end(), {p.x(), p.y(), p.z()});
-  // "Qt": triangulated output. "TA<n>": stop after n points added to the initial simplex; Qhull
-  // adds the farthest point first, so the result is the greedy best hull of that many vertices.
-  std::string options = "Qt";
-  if (maxVertices >= 4 && static_cast<int>(solidPoints.size()) > maxVertices)
-    options += " TA" + std::to_string(maxVertices - 4);
-  std::optional<ConvexPart> part = runQhull(coords, options);
-  if (!part) part = runQhull(coords, options + " QJ");  // joggle past precision trouble
-  return part;
+  return hullOf(solidPoints, maxVertices, true);
 }
 
 Mesh toMesh(const ConvexPart& part) {

@@ -100,7 +100,7 @@ TEST(ConvexDecomposition, BasinStaysOpen) {
 TEST(ConvexDecomposition, PartBudgetIsKept) {
   // Eight separate cubes with a budget of four: neighbours are merged, with a warning.
   Mesh cubes;
-  for (int i = 0; i < 8; ++i) append(cubes, box({i * 0.3f, 0, 0}, {i * 0.3f + 0.2f, 0.2f, 0.2f}));
+  for (int i = 0; i < 8; ++i) append(cubes, box({i * 0.4f, 0, 0}, {i * 0.4f + 0.2f, 0.2f, 0.2f}));
   DecompositionOptions options;
   options.maxParts = 4;
   const Decomposition d = decomposeConvex(cubes, options);
