@@ -162,7 +162,17 @@ void checkXmlDepth(std::string_view b, const fs::path& path) {
 struct PlyProperty {
   int size = 0;       // bytes of a scalar, or of each list item
   int countSize = 0;  // bytes of a list's count; 0 for a scalar
+  bool signedItems = false;
 };
+
+bool plyTypeSigned(const std::string& type) {
+  return type == "char" || type == "int8" || type == "short" || type == "int16" || type == "int" ||
+         type == "int32";
+}
+
+// assimp asserts in its triangulation on faces of fewer than 3 vertices and reads out of bounds
+// on indices past the vertex list; both are refused here.
+constexpr std::uint64_t kMaxFaceVertices = 4096;
 struct PlyElement {
   std::string name;
   std::uint64_t count = 0;
@@ -206,17 +216,31 @@ class PlyCheck {
   [[noreturn]] void fail(const std::string& problem) const { throw FileError(m_path, "PLY " + problem); }
 
   void readHeader() {
-    const std::size_t end = m_b.substr(0, 1 << 20).find("end_header");
+    // end_header on a line of its own (a fuzzed "...end_headerent face" made assimp crash).
+    std::size_t end = std::string_view::npos;
+    for (std::size_t at = m_b.find("\nend_header"); at != std::string_view::npos && at < (1u << 20);
+         at = m_b.find("\nend_header", at + 1)) {
+      const std::size_t after = at + 11;
+      if (after < m_b.size() && (m_b[after] == '\n' || m_b[after] == '\r')) {
+        end = at + 1;
+        break;
+      }
+    }
     if (end == std::string_view::npos) fail("header has no end_header line (the file is truncated?)");
     std::size_t dataStart = m_b.find('\n', end);
     if (dataStart == std::string_view::npos) fail("header is not followed by data (the file is truncated?)");
     m_dataStart = dataStart + 1;
     const std::string_view header = m_b.substr(0, end);
+    int lineNumber = 0;
     for (std::size_t at = 0; at < header.size();) {
       std::size_t next = header.find('\n', at);
       if (next == std::string_view::npos) next = header.size();
-      const auto w = words(header.substr(at, next - at));
+      const std::string_view lineText = header.substr(at, next - at);
+      const auto w = words(lineText);
       at = next + 1;
+      ++lineNumber;
+      if (lineText.find('\0') != std::string_view::npos)
+        fail("header line " + std::to_string(lineNumber) + " holds a NUL byte");
       if (w.empty() || w[0] == "comment" || w[0] == "obj_info" || w[0] == "ply") continue;
       if (w[0] == "format" && w.size() >= 2) {
         m_format = w[1];
@@ -239,6 +263,7 @@ class PlyCheck {
         if (w.size() == 5 && w[1] == "list") {
           p.countSize = plyTypeSize(w[2]);
           p.size = plyTypeSize(w[3]);
+          p.signedItems = plyTypeSigned(w[3]);
           if (!p.countSize || !p.size) fail("list property '" + w[4] + "' has an unknown type");
         } else if (w.size() == 3) {
           p.size = plyTypeSize(w[1]);
@@ -247,9 +272,13 @@ class PlyCheck {
           fail("header has a malformed property line");
         }
         m_elements.back().properties.push_back(p);
+      } else {
+        fail("header line " + std::to_string(lineNumber) + " is not a PLY statement");
       }
     }
     if (m_format.empty()) fail("header has no format line");
+    for (const PlyElement& e : m_elements)
+      if (e.name == "vertex") m_vertexCount = e.count;
   }
 
   // Every element instance is one line holding exactly its values.
@@ -284,8 +313,15 @@ class PlyCheck {
             continue;
           }
           const std::size_t n = used < values.size() ? std::strtoull(values[used].c_str(), nullptr, 10) : 0;
+          if (e.name == "face") {
+            checkFaceSize(i, n);
+            for (std::size_t k = used + 1; k < used + 1 + n && k < values.size(); ++k) {
+              const long long index = std::strtoll(values[k].c_str(), nullptr, 10);
+              if (index < 0 || static_cast<std::uint64_t>(index) >= m_vertexCount) checkIndex(i, index);
+            }
+            triangles += n - 2;
+          }
           used += 1 + n;
-          if (e.name == "face" && n >= 3) triangles += n - 2;
         }
         if (used != values.size()) {
           fail(e.name + " " + std::to_string(i) + " (data line " + std::to_string(line) + ") has " +
@@ -298,17 +334,9 @@ class PlyCheck {
   }
 
   std::size_t checkBinary() const {
-    const bool little = m_format == "binary_little_endian";
     std::uint64_t at = m_dataStart;
     std::size_t triangles = 0;
-    auto readCount = [&](int size) -> std::uint64_t {
-      std::uint64_t v = 0;
-      for (int k = 0; k < size; ++k) {
-        const auto byte = static_cast<unsigned char>(m_b[at + k]);
-        v |= std::uint64_t{byte} << (8 * (little ? k : size - 1 - k));
-      }
-      return v;
-    };
+    auto readCount = [&](int size) -> std::uint64_t { return readValue(at, size); };
     for (const PlyElement& e : m_elements) {
       std::uint64_t fixed = 0;
       bool lists = false;
@@ -337,8 +365,20 @@ class PlyCheck {
             continue;
           }
           const std::uint64_t n = readCount(p.countSize);
+          if (e.name == "face") {
+            checkFaceSize(i, n);
+            if (at + p.countSize + n * p.size > m_b.size()) fail("ends inside face " + std::to_string(i) + " (truncated?)");
+            for (std::uint64_t k = 0; k < n; ++k) {
+              const std::uint64_t raw = readValue(at + p.countSize + k * p.size, p.size);
+              const int bits = 8 * p.size;
+              const long long index = p.signedItems && bits < 64 && (raw >> (bits - 1)) & 1
+                                          ? static_cast<long long>(raw) - (1LL << bits)
+                                          : static_cast<long long>(raw);
+              if (index < 0 || static_cast<std::uint64_t>(index) >= m_vertexCount) checkIndex(i, index);
+            }
+            triangles += n - 2;
+          }
           at += p.countSize + n * p.size;
-          if (e.name == "face" && n >= 3) triangles += n - 2;
         }
       }
       if (at > m_b.size()) fail("ends inside its " + e.name + " elements (truncated?)");
@@ -347,8 +387,30 @@ class PlyCheck {
     return triangles;
   }
 
+  std::uint64_t readValue(std::uint64_t at, int size) const {
+    const bool little = m_format == "binary_little_endian";
+    std::uint64_t v = 0;
+    for (int k = 0; k < size; ++k) {
+      const auto byte = static_cast<unsigned char>(m_b[at + k]);
+      v |= std::uint64_t{byte} << (8 * (little ? k : size - 1 - k));
+    }
+    return v;
+  }
+
+  void checkFaceSize(std::uint64_t face, std::uint64_t n) const {
+    if (n < 3 || n > kMaxFaceVertices)
+      fail("face " + std::to_string(face) + " lists " + std::to_string(n) +
+           " vertices (3.." + std::to_string(kMaxFaceVertices) + " expected; corrupt file?)");
+  }
+
+  [[noreturn]] void checkIndex(std::uint64_t face, long long index) const {
+    fail("face " + std::to_string(face) + " refers to vertex " + std::to_string(index) + " of " +
+         std::to_string(m_vertexCount) + " (corrupt file?)");
+  }
+
   std::string_view m_b;
   fs::path m_path;
+  std::uint64_t m_vertexCount = 0;
   std::string m_format;
   std::vector<PlyElement> m_elements;
   std::size_t m_dataStart = 0;

@@ -177,7 +177,29 @@ TEST(MeshFileCheck, PlyCountsBeyondTheFileSize) {
       "property float y\nproperty float z\nelement face 1\nproperty list uchar int vertex_indices\n"
       "end_header\n";
   lists += std::string(36, '\0') + std::string(1, char(200)) + std::string(12, '\0');
-  EXPECT_THAT(importError(writeFile(dir / "lists.ply", lists)), HasSubstr("PLY ends inside its face elements (truncated?)"));
+  EXPECT_THAT(importError(writeFile(dir / "lists.ply", lists)), HasSubstr("PLY ends inside face 0 (truncated?)"));
+}
+
+// Fuzz findings: a header whose "end_header" sits inside another line (assimp read past its
+// data: SIGSEGV) and faces of 0 vertices or with indices past the vertex list (assimp's
+// triangulation assert).
+TEST(MeshFileCheck, PlyHeaderStatementsAndFacesAreChecked) {
+  const fs::path dir = test::freshTempDir();
+  const std::string header =
+      "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+      "property float z\nelement face 1\nproperty list uchar int vertex_indices\n";
+  const std::string vertices = "0 0 0\n1 0 0\n0 1 0\n";
+  EXPECT_THAT(importError(writeFile(dir / "junk.ply", header + "ele=ment x\nend_header\n" + vertices + "3 0 1 2\n")),
+              HasSubstr("PLY header line 9 is not a PLY statement"));
+  EXPECT_THAT(importError(writeFile(dir / "inline.ply", header + "xend_headerx 1\n" + vertices + "3 0 1 2\n")),
+              HasSubstr("PLY header has no end_header line"));
+  EXPECT_THAT(importError(writeFile(dir / "empty_face.ply", header + "end_header\n" + vertices + "0\n")),
+              HasSubstr("PLY face 0 lists 0 vertices"));
+  EXPECT_THAT(importError(writeFile(dir / "index.ply", header + "end_header\n" + vertices + "3 0 1 7\n")),
+              HasSubstr("PLY face 0 refers to vertex 7 of 3"));
+  EXPECT_EQ(importMesh(writeFile(dir / "ok.ply", header + "end_header\n" + vertices + "3 0 1 2\n")).triangleCount(), 1u);
+  for (const char* name : {"binary_reader_segv.ply", "binary_triangulate_assert.ply"})
+    EXPECT_THAT(importError(kBad / "fuzz" / "mesh_ply" / name), HasSubstr("PLY "));
 }
 
 TEST(MeshFileCheck, BinaryStlCountBeyondTheFileSize) {
