@@ -3,11 +3,11 @@
 # Markdown table:
 #  - filter throughput (objects/s), computing descriptors (cold) and from the descriptor cache;
 #  - peak RSS of `sagrid annotate` over 20 and over 200 objects (/usr/bin/time -v; the worker's
-#    resident memory after its first and last object from the run manifest);
+#    resident memory after its first object and at its largest, from the run manifest);
 #  - objects per hour with a two-task Slurm array on a one-node cluster started here
 #    (packaging/slurm/local_cluster.sh; skipped without slurm-wlm and munge);
 #  - a projection for 1M meshes on a 100-node cluster: filter everything, then annotate the
-#    candidates, from the measured per-object times.
+#    candidates, from the measured CPU seconds per object.
 #
 #   tests/benchmarks/collection_figures.sh [BUILD_DIR [WORK_DIR]]
 #
@@ -50,19 +50,23 @@ head -n 20 "$work/all.txt" > "$work/first20.txt"
 
 # Filter: descriptors computed (no cache yet), then read from the cache.
 rm -rf "$work/cache"
-filter() {
-  "$sagrid" filter "$work/all.txt" --like stove --models "$models" --cache "$work/cache" \
-    --list-out "$work/candidates.txt" > /dev/null 2> "$work/filter.log"
-  grep -o '[0-9.]* objects/s' "$work/filter.log" | tail -n 1 | cut -d' ' -f1
+# CPU seconds (user + system) of a /usr/bin/time -v log: what the work costs a core, which the
+# other processes of a shared machine change much less than the wall time.
+cpu_seconds() { awk -F: '/User time|System time/ {s += $2} END {printf "%.1f", s}' "$1"; }
+filter() {  # -> "objects/s cpu_seconds"
+  /usr/bin/time -v "$sagrid" filter "$work/all.txt" --like stove --models "$models" \
+    --cache "$work/cache" --list-out "$work/candidates.txt" > /dev/null 2> "$work/filter.log"
+  echo "$(grep -o '[0-9.]* objects/s' "$work/filter.log" | tail -n 1 | cut -d' ' -f1)" \
+    "$(cpu_seconds "$work/filter.log")"
 }
 log "filter, cold"
-filter_cold=$(filter)
+read -r filter_cold filter_cold_cpu <<< "$(filter)"
 log "filter, cached"
-filter_cached=$(filter)
+read -r filter_cached filter_cached_cpu <<< "$(filter)"
 candidates=$(grep -vc '^#' "$work/candidates.txt" || true)
 
 # Peak RSS and time per object, one process.
-annotate_rss() {  # LIST OUT -> "peak_MiB seconds first_worker_MiB last_worker_MiB"
+annotate_rss() {  # LIST OUT -> "peak_MiB seconds cpu_seconds first_worker_MiB largest_worker_MiB"
   rm -rf "$2"
   local t0 t1
   t0=$(now)
@@ -71,18 +75,19 @@ annotate_rss() {  # LIST OUT -> "peak_MiB seconds first_worker_MiB last_worker_M
   t1=$(now)
   local peak
   peak=$(awk -F: '/Maximum resident set size/ {print int($2 / 1024)}' "$2.time")
-  python3 - "$2/annotate.jsonl" "$peak" "$(calc "round($t1 - $t0, 1)")" << 'PY'
+  python3 - "$2/annotate.jsonl" "$peak" "$(calc "round($t1 - $t0, 1)")" "$(cpu_seconds "$2.time")" << 'PY'
 import json, sys
 rss = [json.loads(l).get("rss_mib") for l in open(sys.argv[1])]
 rss = [r for r in rss if r is not None]
-print(sys.argv[2], sys.argv[3], int(rss[0]) if rss else 0, int(rss[-1]) if rss else 0)
+print(sys.argv[2], sys.argv[3], sys.argv[4], int(rss[0]) if rss else 0, int(max(rss)) if rss else 0)
 PY
 }
 log "annotate 20 objects (peak RSS)"
-read -r rss20 sec20 first20 last20 <<< "$(annotate_rss "$work/first20.txt" "$work/out20")"
+read -r rss20 sec20 cpu20 first20 last20 <<< "$(annotate_rss "$work/first20.txt" "$work/out20")"
 log "annotate $objects objects (peak RSS)"
-read -r rssN secN firstN lastN <<< "$(annotate_rss "$work/all.txt" "$work/outN")"
-per_object=$(calc "round($secN / $objects, 3)")
+read -r rssN secN cpuN firstN lastN <<< "$(annotate_rss "$work/all.txt" "$work/outN")"
+cpu_per_object=$(calc "round($cpuN / $objects, 2)")
+filter_cpu_per_object=$(calc "round($filter_cold_cpu / $objects, 2)")
 
 # Two array tasks on a one-node cluster, one CPU each.
 array_rate="not measured (no slurm-wlm/munge)"
@@ -105,40 +110,35 @@ if command -v sbatch > /dev/null 2>&1 && [ -x /usr/sbin/slurmctld ]; then
   trap - EXIT
 fi
 
-# Projection: 1M meshes, every one filtered (cold descriptor), the candidates annotated. Core-
-# seconds per object: annotate from the Slurm run (one CPU per task) when there was one, else the
-# one-process time x this machine's cores; filter from its one-process rate x the cores (an upper
-# bound: it assumes the threads kept every core busy).
-python3 - "$filter_cold" "$per_object" "$nodes" "$cores" "$share" "$array_rate" << 'PY' > "$work/projection.txt"
-import os, sys
-filter_rate, annotate_s, nodes, cores, share = map(float, sys.argv[1:6])
-here = os.cpu_count()
-try:
-    annotate_core_s = 2 * 3600 / float(sys.argv[6])  # two tasks, one CPU each
-except ValueError:
-    annotate_core_s = annotate_s * here
-filter_core_s = here / filter_rate
+# Projection: 1M meshes, every one filtered (cold descriptor), the candidates annotated, from the
+# CPU seconds per object of the one-process runs (what each object costs a core; each core of the
+# cluster runs one task).
+python3 - "$filter_cpu_per_object" "$cpu_per_object" "$nodes" "$cores" "$share" << 'PY' > "$work/projection.txt"
+import sys
+filter_core_s, annotate_core_s, nodes, cores, share = map(float, sys.argv[1:6])
 meshes = 1_000_000
 filter_h = meshes * filter_core_s / (nodes * cores) / 3600
 annotate_h = meshes * share * annotate_core_s / (nodes * cores) / 3600
-print(f"{filter_h:.1f} {annotate_h:.2f} {filter_h + annotate_h:.1f} {filter_core_s:.2f} {annotate_core_s:.2f}")
+print(f"{filter_h:.1f} {annotate_h:.2f} {filter_h + annotate_h:.1f}")
 PY
-read -r proj_filter proj_annotate proj_total filter_core annotate_core < "$work/projection.txt"
+load=$(cut -d' ' -f1-3 /proc/loadavg)
+read -r proj_filter proj_annotate proj_total < "$work/projection.txt"
 
 cat << EOF
 
-Measured on $(hostname) ($(nproc) cores, $(free -g | awk '/Mem:/ {print $2}') GiB), $(date -u +%Y-%m-%d); annotate options: defaults ${ANNOTATE_OPTIONS:-}
+Measured on $(hostname) ($(nproc) cores, $(free -g | awk '/Mem:/ {print $2}') GiB), $(date -u +%Y-%m-%d), load average
+at the end $load (a shared machine: wall times depend on what else runs, CPU seconds much less);
+annotate options: defaults ${ANNOTATE_OPTIONS:-}
 | figure | value |
 | --- | --- |
-| filter, descriptors computed (cold) | $filter_cold objects/s |
-| filter, descriptors from the cache | $filter_cached objects/s |
+| filter, descriptors computed (cold) | $filter_cold objects/s wall; $filter_cpu_per_object CPU s/object |
+| filter, descriptors from the cache | $filter_cached objects/s wall ($filter_cached_cpu CPU s for $objects) |
 | filter candidates (decided stove) | $candidates of $objects |
-| annotate 20 objects: peak RSS (time -v) | $rss20 MiB ($sec20 s) |
-| annotate $objects objects: peak RSS (time -v) | $rssN MiB ($secN s, $per_object s/object) |
-| worker RSS after first / last object (20) | $first20 / $last20 MiB |
-| worker RSS after first / last object ($objects) | $firstN / $lastN MiB |
-| Slurm, 2 array tasks x 1 CPU, $array_objects objects | $array_rate objects/hour |
-| per object, one core: filter (cold) / annotate | $filter_core / $annotate_core core-seconds |
+| annotate 20 objects: peak RSS (time -v) | $rss20 MiB ($sec20 s wall, $cpu20 CPU s) |
+| annotate $objects objects: peak RSS (time -v) | $rssN MiB ($secN s wall, $cpuN CPU s: $cpu_per_object CPU s/object) |
+| worker RSS after its first object / largest (20) | $first20 / $last20 MiB |
+| worker RSS after its first object / largest ($objects) | $firstN / $lastN MiB |
+| Slurm, 2 array tasks x 1 CPU, $array_objects objects | $array_rate objects/hour (wall, sbatch --wait) |
 | 1M meshes on $nodes nodes x $cores cores: filter all | $proj_filter h |
 | then annotate ${share} of them | $proj_annotate h |
 | total | $proj_total h |
