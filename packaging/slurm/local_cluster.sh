@@ -21,21 +21,25 @@ die() {
 action=$1
 dir=$(mkdir -p "$2" && cd "$2" && pwd)
 # Unix socket paths are limited to 108 bytes: the MUNGE socket and slurmd's spool (step sockets)
-# live in a short folder of their own.
+# live in a short folder of their own, named after DIR. The daemons' pid files are there too, so a
+# cluster left running (a test killed before it could stop it) is stopped by the next start even
+# when DIR was wiped in between.
 run=/tmp/sagrid-slurm-$(printf '%s' "$dir" | cksum | cut -d' ' -f1)
 
 stop_cluster() {
   export SLURM_CONF=$dir/slurm.conf
   local pidfile pid
   # Jobs first: their steps (slurmstepd) outlive slurmd otherwise.
-  if [ -f "$dir/slurmctld.pid" ] && kill -0 "$(cat "$dir/slurmctld.pid")" 2> /dev/null; then
+  if [ -f "$dir/slurm.conf" ] && [ -f "$run/slurmctld.pid" ] &&
+    kill -0 "$(cat "$run/slurmctld.pid")" 2> /dev/null; then
     scancel --user="$(id -un)" 2> /dev/null || true
     for _ in $(seq 50); do [ -z "$(squeue -h 2> /dev/null)" ] && break; sleep 0.2; done
   fi
-  for pidfile in "$dir/slurmd.pid" "$dir/slurmctld.pid" "$dir/munged.pid"; do
+  for pidfile in "$run/slurmd.pid" "$run/slurmctld.pid" "$run/munged.pid"; do
     [ -f "$pidfile" ] || continue
     pid=$(cat "$pidfile")
-    if [ -n "$pid" ] && kill -0 "$pid" 2> /dev/null; then
+    # Only the daemon the file names (a stale file may hold a pid reused by another process).
+    if [ -n "$pid" ] && [ "$(cat "/proc/$pid/comm" 2> /dev/null)" = "$(basename "$pidfile" .pid)" ]; then
       kill "$pid" 2> /dev/null || true
       for _ in $(seq 50); do kill -0 "$pid" 2> /dev/null || break; sleep 0.1; done
       kill -9 "$pid" 2> /dev/null || true
@@ -61,13 +65,14 @@ port=${SLURM_LOCAL_PORT:-$((20000 + $(printf '%s' "$dir" | cksum | cut -d' ' -f1
 host=$(hostname -s)
 mkdir -p "$dir/state" "$dir/log"
 
-# MUNGE authenticates the daemons to each other: a private key and socket in DIR.
+# MUNGE authenticates the daemons to each other: a private key in DIR, its socket in $run.
 if [ ! -s "$dir/munge.key" ]; then
   dd if=/dev/urandom of="$dir/munge.key" bs=1024 count=1 status=none
   chmod 600 "$dir/munge.key"
 fi
+stop_cluster  # one left running for this DIR
 mkdir -p "$run/spool"
-munged --key-file="$dir/munge.key" --socket="$run/munge.sock" --pid-file="$dir/munged.pid" \
+munged --key-file="$dir/munge.key" --socket="$run/munge.sock" --pid-file="$run/munged.pid" \
   --log-file="$dir/log/munged.log" --seed-file="$dir/munged.seed" --force ||
   die "munged did not start: see $dir/log/munged.log"
 
@@ -83,8 +88,8 @@ AuthInfo=socket=$run/munge.sock
 CredType=cred/munge
 StateSaveLocation=$dir/state
 SlurmdSpoolDir=$run/spool
-SlurmctldPidFile=$dir/slurmctld.pid
-SlurmdPidFile=$dir/slurmd.pid
+SlurmctldPidFile=$run/slurmctld.pid
+SlurmdPidFile=$run/slurmd.pid
 SlurmctldLogFile=$dir/log/slurmctld.log
 SlurmdLogFile=$dir/log/slurmd.log
 ProctrackType=proctrack/linuxproc
