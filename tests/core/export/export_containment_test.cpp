@@ -15,6 +15,7 @@
 #include "core/export/mjcf_export.h"
 #include "core/export/omnigibson_export.h"
 #include "core/export/training_set.h"
+#include "core/mesh/mesh_export.h"
 #include "support/folder_listing.h"
 #include "support/labelled_objects.h"
 #include "support/test_paths.h"
@@ -145,6 +146,28 @@ TEST(ExportContainment, MtllibAndTexturesOutsideTheObjectFolderAreRefused) {
     if (before.count(path) || path.parent_path() == root / "obj") continue;
     ADD_FAILURE() << "written: " << path;
   }
+}
+
+// Material names come from the mesh file; in the OmniGibson visual MTL they stay plain names, so
+// a name holding a line break cannot add a texture line pointing anywhere.
+TEST(ExportContainment, MaterialNamesCannotInjectMtlLines) {
+  const auto root = test::freshTempDir();
+  Mesh mesh = test::analyticStoveMesh();
+  mesh.materials[1].name = "knob\nmap_Kd /etc/hostname\nnewmtl x";
+  fs::create_directories(root / "in");
+  exportMesh(mesh, root / "in" / "mesh.glb");
+  ObjectLabels labels;
+  labels.object.id = "stove";
+  labels.object.category = "stove";
+  labels.object.up = "y";  // glTF's axis
+  labels.object.extra["units"] = "m";
+  ExportOptions options;
+  options.collision = CollisionMode::None;
+  const auto r = exportOmniGibson(labels, root / "in" / "mesh.glb", root / "out", options);
+  const std::string mtl = readFileBytes(r.root / "shape" / "visual" /
+                                        (r.root.filename().string() + "_base_link_visual.mtl"));
+  EXPECT_EQ(mtl.find("/etc/hostname"), std::string::npos) << mtl;
+  EXPECT_EQ(mtl.find("\nmap_Kd"), std::string::npos) << mtl;
 }
 
 TEST(ExportContainment, TrainingSetIdsStayInsideTheDataset) {
