@@ -79,14 +79,21 @@ SimulatorGeometry buildSimulatorGeometry(const ObjectLabels& labels, const fs::p
                     "units (object.units / object.meters_per_unit in labels.json)");
   }
 
-  geometry.visualParts = visualParts(geometry.mesh, geometry.warnings);
-  geometry.collisionParts = collisionParts(geometry.mesh, options, geometry.warnings);
+  std::vector<std::string> shapeWarnings;  // about the mesh: named after it below
+  geometry.visualParts = visualParts(geometry.mesh, shapeWarnings);
+  geometry.collisionParts = collisionParts(geometry.mesh, options, shapeWarnings);
   if (options.progress) options.progress(0.9f, "mass");
   physics::MassOptions massOptions;
   massOptions.category = labels.object.category;
   geometry.mass = physics::estimateMassProperties(geometry.mesh, massOptions);
-  geometry.warnings.insert(geometry.warnings.end(), geometry.mass.warnings.begin(),
-                           geometry.mass.warnings.end());
+  shapeWarnings.insert(shapeWarnings.end(), geometry.mass.warnings.begin(),
+                       geometry.mass.warnings.end());
+  for (const auto& warning : shapeWarnings) {
+    const std::string named = meshPath.string() + ": " + warning;
+    if (std::find(geometry.warnings.begin(), geometry.warnings.end(), named) ==
+        geometry.warnings.end())
+      geometry.warnings.push_back(named);
+  }
   if (curatedMass) {
     geometry.mass = physics::withMass(geometry.mass, *curatedMass);
     geometry.massFromLabels = true;
