@@ -65,7 +65,7 @@ BENCHMARK(BM_FourModelsAndExtraction)
 
 // `annotate` of the dense LIBERO flat stove (no feature cache): bit 1 = up axis detected from the
 // geometry (else given), bit 2 = category decided by the models folder's classifier (else given),
-// bit 4 = symmetry averaging over 8 copies.
+// bit 4 = symmetry averaging over 8 copies, bit 8 = coarse-to-fine second pass.
 void BM_AnnotateDenseEndToEnd(benchmark::State& state) {
   Fixture& f = fixture();
   const fs::path mesh = sagrid::bench::denseCopy(2);
@@ -75,13 +75,15 @@ void BM_AnnotateDenseEndToEnd(benchmark::State& state) {
   if (!(additions & 1)) options.features.up = sagrid::UpAxis::PosZ;
   if (!(additions & 2)) options.category = "stove";
   options.symmetries = additions & 4 ? 8 : 1;
+  options.coarseToFine = (additions & 8) != 0;
   const fs::path out = sagrid::bench::benchDir() / "annotate-out";
   for (auto _ : state)
     benchmark::DoNotOptimize(
         sagrid::annotateMeshFile(mesh, "flat_stove_dense", *f.models, options, out));
   state.SetLabel(std::string(additions & 1 ? "up detected" : "up given") +
                  (additions & 2 ? ", category classified" : ", category given") +
-                 (additions & 4 ? ", 8 symmetries" : ", 1 copy"));
+                 (additions & 4 ? ", 8 symmetries" : ", 1 copy") +
+                 (additions & 8 ? ", coarse-to-fine" : ""));
 }
 BENCHMARK(BM_AnnotateDenseEndToEnd)
     ->Arg(0)
@@ -89,6 +91,8 @@ BENCHMARK(BM_AnnotateDenseEndToEnd)
     ->Arg(2)
     ->Arg(4)
     ->Arg(7)
+    ->Arg(8)
+    ->Arg(15)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime()
     ->Iterations(2);
