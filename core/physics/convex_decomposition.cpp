@@ -36,6 +36,10 @@ struct VoxelPart {
 // Hull surface sampling for the concavity, in voxels: coarse while choosing cuts, fine for parts.
 constexpr float kCoarseSpacing = 3.0f;
 constexpr float kFineSpacing = 1.5f;
+// Hulls used while cutting keep at most this many vertices (Qhull's greedy farthest-point
+// hull): a finely tessellated curved surface otherwise puts tens of thousands of points on
+// every hull, and each cut candidate carries them on.
+constexpr int kScoringHullVertices = 256;
 
 struct Cut {
   int axis = 0;
@@ -173,7 +177,7 @@ class Decomposer {
   }
 
   void evaluate(VoxelPart& part) const {
-    part.hull = convexHull(part.points);
+    part.hull = convexHull(part.points, kScoringHullVertices);
     part.concavity = part.hull ? concavityOf(*part.hull) : 0.0;
     part.gap = part.hull ? std::max(0.0, part.hull->volume() - static_cast<double>(part.voxels.size())) : 0.0;
     part.settled = part.concavity <= m_tolerance || (part.hi - part.lo).maxCoeff() == 0;
@@ -213,7 +217,7 @@ class Decomposer {
     Chain next;
     next.carried = previous.hull ? previous.hull->vertices : previous.carried;
     next.carried.insert(next.carried.end(), points.begin(), points.end());
-    next.hull = convexHull(next.carried);
+    next.hull = convexHull(next.carried, kScoringHullVertices);
     return next;
   }
 
@@ -375,7 +379,7 @@ class Decomposer {
           Points joint = hullPoints(m_parts[pairs[p].first]);
           const Points other = hullPoints(m_parts[pairs[p].second]);
           joint.insert(joint.end(), other.begin(), other.end());
-          const auto hull = convexHull(joint);
+          const auto hull = convexHull(joint, kScoringHullVertices);
           cost[p] = hull ? concavityOf(*hull) : 0.0;
         }
       });
@@ -419,7 +423,7 @@ class Decomposer {
     std::vector<std::optional<ConvexPart>> hulls(m_parts.size());
     parallelFor(m_parts.size(), 2, [&](std::size_t begin, std::size_t end) {
       for (std::size_t p = begin; p < end; ++p) {
-        Points points = hullPoints(m_parts[p]);
+        Points points = m_parts[p].points;  // all of them: the cutting hulls are capped
         for (auto& q : points) q = toMeshFrame(q);
         hulls[p] = convexHull(points, m_options.maxVerticesPerPart, static_cast<float>(voxel));
       }

@@ -4,6 +4,7 @@
 
 #include "core/geometry/surface_scene.h"
 #include "core/mesh/mesh.h"
+#include "core/physics/signed_volume.h"
 #include "core/physics/solid_voxels.h"
 #include "core/physics/surface_sampling.h"
 
@@ -35,15 +36,6 @@ struct HalfSpaces {
   }
 };
 
-// +1 when the triangles face outwards (positive signed volume), -1 when inwards.
-double meshOrientation(const Mesh& mesh) {
-  double sixTimes = 0;
-  for (const auto& t : mesh.triangles)
-    sixTimes += mesh.positions[t[0]].cast<double>().dot(
-        mesh.positions[t[1]].cast<double>().cross(mesh.positions[t[2]].cast<double>()));
-  return sixTimes < 0 ? -1.0 : 1.0;
-}
-
 }  // namespace
 
 DecompositionQuality measureDecomposition(const Mesh& mesh, const std::vector<ConvexPart>& parts,
@@ -69,7 +61,7 @@ DecompositionQuality measureDecomposition(const Mesh& mesh, const std::vector<Co
   // Outside: in a voxel outside the filled solid, or in a surface voxel and in front of the
   // nearest triangle.
   const SolidVoxels solid = solidVoxels(mesh, resolution, 2);
-  const double outward = meshOrientation(mesh);
+  const double outward = signedVolume(mesh) < 0 ? -1.0 : 1.0;
   const auto nearest = scene.closestPoints(samples);
   for (std::size_t s = 0; s < samples.size(); ++s) {
     const VoxelIndex v = voxelContaining(solid.normalization.toNormalized(samples[s]), resolution);

@@ -8,21 +8,12 @@
 #include "core/common/error.h"
 #include "core/geometry/surface_scene.h"
 #include "core/mesh/mesh.h"
+#include "core/physics/signed_volume.h"
 #include "core/physics/solid_voxels.h"
 
 namespace sagrid::physics {
 
 namespace {
-
-// Signed volume of the triangles (divergence theorem): its sign says whether the winding faces
-// out (> 0) or in; for open meshes it is only a hint.
-double signedVolume(const Mesh& mesh) {
-  double sixTimes = 0;
-  for (const auto& t : mesh.triangles)
-    sixTimes += mesh.positions[t[0]].cast<double>().dot(
-        mesh.positions[t[1]].cast<double>().cross(mesh.positions[t[2]].cast<double>()));
-  return sixTimes / 6.0;
-}
 
 // Share of each surface voxel inside the solid: the nearest triangle's plane cuts the voxel
 // cube, the share below it taken linearly from the signed distance of the voxel centre

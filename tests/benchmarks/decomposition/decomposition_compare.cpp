@@ -129,6 +129,7 @@ int partsGlb(const fs::path& obj, const fs::path& out) {
     }
   }
   mesh.computeVertexNormals();
+  mesh.fileUp = UpAxis::Y;  // GLB is y-up by its spec: the writer turns the z-up parts
   std::ofstream(out, std::ios::binary) << encodeGlb(mesh);
   std::cout << out.string() << ": " << parts.size() << " parts\n";
   return 0;

@@ -4,6 +4,7 @@
 # vhacd-js from the npm registry into the build folder (BSD-3; not kept in this repository).
 #
 # usage: tests/benchmarks/decomposition/run.sh [BUILD_DIR] [MESH...]
+# Writes BUILD_DIR/decomposition-bench/results.md and pictures/{stove,sink}_{parts,mesh}.png.
 # Default meshes: the three real-dev objects and the first PER_CATEGORY (5) stoves and sinks of
 # the val split of `sagrid generate --preset bench` (generated into
 # BUILD_DIR/decomposition-bench/generated). MAX_HULLS (32) is the part budget of all three
@@ -42,3 +43,15 @@ rm -rf "$work/objects"
 node "$here/vhacd_wasm.mjs" "$vhacd_dir" "$work/objects" "$max_hulls"
 "$build/vhacd_native" "$work/objects" "$max_hulls"
 "$build/tests/benchmarks/decomposition_compare" evaluate "$work/objects" | tee "$work/results.md"
+
+# Pictures of our collision parts (one colour per part) for the first generated stove and sink.
+mkdir -p "$work/pictures"
+for category in stove sink; do
+  object="$(ls -d "$work/objects/${category}_"*/ 2>/dev/null | head -n 1)"
+  [ -n "$object" ] || continue
+  "$build/tests/benchmarks/decomposition_compare" parts-glb "$object/ours.obj" "$work/pictures/${category}_parts.glb" >/dev/null
+  "$build/sagrid" render "$work/pictures/${category}_parts.glb" --backend egl --no-panels --size 900x700 \
+    --yaw 35 --pitch 40 --screenshot "$work/pictures/${category}_parts.png" || true
+  "$build/sagrid" render "$object/input.obj" --backend egl --no-panels --size 900x700 \
+    --yaw 35 --pitch 40 --screenshot "$work/pictures/${category}_mesh.png" || true
+done
