@@ -117,11 +117,7 @@ SimulatorExport exportOmniGibson(const ObjectLabels& labels, const fs::path& mes
   // _force_asset_pipeline_materials allows one mtllib per OBJ) and its textures.
   Mesh visual = geometry.mesh;
   visual.fileUp = UpAxis::Z;
-  // Material names come from the file: as MTL names they must not carry line breaks or spaces
-  // (a name with a newline could add a map_ line naming any file to the importer).
-  UniqueFileNames materialNames;
-  for (auto& material : visual.materials)
-    material.name = materialNames.claim(material.name, "material");
+  // Material names become safe MTL names in encodeObj (no line breaks: issue 14).
   const std::string visualName = model + "_base_link_visual";
   fs::create_directories(root / "shape" / "visual");
   writeEncodedMeshFiles(encodeObj(visual, visualName), root / "shape" / "visual");

@@ -8,6 +8,7 @@
 #include <stb_image_write.h>
 
 #include "core/common/atomic_file.h"
+#include "core/common/contained_paths.h"
 #include "core/common/error.h"
 
 namespace sagrid {
@@ -35,6 +36,18 @@ std::string materialName(const Mesh& mesh, int index) {
     return name;
   }
   return "material_" + std::to_string(index);
+}
+
+// Material names as OBJ/MTL statements may carry them, by material index: a name comes from the
+// imported file, so a line break in it would add statements (a `map_Kd /etc/hostname` for the
+// next importer to read) and a space would split it. Each becomes a safe file-name-like word
+// (safeFileName), unique within the mesh; an unnamed material is "material_<index>".
+std::vector<std::string> objMaterialNames(const Mesh& mesh) {
+  UniqueFileNames unique;
+  std::vector<std::string> names;
+  for (std::size_t m = 0; m < mesh.materials.size(); ++m)
+    names.push_back(unique.claim(mesh.materials[m].name, "material_" + std::to_string(m)));
+  return names;
 }
 
 // Triangle indices grouped by material, materials in index order (-1 first when present).
@@ -114,8 +127,11 @@ EncodedMeshFiles encodeObj(const Mesh& mesh, const std::string& baseName) {
       obj += '\n';
     }
   }
+  const std::vector<std::string> materialNames = objMaterialNames(mesh);
   for (const auto& [material, triangles] : trianglesByMaterial(mesh)) {
-    obj += "usemtl " + materialName(mesh, material) + "\n";
+    obj += "usemtl " +
+           (material >= 0 ? materialNames[std::size_t(material)] : materialName(mesh, material)) +
+           "\n";
     for (int t : triangles) {
       obj += 'f';
       for (int k = 0; k < 3; ++k) {
@@ -139,7 +155,7 @@ EncodedMeshFiles encodeObj(const Mesh& mesh, const std::string& baseName) {
   std::vector<std::pair<std::string, std::string>> images;
   for (std::size_t m = 0; m < mesh.materials.size(); ++m) {
     const Material& material = mesh.materials[m];
-    mtl += "newmtl " + materialName(mesh, static_cast<int>(m)) + "\nKd ";
+    mtl += "newmtl " + materialNames[m] + "\nKd ";
     for (int k = 0; k < 3; ++k) {
       appendFloat(mtl, material.baseColor[k], 4);
       mtl += k < 2 ? " " : "\n";

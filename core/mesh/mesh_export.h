@@ -1,7 +1,9 @@
 // Mesh writers: Wavefront OBJ + MTL (+ PNG textures) and binary glTF 2.0 (GLB, y-up by its spec,
 // with vertex colours and embedded PNG textures). Vertices are written in the mesh's file frame
 // (zUpToFile with Mesh::fileUp), so a y-up mesh is written y-up. Output bytes depend only on the
-// mesh: the same mesh always gives byte-identical files. Files are written atomically.
+// mesh: the same mesh always gives byte-identical files. Files are written atomically. OBJ/MTL
+// material names are made safe (letters, digits, '-', '_', '.', unique within the mesh), so a
+// name read from a hostile file cannot add statements to the OBJ or MTL.
 #pragma once
 
 #include <filesystem>

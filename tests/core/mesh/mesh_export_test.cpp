@@ -83,6 +83,31 @@ TEST(MeshExport, VertexColoursAreWritten) {
   EXPECT_NE(encodeGlb(mesh).find("COLOR_0"), std::string::npos);
 }
 
+// Issue 14: a material name comes from the imported file; a line break in it must not add
+// statements (here a texture naming any file) to the OBJ or MTL we write.
+TEST(MeshExport, MaterialNamesCannotAddObjOrMtlStatements) {
+  Mesh mesh = sampleMesh(UpAxis::Z);
+  mesh.materials[0].name = "glass\nmap_Kd /etc/hostname";
+  mesh.materials[1].name = "red\r\nmtllib ../../x.mtl";
+  const EncodedMeshFiles files = encodeObj(mesh, "mesh");
+  for (const auto& [name, bytes] : files.files) {
+    if (name.size() > 4 && name.substr(name.size() - 4) == ".png") continue;
+    EXPECT_EQ(bytes.find("/etc/hostname"), std::string::npos) << name;
+    EXPECT_EQ(bytes.find("\nmap_Kd /"), std::string::npos) << name;
+    EXPECT_EQ(bytes.find("\nmtllib ../"), std::string::npos) << name;
+    EXPECT_EQ(bytes.find('\r'), std::string::npos) << name;
+  }
+  const std::string& mtl = files.files[1].second;
+  EXPECT_NE(mtl.find("newmtl glass_map_Kd__etc_hostname\n"), std::string::npos) << mtl;
+  EXPECT_NE(files.mainBytes().find("usemtl glass_map_Kd__etc_hostname\n"), std::string::npos);
+  // Two names that become the same safe name stay two materials.
+  mesh.materials[0].name = "a b";
+  mesh.materials[1].name = "a\nb";
+  const std::string twins = encodeObj(mesh, "mesh").files[1].second;
+  EXPECT_NE(twins.find("newmtl a_b\n"), std::string::npos) << twins;
+  EXPECT_NE(twins.find("newmtl a_b-2\n"), std::string::npos) << twins;
+}
+
 TEST(MeshExport, RejectsUnknownExtension) {
   EXPECT_THROW(exportMesh(sampleMesh(UpAxis::Z), test::freshTempDir() / "mesh.fbx"), FileError);
 }
