@@ -2,7 +2,7 @@
 # Figures of issue 13 for collections at scale, measured on this machine and printed as a
 # Markdown table:
 #  - filter throughput (objects/s), computing descriptors (cold) and from the descriptor cache;
-#  - peak RSS of `sagrid annotate` over 20 and over 200 objects (/usr/bin/time -v; the worker's
+#  - peak RSS of `sagrid annotate` over 20 candidates and over all 200 objects (/usr/bin/time -v; the worker's
 #    resident memory after its first object and at its largest, from the run manifest);
 #  - objects per hour with a two-task Slurm array on a one-node cluster started here
 #    (packaging/slurm/local_cluster.sh; skipped without slurm-wlm and munge);
@@ -45,8 +45,10 @@ n_none=$((objects - n_stove - n_sink))
 "$sagrid" generate --category stove --count "$n_stove" --seed 71 --format mixed --out "$work/objects/stoves" > /dev/null 2>&1
 "$sagrid" generate --category sink --count "$n_sink" --seed 72 --format mixed --out "$work/objects/sinks" > /dev/null 2>&1
 "$sagrid" generate --category none --count "$n_none" --seed 73 --format mixed --out "$work/objects/other" > /dev/null 2>&1
-find "$work/objects" \( -name mesh.obj -o -name mesh.glb \) | sort > "$work/all.txt"
-head -n 20 "$work/all.txt" > "$work/first20.txt"
+# In a fixed mixed order (a wild collection is not sorted by category).
+find "$work/objects" \( -name mesh.obj -o -name mesh.glb \) | sort |
+  python3 -c 'import random, sys; l = sys.stdin.readlines(); random.Random(7).shuffle(l); print("".join(l), end="")' \
+    > "$work/all.txt"
 
 # Filter: descriptors computed (no cache yet), then read from the cache.
 rm -rf "$work/cache"
@@ -82,18 +84,23 @@ rss = [r for r in rss if r is not None]
 print(sys.argv[2], sys.argv[3], sys.argv[4], int(rss[0]) if rss else 0, int(max(rss)) if rss else 0)
 PY
 }
-log "annotate 20 objects (peak RSS)"
-read -r rss20 sec20 cpu20 first20 last20 <<< "$(annotate_rss "$work/first20.txt" "$work/out20")"
+# 20 of filter's candidates: what the pipeline annotates (the category-none objects of the
+# collection cost a tenth: no model runs on them); their CPU seconds feed the projection.
+grep -v '^#' "$work/candidates.txt" | head -n 20 > "$work/candidates20.txt"
+n20=$(wc -l < "$work/candidates20.txt")
+log "annotate 20 candidates (peak RSS)"
+read -r rss20 sec20 cpu20 first20 last20 <<< "$(annotate_rss "$work/candidates20.txt" "$work/out20")"
 log "annotate $objects objects (peak RSS)"
 read -r rssN secN cpuN firstN lastN <<< "$(annotate_rss "$work/all.txt" "$work/outN")"
 cpu_per_object=$(calc "round($cpuN / $objects, 2)")
 filter_cpu_per_object=$(calc "round($filter_cold_cpu / $objects, 2)")
+candidate_cpu=$(calc "round($cpu20 / $n20, 2)")
 
 # Two array tasks on a one-node cluster, one CPU each.
 array_rate="not measured (no slurm-wlm/munge)"
 if command -v sbatch > /dev/null 2>&1 && [ -x /usr/sbin/slurmctld ]; then
-  log "Slurm: two array tasks over $array_objects objects"
-  head -n "$array_objects" "$work/all.txt" > "$work/array.txt"
+  log "Slurm: two array tasks over $array_objects candidates"
+  grep -v '^#' "$work/candidates.txt" | head -n "$array_objects" > "$work/array.txt"
   cluster=$work/cluster
   "$root/packaging/slurm/local_cluster.sh" start "$cluster" > /dev/null
   trap '"$root/packaging/slurm/local_cluster.sh" stop "$cluster"' EXIT
@@ -111,9 +118,9 @@ if command -v sbatch > /dev/null 2>&1 && [ -x /usr/sbin/slurmctld ]; then
 fi
 
 # Projection: 1M meshes, every one filtered (cold descriptor), the candidates annotated, from the
-# CPU seconds per object of the one-process runs (what each object costs a core; each core of the
-# cluster runs one task).
-python3 - "$filter_cpu_per_object" "$cpu_per_object" "$nodes" "$cores" "$share" << 'PY' > "$work/projection.txt"
+# CPU seconds per object of the one-process runs (filter over the collection, annotate over 20
+# candidates: what each object costs a core; each core of the cluster runs one task).
+python3 - "$filter_cpu_per_object" "$candidate_cpu" "$nodes" "$cores" "$share" << 'PY' > "$work/projection.txt"
 import sys
 filter_core_s, annotate_core_s, nodes, cores, share = map(float, sys.argv[1:6])
 meshes = 1_000_000
@@ -134,12 +141,12 @@ annotate options: defaults ${ANNOTATE_OPTIONS:-}
 | filter, descriptors computed (cold) | $filter_cold objects/s wall; $filter_cpu_per_object CPU s/object |
 | filter, descriptors from the cache | $filter_cached objects/s wall ($filter_cached_cpu CPU s for $objects) |
 | filter candidates (decided stove) | $candidates of $objects |
-| annotate 20 objects: peak RSS (time -v) | $rss20 MiB ($sec20 s wall, $cpu20 CPU s) |
-| annotate $objects objects: peak RSS (time -v) | $rssN MiB ($secN s wall, $cpuN CPU s: $cpu_per_object CPU s/object) |
-| worker RSS after its first object / largest (20) | $first20 / $last20 MiB |
+| annotate $n20 candidates: peak RSS (time -v) | $rss20 MiB ($sec20 s wall, $cpu20 CPU s: $candidate_cpu CPU s/object) |
+| annotate all $objects objects: peak RSS (time -v) | $rssN MiB ($secN s wall, $cpuN CPU s: $cpu_per_object CPU s/object) |
+| worker RSS after its first object / largest ($n20) | $first20 / $last20 MiB |
 | worker RSS after its first object / largest ($objects) | $firstN / $lastN MiB |
-| Slurm, 2 array tasks x 1 CPU, $array_objects objects | $array_rate objects/hour (wall, sbatch --wait) |
-| 1M meshes on $nodes nodes x $cores cores: filter all | $proj_filter h |
-| then annotate ${share} of them | $proj_annotate h |
+| Slurm, 2 array tasks x 1 CPU, $array_objects candidates | $array_rate objects/hour (wall, sbatch --wait) |
+| 1M meshes on $nodes nodes x $cores cores: filter all ($filter_cpu_per_object CPU s each) | $proj_filter h |
+| then annotate ${share} of them ($candidate_cpu CPU s each) | $proj_annotate h |
 | total | $proj_total h |
 EOF
