@@ -1,5 +1,5 @@
 // `sagrid export LABELS_OR_DIR --format omnigibson|mjcf --out DIR [--collision none|hull|decompose]
-// [--legacy-fluidsource]`: simulator exports, headless.
+// [--legacy-fluidsource] [--mesh-root DIR]`: simulator exports, headless.
 #include <CLI/CLI.hpp>
 #include <filesystem>
 #include <iostream>
@@ -16,7 +16,7 @@ void setupExport(CLI::App& root) {
       "parts and mass, misc/metadata.json meta links) or MuJoCo/RoboCasa (MJCF with every mesh "
       "part, collision geoms, inertia and RoboCasa site names)");
   struct Options {
-    std::string input, format, out, collision = "decompose";
+    std::string input, format, out, collision = "decompose", meshRoot;
     int maxParts = 32;
     bool legacyFluidSource = false;
   };
@@ -39,11 +39,15 @@ void setupExport(CLI::App& root) {
   cmd->add_flag("--legacy-fluidsource", o->legacyFluidSource,
                 "OmniGibson: write fluid outlets as 'fluidsource' (OmniGibson before the "
                 "'particlesource' rename)");
+  cmd->add_option("--mesh-root", o->meshRoot,
+                  "Folder the labels' object.mesh may lead into (e.g. the data folder of "
+                  "`annotate --out` labels); by default a mesh must lie in the labels' folder");
   cmd->callback([o] {
     sagrid::ExportOptions options;
     options.collision = *sagrid::parseCollisionMode(o->collision);
     options.maxCollisionParts = o->maxParts;
     options.legacyFluidSource = o->legacyFluidSource;
+    options.meshRoot = o->meshRoot;
     // One line per stage on stderr: enough to see a large mesh is moving, quiet otherwise.
     auto lastStage = std::make_shared<std::string>();
     options.progress = [lastStage](float fraction, const std::string& stage) {

@@ -7,6 +7,7 @@
 
 #include "core/common/atomic_file.h"
 #include "core/common/error.h"
+#include "core/dataset/labels_mesh.h"
 #include "core/labels/labels.h"
 #include "core/mesh/mesh_import.h"
 
@@ -35,7 +36,7 @@ fs::path findMeshFile(const fs::path& dir) {
   return found.size() == 1 ? found.front() : fs::path();
 }
 
-std::vector<DatasetEntry> readDataset(const fs::path& directory) {
+std::vector<DatasetEntry> readDataset(const fs::path& directory, const fs::path& referenceRoot) {
   if (!fs::is_directory(directory)) throw FileError(directory, "dataset folder not found");
   std::vector<DatasetEntry> entries;
   const fs::path manifest = directory / "manifest.jsonl";
@@ -51,8 +52,11 @@ std::vector<DatasetEntry> readDataset(const fs::path& directory) {
         DatasetEntry e;
         e.id = j.at("id").get<std::string>();
         e.category = j.value("category", "");
-        e.mesh = directory / j.at("mesh").get<std::string>();
-        e.labels = directory / j.value("labels", e.id + "/labels.json");
+        const std::string where = manifest.string() + " line " + std::to_string(number);
+        e.mesh = resolveReferenceWithin(directory, j.at("mesh").get<std::string>(), where,
+                                        referenceRoot);
+        e.labels = resolveReferenceWithin(
+            directory, j.value("labels", e.id + "/labels.json"), where, referenceRoot);
         entries.push_back(std::move(e));
       } catch (const nlohmann::json::exception& ex) {
         throw FileError(manifest, "line " + std::to_string(number) +

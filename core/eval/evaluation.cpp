@@ -47,7 +47,7 @@ EvaluationReport evaluateModels(const ModelSet& models, const EvaluationOptions&
   EvaluationReport report;
   report.dataDir =
       fs::is_directory(options.dataDir / "val") ? options.dataDir / "val" : options.dataDir;
-  const auto entries = readDataset(report.dataDir);
+  const auto entries = readDataset(report.dataDir, options.referenceRoot);
   if (entries.empty())
     throw InvalidArgument("dataset " + report.dataDir.string() + " has no objects");
   FeatureOptions features = options.features;

@@ -22,6 +22,8 @@ namespace sagrid {
 
 struct EvaluationOptions {
   std::filesystem::path dataDir;  // a dataset; when it has a val/ split, that is used
+  // Where dataDir's manifest may point (readDataset); empty: inside dataDir only.
+  std::filesystem::path referenceRoot;
   FeatureOptions features;        // from the models; cacheDir empty = DATA/.sagrid-cache
   int symmetries = 8;             // test-time augmentation, as annotate (AnnotateOptions)
   bool coarseToFine = false;      // second pass on a crop, as annotate (AnnotateOptions)

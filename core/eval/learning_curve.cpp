@@ -35,14 +35,19 @@ struct RealObject {
 
 std::string kLabel(int k) { return k == kAllObjects ? "all" : std::to_string(k); }
 
-// A dataset folder that lists `objects` by absolute path (the objects stay where they are).
+// A dataset folder that lists `objects` where they are, relative to `dir` ("../../..."): it is
+// read with the --data folder as readDataset's referenceRoot (manifest paths must not be absolute).
 void writeSubsetDataset(const fs::path& dir, const std::vector<const RealObject*>& objects) {
+  const fs::path from = fs::absolute(dir).lexically_normal();
+  auto relative = [&](const fs::path& file) {
+    return fs::absolute(file).lexically_normal().lexically_relative(from).generic_string();
+  };
   std::string lines;
   for (const auto* o : objects)
     lines += json{{"id", o->entry.id},
                   {"category", o->category},
-                  {"mesh", fs::absolute(o->entry.mesh).lexically_normal().string()},
-                  {"labels", fs::absolute(o->entry.labels).lexically_normal().string()}}
+                  {"mesh", relative(o->entry.mesh)},
+                  {"labels", relative(o->entry.labels)}}
                  .dump() +
              "\n";
   fs::create_directories(dir);
@@ -228,7 +233,7 @@ LearningCurveReport runLearningCurve(const LearningCurveOptions& options) {
         const fs::path dataDir = foldDir / (name + ".k" + std::to_string(used));
         writeSubsetDataset(dataDir, {ofType.begin(), ofType.begin() + used});
         DatasetTrainingOptions t;
-        t.datasets.push_back({dataDir, 1.0, "data", features.cacheDir});
+        t.datasets.push_back({dataDir, 1.0, "data", features.cacheDir, options.dataDir});
         if (replay) t.datasets.push_back(*replay);  // weight 1: drawn 1:1 with the k objects
         t.init = options.initDir;
         t.modelName = name;
@@ -260,6 +265,7 @@ LearningCurveReport runLearningCurve(const LearningCurveOptions& options) {
       if (!evaluated.count(kUsed)) {
         EvaluationOptions e;
         e.dataDir = foldDir / "test";
+        e.referenceRoot = options.dataDir;  // the subset lists --data's objects
         e.features = features;
         const EvaluationReport r = evaluateModels(ModelSet::load(modelsDir), e);
         std::vector<LearningCurvePoint> points;

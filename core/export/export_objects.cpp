@@ -1,34 +1,16 @@
 #include "core/export/export_objects.h"
 
 #include <algorithm>
-#include <cctype>
 #include <system_error>
 
-#include "core/common/contained_paths.h"
 #include "core/common/error.h"
+#include "core/dataset/labels_mesh.h"
 #include "core/export/mjcf_export.h"
 #include "core/export/omnigibson_export.h"
-#include "core/mesh/mesh_import.h"
 
 namespace sagrid {
 
 namespace fs = std::filesystem;
-
-fs::path meshForLabels(const ObjectLabels& labels, const fs::path& labelsPath) {
-  const fs::path dir = labelsPath.parent_path().empty() ? fs::path(".") : labelsPath.parent_path();
-  if (!labels.object.mesh.empty()) return resolveContained(dir, labels.object.mesh, labelsPath);
-  std::error_code ec;
-  std::vector<fs::path> items;
-  for (const auto& item : fs::directory_iterator(dir, ec)) items.push_back(item.path());
-  std::sort(items.begin(), items.end());  // the same mesh every run
-  for (const auto& path : items) {
-    std::string ext = path.extension().string();
-    for (auto& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    const auto& supported = supportedMeshExtensions();
-    if (std::find(supported.begin(), supported.end(), ext) != supported.end()) return path;
-  }
-  throw FileError(labelsPath, "no mesh named in object.mesh and none found beside it");
-}
 
 namespace {
 
@@ -64,7 +46,7 @@ std::vector<SimulatorExport> exportObjects(const fs::path& input, const std::str
   std::vector<SimulatorExport> results;
   for (const auto& labelsPath : labelFiles(input)) {
     const ObjectLabels labels = readLabels(labelsPath);
-    const fs::path mesh = meshForLabels(labels, labelsPath);
+    const fs::path mesh = meshForLabels(labels, labelsPath, options.meshRoot);
     results.push_back(format == "mjcf" ? exportMjcf(labels, mesh, outDir, batch, labelsPath)
                                        : exportOmniGibson(labels, mesh, outDir, batch, labelsPath));
   }

@@ -1,6 +1,7 @@
 // Batch simulator export behind `sagrid export`: finds the objects under a path (a labels.json,
 // a mesh with labels beside it, or a folder of object folders) and exports each, with names
-// unique across the run. A labels file's object.mesh is resolved inside its own folder.
+// unique across the run. A labels file's object.mesh is resolved inside its own folder, or inside
+// ExportOptions::meshRoot when the user names one (meshForLabels, core/dataset/labels_mesh.h).
 #pragma once
 
 #include <filesystem>
@@ -19,10 +20,5 @@ std::vector<SimulatorExport> exportObjects(const std::filesystem::path& input,
                                            const std::string& format,
                                            const std::filesystem::path& outDir,
                                            const ExportOptions& options = {});
-
-// The mesh a labels file describes: object.mesh resolved inside the labels' folder (refused when
-// it leads out), else the one mesh-like file beside it.
-std::filesystem::path meshForLabels(const ObjectLabels& labels,
-                                    const std::filesystem::path& labelsPath);
 
 }  // namespace sagrid

@@ -1,6 +1,7 @@
 // What a simulator export is asked to do (sagrid export flags, the GUI's export menu).
 #pragma once
 
+#include <filesystem>
 #include <functional>
 #include <optional>
 #include <string>
@@ -33,6 +34,10 @@ struct ExportOptions {
   std::function<void(float fraction, const std::string& stage)> progress;
   // Shared by the objects of one batch; null: names are unique within this object only.
   ExportNames* names = nullptr;
+  // A folder the user named (`--mesh-root`): a labels file's object.mesh may lead anywhere inside
+  // it (annotate --out writes "../../data/x/mesh.glb"); empty: only inside the labels' folder.
+  // The rule: core/dataset/labels_mesh.h.
+  std::filesystem::path meshRoot;
 };
 
 }  // namespace sagrid

@@ -147,7 +147,7 @@ DatasetTrainingResult trainFromDataset(const DatasetTrainingOptions& options) {
   std::vector<std::vector<DatasetEntry>> entries;
   std::size_t totalEntries = 0;
   for (const auto& source : sources) {
-    entries.push_back(readDataset(source.dir));
+    entries.push_back(readDataset(source.dir, source.referenceRoot));
     if (entries.back().empty())
       throw InvalidArgument("dataset " + source.dir.string() +
                             " has no objects (expected manifest.jsonl or object folders with "

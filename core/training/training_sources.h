@@ -15,6 +15,8 @@ struct TrainingDataSource {
   double weight = 1;          // relative sampling weight (sample_mixing.h)
   std::string role = "data";  // "data" (what the model is trained or fine-tuned on) or "replay"
   std::filesystem::path cacheDir;  // feature cache; empty = dir/.sagrid-cache
+  // Where dir's manifest may point (readDataset); empty: inside dir only.
+  std::filesystem::path referenceRoot;
 };
 
 // "DIR" or "DIR:w" (w a positive number) -> source with that weight. A suffix after the last ':'

@@ -10,6 +10,7 @@
 #include "core/common/atomic_file.h"
 #include "core/common/error.h"
 #include "core/common/log.h"
+#include "core/dataset/labels_mesh.h"
 #include "core/labels/labels.h"
 #include "core/training/dataset_training.h"
 
@@ -26,7 +27,9 @@ std::vector<std::string> trainingTypes(const fs::path& dataset, const std::strin
     const auto entry = nlohmann::json::parse(line, nullptr, false);
     if (entry.is_discarded()) throw FileError(dataset / "manifest.jsonl", "a line is not JSON");
     if (entry.value("category", "") != category) continue;
-    const ObjectLabels labels = readLabels(dataset / entry.value("labels", ""));
+    // Inside the dataset folder only (issue 14: a manifest names no file outside it).
+    const ObjectLabels labels = readLabels(
+        resolveReferenceWithin(dataset, entry.value("labels", ""), dataset / "manifest.jsonl"));
     for (const auto& p : labels.affordances) types.insert(p.type);
   }
   return {types.begin(), types.end()};

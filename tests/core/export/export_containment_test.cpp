@@ -116,6 +116,29 @@ TEST(ExportContainment, ObjectMeshOutsideTheObjectFolderIsRefused) {
   EXPECT_TRUE(test::entriesBelow(root / "out").empty());
 }
 
+// `annotate --out OUT` writes object.mesh relative to OUT/<id>/ ("../../data/x/mesh.obj"):
+// export refuses it unless the user names the data folder as mesh root (export --mesh-root).
+TEST(ExportContainment, AnnotateOutLabelsExportWithTheDataFolderAsMeshRoot) {
+  const auto root = test::freshTempDir();
+  const auto dataLabels = test::writeAnalyticStove(root / "data" / "x");
+  json j = json::parse(readFileBytes(dataLabels));
+  j["object"]["mesh"] = "../../data/x/mesh.obj";
+  fs::create_directories(root / "out" / "x");
+  writeFileAtomic(root / "out" / "x" / "labels.json", j.dump());
+  fs::remove(dataLabels);
+  ExportOptions options;
+  options.collision = CollisionMode::None;
+  EXPECT_THROW(exportObjects(root / "out", "mjcf", root / "export", options), FileError);
+  options.meshRoot = root / "data";
+  const auto results = exportObjects(root / "out", "mjcf", root / "export", options);
+  ASSERT_EQ(results.size(), 1u);
+  EXPECT_TRUE(fs::is_regular_file(results[0].mainFile));
+  // The root widens the folder, not the rule: a climb out of it is still refused.
+  j["object"]["mesh"] = "../../data/../../../../etc/hostname";
+  writeFileAtomic(root / "out" / "x" / "labels.json", j.dump());
+  EXPECT_THROW(exportObjects(root / "out", "mjcf", root / "export2", options), FileError);
+}
+
 // An OBJ naming an MTL outside its folder, or an MTL naming a texture outside, is refused by the
 // exports and by "Add to training set": neither reads it nor copies it anywhere.
 TEST(ExportContainment, MtllibAndTexturesOutsideTheObjectFolderAreRefused) {
