@@ -39,8 +39,16 @@ fs::path resolveReferenceWithin(const fs::path& folder, std::string_view referen
   std::replace(text.begin(), text.end(), '\\', '/');
   const fs::path target = (fs::absolute(base) / fs::path(text)).lexically_normal();
   const fs::path inRoot = target.lexically_relative(fs::absolute(root).lexically_normal());
-  // A target outside the root comes out as "../...": resolveContained refuses it, naming `root`.
-  return resolveContained(root, inRoot.empty() ? ".." : inRoot.generic_string(), referencingFile);
+  // A target outside the root comes out as "../...": resolveContained refuses it.
+  try {
+    return resolveContained(root, inRoot.empty() ? ".." : inRoot.generic_string(),
+                            referencingFile);
+  } catch (const FileError&) {  // the same refusal, showing the reference as the file wrote it
+    throw FileError(referencingFile,
+                    "refusing the referenced file '" + std::string(reference.substr(0, 120)) +
+                        "': it leads outside " + root.string() +
+                        " (a name over 255 bytes or a link leading out counts too)");
+  }
 }
 
 fs::path meshForLabels(const ObjectLabels& labels, const fs::path& labelsPath,
