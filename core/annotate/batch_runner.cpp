@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 
@@ -15,6 +16,9 @@ namespace sagrid {
 namespace fs = std::filesystem;
 
 namespace {
+// The least time a worker gets to load its models when objects have a time limit.
+constexpr double kSetupLimitSeconds = 300;
+
 std::string hostName() {
   char name[256] = {};
   if (::gethostname(name, sizeof name - 1) != 0) return "unknown";
@@ -46,8 +50,9 @@ void workerBody(const std::vector<MeshFile>& files, std::size_t first, std::size
     } catch (const std::exception& e) {
       result = {{"status", batch_status::kFailed}, {"error", e.what()}};
     }
-    report("done " + std::to_string(i) + " " +
-           result.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace));  // non-UTF-8 paths
+    report(
+        "done " + std::to_string(i) + " " +
+        result.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace));  // non-UTF-8 paths
   }
 }
 
@@ -137,8 +142,15 @@ BatchSummary runBatch(const std::vector<MeshFile>& files, const BatchOptions& op
       workerBody(files, next, options.objectsPerWorker, setup, report);
     });
     std::string line;
-    // Setup (model loading) has no time limit: it does not depend on the objects.
-    if (worker.readLine(line, 0) != WorkerProcess::Read::Line || line.rfind("fatal ", 0) == 0) {
+    // Setup (model loading) does not depend on the objects: a generous limit of its own, and a
+    // setup that hangs stops the batch (every worker would hang the same way).
+    const double setupLimit =
+        options.timeLimitSeconds > 0 ? std::max(options.timeLimitSeconds, kSetupLimitSeconds) : 0;
+    const auto ready = worker.readLine(line, setupLimit);
+    if (ready == WorkerProcess::Read::Timeout)
+      throw Error("the worker process did not load its models within " +
+                  std::to_string(static_cast<int>(setupLimit)) + " s");
+    if (ready != WorkerProcess::Read::Line || line.rfind("fatal ", 0) == 0) {
       if (line.rfind("fatal ", 0) == 0) throw Error(line.substr(6));
       throw Error("the worker process could not start (" + worker.endDescription() + ")");
     }
@@ -147,12 +159,15 @@ BatchSummary runBatch(const std::vector<MeshFile>& files, const BatchOptions& op
     bool replaced = false;
     while (!replaced && next < files.size()) {
       std::string rest;
-      const auto r = worker.readLine(line, 0);
-      if (r == WorkerProcess::Read::Ended) {
-        // Ended between two objects (it crashed after a report): the next object is counted
-        // as failed so that a worker that keeps dying cannot loop forever.
+      const auto r = worker.readLine(line, options.timeLimitSeconds);
+      if (r != WorkerProcess::Read::Line) {
+        // Ended or stalled between two objects (it crashed or was stopped after a report): the
+        // next object is counted as failed so that a worker that keeps dying cannot loop forever.
+        if (r == WorkerProcess::Read::Timeout) worker.kill();
         record(next, {{"status", batch_status::kFailed},
-                      {"error", "the worker process " + worker.endDescription() +
+                      {"error", "the worker process " +
+                                    (r == WorkerProcess::Read::Timeout ? std::string("stalled")
+                                                                       : worker.endDescription()) +
                                     " before starting this object"}});
         ++next;
         replaced = true;

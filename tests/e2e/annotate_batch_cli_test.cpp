@@ -198,6 +198,30 @@ TEST(AnnotateBatchCli, AFifoNamedLikeAMeshFailsAloneRefusedOrAtTheTimeLimit) {
   EXPECT_EQ(statuses.at("stove_s35_00000"), "annotated");
 }
 
+TEST(AnnotateBatchCli, AWorkerThatStopsMidObjectFailsThatObjectAtTheTimeLimit) {
+  const fs::path dir = test::freshTempDir();
+  gen::generateDataset({{"stove", 3, 37}}, gen::MeshFormat::Obj, dir / "in");
+  // Once the first object has started (its progress line), the worker is frozen with SIGSTOP: to
+  // the batch it is an importer that never returns.
+  const std::string script =
+      q(test::sagridBinary()) + " " + annotate(dir / "in", dir / "out", " --time-limit 3") + " > " +
+      q(dir / "run.log") +
+      " 2>&1 & parent=$!; "
+      "for i in $(seq 600); do grep -q stove_s37 " +
+      q(dir / "run.log") +
+      " && break; sleep 0.05; done; "
+      "worker=$(pgrep -P $parent | head -n 1); kill -STOP $worker; wait $parent; echo EXIT=$?; "
+      "cat " +
+      q(dir / "run.log");
+  const auto r = runCommand("bash -c " + shellQuote(script));
+  EXPECT_THAT(r.output, HasSubstr("EXIT=0"));
+  EXPECT_THAT(r.output, HasSubstr("no result within the time limit of 3 s"));
+  EXPECT_THAT(r.output, HasSubstr("annotated 2 of 3 objects"));
+  std::size_t failed = 0;
+  for (const auto& [id, status] : lastStatuses(dir / "out")) failed += status == "failed";
+  EXPECT_EQ(failed, 1u) << r.output;
+}
+
 TEST(AnnotateBatchCli, FilterListsTheCandidatesThatAnnotateTakes) {
   const fs::path dir = test::freshTempDir();
   gen::generateDataset({{"stove", 2, 36}, {"sink", 2, 36}}, gen::MeshFormat::Obj, dir / "in");
