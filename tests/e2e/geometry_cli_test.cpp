@@ -7,12 +7,14 @@
 #include <nlohmann/json.hpp>
 
 #include "core/io/npz.h"
+#include "support/import_errors.h"
 #include "support/test_paths.h"
 
 namespace sagrid {
 namespace {
 namespace fs = std::filesystem;
 using ::testing::HasSubstr;
+using test::writeFile;
 using test::runSagrid;
 using test::shellQuote;
 
@@ -88,11 +90,6 @@ TEST(VoxelizeCommand, PlyPointsAtVoxelCentres) {
 }
 
 // ---- bad input
-
-fs::path writeFile(const fs::path& path, const std::string& bytes) {
-  std::ofstream(path, std::ios::binary) << bytes;
-  return path;
-}
 
 void expectOneLineError(const fs::path& mesh, const std::string& problem) {
   SCOPED_TRACE(mesh.string());

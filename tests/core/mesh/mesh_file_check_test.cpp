@@ -14,32 +14,17 @@
 
 #include "core/common/error.h"
 #include "core/mesh/mesh_import.h"
+#include "support/import_errors.h"
 #include "support/test_paths.h"
 
 namespace sagrid {
 namespace {
 namespace fs = std::filesystem;
 using ::testing::HasSubstr;
+using test::writeFile;
+using test::importError;
 
 const fs::path kBad = fs::path(SAGRID_TEST_DATA_DIR) / "bad";
-
-fs::path writeFile(const fs::path& path, const std::string& bytes) {
-  std::ofstream(path, std::ios::binary) << bytes;
-  return path;
-}
-
-std::string importError(const fs::path& path, const ImportOptions& options = {}) {
-  try {
-    importMesh(path, options);
-  } catch (const FileError& e) {
-    const std::string message = e.what();
-    EXPECT_EQ(message.rfind(path.string() + ": ", 0), 0u) << message;
-    EXPECT_EQ(message.find('\n'), std::string::npos) << message;
-    return message;
-  }
-  ADD_FAILURE() << path << " imported without error";
-  return "";
-}
 
 void put32(std::string& out, std::uint32_t v) {
   for (int k = 0; k < 4; ++k) out += static_cast<char>((v >> (8 * k)) & 0xFF);

@@ -9,31 +9,15 @@
 #include "core/common/atomic_file.h"
 #include "core/common/error.h"
 #include "core/common/sha256.h"
+#include "support/import_errors.h"
 #include "support/test_paths.h"
 
 namespace sagrid {
 namespace {
 namespace fs = std::filesystem;
 using ::testing::HasSubstr;
-
-fs::path writeFile(const fs::path& path, const std::string& bytes) {
-  std::ofstream(path, std::ios::binary) << bytes;
-  return path;
-}
-
-// The FileError message importMesh gives for `path`; fails the test if it imports.
-std::string importError(const fs::path& path, const ImportOptions& options = {}) {
-  try {
-    importMesh(path, options);
-  } catch (const FileError& e) {
-    const std::string message = e.what();
-    EXPECT_EQ(message.rfind(path.string() + ": ", 0), 0u) << message;  // names the file first
-    EXPECT_EQ(message.find('\n'), std::string::npos) << "one line: " << message;
-    return message;
-  }
-  ADD_FAILURE() << path << " imported without error";
-  return "";
-}
+using test::writeFile;
+using test::importError;
 
 const char* kTwoObjectsObj = R"(mtllib two.mtl
 o first
