@@ -6,6 +6,7 @@
 
 #include "core/labels/labels.h"
 #include "core/mesh/mesh.h"
+#include "support/analytic_meshes.h"
 #include "support/test_paths.h"
 #include "ui/document/annotation_document.h"
 #include "ui/document/point_commands.h"
@@ -14,11 +15,7 @@ namespace sagrid::ui {
 namespace {
 
 std::shared_ptr<const Mesh> plate() {
-  auto mesh = std::make_shared<Mesh>();
-  mesh->positions = {{-0.5f, -0.5f, 0}, {0.5f, -0.5f, 0}, {0.5f, 0.5f, 0}, {-0.5f, 0.5f, 0}};
-  mesh->triangles = {{0, 1, 2}, {0, 2, 3}};
-  mesh->computeVertexNormals();
-  return mesh;
+  return std::make_shared<Mesh>(test::quadZ({-0.5f, -0.5f}, {0.5f, 0.5f}, 0.0f));
 }
 
 ObjectLabels twoPoints() {

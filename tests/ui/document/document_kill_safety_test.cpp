@@ -16,6 +16,7 @@
 #include "core/common/error.h"
 #include "core/labels/labels.h"
 #include "core/mesh/mesh.h"
+#include "support/analytic_meshes.h"
 #include "support/output_check.h"
 #include "support/test_paths.h"
 #include "ui/document/annotation_document.h"
@@ -28,11 +29,7 @@ namespace fs = std::filesystem;
 constexpr int kPoints = 300;  // ~60 KB of labels.json: each save takes a while to write
 
 std::shared_ptr<const Mesh> plate() {
-  auto mesh = std::make_shared<Mesh>();
-  mesh->positions = {{-0.5f, -0.5f, 0}, {0.5f, -0.5f, 0}, {0.5f, 0.5f, 0}, {-0.5f, 0.5f, 0}};
-  mesh->triangles = {{0, 1, 2}, {0, 2, 3}};
-  mesh->computeVertexNormals();
-  return mesh;
+  return std::make_shared<Mesh>(test::quadZ({-0.5f, -0.5f}, {0.5f, 0.5f}, 0.0f));
 }
 
 AffordancePoint pointAt(float x, float y) {
