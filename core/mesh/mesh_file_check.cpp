@@ -9,6 +9,7 @@
 #include "core/common/error.h"
 #include "core/io/json_file.h"
 #include "core/io/little_endian.h"
+#include "core/mesh/fbx_structure_check.h"
 
 namespace sagrid {
 namespace fs = std::filesystem;
@@ -517,6 +518,7 @@ MeshFileFacts checkMeshFile(std::string_view bytes, const std::string& extension
   if (format == "binary glTF (GLB)") checkGlb(bytes, path);
   if (format == "glTF JSON") checkGltfNodes(parseJsonDocument(bytes, path), path);
   if (format == "COLLADA XML" || extension == ".dae") checkXmlDepth(bytes, path);
+  if (format == "binary FBX" || format == "ASCII FBX") checkFbxStructure(bytes, format == "binary FBX", path);
   if (format == "PLY") return PlyCheck(bytes, path).run();
   if (extension == ".stl" && format != "ASCII STL") checkBinaryStlSize(bytes, path);
   if (extension == ".obj") return checkObj(bytes);
