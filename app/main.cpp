@@ -9,6 +9,7 @@
 #include "app/command_registry.h"
 #include "core/common/error.h"
 #include "core/common/log.h"
+#include "core/mesh/import_time_limit.h"
 #include "core/mesh/mesh_import.h"
 
 int main(int argc, char** argv) {
@@ -17,14 +18,22 @@ int main(int argc, char** argv) {
   root.set_version_flag("--version", std::string("sagrid ") + SAGRID_VERSION);
   root.require_subcommand(1);
   bool verbose = false, lenient = false;
+  double importSeconds = 120;
   root.add_flag("-v,--verbose", verbose, "Log progress details to stderr");
   root.add_flag("--lenient", lenient,
                 "Use what can be read of a truncated mesh file (with a warning) instead of "
                 "refusing it");
+  root.add_option("--import-time-limit", importSeconds,
+                  "Seconds one mesh import may take (0 = no limit); a file that takes longer is "
+                  "an error naming it")
+      ->capture_default_str()
+      ->check(CLI::NonNegativeNumber);
   root.fallthrough();  // root options may follow the subcommand: sagrid info --lenient x.obj
   root.parse_complete_callback([&] {
     if (verbose) sagrid::setLogLevel(spdlog::level::info);
     sagrid::setLenientImportByDefault(lenient);
+    // Where a loader ignores the cancel, the command line ends the process with the error.
+    sagrid::setImportTimeLimit({importSeconds, true});
   });
 
   auto& entries = sagrid::app::commandRegistry();

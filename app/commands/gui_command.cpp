@@ -3,6 +3,7 @@
 #include <CLI/CLI.hpp>
 
 #include "app/command_registry.h"
+#include "core/mesh/import_time_limit.h"
 #include "ui/app/app.h"
 #include "ui/app/headless_render.h"
 
@@ -29,6 +30,9 @@ void setupGui(CLI::App& root) {
   cmd->add_option("--models", options->models, "Model folder (default resources/models)");
   cmd->add_option("--size", options->size, "Window size WIDTHxHEIGHT")->capture_default_str();
   cmd->callback([options] {
+    // A stuck import is cancelled where assimp allows it; the GUI never ends the process (that
+    // would lose unsaved work).
+    sagrid::setImportTimeLimit({sagrid::importTimeLimit().seconds, false});
     sagrid::ui::ContextOptions contextOptions;
     sagrid::ui::parseSize(options->size, contextOptions.width, contextOptions.height);
     contextOptions.title = "SAGrid";

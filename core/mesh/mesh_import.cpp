@@ -24,6 +24,7 @@
 #include "core/common/sha256.h"
 #include "core/common/value_ranges.h"
 #include "core/grid/normalization.h"
+#include "core/mesh/import_time_limit.h"
 #include "core/mesh/mesh_file_check.h"
 #include "core/mesh/up_axis_detection.h"
 
@@ -392,8 +393,10 @@ Mesh importMesh(const fs::path& path, const ImportOptions& options) {
   const std::string parsed = facts.truncation.empty() || bytes.rfind('\n') == std::string::npos
                                  ? bytes
                                  : bytes.substr(0, bytes.rfind('\n') + 1);
+  const ImportDeadline deadline(path, importTimeLimit());
   Assimp::Importer importer;
   importer.SetIOHandler(new ContainedIOSystem(path, parsed));  // the importer owns it
+  if (auto* progress = deadline.newProgressHandler()) importer.SetProgressHandler(progress);
   // Keep the file's own coordinates: SAGrid does the up-axis turn itself (labels are written in
   // the file's frame), so assimp's Collada z-up to y-up rotation must not happen.
   importer.SetPropertyBool(AI_CONFIG_IMPORT_COLLADA_IGNORE_UP_DIRECTION, true);
@@ -401,6 +404,9 @@ Mesh importMesh(const fs::path& path, const ImportOptions& options) {
   const unsigned flags = aiProcess_Triangulate | aiProcess_JoinIdenticalVertices |
                          aiProcess_SortByPType | aiProcess_ValidateDataStructure;
   const aiScene* scene = importer.ReadFile(path.string(), flags);
+  // Past the deadline the result is refused even where the loader finished: the limit is the
+  // user's (most loaders ignore the cancel).
+  if (deadline.expired()) throw FileError(path, deadline.problem());
   if (!scene) {
     const std::string reason = oneLine(importer.GetErrorString());
     // Assimp's validator rejects meshes without faces; say it in the user's terms.

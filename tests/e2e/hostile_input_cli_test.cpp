@@ -9,6 +9,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include "support/fbx_files.h"
 #include "support/test_paths.h"
 
 namespace sagrid {
@@ -30,6 +31,7 @@ std::vector<BadMesh> badMeshes(const fs::path& dir) {
   for (int i = 0; i < 20000; ++i) deep += "{\"children\":[" + std::to_string(i + 1) + "]},";
   deep += "{}]}";
   std::ofstream(dir / "deep.gltf") << deep;
+  std::ofstream(dir / "deep.fbx") << test::nestedAsciiFbx(20000);
   ::mkfifo((dir / "fifo.obj").c_str(), 0600);
   return {{kBad / "ascii_truncated_half.ply", "(truncated?)"},
           {kBad / "binary_cut_in_header.ply", "no end_header"},
@@ -38,6 +40,7 @@ std::vector<BadMesh> badMeshes(const fs::path& dir) {
           {kBad / "glb_chunk_length_2_2gb.glb", "more than the file holds"},
           {kBad / "coordinates_1e30.obj", "coordinates must be within"},
           {dir / "deep.gltf", "nests its glTF nodes more than 256 levels deep"},
+          {dir / "deep.fbx", "nests its FBX models more than 256 levels deep"},
           {dir / "fifo.obj", "is a FIFO"},
           {"/dev/zero", "is a device, not a regular file"}};
 }
@@ -89,6 +92,19 @@ TEST(HostileInputCli, LenientReadsATruncatedObjWithAWarning) {
   EXPECT_THAT(r.output, HasSubstr("incomplete file (--lenient): it ends in the middle of a line; "
                                   "read 2 triangles"));
   EXPECT_EQ(test::runSagrid("--lenient info " + mesh).exitCode, 0);
+}
+
+// --import-time-limit (a root option, default 120 s) bounds every import with one clear line.
+TEST(HostileInputCli, ImportTimeLimitIsOneClearLine) {
+  const fs::path mesh = test::freshTempDir() / "quad.obj";
+  std::ofstream(mesh) << "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nf 1 2 3\nf 2 4 3\n";
+  const auto r = test::runSagrid("info " + shellQuote(mesh.string()) + " --import-time-limit 1e-9");
+  EXPECT_EQ(r.exitCode, 1) << r.output;
+  EXPECT_EQ(r.output, "sagrid: error: " + mesh.string() +
+                          ": import did not finish within 1e-09 s (--import-time-limit); the file "
+                          "may be malformed or too large\n");
+  EXPECT_EQ(test::runSagrid("info " + shellQuote(mesh.string()) + " --import-time-limit 0").exitCode, 0);
+  EXPECT_EQ(test::runSagrid("info " + shellQuote(mesh.string()) + " --import-time-limit -1").exitCode, 2);
 }
 
 // A Latin-1 folder name (not UTF-8) made extract and annotate stop with "internal error" (the

@@ -13,6 +13,7 @@
 
 #include "core/common/error.h"
 #include "core/mesh/mesh_import.h"
+#include "support/fbx_files.h"
 #include "support/import_errors.h"
 #include "support/test_paths.h"
 
@@ -23,32 +24,11 @@ using ::testing::HasSubstr;
 using test::importError;
 using test::writeFile;
 
-using Links = std::vector<std::pair<int, int>>;  // child, parent (0 = the scene root)
+using Links = test::FbxLinks;
+using test::asciiFbx;
+using test::nestedAsciiFbx;
 
-// ASCII FBX 7.4 with one triangle (object 1) under the models 100..100+models-1 linked by `links`;
-// the triangle hangs under `meshParent`.
-std::string asciiFbx(int models, const Links& links, int meshParent) {
-  std::string text =
-      "; FBX 7.4.0 project file\nFBXHeaderExtension:  {\n\tFBXHeaderVersion: 1003\n"
-      "\tFBXVersion: 7400\n}\nObjects:  {\n\tGeometry: 1, \"Geometry::tri\", \"Mesh\" {\n"
-      "\t\tVertices: *9 {\n\t\t\ta: 0,0,0,1,0,0,0,1,0\n\t\t}\n"
-      "\t\tPolygonVertexIndex: *3 {\n\t\t\ta: 0,1,-3\n\t\t}\n\t}\n";
-  for (int m = 0; m < models; ++m)
-    text += "\tModel: " + std::to_string(100 + m) + ", \"Model::n" + std::to_string(m) +
-            "\", \"Null\" {\n\t\tShading: T ; a comment with { and \"\n\t}\n";
-  text += "}\nConnections:  {\n";
-  for (const auto& [child, parent] : links)
-    text += "\tC: \"OO\", " + std::to_string(child) + ", " + std::to_string(parent) + "\n";
-  text += "\tC: \"OO\", 1, " + std::to_string(meshParent) + "\n}\n";
-  return text;
-}
-
-// Models 100..100+depth-1, each the child of the one before.
-Links chain(int depth) {
-  Links links{{100, 0}};
-  for (int m = 1; m < depth; ++m) links.push_back({100 + m, 99 + m});
-  return links;
-}
+Links chain(int depth) { return test::fbxChain(depth); }
 
 // Binary FBX 7400 (32-bit offsets): records are built inside out.
 struct Record {
@@ -124,13 +104,13 @@ std::string checkError(const std::string& bytes, bool binary) {
 
 TEST(FbxStructureCheck, AsciiModelsNested20000DeepAreRefusedBeforeAssimpRecurses) {
   const fs::path dir = test::freshTempDir();
-  const fs::path deep = writeFile(dir / "deep.fbx", asciiFbx(20000, chain(20000), 100 + 19999));
+  const fs::path deep = writeFile(dir / "deep.fbx", nestedAsciiFbx(20000));
   EXPECT_THAT(importError(deep), HasSubstr("nests its FBX models more than 256 levels deep"));
   // A reasonable hierarchy still imports.
-  const Mesh mesh = importMesh(writeFile(dir / "ok.fbx", asciiFbx(50, chain(50), 149)));
+  const Mesh mesh = importMesh(writeFile(dir / "ok.fbx", nestedAsciiFbx(50)));
   EXPECT_EQ(mesh.triangles.size(), 1u);
-  EXPECT_NO_THROW(checkFbxStructure(asciiFbx(256, chain(256), 355), false, "scene.fbx"));
-  EXPECT_THAT(checkError(asciiFbx(257, chain(257), 356), false), HasSubstr("more than 256 levels"));
+  EXPECT_NO_THROW(checkFbxStructure(nestedAsciiFbx(256), false, "scene.fbx"));
+  EXPECT_THAT(checkError(nestedAsciiFbx(257), false), HasSubstr("more than 256 levels"));
 }
 
 TEST(FbxStructureCheck, CyclesAndExponentialSharingAreRefused) {
