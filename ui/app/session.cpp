@@ -245,6 +245,29 @@ void Session::frameObject() {
   if (m_document) m_camera.frame(m_document->mesh().bounds());
 }
 
+void Session::frameSelection() {
+  if (!m_document) return;
+  const int selected = m_document->selected();
+  const Eigen::AlignedBox3f bounds = m_document->mesh().bounds();
+  if (selected < 0) return frameObject();
+  const Eigen::Vector3f point = m_document->pointInView(selected);
+  // A box a tenth of the object's diagonal around the point (at least 5 cm where units are
+  // known), unless the view already shows that close-up.
+  const float diagonal = bounds.diagonal().norm();
+  float half = 0.05f * diagonal;
+  if (m_document->unitsKnown()) half = std::max(half, 0.025f / m_document->metersPerUnit());
+  half = std::min(half, 0.5f * diagonal);
+  const Eigen::Vector3f corner = Eigen::Vector3f::Constant(half);
+  const Eigen::Vector3f low = point - corner, high = point + corner;
+  const Eigen::AlignedBox3f closeUp(low, high);
+  const bool alreadyClose = (m_camera.target() - point).norm() < 1e-3f * diagonal &&
+                            m_camera.distance() < 0.5f * diagonal;
+  if (alreadyClose) return frameObject();
+  const float yaw = m_camera.yaw(), pitch = m_camera.pitch();
+  m_camera.frame(closeUp);
+  m_camera.set(m_camera.target(), m_camera.distance(), yaw, pitch);  // keep the viewing direction
+}
+
 void Session::setViewport(const ViewportRect& rect) {
   m_viewport = rect;
   m_camera.setViewport(std::max(1, int(rect.width)), std::max(1, int(rect.height)));

@@ -65,6 +65,9 @@ class Session {
 
   // View -----------------------------------------------------------------------------------------
   void frameObject();
+  // F: a close-up of the selected point (a tap on a 2 m counter fills the view); pressed again,
+  // or with nothing selected, the whole object.
+  void frameSelection();
   Camera& camera() { return m_camera; }
   const Camera& camera() const { return m_camera; }
   ViewSettings& view() { return m_view; }

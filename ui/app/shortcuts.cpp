@@ -21,7 +21,7 @@ const std::vector<ShortcutHelp>& shortcutHelp() {
       {"1-9", "current type (and the selected point's type)"},
       {"N / P", "next / previous object"},
       {"S", "skip object"},
-      {"F", "frame the object"},
+      {"F", "close-up of the selected point; again (or none selected): the whole object"},
       {"W", "wireframe"},
       {"V", "distance field on/off"},
       {"Ctrl+Z", "undo"},
@@ -86,7 +86,7 @@ bool handleShortcuts(const std::vector<InputEvent>& events, Session& session,
         session.skip();
         break;
       case GLFW_KEY_F:
-        session.frameObject();
+        session.frameSelection();
         break;
       case GLFW_KEY_W:
         session.view().wireframe = !session.view().wireframe;

@@ -56,7 +56,10 @@ bool drawMainMenu(Session& session, FileBrowser& browser) {
     ImGui::MenuItem("Axes", nullptr, &v.showAxes);
     ImGui::MenuItem("Panels", nullptr, &v.showPanels);
     ImGui::Separator();
-    if (ImGui::MenuItem("Frame object", "F")) session.frameObject();
+    if (ImGui::MenuItem("Frame object")) session.frameObject();
+    if (ImGui::MenuItem("Close-up of the selected point", "F", false,
+                        session.document() && session.document()->selected() >= 0))
+      session.frameSelection();
     if (ImGui::MenuItem("Screenshot", "F12")) session.screenshotRequested = true;
     ImGui::EndMenu();
   }

@@ -57,6 +57,36 @@ TEST(Interaction, ClickSelectsAcceptWithAAndDeleteWithDel) {
   EXPECT_EQ(s.document().selected(), -1);
 }
 
+// F with a point selected: a close-up centred on it, same viewing direction; F again (or with
+// nothing selected): the whole object.
+TEST(Interaction, FFramesTheSelectedPointThenTheObject) {
+  const auto dir = sagrid::test::freshTempDir();
+  ScriptedApp s(dir);
+  Camera& camera = s.app->session().camera();
+  const float yaw = camera.yaw(), pitch = camera.pitch();
+  s.click(s.pixelOf({-0.3f, -0.3f, 0.0f}));
+  ASSERT_EQ(s.document().selected(), 1);
+  s.key(GLFW_KEY_F);
+  EXPECT_TRUE(camera.target().isApprox(Eigen::Vector3f(-0.3f, -0.3f, 0.0f), 1e-4f));
+  const float closeUp = camera.distance();
+  EXPECT_FLOAT_EQ(camera.yaw(), yaw);
+  EXPECT_FLOAT_EQ(camera.pitch(), pitch);
+  // The selected point is now in the middle of the viewport.
+  const Eigen::Vector2f centre = s.pixelOf({-0.3f, -0.3f, 0.0f});
+  const ViewportRect& viewport = s.app->session().viewport();
+  EXPECT_NEAR(centre.x(), viewport.x + 0.5f * viewport.width, 1.0f);
+  EXPECT_NEAR(centre.y(), viewport.y + 0.5f * viewport.height, 1.0f);
+  s.key(GLFW_KEY_F);  // again: the whole object
+  const float whole = camera.distance();
+  EXPECT_LT(closeUp, 0.2f * whole);
+  EXPECT_TRUE(camera.target().isApprox(Eigen::Vector3f(0, 0, 0.1f), 1e-4f));
+  s.key(GLFW_KEY_F);  // and the close-up again
+  EXPECT_FLOAT_EQ(camera.distance(), closeUp);
+  s.key(GLFW_KEY_ESCAPE);  // nothing selected: the whole object
+  s.key(GLFW_KEY_F);
+  EXPECT_FLOAT_EQ(camera.distance(), whole);
+}
+
 TEST(Interaction, ShiftClickAddsPointOfCurrentTypeOnSurface) {
   const auto dir = sagrid::test::freshTempDir();
   ScriptedApp s(dir);
