@@ -61,6 +61,7 @@ void setupRender(CLI::App& root) {
     sagrid::ui::RenderOptions render;
     std::string mesh, labels, screenshot, backend = "egl", size = "1280x800", fieldType, models;
     float yaw = 0, pitch = 0;
+    int closeUp = 0;
   };
   auto o = std::make_shared<Options>();
   cmd->add_option("mesh", o->mesh, "Mesh file")->required();
@@ -78,7 +79,10 @@ void setupRender(CLI::App& root) {
                   "Run SAGrid with the models in this folder first (predicted points and field)");
   auto* yaw = cmd->add_option("--yaw", o->yaw, "Camera azimuth in degrees about +z");
   auto* pitch = cmd->add_option("--pitch", o->pitch, "Camera elevation in degrees");
-  cmd->callback([o, yaw, pitch] {
+  auto* closeUp = cmd->add_option("--close-up", o->closeUp,
+                                  "Frame point N (1-based, as the Points panel numbers them) in a "
+                                  "close-up, as F does in the GUI");
+  cmd->callback([o, yaw, pitch, closeUp] {
     sagrid::ui::RenderOptions& r = o->render;
     r.mesh = o->mesh;
     r.labels = o->labels;
@@ -90,6 +94,7 @@ void setupRender(CLI::App& root) {
     sagrid::ui::parseSize(o->size, r.width, r.height);
     if (yaw->count()) r.yawDegrees = o->yaw;
     if (pitch->count()) r.pitchDegrees = o->pitch;
+    if (closeUp->count()) r.closeUpPoint = o->closeUp;
     sagrid::ui::renderScreenshot(r);
   });
 }

@@ -71,6 +71,14 @@ void renderScreenshot(const RenderOptions& options) {
                             ": the object has no field of that type");
     view.field.typeMask = mask;
   }
+  if (options.closeUpPoint) {
+    const int count = static_cast<int>(session.document()->points().size());
+    if (*options.closeUpPoint < 1 || *options.closeUpPoint > count)
+      throw InvalidArgument("--close-up " + std::to_string(*options.closeUpPoint) + ": the object has " +
+                            std::to_string(count) + " points (numbered from 1)");
+    session.document()->select(*options.closeUpPoint - 1);
+    session.frameSelection();
+  }
   if (options.yawDegrees || options.pitchDegrees) {
     Camera& camera = session.camera();
     const float yaw =

@@ -22,6 +22,8 @@ struct RenderOptions {
   bool showPanels = true;
   bool wireframe = false;
   std::optional<float> yawDegrees, pitchDegrees;
+  // Frame point N (1-based, as the Points panel numbers them) in a close-up, as F does in the GUI.
+  std::optional<int> closeUpPoint;
 };
 
 // Throws sagrid::Error when the context, the mesh or the output cannot be used.
