@@ -26,7 +26,8 @@ struct FbxGraph {
 
 void refuseDepth(const fs::path& path, const char* what) {
   throw FileError(path, std::string("nests its FBX ") + what + " more than " +
-                            std::to_string(kMaxSceneDepth) + " levels deep; SAGrid reads at most that many");
+                            std::to_string(kMaxSceneDepth) +
+                            " levels deep; SAGrid reads at most that many");
 }
 
 // ---- binary FBX: records are (end offset, property count, property bytes, name, properties,
@@ -68,7 +69,8 @@ class BinaryFbxScanner {
       }
       const std::uint64_t nameAt = at + headerSize;
       const std::uint64_t propertiesAt = nameAt + nameLength;
-      if (end <= at || end > ends.back() || propertiesAt > end || propertyBytes > end - propertiesAt) {
+      if (end <= at || end > ends.back() || propertiesAt > end ||
+          propertyBytes > end - propertiesAt) {
         fail("binary FBX record at byte " + std::to_string(at) +
              " declares an end outside the file or its parent");
       }
@@ -130,7 +132,10 @@ class BinaryFbxScanner {
           at += n;
           break;
         }
-        case 'Y': case 'C': case 'F': case 'D': {
+        case 'Y':
+        case 'C':
+        case 'F':
+        case 'D': {
           const std::size_t n = type == 'Y' ? 2 : type == 'C' ? 1 : type == 'F' ? 4 : 8;
           if (!fits(n)) return out;
           out.emplace_back();
@@ -158,12 +163,13 @@ std::vector<std::string> asciiValues(std::string_view text) {
     const char c = text[i];
     if (c == '"') {
       const std::size_t close = text.find('"', i + 1);
-      out.emplace_back(text.substr(i + 1, (close == std::string_view::npos ? text.size() : close) - i - 1));
+      out.emplace_back(
+          text.substr(i + 1, (close == std::string_view::npos ? text.size() : close) - i - 1));
       i = close == std::string_view::npos ? text.size() : close + 1;
     } else if (std::isalnum(static_cast<unsigned char>(c)) || c == '-') {
       const std::size_t start = i;
-      while (i < text.size() && (std::isalnum(static_cast<unsigned char>(text[i])) || text[i] == '-' ||
-                                 text[i] == '.' || text[i] == '_'))
+      while (i < text.size() && (std::isalnum(static_cast<unsigned char>(text[i])) ||
+                                 text[i] == '-' || text[i] == '.' || text[i] == '_'))
         ++i;
       out.emplace_back(text.substr(start, i - start));
     } else {
@@ -203,14 +209,16 @@ FbxGraph scanAsciiFbx(std::string_view b, const fs::path& path) {
       }
     }
     if (colon == std::string_view::npos) continue;
-    const bool opened = !blocks.empty() && blocks.back() == key && line.find('{') != std::string_view::npos;
+    const bool opened =
+        !blocks.empty() && blocks.back() == key && line.find('{') != std::string_view::npos;
     const std::size_t parentLevel = blocks.size() - (opened ? 1 : 0);
     if (parentLevel != 1) continue;
     const std::string& parent = blocks[0];
     const auto values = asciiValues(line.substr(colon + 1));
     if (parent == "Objects" && key == "Model" && !values.empty()) {
       graph.models.push_back(values[0]);
-    } else if (parent == "Connections" && (key == "C" || key == "Connect") && values.size() >= 3 && values[0] == "OO") {
+    } else if (parent == "Connections" && (key == "C" || key == "Connect") && values.size() >= 3 &&
+               values[0] == "OO") {
       graph.objectLinks.push_back({values[1], values[2]});
     }
   }

@@ -1,7 +1,6 @@
 #include "core/mesh/import_time_limit.h"
 
 #include <assimp/ProgressHandler.hpp>
-
 #include <cstdio>
 #include <cstdlib>
 #include <string>

@@ -20,8 +20,8 @@ class ProgressHandler;
 namespace sagrid {
 
 struct ImportTimeLimit {
-  double seconds = 0;        // <= 0: no limit
-  bool exitProcess = false;  // end the process when a loader does not stop by itself
+  double seconds = 0;           // <= 0: no limit
+  bool exitProcess = false;     // end the process when a loader does not stop by itself
   double exitGraceSeconds = 5;  // after the deadline, before exitProcess ends the process
 };
 

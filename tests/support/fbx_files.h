@@ -17,6 +17,8 @@ std::string asciiFbx(int models, const FbxLinks& links, int meshParent);
 FbxLinks fbxChain(int depth);
 
 // A triangle under a chain of `depth` models.
-inline std::string nestedAsciiFbx(int depth) { return asciiFbx(depth, fbxChain(depth), 99 + depth); }
+inline std::string nestedAsciiFbx(int depth) {
+  return asciiFbx(depth, fbxChain(depth), 99 + depth);
+}
 
 }  // namespace sagrid::test

@@ -3,13 +3,13 @@
 // the binary record offsets are checked before assimp parses anything.
 #include "core/mesh/fbx_structure_check.h"
 
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
 #include <cstdint>
 #include <string>
 #include <utility>
 #include <vector>
-
-#include <gmock/gmock.h>
-#include <gtest/gtest.h>
 
 #include "core/common/error.h"
 #include "core/mesh/mesh_import.h"
@@ -20,9 +20,9 @@
 namespace sagrid {
 namespace {
 namespace fs = std::filesystem;
-using ::testing::HasSubstr;
 using test::importError;
 using test::writeFile;
+using ::testing::HasSubstr;
 
 using Links = test::FbxLinks;
 using test::asciiFbx;
@@ -86,7 +86,8 @@ std::string binaryFbx(const std::vector<Record>& top) {
 
 std::string binaryFbx(int models, const Links& links) {
   Record objects{"Objects", {}, 0, {}}, connections{"Connections", {}, 0, {}};
-  for (int m = 0; m < models; ++m) objects.children.push_back(withProperties("Model", "", {100 + m}));
+  for (int m = 0; m < models; ++m)
+    objects.children.push_back(withProperties("Model", "", {100 + m}));
   for (const auto& [child, parent] : links)
     connections.children.push_back(withProperties("C", "OO", {child, parent}));
   return binaryFbx({objects, connections});
@@ -121,8 +122,10 @@ TEST(FbxStructureCheck, CyclesAndExponentialSharingAreRefused) {
   Links diamond{{100, 0}, {101, 0}};
   for (int level = 1; level < 40; ++level)
     for (int a = 0; a < 2; ++a)
-      for (int b = 0; b < 2; ++b) diamond.push_back({100 + 2 * level + a, 100 + 2 * (level - 1) + b});
-  EXPECT_THAT(checkError(asciiFbx(80, diamond, 179), false), HasSubstr("more than 1000000 instances"));
+      for (int b = 0; b < 2; ++b)
+        diamond.push_back({100 + 2 * level + a, 100 + 2 * (level - 1) + b});
+  EXPECT_THAT(checkError(asciiFbx(80, diamond, 179), false),
+              HasSubstr("more than 1000000 instances"));
   // A few shared parents are fine.
   EXPECT_NO_THROW(checkFbxStructure(asciiFbx(4, {{100, 0}, {101, 0}, {102, 100}, {102, 101}}, 102),
                                     false, "scene.fbx"));
@@ -140,7 +143,8 @@ TEST(FbxStructureCheck, BinaryModelHierarchyAndRecordNestingAreBounded) {
               HasSubstr("nests its FBX models more than 256 levels deep"));
   Record nested{"Leaf", {}, 0, {}};
   for (int i = 0; i < 300; ++i) nested = Record{"Level", {}, 0, {nested}};
-  EXPECT_THAT(checkError(binaryFbx({nested}), true), HasSubstr("nests its FBX records more than 256"));
+  EXPECT_THAT(checkError(binaryFbx({nested}), true),
+              HasSubstr("nests its FBX records more than 256"));
 }
 
 TEST(FbxStructureCheck, BinaryRecordOffsetsMustStayInsideTheFileAndTheirParent) {
@@ -156,7 +160,8 @@ TEST(FbxStructureCheck, BinaryRecordOffsetsMustStayInsideTheFileAndTheirParent) 
   EXPECT_THAT(checkError(bytes, true), HasSubstr("declares an end outside"));
   EXPECT_THAT(checkError(good.substr(0, 20), true), HasSubstr("header is truncated"));
   // Through the importer: the file is named and nothing reaches assimp.
-  const fs::path path = writeFile(test::freshTempDir() / "deep.fbx", binaryFbx(20000, chain(20000)));
+  const fs::path path =
+      writeFile(test::freshTempDir() / "deep.fbx", binaryFbx(20000, chain(20000)));
   EXPECT_THAT(importError(path), HasSubstr("nests its FBX models more than 256 levels deep"));
 }
 

@@ -3,11 +3,11 @@
 // process with the same one-line error (never in the GUI).
 #include "core/mesh/import_time_limit.h"
 
-#include <chrono>
-#include <thread>
-
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+
+#include <chrono>
+#include <thread>
 
 #include "core/mesh/mesh_import.h"
 #include "support/import_errors.h"
@@ -22,7 +22,8 @@ using ::testing::HasSubstr;
 std::string gridObj(int n) {
   std::string text;
   for (int i = 0; i <= n; ++i)
-    for (int j = 0; j <= n; ++j) text += "v " + std::to_string(i) + " " + std::to_string(j) + " 0\n";
+    for (int j = 0; j <= n; ++j)
+      text += "v " + std::to_string(i) + " " + std::to_string(j) + " 0\n";
   for (int i = 0; i < n; ++i)
     for (int j = 0; j < n; ++j) {
       const int a = i * (n + 1) + j + 1;
@@ -62,7 +63,8 @@ TEST_F(ImportTimeLimitTest, ALoaderThatIgnoresTheCancelEndsTheCommandLineProcess
         const ImportDeadline deadline("stuck.ply", {0.05, true, 0.05});
         std::this_thread::sleep_for(std::chrono::seconds(10));
       },
-      ::testing::ExitedWithCode(1), "sagrid: error: stuck.ply: import did not finish within 0.05 s");
+      ::testing::ExitedWithCode(1),
+      "sagrid: error: stuck.ply: import did not finish within 0.05 s");
   // Without exitProcess (the GUI) the same scope just ends late.
   const ImportDeadline gui("stuck.ply", {0.01, false, 0.01});
   std::this_thread::sleep_for(std::chrono::milliseconds(50));
