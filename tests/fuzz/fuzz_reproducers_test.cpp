@@ -2,7 +2,7 @@
 // under tests/data/bad/fuzz/<target>/ goes through the same loader as its fuzz target, in a child
 // process with a time limit, and must give a result or a sagrid::Error: no crash, no abort, no
 // other exception, no hang. Folder names are the targets' seed folders: mesh_obj, mesh_ply,
-// mesh_stl, mesh_glb, labels, model_card, npz, npy, architecture.
+// mesh_stl, mesh_glb, mesh_fbx, labels, model_card, npz, npy, architecture.
 // A reproducer whose fix is still to come is listed in tests/data/bad/fuzz/PENDING (one
 // "<folder>/<file>  <who fixes it>" a line) and skipped with that note until it is removed there.
 #include <gtest/gtest.h>

@@ -56,7 +56,8 @@ void exportScene(const aiScene* scene, const fs::path& out, const std::string& n
     const char* extension;
   } formats[] = {{"ply", "mesh_ply", ".ply"},  {"plyb", "mesh_ply", ".b.ply"},
                  {"stl", "mesh_stl", ".stl"},  {"stlb", "mesh_stl", ".b.stl"},
-                 {"glb2", "mesh_glb", ".glb"}, {"obj", "mesh_obj", ".obj"}};
+                 {"glb2", "mesh_glb", ".glb"}, {"obj", "mesh_obj", ".obj"},
+                 {"fbxa", "mesh_fbx", ".fbx"}, {"fbx", "mesh_fbx", ".b.fbx"}};
   for (const auto& f : formats) {
     const fs::path path = out / f.folder / (name + f.extension);
     fs::create_directories(path.parent_path());

@@ -1,5 +1,5 @@
 // Fuzz target: mesh import through the file code path (importMesh on a file named
-// input<SAGRID_FUZZ_EXTENSION>), built once per format: .obj, .ply, .stl, .glb.
+// input<SAGRID_FUZZ_EXTENSION>), built once per format: .obj, .ply, .stl, .glb, .fbx (ASCII and binary).
 #include <cstddef>
 #include <cstdint>
 

@@ -12,7 +12,7 @@ shift 2
 source_dir=$(cd "$(dirname "$0")/../.." && pwd)
 targets=("$@")
 [ ${#targets[@]} -gt 0 ] || targets=(fuzz_mesh_obj fuzz_mesh_ply fuzz_mesh_stl fuzz_mesh_glb
-  fuzz_labels fuzz_model_card fuzz_npz fuzz_npy fuzz_architecture)
+  fuzz_mesh_fbx fuzz_labels fuzz_model_card fuzz_npz fuzz_npy fuzz_architecture)
 
 seeds="$build/fuzz-seeds"
 "$build/fuzz/make_fuzz_seeds" "$seeds" "$source_dir" "$source_dir/../shared" > /dev/null
