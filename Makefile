@@ -71,7 +71,12 @@ test-asan: deps
 	  > $(ASAN_BUILD_DIR).configure.log 2>&1 || (cat $(ASAN_BUILD_DIR).configure.log; exit 1)
 	@cmake --build $(ASAN_BUILD_DIR) -j $(JOBS)
 	@cd $(ASAN_BUILD_DIR) && ASAN_OPTIONS=$(ASAN_OPTIONS) LSAN_OPTIONS=$(LSAN_OPTIONS) \
-	  UBSAN_OPTIONS=$(UBSAN_OPTIONS) ctest -j $(JOBS) --output-on-failure --timeout 1800 $(CTEST_ARGS)
+	  UBSAN_OPTIONS=$(UBSAN_OPTIONS) ctest -j $(JOBS) --output-on-failure --timeout 1800 -LE render $(CTEST_ARGS)
+	@# GL tests: Mesa unloads its llvmpipe driver at eglTerminate, before LeakSanitizer's check at
+	@# exit, so the driver's one 128-byte allocation has no module name left to suppress. Memory
+	@# errors and UB are still checked there; only leak detection is off.
+	@cd $(ASAN_BUILD_DIR) && ASAN_OPTIONS=$(ASAN_OPTIONS):detect_leaks=0 \
+	  UBSAN_OPTIONS=$(UBSAN_OPTIONS) ctest -j $(JOBS) --output-on-failure --timeout 1800 -L render $(CTEST_ARGS)
 
 clean:
 	@rm -rf $(BUILD_DIR) $(BUILD_DIR).configure.log

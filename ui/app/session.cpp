@@ -276,7 +276,7 @@ void Session::setViewport(const ViewportRect& rect) {
 void Session::applyDefaultFieldSettings() {
   // Show the voxels within a quarter of the object's size, coloured over that range: the field
   // shows where the points are without hiding the mesh.
-  const auto size = m_document->mesh().bounds().sizes();
+  const Eigen::Vector3f size = m_document->mesh().bounds().sizes();
   const float extent = std::max({size.x(), size.y(), size.z()});
   m_view.field.threshold = 0.25f * extent;
   m_view.field.colorMax = 0.25f * extent;

@@ -62,7 +62,7 @@ void drawObjectPanel(Session& session) {
     }
     ImGui::EndCombo();
   }
-  const auto size = doc->mesh().bounds().sizes() * doc->metersPerUnit();
+  const Eigen::Vector3f size = doc->mesh().bounds().sizes() * doc->metersPerUnit();
   ImGui::TextDisabled("size %.3f x %.3f x %.3f %s", size.x(), size.y(), size.z(),
                       doc->lengthUnit());
   // Category: retrieval/prediction fills it; the curator can override (training is per category).

@@ -9,6 +9,7 @@
 
 #include "core/annotate/run_manifest.h"
 #include "core/common/error.h"
+#include "support/die_by_signal.h"
 #include "support/test_paths.h"
 
 namespace sagrid {
@@ -28,7 +29,7 @@ ObjectTask scriptedTask() {
   return [](const MeshFile& f) -> nlohmann::json {
     if (f.id == "hang")
       for (;;) ::pause();
-    if (f.id == "crash") std::raise(SIGSEGV);
+    if (f.id == "crash") test::dieBySignal(SIGSEGV);
     if (f.id == "throw") throw Error("broken mesh");
     return {{"status", batch_status::kAnnotated}, {"points", 2}, {"pid", ::getpid()}};
   };

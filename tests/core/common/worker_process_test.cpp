@@ -2,6 +2,8 @@
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+
+#include "support/die_by_signal.h"
 #include <unistd.h>
 
 #include <csignal>
@@ -44,7 +46,7 @@ TEST(WorkerProcess, TimesOutOnAHungChildAndKillsIt) {
 }
 
 TEST(WorkerProcess, DescribesACrashAndAnEscapedException) {
-  WorkerProcess crash([](const WorkerProcess::Report&) { std::raise(SIGSEGV); });
+  WorkerProcess crash([](const WorkerProcess::Report&) { test::dieBySignal(SIGSEGV); });
   std::string line;
   EXPECT_EQ(crash.readLine(line, 10), Read::Ended);
   EXPECT_THAT(crash.endDescription(), HasSubstr("killed by signal 11"));
