@@ -73,12 +73,27 @@ std::string lowerExtension(const fs::path& path) {
   return ext;
 }
 
-std::string oneLine(std::string text) {
-  std::replace(text.begin(), text.end(), '\n', ' ');
-  std::replace(text.begin(), text.end(), '\r', ' ');
-  for (std::size_t pos; (pos = text.find("  ")) != std::string::npos;) text.erase(pos, 1);
-  while (!text.empty() && text.back() == ' ') text.pop_back();
-  return text;
+// Assimp's message as one short line of printable ASCII: its parse errors can quote the rest of
+// the file (an ASCII STL error carried 45 KB of it, bytes of any value). Linear in the length.
+constexpr std::size_t kMaxReasonLength = 300;
+
+std::string oneLine(const std::string& text) {
+  std::string out;
+  bool pendingSpace = false;
+  for (const unsigned char c : text) {
+    if (std::isspace(c)) {
+      pendingSpace = !out.empty();
+      continue;
+    }
+    if (pendingSpace) out += ' ';
+    pendingSpace = false;
+    out += c < 0x20 || c >= 0x7f ? '?' : static_cast<char>(c);
+    if (out.size() >= kMaxReasonLength) {
+      out += "...";
+      break;
+    }
+  }
+  return out;
 }
 
 // Decodes an image file or in-memory image into RGBA8 with stb_image.

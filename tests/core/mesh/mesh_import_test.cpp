@@ -339,3 +339,22 @@ TEST(MeshImport, UpAxisStrings) {
 
 }  // namespace
 }  // namespace sagrid
+
+namespace sagrid {
+namespace {
+
+// Fuzzing found assimp's ASCII STL error quoting the rest of the file (45 KB, any bytes) and our
+// one-line cleanup taking quadratic time over it (a fuzzer timeout). The reason is now one short
+// line of printable ASCII, made in one pass.
+TEST(MeshImport, AssimpErrorsBecomeOneShortPrintableLine) {
+  std::string stl = "solid s\n facet normal 0 0 1\n  outer loop\n   vertex 0 0 0\n   vertex 1 0 0\n";
+  for (int i = 0; i < 20000; ++i) stl += "   vertex  \x01\xff  x  y\n";
+  const fs::path path = test::writeFile(test::freshTempDir() / "quoted.stl", stl);
+  const std::string message = test::importError(path);
+  EXPECT_LT(message.size(), path.string().size() + 400) << message.substr(0, 500);
+  EXPECT_THAT(message, ::testing::HasSubstr("cannot be read as stl"));
+  for (const unsigned char c : message) EXPECT_TRUE(c >= 0x20 && c < 0x7f) << int(c);
+}
+
+}  // namespace
+}  // namespace sagrid
