@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "core/common/error.h"
+#include "core/io/little_endian.h"
 #include "core/mesh/mesh_import.h"
 #include "support/fbx_files.h"
 #include "support/import_errors.h"
@@ -38,11 +39,10 @@ struct Record {
   std::vector<Record> children;
 };
 
-void put32(std::string& out, std::uint32_t v) {
-  for (int k = 0; k < 4; ++k) out += static_cast<char>((v >> (8 * k)) & 0xFF);
-}
+using io::put32;
 void put64(std::string& out, std::uint64_t v) {
-  for (int k = 0; k < 8; ++k) out += static_cast<char>((v >> (8 * k)) & 0xFF);
+  put32(out, static_cast<std::uint32_t>(v));
+  put32(out, static_cast<std::uint32_t>(v >> 32));
 }
 
 Record withProperties(std::string name, const std::string& text, std::vector<std::int64_t> ids) {
