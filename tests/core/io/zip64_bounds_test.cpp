@@ -21,10 +21,7 @@ namespace {
 namespace fs = std::filesystem;
 using ::testing::HasSubstr;
 
-void put64(std::string& out, std::uint64_t v) {
-  io::put32(out, static_cast<std::uint32_t>(v));
-  io::put32(out, static_cast<std::uint32_t>(v >> 32));
-}
+using io::put64;
 
 struct CraftedEntry {
   std::string name = "a.npy";

@@ -40,10 +40,7 @@ struct Record {
 };
 
 using io::put32;
-void put64(std::string& out, std::uint64_t v) {
-  put32(out, static_cast<std::uint32_t>(v));
-  put32(out, static_cast<std::uint32_t>(v >> 32));
-}
+using io::put64;
 
 Record withProperties(std::string name, const std::string& text, std::vector<std::int64_t> ids) {
   Record r{std::move(name), {}, 0, {}};

@@ -13,6 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/common/error.h"
+#include "core/io/little_endian.h"
 #include "core/mesh/mesh_import.h"
 #include "support/import_errors.h"
 #include "support/test_paths.h"
@@ -26,9 +27,7 @@ using test::importError;
 
 const fs::path kBad = fs::path(SAGRID_TEST_DATA_DIR) / "bad";
 
-void put32(std::string& out, std::uint32_t v) {
-  for (int k = 0; k < 4; ++k) out += static_cast<char>((v >> (8 * k)) & 0xFF);
-}
+using io::put32;
 
 // A GLB holding one triangle under `nodes` (glTF node objects, node 0 the scene root).
 std::string triangleGlb(const nlohmann::json& nodes) {
