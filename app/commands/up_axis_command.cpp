@@ -5,6 +5,7 @@
 #include <iostream>
 
 #include "app/command_registry.h"
+#include "core/common/atomic_file.h"
 #include "core/common/error.h"
 #include "core/mesh/mesh_import.h"
 #include "core/mesh/up_axis_benchmark.h"
@@ -18,7 +19,7 @@ void setupUpAxis(CLI::App& root) {
                  "mesh), report the accuracy");
   struct Options {
     std::vector<std::string> paths, fitYz;
-    std::string expect;
+    std::string expect, weights, weightsOut;
     bool six = false, cases = false, json = false, fit = false;
   };
   auto o = std::make_shared<Options>();
@@ -38,8 +39,20 @@ void setupUpAxis(CLI::App& root) {
   cmd->add_flag("--fit", o->fit,
                 "Fit the detector's weights on the files with a known up axis and print them "
                 "(to paste into core/mesh/up_axis_detection.cpp)");
+  cmd->add_option("--weights", o->weights,
+                  "Measure the detector with these weights (a file as --fit writes) instead of the "
+                  "built-in ones")
+      ->check(CLI::ExistingFile);
+  cmd->add_option("--weights-out", o->weightsOut, "With --fit: also write the weights to this file");
   cmd->callback([o] {
     sagrid::UpAxisBenchmarkOptions options;
+    if (!o->weights.empty()) {
+      try {
+        options.weights = sagrid::parseUpAxisWeights(sagrid::readFileBytes(o->weights));
+      } catch (const sagrid::InvalidArgument& e) {
+        throw sagrid::InvalidArgument(o->weights + ": " + e.what());
+      }
+    }
     if (!o->expect.empty()) options.expect = sagrid::parseUpAxis(o->expect);
     options.allSix = o->six;
     std::vector<std::filesystem::path> paths(o->paths.begin(), o->paths.end());
@@ -49,6 +62,9 @@ void setupUpAxis(CLI::App& root) {
       const auto weights = sagrid::fitUpAxisOnFiles(paths, yz, options, &accuracy);
       std::cout << "training accuracy: " << accuracy << "\nweights: "
                 << sagrid::formatUpAxisWeights(weights) << "\n";
+      if (!o->weightsOut.empty()) {
+        sagrid::writeFileAtomic(o->weightsOut, sagrid::formatUpAxisWeights(weights) + "\n");
+      }
       return;
     }
     const auto result = sagrid::benchmarkUpAxis(paths, options);

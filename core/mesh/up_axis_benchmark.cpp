@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
+#include <cstdlib>
 #include <cstdio>
 #include <system_error>
 
@@ -62,11 +64,12 @@ UpAxisBenchmark benchmarkUpAxis(const std::vector<fs::path>& paths,
       const Mesh zUp = importMesh(files[i].path, ImportOptions(expected ? *expected : UpAxis::Z));
       if (options.allSix && expected) {
         for (UpAxis up : kAllUpAxes) {
-          result.cases.push_back({files[i].id + "@" + toString(up), up, detectUpAxis(turnedTo(zUp, up))});
+          result.cases.push_back({files[i].id + "@" + toString(up), up,
+                                  detectUpAxis(turnedTo(zUp, up), UpAxis::Z, options.weights)});
         }
       } else {
         const Mesh file = expected ? turnedTo(zUp, *expected) : zUp;
-        result.cases.push_back({files[i].id, expected, detectUpAxis(file)});
+        result.cases.push_back({files[i].id, expected, detectUpAxis(file, UpAxis::Z, options.weights)});
       }
     } catch (const Error& e) {
       const std::string path = files[i].path.string(), what = e.what();
@@ -131,6 +134,35 @@ std::string formatUpAxisWeights(const UpAxisWeights& w) {
     out += number;
   }
   return out;
+}
+
+UpAxisWeights parseUpAxisWeights(const std::string& text) {
+  UpAxisWeights w{};
+  std::size_t count = 0, at = 0;
+  while (true) {
+    at = text.find_first_not_of(" \t\r\n,", at);
+    if (at == std::string::npos) break;
+    const std::size_t end = text.find_first_of(" \t\r\n,", at);
+    std::string number = text.substr(at, end == std::string::npos ? std::string::npos : end - at);
+    if (!number.empty() && number.back() == 'f') number.pop_back();
+    char* stop = nullptr;
+    const float value = std::strtof(number.c_str(), &stop);
+    if (number.empty() || stop != number.c_str() + number.size() || !std::isfinite(value)) {
+      throw InvalidArgument("up-axis weights: '" + number + "' (number " + std::to_string(count + 1) +
+                            ") is not a finite number");
+    }
+    if (count == w.size()) {
+      throw InvalidArgument("up-axis weights: more than the " + std::to_string(w.size()) +
+                            " numbers of this detector");
+    }
+    w[count++] = value;
+    at = end;
+  }
+  if (count != w.size()) {
+    throw InvalidArgument("up-axis weights: " + std::to_string(count) + " numbers, this detector has " +
+                          std::to_string(w.size()));
+  }
+  return w;
 }
 
 std::string formatUpAxisBenchmark(const UpAxisBenchmark& b, bool perCase) {

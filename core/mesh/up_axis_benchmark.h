@@ -32,6 +32,7 @@ struct UpAxisBenchmark {
 struct UpAxisBenchmarkOptions {
   std::optional<UpAxis> expect;  // the up axis of files without a labels.json object.up
   bool allSix = false;           // also turn each object (known up) to all six up directions
+  UpAxisWeights weights = defaultUpAxisWeights();  // the detector measured
   std::function<void(std::size_t done, std::size_t total, const std::string& id)> onProgress;
 };
 
@@ -46,8 +47,11 @@ UpAxisBenchmark benchmarkUpAxis(const std::vector<std::filesystem::path>& paths,
 UpAxisWeights fitUpAxisOnFiles(const std::vector<std::filesystem::path>& paths,
                                const std::vector<std::filesystem::path>& yzPaths,
                                const UpAxisBenchmarkOptions& options, float* accuracy);
-// The weights as a C++ initializer, to paste into defaultUpAxisWeights().
+// The weights as a C++ initializer, to paste into defaultUpAxisWeights(), and back (a file of
+// them measured with `sagrid up-axis --weights` before pasting). Throws InvalidArgument naming
+// what is wrong when the text is not kUpAxisParameterCount finite numbers.
 std::string formatUpAxisWeights(const UpAxisWeights& weights);
+UpAxisWeights parseUpAxisWeights(const std::string& text);
 
 // A table: one line per case (id, expected, detected, confidence, per-axis scores) and totals
 // (accuracy, 6x6 confusion, mean confidence of right and wrong choices).
