@@ -64,6 +64,10 @@ const char* toString(UpAxis up) {
 
 UpAxis upAxisOrZ(const std::string& text) { return parseUpAxis(text).value_or(UpAxis::Z); }
 
+UpAxis unsureUpAxis(const std::string& extension) {
+  return extension == ".obj" ? UpAxis::PosY : UpAxis::PosZ;
+}
+
 namespace {
 
 std::string lowerExtension(const fs::path& path) {
@@ -467,16 +471,18 @@ Mesh importMesh(const fs::path& path, const ImportOptions& options) {
   const bool fixedByFormat = extension == ".gltf" || extension == ".glb";
   if (!options.up && options.detectUp && !fixedByFormat) {
     // Still in the file's frame here, so the detected axis is a file axis.
-    const UpAxisDetection detection = detectUpAxis(mesh, mesh.fileUp);
     const bool declares = extension == ".fbx" || extension == ".dae";
+    const UpAxis unsure = declares ? mesh.fileUp : unsureUpAxis(extension);
+    const UpAxisDetection detection = detectUpAxis(mesh, unsure);
     const float needed = declares ? kOverrideDeclaredUpConfidence : kMinDetectedUpConfidence;
-    if (detection.axis == mesh.fileUp || detection.confidence >= needed) {
+    if (detection.axis == unsure || detection.confidence >= needed) {
       mesh.fileUp = detection.axis;
       mesh.fileUpConfidence = detection.confidence;
       mesh.fileUpDetected = true;
     } else if (!declares) {
-      mesh.fileUpConfidence = detection.probabilities[static_cast<std::size_t>(mesh.fileUp)];
-      mesh.fileUpDetected = true;  // looked at, kept the default
+      mesh.fileUp = unsure;
+      mesh.fileUpConfidence = detection.probabilities[static_cast<std::size_t>(unsure)];
+      mesh.fileUpDetected = true;  // looked at, kept the format's usual axis
     }
   }
   for (auto& p : mesh.positions) p = fileToZUp(p, mesh.fileUp);

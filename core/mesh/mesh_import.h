@@ -35,9 +35,13 @@ struct ImportOptions {
 };
 
 constexpr float kOverrideDeclaredUpConfidence = 0.9f;
-// Below this detection confidence an OBJ/PLY/STL keeps SAGrid's z-up default (recorded with the
-// default's probability as its confidence): a wrong turn costs more than a kept default.
+// Below this detection confidence an OBJ/PLY/STL keeps its format's usual up axis (recorded with
+// that axis' probability as its confidence): a wrong turn costs more than a kept convention.
 constexpr float kMinDetectedUpConfidence = 0.1f;
+// The usual up axis of files whose format does not fix one, when detection is unsure: y for
+// Wavefront OBJ (Blender's and Sweet Home 3D's exports, most OBJ in the wild), z (SAGrid's frame)
+// for PLY and STL. Without detection, every such file is read z-up as before.
+UpAxis unsureUpAxis(const std::string& extension);
 
 // Throws FileError ("path: problem") for a missing file, anything but a regular file, an
 // unsupported extension, content that does not match the extension, an empty, corrupt,

@@ -190,17 +190,18 @@ std::string formatUpAxisBenchmark(const UpAxisBenchmark& b, bool perCase) {
     (*c.expected == c.detection.axis ? rightConfidence : wrongConfidence) += c.detection.confidence;
   }
   const int n = b.counted(), right = b.correct();
-  // What importMesh does with an OBJ: the detected axis when sure enough, else z.
+  // What importMesh does with an OBJ: the detected axis when sure enough, else y.
+  const UpAxis unsure = unsureUpAxis(".obj");
   int importRight = 0;
   for (const auto& c : b.cases) {
     if (!c.expected) continue;
-    const bool taken = c.detection.axis == UpAxis::Z || c.detection.confidence >= kMinDetectedUpConfidence;
-    importRight += (taken ? c.detection.axis : UpAxis::Z) == *c.expected;
+    const bool taken = c.detection.axis == unsure || c.detection.confidence >= kMinDetectedUpConfidence;
+    importRight += (taken ? c.detection.axis : unsure) == *c.expected;
   }
   std::snprintf(line, sizeof line, "accuracy: %d / %d = %.1f%% (%zu cases, %zu import failures)\n",
                 right, n, n ? 100.0 * right / n : 0.0, b.cases.size(), b.failures.size());
   out += line;
-  std::snprintf(line, sizeof line, "import rule (OBJ keeps z below confidence %.2f): %d / %d = %.1f%%\n",
+  std::snprintf(line, sizeof line, "import rule (OBJ keeps y below confidence %.2f): %d / %d = %.1f%%\n",
                 kMinDetectedUpConfidence, importRight, n, n ? 100.0 * importRight / n : 0.0);
   out += line;
   std::snprintf(line, sizeof line, "mean confidence: right %.2f, wrong %.2f\n",

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
 
 #include <Eigen/LU>
 
@@ -136,6 +137,36 @@ TEST(UpAxisDetection, ImportDetectsObjOnlyWhenAsked) {
   const Mesh given = importMesh(dir / "mesh.obj", ImportOptions(UpAxis::PosX, /*detect=*/true));
   EXPECT_EQ(given.fileUp, UpAxis::PosX);  // --up wins over detection
   EXPECT_FALSE(given.fileUpDetected);
+}
+
+TEST(UpAxisDetection, UnsureDetectionKeepsTheFormatsUsualAxis) {
+  // A cube has no up: detection is unsure, so an OBJ is taken y-up (Wavefront's usual axis) and a
+  // PLY or STL z-up; without detection every such file is read z-up as before.
+  EXPECT_EQ(unsureUpAxis(".obj"), UpAxis::PosY);
+  EXPECT_EQ(unsureUpAxis(".ply"), UpAxis::PosZ);
+  EXPECT_EQ(unsureUpAxis(".stl"), UpAxis::PosZ);
+  const auto dir = test::freshTempDir();
+  Mesh cube = test::box({0, 0, 0}, {1, 1, 1});
+  writeEncodedMeshFiles(encodeObj(cube, "cube"), dir);
+  std::ofstream stl(dir / "cube.stl");
+  stl << "solid cube\n";
+  for (const auto& t : cube.triangles) {
+    stl << "facet normal 0 0 0\nouter loop\n";
+    for (int k = 0; k < 3; ++k) {
+      const Eigen::Vector3f& p = cube.positions[t[k]];
+      stl << "vertex " << p.x() << " " << p.y() << " " << p.z() << "\n";
+    }
+    stl << "endloop\nendfacet\n";
+  }
+  stl << "endsolid cube\n";
+  stl.close();
+  const ImportOptions detect(std::nullopt, /*detect=*/true);
+  const Mesh obj = importMesh(dir / "cube.obj", detect);
+  EXPECT_EQ(obj.fileUp, UpAxis::PosY);
+  EXPECT_TRUE(obj.fileUpDetected);
+  EXPECT_LT(obj.fileUpConfidence, 0.5f);
+  EXPECT_EQ(importMesh(dir / "cube.stl", detect).fileUp, UpAxis::PosZ);
+  EXPECT_EQ(importMesh(dir / "cube.obj").fileUp, UpAxis::PosZ);
 }
 
 }  // namespace
