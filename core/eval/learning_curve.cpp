@@ -97,16 +97,26 @@ std::string centimetres(double metres) {
 
 }  // namespace
 
-std::vector<std::vector<std::size_t>> kFoldSplit(std::size_t count, int folds, unsigned seed) {
+std::vector<std::vector<std::size_t>> kFoldSplit(std::size_t count, int folds, unsigned seed,
+                                                 const std::vector<std::string>& groups) {
   if (count < 2 || folds < 2)
     throw InvalidArgument("learning curve: k-fold needs at least 2 objects and 2 folds (got " +
                           std::to_string(count) + " objects, " + std::to_string(folds) +
                           " folds)");
+  if (!groups.empty() && groups.size() != count)
+    throw InvalidArgument("learning curve: " + std::to_string(groups.size()) + " group labels for " +
+                          std::to_string(count) + " objects");
   const std::size_t f = std::min<std::size_t>(static_cast<std::size_t>(folds), count);
   std::vector<std::size_t> order(count);
   std::iota(order.begin(), order.end(), 0);
   std::mt19937 rng(seed);
   std::shuffle(order.begin(), order.end(), rng);
+  // Stable by group: the shuffled order within each group, groups one after another; dealing
+  // that sequence round-robin spreads each group evenly and keeps fold sizes within one.
+  if (!groups.empty()) {
+    std::stable_sort(order.begin(), order.end(),
+                     [&](std::size_t a, std::size_t b) { return groups[a] < groups[b]; });
+  }
   std::vector<std::vector<std::size_t>> result(f);
   for (std::size_t i = 0; i < count; ++i) result[i % f].push_back(order[i]);
   return result;
@@ -180,7 +190,9 @@ LearningCurveReport runLearningCurve(const LearningCurveOptions& options) {
     }
   }
 
-  const auto split = kFoldSplit(objects.size(), options.folds, options.seed);
+  std::vector<std::string> categories;
+  for (const auto& o : objects) categories.push_back(o.category);
+  const auto split = kFoldSplit(objects.size(), options.folds, options.seed, categories);
   for (const auto& fold : split) {
     report.folds.emplace_back();
     for (std::size_t i : fold) report.folds.back().push_back(objects[i].entry.id);

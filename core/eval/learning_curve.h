@@ -56,8 +56,12 @@ struct LearningCurveReport {
 };
 
 // Object indices 0..count-1 in `folds` disjoint folds covering each once (sizes differ by at most
-// one), from a seeded shuffle. Throws InvalidArgument for count < 2 or folds < 2.
-std::vector<std::vector<std::size_t>> kFoldSplit(std::size_t count, int folds, unsigned seed);
+// one), from a seeded shuffle. With `groups` (one label per object, e.g. its category) the folds
+// are stratified: each group is shuffled and dealt over the folds in turn, so every fold holds
+// its share of every group (a fold of sinks only would measure the stove models on nothing).
+// Throws InvalidArgument for count < 2, folds < 2 or groups of another size.
+std::vector<std::vector<std::size_t>> kFoldSplit(std::size_t count, int folds, unsigned seed,
+                                                 const std::vector<std::string>& groups = {});
 
 // "0,2,5,10,all" -> {0, 2, 5, 10, kAllObjects}; throws InvalidArgument for anything else.
 std::vector<int> parseLearningCurveKs(const std::string& text);

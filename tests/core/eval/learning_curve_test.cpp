@@ -25,6 +25,28 @@ TEST(LearningCurve, FoldsAreDisjointCoverEveryObjectOnceAndAreReproducible) {
   EXPECT_THROW(kFoldSplit(5, 1, 1), InvalidArgument);
 }
 
+TEST(LearningCurve, FoldsAreStratifiedByGroup) {
+  // 8 stoves and 15 sinks (the Sweet Home 3D corpus) in 3 folds: 2-3 stoves and 5 sinks each.
+  std::vector<std::string> groups(23, "sink");
+  for (int i : {0, 4, 5, 9, 13, 17, 20, 22}) groups[i] = "stove";
+  for (unsigned seed : {1u, 2u, 3u}) {
+    const auto folds = kFoldSplit(23, 3, seed, groups);
+    std::vector<int> seen(23, 0);
+    for (const auto& f : folds) {
+      const auto stoves =
+          std::count_if(f.begin(), f.end(), [&](std::size_t i) { return groups[i] == "stove"; });
+      EXPECT_GE(stoves, 2);
+      EXPECT_LE(stoves, 3);
+      EXPECT_GE(f.size(), 7u);
+      EXPECT_LE(f.size(), 8u);
+      for (std::size_t i : f) ++seen[i];
+    }
+    for (int s : seen) EXPECT_EQ(s, 1);
+    EXPECT_EQ(kFoldSplit(23, 3, seed, groups), folds);
+  }
+  EXPECT_THROW(kFoldSplit(5, 2, 1, {"a", "b"}), InvalidArgument);
+}
+
 TEST(LearningCurve, ParsesObjectCounts) {
   EXPECT_EQ(parseLearningCurveKs("0,2,5,10,all"), (std::vector<int>{0, 2, 5, 10, kAllObjects}));
   EXPECT_THROW(parseLearningCurveKs("0,x"), InvalidArgument);
