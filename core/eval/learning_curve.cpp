@@ -35,12 +35,34 @@ struct RealObject {
 
 std::string kLabel(int k) { return k == kAllObjects ? "all" : std::to_string(k); }
 
-// A dataset folder that lists `objects` where they are, relative to `dir` ("../../..."): it is
-// read with the --data folder as readDataset's referenceRoot (manifest paths must not be absolute).
+// The folder that holds every object of --data where it really is: --data itself, widened to the
+// common ancestor of the objects' files when object folders are symbolic links to elsewhere (a
+// dataset assembled with `ln -s`, which readDataset follows). The subsets are read with it as
+// readDataset's referenceRoot, so they reach exactly the objects --data listed.
+fs::path folderHoldingObjects(const fs::path& dataDir, const std::vector<RealObject>& objects) {
+  fs::path root = fs::weakly_canonical(fs::absolute(dataDir));
+  auto widen = [&](const fs::path& file) {
+    const fs::path real = fs::weakly_canonical(fs::absolute(file));
+    fs::path common;
+    for (auto a = root.begin(), b = real.begin(); a != root.end() && b != real.end() && *a == *b;
+         ++a, ++b)
+      common /= *a;
+    root = common;
+  };
+  for (const auto& o : objects) {
+    widen(o.entry.mesh);
+    widen(o.entry.labels);
+  }
+  return root;
+}
+
+// A dataset folder that lists `objects` where they really are (links resolved), relative to `dir`
+// ("../../..."): manifest paths must not be absolute; it is read with folderHoldingObjects as
+// readDataset's referenceRoot.
 void writeSubsetDataset(const fs::path& dir, const std::vector<const RealObject*>& objects) {
-  const fs::path from = fs::absolute(dir).lexically_normal();
+  const fs::path from = fs::weakly_canonical(fs::absolute(dir));
   auto relative = [&](const fs::path& file) {
-    return fs::absolute(file).lexically_normal().lexically_relative(from).generic_string();
+    return fs::weakly_canonical(fs::absolute(file)).lexically_relative(from).generic_string();
   };
   std::string lines;
   for (const auto* o : objects)
@@ -154,6 +176,7 @@ LearningCurveReport runLearningCurve(const LearningCurveOptions& options) {
     for (const auto& a : labels.affordances) o.types.insert(a.type);
     objects.push_back(std::move(o));
   }
+  const fs::path objectsRoot = folderHoldingObjects(options.dataDir, objects);
   LearningCurveReport report;
   report.dataDir = options.dataDir;
   report.initDir = options.initDir;
@@ -245,7 +268,7 @@ LearningCurveReport runLearningCurve(const LearningCurveOptions& options) {
         const fs::path dataDir = foldDir / (name + ".k" + std::to_string(used));
         writeSubsetDataset(dataDir, {ofType.begin(), ofType.begin() + used});
         DatasetTrainingOptions t;
-        t.datasets.push_back({dataDir, 1.0, "data", features.cacheDir, options.dataDir});
+        t.datasets.push_back({dataDir, 1.0, "data", features.cacheDir, objectsRoot});
         if (replay) t.datasets.push_back(*replay);  // weight 1: drawn 1:1 with the k objects
         t.init = options.initDir;
         t.modelName = name;
@@ -277,7 +300,7 @@ LearningCurveReport runLearningCurve(const LearningCurveOptions& options) {
       if (!evaluated.count(kUsed)) {
         EvaluationOptions e;
         e.dataDir = foldDir / "test";
-        e.referenceRoot = options.dataDir;  // the subset lists --data's objects
+        e.referenceRoot = objectsRoot;  // the subset lists --data's objects
         e.features = features;
         const EvaluationReport r = evaluateModels(ModelSet::load(modelsDir), e);
         std::vector<LearningCurvePoint> points;
