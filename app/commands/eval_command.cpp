@@ -33,7 +33,7 @@ void setupEval(CLI::App& root) {
       "architecture on DATA/train and compares them on DATA/val (Table I form).");
   struct Options {
     std::string data, models, out = "eval", cache, sweep, mode = "sparse", fitConfidence,
-        fitCounts;
+        fitCounts, countObjective = "count";
     std::vector<std::string> only, compare;
     double minutes = 2;
     int epochs = 0;
@@ -63,6 +63,10 @@ void setupEval(CLI::App& root) {
   cmd->add_option("--fit-counts", o->fitCounts,
                   "Refit each model's automatic instance count on the fields of this data and "
                   "write a models folder DIR with the refitted cards (eval it with --models DIR)");
+  cmd->add_option("--count-objective", o->countObjective,
+                  "With --fit-counts: what the refit optimises, the share of right counts "
+                  "(count, the default) or the curator's point edits (edits)")
+      ->check(CLI::IsMember({"count", "edits"}));
   cmd->add_option("--sweep", o->sweep, "Architectures to compare, ';'-separated Table I strings");
   cmd->add_option("--sweep-models", o->only,
                   "With --sweep: the models to train (default all four)");
@@ -114,7 +118,10 @@ void setupEval(CLI::App& root) {
     options.coarseToFine = o->coarseToFine;
     const auto report = sagrid::evaluateModels(models, options);
     if (!o->fitCounts.empty()) {
-      const auto fits = sagrid::fitCounts(models, report);
+      const auto fits = sagrid::fitCounts(models, report,
+                                          o->countObjective == "edits"
+                                              ? sagrid::CountObjective::CuratorEdits
+                                              : sagrid::CountObjective::RightCount);
       sagrid::writeModelsWithFittedCounts(modelsDir, fits, o->fitCounts);
       std::fprintf(stderr, "counts: refitted on %s -> %s\n%s", o->data.c_str(),
                    o->fitCounts.c_str(), sagrid::countFitMarkdown(fits).c_str());

@@ -1,9 +1,12 @@
 #include "core/eval/count_fitting.h"
 
+#include <cmath>
 #include <cstdio>
 #include <sstream>
 
 #include "core/common/error.h"
+#include "core/eval/curator_effort.h"
+#include "core/eval/metrics.h"
 #include "core/model/model_card.h"
 
 namespace sagrid {
@@ -18,19 +21,59 @@ double rightCountShare(const FieldsWithTruth& data, const ExtractionSettings& se
   return static_cast<double>(right) / static_cast<double>(data.fields.size());
 }
 
-std::vector<CountFit> fitCounts(const ModelSet& models, const EvaluationReport& report) {
+namespace {
+
+std::vector<Eigen::Vector3f> positions(const std::vector<ExtractedPoint>& points) {
+  std::vector<Eigen::Vector3f> out;
+  for (const auto& p : points) out.push_back(p.position);
+  return out;
+}
+
+std::size_t edits(const FieldsWithTruth& data, std::size_t o,
+                  const std::vector<Eigen::Vector3f>& points) {
+  return pointEdits(matchPoints(points, data.truths[o], data.metresPerUnit[o])).total();
+}
+
+}  // namespace
+
+double editsPerObject(const FieldsWithTruth& data, const ExtractionSettings& settings) {
+  if (data.fields.empty()) return 0;
+  if (data.metresPerUnit.size() != data.fields.size()) return NAN;  // no scale: not measurable
+  double sum = 0;
+  for (std::size_t o = 0; o < data.fields.size(); ++o)
+    sum += static_cast<double>(edits(data, o, positions(autoCountPoints(data.fields[o], settings))));
+  return sum / static_cast<double>(data.fields.size());
+}
+
+std::vector<CountFit> fitCounts(const ModelSet& models, const EvaluationReport& report,
+                                CountObjective objective) {
   std::vector<CountFit> fits;
   for (const auto& model : models.models()) {
     const auto& card = model.card();
     const auto kept = report.fieldsByModel.find(card.name);
     if (kept == report.fieldsByModel.end() || kept->second.fields.empty()) continue;
+    const FieldsWithTruth& data = kept->second;
     CountFit fit;
     fit.model = card.name;
-    fit.objects = kept->second.fields.size();
+    fit.objects = data.fields.size();
     fit.before = card.extraction;
-    fit.after = calibrateExtraction(kept->second.fields, kept->second.truths, card.extraction);
-    fit.rightBefore = rightCountShare(kept->second, fit.before);
-    fit.rightAfter = rightCountShare(kept->second, fit.after);
+    if (objective == CountObjective::CuratorEdits) {
+      if (data.metresPerUnit.size() != data.fields.size())
+        throw InvalidArgument("count fit for " + card.name +
+                              ": curator edits need each object's scale (metres per unit)");
+      fit.after = calibrateExtraction(
+          data.fields,
+          [&](std::size_t o, const std::vector<Eigen::Vector3f>& points) {
+            return static_cast<double>(edits(data, o, points));
+          },
+          card.extraction);
+    } else {
+      fit.after = calibrateExtraction(data.fields, data.truths, card.extraction);
+    }
+    fit.rightBefore = rightCountShare(data, fit.before);
+    fit.rightAfter = rightCountShare(data, fit.after);
+    fit.editsBefore = editsPerObject(data, fit.before);
+    fit.editsAfter = editsPerObject(data, fit.after);
     fits.push_back(fit);
   }
   return fits;
@@ -57,14 +100,15 @@ void writeModelsWithFittedCounts(const fs::path& modelsDir, const std::vector<Co
 
 std::string countFitMarkdown(const std::vector<CountFit>& fits) {
   std::ostringstream out;
-  out << "| Model | Objects | Max distance | NMS radius | Right count before | Right count after |\n"
+  out << "| Model | Objects | Max distance | NMS radius | Right count | Point edits / object |\n"
          "|---|---|---|---|---|---|\n";
   char line[256];
   for (const auto& f : fits) {
     std::snprintf(line, sizeof line,
-                  "| %s | %zu | %.3f -> %.3f | %.3f -> %.3f | %.1f %% | %.1f %% |\n",
+                  "| %s | %zu | %.3f -> %.3f | %.3f -> %.3f | %.1f %% -> %.1f %% | %.2f -> %.2f |\n",
                   f.model.c_str(), f.objects, f.before.maxDistance, f.after.maxDistance,
-                  f.before.nmsRadius, f.after.nmsRadius, 100 * f.rightBefore, 100 * f.rightAfter);
+                  f.before.nmsRadius, f.after.nmsRadius, 100 * f.rightBefore, 100 * f.rightAfter,
+                  f.editsBefore, f.editsAfter);
     out << line;
   }
   return out.str();

@@ -151,6 +151,7 @@ EvaluationReport evaluateModels(const ModelSet& models, const EvaluationOptions&
           auto& kept = report.fieldsByModel[card.name];
           kept.fields.push_back(field);
           kept.truths.emplace_back();
+          kept.metresPerUnit.push_back(mpu / grid.normalization.scale);
           for (const auto& p : truth)
             kept.truths.back().push_back(grid.normalization.toNormalized(fileToZUp(p, up)));
         }

@@ -39,6 +39,7 @@ struct EvaluationOptions {
 struct FieldsWithTruth {
   std::vector<PredictedField> fields;
   std::vector<std::vector<Eigen::Vector3f>> truths;
+  std::vector<double> metresPerUnit;  // metres per normalized unit, per object
 };
 
 struct MethodMetrics {

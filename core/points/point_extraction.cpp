@@ -226,11 +226,10 @@ std::vector<ExtractedPoint> kMeansPoints(const PredictedField& field, int count,
 }
 
 ExtractionSettings calibrateExtraction(const std::vector<PredictedField>& fields,
-                                       const std::vector<std::vector<Eigen::Vector3f>>& truths,
-                                       const ExtractionSettings& base) {
+                                       const ExtractionCost& cost, const ExtractionSettings& base) {
   ExtractionSettings best = base;
-  if (fields.empty() || fields.size() != truths.size()) return best;
-  double bestRight = -1, bestOff = std::numeric_limits<double>::max();
+  if (fields.empty()) return best;
+  double bestCost = std::numeric_limits<double>::max();
   // Minima are computed once; only the filtering depends on the candidates.
   std::vector<std::vector<ExtractedPoint>> minima;
   for (const auto& f : fields) {
@@ -244,7 +243,7 @@ ExtractionSettings calibrateExtraction(const std::vector<PredictedField>& fields
   for (float maxDistance :
        {0.01f, 0.015f, 0.02f, 0.03f, 0.04f, 0.05f, 0.06f, 0.08f, 0.1f, 0.12f, 0.15f, 0.2f}) {
     for (float radius : {0.03f, 0.05f, 0.07f, 0.1f, 0.13f, 0.16f, 0.2f, 0.25f, 0.3f}) {
-      double right = 0, off = 0;
+      double total = 0;
       for (std::size_t o = 0; o < fields.size(); ++o) {
         std::vector<Eigen::Vector3f> kept;
         for (const auto& m : minima[o]) {
@@ -253,18 +252,31 @@ ExtractionSettings calibrateExtraction(const std::vector<PredictedField>& fields
           for (const auto& k : kept) suppressed |= (k - m.position).norm() < radius;
           if (!suppressed) kept.push_back(m.position);
         }
-        const double diff = std::abs(static_cast<double>(kept.size()) - truths[o].size());
-        right += diff == 0;
-        off += diff;
+        total += cost(o, kept);
       }
-      if (right > bestRight || (right == bestRight && off < bestOff)) {
-        bestRight = right, bestOff = off;
+      if (total < bestCost) {
+        bestCost = total;
         best.maxDistance = maxDistance;
         best.nmsRadius = radius;
       }
     }
   }
   return best;
+}
+
+ExtractionSettings calibrateExtraction(const std::vector<PredictedField>& fields,
+                                       const std::vector<std::vector<Eigen::Vector3f>>& truths,
+                                       const ExtractionSettings& base) {
+  if (fields.size() != truths.size()) return base;
+  // Right counts first; among equals, the smaller total count difference.
+  const double wrongCount = 1e6;
+  return calibrateExtraction(
+      fields,
+      [&](std::size_t o, const std::vector<Eigen::Vector3f>& kept) {
+        const double diff = std::abs(static_cast<double>(kept.size()) - truths[o].size());
+        return (diff == 0 ? 0.0 : wrongCount) + diff;
+      },
+      base);
 }
 
 }  // namespace sagrid

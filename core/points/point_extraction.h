@@ -7,6 +7,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <functional>
 #include <vector>
 
 #include "core/grid/voxel_grid.h"
@@ -53,11 +54,18 @@ std::vector<ExtractedPoint> autoCountPoints(const PredictedField& field,
 std::vector<std::size_t> localMinima(const PredictedField& field);
 
 // Chooses maxDistance and nmsRadius maximising the share of objects whose automatic count equals
-// the ground-truth count (ties: smaller mean matched error), over a fixed grid of candidates.
+// the ground-truth count (ties: smaller total count difference), over a fixed grid of candidates.
 // `truths[i]` are the ground-truth points (normalized frame) of `fields[i]`.
 // Other settings (refinement, confidence scale) are taken from `base`.
 ExtractionSettings calibrateExtraction(const std::vector<PredictedField>& fields,
                                        const std::vector<std::vector<Eigen::Vector3f>>& truths,
                                        const ExtractionSettings& base = {});
+
+// The same search with any objective: `cost(i, points)` is what the automatic count's points
+// (normalized frame, best first) cost on `fields[i]`; the candidate with the smallest summed cost
+// wins (the first one on ties). Returns `base` for no fields.
+using ExtractionCost = std::function<double(std::size_t, const std::vector<Eigen::Vector3f>&)>;
+ExtractionSettings calibrateExtraction(const std::vector<PredictedField>& fields,
+                                       const ExtractionCost& cost, const ExtractionSettings& base);
 
 }  // namespace sagrid

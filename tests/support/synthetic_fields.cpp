@@ -5,8 +5,10 @@
 
 namespace sagrid::test {
 
-PredictedField plateField(const std::vector<Eigen::Vector3f>& centres, float noise,
-                          unsigned seed) {
+namespace {
+
+PredictedField plate(const std::vector<Eigen::Vector3f>& centres, const std::vector<float>& offsets,
+                     float noise, unsigned seed) {
   std::mt19937 rng(seed);
   std::uniform_real_distribution<float> jitter(-noise, noise);
   PredictedField f;
@@ -15,12 +17,25 @@ PredictedField plateField(const std::vector<Eigen::Vector3f>& centres, float noi
     for (int j = 0; j < kPlateResolution; ++j) {
       const VoxelIndex v{i, j, 10};
       float best = 1e9f;
-      for (const auto& c : centres)
-        best = std::min(best, (voxelCenter(v, kPlateResolution) - c).norm());
+      for (std::size_t c = 0; c < centres.size(); ++c)
+        best = std::min(best, (voxelCenter(v, kPlateResolution) - centres[c]).norm() +
+                                  (offsets.empty() ? 0.0f : offsets[c]));
       f.voxels.push_back(v);
       f.distances.push_back(std::max(0.0f, best + jitter(rng)));
     }
   return f;
+}
+
+}  // namespace
+
+PredictedField plateField(const std::vector<Eigen::Vector3f>& centres, float noise,
+                          unsigned seed) {
+  return plate(centres, {}, noise, seed);
+}
+
+PredictedField plateFieldWithOffsets(const std::vector<Eigen::Vector3f>& centres,
+                                     const std::vector<float>& offsets) {
+  return plate(centres, offsets, 0.0f, 1);
 }
 
 Eigen::Vector3f onPlate(int i, int j) { return voxelCenter({i, j, 10}, kPlateResolution); }

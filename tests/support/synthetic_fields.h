@@ -15,6 +15,11 @@ constexpr int kPlateResolution = 32;
 PredictedField plateField(const std::vector<Eigen::Vector3f>& centres, float noise = 0.0f,
                           unsigned seed = 1);
 
+// The same plate whose field is min over centres of (distance to centre c + offsets[c]): minima
+// of different depths (a spurious minimum is a centre that is not in the ground truth).
+PredictedField plateFieldWithOffsets(const std::vector<Eigen::Vector3f>& centres,
+                                     const std::vector<float>& offsets);
+
 // The centre of plate voxel (i, j) in the normalized frame.
 Eigen::Vector3f onPlate(int i, int j);
 

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "core/common/error.h"
 #include "core/model/model_card.h"
 #include "support/synthetic_fields.h"
@@ -49,6 +51,43 @@ TEST(CountFitting, RefitCountsRightWhereTheCardsSettingsDoNot) {
   EXPECT_DOUBLE_EQ(fits[0].rightAfter, 1.0);
   EXPECT_GT(fits[0].after.maxDistance, 0.07f);
   EXPECT_EQ(fits[0].after.refineVoxels, fits[0].before.refineVoxels);
+}
+
+// Two objects with one burner and a spurious minimum at 0.04 far from it, and one with six
+// burners whose minima sit at 0.05. Right counts prefer a threshold below 0.04 (two objects right,
+// the six-burner one shows one point: 5 additions); the curator's edits prefer one at 0.05 or
+// above (six-burner right, two deletions).
+TEST(CountFitting, CuratorEditsWeighWhatEachWrongCountCosts) {
+  FieldsWithTruth data;
+  for (int shift : {0, 2}) {
+    const Eigen::Vector3f truth = onPlate(8 + shift, 8), spurious = onPlate(24, 24 - shift);
+    data.fields.push_back(test::plateFieldWithOffsets({truth, spurious}, {0.0f, 0.04f}));
+    data.truths.push_back({truth});
+  }
+  const std::vector<Eigen::Vector3f> six = {onPlate(5, 5),  onPlate(5, 16),  onPlate(5, 27),
+                                            onPlate(27, 5), onPlate(27, 16), onPlate(27, 27)};
+  data.fields.push_back(test::plateFieldWithOffsets(six, std::vector<float>(6, 0.05f)));
+  data.truths.push_back(six);
+  data.metresPerUnit = {1.0, 1.0, 1.0};
+  EvaluationReport report;
+  report.fieldsByModel["stove.heatsource"] = data;
+
+  const auto byCount = fitCounts(oneModel(), report, CountObjective::RightCount);
+  ASSERT_EQ(byCount.size(), 1u);
+  EXPECT_LT(byCount[0].after.maxDistance, 0.04f);
+  EXPECT_NEAR(byCount[0].rightAfter, 2.0 / 3.0, 1e-9);
+  EXPECT_NEAR(byCount[0].editsAfter, 5.0 / 3.0, 1e-9);
+
+  const auto byEdits = fitCounts(oneModel(), report, CountObjective::CuratorEdits);
+  ASSERT_EQ(byEdits.size(), 1u);
+  EXPECT_GE(byEdits[0].after.maxDistance, 0.05f);
+  EXPECT_NEAR(byEdits[0].rightAfter, 1.0 / 3.0, 1e-9);
+  EXPECT_NEAR(byEdits[0].editsAfter, 2.0 / 3.0, 1e-9);
+
+  data.metresPerUnit.clear();  // hand-built fields without scale: edits cannot be weighed
+  report.fieldsByModel["stove.heatsource"] = data;
+  EXPECT_THROW(fitCounts(oneModel(), report, CountObjective::CuratorEdits), InvalidArgument);
+  EXPECT_TRUE(std::isnan(fitCounts(oneModel(), report)[0].editsAfter));
 }
 
 TEST(CountFitting, ModelsWithoutKeptFieldsAreNotFitted) {
