@@ -409,7 +409,8 @@ void writeLearningCurveReport(const LearningCurveReport& r, const fs::path& outD
       const Stats s = statsOf(r, r.modelNames[m], k);
       if (!std::isfinite(s.mean)) continue;
       mean.x.push_back(s.kUsed), mean.y.push_back(100 * s.mean);
-      low.x.push_back(s.kUsed), low.y.push_back(100 * (s.mean - s.sd));
+      low.x.push_back(s.kUsed);
+      low.y.push_back(100 * std::max(0.0, s.mean - s.sd));  // an error is never below 0
       high.x.push_back(s.kUsed), high.y.push_back(100 * (s.mean + s.sd));
     }
     if (mean.x.empty()) continue;
