@@ -32,8 +32,8 @@ void setupEval(CLI::App& root) {
       "each "
       "architecture on DATA/train and compares them on DATA/val (Table I form).");
   struct Options {
-    std::string data, models, out = "eval", cache, sweep, mode = "sparse", fitConfidence,
-        fitCounts, countObjective = "count";
+    std::string data, models, out = "eval", cache, sweep, mode = "sparse", fitConfidence, fitCounts,
+                              countObjective = "count";
     std::vector<std::string> only, compare;
     double minutes = 2;
     int epochs = 0;
@@ -118,10 +118,10 @@ void setupEval(CLI::App& root) {
     options.coarseToFine = o->coarseToFine;
     const auto report = sagrid::evaluateModels(models, options);
     if (!o->fitCounts.empty()) {
-      const auto fits = sagrid::fitCounts(models, report,
-                                          o->countObjective == "edits"
-                                              ? sagrid::CountObjective::CuratorEdits
-                                              : sagrid::CountObjective::RightCount);
+      const auto fits =
+          sagrid::fitCounts(models, report,
+                            o->countObjective == "edits" ? sagrid::CountObjective::CuratorEdits
+                                                         : sagrid::CountObjective::RightCount);
       sagrid::writeModelsWithFittedCounts(modelsDir, fits, o->fitCounts);
       std::fprintf(stderr, "counts: refitted on %s -> %s\n%s", o->data.c_str(),
                    o->fitCounts.c_str(), sagrid::countFitMarkdown(fits).c_str());

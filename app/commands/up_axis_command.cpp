@@ -43,7 +43,8 @@ void setupUpAxis(CLI::App& root) {
                   "Measure the detector with these weights (a file as --fit writes) instead of the "
                   "built-in ones")
       ->check(CLI::ExistingFile);
-  cmd->add_option("--weights-out", o->weightsOut, "With --fit: also write the weights to this file");
+  cmd->add_option("--weights-out", o->weightsOut,
+                  "With --fit: also write the weights to this file");
   cmd->callback([o] {
     sagrid::UpAxisBenchmarkOptions options;
     if (!o->weights.empty()) {

@@ -41,7 +41,8 @@ double editsPerObject(const FieldsWithTruth& data, const ExtractionSettings& set
   if (data.metresPerUnit.size() != data.fields.size()) return NAN;  // no scale: not measurable
   double sum = 0;
   for (std::size_t o = 0; o < data.fields.size(); ++o)
-    sum += static_cast<double>(edits(data, o, positions(autoCountPoints(data.fields[o], settings))));
+    sum +=
+        static_cast<double>(edits(data, o, positions(autoCountPoints(data.fields[o], settings))));
   return sum / static_cast<double>(data.fields.size());
 }
 
@@ -104,11 +105,11 @@ std::string countFitMarkdown(const std::vector<CountFit>& fits) {
          "|---|---|---|---|---|---|\n";
   char line[256];
   for (const auto& f : fits) {
-    std::snprintf(line, sizeof line,
-                  "| %s | %zu | %.3f -> %.3f | %.3f -> %.3f | %.1f %% -> %.1f %% | %.2f -> %.2f |\n",
-                  f.model.c_str(), f.objects, f.before.maxDistance, f.after.maxDistance,
-                  f.before.nmsRadius, f.after.nmsRadius, 100 * f.rightBefore, 100 * f.rightAfter,
-                  f.editsBefore, f.editsAfter);
+    std::snprintf(
+        line, sizeof line,
+        "| %s | %zu | %.3f -> %.3f | %.3f -> %.3f | %.1f %% -> %.1f %% | %.2f -> %.2f |\n",
+        f.model.c_str(), f.objects, f.before.maxDistance, f.after.maxDistance, f.before.nmsRadius,
+        f.after.nmsRadius, 100 * f.rightBefore, 100 * f.rightAfter, f.editsBefore, f.editsAfter);
     out << line;
   }
   return out.str();

@@ -126,8 +126,8 @@ std::vector<std::vector<std::size_t>> kFoldSplit(std::size_t count, int folds, u
                           std::to_string(count) + " objects, " + std::to_string(folds) +
                           " folds)");
   if (!groups.empty() && groups.size() != count)
-    throw InvalidArgument("learning curve: " + std::to_string(groups.size()) + " group labels for " +
-                          std::to_string(count) + " objects");
+    throw InvalidArgument("learning curve: " + std::to_string(groups.size()) +
+                          " group labels for " + std::to_string(count) + " objects");
   const std::size_t f = std::min<std::size_t>(static_cast<std::size_t>(folds), count);
   std::vector<std::size_t> order(count);
   std::iota(order.begin(), order.end(), 0);

@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <cstdlib>
 #include <cstdio>
+#include <cstdlib>
 #include <system_error>
 
 #include "core/common/error.h"
@@ -69,7 +69,8 @@ UpAxisBenchmark benchmarkUpAxis(const std::vector<fs::path>& paths,
         }
       } else {
         const Mesh file = expected ? turnedTo(zUp, *expected) : zUp;
-        result.cases.push_back({files[i].id, expected, detectUpAxis(file, UpAxis::Z, options.weights)});
+        result.cases.push_back(
+            {files[i].id, expected, detectUpAxis(file, UpAxis::Z, options.weights)});
       }
     } catch (const Error& e) {
       const std::string path = files[i].path.string(), what = e.what();
@@ -148,8 +149,8 @@ UpAxisWeights parseUpAxisWeights(const std::string& text) {
     char* stop = nullptr;
     const float value = std::strtof(number.c_str(), &stop);
     if (number.empty() || stop != number.c_str() + number.size() || !std::isfinite(value)) {
-      throw InvalidArgument("up-axis weights: '" + number + "' (number " + std::to_string(count + 1) +
-                            ") is not a finite number");
+      throw InvalidArgument("up-axis weights: '" + number + "' (number " +
+                            std::to_string(count + 1) + ") is not a finite number");
     }
     if (count == w.size()) {
       throw InvalidArgument("up-axis weights: more than the " + std::to_string(w.size()) +
@@ -159,8 +160,8 @@ UpAxisWeights parseUpAxisWeights(const std::string& text) {
     at = end;
   }
   if (count != w.size()) {
-    throw InvalidArgument("up-axis weights: " + std::to_string(count) + " numbers, this detector has " +
-                          std::to_string(w.size()));
+    throw InvalidArgument("up-axis weights: " + std::to_string(count) +
+                          " numbers, this detector has " + std::to_string(w.size()));
   }
   return w;
 }
@@ -195,13 +196,15 @@ std::string formatUpAxisBenchmark(const UpAxisBenchmark& b, bool perCase) {
   int importRight = 0;
   for (const auto& c : b.cases) {
     if (!c.expected) continue;
-    const bool taken = c.detection.axis == unsure || c.detection.confidence >= kMinDetectedUpConfidence;
+    const bool taken =
+        c.detection.axis == unsure || c.detection.confidence >= kMinDetectedUpConfidence;
     importRight += (taken ? c.detection.axis : unsure) == *c.expected;
   }
   std::snprintf(line, sizeof line, "accuracy: %d / %d = %.1f%% (%zu cases, %zu import failures)\n",
                 right, n, n ? 100.0 * right / n : 0.0, b.cases.size(), b.failures.size());
   out += line;
-  std::snprintf(line, sizeof line, "import rule (OBJ keeps y below confidence %.2f): %d / %d = %.1f%%\n",
+  std::snprintf(line, sizeof line,
+                "import rule (OBJ keeps y below confidence %.2f): %d / %d = %.1f%%\n",
                 kMinDetectedUpConfidence, importRight, n, n ? 100.0 * importRight / n : 0.0);
   out += line;
   std::snprintf(line, sizeof line, "mean confidence: right %.2f, wrong %.2f\n",

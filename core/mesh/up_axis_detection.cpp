@@ -244,7 +244,8 @@ float inner(const float* w, const UpAxisDescriptor& d) {
 }
 
 // The hidden units' activations tanh(hidden[h] . d + bias[h]).
-std::array<float, kUpAxisHidden> hiddenActivations(const UpAxisWeights& w, const UpAxisDescriptor& d) {
+std::array<float, kUpAxisHidden> hiddenActivations(const UpAxisWeights& w,
+                                                   const UpAxisDescriptor& d) {
   std::array<float, kUpAxisHidden> t{};
   for (int h = 0; h < kUpAxisHidden; ++h) {
     t[h] = std::tanh(w[kBiasAt + h] + inner(&w[kHiddenAt + h * kUpAxisDescriptorSize], d));
@@ -269,7 +270,7 @@ const UpAxisWeights& defaultUpAxisWeights() {
   // six ways and Sweet Home 3D distractors; the hidden layer is zero. Refits with the hidden layer
   // (`sagrid up-axis --fit`, see README) rank generated objects far better (72.5 % -> 94-98 % on
   // the bench val split turned six ways) but Sweet Home 3D objects held out of the fit no better
-  // (real-val + distractor val split as shipped, y up: 13/16 -> 10-11/16), so they are not built in.
+  // (real-val + distractor val split as shipped, y up: 13/16 -> 10-11/16): not built in.
   static const UpAxisWeights weights = {
       0.7134f, -1.5322f, 0.0063f, 1.0145f, 0.1060f, 0.7818f, 0.9322f, -2.0222f, 2.7906f, -1.9866f, -0.6456f, -2.6157f, 2.4571f, 4.5278f, 0.7728f, -1.7277f, 0.5084f, 0.6851f, 1.2761f, 1.9389f, 2.6724f, -3.5331f, -1.6896f, 2.0137f, 5.2476f, 0.9900f, 0.8250f, -1.2432f};
   return weights;
@@ -363,7 +364,8 @@ UpAxisWeights initialUpAxisWeights() {
 }
 
 // Adds g * d score(d) / d weights to `grad`.
-void addScoreGradient(const UpAxisWeights& w, const UpAxisDescriptor& d, float g, UpAxisWeights& grad) {
+void addScoreGradient(const UpAxisWeights& w, const UpAxisDescriptor& d, float g,
+                      UpAxisWeights& grad) {
   const auto t = hiddenActivations(w, d);
   for (int k = 0; k < kUpAxisDescriptorSize; ++k) grad[k] += g * d[k];
   for (int h = 0; h < kUpAxisHidden; ++h) {
@@ -407,7 +409,8 @@ UpAxisWeights fitUpAxisWeights(const std::vector<UpAxisExample>& examples, int i
       for (int i = 0; i < 6; ++i) s[i] = upAxisScore(w, e->candidates[i]);
       const auto p = probabilities(s);
       for (int i = 0; i < 6; ++i) {
-        addScoreGradient(w, e->candidates[i], e->weight * (p[i] - (i == e->up ? 1.0f : 0.0f)), grad);
+        addScoreGradient(w, e->candidates[i], e->weight * (p[i] - (i == e->up ? 1.0f : 0.0f)),
+                         grad);
       }
     }
     for (int k = 0; k < kUpAxisParameterCount; ++k) {

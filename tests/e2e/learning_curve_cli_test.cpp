@@ -22,7 +22,8 @@ TEST(LearningCurveCli, FoldsReachObjectFoldersLinkedFromElsewhere) {
   gen::generateDataset({{"stove", 1, 32}}, gen::MeshFormat::Obj, dir / "replay");
   fs::create_directories(dir / "linked");
   for (const auto& e : fs::directory_iterator(dir / "store")) {
-    if (e.is_directory()) fs::create_directory_symlink(e.path(), dir / "linked" / e.path().filename());
+    if (e.is_directory())
+      fs::create_directory_symlink(e.path(), dir / "linked" / e.path().filename());
   }
   const auto r = test::runCommand(
       "cd " + shellQuote(SAGRID_SOURCE_DIR) + " && " + shellQuote(test::sagridBinary().string()) +

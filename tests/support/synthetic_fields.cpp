@@ -28,8 +28,7 @@ PredictedField plate(const std::vector<Eigen::Vector3f>& centres, const std::vec
 
 }  // namespace
 
-PredictedField plateField(const std::vector<Eigen::Vector3f>& centres, float noise,
-                          unsigned seed) {
+PredictedField plateField(const std::vector<Eigen::Vector3f>& centres, float noise, unsigned seed) {
   return plate(centres, {}, noise, seed);
 }
 

@@ -77,7 +77,8 @@ TEST(UpAxisWeightsText, RoundTripsAndNamesWhatIsWrong) {
   };
   EXPECT_NE(message("1, 2, 3").find("3 numbers, this detector has"), std::string::npos);
   EXPECT_NE(message("").find("0 numbers"), std::string::npos);
-  EXPECT_NE(message("1, nan, 3").find("'nan' (number 2) is not a finite number"), std::string::npos);
+  EXPECT_NE(message("1, nan, 3").find("'nan' (number 2) is not a finite number"),
+            std::string::npos);
   EXPECT_NE(message("1, x2f").find("'x2' (number 2)"), std::string::npos);
   EXPECT_NE(message(formatUpAxisWeights(w) + ", 1").find("more than the"), std::string::npos);
 }
