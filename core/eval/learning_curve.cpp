@@ -110,6 +110,29 @@ Stats statsOf(const LearningCurveReport& r, const std::string& model, int k) {
   return s;
 }
 
+// The models' mean errors at k averaged over the models measured both at k and at the first k
+// asked for (k = 0, the init models, in the default --ks), and that average's ratio to the same
+// models' average at the first k: "does fixing k objects pay?" in one number.
+struct Overall {
+  double mean = NAN, ratio = NAN;
+  int models = 0;
+};
+
+Overall overallAt(const LearningCurveReport& r, int k) {
+  Overall o;
+  if (r.ks.empty()) return o;
+  double sum = 0, baseSum = 0;
+  for (const auto& model : r.modelNames) {
+    const Stats s = statsOf(r, model, k), base = statsOf(r, model, r.ks.front());
+    if (!std::isfinite(s.mean) || !std::isfinite(base.mean)) continue;
+    sum += s.mean, baseSum += base.mean, ++o.models;
+  }
+  if (o.models == 0) return o;
+  o.mean = sum / o.models;
+  if (baseSum > 0) o.ratio = sum / baseSum;
+  return o;
+}
+
 std::string centimetres(double metres) {
   if (!std::isfinite(metres)) return "–";
   char b[32];
@@ -342,6 +365,16 @@ std::string learningCurveMarkdown(const LearningCurveReport& r) {
      << " bench replay). Error: the paper's metric (distance from the single predicted point to "
         "the nearest ground truth) on the held-out fold, mean ± sd across folds, in cm. k = 0 "
         "is the init model.\n";
+  if (!r.ks.empty())
+    md << "\n## Average of the models\n\n| k | models | error (cm) | ÷ error at k = "
+       << kLabel(r.ks.front()) << " |\n|---|---|---|---|\n";
+  for (int k : r.ks) {
+    const Overall o = overallAt(r, k);
+    char ratio[32] = "–";
+    if (std::isfinite(o.ratio)) std::snprintf(ratio, sizeof ratio, "%.2f", o.ratio);
+    md << "| " << kLabel(k) << " | " << o.models << " | " << centimetres(o.mean) << " | " << ratio
+       << " |\n";
+  }
   for (const auto& model : r.modelNames) {
     md << "\n## " << model << "\n\n| k | k used (mean) | folds | error (cm) | sd (cm) |\n"
        << "|---|---|---|---|---|\n";
@@ -386,6 +419,14 @@ json learningCurveJson(const LearningCurveReport& r) {
                                      {"paper_error_m_mean", number(s.mean)},
                                      {"paper_error_m_sd", number(s.sd)}});
     }
+  j["average"] = json::array();
+  for (int k : r.ks) {
+    const Overall o = overallAt(r, k);
+    j["average"].push_back({{"k", kLabel(k)},
+                            {"models", o.models},
+                            {"paper_error_m_mean", number(o.mean)},
+                            {"ratio_to_first_k", number(o.ratio)}});
+  }
   return j;
 }
 

@@ -47,6 +47,44 @@ TEST(LearningCurve, FoldsAreStratifiedByGroup) {
   EXPECT_THROW(kFoldSplit(5, 2, 1, {"a", "b"}), InvalidArgument);
 }
 
+// Two models, two folds: the average row is over the models, its ratio to k = 0 is the ratio of
+// the averages, and a model without a value at k stays out of both.
+TEST(LearningCurve, ReportAveragesTheModelsAndGivesTheRatioToKZero) {
+  LearningCurveReport r;
+  r.dataDir = "real", r.initDir = "models";
+  r.ks = {0, kAllObjects};
+  r.modelNames = {"sink.fluidsource", "stove.heatsource"};
+  r.folds = {{"a"}, {"b"}};
+  auto add = [&](const std::string& model, int fold, int k, double error) {
+    LearningCurvePoint p;
+    p.model = model, p.fold = fold, p.k = k, p.kUsed = k == 0 ? 0 : 3, p.testObjects = 1;
+    p.paperError = error;
+    r.points.push_back(p);
+  };
+  add("sink.fluidsource", 1, 0, 0.10), add("sink.fluidsource", 2, 0, 0.30);  // mean 0.20
+  add("stove.heatsource", 1, 0, 0.10), add("stove.heatsource", 2, 0, 0.10);  // mean 0.10
+  add("sink.fluidsource", 1, kAllObjects, 0.05), add("sink.fluidsource", 2, kAllObjects, 0.15);
+  add("stove.heatsource", 1, kAllObjects, 0.08), add("stove.heatsource", 2, kAllObjects, 0.12);
+  const auto j = learningCurveJson(r);
+  ASSERT_EQ(j.at("average").size(), 2u);
+  EXPECT_NEAR(j["average"][0]["paper_error_m_mean"].get<double>(), 0.15, 1e-12);
+  EXPECT_NEAR(j["average"][0]["ratio_to_first_k"].get<double>(), 1.0, 1e-12);
+  EXPECT_NEAR(j["average"][1]["paper_error_m_mean"].get<double>(), 0.10, 1e-12);
+  EXPECT_NEAR(j["average"][1]["ratio_to_first_k"].get<double>(), 0.10 / 0.15, 1e-12);
+  EXPECT_EQ(j["average"][1]["models"], 2);
+  const std::string md = learningCurveMarkdown(r);
+  EXPECT_NE(md.find("| all | 2 | 10.0 | 0.67 |"), std::string::npos) << md;
+
+  LearningCurvePoint missing;  // a third model measured only at k = 0
+  missing.model = "stove.togglebutton", missing.fold = 1, missing.k = 0, missing.testObjects = 1;
+  missing.paperError = 0.9;
+  r.modelNames.push_back(missing.model);
+  r.points.push_back(missing);
+  EXPECT_EQ(learningCurveJson(r)["average"][1]["models"], 2);
+  EXPECT_NEAR(learningCurveJson(r)["average"][1]["ratio_to_first_k"].get<double>(), 0.10 / 0.15,
+              1e-12);
+}
+
 TEST(LearningCurve, ParsesObjectCounts) {
   EXPECT_EQ(parseLearningCurveKs("0,2,5,10,all"), (std::vector<int>{0, 2, 5, 10, kAllObjects}));
   EXPECT_THROW(parseLearningCurveKs("0,x"), InvalidArgument);
