@@ -51,7 +51,7 @@ void setupUpAxis(CLI::App& root) {
       try {
         options.weights = sagrid::parseUpAxisWeights(sagrid::readFileBytes(o->weights));
       } catch (const sagrid::InvalidArgument& e) {
-        throw sagrid::InvalidArgument(o->weights + ": " + e.what());
+        throw sagrid::FileError(o->weights, e.what());
       }
     }
     if (!o->expect.empty()) options.expect = sagrid::parseUpAxis(o->expect);
