@@ -99,17 +99,31 @@ void writeModelsWithFittedCounts(const fs::path& modelsDir, const std::vector<Co
   }
 }
 
+namespace {
+
+std::string thresholdText(const ExtractionSettings& s) {
+  char text[64];
+  std::snprintf(text, sizeof text, "%s%.3f", s.maxDistanceAboveBest ? "best + " : "",
+                s.maxDistance);
+  return text;
+}
+
+}  // namespace
+
 std::string countFitMarkdown(const std::vector<CountFit>& fits) {
   std::ostringstream out;
-  out << "| Model | Objects | Max distance | NMS radius | Right count | Point edits / object |\n"
-         "|---|---|---|---|---|---|\n";
-  char line[256];
+  out << "| Model | Objects | Max distance | Min basin depth | NMS radius | Right count | Point "
+         "edits / object |\n"
+         "|---|---|---|---|---|---|---|\n";
+  char line[384];
   for (const auto& f : fits) {
-    std::snprintf(
-        line, sizeof line,
-        "| %s | %zu | %.3f -> %.3f | %.3f -> %.3f | %.1f %% -> %.1f %% | %.2f -> %.2f |\n",
-        f.model.c_str(), f.objects, f.before.maxDistance, f.after.maxDistance, f.before.nmsRadius,
-        f.after.nmsRadius, 100 * f.rightBefore, 100 * f.rightAfter, f.editsBefore, f.editsAfter);
+    std::snprintf(line, sizeof line,
+                  "| %s | %zu | %s -> %s | %.3f -> %.3f | %.3f -> %.3f | %.1f %% -> %.1f %% | "
+                  "%.2f -> %.2f |\n",
+                  f.model.c_str(), f.objects, thresholdText(f.before).c_str(),
+                  thresholdText(f.after).c_str(), f.before.minPersistence, f.after.minPersistence,
+                  f.before.nmsRadius, f.after.nmsRadius, 100 * f.rightBefore, 100 * f.rightAfter,
+                  f.editsBefore, f.editsAfter);
     out << line;
   }
   return out.str();

@@ -1,5 +1,5 @@
-// Refits the automatic instance count of each model (ExtractionSettings::maxDistance and
-// nmsRadius, see calibrateExtraction) on the fields an evaluation kept — the fields annotate
+// Refits the automatic instance count of each model (ExtractionSettings' threshold, basin depth
+// and nmsRadius, see calibrateExtraction) on the fields an evaluation kept — the fields annotate
 // really sees (test-time symmetries, held-out objects) rather than the training fields of the
 // model's own training objects, on which training calibrates. `sagrid eval --fit-counts DIR`.
 #pragma once

@@ -65,7 +65,9 @@ json toJson(const ModelCard& c) {
   j["point_extraction"] = {{"max_distance", c.extraction.maxDistance},
                            {"nms_radius", c.extraction.nmsRadius},
                            {"confidence_scale", c.extraction.confidenceScale},
-                           {"refine_voxels", c.extraction.refineVoxels}};
+                           {"refine_voxels", c.extraction.refineVoxels},
+                           {"max_distance_above_best", c.extraction.maxDistanceAboveBest},
+                           {"min_persistence", c.extraction.minPersistence}};
   j["retrieval"] = {{"descriptor_mean", c.descriptorMean}, {"descriptor_std", c.descriptorStd}};
   j["embedding_search"] = {{"affordance_feature_mean", c.affordanceFeatureMean}};
   j["training"] = c.training;
@@ -106,6 +108,10 @@ ModelCard modelCardFromJson(const json& j, const fs::path& path) {
       c.extraction.nmsRadius = p.value("nms_radius", c.extraction.nmsRadius);
       c.extraction.confidenceScale = p.value("confidence_scale", c.extraction.confidenceScale);
       c.extraction.refineVoxels = p.value("refine_voxels", c.extraction.refineVoxels);
+      // Cards written before the relative threshold and the depth test read as without them.
+      c.extraction.maxDistanceAboveBest =
+          p.value("max_distance_above_best", c.extraction.maxDistanceAboveBest);
+      c.extraction.minPersistence = p.value("min_persistence", c.extraction.minPersistence);
     }
     if (j.contains("retrieval")) {
       c.descriptorMean = j.at("retrieval").value("descriptor_mean", std::vector<float>{});
@@ -192,6 +198,9 @@ void validateCard(const ModelCard& c, const fs::path& path) {
   if (!(std::isfinite(c.extraction.refineVoxels) && c.extraction.refineVoxels >= 0 &&
         c.extraction.refineVoxels <= 64))
     fail("point_extraction.refine_voxels", "must be a number in [0, 64]");
+  if (!(std::isfinite(c.extraction.minPersistence) && c.extraction.minPersistence >= 0 &&
+        c.extraction.minPersistence <= 10))
+    fail("point_extraction.min_persistence", "must be a number in [0, 10]");
   auto statistics = [&](const char* field, const std::vector<float>& values, int expected) {
     if (!values.empty() && static_cast<int>(values.size()) != expected)
       fail(field, "has " + std::to_string(values.size()) + " values but the features have " +

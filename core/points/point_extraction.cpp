@@ -127,52 +127,119 @@ ExtractedPoint argminPoint(const PredictedField& field, const ExtractionSettings
   return pointAt(field, static_cast<std::size_t>(it - field.distances.begin()), settings);
 }
 
-std::vector<std::size_t> localMinima(const PredictedField& field) {
+std::vector<FieldMinimum> fieldMinima(const PredictedField& field) {
   validate(field);
+  const std::size_t n = field.voxels.size();
   const std::size_t r = static_cast<std::size_t>(field.resolution);
   std::vector<std::int32_t> slot(r * r * r, -1);
   auto linear = [&](const VoxelIndex& v) { return (v.i * r + v.j) * r + v.k; };
-  for (std::size_t v = 0; v < field.voxels.size(); ++v)
-    slot[linear(field.voxels[v])] = static_cast<std::int32_t>(v);
-  std::vector<std::size_t> minima;
-  for (std::size_t v = 0; v < field.voxels.size(); ++v) {
-    const VoxelIndex& p = field.voxels[v];
-    const float d = field.distances[v];
-    bool isMinimum = true;
-    for (int a = -1; a <= 1 && isMinimum; ++a)
-      for (int b = -1; b <= 1 && isMinimum; ++b)
-        for (int c = -1; c <= 1 && isMinimum; ++c) {
+  for (std::size_t v = 0; v < n; ++v) slot[linear(field.voxels[v])] = static_cast<std::int32_t>(v);
+  // Voxels join the sublevel set in order of distance (plateaus: lower index first), so a voxel
+  // none of whose neighbours joined before it is exactly a local minimum of localMinima.
+  std::vector<std::size_t> order(n);
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return field.distances[a] < field.distances[b];
+  });
+  std::vector<std::size_t> rank(n);
+  for (std::size_t i = 0; i < n; ++i) rank[order[i]] = i;
+  constexpr std::size_t kOutside = std::numeric_limits<std::size_t>::max();
+  std::vector<std::size_t> parent(n, kOutside), minimumOf(n, kOutside);
+  auto find = [&](std::size_t x) {
+    while (parent[x] != x) x = parent[x] = parent[parent[x]];
+    return x;
+  };
+  std::vector<FieldMinimum> minima;
+  std::vector<std::size_t> slotOfMinimum(n, kOutside);
+  for (std::size_t x : order) {
+    const VoxelIndex& p = field.voxels[x];
+    std::size_t root = kOutside;
+    for (int a = -1; a <= 1; ++a)
+      for (int b = -1; b <= 1; ++b)
+        for (int c = -1; c <= 1; ++c) {
           const VoxelIndex q{p.i + a, p.j + b, p.k + c};
           if ((a == 0 && b == 0 && c == 0) || q.i < 0 || q.j < 0 || q.k < 0 ||
               q.i >= field.resolution || q.j >= field.resolution || q.k >= field.resolution)
             continue;
           const std::int32_t s = slot[linear(q)];
-          if (s < 0) continue;
-          // Plateaus: the lowest index of equal values is the minimum.
-          const float e = field.distances[s];
-          if (e < d || (e == d && static_cast<std::size_t>(s) < v)) isMinimum = false;
+          if (s < 0 || parent[s] == kOutside) continue;
+          const std::size_t other = find(static_cast<std::size_t>(s));
+          if (root == kOutside) {
+            root = other;
+            continue;
+          }
+          if (other == root) continue;
+          // Two basins meet at this voxel's level: the one with the worse minimum ends.
+          std::size_t keep = root, end = other;
+          if (rank[minimumOf[end]] < rank[minimumOf[keep]]) std::swap(keep, end);
+          minima[slotOfMinimum[minimumOf[end]]].persistence =
+              field.distances[x] - field.distances[minimumOf[end]];
+          parent[end] = keep;
+          root = keep;
         }
-    if (isMinimum) minima.push_back(v);
+    if (root == kOutside) {  // a new basin
+      parent[x] = minimumOf[x] = x;
+      slotOfMinimum[x] = minima.size();
+      minima.push_back({x, std::numeric_limits<float>::infinity()});
+    } else {
+      parent[x] = root;
+    }
   }
-  std::stable_sort(minima.begin(), minima.end(), [&](std::size_t x, std::size_t y) {
-    return field.distances[x] < field.distances[y];
-  });
-  return minima;
+  return minima;  // joined in distance order: best first
 }
+
+std::vector<std::size_t> localMinima(const PredictedField& field) {
+  std::vector<std::size_t> out;
+  for (const auto& m : fieldMinima(field)) out.push_back(m.voxel);
+  return out;
+}
+
+namespace {
+
+// The automatic count's rule over candidate minima, best first: the best is always kept; then
+// minima within the distance threshold whose basin is deep enough and that lie at least the
+// suppression radius from every kept one. `positionOf(i)` is asked only for candidates that pass
+// the threshold and depth tests.
+template <typename PositionOf>
+std::vector<std::size_t> keptMinima(const std::vector<float>& distances,
+                                    const std::vector<float>& persistences,
+                                    const ExtractionSettings& s, PositionOf&& positionOf) {
+  std::vector<std::size_t> kept;
+  std::vector<Eigen::Vector3f> keptAt;
+  if (distances.empty()) return kept;
+  const float threshold =
+      s.maxDistanceAboveBest ? distances.front() + s.maxDistance : s.maxDistance;
+  for (std::size_t i = 0; i < distances.size(); ++i) {
+    if (!kept.empty() && distances[i] > threshold) break;  // sorted by distance
+    if (!kept.empty() && persistences[i] < s.minPersistence) continue;
+    const Eigen::Vector3f p = positionOf(i);
+    bool suppressed = false;
+    for (const auto& k : keptAt) suppressed |= (k - p).norm() < s.nmsRadius;
+    if (suppressed) continue;
+    kept.push_back(i);
+    keptAt.push_back(p);
+  }
+  return kept;
+}
+
+}  // namespace
 
 std::vector<ExtractedPoint> autoCountPoints(const PredictedField& field,
                                             const ExtractionSettings& settings) {
-  const std::vector<std::size_t> minima = localMinima(field);
-  std::vector<ExtractedPoint> kept;
-  for (std::size_t m : minima) {
-    const ExtractedPoint candidate = pointAt(field, m, settings);
-    if (!kept.empty() && candidate.distance > settings.maxDistance) break;  // sorted by distance
-    bool suppressed = false;
-    for (const auto& k : kept)
-      if ((k.position - candidate.position).norm() < settings.nmsRadius) suppressed = true;
-    if (!suppressed) kept.push_back(candidate);
+  const std::vector<FieldMinimum> minima = fieldMinima(field);
+  std::vector<float> distances, persistences;
+  for (const auto& m : minima) {
+    distances.push_back(field.distances[m.voxel]);
+    persistences.push_back(m.persistence);
   }
-  return kept;
+  std::vector<ExtractedPoint> points(minima.size());
+  const auto kept = keptMinima(distances, persistences, settings, [&](std::size_t i) {
+    points[i] = pointAt(field, minima[i].voxel, settings);
+    return points[i].position;
+  });
+  std::vector<ExtractedPoint> out;
+  for (std::size_t i : kept) out.push_back(points[i]);
+  return out;
 }
 
 std::vector<ExtractedPoint> kMeansPoints(const PredictedField& field, int count,
@@ -230,37 +297,48 @@ ExtractionSettings calibrateExtraction(const std::vector<PredictedField>& fields
   ExtractionSettings best = base;
   if (fields.empty()) return best;
   double bestCost = std::numeric_limits<double>::max();
-  // Minima are computed once; only the filtering depends on the candidates.
-  std::vector<std::vector<ExtractedPoint>> minima;
+  // Minima, their depths and refined positions are computed once; only the filtering depends on
+  // the candidates.
+  struct Candidates {
+    std::vector<float> distances, persistences;
+    std::vector<Eigen::Vector3f> positions;
+  };
+  std::vector<Candidates> candidates;
   for (const auto& f : fields) {
-    ExtractionSettings all = base;
-    all.maxDistance = std::numeric_limits<float>::max();
-    all.nmsRadius = 0.0f;
-    minima.push_back(autoCountPoints(f, all));
+    Candidates c;
+    for (const auto& m : fieldMinima(f)) {
+      c.distances.push_back(f.distances[m.voxel]);
+      c.persistences.push_back(m.persistence);
+      c.positions.push_back(pointAt(f, m.voxel, base).position);
+    }
+    candidates.push_back(std::move(c));
   }
   // Fields averaged over test-time symmetries are smoother than a model's fields on its own
   // training objects: their minima sit higher, hence the larger candidates.
-  for (float maxDistance :
-       {0.01f, 0.015f, 0.02f, 0.03f, 0.04f, 0.05f, 0.06f, 0.08f, 0.1f, 0.12f, 0.15f, 0.2f}) {
-    for (float radius : {0.03f, 0.05f, 0.07f, 0.1f, 0.13f, 0.16f, 0.2f, 0.25f, 0.3f}) {
-      double total = 0;
-      for (std::size_t o = 0; o < fields.size(); ++o) {
-        std::vector<Eigen::Vector3f> kept;
-        for (const auto& m : minima[o]) {
-          if (!kept.empty() && m.distance > maxDistance) break;
-          bool suppressed = false;
-          for (const auto& k : kept) suppressed |= (k - m.position).norm() < radius;
-          if (!suppressed) kept.push_back(m.position);
+  ExtractionSettings s = base;
+  for (bool aboveBest : {false, true})
+    for (float persistence : {0.0f, 0.005f, 0.01f, 0.02f, 0.03f, 0.05f})
+      for (float maxDistance :
+           {0.01f, 0.015f, 0.02f, 0.03f, 0.04f, 0.05f, 0.06f, 0.08f, 0.1f, 0.12f, 0.15f, 0.2f})
+        for (float radius : {0.03f, 0.05f, 0.07f, 0.1f, 0.13f, 0.16f, 0.2f, 0.25f, 0.3f}) {
+          s.maxDistanceAboveBest = aboveBest;
+          s.minPersistence = persistence;
+          s.maxDistance = maxDistance;
+          s.nmsRadius = radius;
+          double total = 0;
+          for (std::size_t o = 0; o < fields.size() && total < bestCost; ++o) {
+            const Candidates& c = candidates[o];
+            std::vector<Eigen::Vector3f> kept;
+            for (std::size_t i : keptMinima(c.distances, c.persistences, s,
+                                            [&](std::size_t i) { return c.positions[i]; }))
+              kept.push_back(c.positions[i]);
+            total += cost(o, kept);
+          }
+          if (total < bestCost) {
+            bestCost = total;
+            best = s;
+          }
         }
-        total += cost(o, kept);
-      }
-      if (total < bestCost) {
-        bestCost = total;
-        best.maxDistance = maxDistance;
-        best.nmsRadius = radius;
-      }
-    }
-  }
   return best;
 }
 

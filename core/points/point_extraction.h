@@ -2,8 +2,9 @@
 // frame). One instance: the occupied voxel with the smallest predicted distance (paper, III-D).
 // A known count: threshold the low-distance voxels and cluster them with k-means (paper).
 // Unknown count (beyond the paper): local minima of the field among occupied voxels, non-maximum
-// suppression within a radius, and only minima predicted closer than a threshold — both
-// calibrated on training objects and stored in the model card. No torch here.
+// suppression within a radius, only minima predicted closer than a threshold (absolute, or above
+// the best minimum) and only basins deep enough (persistence) — calibrated and stored in the
+// model card. No torch here.
 #pragma once
 
 #include <Eigen/Core>
@@ -28,6 +29,15 @@ struct ExtractionSettings {
   // Sub-voxel refinement of each minimum: the centroid of the occupied voxels within this many
   // voxels of it, weighted by exp(-(d - d_min) / (half a voxel)). 0 = voxel centres (paper).
   float refineVoxels = 0.0f;
+  // Automatic count: maxDistance counts from the best minimum's predicted distance instead of
+  // from 0. On real objects the whole field often sits higher than on generated ones (every
+  // burner of a real cooker predicted 13-18 cm away, in normalized units), so an absolute
+  // threshold keeps only the best one.
+  bool maxDistanceAboveBest = false;
+  // Automatic count: keep only minima whose basin is at least this deep (normalized units): how
+  // far the field rises from the minimum before its basin joins a better one (0-dimensional
+  // persistence of the sublevel sets). Noise dimples in a shallow field have almost none.
+  float minPersistence = 0.0f;
 };
 
 struct ExtractedPoint {
@@ -53,17 +63,29 @@ std::vector<ExtractedPoint> autoCountPoints(const PredictedField& field,
 // Local minima (26-neighbourhood among occupied voxels), best first, as indices into the field.
 std::vector<std::size_t> localMinima(const PredictedField& field);
 
-// Chooses maxDistance and nmsRadius maximising the share of objects whose automatic count equals
-// the ground-truth count (ties: smaller total count difference), over a fixed grid of candidates.
-// `truths[i]` are the ground-truth points (normalized frame) of `fields[i]`.
-// Other settings (refinement, confidence scale) are taken from `base`.
+// A local minimum with the depth of its basin: the predicted distance at which, growing the set
+// of voxels below a level, its component joins one with a better minimum, minus its own
+// distance. The best minimum's basin never joins one: infinite persistence.
+struct FieldMinimum {
+  std::size_t voxel = 0;  // index into the field
+  float persistence = 0;
+};
+// The local minima of localMinima (same set, same order) with their persistence.
+std::vector<FieldMinimum> fieldMinima(const PredictedField& field);
+
+// Chooses maxDistance, maxDistanceAboveBest, minPersistence and nmsRadius maximising the share of
+// objects whose automatic count equals the ground-truth count (ties: smaller total count
+// difference), over a fixed grid of candidates. `truths[i]` are the ground-truth points (normalized
+// frame) of `fields[i]`. Other settings (refinement, confidence scale) are taken from `base`.
 ExtractionSettings calibrateExtraction(const std::vector<PredictedField>& fields,
                                        const std::vector<std::vector<Eigen::Vector3f>>& truths,
                                        const ExtractionSettings& base = {});
 
 // The same search with any objective: `cost(i, points)` is what the automatic count's points
 // (normalized frame, best first) cost on `fields[i]`; the candidate with the smallest summed cost
-// wins (the first one on ties). Returns `base` for no fields.
+// wins (the first one on ties; `cost` must not be negative). The candidates: an absolute or an
+// above-the-best threshold, a minimum basin depth, a suppression radius. Returns `base` for no
+// fields.
 using ExtractionCost = std::function<double(std::size_t, const std::vector<Eigen::Vector3f>&)>;
 ExtractionSettings calibrateExtraction(const std::vector<PredictedField>& fields,
                                        const ExtractionCost& cost, const ExtractionSettings& base);
