@@ -89,7 +89,7 @@ void setupExtract(CLI::App& root) {
       ->required();
   cmd->add_option("--out", o->out, "Output folder for <id>.npz")->required();
   cmd->add_option("--backend", o->backend, "embedded, dinov2 or trellis")
-      ->check(CLI::IsMember({"embedded", "dinov2", "trellis"}));
+      ->check(CLI::IsMember({"embedded", "embedded-texture", "dinov2", "trellis"}));
   cmd->add_option(
       "--cache", o->cache,
       "Feature cache folder (keyed by mesh sha256 + feature config; damaged entries are rebuilt)");

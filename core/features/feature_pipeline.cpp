@@ -13,6 +13,7 @@
 #include "core/features/dinov2_features.h"
 #include "core/features/embedded_features.h"
 #include "core/features/feature_cache.h"
+#include "core/features/texture_detail.h"
 #include "core/features/trellis_latents.h"
 #include "core/geometry/surface_scene.h"
 #include "core/grid/normalization.h"
@@ -27,14 +28,15 @@ namespace {
 constexpr int kEmbeddedVersion = 1;
 constexpr int kDefaultEmbeddedRenderSize = 96;
 
-enum class Backend { Embedded, Dinov2, Trellis };
+enum class Backend { Embedded, EmbeddedTexture, Dinov2, Trellis };
 
 Backend parseBackend(const std::string& name) {
   if (name == "embedded") return Backend::Embedded;
+  if (name == "embedded-texture") return Backend::EmbeddedTexture;
   if (name == "dinov2") return Backend::Dinov2;
   if (name == "trellis") return Backend::Trellis;
   throw InvalidArgument("unknown feature backend '" + name +
-                        "' (choose embedded, dinov2 or trellis)");
+                        "' (choose embedded, embedded-texture, dinov2 or trellis)");
 }
 
 // Whether the views go through DINOv2 (dinov2, and trellis with a model for its descriptor) or
@@ -107,6 +109,19 @@ std::string geometryKey(const Mesh& mesh) {
   return sha256Hex(bytes);
 }
 
+// Per-voxel rows of `a` (aChannels wide) followed by those of `b`.
+std::vector<float> appendChannels(const std::vector<float>& a, int aChannels,
+                                  const std::vector<float>& b, int bChannels) {
+  const std::size_t rows = a.size() / static_cast<std::size_t>(aChannels);
+  std::vector<float> out;
+  out.reserve(a.size() + b.size());
+  for (std::size_t r = 0; r < rows; ++r) {
+    out.insert(out.end(), a.begin() + r * aChannels, a.begin() + (r + 1) * aChannels);
+    out.insert(out.end(), b.begin() + r * bChannels, b.begin() + (r + 1) * bChannels);
+  }
+  return out;
+}
+
 double secondsSince(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
@@ -116,6 +131,8 @@ int featureChannels(const FeatureOptions& options) {
   switch (parseBackend(options.backend)) {
     case Backend::Embedded:
       return kEmbeddedChannels;
+    case Backend::EmbeddedTexture:
+      return kEmbeddedChannels + kTextureDetailChannels;
     case Backend::Dinov2:
       return kDinov2Channels;
     case Backend::Trellis:
@@ -127,6 +144,7 @@ int featureChannels(const FeatureOptions& options) {
 int descriptorSize(const FeatureOptions& options) {
   switch (parseBackend(options.backend)) {
     case Backend::Embedded:
+    case Backend::EmbeddedTexture:
       return kEmbeddedDescriptorSize;
     case Backend::Dinov2:
       return kDinov2Channels;
@@ -139,6 +157,11 @@ int descriptorSize(const FeatureOptions& options) {
 std::vector<std::string> featureChannelNames(const FeatureOptions& options) {
   const Backend b = parseBackend(options.backend);
   if (b == Backend::Embedded) return embedded::channelNames();
+  if (b == Backend::EmbeddedTexture) {
+    std::vector<std::string> names = embedded::channelNames();
+    for (const auto& name : textureDetailChannelNames()) names.push_back(name);
+    return names;
+  }
   std::vector<std::string> names;
   const std::string prefix = b == Backend::Dinov2 ? "dinov2_" : "slat_";
   for (int c = 0; c < featureChannels(options); ++c) names.push_back(prefix + std::to_string(c));
@@ -183,14 +206,18 @@ FeatureGrid computeFeatures(const Mesh& mesh, const FeatureOptions& options) {
   const Aggregation aggregation = aggregationOf(options, backend);
 
   switch (backend) {
-    case Backend::Embedded: {
+    case Backend::Embedded:
+    case Backend::EmbeddedTexture: {
       embedded::Settings settings;
       settings.views = options.views;
       settings.renderSize = renderSize;
       settings.aggregation = aggregation;
       embedded::Result r = embedded::compute(normalized, scene, grid, seed, settings);
       out.voxels = grid.occupiedVoxels();
-      out.values = std::move(r.values);
+      out.values = backend == Backend::Embedded
+                       ? std::move(r.values)
+                       : appendChannels(r.values, kEmbeddedChannels,
+                                        textureDetail(normalized, grid), kTextureDetailChannels);
       out.descriptor = std::move(r.descriptor);
       break;
     }

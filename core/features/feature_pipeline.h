@@ -6,6 +6,8 @@
 //   "embedded" (default) — no download, CPU, ~1 s: multi-view albedo/normal/visibility aggregated
 //                into voxels plus geometric channels; kEmbeddedChannels per voxel and a
 //                kEmbeddedDescriptorSize-d object descriptor (see embedded_features.h).
+//   "embedded-texture" — the embedded channels plus sub-voxel texture detail (texture_detail.h):
+//                kEmbeddedChannels + 2 per voxel, the same descriptor.
 //   "dinov2"   — TRELLIS protocol with a user-supplied TorchScript dinov2_vitl14_reg
 //                (options.dinov2Model): 150 views, 518^2, pre-norm patch tokens 37x37x1024,
 //                bilinear sampling, mean over views; 1024 channels, 1024-d descriptor (mean patch
@@ -39,7 +41,7 @@ enum class Aggregation {
 };
 
 struct FeatureOptions {
-  std::string backend = "embedded";  // "embedded" | "dinov2" | "trellis"
+  std::string backend = "embedded";  // "embedded" | "embedded-texture" | "dinov2" | "trellis"
   int resolution = kDefaultGridResolution;
   std::filesystem::path cacheDir;        // empty = no cache
   std::optional<UpAxis> up;              // override the file's up axis on import

@@ -57,8 +57,8 @@ std::vector<int> occupiedSlots(const VoxelGrid& grid) {
   return slots;
 }
 
-std::vector<VoxelSurfaceStats> voxelSurfaceStats(const Mesh& mesh, const VoxelGrid& grid) {
-  std::vector<VoxelSurfaceStats> stats(grid.occupiedCount());
+void forEachSurfacePiece(const Mesh& mesh, const VoxelGrid& grid,
+                         const std::function<void(const SurfacePiece&)>& visit) {
   const std::vector<int> slots = occupiedSlots(grid);
   const int res = grid.resolution();
   const float h = 1.0f / res;
@@ -70,8 +70,6 @@ std::vector<VoxelSurfaceStats> voxelSurfaceStats(const Mesh& mesh, const VoxelGr
     const float twiceArea = cross.norm();
     if (!(twiceArea > 0.0f)) continue;  // degenerate (or NaN) triangles carry no surface
     const Eigen::Vector3f n = cross / twiceArea;
-    const std::array<float, 6> nn{n.x() * n.x(), n.y() * n.y(), n.z() * n.z(),
-                                  n.x() * n.y(), n.x() * n.z(), n.y() * n.z()};
     Polygon whole;
     whole.v[0] = a;
     whole.v[1] = a + ab;
@@ -92,27 +90,43 @@ std::vector<VoxelSurfaceStats> voxelSurfaceStats(const Mesh& mesh, const VoxelGr
           const int slot = slots[grid.linearIndex({i, j, k})];
           if (slot < 0) continue;  // touches the voxel only on its boundary
           Eigen::Vector3f areaVec = Eigen::Vector3f::Zero();
-          Eigen::Vector3f centroid = Eigen::Vector3f::Zero();
-          for (int m = 0; m < pz.n; ++m) {
-            areaVec += pz.v[m].cross(pz.v[(m + 1) % pz.n]);
-            centroid += pz.v[m];
-          }
+          for (int m = 0; m < pz.n; ++m) areaVec += pz.v[m].cross(pz.v[(m + 1) % pz.n]);
           const float area = 0.5f * std::abs(areaVec.dot(n));
           if (area <= 0.0f) continue;
-          centroid /= static_cast<float>(pz.n);
-          // Barycentrics of the centroid: (centroid - a) = u ab + v ac.
-          const Eigen::Vector3f d = centroid - a;
-          const float u = d.cross(ac).dot(cross) / (twiceArea * twiceArea);
-          const float v = ab.cross(d).dot(cross) / (twiceArea * twiceArea);
-          const Eigen::Vector3f albedo = mesh.albedo(static_cast<int>(t), u, v);
-          VoxelSurfaceStats& st = stats[slot];
-          st.area += area;
-          for (int c = 0; c < 3; ++c) st.albedo[c] += area * albedo[c];
-          for (int c = 0; c < 6; ++c) st.normalTensor[c] += area * nn[c];
+          visit({static_cast<int>(t), slot, pz.v, pz.n, area, n});
         }
       }
     }
   }
+}
+
+Eigen::Vector2f barycentricIn(const Mesh& mesh, int triangle, const Eigen::Vector3f& p) {
+  const Eigen::Vector3i& tri = mesh.triangles[static_cast<std::size_t>(triangle)];
+  const Eigen::Vector3f& a = mesh.positions[tri[0]];
+  const Eigen::Vector3f ab = mesh.positions[tri[1]] - a, ac = mesh.positions[tri[2]] - a;
+  const Eigen::Vector3f cross = ab.cross(ac);
+  const float twiceArea = cross.norm();
+  const float twiceAreaSquared = twiceArea * twiceArea;
+  const Eigen::Vector3f d = p - a;
+  return {d.cross(ac).dot(cross) / twiceAreaSquared, ab.cross(d).dot(cross) / twiceAreaSquared};
+}
+
+std::vector<VoxelSurfaceStats> voxelSurfaceStats(const Mesh& mesh, const VoxelGrid& grid) {
+  std::vector<VoxelSurfaceStats> stats(grid.occupiedCount());
+  forEachSurfacePiece(mesh, grid, [&](const SurfacePiece& piece) {
+    Eigen::Vector3f centroid = Eigen::Vector3f::Zero();
+    for (int m = 0; m < piece.vertexCount; ++m) centroid += piece.vertices[m];
+    centroid /= static_cast<float>(piece.vertexCount);
+    const Eigen::Vector2f uv = barycentricIn(mesh, piece.triangle, centroid);
+    const Eigen::Vector3f albedo = mesh.albedo(piece.triangle, uv.x(), uv.y());
+    const Eigen::Vector3f& n = piece.normal;
+    const std::array<float, 6> nn{n.x() * n.x(), n.y() * n.y(), n.z() * n.z(),
+                                  n.x() * n.y(), n.x() * n.z(), n.y() * n.z()};
+    VoxelSurfaceStats& st = stats[static_cast<std::size_t>(piece.slot)];
+    st.area += piece.area;
+    for (int c = 0; c < 3; ++c) st.albedo[c] += piece.area * albedo[c];
+    for (int c = 0; c < 6; ++c) st.normalTensor[c] += piece.area * nn[c];
+  });
   return stats;
 }
 

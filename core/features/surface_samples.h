@@ -4,7 +4,9 @@
 // at the piece's centroid.
 #pragma once
 
+#include <Eigen/Core>
 #include <array>
+#include <functional>
 #include <vector>
 
 #include "core/grid/voxel_grid.h"
@@ -23,6 +25,26 @@ struct VoxelSurfaceStats {
 // One entry per occupied voxel of `grid`, in grid.occupiedVoxels() order. `normalizedMesh` is the
 // mesh `grid` was voxelized from. A face lying exactly on a voxel boundary counts in both voxels.
 std::vector<VoxelSurfaceStats> voxelSurfaceStats(const Mesh& normalizedMesh, const VoxelGrid& grid);
+
+// One triangle's part inside one occupied voxel: a convex polygon (3 to 9 vertices, normalized
+// frame) with its area and the triangle's unit normal.
+struct SurfacePiece {
+  int triangle = 0;
+  int slot = 0;  // position of the voxel in grid.occupiedVoxels()
+  const Eigen::Vector3f* vertices = nullptr;
+  int vertexCount = 0;
+  float area = 0.0f;
+  Eigen::Vector3f normal = Eigen::Vector3f::UnitZ();
+};
+
+// Calls `visit` for every piece of positive area, clipping each triangle against the voxels it
+// crosses slab by slab (the exact clipping voxelSurfaceStats uses).
+void forEachSurfacePiece(const Mesh& normalizedMesh, const VoxelGrid& grid,
+                         const std::function<void(const SurfacePiece&)>& visit);
+
+// Barycentric (u, v) of `p` in triangle `triangle` of `mesh`: p = a + u (b - a) + v (c - a), for
+// Mesh::albedo. `p` is assumed to lie in the triangle's plane.
+Eigen::Vector2f barycentricIn(const Mesh& mesh, int triangle, const Eigen::Vector3f& p);
 
 // Linear voxel index -> position in grid.occupiedVoxels(), -1 for empty voxels.
 std::vector<int> occupiedSlots(const VoxelGrid& grid);
