@@ -39,4 +39,14 @@ PredictedField plateFieldWithOffsets(const std::vector<Eigen::Vector3f>& centres
 
 Eigen::Vector3f onPlate(int i, int j) { return voxelCenter({i, j, 10}, kPlateResolution); }
 
+std::vector<Eigen::Vector3f> fiveBurnersOnPlate() {
+  return {onPlate(6, 6), onPlate(6, 25), onPlate(25, 6), onPlate(25, 25), onPlate(16, 16)};
+}
+
+float nearestExtracted(const std::vector<ExtractedPoint>& points, const Eigen::Vector3f& p) {
+  float best = 1e9f;
+  for (const auto& q : points) best = std::min(best, (q.position - p).norm());
+  return best;
+}
+
 }  // namespace sagrid::test

@@ -23,4 +23,10 @@ PredictedField plateFieldWithOffsets(const std::vector<Eigen::Vector3f>& centres
 // The centre of plate voxel (i, j) in the normalized frame.
 Eigen::Vector3f onPlate(int i, int j);
 
+// Five burners on the plate: the four corners' neighbourhoods and the centre.
+std::vector<Eigen::Vector3f> fiveBurnersOnPlate();
+
+// Distance from `p` to the nearest extracted point (1e9 for none).
+float nearestExtracted(const std::vector<ExtractedPoint>& points, const Eigen::Vector3f& p);
+
 }  // namespace sagrid::test

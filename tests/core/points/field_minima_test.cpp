@@ -66,8 +66,7 @@ TEST(FieldMinima, EveryLocalMinimumOnceBestFirst) {
 TEST(FieldMinima, DepthTestDropsNoiseDimplesWithoutSuppression) {
   // Five burners in a noisy field: with no suppression radius and a loose threshold every noise
   // dimple counts; requiring a basin deeper than the noise leaves the five.
-  const std::vector<Eigen::Vector3f> burners = {onPlate(6, 6), onPlate(6, 25), onPlate(25, 6),
-                                                onPlate(25, 25), onPlate(16, 16)};
+  const std::vector<Eigen::Vector3f> burners = test::fiveBurnersOnPlate();
   const auto f = plateField(burners, 0.04f, 7);
   ExtractionSettings s;
   s.maxDistance = 0.1f;
@@ -76,11 +75,8 @@ TEST(FieldMinima, DepthTestDropsNoiseDimplesWithoutSuppression) {
   s.minPersistence = 0.1f;
   const auto points = autoCountPoints(f, s);
   ASSERT_EQ(points.size(), 5u);
-  for (const auto& burner : burners) {
-    float nearest = 1e9f;
-    for (const auto& p : points) nearest = std::min(nearest, (p.position - burner).norm());
-    EXPECT_LE(nearest, 1.5f * kVoxel);
-  }
+  for (const auto& burner : burners)
+    EXPECT_LE(test::nearestExtracted(points, burner), 1.5f * kVoxel);
 }
 
 TEST(FieldMinima, ThresholdAboveTheBestKeepsEveryInstanceOfAFieldThatSitsHigh) {

@@ -10,16 +10,11 @@
 namespace sagrid {
 namespace {
 
+using test::nearestExtracted;
 using test::onPlate;
 using test::plateField;
 constexpr int kRes = test::kPlateResolution;
 const float kVoxel = 1.0f / kRes;
-
-float nearest(const std::vector<ExtractedPoint>& points, const Eigen::Vector3f& p) {
-  float best = 1e9f;
-  for (const auto& q : points) best = std::min(best, (q.position - p).norm());
-  return best;
-}
 
 TEST(PointExtraction, ArgminFindsTheSmallestDistance) {
   const auto f = plateField({onPlate(7, 21)});
@@ -44,15 +39,14 @@ TEST(PointExtraction, RejectsEmptyAndMismatchedFields) {
 }
 
 TEST(PointExtraction, AutoCountFindsFiveBurnersAmongNoise) {
-  const std::vector<Eigen::Vector3f> burners = {onPlate(6, 6), onPlate(6, 25), onPlate(25, 6),
-                                                onPlate(25, 25), onPlate(16, 16)};
+  const std::vector<Eigen::Vector3f> burners = test::fiveBurnersOnPlate();
   const auto f = plateField(burners, 0.012f, 7);
   ExtractionSettings s;
   s.maxDistance = 0.03f;
   s.nmsRadius = 0.15f;
   const auto points = autoCountPoints(f, s);
   ASSERT_EQ(points.size(), 5u);
-  for (const auto& b : burners) EXPECT_LE(nearest(points, b), 1.5f * kVoxel);
+  for (const auto& b : burners) EXPECT_LE(nearestExtracted(points, b), 1.5f * kVoxel);
   // Sorted best first and confidences in (0, 1].
   for (std::size_t i = 1; i < points.size(); ++i)
     EXPECT_LE(points[i - 1].distance, points[i].distance);
@@ -75,8 +69,8 @@ TEST(PointExtraction, AutoCountKeepsOnlyCloseMinima) {
   s.nmsRadius = 0.1f;
   const auto points = autoCountPoints(f, s);
   ASSERT_EQ(points.size(), 2u);
-  EXPECT_LE(nearest(points, onPlate(5, 5)), 1e-5f);
-  EXPECT_LE(nearest(points, onPlate(26, 26)), 1e-5f);
+  EXPECT_LE(nearestExtracted(points, onPlate(5, 5)), 1e-5f);
+  EXPECT_LE(nearestExtracted(points, onPlate(26, 26)), 1e-5f);
 }
 
 TEST(PointExtraction, KMeansWithKnownCountFindsEachInstance) {
@@ -85,7 +79,7 @@ TEST(PointExtraction, KMeansWithKnownCountFindsEachInstance) {
   const auto f = plateField(knobs, 0.003f, 3);
   const auto points = kMeansPoints(f, 4, {});
   ASSERT_EQ(points.size(), 4u);
-  for (const auto& k : knobs) EXPECT_LE(nearest(points, k), 1.0f * kVoxel);
+  for (const auto& k : knobs) EXPECT_LE(nearestExtracted(points, k), 1.0f * kVoxel);
 }
 
 TEST(PointExtraction, KMeansCentroidRecoversTheCentreOfARing) {
@@ -105,8 +99,8 @@ TEST(PointExtraction, KMeansCentroidRecoversTheCentreOfARing) {
     }
   const auto points = kMeansPoints(f, 2, {});
   ASSERT_EQ(points.size(), 2u);
-  EXPECT_LE(nearest(points, centre), 0.6f * kVoxel);
-  EXPECT_LE(nearest(points, other), 0.6f * kVoxel);
+  EXPECT_LE(nearestExtracted(points, centre), 0.6f * kVoxel);
+  EXPECT_LE(nearestExtracted(points, other), 0.6f * kVoxel);
 }
 
 TEST(PointExtraction, LocalMinimaOfAPlateauAreReportedOnce) {
