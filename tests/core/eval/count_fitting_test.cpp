@@ -112,10 +112,14 @@ TEST(CountFitting, WritesACopiedModelsFolderWithTheRefittedCards) {
   fit.model = "stove.heatsource";
   fit.after.maxDistance = 0.12f;
   fit.after.nmsRadius = 0.25f;
+  fit.after.maxDistanceAboveBest = true;
+  fit.after.minPersistence = 0.02f;
   writeModelsWithFittedCounts(modelsDir, {fit}, root / "fitted");
   const auto card = model::readModelCard(root / "fitted" / "stove.heatsource.json");
   EXPECT_FLOAT_EQ(card.extraction.maxDistance, 0.12f);
   EXPECT_FLOAT_EQ(card.extraction.nmsRadius, 0.25f);
+  EXPECT_TRUE(card.extraction.maxDistanceAboveBest);
+  EXPECT_FLOAT_EQ(card.extraction.minPersistence, 0.02f);
   EXPECT_TRUE(std::filesystem::exists(root / "fitted" / "stove.heatsource.pt"));
   const auto original = model::readModelCard(modelsDir / "stove.heatsource.json");
   EXPECT_NE(original.extraction.maxDistance, 0.12f);

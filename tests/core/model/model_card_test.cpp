@@ -86,6 +86,23 @@ TEST(ModelCardValidation, PointExtractionSettingsMustBePositive) {
   EXPECT_THAT(loadError(card), HasSubstr("point_extraction.max_distance"));
   edit(card, [](json& j) { j["point_extraction"]["max_distance"] = "far"; });
   EXPECT_THAT(loadError(card), HasSubstr("wrong field type"));
+  edit(card, [](json& j) {
+    j["point_extraction"]["max_distance"] = 0.04;
+    j["point_extraction"]["min_persistence"] = -0.01;
+  });
+  EXPECT_THAT(loadError(card), HasSubstr("point_extraction.min_persistence"));
+}
+
+TEST(ModelCardValidation, CardsWithoutTheNewerCountSettingsReadAsBefore) {
+  // Cards written before the relative threshold and the basin depth: absolute, no depth test.
+  const fs::path card = savedCard();
+  edit(card, [](json& j) {
+    j["point_extraction"].erase("max_distance_above_best");
+    j["point_extraction"].erase("min_persistence");
+  });
+  const auto extraction = AffordanceModel::load(card).card().extraction;
+  EXPECT_FALSE(extraction.maxDistanceAboveBest);
+  EXPECT_EQ(extraction.minPersistence, 0.0f);
 }
 
 TEST(ModelCardValidation, DuplicatedCardInOneFolderIsRefused) {
