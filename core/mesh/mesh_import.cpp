@@ -381,6 +381,28 @@ void fillMissingNormals(Mesh& mesh, const std::vector<bool>& missing) {
   }
 }
 
+// Sets each mesh's primitive-type flags from its faces (1 index: point, 2: line, 3: triangle,
+// more: polygon), keeping assimp's other flag bits. The scene is the importer's, before any
+// post-processing.
+void recomputePrimitiveTypes(const aiScene& scene) {
+  constexpr unsigned kTypes = aiPrimitiveType_POINT | aiPrimitiveType_LINE |
+                              aiPrimitiveType_TRIANGLE | aiPrimitiveType_POLYGON;
+  for (unsigned m = 0; m < scene.mNumMeshes; ++m) {
+    aiMesh* mesh = scene.mMeshes[m];
+    if (!mesh || !mesh->mFaces) continue;
+    unsigned types = 0;
+    for (unsigned f = 0; f < mesh->mNumFaces; ++f) {
+      const unsigned n = mesh->mFaces[f].mNumIndices;
+      types |= n == 1   ? aiPrimitiveType_POINT
+               : n == 2 ? aiPrimitiveType_LINE
+               : n == 3 ? aiPrimitiveType_TRIANGLE
+               : n > 3  ? aiPrimitiveType_POLYGON
+                        : 0u;
+    }
+    if (types) mesh->mPrimitiveTypes = (mesh->mPrimitiveTypes & ~kTypes) | types;
+  }
+}
+
 }  // namespace
 
 namespace {
@@ -420,9 +442,16 @@ Mesh importMesh(const fs::path& path, const ImportOptions& options) {
   // the file's frame), so assimp's Collada z-up to y-up rotation must not happen.
   importer.SetPropertyBool(AI_CONFIG_IMPORT_COLLADA_IGNORE_UP_DIRECTION, true);
   importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
-  const unsigned flags = aiProcess_Triangulate | aiProcess_JoinIdenticalVertices |
-                         aiProcess_SortByPType | aiProcess_ValidateDataStructure;
-  const aiScene* scene = importer.ReadFile(path.string(), flags);
+  // Read first, post-process second: assimp's OBJ loader turns a two-vertex face ("f 4 5", as
+  // some Sweet Home 3D models have) into a line without flagging its mesh as holding lines, and
+  // the validator then refuses the whole file (assimp issue 2554). With the flags recomputed
+  // from the faces, SortByPType drops the lines and validation checks the rest.
+  const aiScene* scene = importer.ReadFile(path.string(), 0);
+  if (scene) {
+    recomputePrimitiveTypes(*scene);
+    scene = importer.ApplyPostProcessing(aiProcess_Triangulate | aiProcess_JoinIdenticalVertices |
+                                         aiProcess_SortByPType | aiProcess_ValidateDataStructure);
+  }
   // Past the deadline the result is refused even where the loader finished: the limit is the
   // user's (most loaders ignore the cancel).
   if (deadline.expired()) throw FileError(path, deadline.problem());
@@ -431,6 +460,10 @@ Mesh importMesh(const fs::path& path, const ImportOptions& options) {
     // Assimp's validator rejects meshes without faces; say it in the user's terms.
     if (reason.find("contains no faces") != std::string::npos) {
       throw FileError(path, "contains no triangles (empty scene)");
+    }
+    // SortByPType dropped every mesh: all were lines or points.
+    if (reason.find("No meshes remaining") != std::string::npos) {
+      throw FileError(path, "contains no triangles (only lines or points)");
     }
     throw FileError(path, "cannot be read as " + extension.substr(1) + ": " + reason);
   }

@@ -303,6 +303,21 @@ TEST(MeshImportErrors, OnlyDegenerateTriangles) {
               HasSubstr("only degenerate triangles"));
 }
 
+TEST(MeshImport, TwoVertexFacesAmongTrianglesAreLeftOut) {
+  // Some Sweet Home 3D models (Kator Legaz's coffee maker) hold "f a b" faces among their
+  // triangles; assimp's validator refused the whole file ("is a LINE but mPrimitiveTypes does not
+  // report the LINE flag"). The lines are dropped; the triangles stay.
+  const fs::path dir = test::freshTempDir();
+  const Mesh mesh = importMesh(writeFile(dir / "with_line.obj",
+                                         "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\n"
+                                         "f 1 2 3\nf 1 3 4\nf 4 5\nf 1 2 5\nl 2 5\n"));
+  EXPECT_EQ(mesh.triangles.size(), 3u);
+  // Only lines: still no triangles, said as such.
+  EXPECT_THAT(
+      importError(writeFile(dir / "only_lines.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2\nf 2 3\n")),
+      HasSubstr("no triangles"));
+}
+
 TEST(MeshImportErrors, EmptyScene) {
   const fs::path dir = test::freshTempDir();
   EXPECT_THAT(importError(writeFile(dir / "points.obj", "# just vertices\nv 0 0 0\nv 1 0 0\n")),
