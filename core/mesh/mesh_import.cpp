@@ -381,6 +381,18 @@ void fillMissingNormals(Mesh& mesh, const std::vector<bool>& missing) {
   }
 }
 
+// Triangles the scene's faces make (n - 2 per face of n >= 3 vertices), as parsed.
+std::size_t parsedTriangles(const aiScene& scene) {
+  std::size_t triangles = 0;
+  for (unsigned m = 0; m < scene.mNumMeshes; ++m) {
+    const aiMesh* mesh = scene.mMeshes[m];
+    if (!mesh || !mesh->mFaces) continue;
+    for (unsigned f = 0; f < mesh->mNumFaces; ++f)
+      if (mesh->mFaces[f].mNumIndices >= 3) triangles += mesh->mFaces[f].mNumIndices - 2;
+  }
+  return triangles;
+}
+
 // Sets each mesh's primitive-type flags from its faces (1 index: point, 2: line, 3: triangle,
 // more: polygon), keeping assimp's other flag bits. The scene is the importer's, before any
 // post-processing.
@@ -447,7 +459,12 @@ Mesh importMesh(const fs::path& path, const ImportOptions& options) {
   // the validator then refuses the whole file (assimp issue 2554). With the flags recomputed
   // from the faces, SortByPType drops the lines and validation checks the rest.
   const aiScene* scene = importer.ReadFile(path.string(), 0);
+  // What the loader parsed, before triangulation: the partial-read check compares this with what
+  // the file declares. Triangulation may then lose triangles of polygons that are not simple (a
+  // Sweet Home 3D fridge's 32-gons), which is not a cut file.
+  std::size_t trianglesParsed = 0;
   if (scene) {
+    trianglesParsed = parsedTriangles(*scene);
     recomputePrimitiveTypes(*scene);
     scene = importer.ApplyPostProcessing(aiProcess_Triangulate | aiProcess_JoinIdenticalVertices |
                                          aiProcess_SortByPType | aiProcess_ValidateDataStructure);
@@ -477,7 +494,10 @@ Mesh importMesh(const fs::path& path, const ImportOptions& options) {
   GeometryMerger merger(*scene, mesh);
   merger.merge();
   if (mesh.triangles.empty()) throw FileError(path, "contains no triangles");
-  reportPartialRead(path, facts, mesh.triangles.size(), options.lenient);
+  reportPartialRead(path, facts, trianglesParsed, options.lenient);
+  if (mesh.triangles.size() < trianglesParsed)
+    logger()->warn("{}: {} of {} triangles lost when triangulating polygons (not simple)",
+                   path.string(), trianglesParsed - mesh.triangles.size(), trianglesParsed);
 
   for (std::size_t v = 0; v < mesh.positions.size(); ++v) {
     if (!mesh.positions[v].allFinite()) {

@@ -318,6 +318,32 @@ TEST(MeshImport, TwoVertexFacesAmongTrianglesAreLeftOut) {
       HasSubstr("no triangles"));
 }
 
+TEST(MeshImport, PolygonsTheTriangulationCannotFullySplitAreNotACutFile) {
+  // The door-handle profile of Sweet Home 3D's fridge: one flat 32-gon, a row of collinear points
+  // under an arc. Assimp's ear clipping makes 28 of its 30 triangles; the file is whole, so it is
+  // read (a warning says what was lost) rather than refused as truncated.
+  const float xz[] = {0,       0.306f, -0.075f, 0.306f, -0.15f,  0.306f, -0.225f, 0.306f,
+                      -0.3f,   0.306f, -0.3f,   0.313f, -0.299f, 0.318f, -0.297f, 0.323f,
+                      -0.289f, 0.326f, -0.272f, 0.33f,  -0.242f, 0.334f, -0.2f,   0.338f,
+                      -0.15f,  0.341f, -0.1f,   0.343f, -0.056f, 0.345f, -0.025f, 0.346f,
+                      0,       0.346f, 0.025f,  0.345f, 0.057f,  0.344f, 0.1f,    0.343f,
+                      0.15f,   0.341f, 0.2f,    0.338f, 0.243f,  0.334f, 0.272f,  0.33f,
+                      0.29f,   0.326f, 0.297f,  0.323f, 0.299f,  0.318f, 0.3f,    0.313f,
+                      0.3f,    0.306f, 0.225f,  0.306f, 0.15f,   0.306f, 0.075f,  0.306f};
+  std::string obj, face = "f";
+  for (int v = 0; v < 32; ++v) {
+    obj += "v " + std::to_string(xz[2 * v]) + " 0 " + std::to_string(xz[2 * v + 1]) + "\n";
+    face += " " + std::to_string(v + 1);
+  }
+  const fs::path dir = test::freshTempDir();
+  const Mesh mesh = importMesh(writeFile(dir / "handle.obj", obj + face + "\n"));
+  EXPECT_GT(mesh.triangles.size(), 20u);
+  EXPECT_LE(mesh.triangles.size(), 30u);
+  // A file cut after its faces were declared is still refused.
+  EXPECT_THAT(importError(writeFile(dir / "cut.obj", obj + face + "\nf 1 2 3\nf 4 5")),
+              HasSubstr("incomplete"));
+}
+
 TEST(MeshImportErrors, EmptyScene) {
   const fs::path dir = test::freshTempDir();
   EXPECT_THAT(importError(writeFile(dir / "points.obj", "# just vertices\nv 0 0 0\nv 1 0 0\n")),
