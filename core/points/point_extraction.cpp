@@ -254,9 +254,16 @@ std::vector<ExtractedPoint> kMeansPoints(const PredictedField& field, int count,
   std::sort(order.begin(), order.end(),
             [&](std::size_t a, std::size_t b) { return field.distances[a] < field.distances[b]; });
   const float voxel = 1.0f / static_cast<float>(field.resolution);
-  float threshold = std::max(settings.maxDistance, 2.5f * voxel);
+  const float best = field.distances[order.front()];
+  float threshold =
+      std::max(settings.maxDistanceAboveBest ? best + settings.maxDistance : settings.maxDistance,
+               2.5f * voxel);
+  // The count is known: every separated minimum competes, shallow basins too (the depth test
+  // is the automatic count's, not this one's).
   ExtractionSettings relaxed = settings;
   relaxed.maxDistance = std::numeric_limits<float>::max();
+  relaxed.maxDistanceAboveBest = false;
+  relaxed.minPersistence = 0.0f;
   const auto minima = autoCountPoints(field, relaxed);
   if (static_cast<int>(minima.size()) >= count)
     threshold = std::max(threshold, minima[count - 1].distance + 1.5f * voxel);

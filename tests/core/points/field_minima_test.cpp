@@ -97,3 +97,25 @@ TEST(FieldMinima, ThresholdAboveTheBestKeepsEveryInstanceOfAFieldThatSitsHigh) {
 
 }  // namespace
 }  // namespace sagrid
+
+namespace sagrid {
+namespace {
+
+TEST(FieldMinima, KnownCountIgnoresTheAutomaticCountsDepthTest) {
+  // Four knobs whose field sits 0.1 to 0.19 high: with the count given, k-means must find all four
+  // even when the card's depth test and relative threshold would keep only the best minimum.
+  const std::vector<Eigen::Vector3f> knobs = {test::onPlate(4, 4), test::onPlate(4, 12),
+                                              test::onPlate(4, 20), test::onPlate(4, 28)};
+  const auto f = test::plateFieldWithOffsets(knobs, {0.1f, 0.13f, 0.16f, 0.19f});
+  ExtractionSettings s;
+  s.maxDistance = 0.001f;
+  s.maxDistanceAboveBest = true;
+  s.minPersistence = 5.0f;
+  ASSERT_EQ(autoCountPoints(f, s).size(), 1u);
+  const auto points = kMeansPoints(f, 4, s);
+  ASSERT_EQ(points.size(), 4u);
+  for (const auto& k : knobs) EXPECT_LE(test::nearestExtracted(points, k), 1.0f * kVoxel);
+}
+
+}  // namespace
+}  // namespace sagrid
