@@ -29,6 +29,7 @@ void setupGenerate(CLI::App& root) {
     unsigned long long seed = 0;
     int sheetLimit = 64;
     bool stats = false;
+    double wallFixtures = 0.0;
   };
   auto o = std::make_shared<Options>();
   cmd->add_option("--category", o->category, "stove, sink or none (distractors: microwaves, ovens, dishwashers, hoods, cabinets)")
@@ -42,6 +43,12 @@ void setupGenerate(CLI::App& root) {
                   "bench: the fixed benchmark split (OUT/train, OUT/val; see README); distractors: category "
                   "\"none\" objects for the category classifier (OUT/train 150, OUT/val 50)")
       ->check(CLI::IsMember({"bench", "distractors"}));
+  cmd->add_option(
+         "--wall-fixtures", o->wallFixtures,
+         "Share of sinks (not bare faucets) given a mirror, lamps, a shelf, a back panel or a "
+         "towel bar on "
+         "the wall behind them, as real vanities ship (0: the bench look; not with --preset)")
+      ->check(CLI::Range(0.0, 1.0));
   cmd->add_option("--contact-sheet", o->contactSheet, "Also render a PNG grid of thumbnails with the labels drawn");
   cmd->add_option("--sheet-limit", o->sheetLimit, "At most this many objects on the contact sheet")->check(CLI::PositiveNumber);
   cmd->add_flag("--stats", o->stats, "Print the variety table of what was written");
@@ -50,6 +57,10 @@ void setupGenerate(CLI::App& root) {
     const auto start = std::chrono::steady_clock::now();
     int written = 0;
     std::vector<fs::path> dirs;
+    if (!o->preset.empty() && o->wallFixtures > 0.0) {
+      throw sagrid::InvalidArgument(
+          "--wall-fixtures changes the objects; the presets are fixed splits");
+    }
     if (!o->preset.empty()) {
       const auto& preset = o->preset == "bench" ? sagrid::gen::benchPreset() : sagrid::gen::distractorPreset();
       int total = 0;
@@ -63,8 +74,10 @@ void setupGenerate(CLI::App& root) {
     } else {
       if (o->category.empty()) throw sagrid::InvalidArgument("--category is required (or --preset bench)");
       sagrid::app::ProgressBar bar("generate " + o->category, static_cast<std::size_t>(o->count));
-      sagrid::gen::generateDataset({{o->category, o->count, o->seed}}, sagrid::gen::parseMeshFormat(o->format), o->out,
-                                   [&](int done, int) { bar.update(static_cast<std::size_t>(done)); });
+      sagrid::gen::generateDataset(
+          {{o->category, o->count, o->seed, {o->wallFixtures}}},
+          sagrid::gen::parseMeshFormat(o->format), o->out,
+          [&](int done, int) { bar.update(static_cast<std::size_t>(done)); });
       bar.finish();
       written = o->count;
       dirs.push_back(o->out);

@@ -10,6 +10,7 @@
 #include "core/generate/realism.h"
 #include "core/generate/sink_generator.h"
 #include "core/generate/stove_generator.h"
+#include "core/generate/wall_fixtures.h"
 #include "core/mesh/mesh_export.h"
 
 namespace sagrid::gen {
@@ -23,12 +24,27 @@ MeshFormat parseMeshFormat(const std::string& text) {
   throw InvalidArgument("unknown mesh format '" + text + "' (expected obj, glb or mixed)");
 }
 
-GeneratedObject makeRawObject(const std::string& category, std::uint64_t seed, int index) {
+namespace {
+GeneratedObject makeBareObject(const std::string& category, std::uint64_t seed, int index) {
   Rng rng(deriveSeed(seed, category, static_cast<std::uint64_t>(index)));
   if (category == "stove") return generateStove(rng);
   if (category == "sink") return generateSink(rng);
   if (category == kDistractorCategory) return generateDistractor(rng);
   throw InvalidArgument("unknown category '" + category + "' (expected stove, sink or none)");
+}
+}  // namespace
+
+GeneratedObject makeRawObject(const std::string& category, std::uint64_t seed, int index,
+                              const GeneratorOptions& options) {
+  if (!(options.wallFixtures >= 0.0 && options.wallFixtures <= 1.0)) {
+    throw InvalidArgument("the wall fixture share must be in [0, 1]");
+  }
+  GeneratedObject object = makeBareObject(category, seed, index);
+  if (options.wallFixtures > 0.0 && acceptsWallFixtures(object)) {
+    Rng rng(deriveSeed(seed, category + "/wall_fixtures", static_cast<std::uint64_t>(index)));
+    if (rng.chance(options.wallFixtures)) addWallFixtures(object, rng);
+  }
+  return object;
 }
 
 namespace {
@@ -48,8 +64,9 @@ float tidy(float v) {
 }
 }  // namespace
 
-FinishedObject makeObject(const std::string& category, std::uint64_t seed, int index, MeshFormat format) {
-  GeneratedObject raw = makeRawObject(category, seed, index);
+FinishedObject makeObject(const std::string& category, std::uint64_t seed, int index,
+                          MeshFormat format, const GeneratorOptions& options) {
+  GeneratedObject raw = makeRawObject(category, seed, index, options);
   // Realism has its own stream so shape choices do not shift when realism options change.
   Rng rng(deriveSeed(seed, category + "/realism", static_cast<std::uint64_t>(index)));
   const bool glb = format == MeshFormat::Glb || (format == MeshFormat::Mixed && rng.chance(0.5));
@@ -129,7 +146,7 @@ std::vector<ManifestLine> generateDataset(const std::vector<GenerateRequest>& re
   int done = 0;
   for (const auto& r : requests) {
     for (int i = 0; i < r.count; ++i) {
-      FinishedObject object = makeObject(r.category, r.seed, i, format);
+      FinishedObject object = makeObject(r.category, r.seed, i, format, r.options);
       lines.push_back(writeObject(object, outDir));
       ++done;
       if (progress) progress(done, total);

@@ -34,16 +34,27 @@ struct FinishedObject {
   double metersPerUnit = 1.0;
 };
 
+// Variations beyond the bench look. Each draws from a random stream of its own, so with the
+// defaults every object is byte-identical to what earlier versions wrote.
+struct GeneratorOptions {
+  // Share of sinks (not bare faucets) that get a mirror, lamps, a shelf, a back panel or a towel
+  // bar on the wall behind them (core/generate/wall_fixtures.h), in [0, 1].
+  double wallFixtures = 0.0;
+};
+
 // Builds object `index` of category ("stove" | "sink" | "none": a distractor) for `seed`, realism applied.
-FinishedObject makeObject(const std::string& category, std::uint64_t seed, int index, MeshFormat format);
+FinishedObject makeObject(const std::string& category, std::uint64_t seed, int index,
+                          MeshFormat format, const GeneratorOptions& options = {});
 
 // The whole raw object (metres, z-up, no realism), e.g. for previews.
-GeneratedObject makeRawObject(const std::string& category, std::uint64_t seed, int index);
+GeneratedObject makeRawObject(const std::string& category, std::uint64_t seed, int index,
+                              const GeneratorOptions& options = {});
 
 struct GenerateRequest {
   std::string category;
   int count = 0;
   std::uint64_t seed = 0;
+  GeneratorOptions options = {};
 };
 
 struct ManifestLine {

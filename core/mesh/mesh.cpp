@@ -111,4 +111,46 @@ Eigen::Vector3f zUpToFile(const Eigen::Vector3f& p, UpAxis fileUp) {
   }
 }
 
+void Mesh::append(const Mesh& part) {
+  const int vertexOffset = static_cast<int>(positions.size());
+  const int textureOffset = static_cast<int>(textures.size());
+  const std::size_t before = positions.size();
+  const std::size_t added = part.positions.size();
+  // Per-vertex attributes either side lacks are padded, so every array keeps one entry per vertex.
+  const auto merge = [&](auto& mine, const auto& theirs, const auto& fill) {
+    if (mine.empty() && theirs.empty()) return;
+    mine.resize(before, fill);
+    if (theirs.size() == added) {
+      mine.insert(mine.end(), theirs.begin(), theirs.end());
+    } else {
+      mine.resize(before + added, fill);
+    }
+  };
+  merge(uvs, part.uvs, Eigen::Vector2f::Zero().eval());
+  merge(colors, part.colors, Eigen::Vector3f::Ones().eval());
+  merge(normals, part.normals, Eigen::Vector3f::UnitZ().eval());
+  positions.insert(positions.end(), part.positions.begin(), part.positions.end());
+
+  if (!part.triangleMaterials.empty() || !part.materials.empty()) {
+    // Triangles without a material on this side get a white default when the part brings some.
+    if (triangleMaterials.empty() && !triangles.empty()) {
+      if (materials.empty()) materials.push_back(Material{"default", Eigen::Vector3f::Ones(), -1});
+      triangleMaterials.assign(triangles.size(), 0);
+    }
+  }
+  const int partMaterialOffset = static_cast<int>(materials.size());
+  for (Material m : part.materials) {
+    if (m.texture >= 0) m.texture += textureOffset;
+    materials.push_back(std::move(m));
+  }
+  textures.insert(textures.end(), part.textures.begin(), part.textures.end());
+  for (std::size_t t = 0; t < part.triangles.size(); ++t) {
+    triangles.push_back(part.triangles[t] + Eigen::Vector3i::Constant(vertexOffset));
+    if (!triangleMaterials.empty() || !part.triangleMaterials.empty()) {
+      const int m = t < part.triangleMaterials.size() ? part.triangleMaterials[t] : -1;
+      triangleMaterials.push_back(m >= 0 ? m + partMaterialOffset : -1);
+    }
+  }
+}
+
 }  // namespace sagrid

@@ -64,6 +64,11 @@ struct Mesh {
 
   // Recomputes area-weighted per-vertex normals from the triangles.
   void computeVertexNormals();
+
+  // Adds `part`'s triangles, vertices, materials and textures after this mesh's own (indices
+  // shifted; a per-vertex attribute only one side has is filled with white colours or zero UVs).
+  // Frames must already agree: fileUp and the other file bookkeeping stay this mesh's.
+  void append(const Mesh& part);
 };
 
 // Converts between the file's frame and SAGrid's z-up frame with a proper rotation (det +1) that
