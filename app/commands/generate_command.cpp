@@ -39,10 +39,13 @@ void setupGenerate(CLI::App& root) {
   cmd->add_option("--out", o->out, "Output dataset folder")->required();
   cmd->add_option("--format", o->format, "obj (z-up), glb (y-up) or mixed (half each)")
       ->check(CLI::IsMember({"obj", "glb", "mixed"}));
-  cmd->add_option("--preset", o->preset,
-                  "bench: the fixed benchmark split (OUT/train, OUT/val; see README); distractors: category "
-                  "\"none\" objects for the category classifier (OUT/train 150, OUT/val 50)")
-      ->check(CLI::IsMember({"bench", "distractors"}));
+  cmd->add_option(
+         "--preset", o->preset,
+         "bench: the fixed benchmark split (OUT/train, OUT/val; see README); distractors: category "
+         "\"none\" objects for the category classifier (OUT/train 150, OUT/val 50); wall-fixtures: "
+         "the "
+         "dressed sinks the shipped sink models also train on (OUT/wall-fixtures 300)")
+      ->check(CLI::IsMember({"bench", "distractors", "wall-fixtures"}));
   cmd->add_option(
          "--wall-fixtures", o->wallFixtures,
          "Share of sinks (not bare faucets) given a mirror, lamps, a shelf, a back panel or a "
@@ -62,7 +65,9 @@ void setupGenerate(CLI::App& root) {
           "--wall-fixtures changes the objects; the presets are fixed splits");
     }
     if (!o->preset.empty()) {
-      const auto& preset = o->preset == "bench" ? sagrid::gen::benchPreset() : sagrid::gen::distractorPreset();
+      const auto& preset = o->preset == "bench"         ? sagrid::gen::benchPreset()
+                           : o->preset == "distractors" ? sagrid::gen::distractorPreset()
+                                                        : sagrid::gen::wallFixturePreset();
       int total = 0;
       for (const auto& s : preset)
         for (const auto& r : s.requests) total += r.count;

@@ -73,22 +73,23 @@ std::vector<sagrid::TrainingDataSource> dataSources(const TrainCommandOptions& o
       throw sagrid::InvalidArgument("--replay is for fine-tuning; give --init too");
     return sources;
   }
-  sagrid::TrainingDataSource replay;
   if (o.replay.empty()) {
-    const fs::path bench = sagrid::defaultBenchDir();
-    std::unique_ptr<sagrid::app::ProgressBar> bar;
-    if (!fs::exists(bench / "train" / "manifest.jsonl")) {
-      std::fprintf(stderr, "generating the bench split (replay) into %s\n", bench.string().c_str());
-      bar = std::make_unique<sagrid::app::ProgressBar>("generate", 0);
+    std::unique_ptr<sagrid::app::ProgressBar> bar;  // shown only when something is generated
+    for (auto replay : sagrid::defaultReplaySources(o.model, [&](int done, int) {
+           if (!bar) {
+             std::fprintf(stderr, "generating the replay data into %s\n",
+                          sagrid::defaultBenchDir().string().c_str());
+             bar = std::make_unique<sagrid::app::ProgressBar>("generate", 0);
+           }
+           bar->update(static_cast<std::size_t>(done));
+         })) {
+      replay.weight *= dataWeight;
+      sources.push_back(replay);
     }
-    replay = sagrid::defaultReplaySource([&](int done, int) {
-      if (bar) bar->update(static_cast<std::size_t>(done));
-    });
-    replay.weight = dataWeight;
-  } else {
-    replay = sagrid::parseTrainingDataSource(o.replay, "replay");
-    if (replay.dir.string() == o.replay) replay.weight = dataWeight;  // no ":w" given
+    return sources;
   }
+  sagrid::TrainingDataSource replay = sagrid::parseTrainingDataSource(o.replay, "replay");
+  if (replay.dir.string() == o.replay) replay.weight = dataWeight;  // no ":w" given
   sources.push_back(replay);
   return sources;
 }
@@ -208,22 +209,23 @@ void setupTrain(CLI::App& root) {
         throw sagrid::InvalidArgument("--preset default takes at most one --data and no --init");
       const fs::path data = o->data.empty() ? sagrid::defaultBenchDir() : fs::path(o->data[0]);
       const fs::path out = o->out.empty() ? fs::path("resources/models") : fs::path(o->out);
-      if (!fs::exists(data / "train" / "manifest.jsonl")) {
-        std::fprintf(stderr, "generating the bench split into %s\n", data.string().c_str());
-        sagrid::app::ProgressBar bar("generate", 0);
-        sagrid::gen::generateBenchPreset(
-            data, [&](int done, int) { bar.update(static_cast<std::size_t>(done)); });
-      }
       TrainCommandOptions preset = *o;
       if (preset.epochs == 0 && preset.minutes == 0) preset.minutes = 13;
       // The paper's uniform L1 leaves the field flat near small parts; weighting the voxels near
       // an instance (with the unit-gain head) raised stove-knob hits within 5 cm on the bench
       // val split from 32 % to 76 % (shipped models before and after).
       if (cmd->count("--near-weight") == 0) preset.nearWeight = kPresetNearWeight;
-      if (preset.cache.empty())
-        preset.cache = (data / ".sagrid-cache").string();  // shared by both splits
-      for (const auto& name : sagrid::defaultModelNames())
-        trainOne(preset, {{data / "train", 1.0, "data", {}}}, name, out);
+      for (const auto& name : sagrid::defaultModelNames()) {
+        std::unique_ptr<sagrid::app::ProgressBar> bar;
+        auto sources = sagrid::defaultTrainingSources(data, name, [&](int done, int) {
+          if (!bar) bar = std::make_unique<sagrid::app::ProgressBar>("generate", 0);
+          bar->update(static_cast<std::size_t>(done));
+        });
+        // Features in DATA/.sagrid-cache (shared by every split) unless --cache says otherwise.
+        if (!preset.cache.empty())
+          for (auto& source : sources) source.cacheDir.clear();
+        trainOne(preset, sources, name, out);
+      }
       return;
     }
     if (o->data.empty()) throw sagrid::InvalidArgument("--data is required (or --preset default)");

@@ -246,13 +246,13 @@ LearningCurveReport runLearningCurve(const LearningCurveOptions& options) {
   FeatureOptions features = ModelSet::load(options.initDir).featureOptions();
   features.cacheDir =
       options.cacheDir.empty() ? options.dataDir / ".sagrid-cache" : options.cacheDir;
-  std::optional<TrainingDataSource> replay;
-  if (options.replay) {
-    if (options.replayDir.empty())
-      replay = defaultReplaySource();
-    else
-      replay = TrainingDataSource{options.replayDir, 1.0, "replay", {}};
-  }
+  // The replay of each model (weight 1 in all: drawn 1:1 with the k objects).
+  const auto replayOf = [&](const std::string& modelName) -> std::vector<TrainingDataSource> {
+    if (!options.replay) return {};
+    if (!options.replayDir.empty())
+      return {TrainingDataSource{options.replayDir, 1.0, "replay", {}, {}}};
+    return defaultReplaySources(modelName);
+  };
 
   const fs::path work = options.outDir / "work";
   for (std::size_t f = 0; f < split.size(); ++f) {
@@ -292,7 +292,7 @@ LearningCurveReport runLearningCurve(const LearningCurveOptions& options) {
         writeSubsetDataset(dataDir, {ofType.begin(), ofType.begin() + used});
         DatasetTrainingOptions t;
         t.datasets.push_back({dataDir, 1.0, "data", features.cacheDir, objectsRoot});
-        if (replay) t.datasets.push_back(*replay);  // weight 1: drawn 1:1 with the k objects
+        for (const auto& r : replayOf(name)) t.datasets.push_back(r);
         t.init = options.initDir;
         t.modelName = name;
         t.features = features;
@@ -308,15 +308,14 @@ LearningCurveReport runLearningCurve(const LearningCurveOptions& options) {
         const auto result = trainFromDataset(t);
         tuned[key] = modelsDir;
         char line[256];
-        std::snprintf(line, sizeof line,
-                      "fold %d/%zu k=%s %s: fine-tuned on %d object(s)%s, %d epoch(s), loss "
-                      "%.4f, %.0f s",
-                      foldNumber, split.size(), kLabel(k).c_str(), name.c_str(), used,
-                      replay ? " + replay" : "",
-                      result.curve.empty() ? 0 : result.curve.back().epoch,
-                      result.curve.empty() ? 0.0 : result.curve.back().loss,
-                      std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
-                          .count());
+        std::snprintf(
+            line, sizeof line,
+            "fold %d/%zu k=%s %s: fine-tuned on %d object(s)%s, %d epoch(s), loss "
+            "%.4f, %.0f s",
+            foldNumber, split.size(), kLabel(k).c_str(), name.c_str(), used,
+            options.replay ? " + replay" : "", result.curve.empty() ? 0 : result.curve.back().epoch,
+            result.curve.empty() ? 0.0 : result.curve.back().loss,
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
         say(line);
       }
       // Same models as an earlier k of this fold (k beyond what the fold holds): same result.

@@ -178,6 +178,13 @@ const std::vector<BenchSplit>& distractorPreset() {
   return preset;
 }
 
+const std::vector<BenchSplit>& wallFixturePreset() {
+  static const std::vector<BenchSplit> preset = {
+      {"wall-fixtures", {{"sink", 300, 5001, GeneratorOptions{0.8}}}},
+  };
+  return preset;
+}
+
 void generatePreset(const std::vector<BenchSplit>& preset, const fs::path& outDir,
                     const ProgressCallback& progress) {
   int total = 0;

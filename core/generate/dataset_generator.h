@@ -80,6 +80,10 @@ void generateBenchPreset(const std::filesystem::path& outDir, const ProgressCall
 // Distractors for the category classifier's rejection: outDir/train (150, seed 3001) and
 // outDir/val (50, seed 4001), category "none", no affordances, mixed OBJ/GLB.
 const std::vector<BenchSplit>& distractorPreset();
+// Sinks dressed with wall fixtures, which the shipped sink models train on beside the bench train
+// half: outDir/wall-fixtures (300 sinks, seed 5001, 80 % of those with a basin dressed), mixed
+// OBJ/GLB. Its own seed: the bench split is untouched.
+const std::vector<BenchSplit>& wallFixturePreset();
 // Writes every split of a preset into outDir/<split name>.
 void generatePreset(const std::vector<BenchSplit>& preset, const std::filesystem::path& outDir,
                     const ProgressCallback& progress = {});

@@ -42,15 +42,32 @@ fs::path defaultBenchDir() {
   return fs::path(".sagrid-data") / "bench";
 }
 
-TrainingDataSource defaultReplaySource(const std::function<void(int, int)>& generateProgress) {
-  const fs::path bench = defaultBenchDir();
-  if (!fs::exists(bench / "train" / "manifest.jsonl"))
-    gen::generateBenchPreset(bench, generateProgress);
-  TrainingDataSource source;
-  source.dir = bench / "train";
-  source.role = "replay";
-  source.cacheDir = bench / ".sagrid-cache";  // the preset's cache, shared by both splits
-  return source;
+std::vector<TrainingDataSource> defaultTrainingSources(
+    const fs::path& benchDir, const std::string& modelName,
+    const std::function<void(int, int)>& generateProgress) {
+  if (!fs::exists(benchDir / "train" / "manifest.jsonl"))
+    gen::generateBenchPreset(benchDir, generateProgress);
+  std::vector<TrainingDataSource> sources = {
+      {benchDir / "train", 1.0, "data", benchDir / ".sagrid-cache", {}}};
+  if (modelName.rfind("sink.", 0) == 0) {
+    const auto& wall = gen::wallFixturePreset();
+    const fs::path dir = benchDir / wall.front().name;
+    if (!fs::exists(dir / "manifest.jsonl")) gen::generatePreset(wall, benchDir, generateProgress);
+    sources.push_back({dir, 1.0, "data", benchDir / ".sagrid-cache", {}});
+  }
+  return sources;
+}
+
+std::vector<TrainingDataSource> defaultReplaySources(
+    const std::string& modelName, const std::function<void(int, int)>& generateProgress) {
+  auto sources = defaultTrainingSources(defaultBenchDir(), modelName, generateProgress);
+  double total = 0;
+  for (const auto& s : sources) total += s.weight;
+  for (auto& s : sources) {
+    s.role = "replay";
+    s.weight /= total;
+  }
+  return sources;
 }
 
 fs::path resolveInitCard(const fs::path& init, const std::string& modelName) {

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <functional>
 #include <string>
+#include <vector>
 
 namespace sagrid {
 
@@ -28,10 +29,18 @@ TrainingDataSource parseTrainingDataSource(const std::string& argument,
 // ~/.cache/sagrid/bench, else .sagrid-data/bench.
 std::filesystem::path defaultBenchDir();
 
-// The default replay for fine-tuning: the bench split's train half, generated exactly like
-// `--preset default` does when its manifest is missing, with the preset's shared feature cache
-// (bench/.sagrid-cache). `weight` is left for the caller.
-TrainingDataSource defaultReplaySource(
+// What `sagrid train --preset default` trains `modelName` on, under `benchDir` (generated there
+// when missing, all sharing benchDir/.sagrid-cache): the bench split's train half, and for the
+// sink models also the sinks with wall fixtures (gen::wallFixturePreset(), weight 1).
+std::vector<TrainingDataSource> defaultTrainingSources(
+    const std::filesystem::path& benchDir, const std::string& modelName,
+    const std::function<void(int done, int total)>& generateProgress = {});
+
+// The default replay for fine-tuning `modelName`: what `--preset default` trains it on
+// (defaultTrainingSources under defaultBenchDir(), generated when missing), role "replay", the
+// weights scaled to sum to 1 so the caller sets the replay's share with one factor.
+std::vector<TrainingDataSource> defaultReplaySources(
+    const std::string& modelName,
     const std::function<void(int done, int total)>& generateProgress = {});
 
 // --init: a card or weights file (MODEL.json / MODEL.pt) or a folder holding <modelName>.json.

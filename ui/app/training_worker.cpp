@@ -88,8 +88,11 @@ void TrainingWorker::run(TrainingRequest request) {
         options.init = request.initDir;
         options.training.learningRate = kFineTuneLearningRate;
         if (request.replay) {
-          update([&](TrainingStatus& s) { s.phase = "replay: bench split (generated if missing)"; });
-          options.datasets.push_back(defaultReplaySource());
+          update([&](TrainingStatus& s) {
+            s.phase = "replay: the generated training data (generated if missing)";
+          });
+          for (const auto& r : defaultReplaySources(options.modelName))
+            options.datasets.push_back(r);
         }
       }
       options.outDir = request.outDir;

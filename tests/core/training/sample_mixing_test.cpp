@@ -1,3 +1,5 @@
+#include "core/training/sample_mixing.h"
+
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
@@ -5,8 +7,8 @@
 #include <random>
 
 #include "core/common/error.h"
-#include "core/training/sample_mixing.h"
 #include "core/training/training_sources.h"
+#include "support/test_paths.h"
 
 namespace sagrid {
 namespace {
@@ -61,6 +63,25 @@ TEST(TrainingSources, ParsesDirectoryAndOptionalWeight) {
   EXPECT_EQ(s.dir, "C:dir");
   EXPECT_THROW(parseTrainingDataSource("data:0"), InvalidArgument);
   EXPECT_THROW(parseTrainingDataSource("data:-2"), InvalidArgument);
+}
+
+TEST(TrainingSources, DefaultPresetTrainsSinkModelsAlsoOnTheDressedSinks) {
+  const auto bench = test::freshTempDir("preset-sources");
+  const auto stove = defaultTrainingSources(bench, "stove.heatsource");
+  ASSERT_EQ(stove.size(), 1u);
+  EXPECT_EQ(stove[0].dir, bench / "train");
+  EXPECT_TRUE(
+      std::filesystem::exists(bench / "train" / "manifest.jsonl"));  // generated when missing
+  EXPECT_FALSE(std::filesystem::exists(bench / "wall-fixtures"));
+  const auto sink = defaultTrainingSources(bench, "sink.fluidsource");
+  ASSERT_EQ(sink.size(), 2u);
+  EXPECT_EQ(sink[1].dir, bench / "wall-fixtures");
+  EXPECT_TRUE(std::filesystem::exists(bench / "wall-fixtures" / "manifest.jsonl"));
+  for (const auto& s : sink) {
+    EXPECT_EQ(s.role, "data");
+    EXPECT_DOUBLE_EQ(s.weight, 1.0);
+    EXPECT_EQ(s.cacheDir, bench / ".sagrid-cache");  // one feature cache for every split
+  }
 }
 
 }  // namespace
