@@ -1,0 +1,126 @@
+#include "core/training/crop_dataset.h"
+
+#include <algorithm>
+#include <map>
+
+#include "core/common/atomic_file.h"
+#include "core/common/error.h"
+#include "core/common/log.h"
+#include "core/common/sha256.h"
+#include "core/dataset/dataset.h"
+#include "core/generate/random.h"
+#include "core/labels/labels.h"
+#include "core/mesh/mesh_crop.h"
+#include "core/mesh/mesh_export.h"
+#include "core/mesh/mesh_import.h"
+
+namespace sagrid {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Point {
+  std::string type;
+  Eigen::Vector3f zUp;  // z-up frame, file units
+};
+
+// The box the second pass would cut around `typePoints`, moved by the jitter; nullopt when it
+// would not run (wider than maxCropShare of the object).
+std::optional<Eigen::AlignedBox3f> cropBox(const std::vector<Eigen::Vector3f>& typePoints,
+                                           const Eigen::AlignedBox3f& bounds,
+                                           const CropDatasetOptions& options, gen::Rng& rng) {
+  const float extent = bounds.sizes().maxCoeff();
+  Eigen::AlignedBox3f box;
+  for (const auto& p : typePoints) box.extend(p);
+  const Eigen::Vector3f shift(rng.uniformf(-1, 1), rng.uniformf(-1, 1), rng.uniformf(-1, 1));
+  const Eigen::Vector3f grow = Eigen::Vector3f::Constant(options.margin * extent);
+  box.min() += shift * options.jitter * extent - grow;
+  box.max() += shift * options.jitter * extent + grow;
+  box = box.intersection(bounds);
+  if (box.isEmpty() || box.sizes().maxCoeff() > options.maxCropShare * extent) return std::nullopt;
+  return box;
+}
+
+}  // namespace
+
+CropDatasetSummary writeCropDataset(const fs::path& dataDir, const fs::path& outDir,
+                                    const CropDatasetOptions& options,
+                                    const std::function<void(int, int)>& progress) {
+  const auto entries = readDataset(dataDir);
+  if (entries.empty()) throw FileError(dataDir, "holds no labelled object");
+  std::error_code ec;
+  fs::create_directories(outDir, ec);
+  if (ec) throw FileError(outDir, "cannot create directory: " + ec.message());
+
+  CropDatasetSummary summary;
+  std::string manifest;
+  int done = 0;
+  for (const auto& entry : entries) {
+    if (progress) progress(done++, static_cast<int>(entries.size()));
+    ObjectLabels labels;
+    Mesh mesh;
+    try {
+      labels = readLabels(entry.labels);
+      mesh = importMesh(entry.mesh, ImportOptions(upAxisOrZ(labels.object.up)));
+    } catch (const Error& error) {
+      logger()->warn("crop dataset: skipping {}: {}", entry.id, error.what());
+      continue;
+    }
+    ++summary.objects;
+    const UpAxis up = upAxisOrZ(labels.object.up);
+    std::vector<Point> points;
+    std::map<std::string, std::vector<Eigen::Vector3f>> byType;
+    for (const auto& a : labels.affordances) {
+      points.push_back({a.type, fileToZUp(a.position, up)});
+      byType[a.type].push_back(points.back().zUp);
+    }
+    const Eigen::AlignedBox3f bounds = mesh.bounds();
+    for (const auto& [type, typePoints] : byType) {
+      gen::Rng rng(gen::deriveSeed(options.seed, entry.id + "/" + type, 0));
+      const auto box = cropBox(typePoints, bounds, options, rng);
+      Mesh crop = box ? cropMesh(mesh, *box) : Mesh{};
+      if (!box || static_cast<int>(crop.triangleCount()) < options.minTriangles) {
+        ++summary.skipped;
+        continue;
+      }
+      ObjectLabels out;
+      out.object.id = entry.id + "." + type;
+      out.object.mesh = "mesh.obj";
+      out.object.category = labels.object.category;
+      out.object.up = "z";
+      for (const char* key : {"meters_per_unit", "units"})
+        if (labels.object.extra.contains(key)) out.object.extra[key] = labels.object.extra[key];
+      out.object.extra["crop_of"] = {{"id", entry.id}, {"type", type}};
+      for (const auto& p : points) {
+        if (!box->contains(p.zUp)) continue;
+        AffordancePoint a;
+        a.type = p.type;
+        a.position = p.zUp;
+        a.status = AffordanceStatus::Accepted;
+        a.source = "crop";
+        out.affordances.push_back(a);
+      }
+      out.reviewState = ReviewState::Done;
+      crop.fileUp = UpAxis::Z;
+      const fs::path dir = outDir / out.object.id;
+      fs::create_directories(dir, ec);
+      if (ec) throw FileError(dir, "cannot create directory: " + ec.message());
+      const EncodedMeshFiles files = encodeObj(crop, "mesh");
+      out.object.sha256 = sha256Hex(files.mainBytes());
+      writeEncodedMeshFiles(files, dir);
+      writeLabels(dir / "labels.json", out);
+      nlohmann::json line = {{"id", out.object.id},
+                             {"category", out.object.category},
+                             {"mesh", out.object.id + "/mesh.obj"},
+                             {"labels", out.object.id + "/labels.json"}};
+      manifest += line.dump() + "\n";
+      ++summary.crops;
+    }
+  }
+  if (progress) progress(done, static_cast<int>(entries.size()));
+  writeFileAtomic(outDir / "manifest.jsonl", manifest);
+  return summary;
+}
+
+}  // namespace sagrid
