@@ -54,7 +54,8 @@ void setupAnnotate(CLI::App& root) {
     std::string input, list, out, category, models, cache, up, instances = "auto", shard;
     std::vector<std::string> counts;
     int symmetries = sagrid::AnnotateOptions{}.symmetries;
-    bool force = false, coarseToFine = false;
+    bool force = false;
+    std::optional<bool> coarseToFine;
     double timeLimit = 600;
   };
   auto o = std::make_shared<Options>();
@@ -90,9 +91,10 @@ void setupAnnotate(CLI::App& root) {
                   "Test-time augmentation: average each field over this many symmetric copies "
                   "of the object (z quarter turns x reflections; 1 = off, 8 = all, the default)")
       ->check(CLI::Range(1, 8));
-  cmd->add_flag("--coarse-to-fine", o->coarseToFine,
-               "Second pass on a crop around each model's points, so a small part on a large "
-               "object is located at its own scale (about 0.5 s more per model)");
+  cmd->add_flag("--coarse-to-fine,!--no-coarse-to-fine", o->coarseToFine,
+                "Second pass on a crop around each model's points, so a small part on a large "
+                "object is located at its own scale (about 0.5 s more per model)"
+                " (default: as each model's card says, point_extraction.coarse_to_fine)");
   cmd->add_option("--count", o->counts,
                   "Known instance count per type, e.g. --count heatsource=5 (k-means)");
   cmd->callback([o] {

@@ -38,7 +38,7 @@ void setupEval(CLI::App& root) {
     double minutes = 2;
     int epochs = 0;
     int symmetries = sagrid::EvaluationOptions{}.symmetries;
-    bool coarseToFine = false;
+    std::optional<bool> coarseToFine;
     double nearWeight = sagrid::SweepOptions{}.nearWeight;
   };
   auto o = std::make_shared<Options>();
@@ -58,8 +58,9 @@ void setupEval(CLI::App& root) {
   cmd->add_option("--fit-confidence", o->fitConfidence,
                   "Fit the object confidence (P(right with one key)) on this data and write "
                   "DIR/confidence.json (put it beside the models to use it)");
-  cmd->add_flag("--coarse-to-fine", o->coarseToFine,
-               "Second pass on a crop around each model's points (small parts on large objects)");
+  cmd->add_flag("--coarse-to-fine,!--no-coarse-to-fine", o->coarseToFine,
+                "Second pass on a crop around each model's points (small parts on large objects)"
+                " (default: as each model's card says, point_extraction.coarse_to_fine)");
   cmd->add_option("--fit-counts", o->fitCounts,
                   "Refit each model's automatic instance count on the fields of this data and "
                   "write a models folder DIR with the refitted cards (eval it with --models DIR)");

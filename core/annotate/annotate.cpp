@@ -141,7 +141,7 @@ AnnotationResult annotateMeshFile(const fs::path& meshFile, const std::string& i
       mode = InstanceMode::Auto;
     ModelPrediction p = predictWithModel(*model, features, scene, mesh.fileUp, mode, n, nullptr,
                                          options.symmetries);
-    if (options.coarseToFine)
+    if (options.coarseToFine.value_or(model->card().extraction.coarseToFine))
       p = refineInCrop(*model, p, mesh, features, scene, featureOptions, mode, n,
                        options.symmetries);
     for (std::size_t i = 0; i < p.points.size(); ++i) {

@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <functional>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -66,8 +67,9 @@ struct AnnotateOptions {
   // real-dev unchanged (4.65 / 4.72 cm), for ~0.1-0.4 s more per object with two models.
   int symmetries = 8;
   // Coarse-to-fine: a second pass on a crop around each model's points (core/annotate/
-  // coarse_to_fine.h), for small parts on large objects.
-  bool coarseToFine = false;
+  // coarse_to_fine.h), for small parts on large objects. Unset: as each model's card says
+  // (point_extraction.coarse_to_fine); true / false: for every model.
+  std::optional<bool> coarseToFine;
   // Maps the least-sure point to P(right with one key) (core/annotate/object_confidence.h);
   // unfitted = the uncalibrated map.
   ConfidenceCalibration confidence;

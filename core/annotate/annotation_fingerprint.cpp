@@ -23,13 +23,15 @@ nlohmann::json modelShas(const ModelSet& models, const fs::path& modelsDir) {
 }
 
 std::string annotateOptionsHash(const AnnotateOptions& options) {
-  const nlohmann::json config{{"category", options.category},
-                              {"mode", static_cast<int>(options.mode)},
-                              {"counts", options.counts},
-                              {"symmetries", options.symmetries},
-                              {"coarse_to_fine", options.coarseToFine},
-                              {"features", featureConfigHash(options.features)},
-                              {"up", options.features.up ? toString(*options.features.up) : ""}};
+  const nlohmann::json config{
+      {"category", options.category},
+      {"mode", static_cast<int>(options.mode)},
+      {"counts", options.counts},
+      {"symmetries", options.symmetries},
+      {"coarse_to_fine",
+       options.coarseToFine ? nlohmann::json(*options.coarseToFine) : nlohmann::json("card")},
+      {"features", featureConfigHash(options.features)},
+      {"up", options.features.up ? toString(*options.features.up) : ""}};
   return sha256Hex(config.dump()).substr(0, 16);
 }
 

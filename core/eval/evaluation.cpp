@@ -91,7 +91,7 @@ EvaluationReport evaluateModels(const ModelSet& models, const EvaluationOptions&
         autoPredictions.push_back(predictionFromField(*model,
                                                       predictField(*model, grid, options.symmetries),
                                                       grid, scene, mesh.fileUp, InstanceMode::Auto));
-        if (options.coarseToFine)
+        if (options.coarseToFine.value_or(model->card().extraction.coarseToFine))
           autoPredictions.back() =
               refineInCrop(*model, autoPredictions.back(), mesh, grid, scene, objectFeatures,
                            InstanceMode::Auto, 1, options.symmetries);

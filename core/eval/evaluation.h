@@ -9,6 +9,7 @@
 #include <functional>
 #include <map>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -26,7 +27,7 @@ struct EvaluationOptions {
   std::filesystem::path referenceRoot;
   FeatureOptions features;        // from the models; cacheDir empty = DATA/.sagrid-cache
   int symmetries = 8;             // test-time augmentation, as annotate (AnnotateOptions)
-  bool coarseToFine = false;      // second pass on a crop, as annotate (AnnotateOptions)
+  std::optional<bool> coarseToFine;  // second pass on a crop, as annotate (AnnotateOptions)
   ConfidenceCalibration confidence;  // object confidence map (the models folder's, or unfitted)
   std::function<void(std::size_t, std::size_t, const std::string&)> onProgress;
   // Keep every model's field and ground truth (normalized frame) in the report, for refitting the

@@ -67,7 +67,8 @@ json toJson(const ModelCard& c) {
                            {"confidence_scale", c.extraction.confidenceScale},
                            {"refine_voxels", c.extraction.refineVoxels},
                            {"max_distance_above_best", c.extraction.maxDistanceAboveBest},
-                           {"min_persistence", c.extraction.minPersistence}};
+                           {"min_persistence", c.extraction.minPersistence},
+                           {"coarse_to_fine", c.extraction.coarseToFine}};
   j["retrieval"] = {{"descriptor_mean", c.descriptorMean}, {"descriptor_std", c.descriptorStd}};
   j["embedding_search"] = {{"affordance_feature_mean", c.affordanceFeatureMean}};
   j["training"] = c.training;
@@ -112,6 +113,7 @@ ModelCard modelCardFromJson(const json& j, const fs::path& path) {
       c.extraction.maxDistanceAboveBest =
           p.value("max_distance_above_best", c.extraction.maxDistanceAboveBest);
       c.extraction.minPersistence = p.value("min_persistence", c.extraction.minPersistence);
+      c.extraction.coarseToFine = p.value("coarse_to_fine", c.extraction.coarseToFine);
     }
     if (j.contains("retrieval")) {
       c.descriptorMean = j.at("retrieval").value("descriptor_mean", std::vector<float>{});

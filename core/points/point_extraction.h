@@ -38,6 +38,10 @@ struct ExtractionSettings {
   // far the field rises from the minimum before its basin joins a better one (0-dimensional
   // persistence of the sublevel sets). Noise dimples in a shallow field have almost none.
   float minPersistence = 0.0f;
+  // Run the coarse-to-fine second pass (core/annotate/coarse_to_fine.h) for this model unless the
+  // caller says otherwise: set on cards of models trained beside crops (sagrid crop-dataset), which
+  // know the scale the second pass shows them.
+  bool coarseToFine = false;
 };
 
 struct ExtractedPoint {

@@ -126,6 +126,33 @@ TEST_F(AnnotateTest, UnknownCategoryAndMismatchedFeaturesAreClearErrors) {
   EXPECT_THROW(annotateMeshFile(entries[0].mesh, "s", *set, annotate, dir), ModelError);
 }
 
+TEST_F(AnnotateTest, TheSecondPassFollowsEachCardUnlessTheCallerSays) {
+  auto model = test::untrainedModelFor("sink.fluidsource", sinkFeatures);
+  model.card().extraction.coarseToFine = true;
+  std::vector<model::AffordanceModel> models;
+  models.push_back(std::move(model));
+  const ModelSet cardSaysYes(std::move(models));
+  annotate.category = "sink";
+  annotate.mode = InstanceMode::Single;
+  const auto pointOf = [&](std::optional<bool> secondPass) {
+    annotate.coarseToFine = secondPass;
+    const AnnotationResult r = annotateMeshFile(entries[1].mesh, "s", cardSaysYes, annotate, dir);
+    EXPECT_EQ(r.labels.affordances.size(), 1u);
+    return r.labels.affordances.at(0).position;
+  };
+  const Eigen::Vector3f byCard = pointOf(std::nullopt), on = pointOf(true), off = pointOf(false);
+  EXPECT_EQ(byCard, on);
+  EXPECT_NE(byCard, off);  // the second pass moved the point
+  // A card without the switch runs one pass unless asked.
+  annotate.coarseToFine.reset();
+  const AnnotationResult plain = annotateMeshFile(entries[1].mesh, "s", *set, annotate, dir);
+  annotate.coarseToFine = false;
+  EXPECT_EQ(plain.labels.affordances.at(0).position,
+            annotateMeshFile(entries[1].mesh, "s", *set, annotate, dir)
+                .labels.affordances.at(0)
+                .position);
+}
+
 TEST(ModelSetTest, CosineSimilarity) {
   EXPECT_NEAR(cosineSimilarity({1, 0}, {0, 1}), 0.0, 1e-12);
   EXPECT_NEAR(cosineSimilarity({1, 1}, {2, 2}), 1.0, 1e-12);

@@ -105,6 +105,19 @@ TEST(ModelCardValidation, CardsWithoutTheNewerCountSettingsReadAsBefore) {
   EXPECT_EQ(extraction.minPersistence, 0.0f);
 }
 
+TEST(ModelCardValidation, TheSecondPassSwitchIsReadAndOlderCardsRunWithoutIt) {
+  const fs::path card = savedCard();
+  EXPECT_FALSE(AffordanceModel::load(card).card().extraction.coarseToFine);  // written as false
+  edit(card, [](json& j) { j["point_extraction"]["coarse_to_fine"] = true; });
+  const ModelCard read = AffordanceModel::load(card).card();
+  EXPECT_TRUE(read.extraction.coarseToFine);
+  EXPECT_EQ(toJson(read)["point_extraction"]["coarse_to_fine"], true);  // kept on rewrite
+  edit(card, [](json& j) { j["point_extraction"].erase("coarse_to_fine"); });
+  EXPECT_FALSE(AffordanceModel::load(card).card().extraction.coarseToFine);
+  edit(card, [](json& j) { j["point_extraction"]["coarse_to_fine"] = "yes"; });
+  EXPECT_THAT(loadError(card), HasSubstr("wrong field type"));
+}
+
 TEST(ModelCardValidation, DuplicatedCardInOneFolderIsRefused) {
   const fs::path card = savedCard();
   fs::copy_file(card, card.parent_path() / "stove.heatsource copy.json");
