@@ -43,10 +43,11 @@ class FixtureBuilder {
     if (pair) {
       const float each = 0.5f * width * m_rng.uniformf(0.7, 0.95);
       for (float side : {-0.25f, 0.25f})
-        mirror(m_wall.centerX() + side * width, each, bottom, height, depth, framed, frameMat);
+        mirror(m_wall.centerX() + side * width, each, bottom, height, depth, false, framed,
+               frameMat);
       names.push_back("mirror_pair");
     } else {
-      mirror(m_wall.centerX(), width, bottom, height, depth, framed, frameMat);
+      mirror(m_wall.centerX(), width, bottom, height, depth, cabinet, framed, frameMat);
       names.push_back(cabinet ? "mirror_cabinet" : framed ? "framed_mirror" : "mirror");
     }
     const float front = m_wall.backY - depth;
@@ -67,11 +68,11 @@ class FixtureBuilder {
   }
 
  private:
-  void mirror(float cx, float width, float bottom, float height, float depth, bool framed,
-              int frameMat) {
+  void mirror(float cx, float width, float bottom, float height, float depth, bool cabinet,
+              bool framed, int frameMat) {
     const int glass = m_b.material("mirror", jitter(m_rng, {0.66f, 0.7f, 0.74f}, 0.12f));
     const float x0 = cx - 0.5f * width, x1 = cx + 0.5f * width, y1 = m_wall.backY;
-    if (depth > 0.05f) {
+    if (cabinet) {
       // A mirror cabinet: the box, its mirrored door a few millimetres proud.
       m_b.boxFromTo(Vec3(x0, y1 - depth, bottom), Vec3(x1, y1, bottom + height), frameMat);
       m_b.boxFromTo(Vec3(x0 + 0.01f, y1 - depth - 0.004f, bottom + 0.01f),
