@@ -109,8 +109,7 @@ FinishedObject makeObject(const std::string& category, std::uint64_t seed, int i
   return out;
 }
 
-namespace {
-ManifestLine writeObject(FinishedObject& object, const fs::path& outDir) {
+ManifestLine writeDatasetObject(FinishedObject& object, const fs::path& outDir) {
   const fs::path dir = outDir / object.id;
   std::error_code ec;
   fs::create_directories(dir, ec);
@@ -127,7 +126,15 @@ ManifestLine writeObject(FinishedObject& object, const fs::path& outDir) {
   writeLabels(dir / "labels.json", object.labels);
   return {object.id, object.category, object.id + "/" + object.meshFileName, object.id + "/labels.json"};
 }
-}  // namespace
+
+void writeManifest(const std::vector<ManifestLine>& lines, const fs::path& outDir) {
+  std::string manifest;
+  for (const auto& l : lines) {
+    nlohmann::json j = {{"id", l.id}, {"category", l.category}, {"mesh", l.mesh}, {"labels", l.labels}};
+    manifest += j.dump() + "\n";
+  }
+  writeFileAtomic(outDir / "manifest.jsonl", manifest);
+}
 
 std::vector<ManifestLine> generateDataset(const std::vector<GenerateRequest>& requests, MeshFormat format,
                                           const fs::path& outDir, const ProgressCallback& progress) {
@@ -147,17 +154,12 @@ std::vector<ManifestLine> generateDataset(const std::vector<GenerateRequest>& re
   for (const auto& r : requests) {
     for (int i = 0; i < r.count; ++i) {
       FinishedObject object = makeObject(r.category, r.seed, i, format, r.options);
-      lines.push_back(writeObject(object, outDir));
+      lines.push_back(writeDatasetObject(object, outDir));
       ++done;
       if (progress) progress(done, total);
     }
   }
-  std::string manifest;
-  for (const auto& l : lines) {
-    nlohmann::json j = {{"id", l.id}, {"category", l.category}, {"mesh", l.mesh}, {"labels", l.labels}};
-    manifest += j.dump() + "\n";
-  }
-  writeFileAtomic(outDir / "manifest.jsonl", manifest);
+  writeManifest(lines, outDir);
   return lines;
 }
 

@@ -61,6 +61,12 @@ struct ManifestLine {
   std::string id, category, mesh, labels;
 };
 
+// Writes one object into outDir/<id>/ (mesh as object.meshFileName says, labels.json with the
+// mesh's sha256 filled in) and returns its manifest line.
+ManifestLine writeDatasetObject(FinishedObject& object, const std::filesystem::path& outDir);
+// Writes outDir/manifest.jsonl (atomic), one JSON line per object in order.
+void writeManifest(const std::vector<ManifestLine>& lines, const std::filesystem::path& outDir);
+
 using ProgressCallback = std::function<void(int done, int total)>;
 
 // Writes the objects of every request into `outDir` (created if needed) and manifest.jsonl.

@@ -3,15 +3,13 @@
 #include <algorithm>
 #include <map>
 
-#include "core/common/atomic_file.h"
 #include "core/common/error.h"
 #include "core/common/log.h"
-#include "core/common/sha256.h"
 #include "core/dataset/dataset.h"
+#include "core/generate/dataset_generator.h"
 #include "core/generate/random.h"
 #include "core/labels/labels.h"
 #include "core/mesh/mesh_crop.h"
-#include "core/mesh/mesh_export.h"
 #include "core/mesh/mesh_import.h"
 
 namespace sagrid {
@@ -54,7 +52,7 @@ CropDatasetSummary writeCropDataset(const fs::path& dataDir, const fs::path& out
   if (ec) throw FileError(outDir, "cannot create directory: " + ec.message());
 
   CropDatasetSummary summary;
-  std::string manifest;
+  std::vector<gen::ManifestLine> lines;
   int done = 0;
   for (const auto& entry : entries) {
     if (progress) progress(done++, static_cast<int>(entries.size()));
@@ -84,14 +82,20 @@ CropDatasetSummary writeCropDataset(const fs::path& dataDir, const fs::path& out
         ++summary.skipped;
         continue;
       }
-      ObjectLabels out;
-      out.object.id = entry.id + "." + type;
-      out.object.mesh = "mesh.obj";
-      out.object.category = labels.object.category;
-      out.object.up = "z";
+      gen::FinishedObject out;
+      out.id = entry.id + "." + type;
+      out.category = labels.object.category;
+      out.meshFileName = "mesh.obj";
+      out.mesh = std::move(crop);
+      out.mesh.fileUp = UpAxis::Z;
+      ObjectLabels& cropLabels = out.labels;
+      cropLabels.object.id = out.id;
+      cropLabels.object.mesh = out.meshFileName;
+      cropLabels.object.category = out.category;
+      cropLabels.object.up = "z";
       for (const char* key : {"meters_per_unit", "units"})
-        if (labels.object.extra.contains(key)) out.object.extra[key] = labels.object.extra[key];
-      out.object.extra["crop_of"] = {{"id", entry.id}, {"type", type}};
+        if (labels.object.extra.contains(key)) cropLabels.object.extra[key] = labels.object.extra[key];
+      cropLabels.object.extra["crop_of"] = {{"id", entry.id}, {"type", type}};
       for (const auto& p : points) {
         if (!box->contains(p.zUp)) continue;
         AffordancePoint a;
@@ -99,27 +103,15 @@ CropDatasetSummary writeCropDataset(const fs::path& dataDir, const fs::path& out
         a.position = p.zUp;
         a.status = AffordanceStatus::Accepted;
         a.source = "crop";
-        out.affordances.push_back(a);
+        cropLabels.affordances.push_back(a);
       }
-      out.reviewState = ReviewState::Done;
-      crop.fileUp = UpAxis::Z;
-      const fs::path dir = outDir / out.object.id;
-      fs::create_directories(dir, ec);
-      if (ec) throw FileError(dir, "cannot create directory: " + ec.message());
-      const EncodedMeshFiles files = encodeObj(crop, "mesh");
-      out.object.sha256 = sha256Hex(files.mainBytes());
-      writeEncodedMeshFiles(files, dir);
-      writeLabels(dir / "labels.json", out);
-      nlohmann::json line = {{"id", out.object.id},
-                             {"category", out.object.category},
-                             {"mesh", out.object.id + "/mesh.obj"},
-                             {"labels", out.object.id + "/labels.json"}};
-      manifest += line.dump() + "\n";
+      cropLabels.reviewState = ReviewState::Done;
+      lines.push_back(gen::writeDatasetObject(out, outDir));
       ++summary.crops;
     }
   }
   if (progress) progress(done, static_cast<int>(entries.size()));
-  writeFileAtomic(outDir / "manifest.jsonl", manifest);
+  gen::writeManifest(lines, outDir);
   return summary;
 }
 
