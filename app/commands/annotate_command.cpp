@@ -8,6 +8,7 @@
 #include <memory>
 #include <nlohmann/json.hpp>
 
+#include "app/cli_switch.h"
 #include "app/command_registry.h"
 #include "app/progress_bar.h"
 #include "core/annotate/annotate_batch.h"
@@ -91,10 +92,11 @@ void setupAnnotate(CLI::App& root) {
                   "Test-time augmentation: average each field over this many symmetric copies "
                   "of the object (z quarter turns x reflections; 1 = off, 8 = all, the default)")
       ->check(CLI::Range(1, 8));
-  cmd->add_flag("--coarse-to-fine,!--no-coarse-to-fine", o->coarseToFine,
-                "Second pass on a crop around each model's points, so a small part on a large "
-                "object is located at its own scale (about 0.5 s more per model)"
-                " (default: as each model's card says, point_extraction.coarse_to_fine)");
+  sagrid::app::addOptionalSwitch(
+      cmd, "--coarse-to-fine,!--no-coarse-to-fine", o->coarseToFine,
+      "Second pass on a crop around each model's points, so a small part on a large "
+      "object is located at its own scale (about 0.5 s more per model)"
+      " (default: as each model's card says, point_extraction.coarse_to_fine)");
   cmd->add_option("--count", o->counts,
                   "Known instance count per type, e.g. --count heatsource=5 (k-means)");
   cmd->callback([o] {

@@ -7,16 +7,17 @@
 #include <iostream>
 #include <memory>
 
+#include "app/cli_switch.h"
 #include "app/command_registry.h"
 #include "app/commands/learning_curve_options.h"
 #include "app/progress_bar.h"
+#include "core/common/atomic_file.h"
 #include "core/common/error.h"
 #include "core/common/resource_paths.h"
 #include "core/eval/architecture_sweep.h"
 #include "core/eval/count_fitting.h"
 #include "core/eval/evaluation.h"
 #include "core/eval/evaluation_comparison.h"
-#include "core/common/atomic_file.h"
 
 namespace {
 namespace fs = std::filesystem;
@@ -58,9 +59,10 @@ void setupEval(CLI::App& root) {
   cmd->add_option("--fit-confidence", o->fitConfidence,
                   "Fit the object confidence (P(right with one key)) on this data and write "
                   "DIR/confidence.json (put it beside the models to use it)");
-  cmd->add_flag("--coarse-to-fine,!--no-coarse-to-fine", o->coarseToFine,
-                "Second pass on a crop around each model's points (small parts on large objects)"
-                " (default: as each model's card says, point_extraction.coarse_to_fine)");
+  sagrid::app::addOptionalSwitch(
+      cmd, "--coarse-to-fine,!--no-coarse-to-fine", o->coarseToFine,
+      "Second pass on a crop around each model's points (small parts on large objects)"
+      " (default: as each model's card says, point_extraction.coarse_to_fine)");
   cmd->add_option("--fit-counts", o->fitCounts,
                   "Refit each model's automatic instance count on the fields of this data and "
                   "write a models folder DIR with the refitted cards (eval it with --models DIR)");

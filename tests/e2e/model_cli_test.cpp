@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <nlohmann/json.hpp>
 
 #include "core/generate/dataset_generator.h"
 #include "core/labels/labels.h"
@@ -91,6 +92,43 @@ TEST(ModelCli, EvalAndFilterWriteTheirReports) {
                 kModels);
   ASSERT_EQ(r.exitCode, 0) << r.output;
   EXPECT_THAT(r.output, HasSubstr("mesh."));
+}
+
+// The points annotate writes for the one object of `in`, in file order.
+std::vector<Eigen::Vector3f> annotatedPoints(const fs::path& in, const std::string& models,
+                                             const std::string& flags, const fs::path& out) {
+  const auto r = runSagrid("annotate " + shellQuote(in.string()) + " --models " + models +
+                           " --category sink " + flags + " --out " + shellQuote(out.string()));
+  EXPECT_EQ(r.exitCode, 0) << r.output;
+  std::vector<Eigen::Vector3f> points;
+  for (const auto& entry : fs::directory_iterator(out))
+    if (fs::exists(entry.path() / "labels.json"))
+      for (const auto& a : readLabels(entry.path() / "labels.json").affordances)
+        points.push_back(a.position);
+  return points;
+}
+
+TEST(ModelCli, TheSecondPassRunsWhereTheCardSaysUnlessTheCommandLineSaysOtherwise) {
+  const fs::path dir = test::freshTempDir();
+  gen::generateDataset({{"sink", 1, 21}}, gen::MeshFormat::Obj, dir / "in");
+  // The shipped models with the sink cards' point_extraction.coarse_to_fine switched on.
+  const fs::path cards = dir / "models";
+  fs::copy(fs::path(SAGRID_SOURCE_DIR) / "resources" / "models", cards);
+  for (const char* name : {"sink.fluidsource.json", "sink.togglebutton.json"}) {
+    nlohmann::json card = nlohmann::json::parse(std::ifstream(cards / name));
+    card["point_extraction"]["coarse_to_fine"] = true;
+    std::ofstream(cards / name) << card.dump(2);
+  }
+  const std::string on = shellQuote(cards.string());
+  const auto cardSays = annotatedPoints(dir / "in", on, "", dir / "a");
+  const auto forced = annotatedPoints(dir / "in", kModels, "--coarse-to-fine", dir / "b");
+  const auto overruled = annotatedPoints(dir / "in", on, "--no-coarse-to-fine", dir / "c");
+  const auto single = annotatedPoints(dir / "in", kModels, "", dir / "d");
+  ASSERT_FALSE(single.empty());
+  EXPECT_EQ(cardSays, forced);
+  EXPECT_EQ(overruled, single);
+  // On this object the second pass moves the points, so the equalities above tell them apart.
+  EXPECT_NE(cardSays, single);
 }
 
 }  // namespace
