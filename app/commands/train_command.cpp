@@ -8,8 +8,10 @@
 #include <cstdlib>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <sstream>
 
+#include "app/cli_switch.h"
 #include "app/command_registry.h"
 #include "app/progress_bar.h"
 #include "core/common/error.h"
@@ -31,6 +33,7 @@ struct TrainCommandOptions {
   double targetCap = 0;
   double nearWeight = 0;
   bool resume = false;
+  std::optional<bool> coarseToFine;  // unset: from --init's card
   bool lossGiven = false;  // --near-weight or --target-cap on the command line
 };
 
@@ -56,6 +59,7 @@ std::string commandLine(const TrainCommandOptions& o, const std::vector<std::str
   s << " --batch " << o.batch << " --lr " << learningRate(o) << " --seed " << o.seed;
   if (o.targetCap > 0) s << " --target-cap " << o.targetCap;
   if (o.nearWeight > 0) s << " --near-weight " << o.nearWeight;
+  if (o.coarseToFine) s << (*o.coarseToFine ? " --coarse-to-fine" : " --no-coarse-to-fine");
   return s.str();
 }
 
@@ -101,6 +105,7 @@ sagrid::DatasetTrainingResult trainOne(const TrainCommandOptions& o,
   t.datasets = data;
   t.init = o.init;
   t.lossFromInit = !o.lossGiven;
+  t.coarseToFine = o.coarseToFine;
   t.modelName = model;
   t.architecture = o.arch;
   t.mode = o.mode;
@@ -198,6 +203,10 @@ void setupTrain(CLI::App& root) {
                   "Output folder (default resources/models with --preset, else models)");
   cmd->add_option("--backend", o->backend, "Feature backend (default embedded)");
   cmd->add_option("--cache", o->cache, "Feature cache folder (default DATA/.sagrid-cache)");
+  sagrid::app::addOptionalSwitch(
+      cmd, "--coarse-to-fine,!--no-coarse-to-fine", o->coarseToFine,
+      "Record in the card that annotate and eval run the second pass (a crop around the points) "
+      "for this model (default: as the --init card says, else off)");
   cmd->add_flag("--resume", o->resume, "Continue from <out>/<model>.checkpoint when it exists");
   cmd->add_option("--preset", o->preset,
                   "default: the four shipped models on the generated bench split")

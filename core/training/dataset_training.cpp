@@ -308,6 +308,10 @@ DatasetTrainingResult trainFromDataset(const DatasetTrainingOptions& options) {
   } else {
     net.card().extraction = init->extraction;
   }
+  // Whether annotate runs the second pass for this model is a choice about the model, not a
+  // calibration: kept from the init card unless the caller says.
+  net.card().extraction.coarseToFine =
+      options.coarseToFine.value_or(init && init->extraction.coarseToFine);
 
   auto& c = net.card();
   nlohmann::json datasets = nlohmann::json::array();

@@ -9,6 +9,7 @@
 
 #include <filesystem>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -43,6 +44,9 @@ struct DatasetTrainingOptions {
   // With `init`: train with the init card's loss settings (near weight and radius, target cap)
   // instead of those in `training`, so the fine-tune optimizes what the model was trained for.
   bool lossFromInit = true;
+  // The card's point_extraction.coarse_to_fine (annotate's second pass for this model); unset:
+  // the init card's, false without one.
+  std::optional<bool> coarseToFine;
   std::string modelName;     // "<category>.<type>"
   std::string architecture;  // empty = kDefaultArchitecture
   std::string mode = "sparse";

@@ -108,27 +108,31 @@ std::vector<Eigen::Vector3f> annotatedPoints(const fs::path& in, const std::stri
   return points;
 }
 
+// The shipped models with both sink cards' point_extraction.coarse_to_fine set to `on`.
+std::string modelsWithSecondPass(const fs::path& dir, bool on) {
+  fs::copy(fs::path(SAGRID_SOURCE_DIR) / "resources" / "models", dir);
+  for (const char* name : {"sink.fluidsource.json", "sink.togglebutton.json"}) {
+    nlohmann::json card = nlohmann::json::parse(std::ifstream(dir / name));
+    card["point_extraction"]["coarse_to_fine"] = on;
+    std::ofstream(dir / name) << card.dump(2);
+  }
+  return shellQuote(dir.string());
+}
+
 TEST(ModelCli, TheSecondPassRunsWhereTheCardSaysUnlessTheCommandLineSaysOtherwise) {
   const fs::path dir = test::freshTempDir();
   gen::generateDataset({{"sink", 1, 21}}, gen::MeshFormat::Obj, dir / "in");
-  // The shipped models with the sink cards' point_extraction.coarse_to_fine switched on.
-  const fs::path cards = dir / "models";
-  fs::copy(fs::path(SAGRID_SOURCE_DIR) / "resources" / "models", cards);
-  for (const char* name : {"sink.fluidsource.json", "sink.togglebutton.json"}) {
-    nlohmann::json card = nlohmann::json::parse(std::ifstream(cards / name));
-    card["point_extraction"]["coarse_to_fine"] = true;
-    std::ofstream(cards / name) << card.dump(2);
-  }
-  const std::string on = shellQuote(cards.string());
-  const auto cardSays = annotatedPoints(dir / "in", on, "", dir / "a");
-  const auto forced = annotatedPoints(dir / "in", kModels, "--coarse-to-fine", dir / "b");
-  const auto overruled = annotatedPoints(dir / "in", on, "--no-coarse-to-fine", dir / "c");
-  const auto single = annotatedPoints(dir / "in", kModels, "", dir / "d");
-  ASSERT_FALSE(single.empty());
-  EXPECT_EQ(cardSays, forced);
-  EXPECT_EQ(overruled, single);
+  const std::string on = modelsWithSecondPass(dir / "on", true);
+  const std::string off = modelsWithSecondPass(dir / "off", false);
+  const auto cardSaysOn = annotatedPoints(dir / "in", on, "", dir / "a");
+  const auto forcedOn = annotatedPoints(dir / "in", off, "--coarse-to-fine", dir / "b");
+  const auto forcedOff = annotatedPoints(dir / "in", on, "--no-coarse-to-fine", dir / "c");
+  const auto cardSaysOff = annotatedPoints(dir / "in", off, "", dir / "d");
+  ASSERT_FALSE(cardSaysOff.empty());
+  EXPECT_EQ(cardSaysOn, forcedOn);
+  EXPECT_EQ(forcedOff, cardSaysOff);
   // On this object the second pass moves the points, so the equalities above tell them apart.
-  EXPECT_NE(cardSays, single);
+  EXPECT_NE(cardSaysOn, cardSaysOff);
 }
 
 }  // namespace

@@ -93,6 +93,30 @@ TEST_F(FineTuning, FirstStepLossIsTheInitModelsLossOnThatBatch) {
   EXPECT_GT(std::abs(model::evaluateLoss(fresh, {sample}, 0, true) - initLoss), 1e-3);
 }
 
+TEST_F(FineTuning, TheSecondPassSwitchIsKeptFromTheInitCardUnlessGiven) {
+  const fs::path out = test::freshTempDir();
+  // The base model with its card's second pass switched on.
+  fs::copy(dir() / "base", out / "init");
+  const fs::path initCard = out / "init" / (std::string(kModel) + ".json");
+  model::ModelCard card = model::readModelCard(initCard);
+  card.extraction.coarseToFine = true;
+  model::writeModelCard(initCard, card);
+
+  DatasetTrainingOptions o = tinyOptions(out / "kept");
+  o.dataDir = dir() / "one";
+  o.init = out / "init";
+  EXPECT_TRUE(model::readModelCard(trainFromDataset(o).cardFile).extraction.coarseToFine);
+  o.outDir = out / "off";
+  o.coarseToFine = false;
+  EXPECT_FALSE(model::readModelCard(trainFromDataset(o).cardFile).extraction.coarseToFine);
+  o = tinyOptions(out / "scratch");
+  o.dataDir = dir() / "one";
+  EXPECT_FALSE(model::readModelCard(trainFromDataset(o).cardFile).extraction.coarseToFine);
+  o.outDir = out / "scratch-on";
+  o.coarseToFine = true;
+  EXPECT_TRUE(model::readModelCard(trainFromDataset(o).cardFile).extraction.coarseToFine);
+}
+
 TEST_F(FineTuning, CardRecordsEveryDatasetAndTheInitModel) {
   const fs::path out = test::freshTempDir();
   DatasetTrainingOptions o = tinyOptions(out);
