@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <sstream>
@@ -38,6 +39,21 @@ struct TrainCommandOptions {
 };
 
 constexpr double kPresetNearWeight = 30;
+
+// Progress of generating training or replay data that is missing: says where it goes and opens
+// a bar only once something is generated (nothing is shown when the data is there).
+struct GenerationProgress {
+  fs::path into;
+  std::unique_ptr<sagrid::app::ProgressBar> bar;
+  void operator()(int done, int total) {
+    if (!bar) {
+      std::fprintf(stderr, "generating training data into %s\n", into.string().c_str());
+      bar = std::make_unique<sagrid::app::ProgressBar>("generate", 0);
+    }
+    bar->setTotal(static_cast<std::size_t>(total));
+    bar->update(static_cast<std::size_t>(done));
+  }
+};
 
 double learningRate(const TrainCommandOptions& o) {
   if (o.lr > 0) return o.lr;
@@ -78,15 +94,8 @@ std::vector<sagrid::TrainingDataSource> dataSources(const TrainCommandOptions& o
     return sources;
   }
   if (o.replay.empty()) {
-    std::unique_ptr<sagrid::app::ProgressBar> bar;  // shown only when something is generated
-    for (auto replay : sagrid::defaultReplaySources(o.model, [&](int done, int) {
-           if (!bar) {
-             std::fprintf(stderr, "generating the replay data into %s\n",
-                          sagrid::defaultBenchDir().string().c_str());
-             bar = std::make_unique<sagrid::app::ProgressBar>("generate", 0);
-           }
-           bar->update(static_cast<std::size_t>(done));
-         })) {
+    GenerationProgress progress{sagrid::defaultBenchDir()};
+    for (auto replay : sagrid::defaultReplaySources(o.model, std::ref(progress))) {
       replay.weight *= dataWeight;
       sources.push_back(replay);
     }
@@ -225,11 +234,8 @@ void setupTrain(CLI::App& root) {
       // val split from 32 % to 76 % (shipped models before and after).
       if (cmd->count("--near-weight") == 0) preset.nearWeight = kPresetNearWeight;
       for (const auto& name : sagrid::defaultModelNames()) {
-        std::unique_ptr<sagrid::app::ProgressBar> bar;
-        auto sources = sagrid::defaultTrainingSources(data, name, [&](int done, int) {
-          if (!bar) bar = std::make_unique<sagrid::app::ProgressBar>("generate", 0);
-          bar->update(static_cast<std::size_t>(done));
-        });
+        GenerationProgress progress{data};
+        auto sources = sagrid::defaultTrainingSources(data, name, std::ref(progress));
         // Features in DATA/.sagrid-cache (shared by every split) unless --cache says otherwise.
         if (!preset.cache.empty())
           for (auto& source : sources) source.cacheDir.clear();

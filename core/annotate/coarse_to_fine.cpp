@@ -15,22 +15,13 @@ std::optional<Eigen::AlignedBox3f> cropRegion(const ModelPrediction& coarse,
                                               const Eigen::AlignedBox3f& objectBounds,
                                               const CoarseToFineOptions& options,
                                               std::string* why) {
-  auto no = [why](const std::string& reason) -> std::optional<Eigen::AlignedBox3f> {
-    if (why) *why = reason;
+  if (coarse.points.empty()) {
+    if (why) *why = "no first-pass point";
     return std::nullopt;
-  };
-  if (coarse.points.empty()) return no("no first-pass point");
-  const float extent = objectBounds.sizes().maxCoeff();
-  Eigen::AlignedBox3f box;
-  for (const auto& p : coarse.points) box.extend(objectNormalization.toMesh(p.position));
-  const Eigen::Vector3f grow = Eigen::Vector3f::Constant(options.margin * extent);
-  box.min() -= grow;
-  box.max() += grow;
-  box = box.intersection(objectBounds);
-  if (box.isEmpty()) return no("the region around the points lies outside the object");
-  if (box.sizes().maxCoeff() > options.maxCropShare * extent)
-    return no("the points spread over most of the object");
-  return box;
+  }
+  std::vector<Eigen::Vector3f> points;
+  for (const auto& p : coarse.points) points.push_back(objectNormalization.toMesh(p.position));
+  return regionAround(points, objectBounds, options.margin, options.maxCropShare, why);
 }
 
 Eigen::Vector3f cropToObject(const Eigen::Vector3f& cropNormalized, const Normalization& crop,

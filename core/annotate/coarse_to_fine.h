@@ -6,12 +6,12 @@
 // the mesh's coordinates, so nothing else changes — and projected onto the whole mesh's surface.
 #pragma once
 
+#include <Eigen/Geometry>
 #include <optional>
 #include <string>
 
-#include <Eigen/Geometry>
-
 #include "core/annotate/annotate.h"
+#include "core/mesh/mesh_crop.h"
 
 namespace sagrid {
 
@@ -20,12 +20,12 @@ struct Mesh;
 struct CoarseToFineOptions {
   // The crop is the box around the first pass's points grown by this share of the object's
   // largest extent on every side.
-  float margin = 0.15f;
+  float margin = kCropMargin;
   // No second pass when the crop would span more than this share of the object's largest extent
   // (the first pass already saw it at that scale).
-  float maxCropShare = 0.6f;
+  float maxCropShare = kCropMaxShare;
   // No second pass when the crop holds fewer triangles (nothing to see at a finer scale).
-  int minTriangles = 12;
+  int minTriangles = kCropMinTriangles;
 };
 
 // The crop box (z-up mesh frame) around `coarse`'s points, or nullopt with the reason in `why`

@@ -80,4 +80,24 @@ Mesh cropMesh(const Mesh& mesh, const Eigen::AlignedBox3f& box) {
   return crop;
 }
 
+std::optional<Eigen::AlignedBox3f> regionAround(const std::vector<Eigen::Vector3f>& points,
+                                                const Eigen::AlignedBox3f& bounds, float margin,
+                                                float maxShare, std::string* why) {
+  auto no = [why](const char* reason) -> std::optional<Eigen::AlignedBox3f> {
+    if (why) *why = reason;
+    return std::nullopt;
+  };
+  const float extent = bounds.sizes().maxCoeff();
+  Eigen::AlignedBox3f box;
+  for (const auto& p : points) box.extend(p);
+  const Eigen::Vector3f grow = Eigen::Vector3f::Constant(margin * extent);
+  box.min() -= grow;
+  box.max() += grow;
+  box = box.intersection(bounds);
+  if (box.isEmpty()) return no("the region around the points lies outside the object");
+  if (box.sizes().maxCoeff() > maxShare * extent)
+    return no("the points spread over most of the object");
+  return box;
+}
+
 }  // namespace sagrid

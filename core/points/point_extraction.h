@@ -39,8 +39,8 @@ struct ExtractionSettings {
   // persistence of the sublevel sets). Noise dimples in a shallow field have almost none.
   float minPersistence = 0.0f;
   // Run the coarse-to-fine second pass (core/annotate/coarse_to_fine.h) for this model unless the
-  // caller says otherwise: set on cards of models trained beside crops (sagrid crop-dataset), which
-  // know the scale the second pass shows them.
+  // caller says otherwise (`train --coarse-to-fine` sets it; the shipped sink.togglebutton card
+  // has it on).
   bool coarseToFine = false;
 };
 

@@ -23,21 +23,16 @@ struct Point {
   Eigen::Vector3f zUp;  // z-up frame, file units
 };
 
-// The box the second pass would cut around `typePoints`, moved by the jitter; nullopt when it
-// would not run (wider than maxCropShare of the object).
+// The box the second pass would cut around `typePoints` after a first pass off by a random shift
+// of up to the jitter; nullopt when it would not run (wider than maxCropShare of the object).
 std::optional<Eigen::AlignedBox3f> cropBox(const std::vector<Eigen::Vector3f>& typePoints,
                                            const Eigen::AlignedBox3f& bounds,
                                            const CropDatasetOptions& options, gen::Rng& rng) {
-  const float extent = bounds.sizes().maxCoeff();
-  Eigen::AlignedBox3f box;
-  for (const auto& p : typePoints) box.extend(p);
   const Eigen::Vector3f shift(rng.uniformf(-1, 1), rng.uniformf(-1, 1), rng.uniformf(-1, 1));
-  const Eigen::Vector3f grow = Eigen::Vector3f::Constant(options.margin * extent);
-  box.min() += shift * options.jitter * extent - grow;
-  box.max() += shift * options.jitter * extent + grow;
-  box = box.intersection(bounds);
-  if (box.isEmpty() || box.sizes().maxCoeff() > options.maxCropShare * extent) return std::nullopt;
-  return box;
+  std::vector<Eigen::Vector3f> shifted;
+  for (const auto& p : typePoints)
+    shifted.push_back(p + shift * options.jitter * bounds.sizes().maxCoeff());
+  return regionAround(shifted, bounds, options.margin, options.maxCropShare);
 }
 
 }  // namespace

@@ -12,13 +12,15 @@
 #include <functional>
 #include <string>
 
+#include "core/mesh/mesh_crop.h"
+
 namespace sagrid {
 
 struct CropDatasetOptions {
-  float margin = 0.15f;       // share of the object's largest extent, as CoarseToFineOptions
-  float maxCropShare = 0.6f;  // no crop wider than this share (the second pass would not run)
+  float margin = kCropMargin;          // share of the object's largest extent (the second pass')
+  float maxCropShare = kCropMaxShare;  // no crop wider than this share (no second pass there)
   float jitter = 0.05f;       // the box moves by up to this share of the extent on each axis
-  int minTriangles = 12;      // fewer in the crop: none written
+  int minTriangles = kCropMinTriangles;  // fewer in the crop: none written
   std::uint64_t seed = 1;
 };
 

@@ -52,5 +52,24 @@ TEST(MeshCrop, AnEmptyBoxGivesAnEmptyMesh) {
   EXPECT_TRUE(crop.positions.empty());
 }
 
+TEST(CropRegion, GrowsTheBoxAroundThePointsByTheMarginAndClipsItToTheObject) {
+  const Eigen::AlignedBox3f bounds(Eigen::Vector3f(0, 0, 0), Eigen::Vector3f(2, 1, 1));
+  // Margin 0.1 of the largest extent (2) = 0.2 on every side; clipped at y = 0 and z = 1.
+  const auto box = regionAround({{1.0f, 0.1f, 0.9f}, {1.2f, 0.3f, 0.9f}}, bounds, 0.1f, 0.6f);
+  ASSERT_TRUE(box.has_value());
+  EXPECT_TRUE(box->min().isApprox(Eigen::Vector3f(0.8f, 0.0f, 0.7f)));
+  EXPECT_TRUE(box->max().isApprox(Eigen::Vector3f(1.4f, 0.5f, 1.0f)));
+}
+
+TEST(CropRegion, RefusesRegionsWiderThanTheShareOrOutsideTheObject) {
+  const Eigen::AlignedBox3f bounds(Eigen::Vector3f(0, 0, 0), Eigen::Vector3f(2, 1, 1));
+  std::string why;
+  // 0.2 + 1.4 + 0.2 = 1.8 wide > 0.6 x 2.
+  EXPECT_FALSE(regionAround({{0.3f, 0.5f, 0.5f}, {1.7f, 0.5f, 0.5f}}, bounds, 0.1f, 0.6f, &why));
+  EXPECT_EQ(why, "the points spread over most of the object");
+  EXPECT_FALSE(regionAround({{5.0f, 5.0f, 5.0f}}, bounds, 0.1f, 0.6f, &why));
+  EXPECT_EQ(why, "the region around the points lies outside the object");
+}
+
 }  // namespace
 }  // namespace sagrid
