@@ -30,6 +30,7 @@ void setupGenerate(CLI::App& root) {
     int sheetLimit = 64;
     bool stats = false;
     double wallFixtures = 0.0;
+    double glassHobs = 0.0;
   };
   auto o = std::make_shared<Options>();
   cmd->add_option("--category", o->category, "stove, sink or none (distractors: microwaves, ovens, dishwashers, hoods, cabinets)")
@@ -43,14 +44,19 @@ void setupGenerate(CLI::App& root) {
          "--preset", o->preset,
          "bench: the fixed benchmark split (OUT/train, OUT/val; see README); distractors: category "
          "\"none\" objects for the category classifier (OUT/train 150, OUT/val 50); wall-fixtures: "
-         "the "
-         "dressed sinks the shipped sink models also train on (OUT/wall-fixtures 300)")
-      ->check(CLI::IsMember({"bench", "distractors", "wall-fixtures"}));
+         "the dressed sinks the shipped sink models also train on (OUT/wall-fixtures 300); "
+         "glass-hobs: stoves, half of them bare glass hobs, the shipped stove models also train "
+         "on (OUT/glass-hobs 300)")
+      ->check(CLI::IsMember({"bench", "distractors", "wall-fixtures", "glass-hobs"}));
   cmd->add_option(
          "--wall-fixtures", o->wallFixtures,
          "Share of sinks (not bare faucets) given a mirror, lamps, a shelf, a back panel or a "
          "towel bar on "
          "the wall behind them, as real vanities ship (0: the bench look; not with --preset)")
+      ->check(CLI::Range(0.0, 1.0));
+  cmd->add_option("--glass-hobs", o->glassHobs,
+                  "Share of stoves that are built-in glass hobs on their own, zones and touch "
+                  "controls printed only in the texture (not with --preset)")
       ->check(CLI::Range(0.0, 1.0));
   cmd->add_option("--contact-sheet", o->contactSheet, "Also render a PNG grid of thumbnails with the labels drawn");
   cmd->add_option("--sheet-limit", o->sheetLimit, "At most this many objects on the contact sheet")->check(CLI::PositiveNumber);
@@ -60,13 +66,14 @@ void setupGenerate(CLI::App& root) {
     const auto start = std::chrono::steady_clock::now();
     int written = 0;
     std::vector<fs::path> dirs;
-    if (!o->preset.empty() && o->wallFixtures > 0.0) {
+    if (!o->preset.empty() && (o->wallFixtures > 0.0 || o->glassHobs > 0.0)) {
       throw sagrid::InvalidArgument(
-          "--wall-fixtures changes the objects; the presets are fixed splits");
+          "--wall-fixtures and --glass-hobs change the objects; the presets are fixed splits");
     }
     if (!o->preset.empty()) {
       const auto& preset = o->preset == "bench"         ? sagrid::gen::benchPreset()
                            : o->preset == "distractors" ? sagrid::gen::distractorPreset()
+                           : o->preset == "glass-hobs"  ? sagrid::gen::glassHobPreset()
                                                         : sagrid::gen::wallFixturePreset();
       int total = 0;
       for (const auto& s : preset)
@@ -80,7 +87,7 @@ void setupGenerate(CLI::App& root) {
       if (o->category.empty()) throw sagrid::InvalidArgument("--category is required (or --preset bench)");
       sagrid::app::ProgressBar bar("generate " + o->category, static_cast<std::size_t>(o->count));
       sagrid::gen::generateDataset(
-          {{o->category, o->count, o->seed, {o->wallFixtures}}},
+          {{o->category, o->count, o->seed, {o->wallFixtures, o->glassHobs}}},
           sagrid::gen::parseMeshFormat(o->format), o->out,
           [&](int done, int) { bar.update(static_cast<std::size_t>(done)); });
       bar.finish();

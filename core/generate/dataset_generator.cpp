@@ -25,9 +25,17 @@ MeshFormat parseMeshFormat(const std::string& text) {
 }
 
 namespace {
-GeneratedObject makeBareObject(const std::string& category, std::uint64_t seed, int index) {
+GeneratedObject makeBareObject(const std::string& category, std::uint64_t seed, int index,
+                               const GeneratorOptions& options) {
   Rng rng(deriveSeed(seed, category, static_cast<std::uint64_t>(index)));
-  if (category == "stove") return generateStove(rng);
+  if (category == "stove") {
+    StoveOptions stove;
+    if (options.glassSlabHobs > 0.0) {
+      Rng choice(deriveSeed(seed, category + "/glass_slab", static_cast<std::uint64_t>(index)));
+      stove.glassSlab = choice.chance(options.glassSlabHobs);
+    }
+    return generateStove(rng, stove);
+  }
   if (category == "sink") return generateSink(rng);
   if (category == kDistractorCategory) return generateDistractor(rng);
   throw InvalidArgument("unknown category '" + category + "' (expected stove, sink or none)");
@@ -39,7 +47,10 @@ GeneratedObject makeRawObject(const std::string& category, std::uint64_t seed, i
   if (!(options.wallFixtures >= 0.0 && options.wallFixtures <= 1.0)) {
     throw InvalidArgument("the wall fixture share must be in [0, 1]");
   }
-  GeneratedObject object = makeBareObject(category, seed, index);
+  if (!(options.glassSlabHobs >= 0.0 && options.glassSlabHobs <= 1.0)) {
+    throw InvalidArgument("the glass hob share must be in [0, 1]");
+  }
+  GeneratedObject object = makeBareObject(category, seed, index, options);
   if (options.wallFixtures > 0.0 && acceptsWallFixtures(object)) {
     Rng rng(deriveSeed(seed, category + "/wall_fixtures", static_cast<std::uint64_t>(index)));
     if (rng.chance(options.wallFixtures)) addWallFixtures(object, rng);
@@ -183,6 +194,13 @@ const std::vector<BenchSplit>& distractorPreset() {
 const std::vector<BenchSplit>& wallFixturePreset() {
   static const std::vector<BenchSplit> preset = {
       {"wall-fixtures", {{"sink", 300, 5001, GeneratorOptions{0.8}}}},
+  };
+  return preset;
+}
+
+const std::vector<BenchSplit>& glassHobPreset() {
+  static const std::vector<BenchSplit> preset = {
+      {"glass-hobs", {{"stove", 300, 6001, GeneratorOptions{0.0, 0.5}}}},
   };
   return preset;
 }

@@ -40,6 +40,9 @@ struct GeneratorOptions {
   // Share of sinks (not bare faucets) that get a mirror, lamps, a shelf, a back panel or a towel
   // bar on the wall behind them (core/generate/wall_fixtures.h), in [0, 1].
   double wallFixtures = 0.0;
+  // Share of stoves that are built-in glass hobs on their own, zones and touch controls printed
+  // only in the texture (core/generate/stove_generator.h, StoveOptions::glassSlab), in [0, 1].
+  double glassSlabHobs = 0.0;
 };
 
 // Builds object `index` of category ("stove" | "sink" | "none": a distractor) for `seed`, realism applied.
@@ -90,6 +93,9 @@ const std::vector<BenchSplit>& distractorPreset();
 // half: outDir/wall-fixtures (300 sinks, seed 5001, 80 % of those with a basin dressed), mixed
 // OBJ/GLB. Its own seed: the bench split is untouched.
 const std::vector<BenchSplit>& wallFixturePreset();
+// Stoves of which half are bare glass hobs with printed zones and touch controls, which the
+// shipped stove models also train on: outDir/glass-hobs (300 stoves, seed 6001), mixed OBJ/GLB.
+const std::vector<BenchSplit>& glassHobPreset();
 // Writes every split of a preset into outDir/<split name>.
 void generatePreset(const std::vector<BenchSplit>& preset, const std::filesystem::path& outDir,
                     const ProgressCallback& progress = {});

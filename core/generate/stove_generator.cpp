@@ -5,6 +5,7 @@
 
 #include "core/generate/angles.h"
 #include "core/generate/parts.h"
+#include "core/generate/printed_controls.h"
 #include "core/generate/shape_builder.h"
 #include "core/generate/texture_painter.h"
 
@@ -89,7 +90,7 @@ struct Palette {
 
 class StoveBuilder {
  public:
-  explicit StoveBuilder(Rng& rng) : m_rng(rng) {}
+  StoveBuilder(Rng& rng, const StoveOptions& options) : m_rng(rng), m_options(options) {}
   GeneratedObject run();
 
  private:
@@ -98,6 +99,8 @@ class StoveBuilder {
   void buildHotPlateOrCooktopBody(float height);
   void buildRangeBody();
   void buildCounterBlock();
+  void buildGlassSlab();
+  void splitPrintedControlArea();
   void buildBurners();
   void buildCoil(const Burner& burner);
   void buildGas(const Burner& burner, bool ownGrate);
@@ -112,6 +115,7 @@ class StoveBuilder {
   }
 
   Rng& m_rng;
+  StoveOptions m_options;
   ShapeBuilder m_b;
   std::vector<GroundTruthPoint> m_points;
   nlohmann::json m_params = nlohmann::json::object();
@@ -137,6 +141,7 @@ class StoveBuilder {
 void StoveBuilder::choose() {
   static const std::vector<std::string> kinds = stoveKinds();
   m_kind = kinds[m_rng.weighted({0.26, 0.24, 0.14, 0.2, 0.16})];
+  if (m_options.glassSlab) m_kind = "glass_slab";
 
   // Layouts allowed by kind, then a width that fits the burner count.
   std::vector<std::string> layouts;
@@ -144,7 +149,7 @@ void StoveBuilder::choose() {
   if (m_kind == "hot_plate") {
     layouts = {"single", "row2", "column2"};
     weights = {0.55, 0.3, 0.15};
-  } else if (m_kind == "cooktop" || m_kind == "hob_in_counter") {
+  } else if (m_kind == "cooktop" || m_kind == "hob_in_counter" || m_kind == "glass_slab") {
     layouts = {"single", "row2", "column2", "row3", "triangle3", "grid2x2", "offgrid4",
                "four_plus_centre", "grid2x3"};
     weights = {0.06, 0.08, 0.1, 0.08, 0.1, 0.22, 0.14, 0.12, 0.1};
@@ -174,6 +179,7 @@ void StoveBuilder::choose() {
 
   // Burner look: glass zones need a glass top; coil and gas suit enamel or steel.
   m_look = stoveBurnerLooks()[m_rng.weighted({0.24, 0.3, 0.22, 0.24})];
+  if (m_kind == "glass_slab") m_look = "glass_zone";
 
   // Control placement allowed by kind.
   std::vector<std::string> places;
@@ -186,6 +192,9 @@ void StoveBuilder::choose() {
   } else if (m_kind == "hob_in_counter") {
     places = {"front_panel", "top_front_strip", "touch", "top_beside"};
     weights = {0.3, 0.25, 0.3, 0.15};
+  } else if (m_kind == "glass_slab") {
+    places = {"printed"};
+    weights = {1.0};
   } else if (m_kind == "range_freestanding") {
     places = {"front_panel", "back_panel", "top_front_strip", "touch"};
     weights = {0.4, 0.42, 0.1, 0.08};
@@ -206,6 +215,11 @@ void StoveBuilder::choose() {
   }
   if (m_controls == "side") extra = 0;
   m_knobCount = n + extra;
+  if (m_controls == "printed") {
+    // Touch panels: one symbol per zone up to a +/- pair per zone, a power and a lock symbol.
+    m_knobCount =
+        std::clamp(m_rng.pick(std::vector<int>{n, n + 1, 2 * n, 2 * n + 1, 2 * n + 2}), 2, 14);
+  }
   m_knobShape = randomKnob(m_rng, m_kind == "hot_plate" ? m_rng.uniformf(0.9, 1.6) : 1.0f);
 
   // Finishes.
@@ -236,6 +250,7 @@ void StoveBuilder::choose() {
                                                       "chrome", "stainless", "matte_black", "brass"}))
                                    .color);
   m_pal.foot = mat("foot", jitter(m_rng, {0.1f, 0.1f, 0.1f}, 0.05f));
+  if (m_kind == "glass_slab") m_pal.top = m_pal.body;
 }
 
 void StoveBuilder::buildHotPlateOrCooktopBody(float height) {
@@ -433,6 +448,8 @@ void StoveBuilder::buildBody() {
   } else if (m_kind == "hob_in_counter") {
     m_top = {-0.5f * m_width, 0.5f * m_width, -0.5f * m_depth, 0.5f * m_depth};
     buildCounterBlock();
+  } else if (m_kind == "glass_slab") {
+    buildGlassSlab();
   } else {
     buildRangeBody();
   }
@@ -440,7 +457,9 @@ void StoveBuilder::buildBody() {
   // Split the top into the burner region and the control strip.
   const float margin = m_rng.uniformf(0.015, 0.04);
   m_region = {m_top.x0 + margin, m_top.x1 - margin, m_top.y0 + margin, m_top.y1 - margin};
-  if (m_controls == "top_front_strip" || (m_controls == "touch" && m_rng.chance(0.7))) {
+  if (m_controls == "printed") {
+    splitPrintedControlArea();
+  } else if (m_controls == "top_front_strip" || (m_controls == "touch" && m_rng.chance(0.7))) {
     const float strip = std::min(0.3f * m_region.depth(), m_rng.uniformf(0.05, 0.1));
     m_strip = {m_region.x0, m_region.x1, m_region.y0, m_region.y0 + strip};
     m_region.y0 += strip;
@@ -553,7 +572,9 @@ void StoveBuilder::buildGlassTop() {
   // The zones exist only in the texture of a flat glass sheet lying on the top.
   const Rect2& t = m_top;
   const float lift = 0.0006f;
-  TexturePainter painter(512, std::max(64, static_cast<int>(512 * t.depth() / t.width())),
+  const bool slab = m_kind == "glass_slab";
+  const int pixels = slab ? 1024 : 512;  // printed symbols are a few millimetres wide
+  TexturePainter painter(pixels, std::max(64, static_cast<int>(pixels * t.depth() / t.width())),
                          jitter(m_rng, {0.05f, 0.05f, 0.06f}, 0.03f));
   const Vec3 zoneColor = m_rng.pick(std::vector<Vec3>{{0.45f, 0.45f, 0.45f}, {0.6f, 0.2f, 0.15f},
                                                       {0.75f, 0.75f, 0.75f}, {0.5f, 0.35f, 0.2f}});
@@ -566,6 +587,36 @@ void StoveBuilder::buildGlassTop() {
     if (m_rng.chance(0.6)) painter.ring(uv, ru * 0.62f, 0.004f / t.width(), zoneColor);
     if (m_rng.chance(0.3)) painter.disc(uv, 0.006f / t.width(), zoneColor);
   }
+  const Eigen::AlignedBox2f top(Eigen::Vector2f(t.x0, t.y0), Eigen::Vector2f(t.x1, t.y1));
+  std::vector<Eigen::Vector2f> printed;
+  if (slab) {
+    // A dotted ring inside some zones, and a maker's name at the back, as on real glass hobs.
+    for (const Burner& br : m_burners) {
+      if (!m_rng.chance(0.5)) continue;
+      const int dots = m_rng.uniformInt(24, 48);
+      for (int i = 0; i < dots; ++i) {
+        const float a = 2 * kPi * i / dots;
+        const Vec2 p = br.center + 0.85f * br.radius * Vec2(std::cos(a), std::sin(a));
+        painter.disc(Vec2((p.x() - t.x0) / t.width(), (p.y() - t.y0) / t.depth()),
+                     0.0015f / t.width(), zoneColor);
+      }
+    }
+    if (m_rng.chance(0.6)) {
+      const float y = t.y1 - 0.5f * (t.y1 - m_region.y1) - 0.01f;
+      const float x = m_rng.uniformf(-0.25, 0.25) * t.width();
+      paintPrintedLettering(m_rng, painter, top,
+                            Eigen::AlignedBox2f(Eigen::Vector2f(x - 0.05f, y - 0.01f),
+                                                Eigen::Vector2f(x + 0.05f, y + 0.01f)),
+                            zoneColor);
+      m_extras.push_back("printed_lettering");
+    }
+  }
+  if (m_controls == "printed") {
+    const Eigen::AlignedBox2f area(Eigen::Vector2f(m_strip.x0, m_strip.y0),
+                                   Eigen::Vector2f(m_strip.x1, m_strip.y1));
+    const Vec3 symbolColor = m_rng.chance(0.6) ? zoneColor : Vec3(0.85f, 0.85f, 0.85f);
+    printed = paintPrintedControls(m_rng, painter, top, area, m_knobCount, symbolColor);
+  }
   painter.speckle(0.03f, static_cast<unsigned>(m_rng.next() & 0xffff));
   const int tex = m_b.addTexture(std::move(painter).take());
   const int glass = m_b.material("glass_top", Vec3::Ones(), tex);
@@ -575,7 +626,47 @@ void StoveBuilder::buildGlassTop() {
   for (const Burner& br : m_burners) {
     gt("heatsource", Vec3(br.center.x(), br.center.y(), m_topZ + lift), Vec3::UnitZ(), t0);
   }
+  for (const Eigen::Vector2f& p : printed) {
+    gt("togglebutton", Vec3(p.x(), p.y(), m_topZ + lift), Vec3::UnitZ(), t0);
+  }
   m_topZ += lift;
+}
+
+void StoveBuilder::buildGlassSlab() {
+  // A built-in glass hob on its own: one thin sheet, sometimes in a steel frame; no body.
+  const float thickness = m_rng.uniformf(0.003, 0.01);
+  m_b.box(translation(0, 0, 0.5f * thickness), Vec3(m_width, m_depth, thickness), m_pal.top,
+          m_rng.chance(0.5) ? 0.4f * thickness : 0.0f, 1);
+  m_topZ = thickness;
+  m_top = {-0.5f * m_width, 0.5f * m_width, -0.5f * m_depth, 0.5f * m_depth};
+  if (m_rng.chance(0.35)) {
+    const float bar = m_rng.uniformf(0.003, 0.008);
+    const float h = thickness + 0.0015f;
+    m_b.box(translation(0, -0.5f * (m_depth + bar), 0.5f * h), Vec3(m_width + 2 * bar, bar, h),
+            m_pal.trim);
+    m_b.box(translation(0, 0.5f * (m_depth + bar), 0.5f * h), Vec3(m_width + 2 * bar, bar, h),
+            m_pal.trim);
+    m_b.box(translation(-0.5f * (m_width + bar), 0, 0.5f * h), Vec3(bar, m_depth, h), m_pal.trim);
+    m_b.box(translation(0.5f * (m_width + bar), 0, 0.5f * h), Vec3(bar, m_depth, h), m_pal.trim);
+    m_extras.push_back("steel_frame");
+  }
+  m_frontY = -0.5f * m_depth;
+  m_frontZ0 = 0;
+  m_frontZ1 = thickness;
+}
+
+void StoveBuilder::splitPrintedControlArea() {
+  // Most touch panels run along the front edge; some sit at one end beside the zones.
+  if (m_rng.chance(0.75)) {
+    const float strip = std::min(0.3f * m_region.depth(), m_rng.uniformf(0.04, 0.08));
+    m_strip = {m_region.x0, m_region.x1, m_region.y0, m_region.y0 + strip};
+    m_region.y0 += strip;
+  } else {
+    const float strip = std::min(0.3f * m_region.width(), m_rng.uniformf(0.04, 0.08));
+    m_stripOnSide = true;
+    m_strip = {m_region.x1 - strip, m_region.x1, m_region.y0, m_region.y1};
+    m_region.x1 -= strip;
+  }
 }
 
 void StoveBuilder::buildBurners() {
@@ -633,6 +724,7 @@ void StoveBuilder::addTouchButton(const Affine& frame, float radius) {
 }
 
 void StoveBuilder::buildControls() {
+  if (m_controls == "printed") return;  // painted with the glass top
   const int n = m_knobCount;
   if (m_controls == "top_front_strip" || m_controls == "top_beside" ||
       (m_controls == "touch" && m_strip.width() > 0)) {
@@ -704,7 +796,8 @@ GeneratedObject StoveBuilder::run() {
   m_params["burner_look"] = m_look;
   m_params["controls"] = m_controls;
   m_params["knobs"] = m_knobCount;
-  m_params["knob_style"] = m_controls == "touch" ? "touch" : toString(m_knobShape.style);
+  m_params["knob_style"] =
+      m_controls == "touch" || m_controls == "printed" ? m_controls : toString(m_knobShape.style);
   m_params["finish"] = m_pal.finishName;
   m_params["width_m"] = roundedToMillimetre(m_width);
   std::sort(m_extras.begin(), m_extras.end());
@@ -736,6 +829,8 @@ const std::vector<std::string>& stoveControlPlacements() {
   return v;
 }
 
-GeneratedObject generateStove(Rng& rng) { return StoveBuilder(rng).run(); }
+GeneratedObject generateStove(Rng& rng, const StoveOptions& options) {
+  return StoveBuilder(rng, options).run();
+}
 
 }  // namespace sagrid::gen

@@ -18,8 +18,14 @@ const std::vector<std::string>& stoveLayouts();
 const std::vector<std::string>& stoveBurnerLooks();
 const std::vector<std::string>& stoveControlPlacements();
 
+struct StoveOptions {
+  // A built-in glass hob on its own (kind "glass_slab", never drawn otherwise): one thin sheet
+  // whose zones and touch controls (controls "printed") exist only in its texture.
+  bool glassSlab = false;
+};
+
 // generator fields: kind, layout, burners, burner_look, controls, knobs, knob_style, finish,
 // width_m, extras.
-GeneratedObject generateStove(Rng& rng);
+GeneratedObject generateStove(Rng& rng, const StoveOptions& options = {});
 
 }  // namespace sagrid::gen
