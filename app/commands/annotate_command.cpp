@@ -57,6 +57,7 @@ void setupAnnotate(CLI::App& root) {
     int symmetries = sagrid::AnnotateOptions{}.symmetries;
     bool force = false;
     std::optional<bool> coarseToFine;
+    bool noPrintedMarks = false;
     double timeLimit = 600;
   };
   auto o = std::make_shared<Options>();
@@ -97,6 +98,9 @@ void setupAnnotate(CLI::App& root) {
       "Second pass on a crop around each model's points, so a small part on a large "
       "object is located at its own scale (about 0.5 s more per model)"
       " (default: as each model's card says, point_extraction.coarse_to_fine)");
+  cmd->add_flag("--no-printed-marks", o->noPrintedMarks,
+                "Switch the texture pass off: cooking zones and touch symbols printed on a "
+                "stove's top (glass hobs) are not taken as its heat-source and toggle points");
   cmd->add_option("--count", o->counts,
                   "Known instance count per type, e.g. --count heatsource=5 (k-means)");
   cmd->callback([o] {
@@ -111,6 +115,7 @@ void setupAnnotate(CLI::App& root) {
     options.category = o->category;
     options.symmetries = o->symmetries;
     options.coarseToFine = o->coarseToFine;
+    options.printedMarks = !o->noPrintedMarks;
     // Models, their feature options and confidence map load in the worker process.
     options.features.cacheDir = o->cache;
     if (!o->up.empty()) options.features.up = sagrid::parseUpAxis(o->up);

@@ -40,6 +40,7 @@ void setupEval(CLI::App& root) {
     int epochs = 0;
     int symmetries = sagrid::EvaluationOptions{}.symmetries;
     std::optional<bool> coarseToFine;
+    bool noPrintedMarks = false;
     double nearWeight = sagrid::SweepOptions{}.nearWeight;
   };
   auto o = std::make_shared<Options>();
@@ -63,6 +64,8 @@ void setupEval(CLI::App& root) {
       cmd, "--coarse-to-fine,!--no-coarse-to-fine", o->coarseToFine,
       "Second pass on a crop around each model's points (small parts on large objects)"
       " (default: as each model's card says, point_extraction.coarse_to_fine)");
+  cmd->add_flag("--no-printed-marks", o->noPrintedMarks,
+                "Switch the texture pass off (printed zones and touch symbols), as annotate");
   cmd->add_option("--fit-counts", o->fitCounts,
                   "Refit each model's automatic instance count on the fields of this data and "
                   "write a models folder DIR with the refitted cards (eval it with --models DIR)");
@@ -119,6 +122,7 @@ void setupEval(CLI::App& root) {
     options.confidence = sagrid::readConfidenceCalibration(modelsDir);
     options.keepFields = !o->fitCounts.empty();
     options.coarseToFine = o->coarseToFine;
+    options.printedMarks = !o->noPrintedMarks;
     const auto report = sagrid::evaluateModels(models, options);
     if (!o->fitCounts.empty()) {
       const auto fits =

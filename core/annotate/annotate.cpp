@@ -3,6 +3,7 @@
 #include <chrono>
 
 #include "core/annotate/coarse_to_fine.h"
+#include "core/annotate/printed_marks_pass.h"
 #include "core/annotate/symmetry_averaging.h"
 #include "core/common/error.h"
 #include "core/features/feature_grid.h"
@@ -128,6 +129,7 @@ AnnotationResult annotateMeshFile(const fs::path& meshFile, const std::string& i
     return r;
   }
   const auto categoryModels = models.forCategory(r.category);
+  const PrintedMarks printed = options.printedMarks ? findPrintedMarks(mesh) : PrintedMarks{};
   for (std::size_t m = 0; m < categoryModels.size(); ++m) {
     const auto* model = categoryModels[m];
     stage(0.7f + 0.3f * static_cast<float>(m) / static_cast<float>(categoryModels.size()),
@@ -144,6 +146,8 @@ AnnotationResult annotateMeshFile(const fs::path& meshFile, const std::string& i
     if (options.coarseToFine.value_or(model->card().extraction.coarseToFine))
       p = refineInCrop(*model, p, mesh, features, scene, featureOptions, mode, n,
                        options.symmetries);
+    applyPrintedMarks(*model, p, printedMarksFor(printed, r.category, p.type), features, scene,
+                      mesh.fileUp, mode, n);
     for (std::size_t i = 0; i < p.points.size(); ++i) {
       AffordancePoint a;
       a.type = p.type;
@@ -161,7 +165,9 @@ AnnotationResult annotateMeshFile(const fs::path& meshFile, const std::string& i
                                   {"category_retrieved", r.categoryRetrieved},
                                   {"object_confidence", r.objectConfidence},
                                   {"object_confidence_calibrated", options.confidence.fitted},
-                                  {"symmetries", options.symmetries}};
+                                  {"symmetries", options.symmetries},
+                                  {"printed_zones", printed.zones.size()},
+                                  {"printed_symbols", printed.symbols.size()}};
   r.modelSeconds = secondsSince(t);
   if (options.onProgress) options.onProgress(1.0f, "done");
   return r;

@@ -70,6 +70,9 @@ struct AnnotateOptions {
   // coarse_to_fine.h), for small parts on large objects. Unset: as each model's card says
   // (point_extraction.coarse_to_fine); true / false: for every model.
   std::optional<bool> coarseToFine;
+  // The texture pass (core/annotate/printed_marks_pass.h): zones and touch symbols printed on a
+  // stove's top become its heat-source and toggle points.
+  bool printedMarks = true;
   // Maps the least-sure point to P(right with one key) (core/annotate/object_confidence.h);
   // unfitted = the uncalibrated map.
   ConfidenceCalibration confidence;

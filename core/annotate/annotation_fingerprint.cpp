@@ -28,6 +28,7 @@ std::string annotateOptionsHash(const AnnotateOptions& options) {
       {"mode", static_cast<int>(options.mode)},
       {"counts", options.counts},
       {"symmetries", options.symmetries},
+      {"printed_marks", options.printedMarks},
       {"coarse_to_fine",
        options.coarseToFine ? nlohmann::json(*options.coarseToFine) : nlohmann::json("card")},
       {"features", featureConfigHash(options.features)},

@@ -7,12 +7,13 @@
 
 #include "core/annotate/annotate.h"
 #include "core/annotate/coarse_to_fine.h"
+#include "core/annotate/printed_marks_pass.h"
 #include "core/common/atomic_file.h"
 #include "core/common/error.h"
-#include "core/eval/report_cell.h"
 #include "core/common/log.h"
 #include "core/dataset/dataset.h"
 #include "core/eval/embedding_search.h"
+#include "core/eval/report_cell.h"
 #include "core/features/feature_grid.h"
 #include "core/geometry/surface_scene.h"
 #include "core/labels/labels.h"
@@ -86,6 +87,7 @@ EvaluationReport evaluateModels(const ModelSet& models, const EvaluationOptions&
       // Every other extraction mode below reads the same field.
       const auto categoryModels = models.forCategory(category);
       const auto t = Clock::now();
+      const PrintedMarks printed = options.printedMarks ? findPrintedMarks(mesh) : PrintedMarks{};
       std::vector<ModelPrediction> autoPredictions;
       for (const auto* model : categoryModels) {
         autoPredictions.push_back(predictionFromField(*model,
@@ -95,6 +97,9 @@ EvaluationReport evaluateModels(const ModelSet& models, const EvaluationOptions&
           autoPredictions.back() =
               refineInCrop(*model, autoPredictions.back(), mesh, grid, scene, objectFeatures,
                            InstanceMode::Auto, 1, options.symmetries);
+        applyPrintedMarks(*model, autoPredictions.back(),
+                          printedMarksFor(printed, category, model->card().type), grid, scene,
+                          mesh.fileUp, InstanceMode::Auto);
       }
       modelSeconds += std::chrono::duration<double>(Clock::now() - t).count();
       auto surfaceOf = [](const ModelPrediction& p) {

@@ -1,0 +1,62 @@
+#include "core/annotate/printed_marks_pass.h"
+
+#include <algorithm>
+#include <limits>
+
+#include "core/features/feature_grid.h"
+#include "core/model/affordance_model.h"
+
+namespace sagrid {
+
+const std::vector<PrintedCircle>& printedMarksFor(const PrintedMarks& marks,
+                                                  const std::string& category,
+                                                  const std::string& type) {
+  static const std::vector<PrintedCircle> kNone;
+  if (category != "stove") return kNone;
+  if (type == "heatsource") return marks.zones;
+  if (type == "togglebutton") return marks.symbols;
+  return kNone;
+}
+
+void applyPrintedMarks(const model::AffordanceModel& model, ModelPrediction& prediction,
+                       const std::vector<PrintedCircle>& marks, const FeatureGrid& features,
+                       const SurfaceScene& scene, UpAxis fileUp, InstanceMode mode, int count) {
+  if (marks.empty()) return;
+  const Normalization& n = features.normalization;
+  std::vector<Eigen::Vector3f> centres;
+  for (const PrintedCircle& m : marks) centres.push_back(n.toNormalized(m.centre));
+  PredictedField& field = prediction.field;
+  for (std::size_t v = 0; v < field.voxels.size(); ++v) {
+    const Eigen::Vector3f c = voxelCenter(field.voxels[v], field.resolution);
+    float nearest = std::numeric_limits<float>::infinity();
+    for (const Eigen::Vector3f& m : centres) nearest = std::min(nearest, (c - m).norm());
+    field.distances[v] = std::min(field.distances[v], nearest);
+  }
+  if (mode != InstanceMode::Auto) {
+    prediction = predictionFromField(model, std::move(prediction.field), features, scene, fileUp,
+                                     mode, count);
+    return;
+  }
+  const ExtractionSettings& extraction = model.card().extraction;
+  std::vector<ExtractedPoint> points;
+  std::vector<SurfacePoint> surface;
+  for (std::size_t i = 0; i < marks.size(); ++i) {
+    points.push_back({centres[i], 0.0f, marks[i].support});
+    surface.push_back(projectToSurface(centres[i], n, scene, fileUp));
+  }
+  if (model.card().type != "heatsource") {
+    for (std::size_t i = 0; i < prediction.points.size(); ++i) {
+      const Eigen::Vector3f& p = prediction.points[i].position;
+      const bool nearMark = std::any_of(
+          centres.begin(), centres.end(),
+          [&](const Eigen::Vector3f& m) { return (p - m).norm() < extraction.nmsRadius; });
+      if (nearMark) continue;
+      points.push_back(prediction.points[i]);
+      surface.push_back(prediction.surface[i]);
+    }
+  }
+  prediction.points = std::move(points);
+  prediction.surface = std::move(surface);
+}
+
+}  // namespace sagrid

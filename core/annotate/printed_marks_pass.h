@@ -1,0 +1,29 @@
+// The texture pass: circles printed on a stove's top (core/features/printed_marks.h) become points
+// of the model whose type they stand for — a cooking zone a heat source, a touch symbol outside
+// the zones a toggle button — for glass hobs whose zones and controls have no geometry the network
+// could find. The model's field takes the distance to the nearest mark where that is smaller (so
+// the paper's argmin and a known count see them too); the automatic count takes every mark as a
+// point, zones instead of the model's own heat-source points, symbols beside the model's toggle
+// points that lie beyond its suppression radius of every symbol.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "core/annotate/annotate.h"
+#include "core/features/printed_marks.h"
+
+namespace sagrid {
+
+// The marks that stand for `type` on an object of `category`; empty when none do.
+const std::vector<PrintedCircle>& printedMarksFor(const PrintedMarks& marks,
+                                                  const std::string& category,
+                                                  const std::string& type);
+
+// Applies the marks (as above) to a prediction `model` made with `mode` (and `count`); unchanged
+// when `marks` is empty.
+void applyPrintedMarks(const model::AffordanceModel& model, ModelPrediction& prediction,
+                       const std::vector<PrintedCircle>& marks, const FeatureGrid& features,
+                       const SurfaceScene& scene, UpAxis fileUp, InstanceMode mode, int count = 1);
+
+}  // namespace sagrid

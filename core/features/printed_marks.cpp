@@ -1,0 +1,301 @@
+#include "core/features/printed_marks.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "core/mesh/mesh.h"
+
+namespace sagrid {
+
+namespace {
+
+constexpr float kPi = 3.14159265358979f;
+
+float luminance(const Eigen::Vector3f& rgb) {
+  return 0.2126f * rgb.x() + 0.7152f * rgb.y() + 0.0722f * rgb.z();
+}
+
+// The textured tops seen from above: luminance and height per pixel, and which pixels a top covers.
+struct TopRaster {
+  int width = 0, height = 0;
+  float pixel = 0;  // mesh units
+  Eigen::Vector2f origin = Eigen::Vector2f::Zero();
+  std::vector<float> lum, z;
+  std::vector<char> covered;
+
+  std::size_t at(int x, int y) const { return static_cast<std::size_t>(y) * width + x; }
+  Eigen::Vector2f centreOf(float x, float y) const {
+    return origin + pixel * Eigen::Vector2f(x + 0.5f, y + 0.5f);
+  }
+};
+
+bool isTexturedTop(const Mesh& mesh, std::size_t t, float minUpNormal) {
+  if (mesh.uvs.empty() || mesh.triangleMaterials.empty()) return false;
+  const int m = mesh.triangleMaterials[t];
+  if (m < 0 || m >= static_cast<int>(mesh.materials.size()) || mesh.materials[m].texture < 0)
+    return false;
+  const Eigen::Vector3i& tri = mesh.triangles[t];
+  const Eigen::Vector3f n = (mesh.positions[tri[1]] - mesh.positions[tri[0]])
+                                .cross(mesh.positions[tri[2]] - mesh.positions[tri[0]]);
+  const float length = n.norm();
+  return length > 0 && n.z() >= minUpNormal * length;
+}
+
+TopRaster rasterizeTops(const Mesh& mesh, const std::vector<std::size_t>& tops, int pixels) {
+  Eigen::AlignedBox2f box;
+  for (std::size_t t : tops)
+    for (int k = 0; k < 3; ++k) box.extend(mesh.positions[mesh.triangles[t][k]].head<2>());
+  TopRaster r;
+  const float extent = box.sizes().maxCoeff();
+  if (!(extent > 0)) return r;
+  r.pixel = extent / static_cast<float>(pixels);
+  r.origin = box.min();
+  r.width = static_cast<int>(std::ceil(box.sizes().x() / r.pixel)) + 1;
+  r.height = static_cast<int>(std::ceil(box.sizes().y() / r.pixel)) + 1;
+  const std::size_t count = static_cast<std::size_t>(r.width) * r.height;
+  r.lum.assign(count, 0.0f);
+  r.z.assign(count, -std::numeric_limits<float>::infinity());
+  r.covered.assign(count, 0);
+  for (std::size_t t : tops) {
+    const Eigen::Vector3i& tri = mesh.triangles[t];
+    const Eigen::Vector3f& a = mesh.positions[tri[0]];
+    const Eigen::Vector3f& b = mesh.positions[tri[1]];
+    const Eigen::Vector3f& c = mesh.positions[tri[2]];
+    const Eigen::Vector2f e1 = (b - a).head<2>(), e2 = (c - a).head<2>();
+    const float det = e1.x() * e2.y() - e1.y() * e2.x();
+    if (std::abs(det) < 1e-12f) continue;
+    Eigen::AlignedBox2f tb;
+    for (const auto* p : {&a, &b, &c}) tb.extend(p->head<2>());
+    const int x0 = std::max(0, static_cast<int>((tb.min().x() - r.origin.x()) / r.pixel));
+    const int x1 = std::min(r.width - 1, static_cast<int>((tb.max().x() - r.origin.x()) / r.pixel));
+    const int y0 = std::max(0, static_cast<int>((tb.min().y() - r.origin.y()) / r.pixel));
+    const int y1 =
+        std::min(r.height - 1, static_cast<int>((tb.max().y() - r.origin.y()) / r.pixel));
+    for (int y = y0; y <= y1; ++y) {
+      for (int x = x0; x <= x1; ++x) {
+        const Eigen::Vector2f d =
+            r.centreOf(static_cast<float>(x), static_cast<float>(y)) - a.head<2>();
+        const float u = (d.x() * e2.y() - d.y() * e2.x()) / det;
+        const float v = (e1.x() * d.y() - e1.y() * d.x()) / det;
+        if (u < -1e-4f || v < -1e-4f || u + v > 1.0001f) continue;
+        const float z = a.z() + u * (b.z() - a.z()) + v * (c.z() - a.z());
+        const std::size_t i = r.at(x, y);
+        if (z <= r.z[i]) continue;
+        r.z[i] = z;
+        r.lum[i] = luminance(mesh.albedo(static_cast<int>(t), u, v));
+        r.covered[i] = 1;
+      }
+    }
+  }
+  return r;
+}
+
+// The raster averaged over factor x factor blocks; a block is covered when all its pixels are.
+TopRaster downsampled(const TopRaster& r, int factor) {
+  if (factor == 1) return r;
+  TopRaster d;
+  d.width = r.width / factor;
+  d.height = r.height / factor;
+  d.pixel = r.pixel * factor;
+  d.origin = r.origin;
+  const std::size_t count = static_cast<std::size_t>(d.width) * d.height;
+  d.lum.assign(count, 0.0f);
+  d.z.assign(count, 0.0f);
+  d.covered.assign(count, 0);
+  for (int y = 0; y < d.height; ++y) {
+    for (int x = 0; x < d.width; ++x) {
+      float sum = 0, zMax = -std::numeric_limits<float>::infinity();
+      bool all = true;
+      for (int dy = 0; dy < factor; ++dy)
+        for (int dx = 0; dx < factor; ++dx) {
+          const std::size_t i = r.at(x * factor + dx, y * factor + dy);
+          all = all && r.covered[i];
+          sum += r.lum[i];
+          zMax = std::max(zMax, r.z[i]);
+        }
+      const std::size_t o = d.at(x, y);
+      d.lum[o] = sum / static_cast<float>(factor * factor);
+      d.z[o] = zMax;
+      d.covered[o] = all;
+    }
+  }
+  return d;
+}
+
+struct Circle {
+  float x = 0, y = 0, radius = 0, support = 0;  // pixels of the raster searched
+};
+
+// Luminance edges of a raster: the gradient's unit direction where its step is large enough
+// (Sobel, all eight neighbours on a top), else zero.
+struct EdgeMap {
+  int width = 0, height = 0;
+  std::vector<Eigen::Vector2f> direction;
+  bool at(int x, int y, const Eigen::Vector2f& radial, float minAlignment) const {
+    if (x < 0 || y < 0 || x >= width || y >= height) return false;
+    const Eigen::Vector2f& d = direction[static_cast<std::size_t>(y) * width + x];
+    return d.squaredNorm() > 0 && std::abs(d.dot(radial)) >= minAlignment;
+  }
+};
+
+EdgeMap edgesOf(const TopRaster& r, float edgeStep) {
+  EdgeMap e;
+  e.width = r.width;
+  e.height = r.height;
+  e.direction.assign(static_cast<std::size_t>(r.width) * r.height, Eigen::Vector2f::Zero());
+  for (int y = 1; y + 1 < r.height; ++y) {
+    for (int x = 1; x + 1 < r.width; ++x) {
+      bool inside = true;
+      for (int dy = -1; dy <= 1 && inside; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) inside = inside && r.covered[r.at(x + dx, y + dy)];
+      if (!inside) continue;
+      auto l = [&](int dx, int dy) { return r.lum[r.at(x + dx, y + dy)]; };
+      const float gx = (l(1, -1) + 2 * l(1, 0) + l(1, 1) - l(-1, -1) - 2 * l(-1, 0) - l(-1, 1)) / 8;
+      const float gy = (l(-1, 1) + 2 * l(0, 1) + l(1, 1) - l(-1, -1) - 2 * l(0, -1) - l(1, -1)) / 8;
+      const float g = std::hypot(gx, gy);
+      if (g >= edgeStep) e.direction[r.at(x, y)] = Eigen::Vector2f(gx / g, gy / g);
+    }
+  }
+  return e;
+}
+
+// The share of the circle's circumference where an edge crosses it at right angles (within a
+// pixel of the circle, its gradient along the radius): how much of it is really drawn.
+float circumferenceSupport(const EdgeMap& edges, float cx, float cy, float radius) {
+  const int samples = std::max(24, static_cast<int>(2 * kPi * radius));
+  int hits = 0;
+  for (int s = 0; s < samples; ++s) {
+    const float a = 2 * kPi * static_cast<float>(s) / static_cast<float>(samples);
+    const Eigen::Vector2f radial(std::cos(a), std::sin(a));
+    bool hit = false;
+    for (float t : {0.0f, -1.0f, 1.0f}) {
+      const Eigen::Vector2f q = Eigen::Vector2f(cx, cy) + (radius + t) * radial;
+      hit = hit || edges.at(static_cast<int>(std::lround(q.x())),
+                            static_cast<int>(std::lround(q.y())), radial, 0.8f);
+    }
+    hits += hit;
+  }
+  return static_cast<float>(hits) / static_cast<float>(samples);
+}
+
+// Hough transform for circles of radius [rMin, rMax] pixels: every edge pixel votes at each
+// radius along and against its gradient; local maxima of the votes (3x3 pixels, radius +- 1) that
+// reach a third of the circumference are candidates, kept when edges really run around a share
+// `minSupport` of it, more than around the circle 5 pixels outside it (past a drawn line's other
+// edge). Concentric and overlapping circles are merged, best supported first.
+std::vector<Circle> houghCircles(const TopRaster& r, int rMin, int rMax, float edgeStep,
+                                 float minSupport) {
+  std::vector<Circle> out;
+  if (r.width < 3 || r.height < 3 || rMax < rMin || rMin < 1) return out;
+  const EdgeMap edges = edgesOf(r, edgeStep);
+  const int radii = rMax - rMin + 1;
+  const std::size_t plane = static_cast<std::size_t>(r.width) * r.height;
+  std::vector<float> votes(plane * radii, 0.0f);
+  for (int y = 0; y < r.height; ++y) {
+    for (int x = 0; x < r.width; ++x) {
+      const Eigen::Vector2f& d = edges.direction[r.at(x, y)];
+      if (d.squaredNorm() == 0) continue;
+      for (int k = 0; k < radii; ++k) {
+        const float rad = static_cast<float>(rMin + k);
+        for (float sign : {-1.0f, 1.0f}) {
+          const int cx = static_cast<int>(std::lround(x + sign * rad * d.x()));
+          const int cy = static_cast<int>(std::lround(y + sign * rad * d.y()));
+          if (cx < 0 || cy < 0 || cx >= r.width || cy >= r.height) continue;
+          votes[k * plane + r.at(cx, cy)] += 1.0f;
+        }
+      }
+    }
+  }
+  std::vector<Circle> candidates;
+  for (int k = 0; k < radii; ++k) {
+    const float rad = static_cast<float>(rMin + k);
+    const float needed = 2 * kPi * rad / 3;
+    for (int y = 1; y + 1 < r.height; ++y) {
+      for (int x = 1; x + 1 < r.width; ++x) {
+        const float v = votes[k * plane + r.at(x, y)];
+        if (v < 0.25f * needed) continue;
+        float sum = 0;
+        bool isMax = true;
+        for (int kk = std::max(0, k - 1); kk <= std::min(radii - 1, k + 1); ++kk)
+          for (int dy = -1; dy <= 1; ++dy)
+            for (int dx = -1; dx <= 1; ++dx) {
+              const float w = votes[kk * plane + r.at(x + dx, y + dy)];
+              sum += w;
+              if (w > v) isMax = false;
+            }
+        if (!isMax || sum < needed) continue;
+        // Where edges run everywhere (a noisy texture) they also cross the circle 5 pixels
+        // outside it (inside, a symbol has its icon): only the share beyond that clutter counts.
+        const float fx = static_cast<float>(x), fy = static_cast<float>(y);
+        const float clutter = circumferenceSupport(edges, fx, fy, rad + 5);
+        const float support = circumferenceSupport(edges, fx, fy, rad) - clutter;
+        if (support >= minSupport)
+          candidates.push_back({static_cast<float>(x), static_cast<float>(y), rad, support});
+      }
+    }
+  }
+  // Best supported first; of equal support the larger circle (a zone's outer ring).
+  std::stable_sort(candidates.begin(), candidates.end(), [](const Circle& a, const Circle& b) {
+    return a.support != b.support ? a.support > b.support : a.radius > b.radius;
+  });
+  for (const Circle& c : candidates) {
+    const bool merged = std::any_of(out.begin(), out.end(), [&](const Circle& o) {
+      return std::hypot(c.x - o.x, c.y - o.y) < 0.6f * std::max(c.radius, o.radius);
+    });
+    if (!merged) out.push_back(c);
+  }
+  return out;
+}
+
+PrintedCircle toMesh(const TopRaster& full, const TopRaster& searched, const Circle& c) {
+  PrintedCircle p;
+  const Eigen::Vector2f xy = searched.centreOf(c.x, c.y);
+  const int fx =
+      std::clamp(static_cast<int>((xy.x() - full.origin.x()) / full.pixel), 0, full.width - 1);
+  const int fy =
+      std::clamp(static_cast<int>((xy.y() - full.origin.y()) / full.pixel), 0, full.height - 1);
+  p.centre = Eigen::Vector3f(xy.x(), xy.y(), full.z[full.at(fx, fy)]);
+  p.radius = c.radius * searched.pixel;
+  p.support = c.support;
+  return p;
+}
+
+}  // namespace
+
+PrintedMarks findPrintedMarks(const Mesh& mesh, const PrintedMarkSettings& settings) {
+  PrintedMarks marks;
+  std::vector<std::size_t> tops;
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
+    if (isTexturedTop(mesh, t, settings.minUpNormal)) tops.push_back(t);
+  if (tops.empty()) return marks;
+  const TopRaster full = rasterizeTops(mesh, tops, settings.pixels);
+  if (full.width == 0) return marks;
+  // Zones on a raster of a third of the resolution: their outlines are wide enough there.
+  const int zoneFactor = 3;
+  const TopRaster coarse = downsampled(full, zoneFactor);
+  const float coarsePixels = static_cast<float>(settings.pixels) / zoneFactor;
+  for (const Circle& c : houghCircles(coarse, static_cast<int>(settings.zoneMin * coarsePixels),
+                                      static_cast<int>(settings.zoneMax * coarsePixels),
+                                      settings.edgeStep, settings.zoneSupport)) {
+    const PrintedCircle zone = toMesh(full, coarse, c);
+    if (std::isfinite(zone.centre.z())) marks.zones.push_back(zone);
+  }
+  const float pixels = static_cast<float>(settings.pixels);
+  for (const Circle& c :
+       houghCircles(full, std::max(2, static_cast<int>(settings.symbolMin * pixels)),
+                    static_cast<int>(settings.symbolMax * pixels), settings.edgeStep,
+                    settings.symbolSupport)) {
+    const PrintedCircle symbol = toMesh(full, full, c);
+    if (!std::isfinite(symbol.centre.z())) continue;
+    // A dot or a ring inside a zone marks the zone, not a control.
+    const bool inZone =
+        std::any_of(marks.zones.begin(), marks.zones.end(), [&](const PrintedCircle& z) {
+          return (symbol.centre - z.centre).head<2>().norm() < 1.05f * z.radius;
+        });
+    if (!inZone) marks.symbols.push_back(symbol);
+  }
+  return marks;
+}
+
+}  // namespace sagrid

@@ -1,0 +1,42 @@
+// Circles printed on upward-facing textured surfaces: the cooking zones and touch symbols of glass
+// hobs, which exist only in the texture and give the network no geometry to find. The textured
+// tops are rasterized top-down (the highest surface wins), the luminance edges vote for circle
+// centres along their gradient (a Hough transform), and circles whose circumference the edges
+// support are kept, concentric ones merged. Sizes are shares of the printed area's largest extent,
+// so no units are needed: zones 5-30 % of it, symbols 0.6-3 %.
+#pragma once
+
+#include <Eigen/Core>
+#include <vector>
+
+namespace sagrid {
+
+struct Mesh;
+
+struct PrintedCircle {
+  Eigen::Vector3f centre = Eigen::Vector3f::Zero();  // mesh frame (z-up), on the printed surface
+  float radius = 0;                                  // mesh units
+  float support = 0;  // share of the circumference its edges cover, in [0, 1]
+};
+
+struct PrintedMarks {
+  std::vector<PrintedCircle> zones;    // cooking-zone sized, best supported first
+  std::vector<PrintedCircle> symbols;  // touch-symbol sized, outside every zone
+  bool empty() const { return zones.empty() && symbols.empty(); }
+};
+
+struct PrintedMarkSettings {
+  int pixels = 768;          // raster size along the printed area's largest extent
+  float minUpNormal = 0.9f;  // triangles whose normal's z is at least this are tops
+  float edgeStep = 0.06f;    // luminance step (Sobel, per pixel) that makes an edge
+  // Circumference share a circle's edges must cover: lettering has letters nearly as round as
+  // touch symbols, so those must be drawn closed.
+  float zoneSupport = 0.7f, symbolSupport = 0.9f;
+  float zoneMin = 0.05f, zoneMax = 0.3f;        // zone radius / largest extent
+  float symbolMin = 0.006f, symbolMax = 0.03f;  // symbol radius / largest extent
+};
+
+// Empty for meshes without textured upward-facing triangles (the common case, and cheap).
+PrintedMarks findPrintedMarks(const Mesh& mesh, const PrintedMarkSettings& settings = {});
+
+}  // namespace sagrid
