@@ -1,9 +1,12 @@
 // `sagrid info MESH [--up y|z] [--resolution N] [--json]`: what SAGrid sees in a mesh file.
 #include <CLI/CLI.hpp>
 
+#include <cstdio>
 #include <iostream>
 
 #include "app/command_registry.h"
+#include "core/features/printed_marks.h"
+#include "core/mesh/mesh_import.h"
 #include "core/mesh/mesh_summary.h"
 
 namespace {
@@ -15,7 +18,7 @@ void setupInfo(CLI::App& root) {
   struct Options {
     std::string mesh, up;
     int resolution = sagrid::kDefaultGridResolution;
-    bool json = false;
+    bool json = false, marks = false;
   };
   auto o = std::make_shared<Options>();
   cmd->add_option("mesh", o->mesh, "Mesh file (.obj .gltf .glb .fbx .dae .ply .stl)")->required();
@@ -28,11 +31,28 @@ void setupInfo(CLI::App& root) {
   cmd->add_option("--resolution", o->resolution, "Grid resolution N for the occupancy count (N^3)")
       ->check(CLI::Range(1, 1024));
   cmd->add_flag("--json", o->json, "Print the report as one JSON object");
+  cmd->add_flag("--printed-marks", o->marks,
+                "Also list the circles printed on upward textured surfaces that the texture pass "
+                "reads (cooking zones, touch symbols), in the file's frame");
   cmd->callback([o] {
     const auto summary = sagrid::summarizeMesh(o->mesh, sagrid::ImportOptions(sagrid::parseUpAxis(o->up), /*detect=*/true),
                                                o->resolution);
     if (o->json) std::cout << sagrid::summaryJson(summary).dump(2) << "\n";
     else std::cout << sagrid::formatSummary(summary);
+    if (!o->marks) return;
+    const sagrid::ImportOptions import(summary.fileUp, /*detect=*/false);
+    const sagrid::Mesh mesh = sagrid::importMesh(o->mesh, import);
+    const sagrid::PrintedMarks marks = sagrid::findPrintedMarks(mesh);
+    auto list = [&](const char* kind, const std::vector<sagrid::PrintedCircle>& circles) {
+      std::printf("printed %s: %zu\n", kind, circles.size());
+      for (const auto& c : circles) {
+        const Eigen::Vector3f p = sagrid::zUpToFile(c.centre, mesh.fileUp);
+        std::printf("  centre (%g, %g, %g)  radius %g  support %.2f\n", p.x(), p.y(), p.z(), c.radius,
+                    c.support);
+      }
+    };
+    list("zones", marks.zones);
+    list("symbols", marks.symbols);
   });
 }
 
