@@ -10,6 +10,7 @@
 #include "core/annotate/annotate.h"
 #include "core/dataset/dataset.h"
 #include "core/features/feature_grid.h"
+#include "core/features/printed_marks.h"
 #include "core/generate/dataset_generator.h"
 #include "core/geometry/surface_scene.h"
 #include "core/mesh/mesh_import.h"
@@ -65,7 +66,8 @@ BENCHMARK(BM_FourModelsAndExtraction)
 
 // `annotate` of the dense LIBERO flat stove (no feature cache): bit 1 = up axis detected from the
 // geometry (else given), bit 2 = category decided by the models folder's classifier (else given),
-// bit 4 = symmetry averaging over 8 copies, bit 8 = coarse-to-fine second pass.
+// bit 4 = symmetry averaging over 8 copies, bit 8 = coarse-to-fine second pass, bit 16 = the
+// texture pass (printed zones and symbols; this mesh has no texture, so it costs the scan).
 void BM_AnnotateDenseEndToEnd(benchmark::State& state) {
   Fixture& f = fixture();
   const fs::path mesh = sagrid::bench::denseCopy(2);
@@ -76,6 +78,7 @@ void BM_AnnotateDenseEndToEnd(benchmark::State& state) {
   if (!(additions & 2)) options.category = "stove";
   options.symmetries = additions & 4 ? 8 : 1;
   options.coarseToFine = (additions & 8) != 0;
+  options.printedMarks = (additions & 16) != 0;
   const fs::path out = sagrid::bench::benchDir() / "annotate-out";
   for (auto _ : state)
     benchmark::DoNotOptimize(
@@ -83,7 +86,8 @@ void BM_AnnotateDenseEndToEnd(benchmark::State& state) {
   state.SetLabel(std::string(additions & 1 ? "up detected" : "up given") +
                  (additions & 2 ? ", category classified" : ", category given") +
                  (additions & 4 ? ", 8 symmetries" : ", 1 copy") +
-                 (additions & 8 ? ", coarse-to-fine" : ""));
+                 (additions & 8 ? ", coarse-to-fine" : "") +
+                 (additions & 16 ? ", texture pass" : ""));
 }
 BENCHMARK(BM_AnnotateDenseEndToEnd)
     ->Arg(0)
@@ -93,8 +97,25 @@ BENCHMARK(BM_AnnotateDenseEndToEnd)
     ->Arg(7)
     ->Arg(8)
     ->Arg(15)
+    ->Arg(16)
+    ->Arg(31)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime()
     ->Iterations(2);
+
+// The texture pass alone on a generated glass hob whose zones and touch symbols are printed
+// (a 1024-pixel texture): raster, edges, Hough votes and verification.
+void BM_PrintedMarksGlassHob(benchmark::State& state) {
+  const sagrid::Mesh hob =
+      sagrid::gen::makeRawObject("stove", 51, static_cast<int>(state.range(0)), {0.0, 1.0}).mesh;
+  std::size_t marks = 0;
+  for (auto _ : state) {
+    const sagrid::PrintedMarks found = sagrid::findPrintedMarks(hob);
+    marks = found.zones.size() + found.symbols.size();
+    benchmark::DoNotOptimize(marks);
+  }
+  state.SetLabel(std::to_string(marks) + " marks");
+}
+BENCHMARK(BM_PrintedMarksGlassHob)->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond);
 
 }  // namespace
