@@ -8,19 +8,19 @@
 
 namespace sagrid {
 
-const std::vector<PrintedCircle>& printedMarksFor(const PrintedMarks& marks,
-                                                  const std::string& category,
-                                                  const std::string& type) {
-  static const std::vector<PrintedCircle> kNone;
-  if (category != "stove") return kNone;
-  if (type == "heatsource") return marks.zones;
-  if (type == "togglebutton") return marks.symbols;
-  return kNone;
+MarksForType printedMarksFor(const PrintedMarks& marks, const std::string& category,
+                             const std::string& type) {
+  if (category != "stove") return {};
+  if (type == "heatsource") return {marks.zones, true};
+  if (type == "togglebutton")
+    return {marks.symbols, !marks.zones.empty() && marks.symbols.size() >= 2};
+  return {};
 }
 
 void applyPrintedMarks(const model::AffordanceModel& model, ModelPrediction& prediction,
-                       const std::vector<PrintedCircle>& marks, const FeatureGrid& features,
+                       const MarksForType& forType, const FeatureGrid& features,
                        const SurfaceScene& scene, UpAxis fileUp, InstanceMode mode, int count) {
+  const std::vector<PrintedCircle>& marks = forType.circles;
   if (marks.empty()) return;
   const Normalization& n = features.normalization;
   std::vector<Eigen::Vector3f> centres;
@@ -44,7 +44,7 @@ void applyPrintedMarks(const model::AffordanceModel& model, ModelPrediction& pre
     points.push_back({centres[i], 0.0f, marks[i].support});
     surface.push_back(projectToSurface(centres[i], n, scene, fileUp));
   }
-  if (model.card().type != "heatsource") {
+  if (!forType.replaceModelPoints) {
     for (std::size_t i = 0; i < prediction.points.size(); ++i) {
       const Eigen::Vector3f& p = prediction.points[i].position;
       const bool nearMark = std::any_of(

@@ -3,8 +3,9 @@
 // the zones a toggle button — for glass hobs whose zones and controls have no geometry the network
 // could find. The model's field takes the distance to the nearest mark where that is smaller (so
 // the paper's argmin and a known count see them too); the automatic count takes every mark as a
-// point, zones instead of the model's own heat-source points, symbols beside the model's toggle
-// points that lie beyond its suppression radius of every symbol.
+// point, zones instead of the model's own heat-source points; symbols instead of the model's
+// toggle points on a printed hob (zones and at least two symbols: a touch panel), else beside
+// those of them that lie beyond the model's suppression radius of every symbol.
 #pragma once
 
 #include <string>
@@ -15,15 +16,19 @@
 
 namespace sagrid {
 
-// The marks that stand for `type` on an object of `category`; empty when none do.
-const std::vector<PrintedCircle>& printedMarksFor(const PrintedMarks& marks,
-                                                  const std::string& category,
-                                                  const std::string& type);
+struct MarksForType {
+  std::vector<PrintedCircle> circles;  // empty when no mark stands for the type
+  bool replaceModelPoints = false;     // the automatic count keeps only the marks
+};
+
+// The marks that stand for `type` on an object of `category`.
+MarksForType printedMarksFor(const PrintedMarks& marks, const std::string& category,
+                             const std::string& type);
 
 // Applies the marks (as above) to a prediction `model` made with `mode` (and `count`); unchanged
-// when `marks` is empty.
+// when there are none.
 void applyPrintedMarks(const model::AffordanceModel& model, ModelPrediction& prediction,
-                       const std::vector<PrintedCircle>& marks, const FeatureGrid& features,
+                       const MarksForType& marks, const FeatureGrid& features,
                        const SurfaceScene& scene, UpAxis fileUp, InstanceMode mode, int count = 1);
 
 }  // namespace sagrid

@@ -42,18 +42,27 @@ struct Scene {
 
 TEST(PrintedMarksPass, ZonesStandForStoveHeatSourcesAndSymbolsForStoveToggles) {
   const Hob hob;
-  EXPECT_EQ(printedMarksFor(hob.marks, "stove", "heatsource").size(), 2u);
-  EXPECT_EQ(printedMarksFor(hob.marks, "stove", "togglebutton").size(), 1u);
-  EXPECT_TRUE(printedMarksFor(hob.marks, "sink", "togglebutton").empty());
-  EXPECT_TRUE(printedMarksFor(hob.marks, "stove", "fluidsource").empty());
+  EXPECT_EQ(printedMarksFor(hob.marks, "stove", "heatsource").circles.size(), 2u);
+  EXPECT_TRUE(printedMarksFor(hob.marks, "stove", "heatsource").replaceModelPoints);
+  EXPECT_EQ(printedMarksFor(hob.marks, "stove", "togglebutton").circles.size(), 1u);
+  // One symbol is not a touch panel: the model's own toggle points stay beside it.
+  EXPECT_FALSE(printedMarksFor(hob.marks, "stove", "togglebutton").replaceModelPoints);
+  EXPECT_TRUE(printedMarksFor(hob.marks, "sink", "togglebutton").circles.empty());
+  EXPECT_TRUE(printedMarksFor(hob.marks, "stove", "fluidsource").circles.empty());
+  PrintedMarks panel = hob.marks;
+  panel.symbols.push_back({{0.05f, -0.2f, 0.006f}, 0.008f, 1.0f});
+  EXPECT_TRUE(printedMarksFor(panel, "stove", "togglebutton").replaceModelPoints);
+  panel.zones.clear();  // symbols without zones: perhaps lettering on a range with knobs
+  EXPECT_FALSE(printedMarksFor(panel, "stove", "togglebutton").replaceModelPoints);
 }
 
 TEST(PrintedMarksPass, ZonesReplaceTheHeatSourcePointsAndPullTheFieldToThem) {
   const Scene s;
   const auto model = test::untrainedModelFor("stove.heatsource", s.grid);
   ModelPrediction p = s.predicted(model, InstanceMode::Auto);
-  const auto& zones = printedMarksFor(s.hob.marks, "stove", "heatsource");
-  applyPrintedMarks(model, p, zones, s.grid, *s.scene, UpAxis::Z, InstanceMode::Auto);
+  const MarksForType forZones = printedMarksFor(s.hob.marks, "stove", "heatsource");
+  const auto& zones = forZones.circles;
+  applyPrintedMarks(model, p, forZones, s.grid, *s.scene, UpAxis::Z, InstanceMode::Auto);
   ASSERT_EQ(p.points.size(), 2u);
   ASSERT_EQ(p.surface.size(), 2u);
   for (std::size_t i = 0; i < 2; ++i) {
@@ -68,7 +77,7 @@ TEST(PrintedMarksPass, ZonesReplaceTheHeatSourcePointsAndPullTheFieldToThem) {
 
   // The paper's argmin reads the same field: a zone.
   ModelPrediction single = s.predicted(model, InstanceMode::Single);
-  applyPrintedMarks(model, single, zones, s.grid, *s.scene, UpAxis::Z, InstanceMode::Single);
+  applyPrintedMarks(model, single, forZones, s.grid, *s.scene, UpAxis::Z, InstanceMode::Single);
   ASSERT_EQ(single.surface.size(), 1u);
   const float toZone = std::min((single.surface[0].position - zones[0].centre).norm(),
                                 (single.surface[0].position - zones[1].centre).norm());
@@ -85,11 +94,23 @@ TEST(PrintedMarksPass, SymbolsJoinTheModelsTogglePointsThatLieElsewhere) {
               {n.toNormalized({0.29f, 0.2f, 0.006f}), 0.02f, 0.5f}};
   p.surface = {{{0.01f, -0.2f, 0.006f}, Eigen::Vector3f::UnitZ()},
                {{0.29f, 0.2f, 0.006f}, Eigen::Vector3f::UnitZ()}};
-  const auto& symbols = printedMarksFor(s.hob.marks, "stove", "togglebutton");
-  applyPrintedMarks(model, p, symbols, s.grid, *s.scene, UpAxis::Z, InstanceMode::Auto);
+  const MarksForType forSymbols = printedMarksFor(s.hob.marks, "stove", "togglebutton");
+  const auto& symbols = forSymbols.circles;
+  applyPrintedMarks(model, p, forSymbols, s.grid, *s.scene, UpAxis::Z, InstanceMode::Auto);
   ASSERT_EQ(p.surface.size(), 2u);
   EXPECT_LT((p.surface[0].position - symbols[0].centre).norm(), 1e-3f);
   EXPECT_LT((p.surface[1].position - Eigen::Vector3f(0.29f, 0.2f, 0.006f)).norm(), 1e-6f);
+
+  // A touch panel (zones and two or more symbols): the symbols alone.
+  PrintedMarks panel = s.hob.marks;
+  panel.symbols.push_back({{0.05f, -0.2f, 0.006f}, 0.008f, 1.0f});
+  ModelPrediction onPanel = s.predicted(model, InstanceMode::Auto);
+  onPanel.points = {{n.toNormalized({0.29f, 0.2f, 0.006f}), 0.02f, 0.5f}};
+  onPanel.surface = {{{0.29f, 0.2f, 0.006f}, Eigen::Vector3f::UnitZ()}};
+  applyPrintedMarks(model, onPanel, printedMarksFor(panel, "stove", "togglebutton"), s.grid,
+                    *s.scene, UpAxis::Z, InstanceMode::Auto);
+  ASSERT_EQ(onPanel.surface.size(), 2u);
+  for (const auto& p : onPanel.surface) EXPECT_LT(p.position.y(), -0.19f);
 
   ModelPrediction untouched = s.predicted(model, InstanceMode::Auto);
   const auto before = untouched.field.distances;
