@@ -129,7 +129,8 @@ AnnotationResult annotateMeshFile(const fs::path& meshFile, const std::string& i
     return r;
   }
   const auto categoryModels = models.forCategory(r.category);
-  const PrintedMarks printed = options.printedMarks ? findPrintedMarks(mesh) : PrintedMarks{};
+  const PrintedMarks printed =
+      options.printedMarks ? printedMarksOf(mesh, r.category) : PrintedMarks{};
   for (std::size_t m = 0; m < categoryModels.size(); ++m) {
     const auto* model = categoryModels[m];
     stage(0.7f + 0.3f * static_cast<float>(m) / static_cast<float>(categoryModels.size()),

@@ -8,9 +8,17 @@
 
 namespace sagrid {
 
+namespace {
+bool marksStandForItsTypes(const std::string& category) { return category == "stove"; }
+}  // namespace
+
+PrintedMarks printedMarksOf(const Mesh& mesh, const std::string& category) {
+  return marksStandForItsTypes(category) ? findPrintedMarks(mesh) : PrintedMarks{};
+}
+
 MarksForType printedMarksFor(const PrintedMarks& marks, const std::string& category,
                              const std::string& type) {
-  if (category != "stove") return {};
+  if (!marksStandForItsTypes(category)) return {};
   if (type == "heatsource") return {marks.zones, true};
   if (type == "togglebutton")
     return {marks.symbols, !marks.zones.empty() && marks.symbols.size() >= 2};

@@ -16,6 +16,10 @@
 
 namespace sagrid {
 
+// The printed marks of an object of `category`: searched only where some mark stands for one of
+// its types (stoves), else empty at no cost.
+PrintedMarks printedMarksOf(const Mesh& mesh, const std::string& category);
+
 struct MarksForType {
   std::vector<PrintedCircle> circles;  // empty when no mark stands for the type
   bool replaceModelPoints = false;     // the automatic count keeps only the marks

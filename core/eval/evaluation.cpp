@@ -87,7 +87,8 @@ EvaluationReport evaluateModels(const ModelSet& models, const EvaluationOptions&
       // Every other extraction mode below reads the same field.
       const auto categoryModels = models.forCategory(category);
       const auto t = Clock::now();
-      const PrintedMarks printed = options.printedMarks ? findPrintedMarks(mesh) : PrintedMarks{};
+      const PrintedMarks printed =
+          options.printedMarks ? printedMarksOf(mesh, category) : PrintedMarks{};
       std::vector<ModelPrediction> autoPredictions;
       for (const auto* model : categoryModels) {
         autoPredictions.push_back(predictionFromField(*model,

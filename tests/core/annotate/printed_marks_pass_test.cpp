@@ -4,6 +4,7 @@
 
 #include "core/features/feature_grid.h"
 #include "core/features/feature_pipeline.h"
+#include "core/generate/dataset_generator.h"
 #include "core/geometry/surface_scene.h"
 #include "support/analytic_meshes.h"
 #include "support/untrained_models.h"
@@ -54,6 +55,13 @@ TEST(PrintedMarksPass, ZonesStandForStoveHeatSourcesAndSymbolsForStoveToggles) {
   EXPECT_TRUE(printedMarksFor(panel, "stove", "togglebutton").replaceModelPoints);
   panel.zones.clear();  // symbols without zones: perhaps lettering on a range with knobs
   EXPECT_FALSE(printedMarksFor(panel, "stove", "togglebutton").replaceModelPoints);
+}
+
+TEST(PrintedMarksPass, OnlyStovesAreSearched) {
+  const Mesh glassHob = gen::makeRawObject("stove", 51, 0, {0.0, 1.0}).mesh;
+  EXPECT_FALSE(printedMarksOf(glassHob, "stove").empty());
+  EXPECT_TRUE(printedMarksOf(glassHob, "sink").empty());
+  EXPECT_TRUE(printedMarksOf(glassHob, "none").empty());
 }
 
 TEST(PrintedMarksPass, ZonesReplaceTheHeatSourcePointsAndPullTheFieldToThem) {
