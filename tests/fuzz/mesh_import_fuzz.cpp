@@ -1,9 +1,12 @@
 // Fuzz target: mesh import through the file code path (importMesh on a file named
-// input<SAGRID_FUZZ_EXTENSION>), built once per format: .obj, .ply, .stl, .glb, .fbx (ASCII and binary).
+// input<SAGRID_FUZZ_EXTENSION>), built once per format: .obj, .ply, .stl, .glb, .fbx (ASCII and
+// binary), then the texture pass's reading of whatever it imported (printed marks on textured
+// tops).
 #include <cstddef>
 #include <cstdint>
 
 #include "core/common/error.h"
+#include "core/features/printed_marks.h"
 #include "core/mesh/mesh_import.h"
 #include "fuzz_input_file.h"
 
@@ -15,7 +18,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const auto path = sagrid::fuzz::writeInputFile(data, size, "input" SAGRID_FUZZ_EXTENSION);
   try {
     const sagrid::Mesh mesh = sagrid::importMesh(path);
-    (void)mesh;
+    (void)sagrid::findPrintedMarks(mesh);
   } catch (const sagrid::Error&) {
     // A clear error is the right answer to a damaged mesh.
   }
