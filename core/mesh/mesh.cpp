@@ -16,6 +16,8 @@ Eigen::Vector3f texel(const Texture& t, int x, int y) {
 
 Eigen::Vector3f Texture::sample(const Eigen::Vector2f& uv) const {
   if (width <= 0 || height <= 0) return Eigen::Vector3f::Ones();
+  // A damaged file's UVs (NaN, or too large to turn into a texel index) sample nothing.
+  if (!uv.allFinite() || uv.cwiseAbs().maxCoeff() > 1e6f) return Eigen::Vector3f::Ones();
   const float fx = uv.x() * width - 0.5f;
   const float fy = (1.0f - uv.y()) * height - 0.5f;
   const float x0 = std::floor(fx), y0 = std::floor(fy);
