@@ -10,6 +10,9 @@ namespace sagrid {
 
 namespace {
 bool marksStandForItsTypes(const std::string& category) { return category == "stove"; }
+// More circles than a hob has zones or touch symbols are a pattern (fries in a fryer, polka
+// dots), not a hob.
+constexpr std::size_t kMostZones = 8, kMostSymbols = 24;
 }  // namespace
 
 PrintedMarks printedMarksOf(const Mesh& mesh, const std::string& category) {
@@ -18,10 +21,11 @@ PrintedMarks printedMarksOf(const Mesh& mesh, const std::string& category) {
 
 MarksForType printedMarksFor(const PrintedMarks& marks, const std::string& category,
                              const std::string& type) {
-  if (!marksStandForItsTypes(category)) return {};
+  if (!marksStandForItsTypes(category) || marks.zones.empty() || marks.zones.size() > kMostZones)
+    return {};
   if (type == "heatsource") return {marks.zones, true};
-  if (type == "togglebutton")
-    return {marks.symbols, !marks.zones.empty() && marks.symbols.size() >= 2};
+  if (type == "togglebutton" && marks.symbols.size() <= kMostSymbols)
+    return {marks.symbols, marks.symbols.size() >= 2};
   return {};
 }
 

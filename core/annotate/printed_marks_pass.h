@@ -4,8 +4,9 @@
 // could find. The model's field takes the distance to the nearest mark where that is smaller (so
 // the paper's argmin and a known count see them too); the automatic count takes every mark as a
 // point, zones instead of the model's own heat-source points; symbols instead of the model's
-// toggle points on a printed hob (zones and at least two symbols: a touch panel), else beside
-// those of them that lie beyond the model's suppression radius of every symbol.
+// toggle points when there are at least two (a touch panel), else beside those of them that lie
+// beyond the model's suppression radius of the symbol. Only a printed hob counts: 1-8 zones, and
+// symbols only beside zones and at most 24 of them (more circles are a pattern, not a hob).
 #pragma once
 
 #include <string>

@@ -53,8 +53,16 @@ TEST(PrintedMarksPass, ZonesStandForStoveHeatSourcesAndSymbolsForStoveToggles) {
   PrintedMarks panel = hob.marks;
   panel.symbols.push_back({{0.05f, -0.2f, 0.006f}, 0.008f, 1.0f});
   EXPECT_TRUE(printedMarksFor(panel, "stove", "togglebutton").replaceModelPoints);
-  panel.zones.clear();  // symbols without zones: perhaps lettering on a range with knobs
-  EXPECT_FALSE(printedMarksFor(panel, "stove", "togglebutton").replaceModelPoints);
+  // Symbols without zones (a keypad, lettering on a range with knobs) or a pattern of many
+  // circles (fries in a fryer) are not a printed hob.
+  PrintedMarks pattern = panel;
+  pattern.symbols.assign(25, panel.symbols.front());
+  EXPECT_TRUE(printedMarksFor(pattern, "stove", "togglebutton").circles.empty());
+  EXPECT_EQ(printedMarksFor(pattern, "stove", "heatsource").circles.size(), 2u);
+  pattern.zones.assign(9, panel.zones.front());
+  EXPECT_TRUE(printedMarksFor(pattern, "stove", "heatsource").circles.empty());
+  panel.zones.clear();
+  EXPECT_TRUE(printedMarksFor(panel, "stove", "togglebutton").circles.empty());
 }
 
 TEST(PrintedMarksPass, OnlyStovesAreSearched) {
