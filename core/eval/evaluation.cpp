@@ -130,7 +130,9 @@ EvaluationReport evaluateModels(const ModelSet& models, const EvaluationOptions&
                                       {"additions", edits.additions}};
         if (truth.empty()) continue;
         auto record = [&](Method method, const std::vector<Eigen::Vector3f>& predicted) {
-          acc[method][card.name].addSingle(nearestDistance(predicted.front(), truth, mpu));
+          const double single = nearestDistance(predicted.front(), truth, mpu);
+          acc[method][card.name].addSingle(single);
+          if (method == kArgmin) object["paper_error_m"][card.name] = single;
           acc[method][card.name].addMatch(matchPoints(predicted, truth, mpu));
           nlohmann::json points = nlohmann::json::array();
           for (const auto& p : predicted) points.push_back({p.x(), p.y(), p.z()});
@@ -198,6 +200,32 @@ EvaluationReport evaluateModels(const ModelSet& models, const EvaluationOptions&
   return report;
 }
 
+namespace {
+// One row per object: the paper's single-point error per model (cm) and the curator's edits.
+std::string perObjectMarkdown(const EvaluationReport& r) {
+  std::ostringstream md;
+  md << "\n## Per object (single-point error in cm, paper's metric; point edits)\n\n| Object |";
+  for (const auto& n : r.modelNames) md << ' ' << paperColumnName(n) << " |";
+  md << " Edits |\n|---|";
+  for (std::size_t i = 0; i <= r.modelNames.size(); ++i) md << "---|";
+  md << '\n';
+  for (const auto& object : r.perObject) {
+    md << "| " << object.value("id", std::string()) << " |";
+    for (const auto& n : r.modelNames) {
+      const auto errors = object.find("paper_error_m");
+      const bool has = errors != object.end() && errors->contains(n);
+      md << ' ' << reportCell(has ? 100 * errors->at(n).get<double>() : NAN, "%.1f") << " |";
+    }
+    int edits = 0;
+    if (const auto e = object.find("edits"); e != object.end())
+      for (const auto& [model, kinds] : e->items())
+        for (const auto& [kind, n] : kinds.items()) edits += n.get<int>();
+    md << ' ' << edits << " |\n";
+  }
+  return md.str();
+}
+}  // namespace
+
 std::string evaluationMarkdown(const EvaluationReport& r) {
   std::ostringstream md;
   md << "# SAGrid evaluation\n\nData: `" << r.dataDir.string() << "` — " << r.objects << " objects";
@@ -253,6 +281,7 @@ std::string evaluationMarkdown(const EvaluationReport& r) {
   };
   effortRow("all: ", r.effort);
   for (const auto& [category, e] : r.effortByCategory) effortRow(category + ": ", e);
+  md << perObjectMarkdown(r);
   md << "\n## Object confidence (" << (r.confidenceCalibrated ? "calibrated" : "uncalibrated")
      << "): does it predict \"right with one key\"?\n\n"
      << reliabilityMarkdown(r.reliability);

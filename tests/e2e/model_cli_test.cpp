@@ -3,7 +3,9 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <fstream>
+#include <iterator>
 #include <nlohmann/json.hpp>
 
 #include "core/generate/dataset_generator.h"
@@ -87,6 +89,28 @@ TEST(ModelCli, EvalAndFilterWriteTheirReports) {
   EXPECT_THAT(r.output, HasSubstr("Embedding search L2"));
   for (const char* f : {"eval.md", "eval.json", "eval.png"})
     EXPECT_TRUE(fs::exists(dir / "eval" / f)) << f;
+  // Per object: the paper's single-point error of each model is the distance of its argmin point
+  // to the nearest truth, and eval.md has a row for the object.
+  std::ifstream jsonFile(dir / "eval" / "eval.json");
+  const auto report = nlohmann::json::parse(jsonFile);
+  std::ifstream mdFile(dir / "eval" / "eval.md");
+  const std::string md((std::istreambuf_iterator<char>(mdFile)), std::istreambuf_iterator<char>());
+  EXPECT_THAT(md, HasSubstr("## Per object"));
+  int checked = 0;
+  for (const auto& object : report.at("per_object")) {
+    EXPECT_THAT(md, HasSubstr("| " + object.at("id").get<std::string>() + " |"));
+    for (const auto& [model, error] : object.at("paper_error_m").items()) {
+      const auto p = object.at("predictions").at(model).at("SAGrid argmin (paper)").at(0);
+      double nearest = 1e30;
+      for (const auto& t : object.at("truth").at(model))
+        nearest = std::min(nearest, std::hypot(p[0].get<double>() - t[0].get<double>(),
+                                               p[1].get<double>() - t[1].get<double>(),
+                                               p[2].get<double>() - t[2].get<double>()));
+      EXPECT_NEAR(error.get<double>(), nearest * object.at("meters_per_unit").get<double>(), 1e-6);
+      ++checked;
+    }
+  }
+  EXPECT_GE(checked, 8);  // 4 objects x 2 models of their category
 
   r = runSagrid("filter " + shellQuote((dir / "data").string()) + " --like stove --models " +
                 kModels);
