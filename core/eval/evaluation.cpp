@@ -201,14 +201,21 @@ EvaluationReport evaluateModels(const ModelSet& models, const EvaluationOptions&
 }
 
 namespace {
+// "| first | <model columns> | last |" and its separator row.
+void modelColumnsHeader(std::ostringstream& md, const char* first,
+                        const std::vector<std::string>& modelNames, const char* last) {
+  md << "| " << first << " |";
+  for (const auto& n : modelNames) md << ' ' << paperColumnName(n) << " |";
+  md << ' ' << last << " |\n|---|";
+  for (std::size_t i = 0; i <= modelNames.size(); ++i) md << "---|";
+  md << '\n';
+}
+
 // One row per object: the paper's single-point error per model (cm) and the curator's edits.
 std::string perObjectMarkdown(const EvaluationReport& r) {
   std::ostringstream md;
-  md << "\n## Per object (single-point error in cm, paper's metric; point edits)\n\n| Object |";
-  for (const auto& n : r.modelNames) md << ' ' << paperColumnName(n) << " |";
-  md << " Edits |\n|---|";
-  for (std::size_t i = 0; i <= r.modelNames.size(); ++i) md << "---|";
-  md << '\n';
+  md << "\n## Per object (single-point error in cm, paper's metric; point edits)\n\n";
+  modelColumnsHeader(md, "Object", r.modelNames, "Edits");
   for (const auto& object : r.perObject) {
     md << "| " << object.value("id", std::string()) << " |";
     for (const auto& n : r.modelNames) {
@@ -232,11 +239,8 @@ std::string evaluationMarkdown(const EvaluationReport& r) {
   if (r.failed) md << " (" << r.failed << " failed)";
   md << ". Models + point extraction: " << reportCell(r.modelMilliseconds, "%.0f")
      << " ms per object (features cached).\n\n";
-  md << "## Mean localization error (m), paper's metric (Table II form)\n\n| Method |";
-  for (const auto& n : r.modelNames) md << ' ' << paperColumnName(n) << " |";
-  md << " Avg |\n|---|";
-  for (std::size_t i = 0; i <= r.modelNames.size(); ++i) md << "---|";
-  md << '\n';
+  md << "## Mean localization error (m), paper's metric (Table II form)\n\n";
+  modelColumnsHeader(md, "Method", r.modelNames, "Avg");
   for (const auto& m : r.methods) {
     md << "| " << m.method << " |";
     double sum = 0;

@@ -571,6 +571,9 @@ void StoveBuilder::buildRaisedPlate(const Burner& br) {
 void StoveBuilder::buildGlassTop() {
   // The zones exist only in the texture of a flat glass sheet lying on the top.
   const Rect2& t = m_top;
+  auto toUv = [&t](const Vec2& p) {
+    return Vec2((p.x() - t.x0) / t.width(), (p.y() - t.y0) / t.depth());
+  };
   const float lift = 0.0006f;
   const bool slab = m_kind == "glass_slab";
   const int pixels = slab ? 1024 : 512;  // printed symbols are a few millimetres wide
@@ -580,7 +583,7 @@ void StoveBuilder::buildGlassTop() {
                                                       {0.75f, 0.75f, 0.75f}, {0.5f, 0.35f, 0.2f}});
   const bool filled = m_rng.chance(0.35);
   for (const Burner& br : m_burners) {
-    const Vec2 uv((br.center.x() - t.x0) / t.width(), (br.center.y() - t.y0) / t.depth());
+    const Vec2 uv = toUv(br.center);
     const float ru = br.radius / t.width();
     if (filled) painter.disc(uv, ru, 0.35f * zoneColor + Vec3::Constant(0.04f));
     painter.ring(uv, ru, 0.006f / t.width(), zoneColor);
@@ -597,8 +600,7 @@ void StoveBuilder::buildGlassTop() {
       for (int i = 0; i < dots; ++i) {
         const float a = 2 * kPi * i / dots;
         const Vec2 p = br.center + 0.85f * br.radius * Vec2(std::cos(a), std::sin(a));
-        painter.disc(Vec2((p.x() - t.x0) / t.width(), (p.y() - t.y0) / t.depth()),
-                     0.0015f / t.width(), zoneColor);
+        painter.disc(toUv(p), 0.0015f / t.width(), zoneColor);
       }
     }
     if (m_rng.chance(0.6)) {

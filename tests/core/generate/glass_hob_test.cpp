@@ -75,11 +75,11 @@ TEST(GlassHobs, ASlabHasNoBodyAndItsControlsArePrintedWhereItsPointsAre) {
       for (const GroundTruthPoint& h : hob.points)
         if (h.type == "heatsource") EXPECT_GT((t.position - h.position).norm(), 0.04f) << i;
     }
-    std::vector<float> xs;
+    std::vector<float> ys;
     for (const GroundTruthPoint& t : hob.points)
-      if (t.type == "togglebutton") xs.push_back(t.position.y());
-    if (std::adjacent_find(xs.begin(), xs.end(),
-                           [](float a, float b) { return std::abs(a - b) > 1e-4f; }) != xs.end())
+      if (t.type == "togglebutton") ys.push_back(t.position.y());
+    if (std::adjacent_find(ys.begin(), ys.end(),
+                           [](float a, float b) { return std::abs(a - b) > 1e-4f; }) != ys.end())
       ++withCluster;
   }
   EXPECT_GT(withCluster, 0) << "no control cluster in more than one row";
