@@ -57,7 +57,7 @@ void setupAnnotate(CLI::App& root) {
     int symmetries = sagrid::AnnotateOptions{}.symmetries;
     bool force = false;
     std::optional<bool> coarseToFine;
-    bool noPrintedMarks = false;
+    bool noPrintedMarks = false, noMirrorPairs = false;
     double timeLimit = 600;
   };
   auto o = std::make_shared<Options>();
@@ -101,6 +101,9 @@ void setupAnnotate(CLI::App& root) {
   cmd->add_flag("--no-printed-marks", o->noPrintedMarks,
                 "Switch the texture pass off: cooking zones and touch symbols printed on a "
                 "stove's top (glass hobs) are not taken as its heat-source and toggle points");
+  cmd->add_flag("--no-mirror-pairs", o->noMirrorPairs,
+                "Switch the mirror-pair pass off: on a mirror-symmetric object the automatic count "
+                "does not add the twin of a point whose neighbourhood has the same shape there");
   cmd->add_option("--count", o->counts,
                   "Known instance count per type, e.g. --count heatsource=5 (k-means)");
   cmd->callback([o] {
@@ -116,6 +119,7 @@ void setupAnnotate(CLI::App& root) {
     options.symmetries = o->symmetries;
     options.coarseToFine = o->coarseToFine;
     options.printedMarks = !o->noPrintedMarks;
+    options.mirrorPairs = !o->noMirrorPairs;
     // Models, their feature options and confidence map load in the worker process.
     options.features.cacheDir = o->cache;
     if (!o->up.empty()) options.features.up = sagrid::parseUpAxis(o->up);

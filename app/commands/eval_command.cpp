@@ -40,7 +40,7 @@ void setupEval(CLI::App& root) {
     int epochs = 0;
     int symmetries = sagrid::EvaluationOptions{}.symmetries;
     std::optional<bool> coarseToFine;
-    bool noPrintedMarks = false;
+    bool noPrintedMarks = false, noMirrorPairs = false;
     double nearWeight = sagrid::SweepOptions{}.nearWeight;
   };
   auto o = std::make_shared<Options>();
@@ -66,6 +66,8 @@ void setupEval(CLI::App& root) {
       " (default: as each model's card says, point_extraction.coarse_to_fine)");
   cmd->add_flag("--no-printed-marks", o->noPrintedMarks,
                 "Switch the texture pass off (printed zones and touch symbols), as annotate");
+  cmd->add_flag("--no-mirror-pairs", o->noMirrorPairs,
+                "Switch the mirror-pair pass of the automatic count off, as annotate");
   cmd->add_option("--fit-counts", o->fitCounts,
                   "Refit each model's automatic instance count on the fields of this data and "
                   "write a models folder DIR with the refitted cards (eval it with --models DIR)");
@@ -123,6 +125,7 @@ void setupEval(CLI::App& root) {
     options.keepFields = !o->fitCounts.empty();
     options.coarseToFine = o->coarseToFine;
     options.printedMarks = !o->noPrintedMarks;
+    options.mirrorPairs = !o->noMirrorPairs;
     const auto report = sagrid::evaluateModels(models, options);
     if (!o->fitCounts.empty()) {
       const auto fits =

@@ -3,6 +3,7 @@
 #include <chrono>
 
 #include "core/annotate/coarse_to_fine.h"
+#include "core/annotate/mirror_pairs_pass.h"
 #include "core/annotate/printed_marks_pass.h"
 #include "core/annotate/symmetry_averaging.h"
 #include "core/common/error.h"
@@ -147,6 +148,8 @@ AnnotationResult annotateMeshFile(const fs::path& meshFile, const std::string& i
     if (options.coarseToFine.value_or(model->card().extraction.coarseToFine))
       p = refineInCrop(*model, p, mesh, features, scene, featureOptions, mode, n,
                        options.symmetries);
+    if (options.mirrorPairs && mode == InstanceMode::Auto)
+      applyMirrorPairs(p, features, scene, mesh.fileUp, model->card().extraction);
     applyPrintedMarks(*model, p, printedMarksFor(printed, r.category, p.type), features, scene,
                       mesh.fileUp, mode, n);
     for (std::size_t i = 0; i < p.points.size(); ++i) {

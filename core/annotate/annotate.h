@@ -73,6 +73,9 @@ struct AnnotateOptions {
   // The texture pass (core/annotate/printed_marks_pass.h): zones and touch symbols printed on a
   // stove's top become its heat-source and toggle points.
   bool printedMarks = true;
+  // The mirror-pair pass of the automatic count (core/annotate/mirror_pairs_pass.h): on a
+  // mirror-symmetric object, the twin of a point whose neighbourhood has the same shape there.
+  bool mirrorPairs = true;
   // Maps the least-sure point to P(right with one key) (core/annotate/object_confidence.h);
   // unfitted = the uncalibrated map.
   ConfidenceCalibration confidence;

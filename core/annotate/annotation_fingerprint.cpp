@@ -29,6 +29,7 @@ std::string annotateOptionsHash(const AnnotateOptions& options) {
       {"counts", options.counts},
       {"symmetries", options.symmetries},
       {"printed_marks", options.printedMarks},
+      {"mirror_pairs", options.mirrorPairs},
       {"coarse_to_fine",
        options.coarseToFine ? nlohmann::json(*options.coarseToFine) : nlohmann::json("card")},
       {"features", featureConfigHash(options.features)},

@@ -111,6 +111,7 @@ CategoryEvaluation evaluateCategories(
     auto& g = ev.byGroup[s.group + " (" + truth + ")"];
     ++g.total, g.right += right;
     ++ev.confusion[truth][d.category];
+    if (!right) ev.misses.push_back({s.id, s.group, truth, d.category, d.score, d.best});
   }
   return ev;
 }
@@ -141,6 +142,15 @@ std::string categoryEvaluationTable(const CategoryEvaluation& ev) {
     std::snprintf(line, sizeof(line), "| %s | %d | %d | %d |\n", truth.c_str(), get("stove"),
                   get("sink"), get("none"));
     out << line;
+  }
+  if (!ev.misses.empty()) {
+    out << "\n| wrong: object | group | true | predicted | best known category (probability) |\n"
+           "|---|---|---|---|---|\n";
+    for (const auto& m : ev.misses) {
+      std::snprintf(line, sizeof(line), "| %s | %s | %s | %s | %s (%.2f) |\n", m.id.c_str(),
+                    m.group.c_str(), m.truth.c_str(), m.predicted.c_str(), m.best.c_str(), m.score);
+      out << line;
+    }
   }
   return out.str();
 }

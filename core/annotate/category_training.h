@@ -47,6 +47,13 @@ struct CategoryEvaluation {
   // By sample group (dataset folder / distractor kind) and true class.
   std::map<std::string, Count> byGroup;
   std::map<std::string, std::map<std::string, int>> confusion;  // true -> predicted -> count
+  // Every object decided wrongly, in sample order (what a curator looks at first).
+  struct Miss {
+    std::string id, group, truth, predicted;
+    double score = 0;  // the decision's score (probability of its best known category)
+    std::string best;  // that best known category
+  };
+  std::vector<Miss> misses;
 };
 
 // `decide` is the classifier under test (a CategoryClassifier at a threshold, or ModelSet's
@@ -55,8 +62,8 @@ CategoryEvaluation evaluateCategories(
     const std::function<CategoryDecision(const std::vector<float>&)>& decide,
     const std::vector<CategorySample>& samples);
 
-// Markdown: the per-class table (stoves right, sinks right, distractors rejected), per group and
-// the confusion matrix.
+// Markdown: the per-class table (stoves right, sinks right, distractors rejected), per group, the
+// confusion matrix and the list of objects decided wrongly.
 std::string categoryEvaluationTable(const CategoryEvaluation& evaluation);
 
 }  // namespace sagrid

@@ -7,6 +7,7 @@
 
 #include "core/annotate/annotate.h"
 #include "core/annotate/coarse_to_fine.h"
+#include "core/annotate/mirror_pairs_pass.h"
 #include "core/annotate/printed_marks_pass.h"
 #include "core/common/atomic_file.h"
 #include "core/common/error.h"
@@ -98,6 +99,9 @@ EvaluationReport evaluateModels(const ModelSet& models, const EvaluationOptions&
           autoPredictions.back() =
               refineInCrop(*model, autoPredictions.back(), mesh, grid, scene, objectFeatures,
                            InstanceMode::Auto, 1, options.symmetries);
+        if (options.mirrorPairs)
+          applyMirrorPairs(autoPredictions.back(), grid, scene, mesh.fileUp,
+                           model->card().extraction);
         applyPrintedMarks(*model, autoPredictions.back(),
                           printedMarksFor(printed, category, model->card().type), grid, scene,
                           mesh.fileUp, InstanceMode::Auto);

@@ -29,6 +29,7 @@ struct EvaluationOptions {
   int symmetries = 8;             // test-time augmentation, as annotate (AnnotateOptions)
   std::optional<bool> coarseToFine;  // second pass on a crop, as annotate (AnnotateOptions)
   bool printedMarks = true;          // the texture pass, as annotate (AnnotateOptions)
+  bool mirrorPairs = true;           // the mirror-pair pass, as annotate (AnnotateOptions)
   ConfidenceCalibration confidence;  // object confidence map (the models folder's, or unfitted)
   std::function<void(std::size_t, std::size_t, const std::string&)> onProgress;
   // Keep every model's field and ground truth (normalized frame) in the report, for refitting the

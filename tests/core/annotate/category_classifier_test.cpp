@@ -165,6 +165,36 @@ TEST(CategoryClassifier, RejectsGeneratedDistractors) {
       << categoryEvaluationTable(ev);
 }
 
+TEST(CategoryEvaluation, ListsTheObjectsDecidedWrongly) {
+  // A rule by the descriptor's first value: > 0.5 stove, else rejected (best: sink).
+  auto decide = [](const std::vector<float>& d) {
+    CategoryDecision r;
+    r.best = d[0] > 0.5f ? "stove" : "sink";
+    r.score = d[0];
+    r.rejected = d[0] <= 0.5f;
+    r.category = r.rejected ? std::string(kRejectedCategory) : r.best;
+    return r;
+  };
+  const std::vector<CategorySample> samples = {{"gas_stove", "stove", "real", {0.9f}},
+                                               {"camping_stove", "stove", "real", {0.2f}},
+                                               {"oven", "none", "real", {0.7f}},
+                                               {"fridge", "none", "real", {0.1f}}};
+  const auto ev = evaluateCategories(decide, samples);
+  ASSERT_EQ(ev.misses.size(), 2u);
+  EXPECT_EQ(ev.misses[0].id, "camping_stove");
+  EXPECT_EQ(ev.misses[0].predicted, "none");
+  EXPECT_EQ(ev.misses[0].best, "sink");
+  EXPECT_EQ(ev.misses[1].id, "oven");
+  EXPECT_EQ(ev.misses[1].truth, "none");
+  EXPECT_EQ(ev.misses[1].predicted, "stove");
+  const std::string table = categoryEvaluationTable(ev);
+  EXPECT_NE(table.find("| camping_stove | real | stove | none | sink (0.20) |"), std::string::npos)
+      << table;
+  EXPECT_NE(table.find("| oven | real | none | stove | stove (0.70) |"), std::string::npos)
+      << table;
+  EXPECT_EQ(table.find("gas_stove"), std::string::npos) << table;
+}
+
 TEST(CategoryClassifier, AnnotateWritesNoneAndNoPointsForARejectedObject) {
   // A distractor on disk, and models whose classifier rejects everything (threshold above any
   // probability): annotate must not ask any model for points.

@@ -1,0 +1,72 @@
+#include "core/annotate/mirror_pairs_pass.h"
+
+#include <gtest/gtest.h>
+
+#include <limits>
+
+#include "core/features/feature_grid.h"
+#include "core/features/feature_pipeline.h"
+#include "core/geometry/surface_scene.h"
+#include "support/analytic_meshes.h"
+#include "support/untrained_models.h"
+
+namespace sagrid {
+namespace {
+
+// A 1 m double-basin counter with a tap at x = -0.3 and one at x = +0.3 (4 x 4 x 20 cm).
+struct Counter {
+  Mesh mesh = test::box({-0.5f, -0.3f, 0.0f}, {0.5f, 0.3f, 0.05f});
+  Eigen::Vector3f left{-0.3f, 0.0f, 0.25f}, right{0.3f, 0.0f, 0.25f};  // tap tops, mesh frame
+  FeatureGrid grid;
+  std::unique_ptr<SurfaceScene> scene;
+  Counter() {
+    test::append(mesh, test::box({-0.32f, -0.02f, 0.05f}, {-0.28f, 0.02f, 0.25f}));
+    test::append(mesh, test::box({0.28f, -0.02f, 0.05f}, {0.32f, 0.02f, 0.25f}));
+    FeatureOptions options;
+    options.views = 12;
+    grid = computeFeatures(mesh, options);
+    scene = std::make_unique<SurfaceScene>(mesh);
+  }
+  Eigen::Vector3f normalized(const Eigen::Vector3f& p) const {
+    return grid.normalization.toNormalized(p);
+  }
+  // Field: distance to the left tap's top, and to the right one's plus `rightOffset`.
+  PredictedField field(float rightOffset) const {
+    PredictedField f;
+    f.resolution = grid.resolution;
+    f.voxels = grid.voxels;
+    for (const auto& v : grid.voxels) {
+      const Eigen::Vector3f c = voxelCenter(v, grid.resolution);
+      f.distances.push_back(
+          std::min((c - normalized(left)).norm(), (c - normalized(right)).norm() + rightOffset));
+    }
+    return f;
+  }
+};
+
+TEST(MirrorPairsPass, AddsTheTwinTapOnTheSurfaceAndKeepsTheModelsPoint) {
+  const Counter c;
+  const auto model = test::untrainedModelFor("sink.fluidsource", c.grid);
+  ExtractionSettings oneTap;
+  oneTap.maxDistance = 0.02f;  // the right tap's minimum (0.03 higher) is not counted
+  oneTap.nmsRadius = 0.08f;
+  ModelPrediction p = predictionFromField(model, c.field(0.03f), c.grid, *c.scene, UpAxis::Z,
+                                          InstanceMode::Auto, 1, &oneTap);
+  ASSERT_EQ(p.points.size(), 1u);
+  const SurfacePoint first = p.surface[0];
+  applyMirrorPairs(p, c.grid, *c.scene, UpAxis::Z, oneTap);
+  ASSERT_EQ(p.points.size(), 2u);
+  ASSERT_EQ(p.surface.size(), 2u);
+  EXPECT_EQ(p.surface[0].position, first.position);
+  EXPECT_LT((p.surface[0].position - c.left).norm(), 0.03f);
+  EXPECT_LT((p.surface[1].position - c.right).norm(), 0.03f);
+
+  // Switched off by the field: the right tap predicted far away.
+  ModelPrediction far = predictionFromField(model, c.field(0.3f), c.grid, *c.scene, UpAxis::Z,
+                                            InstanceMode::Auto, 1, &oneTap);
+  applyMirrorPairs(far, c.grid, *c.scene, UpAxis::Z, oneTap);
+  EXPECT_EQ(far.points.size(), 1u);
+}
+
+}  // namespace
+}  // namespace sagrid

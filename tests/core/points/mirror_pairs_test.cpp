@@ -1,0 +1,144 @@
+#include "core/points/mirror_pairs.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <limits>
+
+namespace sagrid {
+namespace {
+
+constexpr int kRes = 32;
+const float kVoxel = 1.0f / kRes;
+
+// A counter top (i 4..27, j 8..23, k 10) with a tap (a 2x2x3 column) at each given i along
+// j 12..13 above it: taps at i and 31 - i make it mirror-symmetric about the plane i + i' = 31.
+std::vector<VoxelIndex> counterWithTaps(const std::vector<int>& tapColumns) {
+  std::vector<VoxelIndex> voxels;
+  for (int i = 4; i <= 27; ++i)
+    for (int j = 8; j <= 23; ++j) voxels.push_back({i, j, 10});
+  for (int i : tapColumns)
+    for (int a = 0; a < 2; ++a)
+      for (int j = 12; j <= 13; ++j)
+        for (int k = 11; k <= 13; ++k) voxels.push_back({i + a, j, k});
+  return voxels;
+}
+
+// The tap whose column starts at i: the centre of its top.
+Eigen::Vector3f tapTop(int i) {
+  return 0.5f * (voxelCenter({i, 12, 13}, kRes) + voxelCenter({i + 1, 13, 13}, kRes));
+}
+
+// Field: distance to the nearest of `centres` plus that centre's offset.
+PredictedField fieldOf(const std::vector<VoxelIndex>& voxels,
+                       const std::vector<Eigen::Vector3f>& centres,
+                       const std::vector<float>& offsets) {
+  PredictedField f;
+  f.resolution = kRes;
+  f.voxels = voxels;
+  for (const auto& v : voxels) {
+    float best = std::numeric_limits<float>::infinity();
+    for (std::size_t c = 0; c < centres.size(); ++c)
+      best = std::min(best, (voxelCenter(v, kRes) - centres[c]).norm() + offsets[c]);
+    f.distances.push_back(best);
+  }
+  return f;
+}
+
+ExtractedPoint pointAt(const PredictedField& f, const Eigen::Vector3f& p) {
+  ExtractedPoint e;
+  e.position = p;
+  const auto at = voxelContaining(p, kRes);
+  for (std::size_t v = 0; v < f.voxels.size(); ++v)
+    if (f.voxels[v] == at) e.distance = f.distances[v];
+  e.confidence = 1.0f;
+  return e;
+}
+
+ExtractionSettings suppression(float radius) {
+  ExtractionSettings s;
+  s.nmsRadius = radius;
+  s.confidenceScale = 0.02f;
+  return s;
+}
+
+TEST(MirrorPairs, FindsThePlaneOfASymmetricObject) {
+  const auto plane = findMirrorPlane(counterWithTaps({7, 23}), kRes, 0.85f);
+  ASSERT_TRUE(plane.has_value());
+  EXPECT_EQ(plane->axis, 0);
+  EXPECT_EQ(plane->indexSum, 31);
+  EXPECT_FLOAT_EQ(plane->score, 1.0f);
+  EXPECT_NEAR(plane->coordinate(kRes), 0.0f, 1e-6f);  // the middle of i 4..27 on a 32 grid
+  const Eigen::Vector3f p = tapTop(7);
+  EXPECT_LT((plane->mirror(p, kRes) - tapTop(23)).norm(), 1e-5f);
+}
+
+TEST(MirrorPairs, FindsAPlaneOffTheBoundingBoxMiddle) {
+  // A shelf on one side widens the box: the symmetry stays where the taps are.
+  auto voxels = counterWithTaps({7, 23});
+  for (int i = 28; i <= 30; ++i) voxels.push_back({i, 15, 10});
+  const auto plane = findMirrorPlane(voxels, kRes, 0.85f);
+  ASSERT_TRUE(plane.has_value());
+  EXPECT_EQ(plane->axis, 0);
+  EXPECT_EQ(plane->indexSum, 31);
+}
+
+TEST(MirrorPairs, NoPlaneForAnAsymmetricObjectOrNoVoxels) {
+  std::vector<VoxelIndex> ell;
+  for (int i = 2; i < 30; ++i) ell.push_back({i, 2, 5});
+  for (int j = 3; j < 30; ++j) ell.push_back({2, j, 5});
+  EXPECT_FALSE(findMirrorPlane(ell, kRes, 0.85f).has_value());
+  EXPECT_FALSE(findMirrorPlane({}, kRes, 0.85f).has_value());
+}
+
+TEST(MirrorPairs, AddsTheTwinTapTheCountMissed) {
+  const auto voxels = counterWithTaps({7, 23});
+  // The field's minimum at the left tap is deep, at the right one shallow: the count keeps one.
+  const auto f = fieldOf(voxels, {tapTop(7), tapTop(23)}, {0.0f, 0.03f});
+  const auto points = completeMirrorPairs(f, {pointAt(f, tapTop(7))}, suppression(0.1f));
+  ASSERT_EQ(points.size(), 2u);
+  EXPECT_LT((points[0].position - tapTop(7)).norm(), 1e-6f);
+  EXPECT_LT((points[1].position - tapTop(23)).norm(), 1e-5f);
+  // The field's smallest value near the image: the offset plus the nearest voxel centre's
+  // distance to the tap's top (between four voxel centres).
+  EXPECT_GE(points[1].distance, 0.03f);
+  EXPECT_LE(points[1].distance, 0.03f + kVoxel);
+  EXPECT_NEAR(points[1].confidence, std::exp(-points[1].distance / 0.02f), 1e-5f);
+}
+
+TEST(MirrorPairs, NoTwinWhereTheShapeDiffers) {
+  // One tap on a symmetric counter: the object is still symmetric (the tap is small), but the
+  // tap's neighbourhood has nothing at its mirror image.
+  const auto voxels = counterWithTaps({7});
+  ASSERT_TRUE(findMirrorPlane(voxels, kRes, 0.85f).has_value());
+  const auto f = fieldOf(voxels, {tapTop(7), tapTop(23)}, {0.0f, 0.0f});
+  EXPECT_EQ(completeMirrorPairs(f, {pointAt(f, tapTop(7))}, suppression(0.1f)).size(), 1u);
+}
+
+TEST(MirrorPairs, NoTwinWhereTheFieldIsHigh) {
+  const auto voxels = counterWithTaps({7, 23});
+  const auto f = fieldOf(voxels, {tapTop(7), tapTop(23)}, {0.0f, 0.2f});
+  EXPECT_EQ(completeMirrorPairs(f, {pointAt(f, tapTop(7))}, suppression(0.1f)).size(), 1u);
+  MirrorPairSettings anyField;
+  anyField.maxDistanceAbovePoint = -1;
+  EXPECT_EQ(completeMirrorPairs(f, {pointAt(f, tapTop(7))}, suppression(0.1f), anyField).size(),
+            2u);
+}
+
+TEST(MirrorPairs, NoTwinWhenBothAreFoundOrThePointIsOnThePlane) {
+  const auto voxels = counterWithTaps({7, 23, 15});  // the middle tap covers i 15..16
+  const auto f = fieldOf(voxels, {tapTop(7), tapTop(23), tapTop(15)}, {0.0f, 0.0f, 0.0f});
+  const std::vector<ExtractedPoint> both{pointAt(f, tapTop(23)), pointAt(f, tapTop(7))};
+  EXPECT_EQ(completeMirrorPairs(f, both, suppression(0.1f)).size(), 2u);
+  const std::vector<ExtractedPoint> middle{pointAt(f, tapTop(15))};
+  EXPECT_EQ(completeMirrorPairs(f, middle, suppression(0.1f)).size(), 1u);
+}
+
+TEST(MirrorPairs, UnchangedWithoutPoints) {
+  const auto voxels = counterWithTaps({7, 23});
+  const auto f = fieldOf(voxels, {tapTop(7)}, {0.0f});
+  EXPECT_TRUE(completeMirrorPairs(f, {}, suppression(0.1f)).empty());
+}
+
+}  // namespace
+}  // namespace sagrid
