@@ -67,7 +67,8 @@ BENCHMARK(BM_FourModelsAndExtraction)
 // `annotate` of the dense LIBERO flat stove (no feature cache): bit 1 = up axis detected from the
 // geometry (else given), bit 2 = category decided by the models folder's classifier (else given),
 // bit 4 = symmetry averaging over 8 copies, bit 8 = coarse-to-fine second pass, bit 16 = the
-// texture pass (printed zones and symbols; this mesh has no texture, so it costs the scan).
+// texture pass (printed zones and symbols; this mesh has no texture, so it costs the scan), bit
+// 32 = the mirror-pair pass of the automatic count.
 void BM_AnnotateDenseEndToEnd(benchmark::State& state) {
   Fixture& f = fixture();
   const fs::path mesh = sagrid::bench::denseCopy(2);
@@ -79,15 +80,16 @@ void BM_AnnotateDenseEndToEnd(benchmark::State& state) {
   options.symmetries = additions & 4 ? 8 : 1;
   options.coarseToFine = (additions & 8) != 0;
   options.printedMarks = (additions & 16) != 0;
+  options.mirrorPairs = (additions & 32) != 0;
   const fs::path out = sagrid::bench::benchDir() / "annotate-out";
   for (auto _ : state)
     benchmark::DoNotOptimize(
         sagrid::annotateMeshFile(mesh, "flat_stove_dense", *f.models, options, out));
-  state.SetLabel(std::string(additions & 1 ? "up detected" : "up given") +
-                 (additions & 2 ? ", category classified" : ", category given") +
-                 (additions & 4 ? ", 8 symmetries" : ", 1 copy") +
-                 (additions & 8 ? ", coarse-to-fine" : "") +
-                 (additions & 16 ? ", texture pass" : ""));
+  state.SetLabel(
+      std::string(additions & 1 ? "up detected" : "up given") +
+      (additions & 2 ? ", category classified" : ", category given") +
+      (additions & 4 ? ", 8 symmetries" : ", 1 copy") + (additions & 8 ? ", coarse-to-fine" : "") +
+      (additions & 16 ? ", texture pass" : "") + (additions & 32 ? ", mirror pairs" : ""));
 }
 BENCHMARK(BM_AnnotateDenseEndToEnd)
     ->Arg(0)
@@ -99,6 +101,8 @@ BENCHMARK(BM_AnnotateDenseEndToEnd)
     ->Arg(15)
     ->Arg(16)
     ->Arg(31)
+    ->Arg(32)
+    ->Arg(63)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime()
     ->Iterations(2);
