@@ -13,13 +13,13 @@ constexpr int kOffsetSearch = 8;
 // Where the image's field is read: the smallest predicted distance within this many voxels.
 constexpr int kFieldRadius = 2;
 
-// Field index per voxel of the N^3 grid (-1 = empty).
+// Index into `voxels` per voxel of the N^3 grid (-1 = empty): occupancy and field lookups.
 class DenseField {
  public:
-  DenseField(const PredictedField& field)
-      : m_n(field.resolution), m_index(static_cast<std::size_t>(m_n) * m_n * m_n, -1) {
-    for (std::size_t v = 0; v < field.voxels.size(); ++v) {
-      const auto& x = field.voxels[v];
+  DenseField(const std::vector<VoxelIndex>& voxels, int resolution)
+      : m_n(resolution), m_index(static_cast<std::size_t>(m_n) * m_n * m_n, -1) {
+    for (std::size_t v = 0; v < voxels.size(); ++v) {
+      const auto& x = voxels[v];
       if (inside(x)) m_index[linear(x)] = static_cast<int>(v);
     }
   }
@@ -86,13 +86,9 @@ Eigen::Vector3f MirrorPlane::mirror(const Eigen::Vector3f& p, int resolution) co
   return out;
 }
 
-std::optional<MirrorPlane> findMirrorPlane(const std::vector<VoxelIndex>& voxels, int resolution,
-                                           float minSymmetry) {
-  if (voxels.empty() || resolution <= 0) return std::nullopt;
-  PredictedField occupancy;
-  occupancy.resolution = resolution;
-  occupancy.voxels = voxels;
-  const DenseField dense(occupancy);
+namespace {
+std::optional<MirrorPlane> bestMirrorPlane(const std::vector<VoxelIndex>& voxels, int resolution,
+                                           const DenseField& dense, float minSymmetry) {
   std::optional<MirrorPlane> best;
   for (int axis = 0; axis < 2; ++axis) {
     int lo = resolution, hi = -1;
@@ -111,14 +107,22 @@ std::optional<MirrorPlane> findMirrorPlane(const std::vector<VoxelIndex>& voxels
   if (!best || best->score < minSymmetry) return std::nullopt;
   return best;
 }
+}  // namespace
+
+std::optional<MirrorPlane> findMirrorPlane(const std::vector<VoxelIndex>& voxels, int resolution,
+                                           float minSymmetry) {
+  if (voxels.empty() || resolution <= 0) return std::nullopt;
+  return bestMirrorPlane(voxels, resolution, DenseField(voxels, resolution), minSymmetry);
+}
 
 std::vector<ExtractedPoint> completeMirrorPairs(const PredictedField& field,
                                                 const std::vector<ExtractedPoint>& points,
                                                 const ExtractionSettings& extraction,
                                                 const MirrorPairSettings& settings) {
-  const auto plane = findMirrorPlane(field.voxels, field.resolution, settings.minSymmetry);
-  if (!plane || points.empty()) return points;
-  const DenseField dense(field);
+  if (points.empty() || field.voxels.empty() || field.resolution <= 0) return points;
+  const DenseField dense(field.voxels, field.resolution);
+  const auto plane = bestMirrorPlane(field.voxels, field.resolution, dense, settings.minSymmetry);
+  if (!plane) return points;
   const float suppression = extraction.nmsRadius;
   std::vector<ExtractedPoint> out;
   auto clearOf = [&](const std::vector<ExtractedPoint>& list, const Eigen::Vector3f& p) {
