@@ -182,8 +182,8 @@ float circumferenceSupport(const EdgeMap& edges, float cx, float cy, float radiu
 // Hough transform for circles of radius [rMin, rMax] pixels: every edge pixel votes at each
 // radius along and against its gradient; local maxima of the votes (3x3 pixels, radius +- 1) that
 // reach a third of the circumference are candidates, kept when edges really run around a share
-// `minSupport` of it, more than around the circle 5 pixels outside it (past a drawn line's other
-// edge). Concentric and overlapping circles are merged, best supported first.
+// `minSupport` of it, more than around the circles 5, 9 and 13 pixels outside it (past a drawn
+// line's other edge, and not thrown off by a line drawn beside it). Concentric and overlapping circles are merged, best supported first.
 std::vector<Circle> houghCircles(const TopRaster& r, int rMin, int rMax, float edgeStep,
                                  float minSupport) {
   std::vector<Circle> out;
@@ -225,10 +225,15 @@ std::vector<Circle> houghCircles(const TopRaster& r, int rMin, int rMax, float e
               if (w > v) isMax = false;
             }
         if (!isMax || sum < needed) continue;
-        // Where edges run everywhere (a noisy texture) they also cross the circle 5 pixels
-        // outside it (inside, a symbol has its icon): only the share beyond that clutter counts.
+        // Where edges run everywhere (a noisy texture) they also cross the circles 5, 9 and 13
+        // pixels outside it (inside, a symbol has its icon): only the share beyond that clutter
+        // counts. The least of the three rings: a straight line drawn beside a key (an underline)
+        // runs along a ring only where it is nearly tangent to it, a band a few pixels wide, and
+        // crosses the others at a slant; noise is on all of them.
         const float fx = static_cast<float>(x), fy = static_cast<float>(y);
-        const float clutter = circumferenceSupport(edges, fx, fy, rad + 5);
+        const float clutter = std::min({circumferenceSupport(edges, fx, fy, rad + 5),
+                                        circumferenceSupport(edges, fx, fy, rad + 9),
+                                        circumferenceSupport(edges, fx, fy, rad + 13)});
         const float support = circumferenceSupport(edges, fx, fy, rad) - clutter;
         if (support >= minSupport)
           candidates.push_back({static_cast<float>(x), static_cast<float>(y), rad, support});

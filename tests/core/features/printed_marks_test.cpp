@@ -82,6 +82,34 @@ TEST(PrintedMarks, NothingOnStovesWhoseBurnersAreGeometryOrOnPlainAndNoisyTops) 
   EXPECT_TRUE(findPrintedMarks(top).empty());
 }
 
+// The 2-zone hob of the real corpus: plus and minus keys printed as filled discs in a row, a
+// line drawn just below them. The line crosses the ring outside each disc that tells a symbol from
+// a noisy texture; it must not hide the keys.
+TEST(PrintedMarks, TouchKeysAboveAPrintedLineAreFound) {
+  Mesh glass = test::quadZ({0, 0}, {0.6f, 0.6f}, 0.9f);
+  Texture print;
+  print.width = print.height = 512;
+  print.rgba.assign(512 * 512 * 4, 255);
+  const std::vector<int> keyColumns = {150, 190, 320, 360};
+  const int row = 256, radius = 6;
+  for (int y = 0; y < 512; ++y)
+    for (int x = 0; x < 512; ++x) {
+      bool white = (y == row + 8 || y == row + 9) && x >= 120 && x <= 390;
+      for (int c : keyColumns) white = white || (x - c) * (x - c) + (y - row) * (y - row) <= radius * radius;
+      for (int k = 0; k < 3; ++k) print.rgba[(static_cast<std::size_t>(y) * 512 + x) * 4 + k] = white ? 240 : 20;
+    }
+  glass.textures = {print};
+  glass.materials = {Material{"glass", Eigen::Vector3f::Ones(), 0}};
+  glass.triangleMaterials.assign(glass.triangles.size(), 0);
+
+  const PrintedMarks marks = findPrintedMarks(glass);
+  ASSERT_EQ(marks.symbols.size(), keyColumns.size());
+  std::vector<Eigen::Vector3f> keys;
+  for (int c : keyColumns) keys.emplace_back((c + 0.5f) / 512.0f * 0.6f, 0.3f, 0.9f);
+  for (const auto& s : marks.symbols) EXPECT_LT(nearest(s.centre, keys), 0.006f);
+  EXPECT_TRUE(marks.zones.empty());
+}
+
 TEST(PrintedMarks, OnlyUpwardFacingTexturedSurfacesAreRead) {
   gen::GeneratedObject hob = gen::makeRawObject("stove", 51, 0, kGlassHobs);
   ASSERT_FALSE(findPrintedMarks(hob.mesh).empty());
