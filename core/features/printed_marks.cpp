@@ -183,7 +183,8 @@ float circumferenceSupport(const EdgeMap& edges, float cx, float cy, float radiu
 // radius along and against its gradient; local maxima of the votes (3x3 pixels, radius +- 1) that
 // reach a third of the circumference are candidates, kept when edges really run around a share
 // `minSupport` of it, more than around the circles 5, 9 and 13 pixels outside it (past a drawn
-// line's other edge, and not thrown off by a line drawn beside it). Concentric and overlapping circles are merged, best supported first.
+// line's other edge, and not thrown off by a line drawn beside it). Concentric and overlapping
+// circles are merged, best supported first.
 std::vector<Circle> houghCircles(const TopRaster& r, int rMin, int rMax, float edgeStep,
                                  float minSupport) {
   std::vector<Circle> out;

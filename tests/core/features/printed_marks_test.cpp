@@ -95,8 +95,10 @@ TEST(PrintedMarks, TouchKeysAboveAPrintedLineAreFound) {
   for (int y = 0; y < 512; ++y)
     for (int x = 0; x < 512; ++x) {
       bool white = (y == row + 8 || y == row + 9) && x >= 120 && x <= 390;
-      for (int c : keyColumns) white = white || (x - c) * (x - c) + (y - row) * (y - row) <= radius * radius;
-      for (int k = 0; k < 3; ++k) print.rgba[(static_cast<std::size_t>(y) * 512 + x) * 4 + k] = white ? 240 : 20;
+      for (int c : keyColumns)
+        white = white || (x - c) * (x - c) + (y - row) * (y - row) <= radius * radius;
+      for (int k = 0; k < 3; ++k)
+        print.rgba[(static_cast<std::size_t>(y) * 512 + x) * 4 + k] = white ? 240 : 20;
     }
   glass.textures = {print};
   glass.materials = {Material{"glass", Eigen::Vector3f::Ones(), 0}};
