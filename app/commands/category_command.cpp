@@ -27,7 +27,7 @@ using sagrid::defaultModelsDir;  // ./resources, <bin>/../share/sagrid or the so
 // Descriptors of every --data folder, minus the excluded ids, with a progress bar per folder.
 std::vector<sagrid::CategorySample> collect(const std::vector<std::string>& dirs,
                                             const sagrid::FeatureOptions& features,
-                                            const std::set<std::string>& exclude) {
+                                            const std::set<std::string>& exclude, bool topRelief) {
   std::vector<sagrid::CategorySample> all;
   for (const auto& arg : dirs) {
     // DIR@W weighs the folder's objects W times (a few real objects among many generated ones).
@@ -50,7 +50,7 @@ std::vector<sagrid::CategorySample> collect(const std::vector<std::string>& dirs
           if (!bar) bar = std::make_unique<sagrid::app::ProgressBar>("features " + dir, total);
           bar->update(done);
         },
-        &failed);
+        &failed, topRelief);
     if (bar) bar->finish();
     if (failed) std::fprintf(stderr, "%s: %zu objects skipped (features failed)\n", dir.c_str(), failed);
     for (auto& s : samples) s.weight = weight;
@@ -79,7 +79,7 @@ void setupCategory(CLI::App& root) {
     std::string out, models, exclude, split, splitOut, up;
     double threshold = -1, l2 = 1e-2;
     int iterations = 20000;
-    bool retrieval = false, linear = false;
+    bool retrieval = false, linear = false, topRelief = false;
   };
   auto o = std::make_shared<Options>();
 
@@ -100,15 +100,19 @@ void setupCategory(CLI::App& root) {
   train->add_option("--up", o->up, "Up axis (y or z) of objects whose labels do not say")
       ->check(CLI::IsMember({"y", "z"}));
   train->add_option("--iterations", o->iterations, "Gradient steps")->check(CLI::PositiveNumber);
-  train->add_flag("--linear", o->linear, "Descriptor only, without its squares");
+  train->add_flag("--linear", o->linear, "Inputs only, without their squares");
+  train->add_flag("--top-relief", o->topRelief,
+                  "Also read the relief of the object's top from its voxels (basins, burner spots, "
+                  "flat lids), beside the descriptor");
   train->callback([o] {
     const fs::path out = o->out.empty() ? defaultModelsDir() : fs::path(o->out);
     auto features = featuresFor(out);
     if (!o->up.empty()) features.up = sagrid::parseUpAxis(o->up);
     std::set<std::string> exclude;
     if (!o->exclude.empty()) exclude = sagrid::readIdSplit(o->exclude).val;
-    const auto samples = collect(o->data, features, exclude);
+    const auto samples = collect(o->data, features, exclude, o->topRelief);
     sagrid::CategoryTrainingOptions options;
+    options.topRelief = o->topRelief;
     options.l2 = o->l2;
     options.iterations = o->iterations;
     options.quadratic = !o->linear;
@@ -125,7 +129,7 @@ void setupCategory(CLI::App& root) {
     if (!o->up.empty()) command += " --up " + o->up;
     command += " --out " + out.string() + " --threshold " + std::to_string(options.threshold) +
                " --l2 " + std::to_string(o->l2) + " --iterations " + std::to_string(o->iterations) +
-               (o->linear ? " --linear" : "");
+               (o->linear ? " --linear" : "") + (o->topRelief ? " --top-relief" : "");
     classifier.training["command"] = command;
     const auto ev = sagrid::evaluateCategories(
         [&](const std::vector<float>& d) { return classifier.classify(d); }, samples);
@@ -156,8 +160,9 @@ void setupCategory(CLI::App& root) {
     if (!o->split.empty()) exclude = sagrid::readIdSplit(o->split).train;
     auto features = models.featureOptions();
     if (!o->up.empty()) features.up = sagrid::parseUpAxis(o->up);
-    const auto samples = collect(o->data, features, exclude);
     const auto* classifier = models.categoryClassifier();
+    const auto samples =
+        collect(o->data, features, exclude, classifier && !o->retrieval && classifier->topRelief());
     if (!classifier && !o->retrieval)
       std::fprintf(stderr, "%s has no %s: evaluating retrieval\n", dir.string().c_str(),
                    sagrid::kCategoryClassifierFile);

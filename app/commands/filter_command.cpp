@@ -76,9 +76,10 @@ void setupFilter(CLI::App& root) {
       bar.update(i, files[i].id);
       try {
         auto source = sagrid::DescriptorSource::Computed;
-        const auto descriptor = sagrid::extractDescriptor(files[i].path, features, &source);
+        const auto object = sagrid::extractObjectDescriptor(files[i].path, features, &source);
         if (source != sagrid::DescriptorSource::Computed) ++cached;
-        const auto decision = models.decideCategory(descriptor);
+        const auto& descriptor = object.descriptor;
+        const auto decision = models.decideCategory(descriptor, object.topRelief);
         ranked.push_back({files[i], models.categorySimilarity(descriptor, o->like),
                           decision.category, decision.rejected});
       } catch (const sagrid::Error& e) {

@@ -100,7 +100,7 @@ AnnotationResult annotateMeshFile(const fs::path& meshFile, const std::string& i
 
   if (options.category.empty()) {
     // The classifier with rejection when the models folder has one, else retrieval.
-    const CategoryDecision decision = models.decideCategory(features.descriptor);
+    const CategoryDecision decision = models.decideCategory(features);
     r.category = decision.category;
     r.categorySimilarity = decision.score;
     r.categoryRetrieved = true;

@@ -1,14 +1,15 @@
 #include "core/annotate/category_classifier.h"
 
+#include <Eigen/Core>
 #include <algorithm>
 #include <cmath>
 #include <map>
 
-#include <Eigen/Core>
-
 #include "core/common/atomic_file.h"
 #include "core/common/error.h"
 #include "core/common/sha256.h"
+#include "core/features/feature_grid.h"
+#include "core/grid/top_relief.h"
 
 namespace sagrid {
 
@@ -39,6 +40,22 @@ std::string contentSha(const nlohmann::json& j) {
   return sha256Hex(copy.dump());
 }
 }  // namespace
+
+std::vector<float> categoryInputs(const std::vector<float>& descriptor,
+                                  const std::array<float, kTopReliefSize>& relief, bool topRelief) {
+  std::vector<float> inputs = descriptor;
+  if (topRelief) inputs.insert(inputs.end(), relief.begin(), relief.end());
+  return inputs;
+}
+
+std::vector<float> categoryInputs(const FeatureGrid& grid, bool topRelief) {
+  if (!topRelief) return grid.descriptor;
+  return categoryInputs(grid.descriptor, sagrid::topRelief(grid.voxels, grid.resolution), true);
+}
+
+std::vector<float> CategoryClassifier::inputsOf(const FeatureGrid& grid) const {
+  return categoryInputs(grid, m_topRelief);
+}
 
 std::string categoryClass(const std::string& labelledCategory) {
   if (labelledCategory == "stove" || labelledCategory == "sink") return labelledCategory;
@@ -81,6 +98,7 @@ CategoryClassifier CategoryClassifier::train(const std::vector<CategorySample>& 
     x.col(j) = ((x.col(j).array() - mean) / c.m_scale[j]).cwiseMax(-kClamp).cwiseMin(kClamp);
   }
   c.m_quadratic = options.quadratic;
+  c.m_topRelief = options.topRelief;
   if (c.m_quadratic) {
     Eigen::MatrixXd expanded(n, 2 * d);
     expanded << x, x.array().square().matrix();
@@ -135,6 +153,7 @@ CategoryClassifier CategoryClassifier::train(const std::vector<CategorySample>& 
   c.training["l2"] = options.l2;
   c.training["iterations"] = options.iterations;
   c.training["quadratic"] = options.quadratic;
+  c.training["top_relief"] = options.topRelief;
   return c;
 }
 
@@ -199,6 +218,7 @@ void CategoryClassifier::save(const std::filesystem::path& file) const {
   j["grid_resolution"] = gridResolution;
   j["descriptor_size"] = m_centre.size();
   j["quadratic"] = m_quadratic;
+  j["top_relief"] = m_topRelief;
   j["centre"] = m_centre;
   j["scale"] = m_scale;
   j["weights"] = m_weights;
@@ -229,6 +249,7 @@ CategoryClassifier CategoryClassifier::load(const std::filesystem::path& file) {
     c.m_centre = j.at("centre").get<std::vector<float>>();
     c.m_scale = j.at("scale").get<std::vector<float>>();
     c.m_quadratic = j.value("quadratic", false);
+    c.m_topRelief = j.value("top_relief", false);
     c.m_weights = j.at("weights").get<std::vector<std::vector<double>>>();
     c.m_bias = j.at("bias").get<std::vector<double>>();
     c.training = j.value("training", nlohmann::json::object());

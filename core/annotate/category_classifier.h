@@ -4,17 +4,21 @@
 // cabinets got stove or sink points; this classifier has a "none" class trained on distractors.
 //
 // Model: multinomial logistic regression (linear softmax) over the descriptor standardized with
-// the training set's mean and spread (and, by default, its squares: a quadratic boundary), trained full-batch with class-balanced weights and an L2
-// penalty (convex, deterministic, no libtorch). Decision: the most probable class; an object is
-// rejected ("none") when that class is "none" or its probability is below `threshold`.
-// Stored as <models folder>/category.json (kCategoryClassifierFile) next to the model cards.
+// the training set's mean and spread (and, by default, its squares: a quadratic boundary), trained
+// full-batch with class-balanced weights and an L2 penalty (convex, deterministic, no libtorch).
+// Decision: the most probable class; an object is rejected ("none") when that class is "none" or
+// its probability is below `threshold`. Inputs: the descriptor, and with `topRelief` also the
+// relief of the object's top (core/grid/top_relief.h: basins, burner spots, flat lids), which the
+// descriptor misses. Stored as <models folder>/category.json (kCategoryClassifierFile) next to the
+// model cards.
 #pragma once
 
 #include <filesystem>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
-#include <nlohmann/json.hpp>
+#include "core/grid/top_relief.h"
 
 namespace sagrid {
 
@@ -44,7 +48,18 @@ struct CategoryTrainingOptions {
   // Also the squares of the standardized dimensions (a quadratic boundary: "far from the
   // stoves in this dimension" is not linear in it).
   bool quadratic = true;
+  // The samples' inputs end with the top relief (categoryInputs(grid, true)); recorded in the
+  // file so that classification appends it too.
+  bool topRelief = false;
 };
+
+struct FeatureGrid;
+
+// What the classifier reads from an object's features: the descriptor, followed by the top relief
+// of its occupied voxels when `topRelief`.
+std::vector<float> categoryInputs(const FeatureGrid& grid, bool topRelief);
+std::vector<float> categoryInputs(const std::vector<float>& descriptor,
+                                  const std::array<float, kTopReliefSize>& relief, bool topRelief);
 
 class CategoryClassifier {
  public:
@@ -68,7 +83,10 @@ class CategoryClassifier {
   const std::vector<std::string>& classes() const { return m_classes; }
   double threshold() const { return m_threshold; }
   void setThreshold(double t) { m_threshold = t; }
-  std::size_t descriptorSize() const { return m_centre.size(); }
+  std::size_t descriptorSize() const { return m_centre.size(); }  // inputs, relief included
+  bool topRelief() const { return m_topRelief; }
+  // categoryInputs(grid, topRelief()).
+  std::vector<float> inputsOf(const FeatureGrid& grid) const;
 
   // Feature setup the descriptors came from (checked against the model cards).
   std::string featureBackend, featureConfigHash;
@@ -82,6 +100,7 @@ class CategoryClassifier {
   // Standardized (clamped to +-kClamp) descriptor, then its squares when m_quadratic.
   std::vector<double> inputs(const std::vector<float>& descriptor) const;
   bool m_quadratic = false;
+  bool m_topRelief = false;
   std::vector<std::vector<double>> m_weights;  // classes x inputs
   std::vector<double> m_bias;
   double m_threshold = 0.5;

@@ -19,9 +19,10 @@ namespace sagrid {
 namespace fs = std::filesystem;
 
 std::vector<CategorySample> collectCategorySamples(
-    const fs::path& dataDir, const FeatureOptions& features, const std::set<std::string>& excludeIds,
+    const fs::path& dataDir, const FeatureOptions& features,
+    const std::set<std::string>& excludeIds,
     const std::function<void(std::size_t, std::size_t, const std::string&)>& onProgress,
-    std::size_t* failed) {
+    std::size_t* failed, bool topRelief) {
   const auto entries = readDataset(dataDir);
   if (entries.empty()) throw InvalidArgument("dataset " + dataDir.string() + " has no objects");
   FeatureOptions options = features;
@@ -53,7 +54,7 @@ std::vector<CategorySample> collectCategorySamples(
       // The labels say how the file was written (Sweet Home 3D OBJs are y-up); unset = the
       // importer's default for the format.
       if (!labels.object.up.empty()) objectFeatures.up = parseUpAxis(labels.object.up);
-      s.descriptor = extractFeatures(entry.mesh, objectFeatures).descriptor;
+      s.descriptor = categoryInputs(extractFeatures(entry.mesh, objectFeatures), topRelief);
       out.push_back(std::move(s));
     } catch (const Error& err) {
       logger()->warn("category data: skipping {}: {}", entry.id, err.what());

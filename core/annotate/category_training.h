@@ -19,13 +19,14 @@ namespace sagrid {
 // Descriptors of every object of a dataset folder whose id is not in `excludeIds`. The group of a
 // sample is the folder's name, plus the generator kind for generated distractors. An object's
 // labels.json up axis overrides features.up; objects without labels.json take the manifest's
-// category and features.up. Objects whose
-// features fail are skipped and counted in `failed` (when given).
+// category and features.up. Objects whose features fail are skipped and counted in `failed` (when
+// given). A sample's descriptor is categoryInputs(features, topRelief): with `topRelief` the
+// relief of the object's top follows the descriptor.
 std::vector<CategorySample> collectCategorySamples(
     const std::filesystem::path& dataDir, const FeatureOptions& features,
     const std::set<std::string>& excludeIds = {},
     const std::function<void(std::size_t, std::size_t, const std::string&)>& onProgress = {},
-    std::size_t* failed = nullptr);
+    std::size_t* failed = nullptr, bool topRelief = false);
 
 // A split of object ids into "train" and "val".
 struct IdSplit {

@@ -48,7 +48,23 @@ void ModelSet::setCategoryClassifier(CategoryClassifier classifier,
   m_classifier = std::move(classifier);
 }
 
+CategoryDecision ModelSet::decideCategory(const FeatureGrid& features) const {
+  if (m_classifier) return m_classifier->classify(m_classifier->inputsOf(features));
+  return decideCategory(features.descriptor);
+}
+
+CategoryDecision ModelSet::decideCategory(const std::vector<float>& descriptor,
+                                          const std::array<float, kTopReliefSize>& relief) const {
+  if (m_classifier)
+    return m_classifier->classify(categoryInputs(descriptor, relief, m_classifier->topRelief()));
+  return decideCategory(descriptor);
+}
+
 CategoryDecision ModelSet::decideCategory(const std::vector<float>& descriptor) const {
+  if (needsVoxelsToDecide())
+    throw InvalidArgument(
+        "the category classifier reads the top relief of the voxels too: decide from the "
+        "object's features, not its descriptor alone");
   if (m_classifier) return m_classifier->classify(descriptor);
   const auto ranked = rankCategories(descriptor);
   if (ranked.empty()) throw ModelError("no models to choose a category from");

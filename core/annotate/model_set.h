@@ -47,7 +47,14 @@ class ModelSet {
 
   // The category of an object: the classifier's decision (possibly rejected, category "none")
   // when the folder has one, else the best retrieved category (never rejected).
+  CategoryDecision decideCategory(const FeatureGrid& features) const;
+  // The same from the descriptor and the top relief (a descriptor cache entry, `sagrid filter`).
+  CategoryDecision decideCategory(const std::vector<float>& descriptor,
+                                  const std::array<float, kTopReliefSize>& topRelief) const;
+  // The same from the descriptor alone; throws InvalidArgument when the classifier also reads the
+  // top relief (needsVoxelsToDecide()).
   CategoryDecision decideCategory(const std::vector<float>& descriptor) const;
+  bool needsVoxelsToDecide() const { return m_classifier && m_classifier->topRelief(); }
   const CategoryClassifier* categoryClassifier() const {
     return m_classifier ? &*m_classifier : nullptr;
   }

@@ -18,14 +18,18 @@ fs::path descriptorEntry(const fs::path& dir, const std::string& sha, const std:
   return dir / (sha + "-" + hash + (variant.empty() ? "" : "-" + variant) + ".descriptor.json");
 }
 
-std::optional<std::vector<float>> loadDescriptor(const fs::path& entry, const std::string& sha,
-                                                 const std::string& hash) {
+std::optional<ObjectDescriptor> loadDescriptor(const fs::path& entry, const std::string& sha,
+                                               const std::string& hash) {
   std::error_code ec;
   if (!fs::exists(entry, ec)) return std::nullopt;
   try {
     const auto j = nlohmann::json::parse(readFileBytes(entry));
-    if (j.at("mesh_sha256") == sha && j.at("config_hash") == hash)
-      return j.at("descriptor").get<std::vector<float>>();
+    if (j.at("mesh_sha256") == sha && j.at("config_hash") == hash && j.contains("top_relief")) {
+      ObjectDescriptor d;
+      d.descriptor = j.at("descriptor").get<std::vector<float>>();
+      d.topRelief = j.at("top_relief").get<std::array<float, kTopReliefSize>>();
+      return d;
+    }
   } catch (const std::exception& e) {
     logger()->warn("descriptor cache: rewriting unusable entry {}: {}", entry.string(), e.what());
   }
@@ -33,8 +37,8 @@ std::optional<std::vector<float>> loadDescriptor(const fs::path& entry, const st
 }
 }  // namespace
 
-std::vector<float> extractDescriptor(const fs::path& meshFile, const FeatureOptions& options,
-                                     DescriptorSource* source) {
+ObjectDescriptor extractObjectDescriptor(const fs::path& meshFile, const FeatureOptions& options,
+                                         DescriptorSource* source) {
   const std::string hash = featureConfigHash(options);  // validates the backend
   const std::string variant = options.up ? std::string("up") + toString(*options.up) : "";
   std::string sha;
@@ -42,36 +46,44 @@ std::vector<float> extractDescriptor(const fs::path& meshFile, const FeatureOpti
   if (!options.cacheDir.empty()) {
     sha = sha256Hex(readFileBytes(meshFile));
     entry = descriptorEntry(options.cacheDir, sha, hash, variant);
-    if (auto d = loadDescriptor(entry, sha, hash)) {
+    if (auto cached = loadDescriptor(entry, sha, hash)) {
       if (source) *source = DescriptorSource::DescriptorCache;
-      return std::move(*d);
+      return std::move(*cached);
     }
   }
-  std::vector<float> descriptor;
+  ObjectDescriptor d;
   DescriptorSource from = DescriptorSource::Computed;
+  auto take = [&d](const FeatureGrid& grid) {
+    d.descriptor = grid.descriptor;
+    d.topRelief = topRelief(grid.voxels, grid.resolution);
+  };
   if (!options.cacheDir.empty()) {
     if (auto grid = FeatureCache(options.cacheDir).load(sha, hash, variant)) {
-      descriptor = std::move(grid->descriptor);
+      take(*grid);
       from = DescriptorSource::FeatureCache;
     }
   }
-  if (from == DescriptorSource::Computed) {
-    const Mesh mesh = importMesh(meshFile, ImportOptions(options.up));
-    descriptor = computeFeatures(mesh, options).descriptor;
-  }
+  if (from == DescriptorSource::Computed)
+    take(computeFeatures(importMesh(meshFile, ImportOptions(options.up)), options));
   if (!entry.empty()) {
     std::error_code ec;
     fs::create_directories(options.cacheDir, ec);
     if (ec)
       throw FileError(options.cacheDir, "cannot create the feature cache folder: " + ec.message());
-    writeFileAtomic(
-        entry,
-        nlohmann::json{{"mesh_sha256", sha}, {"config_hash", hash}, {"descriptor", descriptor}}
-                .dump() +
-            "\n");
+    writeFileAtomic(entry, nlohmann::json{{"mesh_sha256", sha},
+                                          {"config_hash", hash},
+                                          {"descriptor", d.descriptor},
+                                          {"top_relief", d.topRelief}}
+                                   .dump() +
+                               "\n");
   }
   if (source) *source = from;
-  return descriptor;
+  return d;
+}
+
+std::vector<float> extractDescriptor(const fs::path& meshFile, const FeatureOptions& options,
+                                     DescriptorSource* source) {
+  return extractObjectDescriptor(meshFile, options, source).descriptor;
 }
 
 }  // namespace sagrid

@@ -5,10 +5,12 @@
 // renders. Keyed like the feature cache: mesh file sha256, feature-config hash, up override.
 #pragma once
 
+#include <array>
 #include <filesystem>
 #include <vector>
 
 #include "core/features/feature_pipeline.h"
+#include "core/grid/top_relief.h"
 
 namespace sagrid {
 
@@ -18,10 +20,22 @@ enum class DescriptorSource {
   Computed,         // imported and computed; the descriptor entry is written for next time
 };
 
+// What the category decision reads of an object: its descriptor and the relief of its top
+// (core/grid/top_relief.h, from the voxels the descriptor entry does not keep).
+struct ObjectDescriptor {
+  std::vector<float> descriptor;
+  std::array<float, kTopReliefSize> topRelief{};
+};
+
 // The object descriptor of a mesh file with `options`' feature configuration. With a cache
 // folder (options.cacheDir) it reads the descriptor entry, else a full feature entry, else
 // computes the features and stores the descriptor entry (not the grid: a collection of a
-// million meshes would need terabytes). Unusable entries are ignored and rewritten.
+// million meshes would need terabytes). Unusable entries, and entries written before they held
+// the top relief, are ignored and rewritten.
+ObjectDescriptor extractObjectDescriptor(const std::filesystem::path& meshFile,
+                                         const FeatureOptions& options,
+                                         DescriptorSource* source = nullptr);
+// Its descriptor alone.
 std::vector<float> extractDescriptor(const std::filesystem::path& meshFile,
                                      const FeatureOptions& options,
                                      DescriptorSource* source = nullptr);

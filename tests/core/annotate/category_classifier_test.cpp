@@ -3,10 +3,11 @@
 // generated distractors by a tiny classifier trained on generated stoves, sinks and distractors.
 #include "core/annotate/category_classifier.h"
 
-#include <fstream>
-#include <random>
-
 #include <gtest/gtest.h>
+
+#include <fstream>
+#include <functional>
+#include <random>
 
 #include "core/annotate/annotate.h"
 #include "core/annotate/category_training.h"
@@ -14,6 +15,7 @@
 #include "core/common/atomic_file.h"
 #include "core/common/error.h"
 #include "core/generate/dataset_generator.h"
+#include "core/grid/top_relief.h"
 #include "core/mesh/mesh_export.h"
 #include "support/test_paths.h"
 #include "support/untrained_models.h"
@@ -115,6 +117,64 @@ TEST(CategoryClassifier, ModelSetFallsBackToRetrievalWithoutAClassifier) {
   EXPECT_FALSE(d.rejected);
   EXPECT_NE(d.category, "none");
   EXPECT_EQ(set.decideCategory({1, 0, 0, 0, 0, 0}).category, "stove");
+}
+
+// Voxels of a footprint [10, 50)^2 on k = 0 whose columns top out at height(x, y) (64^3 grid).
+std::vector<VoxelIndex> topOf(const std::function<int(int, int)>& height) {
+  std::vector<VoxelIndex> out;
+  for (int x = 10; x < 50; ++x)
+    for (int y = 10; y < 50; ++y) out.insert(out.end(), {{x, y, 0}, {x, y, height(x, y)}});
+  return out;
+}
+const std::vector<VoxelIndex> kFlatLid = topOf([](int, int) { return 30; });
+const std::vector<VoxelIndex> kBasin =
+    topOf([](int x, int y) { return x >= 20 && x < 40 && y >= 20 && y < 40 ? 15 : 30; });
+const std::vector<VoxelIndex> kBurnerCaps = topOf([](int x, int y) {
+  return (std::abs(x % 20 - 18) <= 1 && std::abs(y % 20 - 18) <= 1) ? 32 : 30;
+});
+
+// The descriptor says nothing (the same noise for every class); only the top tells them apart.
+TEST(CategoryClassifier, TheTopReliefIsStoredAndReadWhenDeciding) {
+  std::mt19937 rng(9);
+  std::normal_distribution<float> noise(0.0f, 0.05f);
+  std::vector<CategorySample> samples;
+  const std::vector<std::pair<std::string, const std::vector<VoxelIndex>*>> shapes = {
+      {"stove", &kBurnerCaps}, {"sink", &kBasin}, {"none", &kFlatLid}};
+  for (const auto& [category, voxels] : shapes)
+    for (int i = 0; i < 20; ++i) {
+      std::vector<float> descriptor(6);
+      for (float& v : descriptor) v = noise(rng);
+      auto relief = topRelief(*voxels, 64);
+      for (float& v : relief) v += noise(rng);
+      samples.push_back({category + std::to_string(i), category, "test",
+                         categoryInputs(descriptor, relief, true)});
+    }
+  CategoryTrainingOptions options;
+  options.topRelief = true;
+  auto c = CategoryClassifier::train(samples, options);
+  c.featureBackend = "embedded";
+  const auto file = test::freshTempDir() / kCategoryClassifierFile;
+  c.save(file);
+  const auto back = CategoryClassifier::load(file);
+  EXPECT_TRUE(back.topRelief());
+  EXPECT_EQ(back.descriptorSize(), 6u + kTopReliefSize);
+
+  ModelSet set = stoveAndSinkCards();
+  set.setCategoryClassifier(back, file);
+  EXPECT_TRUE(set.needsVoxelsToDecide());
+  const std::vector<float> quiet(6, 0.0f);
+  EXPECT_THROW(set.decideCategory(quiet), InvalidArgument);  // the descriptor alone is not enough
+  EXPECT_EQ(set.decideCategory(quiet, topRelief(kBurnerCaps, 64)).category, "stove");
+  EXPECT_EQ(set.decideCategory(quiet, topRelief(kBasin, 64)).category, "sink");
+  EXPECT_TRUE(set.decideCategory(quiet, topRelief(kFlatLid, 64)).rejected);
+  // From an object's features: the relief of its voxels is appended.
+  FeatureGrid grid;
+  grid.resolution = 64;
+  grid.descriptor = quiet;
+  grid.voxels = kBasin;
+  EXPECT_EQ(set.decideCategory(grid).category, "sink");
+  grid.voxels = kBurnerCaps;
+  EXPECT_EQ(set.decideCategory(grid).category, "stove");
 }
 
 TEST(CategoryClassifier, ModelSetUsesTheClassifierAndChecksIt) {

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <nlohmann/json.hpp>
+
 #include "core/common/atomic_file.h"
 #include "core/mesh/mesh_export.h"
 #include "support/analytic_meshes.h"
@@ -72,6 +74,34 @@ TEST(DescriptorCache, TakesTheDescriptorOfAFullFeatureEntryAndRewritesADamagedEn
   EXPECT_EQ(extractDescriptor(mesh, options, &source), grid.descriptor);
   EXPECT_EQ(source, DescriptorSource::Computed);
   EXPECT_EQ(extractDescriptor(mesh, options, &source), grid.descriptor);
+  EXPECT_EQ(source, DescriptorSource::DescriptorCache);
+}
+
+TEST(DescriptorCache, KeepsTheTopReliefAndRewritesEntriesWrittenWithoutIt) {
+  const fs::path dir = test::freshTempDir();
+  const fs::path mesh = writeBoxObj(dir);
+  const auto options = smallOptions(dir / "cache");
+  FeatureOptions uncached = options;
+  uncached.cacheDir.clear();
+  const auto grid = extractFeatures(mesh, uncached);
+  DescriptorSource source{};
+  const auto first = extractObjectDescriptor(mesh, options, &source);
+  EXPECT_EQ(source, DescriptorSource::Computed);
+  EXPECT_EQ(first.topRelief, topRelief(grid.voxels, grid.resolution));
+  EXPECT_GT(first.topRelief[0], 0.5f);  // a box: mostly flat lid
+  const auto cached = extractObjectDescriptor(mesh, options, &source);
+  EXPECT_EQ(source, DescriptorSource::DescriptorCache);
+  EXPECT_EQ(cached.topRelief, first.topRelief);
+
+  // An entry of the earlier format (descriptor only) is computed again and rewritten.
+  const auto entries = descriptorEntries(options.cacheDir);
+  ASSERT_EQ(entries.size(), 1u);
+  auto j = nlohmann::json::parse(readFileBytes(entries[0]));
+  j.erase("top_relief");
+  writeFileAtomic(entries[0], j.dump());
+  EXPECT_EQ(extractObjectDescriptor(mesh, options, &source).topRelief, first.topRelief);
+  EXPECT_EQ(source, DescriptorSource::Computed);
+  extractObjectDescriptor(mesh, options, &source);
   EXPECT_EQ(source, DescriptorSource::DescriptorCache);
 }
 
