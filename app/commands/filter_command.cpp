@@ -76,7 +76,8 @@ void setupFilter(CLI::App& root) {
       bar.update(i, files[i].id);
       try {
         auto source = sagrid::DescriptorSource::Computed;
-        const auto object = sagrid::extractObjectDescriptor(files[i].path, features, &source);
+        const auto object = sagrid::extractObjectDescriptor(files[i].path, features, &source,
+                                                            models.needsVoxelsToDecide());
         if (source != sagrid::DescriptorSource::Computed) ++cached;
         const auto& descriptor = object.descriptor;
         const auto decision = models.decideCategory(descriptor, object.topRelief);

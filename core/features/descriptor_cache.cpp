@@ -18,16 +18,20 @@ fs::path descriptorEntry(const fs::path& dir, const std::string& sha, const std:
   return dir / (sha + "-" + hash + (variant.empty() ? "" : "-" + variant) + ".descriptor.json");
 }
 
+// The entry's content; one written before entries kept the top relief only when `needTopRelief`
+// is false.
 std::optional<ObjectDescriptor> loadDescriptor(const fs::path& entry, const std::string& sha,
-                                               const std::string& hash) {
+                                               const std::string& hash, bool needTopRelief) {
   std::error_code ec;
   if (!fs::exists(entry, ec)) return std::nullopt;
   try {
     const auto j = nlohmann::json::parse(readFileBytes(entry));
-    if (j.at("mesh_sha256") == sha && j.at("config_hash") == hash && j.contains("top_relief")) {
+    const bool hasRelief = j.contains("top_relief");
+    if (j.at("mesh_sha256") == sha && j.at("config_hash") == hash &&
+        (hasRelief || !needTopRelief)) {
       ObjectDescriptor d;
       d.descriptor = j.at("descriptor").get<std::vector<float>>();
-      d.topRelief = j.at("top_relief").get<std::array<float, kTopReliefSize>>();
+      if (hasRelief) d.topRelief = j.at("top_relief").get<std::array<float, kTopReliefSize>>();
       return d;
     }
   } catch (const std::exception& e) {
@@ -38,7 +42,7 @@ std::optional<ObjectDescriptor> loadDescriptor(const fs::path& entry, const std:
 }  // namespace
 
 ObjectDescriptor extractObjectDescriptor(const fs::path& meshFile, const FeatureOptions& options,
-                                         DescriptorSource* source) {
+                                         DescriptorSource* source, bool needTopRelief) {
   const std::string hash = featureConfigHash(options);  // validates the backend
   const std::string variant = options.up ? std::string("up") + toString(*options.up) : "";
   std::string sha;
@@ -46,7 +50,7 @@ ObjectDescriptor extractObjectDescriptor(const fs::path& meshFile, const Feature
   if (!options.cacheDir.empty()) {
     sha = sha256Hex(readFileBytes(meshFile));
     entry = descriptorEntry(options.cacheDir, sha, hash, variant);
-    if (auto cached = loadDescriptor(entry, sha, hash)) {
+    if (auto cached = loadDescriptor(entry, sha, hash, needTopRelief)) {
       if (source) *source = DescriptorSource::DescriptorCache;
       return std::move(*cached);
     }
@@ -83,7 +87,7 @@ ObjectDescriptor extractObjectDescriptor(const fs::path& meshFile, const Feature
 
 std::vector<float> extractDescriptor(const fs::path& meshFile, const FeatureOptions& options,
                                      DescriptorSource* source) {
-  return extractObjectDescriptor(meshFile, options, source).descriptor;
+  return extractObjectDescriptor(meshFile, options, source, /*needTopRelief=*/false).descriptor;
 }
 
 }  // namespace sagrid

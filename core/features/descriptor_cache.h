@@ -30,11 +30,13 @@ struct ObjectDescriptor {
 // The object descriptor of a mesh file with `options`' feature configuration. With a cache
 // folder (options.cacheDir) it reads the descriptor entry, else a full feature entry, else
 // computes the features and stores the descriptor entry (not the grid: a collection of a
-// million meshes would need terabytes). Unusable entries, and entries written before they held
-// the top relief, are ignored and rewritten.
+// million meshes would need terabytes). Unusable entries are ignored and rewritten, and so are
+// entries written before they kept the top relief when `needTopRelief` (else their relief is
+// left zero: a classifier that does not read it has no use for it).
 ObjectDescriptor extractObjectDescriptor(const std::filesystem::path& meshFile,
                                          const FeatureOptions& options,
-                                         DescriptorSource* source = nullptr);
+                                         DescriptorSource* source = nullptr,
+                                         bool needTopRelief = true);
 // Its descriptor alone.
 std::vector<float> extractDescriptor(const std::filesystem::path& meshFile,
                                      const FeatureOptions& options,

@@ -93,12 +93,17 @@ TEST(DescriptorCache, KeepsTheTopReliefAndRewritesEntriesWrittenWithoutIt) {
   EXPECT_EQ(source, DescriptorSource::DescriptorCache);
   EXPECT_EQ(cached.topRelief, first.topRelief);
 
-  // An entry of the earlier format (descriptor only) is computed again and rewritten.
+  // An entry of the earlier format (descriptor only) serves the descriptor alone, and is
+  // computed again and rewritten when the relief is asked for.
   const auto entries = descriptorEntries(options.cacheDir);
   ASSERT_EQ(entries.size(), 1u);
   auto j = nlohmann::json::parse(readFileBytes(entries[0]));
   j.erase("top_relief");
   writeFileAtomic(entries[0], j.dump());
+  EXPECT_EQ(extractDescriptor(mesh, options, &source), first.descriptor);
+  EXPECT_EQ(source, DescriptorSource::DescriptorCache);
+  extractObjectDescriptor(mesh, options, &source, /*needTopRelief=*/false);
+  EXPECT_EQ(source, DescriptorSource::DescriptorCache);
   EXPECT_EQ(extractObjectDescriptor(mesh, options, &source).topRelief, first.topRelief);
   EXPECT_EQ(source, DescriptorSource::Computed);
   extractObjectDescriptor(mesh, options, &source);
