@@ -10,6 +10,7 @@
 
 #include "app/cli_switch.h"
 #include "app/command_registry.h"
+#include "app/commands/up_axis_option.h"
 #include "app/progress_bar.h"
 #include "core/annotate/annotate_batch.h"
 #include "core/annotate/category_classifier.h"
@@ -80,12 +81,7 @@ void setupAnnotate(CLI::App& root) {
                   "Object category (default: chosen by descriptor retrieval)");
   cmd->add_option("--models", o->models, "Model folder (default: the installed models)");
   cmd->add_option("--cache", o->cache, "Feature cache folder (default: none)");
-  cmd->add_option("--up", o->up,
-                  "Up axis of the file: x, -x, y, -y, z or -z (write --up=-y for negative "
-                  "axes); default: y for glTF/GLB, else detected from the geometry")
-      ->check([](const std::string& v) {
-        return sagrid::parseUpAxis(v) ? std::string() : "must be x, -x, y, -y, z or -z, got " + v;
-      });
+  sagrid::app::addUpAxisOption(*cmd, o->up, sagrid::app::kDetectedUpDefault);
   cmd->add_option("--instances", o->instances,
                   "auto (local minima + suppression), single (argmin, as the paper)")
       ->check(CLI::IsMember({"auto", "single"}));

@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/command_registry.h"
+#include "app/commands/up_axis_option.h"
 #include "app/progress_bar.h"
 #include "core/annotate/model_set.h"
 #include "core/annotate/object_list.h"
@@ -19,6 +20,7 @@
 #include "core/common/error.h"
 #include "core/common/resource_paths.h"
 #include "core/features/descriptor_cache.h"
+#include "core/mesh/mesh_import.h"
 
 namespace {
 namespace fs = std::filesystem;
@@ -32,7 +34,7 @@ void setupFilter(CLI::App& root) {
       "category come last, marked none. Descriptors are cached (--cache), so a second pass over "
       "a collection only reads them.");
   struct Options {
-    std::string input, like, models, cache, json, listOut, shard;
+    std::string input, like, models, cache, json, listOut, shard, up;
     int top = 0;
     double threshold = -2;
   };
@@ -43,6 +45,7 @@ void setupFilter(CLI::App& root) {
   cmd->add_option("--models", o->models, "Model folder (default: the installed models)");
   cmd->add_option("--cache", o->cache,
                   "Feature cache folder (default INPUT/.sagrid-cache for folders)");
+  sagrid::app::addUpAxisOption(*cmd, o->up, sagrid::app::kDetectedUpDefault);
   cmd->add_option("--top", o->top, "Keep only the best N")->check(CLI::NonNegativeNumber);
   cmd->add_option("--min-similarity", o->threshold, "Keep only meshes at least this similar");
   cmd->add_option("--json", o->json, "Also write the ranking as JSON");
@@ -57,6 +60,7 @@ void setupFilter(CLI::App& root) {
                                                                  : fs::path(o->models));
     models.categoryMean(o->like);  // an unknown category fails here, before any work
     auto features = models.featureOptions();
+    if (!o->up.empty()) features.up = sagrid::parseUpAxis(o->up);
     features.cacheDir = !o->cache.empty()            ? fs::path(o->cache)
                         : fs::is_directory(o->input) ? fs::path(o->input) / ".sagrid-cache"
                                                      : fs::path();

@@ -1,10 +1,10 @@
 // `sagrid info MESH [--up y|z] [--resolution N] [--json]`: what SAGrid sees in a mesh file.
 #include <CLI/CLI.hpp>
-
 #include <cstdio>
 #include <iostream>
 
 #include "app/command_registry.h"
+#include "app/commands/up_axis_option.h"
 #include "core/features/printed_marks.h"
 #include "core/mesh/mesh_import.h"
 #include "core/mesh/mesh_summary.h"
@@ -22,12 +22,7 @@ void setupInfo(CLI::App& root) {
   };
   auto o = std::make_shared<Options>();
   cmd->add_option("mesh", o->mesh, "Mesh file (.obj .gltf .glb .fbx .dae .ply .stl)")->required();
-  cmd->add_option("--up", o->up,
-                  "Up axis of the file: x, -x, y, -y, z or -z (write --up=-y for negative "
-                  "axes); default: y for glTF/GLB, else detected from the geometry")
-      ->check([](const std::string& v) {
-        return sagrid::parseUpAxis(v) ? std::string() : "must be x, -x, y, -y, z or -z, got " + v;
-      });
+  sagrid::app::addUpAxisOption(*cmd, o->up, sagrid::app::kDetectedUpDefault);
   cmd->add_option("--resolution", o->resolution, "Grid resolution N for the occupancy count (N^3)")
       ->check(CLI::Range(1, 1024));
   cmd->add_flag("--json", o->json, "Print the report as one JSON object");

@@ -1,9 +1,9 @@
 // `sagrid voxelize MESH --out FILE.npz|FILE.ply [--resolution N] [--up y|z]`.
 #include <CLI/CLI.hpp>
-
 #include <iostream>
 
 #include "app/command_registry.h"
+#include "app/commands/up_axis_option.h"
 #include "core/grid/voxel_export.h"
 #include "core/grid/voxelize.h"
 #include "core/mesh/mesh_import.h"
@@ -22,12 +22,7 @@ void setupVoxelize(CLI::App& root) {
   cmd->add_option("mesh", o->mesh, "Mesh file (.obj .gltf .glb .fbx .dae .ply .stl)")->required();
   cmd->add_option("--out", o->out, "Output file, .npz or .ply")->required();
   cmd->add_option("--resolution", o->resolution, "Grid resolution N (N^3 voxels)")->check(CLI::Range(1, 1024));
-  cmd->add_option("--up", o->up,
-                  "Up axis of the file: x, -x, y, -y, z or -z (write --up=-y for negative "
-                  "axes); default: y for glTF/GLB, else z")
-      ->check([](const std::string& v) {
-        return sagrid::parseUpAxis(v) ? std::string() : "must be x, -x, y, -y, z or -z, got " + v;
-      });
+  sagrid::app::addUpAxisOption(*cmd, o->up, "y for glTF/GLB, else z");
   cmd->callback([o] {
     sagrid::checkVoxelOutputPath(o->out);
     const sagrid::Mesh mesh = sagrid::importMesh(o->mesh, sagrid::ImportOptions(sagrid::parseUpAxis(o->up)));

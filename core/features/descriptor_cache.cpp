@@ -1,6 +1,7 @@
 #include "core/features/descriptor_cache.h"
 
 #include <nlohmann/json.hpp>
+#include <optional>
 
 #include "core/common/atomic_file.h"
 #include "core/common/error.h"
@@ -44,7 +45,10 @@ std::optional<ObjectDescriptor> loadDescriptor(const fs::path& entry, const std:
 ObjectDescriptor extractObjectDescriptor(const fs::path& meshFile, const FeatureOptions& options,
                                          DescriptorSource* source, bool needTopRelief) {
   const std::string hash = featureConfigHash(options);  // validates the backend
-  const std::string variant = options.up ? std::string("up") + toString(*options.up) : "";
+  // Without an up axis it is detected from the geometry, as `annotate` does: the descriptor
+  // entry is then keyed "updetected" (the detection is a function of the file's bytes), so a
+  // cached entry needs no import.
+  const std::string variant = options.up ? std::string("up") + toString(*options.up) : "updetected";
   std::string sha;
   fs::path entry;
   if (!options.cacheDir.empty()) {
@@ -61,14 +65,24 @@ ObjectDescriptor extractObjectDescriptor(const fs::path& meshFile, const Feature
     d.descriptor = grid.descriptor;
     d.topRelief = topRelief(grid.voxels, grid.resolution);
   };
+  // The full feature entries are keyed by the axis used (annotate keys them by the detected one).
+  std::optional<Mesh> mesh;
+  FeatureOptions framed = options;
+  if (!framed.up) {
+    mesh = importMesh(meshFile, ImportOptions(std::nullopt, /*detect=*/true));
+    framed.up = mesh->fileUp;
+  }
   if (!options.cacheDir.empty()) {
-    if (auto grid = FeatureCache(options.cacheDir).load(sha, hash, variant)) {
+    if (auto grid = FeatureCache(options.cacheDir)
+                        .load(sha, hash, std::string("up") + toString(*framed.up))) {
       take(*grid);
       from = DescriptorSource::FeatureCache;
     }
   }
-  if (from == DescriptorSource::Computed)
-    take(computeFeatures(importMesh(meshFile, ImportOptions(options.up)), options));
+  if (from == DescriptorSource::Computed) {
+    if (!mesh) mesh = importMesh(meshFile, ImportOptions(framed.up));
+    take(computeFeatures(*mesh, framed));
+  }
   if (!entry.empty()) {
     std::error_code ec;
     fs::create_directories(options.cacheDir, ec);

@@ -27,7 +27,8 @@ struct ObjectDescriptor {
   std::array<float, kTopReliefSize> topRelief{};
 };
 
-// The object descriptor of a mesh file with `options`' feature configuration. With a cache
+// The object descriptor of a mesh file with `options`' feature configuration, in the frame of
+// options.up or, unset, of the up axis detected from the geometry (as `annotate`). With a cache
 // folder (options.cacheDir) it reads the descriptor entry, else a full feature entry, else
 // computes the features and stores the descriptor entry (not the grid: a collection of a
 // million meshes would need terabytes). Unusable entries are ignored and rewritten, and so are

@@ -6,6 +6,7 @@
 
 #include "core/common/atomic_file.h"
 #include "core/mesh/mesh_export.h"
+#include "core/mesh/mesh_import.h"
 #include "support/analytic_meshes.h"
 #include "support/test_paths.h"
 
@@ -61,7 +62,10 @@ TEST(DescriptorCache, TakesTheDescriptorOfAFullFeatureEntryAndRewritesADamagedEn
   const fs::path dir = test::freshTempDir();
   const fs::path mesh = writeBoxObj(dir);
   const auto options = smallOptions(dir / "cache");
-  const auto grid = extractFeatures(mesh, options);  // annotate/extract with the same cache
+  // annotate with the same cache: the features in the frame of the detected up axis
+  FeatureOptions framed = options;
+  framed.up = importMesh(mesh, ImportOptions(std::nullopt, /*detect=*/true)).fileUp;
+  const auto grid = extractFeatures(mesh, framed);
   DescriptorSource source{};
   EXPECT_EQ(extractDescriptor(mesh, options, &source), grid.descriptor);
   EXPECT_EQ(source, DescriptorSource::FeatureCache);
@@ -108,6 +112,30 @@ TEST(DescriptorCache, KeepsTheTopReliefAndRewritesEntriesWrittenWithoutIt) {
   EXPECT_EQ(source, DescriptorSource::Computed);
   extractObjectDescriptor(mesh, options, &source);
   EXPECT_EQ(source, DescriptorSource::DescriptorCache);
+}
+
+TEST(DescriptorCache, ReadsAFileInTheFrameOfItsDetectedUpAxisLikeAnnotate) {
+  const fs::path dir = test::freshTempDir();
+  // A counter-like slab written y-up: wide in x and z (the file's floor plane), low in y.
+  Mesh slab = test::box({-1, 0, -0.5f}, {1, 0.3f, 0.5f});
+  const fs::path file = dir / "slab_yup.obj";
+  exportMesh(slab, file);
+  const auto options = smallOptions(dir / "cache");
+  const Mesh detected = importMesh(file, ImportOptions(std::nullopt, /*detect=*/true));
+  ASSERT_EQ(detected.fileUp, UpAxis::Y);  // else this test would not tell the frames apart
+  FeatureOptions framed = options;
+  framed.cacheDir.clear();
+  framed.up = detected.fileUp;
+  EXPECT_EQ(extractDescriptor(file, options), extractFeatures(file, framed).descriptor);
+  DescriptorSource source{};
+  EXPECT_EQ(extractDescriptor(file, options, &source), extractFeatures(file, framed).descriptor);
+  EXPECT_EQ(source, DescriptorSource::DescriptorCache);
+  // An explicit axis is taken as given.
+  FeatureOptions zUp = options;
+  zUp.up = UpAxis::Z;
+  FeatureOptions zUpUncached = zUp;
+  zUpUncached.cacheDir.clear();
+  EXPECT_EQ(extractDescriptor(file, zUp), extractFeatures(file, zUpUncached).descriptor);
 }
 
 }  // namespace
