@@ -231,11 +231,15 @@ std::vector<Circle> houghCircles(const TopRaster& r, int rMin, int rMax, float e
         // counts. The least of the three rings: a straight line drawn beside a key (an underline)
         // runs along a ring only where it is nearly tangent to it, a band a few pixels wide, and
         // crosses the others at a slant; noise is on all of them.
+        // The rings are read only where the circle itself is covered enough: clutter can only
+        // lower its support.
         const float fx = static_cast<float>(x), fy = static_cast<float>(y);
+        const float drawn = circumferenceSupport(edges, fx, fy, rad);
+        if (drawn < minSupport) continue;
         const float clutter = std::min({circumferenceSupport(edges, fx, fy, rad + 5),
                                         circumferenceSupport(edges, fx, fy, rad + 9),
                                         circumferenceSupport(edges, fx, fy, rad + 13)});
-        const float support = circumferenceSupport(edges, fx, fy, rad) - clutter;
+        const float support = drawn - clutter;
         if (support >= minSupport)
           candidates.push_back({static_cast<float>(x), static_cast<float>(y), rad, support});
       }
