@@ -53,10 +53,6 @@ std::vector<float> categoryInputs(const FeatureGrid& grid, bool topRelief) {
   return categoryInputs(grid.descriptor, sagrid::topRelief(grid.voxels, grid.resolution), true);
 }
 
-std::vector<float> CategoryClassifier::inputsOf(const FeatureGrid& grid) const {
-  return categoryInputs(grid, m_topRelief);
-}
-
 std::string categoryClass(const std::string& labelledCategory) {
   if (labelledCategory == "stove" || labelledCategory == "sink") return labelledCategory;
   return kRejectedCategory;

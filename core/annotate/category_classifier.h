@@ -84,9 +84,7 @@ class CategoryClassifier {
   double threshold() const { return m_threshold; }
   void setThreshold(double t) { m_threshold = t; }
   std::size_t descriptorSize() const { return m_centre.size(); }  // inputs, relief included
-  bool topRelief() const { return m_topRelief; }
-  // categoryInputs(grid, topRelief()).
-  std::vector<float> inputsOf(const FeatureGrid& grid) const;
+  bool topRelief() const { return m_topRelief; }  // inputs: categoryInputs(..., topRelief())
 
   // Feature setup the descriptors came from (checked against the model cards).
   std::string featureBackend, featureConfigHash;

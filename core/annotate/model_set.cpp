@@ -49,7 +49,8 @@ void ModelSet::setCategoryClassifier(CategoryClassifier classifier,
 }
 
 CategoryDecision ModelSet::decideCategory(const FeatureGrid& features) const {
-  if (m_classifier) return m_classifier->classify(m_classifier->inputsOf(features));
+  if (m_classifier)
+    return m_classifier->classify(categoryInputs(features, m_classifier->topRelief()));
   return decideCategory(features.descriptor);
 }
 

@@ -1,7 +1,6 @@
 #include "core/grid/top_relief.h"
 
 #include <algorithm>
-#include <cmath>
 
 namespace sagrid {
 
@@ -89,10 +88,10 @@ std::array<float, kTopReliefSize> topRelief(const std::vector<VoxelIndex>& voxel
   // both the row and the column.
   const int depth = std::max(2, static_cast<int>(0.08 * objectHeight));
   auto high = [&](int x, int y) { return inFootprint(x, y) && height.at(x, y) > top - depth; };
-  ColumnMap highBefore(n, 0), highAfterX(n, 0), highBeforeY(n, 0), highAfterY(n, 0);
+  ColumnMap highBeforeX(n, 0), highAfterX(n, 0), highBeforeY(n, 0), highAfterY(n, 0);
   for (int y = 0; y < n; ++y)
     for (int x = 0; x < n; ++x) {
-      highBefore.at(x, y) = high(x, y) || (x > 0 && highBefore.at(x - 1, y));
+      highBeforeX.at(x, y) = high(x, y) || (x > 0 && highBeforeX.at(x - 1, y));
       highBeforeY.at(x, y) = high(x, y) || (y > 0 && highBeforeY.at(x, y - 1));
     }
   for (int y = n - 1; y >= 0; --y)
@@ -113,7 +112,7 @@ std::array<float, kTopReliefSize> topRelief(const std::vector<VoxelIndex>& voxel
       const int h = height.at(x, y);
       ++footprint;
       flat += h >= top - 1;
-      if (h <= top - depth && highBefore.at(x, y) && highAfterX.at(x, y) && highBeforeY.at(x, y) &&
+      if (h <= top - depth && highBeforeX.at(x, y) && highAfterX.at(x, y) && highBeforeY.at(x, y) &&
           highAfterY.at(x, y)) {
         ++basin;
         basinDepth += top - h;
