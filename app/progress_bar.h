@@ -17,7 +17,7 @@ class ProgressBar {
   // `done` items finished; `current` names the item being worked on (shown shortened).
   void update(std::size_t done, const std::string& current = "");
   void finish();
-  // A new total (e.g. once a timed first epoch fixes the epoch count); elapsed time carries on.
+  // A new total (e.g. a time budget re-planning the epoch count); elapsed time carries on.
   void setTotal(std::size_t total) { m_total = total; }
 
   // "12s", "3m05s", "1h02m" — exposed for tests.

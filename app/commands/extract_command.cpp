@@ -7,8 +7,10 @@
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <optional>
 
 #include "app/command_registry.h"
+#include "app/commands/up_axis_option.h"
 #include "app/progress_bar.h"
 #include "core/common/atomic_file.h"
 #include "core/common/error.h"
@@ -44,6 +46,23 @@ sagrid::FeatureOptions toFeatureOptions(const ExtractOptions& o) {
   if (o.aggregation == "mean") f.aggregation = sagrid::Aggregation::Mean;
   if (o.aggregation == "occlusion") f.aggregation = sagrid::Aggregation::OcclusionAware;
   return f;
+}
+
+struct FramedOptions {
+  sagrid::FeatureOptions options;     // with the up axis the features are read in
+  std::optional<float> upConfidence;  // set when the axis was detected
+};
+
+// Without --up the up axis is detected from the geometry as `annotate` and `filter` do, so the
+// features of a y-up OBJ are not those of the object lying on its side.
+FramedOptions inFileFrame(const sagrid::FeatureOptions& options,
+                          const std::filesystem::path& mesh) {
+  FramedOptions framed{options, std::nullopt};
+  if (options.up) return framed;
+  const sagrid::Mesh m = sagrid::importMesh(mesh, sagrid::ImportOptions(std::nullopt, true));
+  framed.options.up = m.fileUp;
+  if (m.fileUpDetected) framed.upConfidence = m.fileUpConfidence;
+  return framed;
 }
 
 // Renders and previews need the mesh itself; only imported when asked for.
@@ -93,12 +112,7 @@ void setupExtract(CLI::App& root) {
   cmd->add_option(
       "--cache", o->cache,
       "Feature cache folder (keyed by mesh sha256 + feature config; damaged entries are rebuilt)");
-  cmd->add_option("--up", o->up,
-                  "Up axis of the file: x, -x, y, -y, z or -z (write --up=-y for negative "
-                  "axes); default: y for glTF/GLB, else z")
-      ->check([](const std::string& v) {
-        return sagrid::parseUpAxis(v) ? std::string() : "must be x, -x, y, -y, z or -z, got " + v;
-      });
+  sagrid::app::addUpAxisOption(*cmd, o->up, sagrid::app::kDetectedUpDefault);
   cmd->add_option("--dinov2-model", o->dinov2Model,
                   "TorchScript DINOv2 file (packaging/python/export_dinov2.py) for dinov2, and for "
                   "trellis descriptors");
@@ -142,10 +156,15 @@ void setupExtract(CLI::App& root) {
       const auto start = std::chrono::steady_clock::now();
       try {
         bool cached = false;
-        const sagrid::FeatureGrid grid = sagrid::extractFeatures(file.path, options, &cached);
-        sagrid::writeFeatureNpz(fs::path(o->out) / (file.id + ".npz"), grid,
-                                {{"id", file.id}, {"mesh", fs::absolute(file.path).string()}});
-        writeExtras(*o, options, file, grid);
+        const FramedOptions framed = inFileFrame(options, file.path);
+        const sagrid::FeatureGrid grid =
+            sagrid::extractFeatures(file.path, framed.options, &cached);
+        nlohmann::json meta = {{"id", file.id},
+                               {"mesh", fs::absolute(file.path).string()},
+                               {"up", sagrid::toString(*framed.options.up)}};
+        if (framed.upConfidence) meta["up_confidence"] = *framed.upConfidence;
+        sagrid::writeFeatureNpz(fs::path(o->out) / (file.id + ".npz"), grid, meta);
+        writeExtras(*o, framed.options, file, grid);
         cachedCount += cached;
         seconds.push_back(
             std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());

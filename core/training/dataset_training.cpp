@@ -124,9 +124,23 @@ void checkInitMatches(const model::ModelCard& init, const model::ModelCard& requ
          std::to_string(requested.gridResolution) + "^3");
 }
 
+// A training sample's features as the grid a prediction reads.
+FeatureGrid sampleFeatureGrid(const TrainingSample& s, const model::ModelCard& card) {
+  FeatureGrid g;
+  g.backend = card.featureBackend;
+  g.configHash = card.featureConfigHash;
+  g.resolution = s.resolution;
+  g.channels = s.channels;
+  g.voxels = s.voxels;
+  g.values = s.features;
+  g.descriptor = s.descriptor;
+  return g;
+}
+
 }  // namespace
 
 DatasetTrainingResult trainFromDataset(const DatasetTrainingOptions& options) {
+  const auto callStart = Clock::now();
   const auto [category, type] = model::splitModelName(options.modelName);
   std::vector<TrainingDataSource> sources = options.datasets;
   if (sources.empty()) {
@@ -269,6 +283,23 @@ DatasetTrainingResult trainFromDataset(const DatasetTrainingOptions& options) {
   model::AffordanceModel net =
       init ? model::AffordanceModel::load(initCard) : model::AffordanceModel(card, training.seed);
   if (init) net.card() = card;
+  if (training.epochs <= 0 && training.minutes > 0) {
+    // A time budget is the whole call's: what the features took, and what the count calibration
+    // after the loop will take (one prediction timed now, times the objects), come off the
+    // loop's share; at least one epoch runs whatever is left.
+    const auto predictionStart = Clock::now();
+    net.predictDistances(sampleFeatureGrid(samples.front(), card));
+    const double calibrationSeconds =
+        secondsSince(predictionStart) * static_cast<double>(samples.size());
+    const double loopSeconds =
+        training.minutes * 60.0 - secondsSince(callStart) - calibrationSeconds;
+    logger()->info(
+        "{}: {:.1f} of {:.1f} s for the training loop ({:.1f} s features so far, "
+        "{:.1f} s kept for the count calibration)",
+        options.modelName, std::max(loopSeconds, 0.0), training.minutes * 60.0,
+        secondsSince(callStart), calibrationSeconds);
+    training.minutes = std::max(loopSeconds, 1.0) / 60.0;
+  }
   const auto trainStart = Clock::now();
   result.curve = model::trainModel(net, samples, training);
   result.trainingSeconds = secondsSince(trainStart);
@@ -278,15 +309,7 @@ DatasetTrainingResult trainFromDataset(const DatasetTrainingOptions& options) {
   std::vector<std::vector<Eigen::Vector3f>> truths;
   double argminError = 0;
   for (const auto& s : samples) {
-    FeatureGrid g;
-    g.backend = card.featureBackend;
-    g.configHash = card.featureConfigHash;
-    g.resolution = s.resolution;
-    g.channels = s.channels;
-    g.voxels = s.voxels;
-    g.values = s.features;
-    g.descriptor = s.descriptor;
-    PredictedField f{s.resolution, s.voxels, net.predictDistances(g)};
+    PredictedField f{s.resolution, s.voxels, net.predictDistances(sampleFeatureGrid(s, card))};
     float nearest = 1e9f;
     const Eigen::Vector3f p = argminPoint(f, {}).position;
     for (const auto& t : s.targets) nearest = std::min(nearest, (p - t).norm());

@@ -125,6 +125,14 @@ bool loadCheckpoint(const fs::path& file, SAGridNet& net, torch::optim::AdamW& o
 
 }  // namespace
 
+int plannedEpochs(int epochsDone, double elapsedSeconds, double lastEpochSeconds,
+                  double budgetSeconds) {
+  const double left = budgetSeconds - elapsedSeconds;
+  if (!(lastEpochSeconds > 0) || !(left > 0)) return std::max(1, epochsDone);
+  const double more = std::floor(left / lastEpochSeconds);
+  return std::max(1, epochsDone + static_cast<int>(std::min(more, 1e6)));
+}
+
 std::vector<EpochRecord> trainModel(AffordanceModel& model,
                                     const std::vector<TrainingSample>& samples,
                                     const TrainingOptions& options) {
@@ -148,6 +156,7 @@ std::vector<EpochRecord> trainModel(AffordanceModel& model,
   if (state.epochsTotal == 0)
     state.epochsTotal = options.epochs > 0 ? options.epochs : kDefaultEpochs;
   const bool timed = options.epochs <= 0 && options.minutes > 0 && state.epochsDone == 0;
+  const double budgetSeconds = options.minutes * 60.0;
 
   const int batchSize = std::max(1, options.batchSize);
   const std::size_t stepsPerEpoch = (samples.size() + batchSize - 1) / batchSize;
@@ -158,6 +167,7 @@ std::vector<EpochRecord> trainModel(AffordanceModel& model,
   net->train();
   for (int epoch = state.epochsDone + 1; epoch <= state.epochsTotal; ++epoch) {
     // Seeded per epoch, so a resumed run continues with the same draws as an uninterrupted one.
+    const double epochStart = elapsed();
     std::mt19937 rng(options.seed * 7919u + static_cast<unsigned>(epoch));
     torch::manual_seed(options.seed * 7919u + static_cast<unsigned>(epoch));
     const std::vector<std::size_t> order = drawEpochOrder(samples.size(), options.sampleWeights, rng);
@@ -169,7 +179,7 @@ std::vector<EpochRecord> trainModel(AffordanceModel& model,
         // Until the first epoch is timed, plan (schedule, progress) from the steps so far.
         const double perEpoch =
             elapsed() / static_cast<double>(step) * static_cast<double>(stepsPerEpoch);
-        state.epochsTotal = std::max(1, static_cast<int>(options.minutes * 60.0 / perEpoch));
+        state.epochsTotal = plannedEpochs(0, 0.0, perEpoch, budgetSeconds);
       }
       // Cosine schedule over all steps of the run, from learningRate down to 1% of it.
       const double progress = (static_cast<double>(epoch - 1) * stepsPerEpoch + step) /
@@ -211,11 +221,16 @@ std::vector<EpochRecord> trainModel(AffordanceModel& model,
         options.onProgress(p);
       }
     }
-    if (timed && epoch == 1) {
-      const double perEpoch = elapsed();
-      state.epochsTotal = std::max(1, static_cast<int>(options.minutes * 60.0 / perEpoch));
-      logger()->info("{}: {:.1f} s per epoch, {} epochs fit in {} min", impl.card.name, perEpoch,
-                     state.epochsTotal, options.minutes);
+    if (timed) {
+      // Re-planned after every epoch from the time left at the last epoch's pace, and the cosine
+      // schedule follows the new count from the next step on.
+      const double lastEpoch = elapsed() - epochStart;
+      const int planned = plannedEpochs(epoch, elapsed(), lastEpoch, budgetSeconds);
+      if (epoch == 1 || planned != state.epochsTotal)
+        logger()->info("{}: epoch {} took {:.1f} s, {:.1f} of {:.1f} s left: {} epochs in all",
+                       impl.card.name, epoch, lastEpoch, budgetSeconds - elapsed(), budgetSeconds,
+                       planned);
+      state.epochsTotal = planned;
     }
     state.epochsDone = epoch;
     state.curve.push_back({epoch, lossSum / stepsPerEpoch, lr, secondsBefore + elapsed()});

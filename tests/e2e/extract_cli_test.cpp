@@ -7,6 +7,8 @@
 #include <nlohmann/json.hpp>
 
 #include "core/features/feature_npz.h"
+#include "core/mesh/mesh_export.h"
+#include "support/analytic_meshes.h"
 #include "support/test_paths.h"
 
 namespace sagrid {
@@ -36,6 +38,31 @@ TEST(ExtractCommand, FolderWithCacheAndOutputs) {
   EXPECT_EQ(g.channels, 16);
   EXPECT_EQ(meta["id"], "libero__flat_stove");
   EXPECT_GT(g.voxels.size(), 500u);
+}
+
+TEST(ExtractCommand, ReadsAnObjInTheFrameOfItsDetectedUpAxisLikeAnnotate) {
+  const fs::path dir = test::freshTempDir("extract_cli_up");
+  // A counter-like slab written y-up: wide in x and z (the file's floor plane), low in y.
+  const fs::path file = dir / "slab_yup.obj";
+  exportMesh(test::box({-1, 0, -0.5f}, {1, 0.3f, 0.5f}), file);
+  const std::string common = shellQuote(file.string()) + " --resolution 32 --views 4 --out ";
+  auto r = runSagrid("extract " + common + shellQuote((dir / "detected").string()));
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  r = runSagrid("extract " + common + shellQuote((dir / "given").string()) + " --up y");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  r = runSagrid("extract " + common + shellQuote((dir / "zup").string()) + " --up z");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  nlohmann::json meta, givenMeta;
+  const FeatureGrid detected = readFeatureNpz(dir / "detected" / "slab_yup.npz", &meta);
+  const FeatureGrid given = readFeatureNpz(dir / "given" / "slab_yup.npz", &givenMeta);
+  const FeatureGrid zUp = readFeatureNpz(dir / "zup" / "slab_yup.npz");
+  EXPECT_EQ(meta["up"], "y");
+  EXPECT_TRUE(meta.contains("up_confidence"));
+  EXPECT_EQ(givenMeta["up"], "y");
+  EXPECT_FALSE(givenMeta.contains("up_confidence"));  // given, not detected
+  EXPECT_EQ(detected.voxels, given.voxels);
+  EXPECT_EQ(detected.descriptor, given.descriptor);
+  EXPECT_NE(detected.voxels, zUp.voxels);  // the frames differ, so the test tells them apart
 }
 
 TEST(ExtractCommand, ExportsViewsInTrellisLayout) {

@@ -1,8 +1,10 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <fstream>
 #include <random>
+#include <thread>
 
 #include "core/common/atomic_file.h"
 #include "core/common/error.h"
@@ -90,6 +92,34 @@ TEST(Training, RejectsEmptySetsAndSamplesWithoutTargets) {
   auto sample = plateSample(4, 4, 1);
   sample.targets.clear();
   EXPECT_THROW(trainModel(model, {sample}, {}), InvalidArgument);
+}
+
+TEST(Training, ATimeBudgetIsPlannedFromTheTimeLeftAtTheLastEpochsPace) {
+  EXPECT_EQ(plannedEpochs(0, 0, 10, 60), 6);   // first epoch extrapolated: 6 fit
+  EXPECT_EQ(plannedEpochs(1, 10, 10, 60), 6);  // on pace
+  EXPECT_EQ(plannedEpochs(3, 40, 20, 60), 4);  // epoch 3 took twice as long: one more fits
+  EXPECT_EQ(plannedEpochs(3, 55, 20, 60), 3);  // none more fits: stop after this one
+  EXPECT_EQ(plannedEpochs(3, 30, 5, 60), 9);   // the machine got idle: six more
+  EXPECT_EQ(plannedEpochs(4, 70, 10, 60), 4);  // over budget: never fewer than done
+  EXPECT_EQ(plannedEpochs(0, 0, 100, 60), 1);  // at least one epoch
+  EXPECT_EQ(plannedEpochs(0, 0, 0, 60), 1);    // no pace yet
+}
+
+TEST(Training, AMachineThatGetsBusyShortensATimedRun) {
+  const std::vector<TrainingSample> samples = {plateSample(4, 4, 1), plateSample(10, 6, 2)};
+  TrainingOptions options;
+  options.minutes = 2.0 / 60.0;
+  options.batchSize = 2;  // one step per epoch
+  options.augmentation.warpVoxels = 0;
+  // Epoch 1 runs at full speed (a plan of many epochs); from epoch 2 on every step is slowed by
+  // 0.4 s, as by a GUI drawing beside the run: the plan must shrink to what still fits.
+  options.onProgress = [](const TrainingProgress& p) {
+    if (p.epoch >= 2) std::this_thread::sleep_for(std::chrono::milliseconds(400));
+  };
+  AffordanceModel model(smallCard(), 1);
+  const auto curve = trainModel(model, samples, options);
+  EXPECT_GE(curve.size(), 2u);
+  EXPECT_LE(curve.size(), 8u);  // 2 s at 0.4 s an epoch, not the count epoch 1 planned
 }
 
 TEST(Training, ResumeContinuesToTheSameResultAsOneRun) {
