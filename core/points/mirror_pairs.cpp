@@ -45,10 +45,19 @@ VoxelIndex mirrored(VoxelIndex v, const MirrorPlane& plane) {
   return v;
 }
 
-// Share of the occupied voxels within `radius` of `centre` whose mirror image is occupied (0 when
-// the neighbourhood is empty).
+// Whether a voxel within `tolerance` (Chebyshev) of `v` is occupied.
+bool occupiedNear(const DenseField& dense, const VoxelIndex& v, int tolerance) {
+  for (int a = -tolerance; a <= tolerance; ++a)
+    for (int b = -tolerance; b <= tolerance; ++b)
+      for (int c = -tolerance; c <= tolerance; ++c)
+        if (dense.at({v.i + a, v.j + b, v.k + c}) >= 0) return true;
+  return false;
+}
+
+// Share of the occupied voxels within `radius` of `centre` whose mirror image has an occupied
+// voxel within `tolerance` (0 when the neighbourhood is empty).
 float localMatch(const DenseField& dense, const VoxelIndex& centre, const MirrorPlane& plane,
-                 int radius) {
+                 int radius, int tolerance) {
   int occupied = 0, matched = 0;
   for (int a = -radius; a <= radius; ++a)
     for (int b = -radius; b <= radius; ++b)
@@ -56,7 +65,7 @@ float localMatch(const DenseField& dense, const VoxelIndex& centre, const Mirror
         const VoxelIndex v{centre.i + a, centre.j + b, centre.k + c};
         if (dense.at(v) < 0) continue;
         ++occupied;
-        matched += dense.at(mirrored(v, plane)) >= 0;
+        matched += occupiedNear(dense, mirrored(v, plane), tolerance);
       }
   return occupied ? static_cast<float>(matched) / static_cast<float>(occupied) : 0.0f;
 }
@@ -137,7 +146,8 @@ std::vector<ExtractedPoint> completeMirrorPairs(const PredictedField& field,
         !clearOf(out, image))
       continue;
     const VoxelIndex at = voxelContaining(p.position, field.resolution);
-    if (localMatch(dense, at, *plane, settings.neighbourhoodVoxels) < settings.minLocalMatch)
+    if (localMatch(dense, at, *plane, settings.neighbourhoodVoxels,
+                   std::max(settings.matchToleranceVoxels, 0)) < settings.minLocalMatch)
       continue;
     const float distance =
         nearbyDistance(field, dense, voxelContaining(image, field.resolution), kFieldRadius);

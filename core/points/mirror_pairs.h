@@ -27,6 +27,10 @@ struct MirrorPairSettings {
   float minSymmetry = 0.85f;    // the object: share of voxels with an occupied mirror image
   float minLocalMatch = 0.9f;   // the point's neighbourhood: the same share there
   int neighbourhoodVoxels = 3;  // Chebyshev radius of that neighbourhood
+  // A neighbourhood voxel matches when its mirror image has an occupied voxel within this
+  // Chebyshev distance: voxelization puts the two sides of a symmetric part up to a voxel apart
+  // (a tap handle turned a little, a surface on a voxel boundary). 0 = the image voxel itself.
+  int matchToleranceVoxels = 1;
   // The field at the image: its smallest predicted distance within two voxels must not exceed
   // the point's own by more than this (normalized units); < 0 = no condition on the field.
   float maxDistanceAbovePoint = 0.05f;

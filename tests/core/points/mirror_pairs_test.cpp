@@ -106,6 +106,22 @@ TEST(MirrorPairs, AddsTheTwinTapTheCountMissed) {
   EXPECT_NEAR(points[1].confidence, std::exp(-points[1].distance / 0.02f), 1e-5f);
 }
 
+TEST(MirrorPairs, AddsATwinVoxelizedOneVoxelOff) {
+  // The right tap landed one voxel further out (columns 24..25, where 23..24 would mirror 7..8),
+  // as voxelization does to real taps: read in a small neighbourhood, half the left tap's voxels
+  // have their exact image occupied, all of them one within a voxel.
+  const auto voxels = counterWithTaps({7, 24});
+  const auto f = fieldOf(voxels, {tapTop(7), tapTop(24)}, {0.0f, 0.03f});
+  MirrorPairSettings settings;
+  settings.neighbourhoodVoxels = 1;
+  const auto points = completeMirrorPairs(f, {pointAt(f, tapTop(7))}, suppression(0.1f), settings);
+  ASSERT_EQ(points.size(), 2u);
+  EXPECT_LT((points[1].position - tapTop(23)).norm(), 1e-5f);  // the exact image
+  settings.matchToleranceVoxels = 0;
+  EXPECT_EQ(completeMirrorPairs(f, {pointAt(f, tapTop(7))}, suppression(0.1f), settings).size(),
+            1u);
+}
+
 TEST(MirrorPairs, NoTwinWhereTheShapeDiffers) {
   // One tap on a symmetric counter: the object is still symmetric (the tap is small), but the
   // tap's neighbourhood has nothing at its mirror image.
