@@ -21,7 +21,7 @@ struct TrainingProgress {
   int epoch = 0;  // 1-based, current epoch
   int epochs = 0;
   std::size_t step = 0;   // steps done in total
-  std::size_t steps = 0;  // total steps (re-planned after every epoch when timed)
+  std::size_t steps = 0;  // total steps (re-planned before every step when timed)
   double loss = 0;        // running mean loss of the current epoch
   double seconds = 0;     // elapsed
 };
@@ -34,7 +34,7 @@ struct EpochRecord {
 };
 
 struct TrainingOptions {
-  int epochs = 0;      // 0: from `minutes` (planned anew after every epoch), else 40
+  int epochs = 0;      // 0: from `minutes` (planned anew before every step), else 40
   double minutes = 0;  // time budget of the loop; used only when epochs == 0
   int batchSize = 4;
   double learningRate = 3e-3;
@@ -60,14 +60,13 @@ struct TrainingOptions {
 
 class AffordanceModel;
 
-// The epoch count a run with a time budget plans in total once `epochsDone` epochs are done, the
-// last of which took `lastEpochSeconds`, with `elapsedSeconds` of `budgetSeconds` spent: as many
-// more as fit at the last epoch's pace, so a machine that gets busy (a GUI drawing beside the run)
-// shortens the run instead of stretching it past the budget, and one that gets idle lengthens it.
-// Never fewer than `epochsDone`, never fewer than 1. During the first epoch, call it with
-// epochsDone = 0 and the epoch's time extrapolated from its steps so far.
-int plannedEpochs(int epochsDone, double elapsedSeconds, double lastEpochSeconds,
-                  double budgetSeconds);
+// The step count a run with a time budget plans in total once `stepsDone` steps are done, with
+// `elapsedSeconds` of `budgetSeconds` spent: as many more as fit at `secondsPerStep` (the pace of
+// the current epoch so far), so a machine that gets busy (a GUI drawing beside the run) shortens
+// the run instead of stretching it past the budget, and one that gets idle lengthens it. Never
+// fewer than `stepsDone`, never fewer than 1.
+std::size_t plannedSteps(std::size_t stepsDone, double elapsedSeconds, double secondsPerStep,
+                         double budgetSeconds);
 
 // Trains `model` in place on `samples` (each with at least one target). Returns the per-epoch
 // loss curve. Throws InvalidArgument for an empty sample list or samples without targets.

@@ -54,7 +54,8 @@ torch::Tensor batchLoss(const torch::Tensor& predicted, const NetworkBatch& batc
 
 struct Checkpoint {
   int epochsDone = 0;
-  int epochsTotal = 0;
+  int epochsTotal = 0;         // the last epoch may be cut short by a time budget
+  std::size_t stepsTotal = 0;  // 0 = epochsTotal full epochs (checkpoints before the budget)
   std::vector<EpochRecord> curve;
 };
 
@@ -74,6 +75,7 @@ void saveCheckpoint(const fs::path& file, SAGridNet& net, torch::optim::AdamW& o
   archive.write("optimizer", optimizerArchive);
   const nlohmann::json meta = {{"epochs_done", state.epochsDone},
                                {"epochs_total", state.epochsTotal},
+                               {"steps_total", state.stepsTotal},
                                {"architecture", card.architecture},
                                {"name", card.name},
                                {"curve", curveToJson(state.curve)}};
@@ -117,6 +119,7 @@ bool loadCheckpoint(const fs::path& file, SAGridNet& net, torch::optim::AdamW& o
   optimizer.load(optimizerArchive);
   state.epochsDone = meta.at("epochs_done").get<int>();
   state.epochsTotal = meta.at("epochs_total").get<int>();
+  state.stepsTotal = meta.value("steps_total", std::size_t{0});
   for (const auto& e : meta.at("curve"))
     state.curve.push_back(
         {e[0].get<int>(), e[1].get<double>(), e[2].get<double>(), e[3].get<double>()});
@@ -125,12 +128,13 @@ bool loadCheckpoint(const fs::path& file, SAGridNet& net, torch::optim::AdamW& o
 
 }  // namespace
 
-int plannedEpochs(int epochsDone, double elapsedSeconds, double lastEpochSeconds,
-                  double budgetSeconds) {
+std::size_t plannedSteps(std::size_t stepsDone, double elapsedSeconds, double secondsPerStep,
+                         double budgetSeconds) {
   const double left = budgetSeconds - elapsedSeconds;
-  if (!(lastEpochSeconds > 0) || !(left > 0)) return std::max(1, epochsDone);
-  const double more = std::floor(left / lastEpochSeconds);
-  return std::max(1, epochsDone + static_cast<int>(std::min(more, 1e6)));
+  const std::size_t atLeast = std::max<std::size_t>(1, stepsDone);
+  if (!(secondsPerStep > 0) || !(left > 0)) return atLeast;
+  const double more = std::floor(std::min(left / secondsPerStep, 1e12));
+  return std::max(atLeast, stepsDone + static_cast<std::size_t>(more));
 }
 
 std::vector<EpochRecord> trainModel(AffordanceModel& model,
@@ -153,37 +157,43 @@ std::vector<EpochRecord> trainModel(AffordanceModel& model,
   if (options.resume && !options.checkpointFile.empty() &&
       loadCheckpoint(options.checkpointFile, net, optimizer, state, impl.card))
     logger()->info("resuming {} after epoch {}", impl.card.name, state.epochsDone);
-  if (state.epochsTotal == 0)
-    state.epochsTotal = options.epochs > 0 ? options.epochs : kDefaultEpochs;
-  const bool timed = options.epochs <= 0 && options.minutes > 0 && state.epochsDone == 0;
-  const double budgetSeconds = options.minutes * 60.0;
-
   const int batchSize = std::max(1, options.batchSize);
   const std::size_t stepsPerEpoch = (samples.size() + batchSize - 1) / batchSize;
+  if (state.epochsTotal == 0)
+    state.epochsTotal = options.epochs > 0 ? options.epochs : kDefaultEpochs;
+  if (state.stepsTotal == 0) state.stepsTotal = state.epochsTotal * stepsPerEpoch;
+  // A time budget plans in steps, anew before every step from the pace of the current epoch so
+  // far (the last epoch's at an epoch's first step): a machine that gets busy shortens the run,
+  // and the last epoch may stop part way. A resumed run keeps its plan.
+  const bool timed = options.epochs <= 0 && options.minutes > 0 && state.epochsDone == 0;
+  const double budgetSeconds = options.minutes * 60.0;
   const double secondsBefore = state.curve.empty() ? 0.0 : state.curve.back().seconds;
   const auto start = Clock::now();
   auto elapsed = [&] { return std::chrono::duration<double>(Clock::now() - start).count(); };
+  double lastStepSeconds = 0;  // the pace of the last epoch
 
   net->train();
-  for (int epoch = state.epochsDone + 1; epoch <= state.epochsTotal; ++epoch) {
+  std::size_t stepsDone = static_cast<std::size_t>(state.epochsDone) * stepsPerEpoch;
+  for (int epoch = state.epochsDone + 1; stepsDone < state.stepsTotal; ++epoch) {
     // Seeded per epoch, so a resumed run continues with the same draws as an uninterrupted one.
-    const double epochStart = elapsed();
     std::mt19937 rng(options.seed * 7919u + static_cast<unsigned>(epoch));
     torch::manual_seed(options.seed * 7919u + static_cast<unsigned>(epoch));
     const std::vector<std::size_t> order = drawEpochOrder(samples.size(), options.sampleWeights, rng);
+    const double epochStart = elapsed();
     double lossSum = 0;
     double lr = options.learningRate;
-    for (std::size_t step = 0; step < stepsPerEpoch; ++step) {
+    std::size_t step = 0;
+    for (; step < stepsPerEpoch; ++step, ++stepsDone) {
       if (options.cancel && options.cancel->load()) throw Cancelled();
-      if (timed && epoch == 1 && step > 0) {
-        // Until the first epoch is timed, plan (schedule, progress) from the steps so far.
-        const double perEpoch =
-            elapsed() / static_cast<double>(step) * static_cast<double>(stepsPerEpoch);
-        state.epochsTotal = plannedEpochs(0, 0.0, perEpoch, budgetSeconds);
+      if (timed) {
+        const double pace =
+            step > 0 ? (elapsed() - epochStart) / static_cast<double>(step) : lastStepSeconds;
+        if (pace > 0) state.stepsTotal = plannedSteps(stepsDone, elapsed(), pace, budgetSeconds);
       }
+      if (stepsDone >= state.stepsTotal) break;
       // Cosine schedule over all steps of the run, from learningRate down to 1% of it.
-      const double progress = (static_cast<double>(epoch - 1) * stepsPerEpoch + step) /
-                              (static_cast<double>(state.epochsTotal) * stepsPerEpoch);
+      const double progress =
+          static_cast<double>(stepsDone) / static_cast<double>(state.stepsTotal);
       lr = options.learningRate * (0.01 + 0.99 * 0.5 * (1.0 + std::cos(M_PI * progress)));
       for (auto& group : optimizer.param_groups())
         static_cast<torch::optim::AdamWOptions&>(group.options()).lr(lr);
@@ -213,27 +223,26 @@ std::vector<EpochRecord> trainModel(AffordanceModel& model,
       if (options.onProgress) {
         TrainingProgress p;
         p.epoch = epoch;
-        p.epochs = state.epochsTotal;
-        p.step = (epoch - 1) * stepsPerEpoch + step + 1;
-        p.steps = state.epochsTotal * stepsPerEpoch;
+        p.epochs = static_cast<int>((state.stepsTotal + stepsPerEpoch - 1) / stepsPerEpoch);
+        p.step = stepsDone + 1;
+        p.steps = state.stepsTotal;
         p.loss = lossSum / static_cast<double>(step + 1);
         p.seconds = secondsBefore + elapsed();
         options.onProgress(p);
       }
     }
-    if (timed) {
-      // Re-planned after every epoch from the time left at the last epoch's pace, and the cosine
-      // schedule follows the new count from the next step on.
-      const double lastEpoch = elapsed() - epochStart;
-      const int planned = plannedEpochs(epoch, elapsed(), lastEpoch, budgetSeconds);
-      if (epoch == 1 || planned != state.epochsTotal)
-        logger()->info("{}: epoch {} took {:.1f} s, {:.1f} of {:.1f} s left: {} epochs in all",
-                       impl.card.name, epoch, lastEpoch, budgetSeconds - elapsed(), budgetSeconds,
-                       planned);
-      state.epochsTotal = planned;
-    }
+    if (step == 0) break;  // the budget ran out at the epoch's start
+    lastStepSeconds = (elapsed() - epochStart) / static_cast<double>(step);
+    state.epochsTotal = static_cast<int>((state.stepsTotal + stepsPerEpoch - 1) / stepsPerEpoch);
+    if (timed)
+      logger()->info(
+          "{}: epoch {} ({} steps) took {:.1f} s, {:.1f} of {:.1f} s left: {} steps "
+          "in all",
+          impl.card.name, epoch, step, elapsed() - epochStart, budgetSeconds - elapsed(),
+          budgetSeconds, state.stepsTotal);
     state.epochsDone = epoch;
-    state.curve.push_back({epoch, lossSum / stepsPerEpoch, lr, secondsBefore + elapsed()});
+    state.curve.push_back(
+        {epoch, lossSum / static_cast<double>(step), lr, secondsBefore + elapsed()});
     if (!options.checkpointFile.empty()) {
       const auto saveStart = Clock::now();
       saveCheckpoint(options.checkpointFile, net, optimizer, state, impl.card);
