@@ -48,29 +48,31 @@ sagrid::FeatureOptions toFeatureOptions(const ExtractOptions& o) {
   return f;
 }
 
-struct FramedOptions {
+struct FramedFile {
   sagrid::FeatureOptions options;     // with the up axis the features are read in
   std::optional<float> upConfidence;  // set when the axis was detected
+  std::optional<sagrid::Mesh> mesh;   // imported to detect the axis: features and extras reuse it
 };
 
 // Without --up the up axis is detected from the geometry as `annotate` and `filter` do, so the
 // features of a y-up OBJ are not those of the object lying on its side.
-FramedOptions inFileFrame(const sagrid::FeatureOptions& options,
-                          const std::filesystem::path& mesh) {
-  FramedOptions framed{options, std::nullopt};
+FramedFile inFileFrame(const sagrid::FeatureOptions& options, const std::filesystem::path& path) {
+  FramedFile framed{options, std::nullopt, std::nullopt};
   if (options.up) return framed;
-  const sagrid::Mesh m = sagrid::importMesh(mesh, sagrid::ImportOptions(std::nullopt, true));
-  framed.options.up = m.fileUp;
-  if (m.fileUpDetected) framed.upConfidence = m.fileUpConfidence;
+  framed.mesh = sagrid::importMesh(path, sagrid::ImportOptions(std::nullopt, /*detect=*/true));
+  framed.options.up = framed.mesh->fileUp;
+  if (framed.mesh->fileUpDetected) framed.upConfidence = framed.mesh->fileUpConfidence;
   return framed;
 }
 
-// Renders and previews need the mesh itself; only imported when asked for.
-void writeExtras(const ExtractOptions& o, const sagrid::FeatureOptions& f,
-                 const sagrid::MeshFile& file, const sagrid::FeatureGrid& grid) {
+// Renders and previews need the mesh itself; imported here when asked for and not imported yet.
+void writeExtras(const ExtractOptions& o, const FramedFile& framed, const sagrid::MeshFile& file,
+                 const sagrid::FeatureGrid& grid) {
   namespace fs = std::filesystem;
   if (o.exportViews.empty() && o.preview.empty()) return;
-  const sagrid::Mesh mesh = sagrid::importMesh(file.path, sagrid::ImportOptions(f.up));
+  const sagrid::FeatureOptions& f = framed.options;
+  const sagrid::Mesh mesh =
+      framed.mesh ? *framed.mesh : sagrid::importMesh(file.path, sagrid::ImportOptions(f.up));
   if (!o.exportViews.empty()) {
     const sagrid::Mesh normalized = sagrid::normalizedCopy(mesh, grid.normalization);
     const auto cameras = sagrid::trellisViews(f.views, sagrid::seedFromKey(mesh.sha256));
@@ -156,15 +158,19 @@ void setupExtract(CLI::App& root) {
       const auto start = std::chrono::steady_clock::now();
       try {
         bool cached = false;
-        const FramedOptions framed = inFileFrame(options, file.path);
+        const FramedFile framed = inFileFrame(options, file.path);
+        // Without a cache the mesh imported for the axis gives the features; with one, a cached
+        // entry spares the features (the import for the axis is needed either way).
         const sagrid::FeatureGrid grid =
-            sagrid::extractFeatures(file.path, framed.options, &cached);
+            framed.mesh && options.cacheDir.empty()
+                ? sagrid::computeFeatures(*framed.mesh, framed.options)
+                : sagrid::extractFeatures(file.path, framed.options, &cached);
         nlohmann::json meta = {{"id", file.id},
                                {"mesh", fs::absolute(file.path).string()},
                                {"up", sagrid::toString(*framed.options.up)}};
         if (framed.upConfidence) meta["up_confidence"] = *framed.upConfidence;
         sagrid::writeFeatureNpz(fs::path(o->out) / (file.id + ".npz"), grid, meta);
-        writeExtras(*o, framed.options, file, grid);
+        writeExtras(*o, framed, file, grid);
         cachedCount += cached;
         seconds.push_back(
             std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());

@@ -40,7 +40,7 @@ struct TrainCommandOptions {
 
 constexpr double kPresetNearWeight = 30;
 // --preset default's budget per model: 13 minutes (features, training and calibration; the
-// epoch count planned anew after every epoch from the time left). `make models` then fine-tunes the
+// steps planned anew before every step from the time left). `make models` then fine-tunes the
 // sink models on the real corpus (4 epochs, about 3.4 minutes), so they train a fixed 16 epochs
 // (about 10 minutes on 2 cores, reproducible) to stay within 15 minutes each.
 constexpr double kPresetMinutes = 13;
@@ -156,7 +156,7 @@ sagrid::DatasetTrainingResult trainOne(const TrainCommandOptions& o,
   };
   t.training.onProgress = [&](const sagrid::model::TrainingProgress& p) {
     if (!trainBar) trainBar = std::make_unique<sagrid::app::ProgressBar>("train " + model, p.steps);
-    trainBar->setTotal(p.steps);  // a time budget re-plans the epoch count after every epoch
+    trainBar->setTotal(p.steps);  // a time budget re-plans the steps before every step
     char status[96];
     std::snprintf(status, sizeof status, "epoch %d/%d loss %.4f", p.epoch, p.epochs, p.loss);
     trainBar->update(p.step, status);
@@ -202,9 +202,9 @@ void setupTrain(CLI::App& root) {
   cmd->add_option("--epochs", o->epochs, "Epochs (default: from --minutes, else 40)")
       ->check(CLI::NonNegativeNumber);
   cmd->add_option("--minutes", o->minutes,
-                  "Time budget of each model, features and count calibration included; the epoch "
-                  "count is planned anew after every epoch from the time left at the last "
-                  "epoch's pace")
+                  "Time budget of each model, features and count calibration included; the steps "
+                  "are planned anew before every step from the time left at the current pace "
+                  "(the last epoch may stop part way)")
       ->check(CLI::NonNegativeNumber);
   cmd->add_option("--batch", o->batch, "Objects per step (default 4)")->check(CLI::PositiveNumber);
   cmd->add_option("--lr", o->lr,

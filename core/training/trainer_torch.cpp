@@ -54,8 +54,7 @@ torch::Tensor batchLoss(const torch::Tensor& predicted, const NetworkBatch& batc
 
 struct Checkpoint {
   int epochsDone = 0;
-  int epochsTotal = 0;         // the last epoch may be cut short by a time budget
-  std::size_t stepsTotal = 0;  // 0 = epochsTotal full epochs (checkpoints before the budget)
+  std::size_t stepsTotal = 0;  // the plan; the last epoch may be cut short by a time budget
   std::vector<EpochRecord> curve;
 };
 
@@ -74,7 +73,6 @@ void saveCheckpoint(const fs::path& file, SAGridNet& net, torch::optim::AdamW& o
   archive.write("net", netArchive);
   archive.write("optimizer", optimizerArchive);
   const nlohmann::json meta = {{"epochs_done", state.epochsDone},
-                               {"epochs_total", state.epochsTotal},
                                {"steps_total", state.stepsTotal},
                                {"architecture", card.architecture},
                                {"name", card.name},
@@ -85,8 +83,10 @@ void saveCheckpoint(const fs::path& file, SAGridNet& net, torch::optim::AdamW& o
   writeFileAtomic(file, out.str());
 }
 
+// `stepsPerEpoch` reads the plan of checkpoints written before it was kept in steps
+// ("epochs_total" full epochs).
 bool loadCheckpoint(const fs::path& file, SAGridNet& net, torch::optim::AdamW& optimizer,
-                    Checkpoint& state, const ModelCard& card) {
+                    Checkpoint& state, const ModelCard& card, std::size_t stepsPerEpoch) {
   if (!fs::exists(file)) return false;
   torch::serialize::InputArchive archive, netArchive, optimizerArchive;
   nlohmann::json meta;
@@ -118,8 +118,9 @@ bool loadCheckpoint(const fs::path& file, SAGridNet& net, torch::optim::AdamW& o
   }
   optimizer.load(optimizerArchive);
   state.epochsDone = meta.at("epochs_done").get<int>();
-  state.epochsTotal = meta.at("epochs_total").get<int>();
-  state.stepsTotal = meta.value("steps_total", std::size_t{0});
+  state.stepsTotal = meta.contains("steps_total")
+                         ? meta.at("steps_total").get<std::size_t>()
+                         : meta.at("epochs_total").get<std::size_t>() * stepsPerEpoch;
   for (const auto& e : meta.at("curve"))
     state.curve.push_back(
         {e[0].get<int>(), e[1].get<double>(), e[2].get<double>(), e[3].get<double>()});
@@ -153,15 +154,16 @@ std::vector<EpochRecord> trainModel(AffordanceModel& model,
       net->parameters(),
       torch::optim::AdamWOptions(options.learningRate).weight_decay(options.weightDecay));
 
-  Checkpoint state;
-  if (options.resume && !options.checkpointFile.empty() &&
-      loadCheckpoint(options.checkpointFile, net, optimizer, state, impl.card))
-    logger()->info("resuming {} after epoch {}", impl.card.name, state.epochsDone);
   const int batchSize = std::max(1, options.batchSize);
   const std::size_t stepsPerEpoch = (samples.size() + batchSize - 1) / batchSize;
-  if (state.epochsTotal == 0)
-    state.epochsTotal = options.epochs > 0 ? options.epochs : kDefaultEpochs;
-  if (state.stepsTotal == 0) state.stepsTotal = state.epochsTotal * stepsPerEpoch;
+  Checkpoint state;
+  if (options.resume && !options.checkpointFile.empty() &&
+      loadCheckpoint(options.checkpointFile, net, optimizer, state, impl.card, stepsPerEpoch))
+    logger()->info("resuming {} after epoch {}", impl.card.name, state.epochsDone);
+  if (state.stepsTotal == 0)
+    state.stepsTotal =
+        static_cast<std::size_t>(options.epochs > 0 ? options.epochs : kDefaultEpochs) *
+        stepsPerEpoch;
   // A time budget plans in steps, anew before every step from the pace of the current epoch so
   // far (the last epoch's at an epoch's first step): a machine that gets busy shortens the run,
   // and the last epoch may stop part way. A resumed run keeps its plan.
@@ -198,7 +200,6 @@ std::vector<EpochRecord> trainModel(AffordanceModel& model,
       for (auto& group : optimizer.param_groups())
         static_cast<torch::optim::AdamWOptions&>(group.options()).lr(lr);
 
-      std::vector<TrainingSample> augmented;
       std::vector<NetworkObject> objects;
       std::vector<float> targets;
       for (std::size_t b = step * batchSize; b < std::min(samples.size(), (step + 1) * batchSize);
@@ -233,7 +234,6 @@ std::vector<EpochRecord> trainModel(AffordanceModel& model,
     }
     if (step == 0) break;  // the budget ran out at the epoch's start
     lastStepSeconds = (elapsed() - epochStart) / static_cast<double>(step);
-    state.epochsTotal = static_cast<int>((state.stepsTotal + stepsPerEpoch - 1) / stepsPerEpoch);
     if (timed)
       logger()->info(
           "{}: epoch {} ({} steps) took {:.1f} s, {:.1f} of {:.1f} s left: {} steps "
