@@ -1,18 +1,28 @@
 // The mirror-pair pass of the automatic count (core/points/mirror_pairs.h) on a model's
-// prediction: the twins of its points on a mirror-symmetric object, projected onto the surface
-// like the model's own points. annotate, eval and the GUI (through annotate) run it after the
+// prediction: the twins of its points on a mirror-symmetric object, and of toggle buttons across
+// the spout beside them (a mixer's hot and cold handles), projected onto the surface like the
+// model's own points. annotate, eval and the GUI (through annotate) run it after the
 // coarse-to-fine pass and before the printed marks; `--no-mirror-pairs` switches it off.
 #pragma once
+
+#include <vector>
 
 #include "core/annotate/annotate.h"
 #include "core/points/mirror_pairs.h"
 
 namespace sagrid {
 
-// Adds the twins to `prediction` (points and surface); unchanged on an asymmetric object.
+// Adds the twins to `prediction` (points and surface): across the object's mirror plane, then, for
+// toggle buttons, across the vertical plane through the nearest fluid source among `earlier` (the
+// object's predictions made before this one; the models of a folder run in name order, spouts
+// before taps). Unchanged on an asymmetric object without spouts.
 void applyMirrorPairs(ModelPrediction& prediction, const FeatureGrid& features,
                       const SurfaceScene& scene, UpAxis fileUp,
                       const ExtractionSettings& extraction,
+                      const std::vector<ModelPrediction>& earlier = {},
                       const MirrorPairSettings& settings = {});
+
+// The type whose points anchor `type`'s pairs ("fluidsource" for "togglebutton"), empty for none.
+std::string mirrorAnchorType(const std::string& type);
 
 }  // namespace sagrid

@@ -101,7 +101,8 @@ EvaluationReport evaluateModels(const ModelSet& models, const EvaluationOptions&
                            InstanceMode::Auto, 1, options.symmetries);
         if (options.mirrorPairs)
           applyMirrorPairs(autoPredictions.back(), grid, scene, mesh.fileUp,
-                           model->card().extraction);
+                           model->card().extraction,
+                           {autoPredictions.begin(), autoPredictions.end() - 1});
         applyPrintedMarks(*model, autoPredictions.back(),
                           printedMarksFor(printed, category, model->card().type), grid, scene,
                           mesh.fileUp, InstanceMode::Auto);

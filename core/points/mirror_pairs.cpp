@@ -124,6 +124,63 @@ std::optional<MirrorPlane> findMirrorPlane(const std::vector<VoxelIndex>& voxels
   return bestMirrorPlane(voxels, resolution, DenseField(voxels, resolution), minSymmetry);
 }
 
+namespace {
+// The image of `p` across `plane` when it makes a twin (see completeMirrorPairs): beyond
+// `separation` (normalized units) of the point, of `points` and of `out`, a matching
+// neighbourhood, and the field low enough there.
+std::optional<ExtractedPoint> twinAcross(const MirrorPlane& plane, const ExtractedPoint& p,
+                                         const PredictedField& field, const DenseField& dense,
+                                         const std::vector<ExtractedPoint>& points,
+                                         const std::vector<ExtractedPoint>& out, float separation,
+                                         const ExtractionSettings& extraction,
+                                         const MirrorPairSettings& settings) {
+  const float suppression = separation;
+  auto clearOf = [&](const std::vector<ExtractedPoint>& list, const Eigen::Vector3f& at) {
+    return std::all_of(list.begin(), list.end(), [&](const ExtractedPoint& q) {
+      return (q.position - at).norm() > suppression;
+    });
+  };
+  const Eigen::Vector3f image = plane.mirror(p.position, field.resolution);
+  if ((image - p.position).norm() <= suppression || !clearOf(points, image) || !clearOf(out, image))
+    return std::nullopt;
+  const VoxelIndex at = voxelContaining(p.position, field.resolution);
+  if (localMatch(dense, at, plane, settings.neighbourhoodVoxels,
+                 std::max(settings.matchToleranceVoxels, 0)) < settings.minLocalMatch)
+    return std::nullopt;
+  const float distance =
+      nearbyDistance(field, dense, voxelContaining(image, field.resolution), kFieldRadius);
+  if (!std::isfinite(distance)) return std::nullopt;
+  if (settings.maxDistanceAbovePoint >= 0 && distance > p.distance + settings.maxDistanceAbovePoint)
+    return std::nullopt;
+  ExtractedPoint twin;
+  twin.position = image;
+  twin.distance = distance;
+  twin.confidence =
+      std::exp(-std::max(distance, 0.0f) / std::max(extraction.confidenceScale, 1e-6f));
+  return twin;
+}
+
+// Whether the straight segment from `a` to `b` runs through occupied voxels only: one part
+// reaching across (a single lever over the spout), not two.
+bool occupiedBetween(const DenseField& dense, const Eigen::Vector3f& a, const Eigen::Vector3f& b,
+                     int resolution) {
+  const int steps = std::max(
+      1, static_cast<int>(std::ceil(2.0f * (b - a).norm() * static_cast<float>(resolution))));
+  for (int s = 0; s <= steps; ++s) {
+    const Eigen::Vector3f at = a + (b - a) * (static_cast<float>(s) / static_cast<float>(steps));
+    if (dense.at(voxelContaining(at, resolution)) < 0) return false;
+  }
+  return true;
+}
+
+// The vertical plane through `anchor` normal to `axis` (0 = x, 1 = y).
+MirrorPlane planeThrough(const Eigen::Vector3f& anchor, int axis, int resolution) {
+  // In voxel units the anchor sits at (c + 0.5) N - 0.5; v mirrors to twice that minus v.
+  const float voxel = (anchor[axis] + 0.5f) * static_cast<float>(resolution) - 0.5f;
+  return MirrorPlane{axis, static_cast<int>(std::lround(2.0f * voxel)), 0.0f};
+}
+}  // namespace
+
 std::vector<ExtractedPoint> completeMirrorPairs(const PredictedField& field,
                                                 const std::vector<ExtractedPoint>& points,
                                                 const ExtractionSettings& extraction,
@@ -132,35 +189,58 @@ std::vector<ExtractedPoint> completeMirrorPairs(const PredictedField& field,
   const DenseField dense(field.voxels, field.resolution);
   const auto plane = bestMirrorPlane(field.voxels, field.resolution, dense, settings.minSymmetry);
   if (!plane) return points;
-  const float suppression = extraction.nmsRadius;
   std::vector<ExtractedPoint> out;
-  auto clearOf = [&](const std::vector<ExtractedPoint>& list, const Eigen::Vector3f& p) {
-    return std::all_of(list.begin(), list.end(), [&](const ExtractedPoint& q) {
-      return (q.position - p).norm() > suppression;
-    });
-  };
   for (const auto& p : points) {
     out.push_back(p);
-    const Eigen::Vector3f image = plane->mirror(p.position, field.resolution);
-    if ((image - p.position).norm() <= suppression || !clearOf(points, image) ||
-        !clearOf(out, image))
-      continue;
+    if (auto twin = twinAcross(*plane, p, field, dense, points, out, extraction.nmsRadius,
+                               extraction, settings))
+      out.push_back(*twin);
+  }
+  return out;
+}
+
+std::vector<ExtractedPoint> completeAnchoredPairs(const PredictedField& field,
+                                                  const std::vector<ExtractedPoint>& points,
+                                                  const std::vector<Eigen::Vector3f>& anchors,
+                                                  const ExtractionSettings& extraction,
+                                                  const MirrorPairSettings& settings) {
+  if (points.empty() || anchors.empty() || field.voxels.empty() || field.resolution <= 0)
+    return points;
+  const DenseField dense(field.voxels, field.resolution);
+  const float voxel = 1.0f / static_cast<float>(field.resolution);
+  const float reach = static_cast<float>(settings.anchorRadiusVoxels) * voxel;
+  // The two handles of a mixer sit closer together than the count's suppression radius allows
+  // for separate instances; the mirror across the spout is the evidence that they are two.
+  const float separation =
+      std::min(extraction.nmsRadius, static_cast<float>(settings.anchoredSeparationVoxels) * voxel);
+  std::vector<ExtractedPoint> out;
+  for (const auto& p : points) {
+    out.push_back(p);
+    const Eigen::Vector3f* nearest = nullptr;
+    float nearestDistance = reach;
+    for (const auto& a : anchors) {
+      const float d = (a - p.position).head<2>().norm();
+      if (d <= nearestDistance) nearest = &a, nearestDistance = d;
+    }
+    if (!nearest) continue;
+    // The spout points along the mixer's plane, which may be either horizontal axis: of the
+    // planes that put the image off the point, the one whose image of the point's neighbourhood
+    // matches better.
     const VoxelIndex at = voxelContaining(p.position, field.resolution);
-    if (localMatch(dense, at, *plane, settings.neighbourhoodVoxels,
-                   std::max(settings.matchToleranceVoxels, 0)) < settings.minLocalMatch)
-      continue;
-    const float distance =
-        nearbyDistance(field, dense, voxelContaining(image, field.resolution), kFieldRadius);
-    if (!std::isfinite(distance)) continue;
-    if (settings.maxDistanceAbovePoint >= 0 &&
-        distance > p.distance + settings.maxDistanceAbovePoint)
-      continue;
-    ExtractedPoint twin;
-    twin.position = image;
-    twin.distance = distance;
-    twin.confidence =
-        std::exp(-std::max(distance, 0.0f) / std::max(extraction.confidenceScale, 1e-6f));
-    out.push_back(twin);
+    const int tolerance = std::max(settings.matchToleranceVoxels, 0);
+    std::optional<MirrorPlane> plane;
+    float planeMatch = -1.0f;
+    for (int axis = 0; axis < 2; ++axis) {
+      const MirrorPlane candidate = planeThrough(*nearest, axis, field.resolution);
+      if ((candidate.mirror(p.position, field.resolution) - p.position).norm() <= separation)
+        continue;
+      const float match = localMatch(dense, at, candidate, settings.neighbourhoodVoxels, tolerance);
+      if (match > planeMatch) plane = candidate, planeMatch = match;
+    }
+    if (!plane) continue;
+    auto twin = twinAcross(*plane, p, field, dense, points, out, separation, extraction, settings);
+    if (twin && !occupiedBetween(dense, p.position, twin->position, field.resolution))
+      out.push_back(*twin);
   }
   return out;
 }

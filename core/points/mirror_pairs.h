@@ -5,6 +5,10 @@
 // mirror-symmetric about a vertical plane, a point off that plane whose neighbourhood has the same
 // shape at its mirror image gets that image as a point too (unless a point is there already).
 // Works in the normalized frame on the occupied voxels of the field.
+//
+// Anchored pairs: a mixer's hot and cold handles sit either side of its own spout, not of the
+// whole object (two taps per basin on a double vanity, a basin off the counter's middle), so the
+// same twin is also sought across the vertical plane through the nearest spout.
 #pragma once
 
 #include <optional>
@@ -34,6 +38,12 @@ struct MirrorPairSettings {
   // The field at the image: its smallest predicted distance within two voxels must not exceed
   // the point's own by more than this (normalized units); < 0 = no condition on the field.
   float maxDistanceAbovePoint = 0.05f;
+  // Anchored pairs: a point pairs across the plane through the nearest anchor within this
+  // horizontal distance (voxels).
+  int anchorRadiusVoxels = 10;
+  // An anchored twin must lie this far (voxels) from every point, or the count's suppression
+  // radius when that is smaller.
+  int anchoredSeparationVoxels = 3;
 };
 
 // The best vertical mirror plane of the occupied voxels (axis x or y, offset within a few voxels
@@ -51,5 +61,18 @@ std::vector<ExtractedPoint> completeMirrorPairs(const PredictedField& field,
                                                 const std::vector<ExtractedPoint>& points,
                                                 const ExtractionSettings& extraction,
                                                 const MirrorPairSettings& settings = {});
+
+// `points` plus, for each point with an anchor (a spout, normalized frame) within
+// `anchorRadiusVoxels` horizontally, its image across the vertical plane through the nearest such
+// anchor, normal to the horizontal axis along which the point lies further from it; the image is
+// kept under the same conditions as in completeMirrorPairs, but beyond `anchoredSeparationVoxels`
+// of the other points instead of the suppression radius, and not when the straight segment from
+// the point to its image runs through occupied voxels only (one lever across the spout, not two
+// handles). Unchanged without anchors.
+std::vector<ExtractedPoint> completeAnchoredPairs(const PredictedField& field,
+                                                  const std::vector<ExtractedPoint>& points,
+                                                  const std::vector<Eigen::Vector3f>& anchors,
+                                                  const ExtractionSettings& extraction,
+                                                  const MirrorPairSettings& settings = {});
 
 }  // namespace sagrid

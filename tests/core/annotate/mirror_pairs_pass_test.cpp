@@ -68,5 +68,53 @@ TEST(MirrorPairsPass, AddsTheTwinTapOnTheSurfaceAndKeepsTheModelsPoint) {
   EXPECT_EQ(far.points.size(), 1u);
 }
 
+TEST(MirrorPairsPass, PairsTapHandlesAcrossTheSpoutPredictedBefore) {
+  // A mixer at x = -0.3 on a 1 m counter: a spout column and a handle 8 cm either side of it.
+  Mesh mesh = test::box({-0.5f, -0.3f, 0.0f}, {0.5f, 0.3f, 0.05f});
+  test::append(mesh, test::box({-0.32f, -0.02f, 0.05f}, {-0.28f, 0.02f, 0.3f}));
+  const Eigen::Vector3f left{-0.38f, 0.0f, 0.2f}, right{-0.22f, 0.0f, 0.2f};  // handle tops
+  test::append(mesh, test::box({-0.40f, -0.02f, 0.05f}, {-0.36f, 0.02f, 0.2f}));
+  test::append(mesh, test::box({-0.24f, -0.02f, 0.05f}, {-0.20f, 0.02f, 0.2f}));
+  FeatureOptions options;
+  options.views = 12;
+  const FeatureGrid grid = computeFeatures(mesh, options);
+  const SurfaceScene scene(mesh);
+  PredictedField field;
+  field.resolution = grid.resolution;
+  field.voxels = grid.voxels;
+  for (const auto& v : grid.voxels) {
+    const Eigen::Vector3f c = voxelCenter(v, grid.resolution);
+    field.distances.push_back(
+        std::min((c - grid.normalization.toNormalized(left)).norm(),
+                 (c - grid.normalization.toNormalized(right)).norm() + 0.03f));
+  }
+  const auto model = test::untrainedModelFor("sink.togglebutton", grid);
+  ExtractionSettings oneHandle;
+  oneHandle.maxDistance = 0.02f;
+  oneHandle.nmsRadius = 0.3f;  // the card's radius keeps the handles (0.16 apart) as one
+  const ModelPrediction handles =
+      predictionFromField(model, field, grid, scene, UpAxis::Z, InstanceMode::Auto, 1, &oneHandle);
+  ASSERT_EQ(handles.points.size(), 1u);
+  ModelPrediction spout;
+  spout.type = "fluidsource";
+  ExtractedPoint top;
+  top.position = grid.normalization.toNormalized(Eigen::Vector3f(-0.3f, 0.0f, 0.3f));
+  spout.points.push_back(top);
+
+  ModelPrediction withoutSpout = handles;
+  applyMirrorPairs(withoutSpout, grid, scene, UpAxis::Z, oneHandle);
+  EXPECT_EQ(withoutSpout.points.size(), 1u);
+  ModelPrediction paired = handles;
+  applyMirrorPairs(paired, grid, scene, UpAxis::Z, oneHandle, {spout});
+  ASSERT_EQ(paired.points.size(), 2u);
+  EXPECT_LT((paired.surface[0].position - left).norm(), 0.03f);
+  EXPECT_LT((paired.surface[1].position - right).norm(), 0.03f);
+  // Spouts anchor toggle buttons only.
+  ModelPrediction notToggles = handles;
+  notToggles.type = "heatsource";
+  applyMirrorPairs(notToggles, grid, scene, UpAxis::Z, oneHandle, {spout});
+  EXPECT_EQ(notToggles.points.size(), 1u);
+}
+
 }  // namespace
 }  // namespace sagrid

@@ -156,5 +156,60 @@ TEST(MirrorPairs, UnchangedWithoutPoints) {
   EXPECT_TRUE(completeMirrorPairs(f, {}, suppression(0.1f)).empty());
 }
 
+// A mixer off the counter's middle: a spout column (i 10..11, up to k 15) between two handle
+// columns (i 7..8 and 13..14, up to k 13), mirror-symmetric about the spout, not the counter. With
+// `lever`, a single bar over the spout (k 16, i 7..14) instead of the handles.
+std::vector<VoxelIndex> mixerOnCounter(bool lever) {
+  auto voxels = counterWithTaps(lever ? std::vector<int>{} : std::vector<int>{7, 13});
+  for (int i = 10; i <= 11; ++i)
+    for (int j = 12; j <= 13; ++j)
+      for (int k = 11; k <= 15; ++k) voxels.push_back({i, j, k});
+  if (lever)
+    for (int i = 7; i <= 14; ++i)
+      for (int j = 12; j <= 13; ++j) voxels.push_back({i, j, 16});
+  return voxels;
+}
+const Eigen::Vector3f kSpoutTop =
+    0.5f * (voxelCenter({10, 12, 15}, kRes) + voxelCenter({11, 13, 15}, kRes));
+
+TEST(MirrorPairs, AddsTheOtherHandleAcrossTheSpout) {
+  const auto voxels = mixerOnCounter(false);
+  const auto f = fieldOf(voxels, {tapTop(7), tapTop(13)}, {0.0f, 0.03f});
+  // The handles are 6 voxels apart, within the count's suppression radius (0.3 = 9.6 voxels):
+  // the object's own plane (the counter's middle) would not pair them either.
+  const auto points =
+      completeAnchoredPairs(f, {pointAt(f, tapTop(7))}, {kSpoutTop}, suppression(0.3f));
+  ASSERT_EQ(points.size(), 2u);
+  EXPECT_LT((points[0].position - tapTop(7)).norm(), 1e-6f);
+  EXPECT_LT((points[1].position - tapTop(13)).norm(), 1e-5f);
+  EXPECT_GE(points[1].distance, 0.03f);
+  EXPECT_LE(points[1].distance, 0.03f + kVoxel);
+  EXPECT_EQ(completeMirrorPairs(f, {pointAt(f, tapTop(7))}, suppression(0.3f)).size(), 1u);
+}
+
+TEST(MirrorPairs, NoTwinAcrossTheSpoutForOneLeverOverIt) {
+  const auto voxels = mixerOnCounter(true);
+  const Eigen::Vector3f leverEnd =
+      0.5f * (voxelCenter({7, 12, 16}, kRes) + voxelCenter({8, 13, 16}, kRes));
+  const Eigen::Vector3f otherEnd =
+      0.5f * (voxelCenter({13, 12, 16}, kRes) + voxelCenter({14, 13, 16}, kRes));
+  const auto f = fieldOf(voxels, {leverEnd, otherEnd}, {0.0f, 0.0f});
+  EXPECT_EQ(completeAnchoredPairs(f, {pointAt(f, leverEnd)}, {kSpoutTop}, suppression(0.3f)).size(),
+            1u);
+}
+
+TEST(MirrorPairs, NoAnchoredTwinWithoutASpoutNearby) {
+  const auto voxels = mixerOnCounter(false);
+  const auto f = fieldOf(voxels, {tapTop(7), tapTop(13)}, {0.0f, 0.0f});
+  const std::vector<ExtractedPoint> handle{pointAt(f, tapTop(7))};
+  EXPECT_EQ(completeAnchoredPairs(f, handle, {}, suppression(0.3f)).size(), 1u);
+  // A spout 18 voxels away, beyond the 10-voxel reach.
+  const Eigen::Vector3f farSpout = voxelCenter({25, 12, 11}, kRes);
+  EXPECT_EQ(completeAnchoredPairs(f, handle, {farSpout}, suppression(0.3f)).size(), 1u);
+  MirrorPairSettings longReach;
+  longReach.anchorRadiusVoxels = 20;
+  EXPECT_EQ(completeAnchoredPairs(f, handle, {kSpoutTop}, suppression(0.3f), longReach).size(), 2u);
+}
+
 }  // namespace
 }  // namespace sagrid
