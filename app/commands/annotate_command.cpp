@@ -58,7 +58,7 @@ void setupAnnotate(CLI::App& root) {
     int symmetries = sagrid::AnnotateOptions{}.symmetries;
     bool force = false;
     std::optional<bool> coarseToFine;
-    bool noPrintedMarks = false, noMirrorPairs = false;
+    bool noPrintedMarks = false, noMirrorPairs = false, noAnchoredPairs = false;
     double timeLimit = 600;
   };
   auto o = std::make_shared<Options>();
@@ -100,6 +100,9 @@ void setupAnnotate(CLI::App& root) {
   cmd->add_flag("--no-mirror-pairs", o->noMirrorPairs,
                 "Switch the mirror-pair pass off: on a mirror-symmetric object the automatic count "
                 "does not add the twin of a point whose neighbourhood has the same shape there");
+  cmd->add_flag("--no-anchored-pairs", o->noAnchoredPairs,
+                "Within the mirror-pair pass, do not pair a toggle button across the spout beside "
+                "it (a mixer's hot and cold handles)");
   cmd->add_option("--count", o->counts,
                   "Known instance count per type, e.g. --count heatsource=5 (k-means)");
   cmd->callback([o] {
@@ -116,6 +119,7 @@ void setupAnnotate(CLI::App& root) {
     options.coarseToFine = o->coarseToFine;
     options.printedMarks = !o->noPrintedMarks;
     options.mirrorPairs = !o->noMirrorPairs;
+    options.anchoredPairs = !o->noAnchoredPairs;
     // Models, their feature options and confidence map load in the worker process.
     options.features.cacheDir = o->cache;
     if (!o->up.empty()) options.features.up = sagrid::parseUpAxis(o->up);

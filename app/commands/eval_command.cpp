@@ -40,7 +40,7 @@ void setupEval(CLI::App& root) {
     int epochs = 0;
     int symmetries = sagrid::EvaluationOptions{}.symmetries;
     std::optional<bool> coarseToFine;
-    bool noPrintedMarks = false, noMirrorPairs = false;
+    bool noPrintedMarks = false, noMirrorPairs = false, noAnchoredPairs = false;
     double nearWeight = sagrid::SweepOptions{}.nearWeight;
   };
   auto o = std::make_shared<Options>();
@@ -68,6 +68,8 @@ void setupEval(CLI::App& root) {
                 "Switch the texture pass off (printed zones and touch symbols), as annotate");
   cmd->add_flag("--no-mirror-pairs", o->noMirrorPairs,
                 "Switch the mirror-pair pass of the automatic count off, as annotate");
+  cmd->add_flag("--no-anchored-pairs", o->noAnchoredPairs,
+                "Do not pair toggle buttons across the spout beside them, as annotate");
   cmd->add_option("--fit-counts", o->fitCounts,
                   "Refit each model's automatic instance count on the fields of this data and "
                   "write a models folder DIR with the refitted cards (eval it with --models DIR)");
@@ -126,6 +128,7 @@ void setupEval(CLI::App& root) {
     options.coarseToFine = o->coarseToFine;
     options.printedMarks = !o->noPrintedMarks;
     options.mirrorPairs = !o->noMirrorPairs;
+    options.anchoredPairs = !o->noAnchoredPairs;
     const auto report = sagrid::evaluateModels(models, options);
     if (!o->fitCounts.empty()) {
       const auto fits =

@@ -149,7 +149,8 @@ AnnotationResult annotateMeshFile(const fs::path& meshFile, const std::string& i
       p = refineInCrop(*model, p, mesh, features, scene, featureOptions, mode, n,
                        options.symmetries);
     if (options.mirrorPairs && mode == InstanceMode::Auto)
-      applyMirrorPairs(p, features, scene, mesh.fileUp, model->card().extraction, r.predictions);
+      applyMirrorPairs(p, features, scene, mesh.fileUp, model->card().extraction,
+                       options.anchoredPairs ? r.predictions : std::vector<ModelPrediction>{});
     applyPrintedMarks(*model, p, printedMarksFor(printed, r.category, p.type), features, scene,
                       mesh.fileUp, mode, n);
     for (std::size_t i = 0; i < p.points.size(); ++i) {

@@ -76,6 +76,9 @@ struct AnnotateOptions {
   // The mirror-pair pass of the automatic count (core/annotate/mirror_pairs_pass.h): on a
   // mirror-symmetric object, the twin of a point whose neighbourhood has the same shape there.
   bool mirrorPairs = true;
+  // Within it, toggle buttons also paired across the spout beside them (a mixer's hot and cold
+  // handles; completeAnchoredPairs).
+  bool anchoredPairs = true;
   // Maps the least-sure point to P(right with one key) (core/annotate/object_confidence.h);
   // unfitted = the uncalibrated map.
   ConfidenceCalibration confidence;

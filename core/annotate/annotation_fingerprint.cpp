@@ -30,6 +30,7 @@ std::string annotateOptionsHash(const AnnotateOptions& options) {
       {"symmetries", options.symmetries},
       {"printed_marks", options.printedMarks},
       {"mirror_pairs", options.mirrorPairs},
+      {"anchored_pairs", options.anchoredPairs},
       {"coarse_to_fine",
        options.coarseToFine ? nlohmann::json(*options.coarseToFine) : nlohmann::json("card")},
       {"features", featureConfigHash(options.features)},

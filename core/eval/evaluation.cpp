@@ -100,9 +100,11 @@ EvaluationReport evaluateModels(const ModelSet& models, const EvaluationOptions&
               refineInCrop(*model, autoPredictions.back(), mesh, grid, scene, objectFeatures,
                            InstanceMode::Auto, 1, options.symmetries);
         if (options.mirrorPairs)
-          applyMirrorPairs(autoPredictions.back(), grid, scene, mesh.fileUp,
-                           model->card().extraction,
-                           {autoPredictions.begin(), autoPredictions.end() - 1});
+          applyMirrorPairs(
+              autoPredictions.back(), grid, scene, mesh.fileUp, model->card().extraction,
+              options.anchoredPairs
+                  ? std::vector<ModelPrediction>(autoPredictions.begin(), autoPredictions.end() - 1)
+                  : std::vector<ModelPrediction>{});
         applyPrintedMarks(*model, autoPredictions.back(),
                           printedMarksFor(printed, category, model->card().type), grid, scene,
                           mesh.fileUp, InstanceMode::Auto);

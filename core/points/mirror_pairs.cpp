@@ -223,16 +223,21 @@ std::vector<ExtractedPoint> completeAnchoredPairs(const PredictedField& field,
       if (d <= nearestDistance) nearest = &a, nearestDistance = d;
     }
     if (!nearest) continue;
-    // The spout points along the mixer's plane, which may be either horizontal axis: of the
-    // planes that put the image off the point, the one whose image of the point's neighbourhood
+    // The spout reaches out along the mixer's plane, which may lie along either horizontal
+    // axis: of the planes that put the image off the point and about which the spout's own
+    // neighbourhood is symmetric (not the plane across its reach, which mirrors a handle behind
+    // the spout to the basin in front of it), the one whose image of the point's neighbourhood
     // matches better.
     const VoxelIndex at = voxelContaining(p.position, field.resolution);
+    const VoxelIndex spout = voxelContaining(*nearest, field.resolution);
     const int tolerance = std::max(settings.matchToleranceVoxels, 0);
     std::optional<MirrorPlane> plane;
     float planeMatch = -1.0f;
     for (int axis = 0; axis < 2; ++axis) {
       const MirrorPlane candidate = planeThrough(*nearest, axis, field.resolution);
-      if ((candidate.mirror(p.position, field.resolution) - p.position).norm() <= separation)
+      if ((candidate.mirror(p.position, field.resolution) - p.position).norm() <= separation ||
+          localMatch(dense, spout, candidate, settings.neighbourhoodVoxels, tolerance) <
+              settings.minLocalMatch)
         continue;
       const float match = localMatch(dense, at, candidate, settings.neighbourhoodVoxels, tolerance);
       if (match > planeMatch) plane = candidate, planeMatch = match;

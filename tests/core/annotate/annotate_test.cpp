@@ -3,6 +3,9 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <set>
+
+#include "core/annotate/annotation_fingerprint.h"
 #include "core/common/error.h"
 #include "core/dataset/dataset.h"
 #include "core/features/feature_grid.h"
@@ -187,6 +190,26 @@ TEST_F(AnnotateTest, ReportsStagesInOrderAndStopsWhenCancelled) {
       annotateMeshFile(entries[0].mesh, "stove0", *set, annotate, dir / "out" / "cancelled"),
       Cancelled);
   EXPECT_FALSE(fs::exists(dir / "out" / "cancelled" / "labels.json"));
+}
+
+}  // namespace
+}  // namespace sagrid
+
+namespace sagrid {
+namespace {
+
+TEST(AnnotationFingerprintTest, EveryPassSwitchChangesTheOptionsHash) {
+  // A batch re-annotates an object whose labels were written with other options: switching any
+  // pass must change the hash it compares.
+  const AnnotateOptions defaults;
+  std::vector<AnnotateOptions> switched(3, defaults);
+  switched[0].printedMarks = false;
+  switched[1].mirrorPairs = false;
+  switched[2].anchoredPairs = false;
+  std::set<std::string> hashes{annotateOptionsHash(defaults)};
+  for (const auto& options : switched) hashes.insert(annotateOptionsHash(options));
+  EXPECT_EQ(hashes.size(), 4u);
+  EXPECT_EQ(annotateOptionsHash(defaults), annotateOptionsHash(AnnotateOptions{}));
 }
 
 }  // namespace

@@ -211,5 +211,18 @@ TEST(MirrorPairs, NoAnchoredTwinWithoutASpoutNearby) {
   EXPECT_EQ(completeAnchoredPairs(f, handle, {kSpoutTop}, suppression(0.3f), longReach).size(), 2u);
 }
 
+TEST(MirrorPairs, NoTwinAcrossAPlaneTheSpoutIsNotSymmetricAbout) {
+  // A nozzle reaches out from the spout's top towards +i (i 12..14, k 16..17): the plane through
+  // the spout normal to i mirrors the handles onto each other, but it is not the spout's own
+  // plane (a handle behind a spout is not mirrored to the basin in front of its outlet).
+  auto voxels = mixerOnCounter(false);
+  for (int i = 12; i <= 14; ++i)
+    for (int j = 12; j <= 13; ++j)
+      for (int k = 16; k <= 17; ++k) voxels.push_back({i, j, k});
+  const auto f = fieldOf(voxels, {tapTop(7), tapTop(13)}, {0.0f, 0.03f});
+  EXPECT_EQ(
+      completeAnchoredPairs(f, {pointAt(f, tapTop(7))}, {kSpoutTop}, suppression(0.3f)).size(), 1u);
+}
+
 }  // namespace
 }  // namespace sagrid
