@@ -1,8 +1,7 @@
-// `sagrid category train|eval|split`: the category classifier with rejection (stove | sink |
+// `sagrid category train|eval|cv|split`: the category classifier with rejection (stove | sink |
 // none) that `annotate`, `filter --like` and the GUI use when the models folder has category.json.
 // Parsing, progress and printing only; the work is in core/annotate/category_*.
 #include <CLI/CLI.hpp>
-
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -10,6 +9,7 @@
 
 #include "app/command_registry.h"
 #include "app/progress_bar.h"
+#include "core/annotate/category_cross_validation.h"
 #include "core/annotate/category_training.h"
 #include "core/annotate/model_set.h"
 #include "core/common/error.h"
@@ -67,6 +67,39 @@ sagrid::FeatureOptions featuresFor(const fs::path& modelsDir) {
   return {};
 }
 
+struct Options {
+  std::vector<std::string> data, validate;
+  int folds = 5;
+  std::string out, models, exclude, split, splitOut, up;
+  double threshold = -1, l2 = 1e-2;
+  int iterations = 20000;
+  bool retrieval = false, linear = false, topRelief = false;
+};
+
+// The options that shape a trained classifier (train and cv).
+void addTrainingFlags(CLI::App* cmd, Options& o) {
+  cmd->add_option("--threshold", o.threshold,
+                  "Rejection threshold on the best category's probability (default 0.5)");
+  cmd->add_option("--l2", o.l2, "L2 penalty on the weights");
+  cmd->add_option("--up", o.up, "Up axis (y or z) of objects whose labels do not say")
+      ->check(CLI::IsMember({"y", "z"}));
+  cmd->add_option("--iterations", o.iterations, "Gradient steps")->check(CLI::PositiveNumber);
+  cmd->add_flag("--linear", o.linear, "Inputs only, without their squares");
+  cmd->add_flag("--top-relief", o.topRelief,
+                "Also read the relief of the object's top from its voxels (basins, burner spots, "
+                "flat lids), beside the descriptor");
+}
+
+sagrid::CategoryTrainingOptions trainingOptions(const Options& o) {
+  sagrid::CategoryTrainingOptions options;
+  options.topRelief = o.topRelief;
+  options.l2 = o.l2;
+  options.iterations = o.iterations;
+  options.quadratic = !o.linear;
+  if (o.threshold >= 0) options.threshold = o.threshold;
+  return options;
+}
+
 void setupCategory(CLI::App& root) {
   auto* cmd = root.add_subcommand(
       "category",
@@ -74,13 +107,6 @@ void setupCategory(CLI::App& root) {
       "folder (category.json), evaluate it, or split a folder's ids for training and validation.");
   cmd->require_subcommand(1);
 
-  struct Options {
-    std::vector<std::string> data;
-    std::string out, models, exclude, split, splitOut, up;
-    double threshold = -1, l2 = 1e-2;
-    int iterations = 20000;
-    bool retrieval = false, linear = false, topRelief = false;
-  };
   auto o = std::make_shared<Options>();
 
   auto* train = cmd->add_subcommand(
@@ -94,16 +120,7 @@ void setupCategory(CLI::App& root) {
   train->add_option("--out", o->out, "Models folder to write category.json into (default resources/models)");
   train->add_option("--exclude-split", o->exclude,
                     "Id split file (category split): its val ids are held out of training");
-  train->add_option("--threshold", o->threshold,
-                    "Rejection threshold on the best category's probability (default 0.5)");
-  train->add_option("--l2", o->l2, "L2 penalty on the weights");
-  train->add_option("--up", o->up, "Up axis (y or z) of objects whose labels do not say")
-      ->check(CLI::IsMember({"y", "z"}));
-  train->add_option("--iterations", o->iterations, "Gradient steps")->check(CLI::PositiveNumber);
-  train->add_flag("--linear", o->linear, "Inputs only, without their squares");
-  train->add_flag("--top-relief", o->topRelief,
-                  "Also read the relief of the object's top from its voxels (basins, burner spots, "
-                  "flat lids), beside the descriptor");
+  addTrainingFlags(train, *o);
   train->callback([o] {
     const fs::path out = o->out.empty() ? defaultModelsDir() : fs::path(o->out);
     auto features = featuresFor(out);
@@ -111,12 +128,7 @@ void setupCategory(CLI::App& root) {
     std::set<std::string> exclude;
     if (!o->exclude.empty()) exclude = sagrid::readIdSplit(o->exclude).val;
     const auto samples = collect(o->data, features, exclude, o->topRelief);
-    sagrid::CategoryTrainingOptions options;
-    options.topRelief = o->topRelief;
-    options.l2 = o->l2;
-    options.iterations = o->iterations;
-    options.quadratic = !o->linear;
-    if (o->threshold >= 0) options.threshold = o->threshold;
+    const auto options = trainingOptions(*o);
     auto classifier = sagrid::CategoryClassifier::train(samples, options);
     classifier.featureBackend = features.backend;
     classifier.featureConfigHash = sagrid::featureConfigHash(features);
@@ -178,6 +190,36 @@ void setupCategory(CLI::App& root) {
         },
         samples);
     std::cout << sagrid::categoryEvaluationTable(ev);
+  });
+
+  auto* cv = cmd->add_subcommand(
+      "cv",
+      "Cross-validate the classifier over a few real objects: split the --validate folders' "
+      "objects into K folds (by sha256 of the id); each fold is decided by a classifier trained "
+      "on the --data folders and the other folds. Prints the category table over every "
+      "validated object.");
+  cv->add_option("--data", o->data,
+                 "Dataset folder always trained on (repeat); DIR@W weighs its objects W times")
+      ->required();
+  cv->add_option("--validate", o->validate,
+                 "Dataset folder whose objects are cross-validated (repeat); DIR@W weighs them W "
+                 "times while they train")
+      ->required();
+  cv->add_option("--folds", o->folds, "Number of folds (default 5)")->check(CLI::Range(2, 1000));
+  cv->add_option("--models", o->models,
+                 "Models folder whose feature settings to use (default resources/models)");
+  addTrainingFlags(cv, *o);
+  cv->callback([o] {
+    auto features = featuresFor(o->models.empty() ? defaultModelsDir() : fs::path(o->models));
+    if (!o->up.empty()) features.up = sagrid::parseUpAxis(o->up);
+    const auto always = collect(o->data, features, {}, o->topRelief);
+    const auto validated = collect(o->validate, features, {}, o->topRelief);
+    const auto ev = sagrid::crossValidateCategories(
+        always, validated, o->folds, trainingOptions(*o),
+        [](int k, int folds) { std::fprintf(stderr, "fold %d/%d: training\n", k + 1, folds); });
+    std::cout << "# " << o->folds << "-fold cross-validation over " << validated.size()
+              << " objects\n\n"
+              << sagrid::categoryEvaluationTable(ev);
   });
 
   auto* split = cmd->add_subcommand(

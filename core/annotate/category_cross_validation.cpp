@@ -1,0 +1,63 @@
+#include "core/annotate/category_cross_validation.h"
+
+#include <algorithm>
+#include <set>
+
+#include "core/common/error.h"
+#include "core/common/sha256.h"
+
+namespace sagrid {
+
+std::map<std::string, int> assignFolds(const std::vector<std::string>& ids, int folds) {
+  if (folds < 1) throw InvalidArgument("folds must be at least 1, got " + std::to_string(folds));
+  std::vector<std::pair<std::string, std::string>> keyed;
+  for (const auto& id : ids) keyed.emplace_back(sha256Hex(id), id);
+  std::sort(keyed.begin(), keyed.end());
+  std::map<std::string, int> fold;
+  for (std::size_t i = 0; i < keyed.size(); ++i)
+    fold[keyed[i].second] = static_cast<int>(i % static_cast<std::size_t>(folds));
+  return fold;
+}
+
+namespace {
+void add(CategoryEvaluation& total, const CategoryEvaluation& part) {
+  for (const auto& [name, c] : part.byClass)
+    total.byClass[name].total += c.total, total.byClass[name].right += c.right;
+  for (const auto& [name, c] : part.byGroup)
+    total.byGroup[name].total += c.total, total.byGroup[name].right += c.right;
+  for (const auto& [truth, predicted] : part.confusion)
+    for (const auto& [category, n] : predicted) total.confusion[truth][category] += n;
+  total.misses.insert(total.misses.end(), part.misses.begin(), part.misses.end());
+}
+}  // namespace
+
+CategoryEvaluation crossValidateCategories(const std::vector<CategorySample>& always,
+                                           const std::vector<CategorySample>& validated, int folds,
+                                           const CategoryTrainingOptions& options,
+                                           const std::function<void(int, int)>& onFold) {
+  if (folds < 2)
+    throw InvalidArgument("cross-validation needs at least 2 folds, got " + std::to_string(folds));
+  if (validated.size() < static_cast<std::size_t>(folds))
+    throw InvalidArgument("cross-validation: " + std::to_string(validated.size()) +
+                          " objects to validate for " + std::to_string(folds) + " folds");
+  std::vector<std::string> ids;
+  std::set<std::string> seen;
+  for (const auto& s : validated) {
+    if (!seen.insert(s.id).second)
+      throw InvalidArgument("cross-validation: object id \"" + s.id + "\" appears twice");
+    ids.push_back(s.id);
+  }
+  const auto fold = assignFolds(ids, folds);
+  CategoryEvaluation total;
+  for (int k = 0; k < folds; ++k) {
+    if (onFold) onFold(k, folds);
+    std::vector<CategorySample> train = always, held;
+    for (const auto& s : validated) (fold.at(s.id) == k ? held : train).push_back(s);
+    const auto classifier = CategoryClassifier::train(train, options);
+    add(total, evaluateCategories(
+                   [&](const std::vector<float>& d) { return classifier.classify(d); }, held));
+  }
+  return total;
+}
+
+}  // namespace sagrid
