@@ -295,12 +295,12 @@ TEST(CategoryClassifier, ShippedClassifierRejectsGeneratedDistractorsSlow) {
   const int n = 8;
   for (int i = 0; i < n; ++i) {
     const auto o = gen::makeObject("none", 777, i, gen::MeshFormat::Obj);
-    rejected += set.decideCategory(computeFeatures(o.mesh, set.featureOptions()).descriptor).rejected;
+    rejected += set.decideCategory(computeFeatures(o.mesh, set.featureOptions())).rejected;
   }
   EXPECT_GE(rejected, n - 1);
   // A generated stove is not rejected.
   const auto stove = gen::makeObject("stove", 777, 0, gen::MeshFormat::Obj);
-  EXPECT_EQ(set.decideCategory(computeFeatures(stove.mesh, set.featureOptions()).descriptor).category,
+  EXPECT_EQ(set.decideCategory(computeFeatures(stove.mesh, set.featureOptions())).category,
             "stove");
 }
 
