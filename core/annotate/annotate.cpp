@@ -150,7 +150,8 @@ AnnotationResult annotateMeshFile(const fs::path& meshFile, const std::string& i
                        options.symmetries);
     if (options.mirrorPairs && mode == InstanceMode::Auto)
       applyMirrorPairs(p, features, scene, mesh.fileUp, model->card().extraction,
-                       options.anchoredPairs ? r.predictions : std::vector<ModelPrediction>{});
+                       options.anchoredPairs ? mirrorAnchors(r.predictions, p.type)
+                                             : std::vector<Eigen::Vector3f>{});
     applyPrintedMarks(*model, p, printedMarksFor(printed, r.category, p.type), features, scene,
                       mesh.fileUp, mode, n);
     for (std::size_t i = 0; i < p.points.size(); ++i) {

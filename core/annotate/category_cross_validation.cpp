@@ -1,23 +1,10 @@
 #include "core/annotate/category_cross_validation.h"
 
-#include <algorithm>
 #include <set>
 
 #include "core/common/error.h"
-#include "core/common/sha256.h"
 
 namespace sagrid {
-
-std::map<std::string, int> assignFolds(const std::vector<std::string>& ids, int folds) {
-  if (folds < 1) throw InvalidArgument("folds must be at least 1, got " + std::to_string(folds));
-  std::vector<std::pair<std::string, std::string>> keyed;
-  for (const auto& id : ids) keyed.emplace_back(sha256Hex(id), id);
-  std::sort(keyed.begin(), keyed.end());
-  std::map<std::string, int> fold;
-  for (std::size_t i = 0; i < keyed.size(); ++i)
-    fold[keyed[i].second] = static_cast<int>(i % static_cast<std::size_t>(folds));
-  return fold;
-}
 
 namespace {
 void add(CategoryEvaluation& total, const CategoryEvaluation& part) {

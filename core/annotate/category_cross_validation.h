@@ -5,7 +5,6 @@
 #pragma once
 
 #include <functional>
-#include <map>
 #include <string>
 #include <vector>
 
@@ -13,10 +12,6 @@
 #include "core/annotate/category_training.h"
 
 namespace sagrid {
-
-// Fold of each id (0 .. folds-1): ids ordered by the sha256 of the id, the i-th to fold i % folds,
-// so folds differ in size by one at most and do not depend on the order given.
-std::map<std::string, int> assignFolds(const std::vector<std::string>& ids, int folds);
 
 // Each fold of `validated` decided by a classifier trained with `options` on `always` plus the
 // other folds; the folds' evaluations summed (misses in fold order). `onFold(k, folds)` before each

@@ -65,13 +65,21 @@ std::vector<CategorySample> collectCategorySamples(
   return out;
 }
 
-IdSplit splitIds(const std::vector<std::string>& ids) {
+std::map<std::string, int> assignFolds(const std::vector<std::string>& ids, int folds) {
+  if (folds < 1) throw InvalidArgument("folds must be at least 1, got " + std::to_string(folds));
   std::vector<std::pair<std::string, std::string>> keyed;
   for (const auto& id : ids) keyed.emplace_back(sha256Hex(id), id);
   std::sort(keyed.begin(), keyed.end());
-  IdSplit split;
+  std::map<std::string, int> fold;
   for (std::size_t i = 0; i < keyed.size(); ++i)
-    (i % 3 == 2 ? split.val : split.train).insert(keyed[i].second);
+    fold[keyed[i].second] = static_cast<int>(i % static_cast<std::size_t>(folds));
+  return fold;
+}
+
+IdSplit splitIds(const std::vector<std::string>& ids) {
+  IdSplit split;
+  for (const auto& [id, fold] : assignFolds(ids, 3))
+    (fold == 2 ? split.val : split.train).insert(id);
   return split;
 }
 

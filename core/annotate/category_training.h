@@ -28,11 +28,17 @@ std::vector<CategorySample> collectCategorySamples(
     const std::function<void(std::size_t, std::size_t, const std::string&)>& onProgress = {},
     std::size_t* failed = nullptr, bool topRelief = false);
 
+// Fold of each id (0 .. folds-1): ids ordered by the sha256 of the id, the i-th to fold i % folds,
+// so folds differ in size by one at most and do not depend on the order given. Throws
+// InvalidArgument when folds < 1.
+std::map<std::string, int> assignFolds(const std::vector<std::string>& ids, int folds);
+
 // A split of object ids into "train" and "val".
 struct IdSplit {
   std::set<std::string> train, val;
 };
-// Deterministic: ids ordered by the sha256 of the id, every third to val (1/3), the rest train.
+// Deterministic: ids ordered by the sha256 of the id, every third to val (1/3: fold 2 of
+// assignFolds(ids, 3)), the rest train.
 IdSplit splitIds(const std::vector<std::string>& ids);
 // JSON {"train": [...], "val": [...], "rule": "..."}; readIdSplit throws FileError naming the file.
 void writeIdSplit(const IdSplit& split, const std::filesystem::path& file, const std::string& source);

@@ -4,21 +4,22 @@
 
 namespace sagrid {
 
-std::string mirrorAnchorType(const std::string& type) {
-  return type == "togglebutton" ? "fluidsource" : "";
+std::vector<Eigen::Vector3f> mirrorAnchors(const std::vector<ModelPrediction>& made,
+                                           const std::string& type) {
+  std::vector<Eigen::Vector3f> anchors;
+  if (type != "togglebutton") return anchors;
+  for (const auto& other : made)
+    if (other.type == "fluidsource")
+      for (const auto& a : other.points) anchors.push_back(a.position);
+  return anchors;
 }
 
 void applyMirrorPairs(ModelPrediction& prediction, const FeatureGrid& features,
                       const SurfaceScene& scene, UpAxis fileUp,
                       const ExtractionSettings& extraction,
-                      const std::vector<ModelPrediction>& earlier,
+                      const std::vector<Eigen::Vector3f>& anchors,
                       const MirrorPairSettings& settings) {
   auto points = completeMirrorPairs(prediction.field, prediction.points, extraction, settings);
-  const std::string anchorType = mirrorAnchorType(prediction.type);
-  std::vector<Eigen::Vector3f> anchors;
-  for (const auto& other : earlier)
-    if (!anchorType.empty() && other.type == anchorType)
-      for (const auto& a : other.points) anchors.push_back(a.position);
   points = completeAnchoredPairs(prediction.field, points, anchors, extraction, settings);
   if (points.size() == prediction.points.size()) return;
   // Images come after the point they mirror: keep each original surface point, project the rest.

@@ -12,17 +12,19 @@
 
 namespace sagrid {
 
-// Adds the twins to `prediction` (points and surface): across the object's mirror plane, then, for
-// toggle buttons, across the vertical plane through the nearest fluid source among `earlier` (the
-// object's predictions made before this one; the models of a folder run in name order, spouts
-// before taps). Unchanged on an asymmetric object without spouts.
+// Adds the twins to `prediction` (points and surface): across the object's mirror plane, then
+// across the vertical plane through the nearest of `anchors` (normalized frame; mirrorAnchors).
+// Unchanged on an asymmetric object without anchors.
 void applyMirrorPairs(ModelPrediction& prediction, const FeatureGrid& features,
                       const SurfaceScene& scene, UpAxis fileUp,
                       const ExtractionSettings& extraction,
-                      const std::vector<ModelPrediction>& earlier = {},
+                      const std::vector<Eigen::Vector3f>& anchors = {},
                       const MirrorPairSettings& settings = {});
 
-// The type whose points anchor `type`'s pairs ("fluidsource" for "togglebutton"), empty for none.
-std::string mirrorAnchorType(const std::string& type);
+// The points among an object's predictions `made` so far that anchor the pairs of a prediction of
+// `type`: the fluid sources for toggle buttons (the models of a folder run in name order, spouts
+// before taps), none for other types.
+std::vector<Eigen::Vector3f> mirrorAnchors(const std::vector<ModelPrediction>& made,
+                                           const std::string& type);
 
 }  // namespace sagrid

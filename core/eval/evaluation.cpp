@@ -102,9 +102,8 @@ EvaluationReport evaluateModels(const ModelSet& models, const EvaluationOptions&
         if (options.mirrorPairs)
           applyMirrorPairs(
               autoPredictions.back(), grid, scene, mesh.fileUp, model->card().extraction,
-              options.anchoredPairs
-                  ? std::vector<ModelPrediction>(autoPredictions.begin(), autoPredictions.end() - 1)
-                  : std::vector<ModelPrediction>{});
+              options.anchoredPairs ? mirrorAnchors(autoPredictions, model->card().type)
+                                    : std::vector<Eigen::Vector3f>{});
         applyPrintedMarks(*model, autoPredictions.back(),
                           printedMarksFor(printed, category, model->card().type), grid, scene,
                           mesh.fileUp, InstanceMode::Auto);

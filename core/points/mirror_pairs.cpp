@@ -134,14 +134,13 @@ std::optional<ExtractedPoint> twinAcross(const MirrorPlane& plane, const Extract
                                          const std::vector<ExtractedPoint>& out, float separation,
                                          const ExtractionSettings& extraction,
                                          const MirrorPairSettings& settings) {
-  const float suppression = separation;
   auto clearOf = [&](const std::vector<ExtractedPoint>& list, const Eigen::Vector3f& at) {
     return std::all_of(list.begin(), list.end(), [&](const ExtractedPoint& q) {
-      return (q.position - at).norm() > suppression;
+      return (q.position - at).norm() > separation;
     });
   };
   const Eigen::Vector3f image = plane.mirror(p.position, field.resolution);
-  if ((image - p.position).norm() <= suppression || !clearOf(points, image) || !clearOf(out, image))
+  if ((image - p.position).norm() <= separation || !clearOf(points, image) || !clearOf(out, image))
     return std::nullopt;
   const VoxelIndex at = voxelContaining(p.position, field.resolution);
   if (localMatch(dense, at, plane, settings.neighbourhoodVoxels,

@@ -55,6 +55,18 @@ TEST(CategoryCrossValidation, FoldsAreBalancedAndIndependentOfOrder) {
   EXPECT_EQ(assignFolds(ids, 5), folds);
 }
 
+TEST(CategoryCrossValidation, TheTrainValSplitIsTheThirdOfThreeFolds) {
+  std::vector<std::string> ids;
+  for (int i = 0; i < 30; ++i) ids.push_back("object" + std::to_string(i));
+  const IdSplit split = splitIds(ids);
+  EXPECT_EQ(split.val.size(), 10u);
+  EXPECT_EQ(split.train.size(), 20u);
+  for (const auto& [id, fold] : assignFolds(ids, 3))
+    EXPECT_EQ(split.val.count(id), fold == 2 ? 1u : 0u);
+  std::reverse(ids.begin(), ids.end());
+  EXPECT_EQ(splitIds(ids).val, split.val);
+}
+
 TEST(CategoryCrossValidation, TheOtherFoldsTeachEachHeldOutObject) {
   // Real stoves look like nothing generated (around (0, -2)): trained on the generated samples
   // alone, they are not called stoves; each is right when the other real stoves train.

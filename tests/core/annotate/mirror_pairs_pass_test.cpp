@@ -13,6 +13,21 @@
 namespace sagrid {
 namespace {
 
+// Field over the grid's voxels: distance to `left`, and to `right` plus `rightOffset` (mesh frame).
+PredictedField fieldTowards(const FeatureGrid& grid, const Eigen::Vector3f& left,
+                            const Eigen::Vector3f& right, float rightOffset) {
+  PredictedField f;
+  f.resolution = grid.resolution;
+  f.voxels = grid.voxels;
+  const Eigen::Vector3f l = grid.normalization.toNormalized(left);
+  const Eigen::Vector3f r = grid.normalization.toNormalized(right);
+  for (const auto& v : grid.voxels) {
+    const Eigen::Vector3f c = voxelCenter(v, grid.resolution);
+    f.distances.push_back(std::min((c - l).norm(), (c - r).norm() + rightOffset));
+  }
+  return f;
+}
+
 // A 1 m double-basin counter with a tap at x = -0.3 and one at x = +0.3 (4 x 4 x 20 cm).
 struct Counter {
   Mesh mesh = test::box({-0.5f, -0.3f, 0.0f}, {0.5f, 0.3f, 0.05f});
@@ -27,20 +42,9 @@ struct Counter {
     grid = computeFeatures(mesh, options);
     scene = std::make_unique<SurfaceScene>(mesh);
   }
-  Eigen::Vector3f normalized(const Eigen::Vector3f& p) const {
-    return grid.normalization.toNormalized(p);
-  }
   // Field: distance to the left tap's top, and to the right one's plus `rightOffset`.
   PredictedField field(float rightOffset) const {
-    PredictedField f;
-    f.resolution = grid.resolution;
-    f.voxels = grid.voxels;
-    for (const auto& v : grid.voxels) {
-      const Eigen::Vector3f c = voxelCenter(v, grid.resolution);
-      f.distances.push_back(
-          std::min((c - normalized(left)).norm(), (c - normalized(right)).norm() + rightOffset));
-    }
-    return f;
+    return fieldTowards(grid, left, right, rightOffset);
   }
 };
 
@@ -79,15 +83,7 @@ TEST(MirrorPairsPass, PairsTapHandlesAcrossTheSpoutPredictedBefore) {
   options.views = 12;
   const FeatureGrid grid = computeFeatures(mesh, options);
   const SurfaceScene scene(mesh);
-  PredictedField field;
-  field.resolution = grid.resolution;
-  field.voxels = grid.voxels;
-  for (const auto& v : grid.voxels) {
-    const Eigen::Vector3f c = voxelCenter(v, grid.resolution);
-    field.distances.push_back(
-        std::min((c - grid.normalization.toNormalized(left)).norm(),
-                 (c - grid.normalization.toNormalized(right)).norm() + 0.03f));
-  }
+  const PredictedField field = fieldTowards(grid, left, right, 0.03f);
   const auto model = test::untrainedModelFor("sink.togglebutton", grid);
   ExtractionSettings oneHandle;
   oneHandle.maxDistance = 0.02f;
@@ -105,14 +101,19 @@ TEST(MirrorPairsPass, PairsTapHandlesAcrossTheSpoutPredictedBefore) {
   applyMirrorPairs(withoutSpout, grid, scene, UpAxis::Z, oneHandle);
   EXPECT_EQ(withoutSpout.points.size(), 1u);
   ModelPrediction paired = handles;
-  applyMirrorPairs(paired, grid, scene, UpAxis::Z, oneHandle, {spout});
+  const auto anchors = mirrorAnchors({spout}, paired.type);
+  ASSERT_EQ(anchors.size(), 1u);
+  EXPECT_EQ(anchors.front(), top.position);
+  applyMirrorPairs(paired, grid, scene, UpAxis::Z, oneHandle, anchors);
   ASSERT_EQ(paired.points.size(), 2u);
   EXPECT_LT((paired.surface[0].position - left).norm(), 0.03f);
   EXPECT_LT((paired.surface[1].position - right).norm(), 0.03f);
   // Spouts anchor toggle buttons only.
   ModelPrediction notToggles = handles;
   notToggles.type = "heatsource";
-  applyMirrorPairs(notToggles, grid, scene, UpAxis::Z, oneHandle, {spout});
+  EXPECT_TRUE(mirrorAnchors({spout}, notToggles.type).empty());
+  applyMirrorPairs(notToggles, grid, scene, UpAxis::Z, oneHandle,
+                   mirrorAnchors({spout}, notToggles.type));
   EXPECT_EQ(notToggles.points.size(), 1u);
 }
 
