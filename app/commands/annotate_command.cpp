@@ -58,7 +58,8 @@ void setupAnnotate(CLI::App& root) {
     int symmetries = sagrid::AnnotateOptions{}.symmetries;
     bool force = false;
     std::optional<bool> coarseToFine;
-    bool noPrintedMarks = false, noMirrorPairs = false, noAnchoredPairs = false;
+    bool noPrintedMarks = false, noMirrorPairs = false, noAnchoredPairs = false,
+         noRepeatedParts = false;
     double timeLimit = 600;
   };
   auto o = std::make_shared<Options>();
@@ -103,6 +104,9 @@ void setupAnnotate(CLI::App& root) {
   cmd->add_flag("--no-anchored-pairs", o->noAnchoredPairs,
                 "Within the mirror-pair pass, do not pair a toggle button across the spout beside "
                 "it (a mixer's hot and cold handles)");
+  cmd->add_flag("--no-repeated-parts", o->noRepeatedParts,
+                "Switch the repeated-parts pass off: a point on a small part of the mesh does not "
+                "give a point on every copy of that part (a row of equal knobs)");
   cmd->add_option("--count", o->counts,
                   "Known instance count per type, e.g. --count heatsource=5 (k-means)");
   cmd->callback([o] {
@@ -120,6 +124,7 @@ void setupAnnotate(CLI::App& root) {
     options.printedMarks = !o->noPrintedMarks;
     options.mirrorPairs = !o->noMirrorPairs;
     options.anchoredPairs = !o->noAnchoredPairs;
+    options.repeatedParts = !o->noRepeatedParts;
     // Models, their feature options and confidence map load in the worker process.
     options.features.cacheDir = o->cache;
     if (!o->up.empty()) options.features.up = sagrid::parseUpAxis(o->up);

@@ -40,7 +40,8 @@ void setupEval(CLI::App& root) {
     int epochs = 0;
     int symmetries = sagrid::EvaluationOptions{}.symmetries;
     std::optional<bool> coarseToFine;
-    bool noPrintedMarks = false, noMirrorPairs = false, noAnchoredPairs = false;
+    bool noPrintedMarks = false, noMirrorPairs = false, noAnchoredPairs = false,
+         noRepeatedParts = false;
     double nearWeight = sagrid::SweepOptions{}.nearWeight;
   };
   auto o = std::make_shared<Options>();
@@ -70,6 +71,9 @@ void setupEval(CLI::App& root) {
                 "Switch the mirror-pair pass of the automatic count off, as annotate");
   cmd->add_flag("--no-anchored-pairs", o->noAnchoredPairs,
                 "Do not pair toggle buttons across the spout beside them, as annotate");
+  cmd->add_flag("--no-repeated-parts", o->noRepeatedParts,
+                "Switch the repeated-parts pass off (points on copies of a point's part), as "
+                "annotate");
   cmd->add_option("--fit-counts", o->fitCounts,
                   "Refit each model's automatic instance count on the fields of this data and "
                   "write a models folder DIR with the refitted cards (eval it with --models DIR)");
@@ -129,6 +133,7 @@ void setupEval(CLI::App& root) {
     options.printedMarks = !o->noPrintedMarks;
     options.mirrorPairs = !o->noMirrorPairs;
     options.anchoredPairs = !o->noAnchoredPairs;
+    options.repeatedParts = !o->noRepeatedParts;
     const auto report = sagrid::evaluateModels(models, options);
     if (!o->fitCounts.empty()) {
       const auto fits =

@@ -5,6 +5,7 @@
 #include "core/annotate/coarse_to_fine.h"
 #include "core/annotate/mirror_pairs_pass.h"
 #include "core/annotate/printed_marks_pass.h"
+#include "core/annotate/repeated_parts_pass.h"
 #include "core/annotate/symmetry_averaging.h"
 #include "core/common/error.h"
 #include "core/features/feature_grid.h"
@@ -132,6 +133,9 @@ AnnotationResult annotateMeshFile(const fs::path& meshFile, const std::string& i
   const auto categoryModels = models.forCategory(r.category);
   const PrintedMarks printed =
       options.printedMarks ? printedMarksOf(mesh, r.category) : PrintedMarks{};
+  const std::vector<ConnectedPart> parts = options.repeatedParts
+                                               ? normalizedParts(mesh, features.normalization)
+                                               : std::vector<ConnectedPart>{};
   for (std::size_t m = 0; m < categoryModels.size(); ++m) {
     const auto* model = categoryModels[m];
     stage(0.7f + 0.3f * static_cast<float>(m) / static_cast<float>(categoryModels.size()),
@@ -152,6 +156,8 @@ AnnotationResult annotateMeshFile(const fs::path& meshFile, const std::string& i
       applyMirrorPairs(p, features, scene, mesh.fileUp, model->card().extraction,
                        options.anchoredPairs ? mirrorAnchors(r.predictions, p.type)
                                              : std::vector<Eigen::Vector3f>{});
+    if (options.repeatedParts && mode == InstanceMode::Auto)
+      applyRepeatedParts(p, parts, features, scene, mesh.fileUp, model->card().extraction);
     applyPrintedMarks(*model, p, printedMarksFor(printed, r.category, p.type), features, scene,
                       mesh.fileUp, mode, n);
     for (std::size_t i = 0; i < p.points.size(); ++i) {

@@ -79,6 +79,9 @@ struct AnnotateOptions {
   // Within it, toggle buttons also paired across the spout beside them (a mixer's hot and cold
   // handles; completeAnchoredPairs).
   bool anchoredPairs = true;
+  // The repeated-parts pass (core/annotate/repeated_parts_pass.h): a point on every copy of the
+  // part a point lies on (a row of equal knobs).
+  bool repeatedParts = true;
   // Maps the least-sure point to P(right with one key) (core/annotate/object_confidence.h);
   // unfitted = the uncalibrated map.
   ConfidenceCalibration confidence;

@@ -31,6 +31,7 @@ std::string annotateOptionsHash(const AnnotateOptions& options) {
       {"printed_marks", options.printedMarks},
       {"mirror_pairs", options.mirrorPairs},
       {"anchored_pairs", options.anchoredPairs},
+      {"repeated_parts", options.repeatedParts},
       {"coarse_to_fine",
        options.coarseToFine ? nlohmann::json(*options.coarseToFine) : nlohmann::json("card")},
       {"features", featureConfigHash(options.features)},

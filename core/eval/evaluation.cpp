@@ -9,6 +9,7 @@
 #include "core/annotate/coarse_to_fine.h"
 #include "core/annotate/mirror_pairs_pass.h"
 #include "core/annotate/printed_marks_pass.h"
+#include "core/annotate/repeated_parts_pass.h"
 #include "core/common/atomic_file.h"
 #include "core/common/error.h"
 #include "core/common/log.h"
@@ -90,6 +91,9 @@ EvaluationReport evaluateModels(const ModelSet& models, const EvaluationOptions&
       const auto t = Clock::now();
       const PrintedMarks printed =
           options.printedMarks ? printedMarksOf(mesh, category) : PrintedMarks{};
+      const std::vector<ConnectedPart> parts = options.repeatedParts
+                                                   ? normalizedParts(mesh, grid.normalization)
+                                                   : std::vector<ConnectedPart>{};
       std::vector<ModelPrediction> autoPredictions;
       for (const auto* model : categoryModels) {
         autoPredictions.push_back(predictionFromField(*model,
@@ -104,6 +108,9 @@ EvaluationReport evaluateModels(const ModelSet& models, const EvaluationOptions&
               autoPredictions.back(), grid, scene, mesh.fileUp, model->card().extraction,
               options.anchoredPairs ? mirrorAnchors(autoPredictions, model->card().type)
                                     : std::vector<Eigen::Vector3f>{});
+        if (options.repeatedParts)
+          applyRepeatedParts(autoPredictions.back(), parts, grid, scene, mesh.fileUp,
+                             model->card().extraction);
         applyPrintedMarks(*model, autoPredictions.back(),
                           printedMarksFor(printed, category, model->card().type), grid, scene,
                           mesh.fileUp, InstanceMode::Auto);

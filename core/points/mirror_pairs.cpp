@@ -2,7 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
+
+#include "core/points/field_lookup.h"
 
 namespace sagrid {
 
@@ -12,30 +13,6 @@ namespace {
 constexpr int kOffsetSearch = 8;
 // Where the image's field is read: the smallest predicted distance within this many voxels.
 constexpr int kFieldRadius = 2;
-
-// Index into `voxels` per voxel of the N^3 grid (-1 = empty): occupancy and field lookups.
-class DenseField {
- public:
-  DenseField(const std::vector<VoxelIndex>& voxels, int resolution)
-      : m_n(resolution), m_index(static_cast<std::size_t>(m_n) * m_n * m_n, -1) {
-    for (std::size_t v = 0; v < voxels.size(); ++v) {
-      const auto& x = voxels[v];
-      if (inside(x)) m_index[linear(x)] = static_cast<int>(v);
-    }
-  }
-  bool inside(const VoxelIndex& v) const {
-    return v.i >= 0 && v.j >= 0 && v.k >= 0 && v.i < m_n && v.j < m_n && v.k < m_n;
-  }
-  // Field index of a voxel, -1 when empty or outside the grid.
-  int at(const VoxelIndex& v) const { return inside(v) ? m_index[linear(v)] : -1; }
-
- private:
-  std::size_t linear(const VoxelIndex& v) const {
-    return (static_cast<std::size_t>(v.i) * m_n + v.j) * m_n + v.k;
-  }
-  int m_n;
-  std::vector<int> m_index;
-};
 
 VoxelIndex mirrored(VoxelIndex v, const MirrorPlane& plane) {
   if (plane.axis == 0)
@@ -70,18 +47,6 @@ float localMatch(const DenseField& dense, const VoxelIndex& centre, const Mirror
   return occupied ? static_cast<float>(matched) / static_cast<float>(occupied) : 0.0f;
 }
 
-// The smallest predicted distance within `radius` voxels of `centre` (infinity when none).
-float nearbyDistance(const PredictedField& field, const DenseField& dense, const VoxelIndex& centre,
-                     int radius) {
-  float best = std::numeric_limits<float>::infinity();
-  for (int a = -radius; a <= radius; ++a)
-    for (int b = -radius; b <= radius; ++b)
-      for (int c = -radius; c <= radius; ++c) {
-        const int at = dense.at({centre.i + a, centre.j + b, centre.k + c});
-        if (at >= 0) best = std::min(best, field.distances[static_cast<std::size_t>(at)]);
-      }
-  return best;
-}
 }  // namespace
 
 float MirrorPlane::coordinate(int resolution) const {

@@ -68,7 +68,8 @@ BENCHMARK(BM_FourModelsAndExtraction)
 // geometry (else given), bit 2 = category decided by the models folder's classifier (else given),
 // bit 4 = symmetry averaging over 8 copies, bit 8 = coarse-to-fine second pass, bit 16 = the
 // texture pass (printed zones and symbols; this mesh has no texture, so it costs the scan), bit
-// 32 = the mirror-pair pass of the automatic count.
+// 32 = the mirror-pair pass of the automatic count, bit 64 = the repeated-parts pass (the mesh's
+// connected parts and the copies of each toggle button's part).
 void BM_AnnotateDenseEndToEnd(benchmark::State& state) {
   Fixture& f = fixture();
   const fs::path mesh = sagrid::bench::denseCopy(2);
@@ -81,6 +82,7 @@ void BM_AnnotateDenseEndToEnd(benchmark::State& state) {
   options.coarseToFine = (additions & 8) != 0;
   options.printedMarks = (additions & 16) != 0;
   options.mirrorPairs = (additions & 32) != 0;
+  options.repeatedParts = (additions & 64) != 0;
   const fs::path out = sagrid::bench::benchDir() / "annotate-out";
   for (auto _ : state)
     benchmark::DoNotOptimize(
@@ -89,7 +91,8 @@ void BM_AnnotateDenseEndToEnd(benchmark::State& state) {
       std::string(additions & 1 ? "up detected" : "up given") +
       (additions & 2 ? ", category classified" : ", category given") +
       (additions & 4 ? ", 8 symmetries" : ", 1 copy") + (additions & 8 ? ", coarse-to-fine" : "") +
-      (additions & 16 ? ", texture pass" : "") + (additions & 32 ? ", mirror pairs" : ""));
+      (additions & 16 ? ", texture pass" : "") + (additions & 32 ? ", mirror pairs" : "") +
+      (additions & 64 ? ", repeated parts" : ""));
 }
 BENCHMARK(BM_AnnotateDenseEndToEnd)
     ->Arg(0)
@@ -103,6 +106,8 @@ BENCHMARK(BM_AnnotateDenseEndToEnd)
     ->Arg(31)
     ->Arg(32)
     ->Arg(63)
+    ->Arg(64)
+    ->Arg(127)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime()
     ->Iterations(2);

@@ -37,6 +37,21 @@ PredictedField plateFieldWithOffsets(const std::vector<Eigen::Vector3f>& centres
   return plate(centres, offsets, 0.0f, 1);
 }
 
+PredictedField fieldTowards(const FeatureGrid& grid, const std::vector<Eigen::Vector3f>& centres,
+                            const std::vector<float>& offsets) {
+  PredictedField f;
+  f.resolution = grid.resolution;
+  f.voxels = grid.voxels;
+  for (const auto& v : grid.voxels) {
+    const Eigen::Vector3f c = voxelCenter(v, grid.resolution);
+    float best = 1e9f;
+    for (std::size_t i = 0; i < centres.size(); ++i)
+      best = std::min(best, (c - grid.normalization.toNormalized(centres[i])).norm() + offsets[i]);
+    f.distances.push_back(best);
+  }
+  return f;
+}
+
 Eigen::Vector3f onPlate(int i, int j) { return voxelCenter({i, j, 10}, kPlateResolution); }
 
 std::vector<Eigen::Vector3f> fiveBurnersOnPlate() {

@@ -4,6 +4,7 @@
 #include <Eigen/Core>
 #include <vector>
 
+#include "core/features/feature_grid.h"
 #include "core/points/point_extraction.h"
 
 namespace sagrid::test {
@@ -19,6 +20,11 @@ PredictedField plateField(const std::vector<Eigen::Vector3f>& centres, float noi
 // of different depths (a spurious minimum is a centre that is not in the ground truth).
 PredictedField plateFieldWithOffsets(const std::vector<Eigen::Vector3f>& centres,
                                      const std::vector<float>& offsets);
+
+// A field over the occupied voxels of `grid`: min over centres (mesh frame) of the normalized
+// distance to centre c plus offsets[c].
+PredictedField fieldTowards(const FeatureGrid& grid, const std::vector<Eigen::Vector3f>& centres,
+                            const std::vector<float>& offsets);
 
 // The centre of plate voxel (i, j) in the normalized frame.
 Eigen::Vector3f onPlate(int i, int j);

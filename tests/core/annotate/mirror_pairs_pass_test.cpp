@@ -2,31 +2,15 @@
 
 #include <gtest/gtest.h>
 
-#include <limits>
-
 #include "core/features/feature_grid.h"
 #include "core/features/feature_pipeline.h"
 #include "core/geometry/surface_scene.h"
 #include "support/analytic_meshes.h"
+#include "support/synthetic_fields.h"
 #include "support/untrained_models.h"
 
 namespace sagrid {
 namespace {
-
-// Field over the grid's voxels: distance to `left`, and to `right` plus `rightOffset` (mesh frame).
-PredictedField fieldTowards(const FeatureGrid& grid, const Eigen::Vector3f& left,
-                            const Eigen::Vector3f& right, float rightOffset) {
-  PredictedField f;
-  f.resolution = grid.resolution;
-  f.voxels = grid.voxels;
-  const Eigen::Vector3f l = grid.normalization.toNormalized(left);
-  const Eigen::Vector3f r = grid.normalization.toNormalized(right);
-  for (const auto& v : grid.voxels) {
-    const Eigen::Vector3f c = voxelCenter(v, grid.resolution);
-    f.distances.push_back(std::min((c - l).norm(), (c - r).norm() + rightOffset));
-  }
-  return f;
-}
 
 // A 1 m double-basin counter with a tap at x = -0.3 and one at x = +0.3 (4 x 4 x 20 cm).
 struct Counter {
@@ -44,7 +28,7 @@ struct Counter {
   }
   // Field: distance to the left tap's top, and to the right one's plus `rightOffset`.
   PredictedField field(float rightOffset) const {
-    return fieldTowards(grid, left, right, rightOffset);
+    return test::fieldTowards(grid, {left, right}, {0.0f, rightOffset});
   }
 };
 
@@ -83,7 +67,7 @@ TEST(MirrorPairsPass, PairsTapHandlesAcrossTheSpoutPredictedBefore) {
   options.views = 12;
   const FeatureGrid grid = computeFeatures(mesh, options);
   const SurfaceScene scene(mesh);
-  const PredictedField field = fieldTowards(grid, left, right, 0.03f);
+  const PredictedField field = test::fieldTowards(grid, {left, right}, {0.0f, 0.03f});
   const auto model = test::untrainedModelFor("sink.togglebutton", grid);
   ExtractionSettings oneHandle;
   oneHandle.maxDistance = 0.02f;

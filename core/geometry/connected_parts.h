@@ -1,0 +1,33 @@
+// The connected parts of a triangle mesh: triangles joined through shared vertices, where
+// vertices at the same position count as one (importers split them at seams of normals and UVs).
+// A stove's knobs, a burner's caps, a tap's two handles are usually parts of their own, and
+// copies of one another; a part's shape summary tells such copies from other parts.
+#pragma once
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+#include <vector>
+
+namespace sagrid {
+
+struct Mesh;
+
+struct ConnectedPart {
+  int triangles = 0;
+  float area = 0;
+  Eigen::Vector3f centroid = Eigen::Vector3f::Zero();  // mean of its distinct vertex positions
+  Eigen::AlignedBox3f box;
+  // Standard deviations of its distinct vertex positions along their principal axes, largest
+  // first: unchanged when the part is moved, turned or mirrored.
+  Eigen::Vector3f spread = Eigen::Vector3f::Zero();
+};
+
+// Every connected part of `mesh`, in its frame, largest triangle count first (ties: the order of
+// their first triangle). Triangles with an out-of-range index are left out.
+std::vector<ConnectedPart> connectedParts(const Mesh& mesh);
+
+// Whether `b` is a copy of `a` up to a rigid motion or a mirror: the same triangle count, and
+// area and spread equal within `tolerance` (relative; the spread against a's largest).
+bool congruentParts(const ConnectedPart& a, const ConnectedPart& b, float tolerance);
+
+}  // namespace sagrid

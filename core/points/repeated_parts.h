@@ -1,0 +1,46 @@
+// Repeated parts: the instances an automatic count misses when they are copies of one part. A
+// range's knobs in a row, a hob's equal burner caps, a tap's hot and cold handles are usually
+// separate parts of the mesh with the same shape; the network's field over such a row is often
+// one long shallow valley, and the count keeps one or two points of it. A point that lies on a
+// small part gets a point on every copy of that part (moved, turned or mirrored) where the field
+// is low enough and no point is yet. Works in the normalized frame.
+#pragma once
+
+#include <vector>
+
+#include "core/geometry/connected_parts.h"
+#include "core/points/point_extraction.h"
+
+namespace sagrid {
+
+struct RepeatedPartSettings {
+  // A point belongs to the parts whose box, grown by this many voxels, holds it.
+  float touchVoxels = 1.5f;
+  // Only parts up to this box diagonal (normalized units) can be one instance: a knob, a handle,
+  // a burner cap, not a panel or the cabinet.
+  float maxPartDiagonal = 0.2f;
+  // Copies: congruentParts within this relative tolerance (a knob turned to another setting
+  // voxelizes and rounds a little differently).
+  float congruenceTolerance = 0.05f;
+  // The field at a copy's point: its smallest predicted distance within two voxels must not
+  // exceed the point's own by more than this (normalized units); < 0 = no condition.
+  float maxDistanceAbovePoint = 0.05f;
+  // A copy gets no point when a point lies within this many voxels of where it would go, or
+  // within touchVoxels of its box.
+  int separationVoxels = 3;
+};
+
+// `points` plus, for each point (best first), a point on every copy of the part it lies on: of the
+// small parts that hold it and have a copy, the one with the largest area. The new point keeps
+// its offset from the part's centroid, moved to the copy's centroid (mirrored across the plane
+// between the two centroids when the copy's box is not the part's box moved). `parts` are in the
+// normalized frame (connectedParts of the normalized mesh). New points come after the given
+// ones; a new point's distance is the field's smallest within two voxels, its confidence
+// exp(-distance / confidenceScale). Unchanged without parts or field.
+std::vector<ExtractedPoint> completeRepeatedParts(const PredictedField& field,
+                                                  const std::vector<ExtractedPoint>& points,
+                                                  const std::vector<ConnectedPart>& parts,
+                                                  const ExtractionSettings& extraction,
+                                                  const RepeatedPartSettings& settings = {});
+
+}  // namespace sagrid

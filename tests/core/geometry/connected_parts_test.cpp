@@ -1,0 +1,66 @@
+#include "core/geometry/connected_parts.h"
+
+#include <gtest/gtest.h>
+
+#include "core/mesh/mesh.h"
+#include "support/analytic_meshes.h"
+
+namespace sagrid {
+namespace {
+
+// The same box with every triangle on its own three vertices, as an importer leaves a mesh split
+// at every seam of normals or UVs.
+Mesh splitAtEverySeam(const Mesh& mesh) {
+  Mesh split;
+  for (const auto& t : mesh.triangles) {
+    const int base = static_cast<int>(split.positions.size());
+    for (int c = 0; c < 3; ++c)
+      split.positions.push_back(mesh.positions[static_cast<std::size_t>(t[c])]);
+    split.triangles.emplace_back(base, base + 1, base + 2);
+  }
+  split.computeVertexNormals();
+  return split;
+}
+
+TEST(ConnectedParts, SeparateBoxesAreSeparatePartsAndSplitSeamsStayOnePart) {
+  Mesh mesh = splitAtEverySeam(test::box({0, 0, 0}, {1, 2, 3}));
+  test::append(mesh, test::box({5, 0, 0}, {6, 1, 1}));
+  const auto parts = connectedParts(mesh);
+  ASSERT_EQ(parts.size(), 2u);
+  EXPECT_EQ(parts[0].triangles, 12);
+  EXPECT_EQ(parts[1].triangles, 12);
+  EXPECT_NEAR(parts[0].area, 2 * (1 * 2 + 2 * 3 + 1 * 3), 1e-4);
+  EXPECT_NEAR(parts[1].area, 6.0, 1e-4);
+  EXPECT_TRUE(parts[0].centroid.isApprox(Eigen::Vector3f(0.5f, 1.0f, 1.5f), 1e-5f));
+  EXPECT_TRUE(parts[1].box.min().isApprox(Eigen::Vector3f(5, 0, 0)));
+  EXPECT_TRUE(parts[1].box.max().isApprox(Eigen::Vector3f(6, 1, 1)));
+  // A box's corners spread by half its sides along its axes, largest first.
+  EXPECT_TRUE(parts[0].spread.isApprox(Eigen::Vector3f(1.5f, 1.0f, 0.5f), 1e-4f));
+}
+
+TEST(ConnectedParts, CopiesMovedOrTurnedAreCongruentOtherShapesAreNot) {
+  Mesh mesh = test::box({0, 0, 0}, {1, 2, 3});
+  test::append(mesh, test::box({10, 0, 0}, {12, 1, 3}));     // turned a quarter about z
+  test::append(mesh, test::box({20, 0, 0}, {21.3f, 2, 3}));  // 30 % wider
+  test::append(mesh, test::uvSphere({30, 0, 0}, 1.0f, 6));   // another shape
+  const auto parts = connectedParts(mesh);
+  ASSERT_EQ(parts.size(), 4u);
+  // Largest triangle count first: the sphere, then the boxes in file order.
+  EXPECT_GT(parts[0].triangles, 12);
+  const ConnectedPart& box = parts[1];
+  EXPECT_TRUE(congruentParts(box, parts[2], 0.05f));
+  EXPECT_TRUE(congruentParts(parts[2], box, 0.05f));
+  EXPECT_FALSE(congruentParts(box, parts[3], 0.05f));
+  EXPECT_FALSE(congruentParts(box, parts[0], 0.05f));
+}
+
+TEST(ConnectedParts, AnEmptyMeshAndBadIndicesGiveNoParts) {
+  EXPECT_TRUE(connectedParts(Mesh{}).empty());
+  Mesh broken;
+  broken.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+  broken.triangles = {{0, 1, 7}, {-1, 0, 1}};
+  EXPECT_TRUE(connectedParts(broken).empty());
+}
+
+}  // namespace
+}  // namespace sagrid

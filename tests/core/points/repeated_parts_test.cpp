@@ -1,0 +1,117 @@
+#include "core/points/repeated_parts.h"
+
+#include <gtest/gtest.h>
+
+#include "core/mesh/mesh.h"
+#include "support/analytic_meshes.h"
+#include "support/synthetic_fields.h"
+
+namespace sagrid {
+namespace {
+
+using test::onPlate;
+
+const float kVoxel = 1.0f / test::kPlateResolution;
+
+// Knobs in a row on the plate of synthetic_fields (j = 16, every 6 voxels from i = 6): boxes of
+// 2 x 1 x 1 voxels around the plate voxel's centre, and a panel (a large part) behind them.
+std::vector<Eigen::Vector3f> knobRow() {
+  return {onPlate(6, 16), onPlate(12, 16), onPlate(18, 16), onPlate(24, 16)};
+}
+
+Mesh knobBox(const Eigen::Vector3f& centre, const Eigen::Vector3f& halfSides) {
+  return test::box(centre - halfSides, centre + halfSides);
+}
+
+std::vector<ConnectedPart> panelWithKnobs(const std::vector<Eigen::Vector3f>& knobs) {
+  Mesh mesh = knobBox(onPlate(16, 24), Eigen::Vector3f(0.4f, 0.05f, 0.1f));
+  for (const auto& k : knobs)
+    test::append(mesh, knobBox(k, Eigen::Vector3f(1.0f, 0.5f, 0.5f) * kVoxel));
+  return connectedParts(mesh);
+}
+
+ExtractedPoint pointAt(const PredictedField& field, const Eigen::Vector3f& p) {
+  ExtractedPoint e;
+  e.position = p;
+  const VoxelIndex at = voxelContaining(p, field.resolution);
+  for (std::size_t v = 0; v < field.voxels.size(); ++v)
+    if (field.voxels[v] == at) e.distance = field.distances[v];
+  e.confidence = 1.0f;
+  return e;
+}
+
+TEST(RepeatedParts, AKnobGivesAPointOnEveryCopyInTheRow) {
+  const auto knobs = knobRow();
+  const auto field = test::plateFieldWithOffsets(knobs, {0.0f, 0.01f, 0.02f, 0.03f});
+  const auto out = completeRepeatedParts(field, {pointAt(field, knobs[1])}, panelWithKnobs(knobs),
+                                         ExtractionSettings{});
+  ASSERT_EQ(out.size(), 4u);
+  EXPECT_TRUE(out[0].position.isApprox(knobs[1]));
+  for (const auto& k : knobs) EXPECT_LT(test::nearestExtracted(out, k), 1e-4f);
+  for (std::size_t i = 1; i < out.size(); ++i) {
+    EXPECT_GT(out[i].confidence, 0.0f);
+    EXPECT_LE(out[i].confidence, 1.0f);
+  }
+}
+
+TEST(RepeatedParts, NoPointOnACopyWhereTheFieldIsHigh) {
+  const auto knobs = knobRow();
+  const auto field = test::plateFieldWithOffsets(knobs, {0.0f, 0.0f, 0.0f, 0.2f});
+  const auto out = completeRepeatedParts(field, {pointAt(field, knobs[0])}, panelWithKnobs(knobs),
+                                         ExtractionSettings{});
+  EXPECT_EQ(out.size(), 3u);
+  EXPECT_GT(test::nearestExtracted(out, knobs[3]), 3 * kVoxel);
+  RepeatedPartSettings anyField;
+  anyField.maxDistanceAbovePoint = -1.0f;
+  EXPECT_EQ(completeRepeatedParts(field, {pointAt(field, knobs[0])}, panelWithKnobs(knobs),
+                                  ExtractionSettings{}, anyField)
+                .size(),
+            4u);
+}
+
+TEST(RepeatedParts, ACopyThatHasAPointGetsNoSecond) {
+  const auto knobs = knobRow();
+  const auto field = test::plateField(knobs);
+  // The second point a little off its knob's centre, still on it.
+  const Eigen::Vector3f offKnob = knobs[2] + Eigen::Vector3f(0.5f * kVoxel, 0, 0);
+  const auto out = completeRepeatedParts(field, {pointAt(field, knobs[0]), pointAt(field, offKnob)},
+                                         panelWithKnobs(knobs), ExtractionSettings{});
+  EXPECT_EQ(out.size(), 4u);
+}
+
+TEST(RepeatedParts, NothingIsAddedFromALargePartOrAPartWithoutCopies) {
+  const auto knobs = knobRow();
+  const auto field = test::plateField(knobs);
+  const auto parts = panelWithKnobs(knobs);
+  // On the panel, far from the knobs.
+  const auto onPanel = pointAt(field, onPlate(16, 24));
+  EXPECT_EQ(completeRepeatedParts(field, {onPanel}, parts, ExtractionSettings{}).size(), 1u);
+  // One knob larger than the others: no copy of it.
+  Mesh mesh = knobBox(knobs[0], Eigen::Vector3f(1.5f, 0.5f, 0.5f) * kVoxel);
+  for (std::size_t k = 1; k < knobs.size(); ++k)
+    test::append(mesh, knobBox(knobs[k], Eigen::Vector3f(1.0f, 0.5f, 0.5f) * kVoxel));
+  EXPECT_EQ(completeRepeatedParts(field, {pointAt(field, knobs[0])}, connectedParts(mesh),
+                                  ExtractionSettings{})
+                .size(),
+            1u);
+  EXPECT_EQ(
+      completeRepeatedParts(field, {pointAt(field, knobs[0])}, {}, ExtractionSettings{}).size(),
+      1u);
+}
+
+TEST(RepeatedParts, ATurnedCopyMirrorsThePointAcrossThePlaneBetweenThem) {
+  // Two handles either side of a spout, the right one turned a quarter about z: the point on the
+  // left handle's inner end (towards the spout) goes to the right handle's inner end.
+  const Eigen::Vector3f left = onPlate(10, 16), right = onPlate(20, 16);
+  Mesh mesh = knobBox(left, Eigen::Vector3f(2.0f, 1.0f, 0.5f) * kVoxel);
+  test::append(mesh, knobBox(right, Eigen::Vector3f(1.0f, 2.0f, 0.5f) * kVoxel));
+  const auto field = test::plateField({left, right});
+  const Eigen::Vector3f innerEnd = left + Eigen::Vector3f(1.5f * kVoxel, 0, 0);
+  const auto out = completeRepeatedParts(field, {pointAt(field, innerEnd)}, connectedParts(mesh),
+                                         ExtractionSettings{});
+  ASSERT_EQ(out.size(), 2u);
+  EXPECT_TRUE(out[1].position.isApprox(right - Eigen::Vector3f(1.5f * kVoxel, 0, 0), 1e-5f));
+}
+
+}  // namespace
+}  // namespace sagrid
