@@ -31,6 +31,7 @@ void setupGenerate(CLI::App& root) {
     bool stats = false;
     double wallFixtures = 0.0;
     double glassHobs = 0.0;
+    bool appliances = false;
   };
   auto o = std::make_shared<Options>();
   cmd->add_option("--category", o->category, "stove, sink or none (distractors: microwaves, ovens, dishwashers, hoods, cabinets)")
@@ -43,11 +44,14 @@ void setupGenerate(CLI::App& root) {
   cmd->add_option(
          "--preset", o->preset,
          "bench: the fixed benchmark split (OUT/train, OUT/val; see README); distractors: category "
-         "\"none\" objects for the category classifier (OUT/train 150, OUT/val 50); wall-fixtures: "
+         "\"none\" objects for the category classifier (OUT/train 150, OUT/val 50); "
+         "distractors-appliances: the same with washing machines, toasters and countertop "
+         "appliances among them; wall-fixtures: "
          "the dressed sinks the shipped sink models also train on (OUT/wall-fixtures 300); "
          "glass-hobs: stoves, half of them bare glass hobs, the shipped stove models also train "
          "on (OUT/glass-hobs 300)")
-      ->check(CLI::IsMember({"bench", "distractors", "wall-fixtures", "glass-hobs"}));
+      ->check(CLI::IsMember(
+          {"bench", "distractors", "distractors-appliances", "wall-fixtures", "glass-hobs"}));
   cmd->add_option(
          "--wall-fixtures", o->wallFixtures,
          "Share of sinks (not bare faucets) given a mirror, lamps, a shelf, a back panel or a "
@@ -58,6 +62,9 @@ void setupGenerate(CLI::App& root) {
                   "Share of stoves that are built-in glass hobs on their own, zones and touch "
                   "controls printed only in the texture (not with --preset)")
       ->check(CLI::Range(0.0, 1.0));
+  cmd->add_flag("--appliances", o->appliances,
+                "Distractors (--category none): also washing machines and dryers, toasters, "
+                "kettles, blenders and coffee makers (not with --preset)");
   cmd->add_option("--contact-sheet", o->contactSheet, "Also render a PNG grid of thumbnails with the labels drawn");
   cmd->add_option("--sheet-limit", o->sheetLimit, "At most this many objects on the contact sheet")->check(CLI::PositiveNumber);
   cmd->add_flag("--stats", o->stats, "Print the variety table of what was written");
@@ -66,15 +73,18 @@ void setupGenerate(CLI::App& root) {
     const auto start = std::chrono::steady_clock::now();
     int written = 0;
     std::vector<fs::path> dirs;
-    if (!o->preset.empty() && (o->wallFixtures > 0.0 || o->glassHobs > 0.0)) {
+    if (!o->preset.empty() && (o->wallFixtures > 0.0 || o->glassHobs > 0.0 || o->appliances)) {
       throw sagrid::InvalidArgument(
-          "--wall-fixtures and --glass-hobs change the objects; the presets are fixed splits");
+          "--wall-fixtures, --glass-hobs and --appliances change the objects; the presets are "
+          "fixed splits");
     }
     if (!o->preset.empty()) {
       const auto& preset = o->preset == "bench"         ? sagrid::gen::benchPreset()
                            : o->preset == "distractors" ? sagrid::gen::distractorPreset()
-                           : o->preset == "glass-hobs"  ? sagrid::gen::glassHobPreset()
-                                                        : sagrid::gen::wallFixturePreset();
+                           : o->preset == "distractors-appliances"
+                               ? sagrid::gen::applianceDistractorPreset()
+                           : o->preset == "glass-hobs" ? sagrid::gen::glassHobPreset()
+                                                       : sagrid::gen::wallFixturePreset();
       int total = 0;
       for (const auto& s : preset)
         for (const auto& r : s.requests) total += r.count;
@@ -87,7 +97,7 @@ void setupGenerate(CLI::App& root) {
       if (o->category.empty()) throw sagrid::InvalidArgument("--category is required (or --preset bench)");
       sagrid::app::ProgressBar bar("generate " + o->category, static_cast<std::size_t>(o->count));
       sagrid::gen::generateDataset(
-          {{o->category, o->count, o->seed, {o->wallFixtures, o->glassHobs}}},
+          {{o->category, o->count, o->seed, {o->wallFixtures, o->glassHobs, o->appliances}}},
           sagrid::gen::parseMeshFormat(o->format), o->out,
           [&](int done, int) { bar.update(static_cast<std::size_t>(done)); });
       bar.finish();

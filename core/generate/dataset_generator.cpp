@@ -37,7 +37,7 @@ GeneratedObject makeBareObject(const std::string& category, std::uint64_t seed, 
     return generateStove(rng, stove);
   }
   if (category == "sink") return generateSink(rng);
-  if (category == kDistractorCategory) return generateDistractor(rng);
+  if (category == kDistractorCategory) return generateDistractor(rng, options.applianceDistractors);
   throw InvalidArgument("unknown category '" + category + "' (expected stove, sink or none)");
 }
 }  // namespace
@@ -187,6 +187,16 @@ const std::vector<BenchSplit>& distractorPreset() {
   static const std::vector<BenchSplit> preset = {
       {"train", {{kDistractorCategory, 150, 3001}}},
       {"val", {{kDistractorCategory, 50, 4001}}},
+  };
+  return preset;
+}
+
+const std::vector<BenchSplit>& applianceDistractorPreset() {
+  GeneratorOptions appliances;
+  appliances.applianceDistractors = true;
+  static const std::vector<BenchSplit> preset = {
+      {"train", {{kDistractorCategory, 150, 3001, appliances}}},
+      {"val", {{kDistractorCategory, 50, 4001, appliances}}},
   };
   return preset;
 }

@@ -43,6 +43,9 @@ struct GeneratorOptions {
   // Share of stoves that are built-in glass hobs on their own, zones and touch controls printed
   // only in the texture (core/generate/stove_generator.h, StoveOptions::glassSlab), in [0, 1].
   double glassSlabHobs = 0.0;
+  // Distractors: also washing machines and dryers, toasters and countertop appliances (kettles,
+  // blenders, coffee makers; core/generate/distractor_generator.h).
+  bool applianceDistractors = false;
 };
 
 // Builds object `index` of category ("stove" | "sink" | "none": a distractor) for `seed`, realism applied.
@@ -89,6 +92,8 @@ void generateBenchPreset(const std::filesystem::path& outDir, const ProgressCall
 // Distractors for the category classifier's rejection: outDir/train (150, seed 3001) and
 // outDir/val (50, seed 4001), category "none", no affordances, mixed OBJ/GLB.
 const std::vector<BenchSplit>& distractorPreset();
+// The same splits (same seeds) with the appliance distractors among the kinds.
+const std::vector<BenchSplit>& applianceDistractorPreset();
 // Sinks dressed with wall fixtures, which the shipped sink models train on beside the bench train
 // half: outDir/wall-fixtures (300 sinks, seed 5001, 80 % of those with a basin dressed), mixed
 // OBJ/GLB. Its own seed: the bench split is untouched.

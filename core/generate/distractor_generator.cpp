@@ -12,10 +12,14 @@ namespace {
 
 class DistractorBuilder {
  public:
-  explicit DistractorBuilder(Rng& rng) : m_rng(rng) {}
+  DistractorBuilder(Rng& rng, bool appliances) : m_rng(rng), m_appliances(appliances) {}
 
   GeneratedObject run() {
-    m_kind = distractorKinds()[static_cast<std::size_t>(m_rng.weighted({1.0, 1.0, 1.0, 0.8, 1.0}))];
+    // Without the appliances, the draw is the one the shipped category classifier's distractors
+    // were generated with.
+    const int kind = m_appliances ? m_rng.weighted({1.0, 1.0, 1.0, 0.8, 1.0, 1.0, 0.6, 0.8})
+                                  : m_rng.weighted({1.0, 1.0, 1.0, 0.8, 1.0});
+    m_kind = distractorKinds()[static_cast<std::size_t>(kind)];
     const Finish body = pickFinish(
         m_rng, {"stainless", "white_enamel", "black_glass", "dark_grey", "matte_black", "cream"});
     m_body = m_b.material("body_" + body.name, body.color);
@@ -30,6 +34,12 @@ class DistractorBuilder {
     else if (m_kind == "wall_oven") buildWallOven();
     else if (m_kind == "dishwasher") buildDishwasher();
     else if (m_kind == "range_hood") buildRangeHood();
+    else if (m_kind == "washing_machine")
+      buildWashingMachine();
+    else if (m_kind == "toaster")
+      buildToaster();
+    else if (m_kind == "countertop_appliance")
+      buildCountertopAppliance();
     else buildCabinet();
 
     m_params["kind"] = m_kind;
@@ -203,6 +213,147 @@ class DistractorBuilder {
     }
   }
 
+  // A front-loading washer or dryer (a round porthole door, a control strip with a programme dial
+  // and buttons), or a top loader (a lid on top, the controls on a console at its back edge, like
+  // a range's back panel).
+  void buildWashingMachine() {
+    m_width = m_rng.uniformf(0.55, 0.62);
+    m_depth = m_rng.uniformf(0.5, 0.65);
+    m_height = m_rng.uniformf(0.82, 0.9);
+    m_b.box(translation(0, 0, 0.5f * m_height), Vec3(m_width, m_depth, m_height), m_body,
+            m_rng.uniformf(0.0, 0.015), 2);
+    const KnobShape dial = randomKnob(m_rng, m_rng.uniformf(1.2f, 1.8f));
+    const int buttons = m_rng.uniformInt(0, 5);
+    if (m_rng.chance(0.3)) {
+      // Top loader: lid inset in the top, console along the back edge.
+      const float console = m_rng.uniformf(0.08, 0.14);
+      m_b.box(translation(0, -0.5f * console, m_height + 0.006f),
+              Vec3(m_width - 0.06f, m_depth - console - 0.06f, 0.012f), m_body, 0.004f, 1);
+      const float cz = m_height + 0.5f * console;
+      const float cy = 0.5f * m_depth - 0.5f * console;
+      m_b.box(translation(0, cy, cz), Vec3(m_width, console, console), m_body, 0.01f, 2);
+      buildKnob(m_b, translation(0.3f * m_width, cy - 0.5f * console, cz) * rotationX(kPi / 2),
+                dial, m_knob, m_accent);
+      ++m_knobs;
+      for (int i = 0; i < buttons; ++i)
+        m_b.box(translation(-0.35f * m_width + 0.07f * i, cy - 0.5f * console - 0.003f, cz),
+                Vec3(0.02f, 0.006f, 0.012f), m_accent, 0.001f, 1);
+      m_height += console;
+      m_extras.push_back("top_loader");
+    } else {
+      const float strip = m_rng.uniformf(0.1, 0.16);
+      const float sz = m_height - 0.5f * strip;
+      m_b.box(translation(0, fy() - 0.003f, sz), Vec3(m_width - 0.02f, 0.006f, strip - 0.02f),
+              m_rng.chance(0.5) ? m_glass : m_body);
+      if (m_rng.chance(0.6)) {  // the detergent drawer on the left
+        m_b.box(translation(-0.3f * m_width, fy() - 0.008f, sz),
+                Vec3(0.3f * m_width, 0.01f, strip - 0.04f), m_body, 0.003f, 1);
+        m_extras.push_back("drawer");
+      }
+      knob(0.2f * m_width, sz, dial);
+      for (int i = 0; i < buttons; ++i)
+        m_b.box(translation(0.32f * m_width + 0.035f * (i % 2), fy() - 0.008f,
+                            sz + 0.03f * (i / 2 - 1)),
+                Vec3(0.018f, 0.006f, 0.012f), m_accent, 0.001f, 1);
+      // The porthole: a ring round a bulging glass.
+      const float r = std::min(0.42f * m_width, 0.35f * (m_height - strip));
+      const float dz = 0.45f * (m_height - strip);
+      const Affine door = translation(0, fy(), dz) * rotationX(kPi / 2);
+      m_b.lathe(door, {{r, 0.0f}, {r, 0.03f}, {0.85f * r, 0.045f}, {0.72f * r, 0.04f}}, 40,
+                m_rng.chance(0.5) ? m_handle : m_body);
+      m_b.lathe(door, {{0.72f * r, 0.035f}, {0.5f * r, 0.05f}, {0.0f, 0.055f}}, 40, m_glass);
+      m_extras.push_back(m_rng.chance(0.5) ? "washer" : "dryer");
+    }
+  }
+
+  // A two- or four-slot toaster: slots sunk into its top, a lever on the front, a browning dial.
+  void buildToaster() {
+    const int slots = m_rng.chance(0.7) ? 2 : 4;
+    m_width = slots == 2 ? m_rng.uniformf(0.25, 0.32) : m_rng.uniformf(0.3, 0.4);
+    m_depth = slots == 2 ? m_rng.uniformf(0.15, 0.2) : m_rng.uniformf(0.25, 0.3);
+    m_height = m_rng.uniformf(0.18, 0.22);
+    const float top = 0.015f;
+    m_b.box(translation(0, 0, 0.5f * (m_height - top)), Vec3(m_width, m_depth, m_height - top),
+            m_body, m_rng.uniformf(0.005, 0.02), 3);
+    // Each slot its own strip of the top, with a hole over a dark well.
+    const int rows = slots == 2 ? 1 : 2;
+    const int perRow = 2;
+    const float cellW = m_width / rows, cellD = m_depth / perRow;
+    const int dark = m_b.material("slot", finishNamed(m_rng, "matte_black").color);
+    for (int a = 0; a < rows; ++a)
+      for (int b = 0; b < perRow; ++b) {
+        const float x = -0.5f * m_width + cellW * (a + 0.5f),
+                    y = -0.5f * m_depth + cellD * (b + 0.5f);
+        const RoundedRect hole{{0, 0}, {0.4f * cellW, 0.15f * cellD}, 0.004f, 0};
+        m_b.plateWithHole(translation(x, y, m_height - top), Vec2(0.5f * cellW, 0.5f * cellD), hole,
+                          0, top, 2, m_body);
+        m_b.box(translation(x, y, m_height - top - 0.002f),
+                Vec3(0.8f * cellW, 0.3f * cellD, 0.004f), dark);
+      }
+    m_b.box(translation(0.3f * m_width, fy() - 0.015f, 0.6f * m_height),
+            Vec3(0.035f, 0.03f, 0.015f), m_handle, 0.003f, 1);
+    knob(-0.3f * m_width, 0.35f * m_height, randomKnob(m_rng, 0.8f));
+    m_extras.push_back(slots == 2 ? "two_slots" : "four_slots");
+  }
+
+  // Small appliances that stand on a worktop: a kettle on its base, a blender (a jug on a motor
+  // block with a dial), or a drip coffee maker (a tower over a carafe on a warming plate).
+  void buildCountertopAppliance() {
+    const int style = m_rng.uniformInt(0, 2);
+    const float r = m_rng.uniformf(0.07, 0.1);
+    auto jug = [&](float z0, float height, int material) {
+      m_b.lathe(translation(0, 0, z0),
+                {{0.0f, 0.0f},
+                 {r, 0.0f},
+                 {r * m_rng.uniformf(0.9f, 1.15f), 0.6f * height},
+                 {r * m_rng.uniformf(0.7f, 1.0f), height},
+                 {0.0f, height + 0.005f}},
+                32, material);
+      m_b.tube({{r, 0, z0 + 0.2f * height},
+                {r + 0.05f, 0, z0 + 0.3f * height},
+                {r + 0.05f, 0, z0 + 0.75f * height},
+                {0.9f * r, 0, z0 + 0.85f * height}},
+               0.01f, 8, m_handle);
+    };
+    if (style == 0) {
+      m_b.cylinder(Affine::Identity(), r + 0.01f, 0.0f, 0.02f, 32, m_knob);
+      const float h = m_rng.uniformf(0.18, 0.26);
+      jug(0.02f, h, m_body);
+      m_width = m_depth = 2 * r + 0.12f;
+      m_height = h + 0.03f;
+      m_extras.push_back("kettle");
+    } else if (style == 1) {
+      const float block = m_rng.uniformf(0.08, 0.13);
+      m_b.box(translation(0, 0, 0.5f * block), Vec3(2.2f * r, 2.2f * r, block), m_body, 0.01f, 2);
+      m_depth = 2.2f * r;
+      knob(0, 0.5f * block, randomKnob(m_rng, 1.0f));
+      const float h = m_rng.uniformf(0.2, 0.3);
+      jug(block, h, m_glass);
+      m_width = 2.2f * r + 0.12f;
+      m_height = block + h;
+      m_extras.push_back("blender");
+    } else {
+      m_width = m_rng.uniformf(0.2, 0.28);
+      m_depth = m_rng.uniformf(0.22, 0.3);
+      m_height = m_rng.uniformf(0.3, 0.4);
+      const float baseH = 0.04f, towerD = 0.4f * m_depth, headH = 0.08f;
+      m_b.box(translation(0, 0, 0.5f * baseH), Vec3(m_width, m_depth, baseH), m_body, 0.006f, 2);
+      m_b.box(translation(0, 0.5f * m_depth - 0.5f * towerD, 0.5f * m_height),
+              Vec3(m_width, towerD, m_height), m_body, 0.008f, 2);
+      m_b.box(translation(0, 0, m_height - 0.5f * headH), Vec3(m_width, m_depth, headH), m_body,
+              0.008f, 2);
+      m_b.cylinder(translation(0, -0.15f * m_depth, 0), 0.8f * r, baseH, baseH + 0.005f, 32,
+                   m_knob);
+      m_b.lathe(
+          translation(0, -0.15f * m_depth, baseH + 0.005f),
+          {{0.0f, 0.0f}, {0.8f * r, 0.0f}, {0.9f * r, 0.08f}, {0.6f * r, 0.14f}, {0.0f, 0.145f}},
+          32, m_glass);
+      m_b.box(translation(0.3f * m_width, fy() - 0.004f, 0.5f * baseH), Vec3(0.03f, 0.008f, 0.015f),
+              m_accent, 0.001f, 1);
+      m_extras.push_back("coffee_maker");
+    }
+  }
+
   void buildCabinet() {
     const bool wall = m_rng.chance(0.35);
     m_width = m_rng.uniformf(0.3, 1.2);
@@ -248,6 +399,7 @@ class DistractorBuilder {
   }
 
   Rng& m_rng;
+  bool m_appliances = false;
   ShapeBuilder m_b;
   nlohmann::json m_params = nlohmann::json::object();
   std::vector<std::string> m_extras;
@@ -260,11 +412,14 @@ class DistractorBuilder {
 }  // namespace
 
 const std::vector<std::string>& distractorKinds() {
-  static const std::vector<std::string> kinds = {"microwave", "wall_oven", "dishwasher", "range_hood",
-                                                 "cabinet"};
+  static const std::vector<std::string> kinds = {
+      "microwave", "wall_oven",       "dishwasher", "range_hood",
+      "cabinet",   "washing_machine", "toaster",    "countertop_appliance"};
   return kinds;
 }
 
-GeneratedObject generateDistractor(Rng& rng) { return DistractorBuilder(rng).run(); }
+GeneratedObject generateDistractor(Rng& rng, bool appliances) {
+  return DistractorBuilder(rng, appliances).run();
+}
 
 }  // namespace sagrid::gen
