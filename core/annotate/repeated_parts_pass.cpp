@@ -26,9 +26,16 @@ void applyRepeatedParts(ModelPrediction& prediction, const std::vector<Connected
   if (prediction.type != "togglebutton") return;
   auto points =
       completeRepeatedParts(prediction.field, prediction.points, parts, extraction, settings);
-  for (std::size_t i = prediction.points.size(); i < points.size(); ++i)
-    prediction.surface.push_back(
-        projectToSurface(points[i].position, features.normalization, scene, fileUp));
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    if (i < prediction.points.size() && points[i].position == prediction.points[i].position)
+      continue;
+    const SurfacePoint s =
+        projectToSurface(points[i].position, features.normalization, scene, fileUp);
+    if (i < prediction.surface.size())
+      prediction.surface[i] = s;
+    else
+      prediction.surface.push_back(s);
+  }
   prediction.points = std::move(points);
 }
 

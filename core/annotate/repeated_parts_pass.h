@@ -15,7 +15,8 @@ namespace sagrid {
 // The connected parts of `mesh` (z-up mesh frame) in the normalized frame of `normalization`.
 std::vector<ConnectedPart> normalizedParts(const Mesh& mesh, const Normalization& normalization);
 
-// Adds the points on copies to `prediction` (points and surface) when it is of toggle buttons;
+// Adds the points on copies to `prediction` (points and surface), and moves a point onto a nearby
+// pair of equal parts (re-projected), when it is of toggle buttons;
 // other types are left as they are: a hob's burners come in several sizes and sit among grate
 // bars that are copies of one another (on the bench val split, burner precision fell 90 -> 82 %
 // with the pass on them). `parts` from normalizedParts.

@@ -12,6 +12,18 @@ namespace {
 // Where a new point's field is read: the smallest predicted distance within this many voxels.
 constexpr int kFieldRadius = 2;
 
+// How many other parts are copies of part p.
+int copies(const std::vector<ConnectedPart>& parts, std::size_t p, float tolerance) {
+  int n = 0;
+  for (std::size_t q = 0; q < parts.size(); ++q)
+    n += q != p && congruentParts(parts[p], parts[q], tolerance);
+  return n;
+}
+
+bool small(const ConnectedPart& part, const RepeatedPartSettings& settings) {
+  return !part.box.isEmpty() && part.box.diagonal().norm() <= settings.maxPartDiagonal;
+}
+
 // The part `point` lies on, when it has copies: of the small parts whose grown box holds it and
 // that have a copy, the one with the largest area.
 std::optional<std::size_t> seedPart(const Eigen::Vector3f& point,
@@ -19,15 +31,31 @@ std::optional<std::size_t> seedPart(const Eigen::Vector3f& point,
                                     const RepeatedPartSettings& settings) {
   std::optional<std::size_t> best;
   for (std::size_t p = 0; p < parts.size(); ++p) {
-    const ConnectedPart& part = parts[p];
-    if (part.box.isEmpty() || part.box.diagonal().norm() > settings.maxPartDiagonal ||
-        part.box.exteriorDistance(point) > touch || (best && part.area <= parts[*best].area))
+    if (!small(parts[p], settings) || parts[p].box.exteriorDistance(point) > touch ||
+        (best && parts[p].area <= parts[*best].area))
       continue;
-    for (std::size_t q = 0; q < parts.size(); ++q)
-      if (q != p && congruentParts(part, parts[q], settings.congruenceTolerance)) {
-        best = p;
-        break;
-      }
+    if (copies(parts, p, settings.congruenceTolerance) > 0) best = p;
+  }
+  return best;
+}
+
+// The nearest small part with exactly one copy (a pair) within `reach` of `point` (box distance)
+// where the field is at most `maxDistance`.
+std::optional<std::size_t> nearbyPairedPart(const Eigen::Vector3f& point,
+                                            const std::vector<ConnectedPart>& parts, float reach,
+                                            float maxDistance, const PredictedField& field,
+                                            const DenseField& dense,
+                                            const RepeatedPartSettings& settings) {
+  std::optional<std::size_t> best;
+  float bestGap = reach;
+  for (std::size_t p = 0; p < parts.size(); ++p) {
+    const float gap = parts[p].box.exteriorDistance(point);
+    if (!small(parts[p], settings) || gap > bestGap) continue;
+    const float d = nearbyDistance(
+        field, dense, voxelContaining(parts[p].centroid, field.resolution), kFieldRadius);
+    if (!std::isfinite(d) || d > maxDistance || copies(parts, p, settings.congruenceTolerance) != 1)
+      continue;
+    best = p, bestGap = gap;
   }
   return best;
 }
@@ -56,9 +84,20 @@ std::vector<ExtractedPoint> completeRepeatedParts(const PredictedField& field,
   const float voxel = 1.0f / static_cast<float>(field.resolution);
   const float touch = settings.touchVoxels * voxel;
   const float separation = static_cast<float>(settings.separationVoxels) * voxel;
+  const float pairReach = settings.pairReachVoxels * voxel;
   std::vector<ExtractedPoint> out = points;
-  for (const auto& p : points) {
-    const auto seed = seedPart(p.position, parts, touch, settings);
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    ExtractedPoint p = points[i];
+    auto seed = seedPart(p.position, parts, touch, settings);
+    const bool onSmallPart =
+        std::any_of(parts.begin(), parts.end(), [&](const ConnectedPart& part) {
+          return small(part, settings) && part.box.exteriorDistance(p.position) <= touch;
+        });
+    if (!seed && !onSmallPart && pairReach > 0) {
+      seed = nearbyPairedPart(p.position, parts, pairReach,
+                              p.distance + settings.maxDistanceAbovePoint, field, dense, settings);
+      if (seed) out[i].position = p.position = parts[*seed].centroid;
+    }
     if (!seed) continue;
     const ConnectedPart& part = parts[*seed];
     const Eigen::Vector3f offset = p.position - part.centroid;

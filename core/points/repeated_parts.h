@@ -3,7 +3,9 @@
 // separate parts of the mesh with the same shape; the network's field over such a row is often
 // one long shallow valley, and the count keeps one or two points of it. A point that lies on a
 // small part gets a point on every copy of that part (moved, turned or mirrored) where the field
-// is low enough and no point is yet. Works in the normalized frame.
+// is low enough and no point is yet. A mixer's two handles are often predicted as one point
+// between them, at the spout: a point on no small part moves onto a nearby pair of equal parts.
+// Works in the normalized frame.
 #pragma once
 
 #include <vector>
@@ -28,13 +30,18 @@ struct RepeatedPartSettings {
   // A copy gets no point when a point lies within this many voxels of where it would go, or
   // within touchVoxels of its box.
   int separationVoxels = 3;
+  // A point on no small part (a handle predicted at the spout's foot, on the spout or the basin)
+  // moves to the nearest small part within this many voxels that has exactly one copy (a hot and
+  // a cold handle) where the field is low enough, and its copy gets a point; 0 = never.
+  float pairReachVoxels = 6.0f;
 };
 
 // `points` plus, for each point (best first), a point on every copy of the part it lies on: of the
-// small parts that hold it and have a copy, the one with the largest area. The new point keeps
-// its offset from the part's centroid, moved to the copy's centroid (mirrored across the plane
-// between the two centroids when the copy's box is not the part's box moved). `parts` are in the
-// normalized frame (connectedParts of the normalized mesh). New points come after the given
+// small parts that hold it and have a copy, the one with the largest area; a point on no small
+// part is first moved to the centroid of a paired part near it (pairReachVoxels). The new point
+// keeps its offset from the part's centroid, moved to the copy's centroid (mirrored across the
+// plane between the two centroids when the copy's box is not the part's box moved). `parts` are in
+// the normalized frame (connectedParts of the normalized mesh). New points come after the given
 // ones; a new point's distance is the field's smallest within two voxels, its confidence
 // exp(-distance / confidenceScale). Unchanged without parts or field.
 std::vector<ExtractedPoint> completeRepeatedParts(const PredictedField& field,

@@ -113,5 +113,51 @@ TEST(RepeatedParts, ATurnedCopyMirrorsThePointAcrossThePlaneBetweenThem) {
   EXPECT_TRUE(out[1].position.isApprox(right - Eigen::Vector3f(1.5f * kVoxel, 0, 0), 1e-5f));
 }
 
+// A mixer on a counter: a spout (a column taller than a small part may be) with two equal handles
+// 5 voxels either side of it, and `extra` more handles further along when given.
+std::vector<ConnectedPart> mixer(const std::vector<Eigen::Vector3f>& handles) {
+  Mesh mesh = test::box(onPlate(16, 16) - Eigen::Vector3f(1, 1, 0) * kVoxel,
+                        onPlate(16, 16) + Eigen::Vector3f(1, 1, 8) * kVoxel);
+  for (const auto& h : handles)
+    test::append(mesh, knobBox(h, Eigen::Vector3f(1.0f, 0.5f, 0.5f) * kVoxel));
+  return connectedParts(mesh);
+}
+
+TEST(RepeatedParts, APointAtTheSpoutMovesOntoTheNearerOfTwoEqualHandlesAndPairsIt) {
+  const Eigen::Vector3f left = onPlate(11, 16), right = onPlate(21, 16);
+  const auto field =
+      test::plateFieldWithOffsets({onPlate(15, 16), left, right}, {0.0f, 0.01f, 0.01f});
+  // Predicted at the spout's foot, a voxel to its left.
+  const auto out = completeRepeatedParts(field, {pointAt(field, onPlate(15, 16))},
+                                         mixer({left, right}), ExtractionSettings{});
+  ASSERT_EQ(out.size(), 2u);
+  EXPECT_TRUE(out[0].position.isApprox(left, 1e-5f));
+  EXPECT_TRUE(out[1].position.isApprox(right, 1e-5f));
+  // Off: the point stays where it was.
+  RepeatedPartSettings stay;
+  stay.pairReachVoxels = 0;
+  const auto kept = completeRepeatedParts(field, {pointAt(field, onPlate(15, 16))},
+                                          mixer({left, right}), ExtractionSettings{}, stay);
+  ASSERT_EQ(kept.size(), 1u);
+  EXPECT_TRUE(kept[0].position.isApprox(onPlate(15, 16)));
+}
+
+TEST(RepeatedParts, NoMoveOntoPartsThatAreMoreThanAPairOrOutOfReach) {
+  const Eigen::Vector3f left = onPlate(11, 16), right = onPlate(21, 16);
+  const auto field = test::plateField({onPlate(15, 16), left, right});
+  const auto atSpout = pointAt(field, onPlate(15, 16));
+  // Four equal parts: a row of something else, not a hot and a cold handle.
+  EXPECT_EQ(
+      completeRepeatedParts(field, {atSpout}, mixer({left, right, onPlate(5, 16), onPlate(27, 16)}),
+                            ExtractionSettings{})
+          .size(),
+      1u);
+  // The pair 10 voxels away.
+  EXPECT_EQ(completeRepeatedParts(field, {atSpout}, mixer({onPlate(4, 16), onPlate(28, 16)}),
+                                  ExtractionSettings{})
+                .size(),
+            1u);
+}
+
 }  // namespace
 }  // namespace sagrid
