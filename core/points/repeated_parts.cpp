@@ -83,7 +83,10 @@ std::vector<ExtractedPoint> completeRepeatedParts(const PredictedField& field,
   const DenseField dense(field.voxels, field.resolution);
   const float voxel = 1.0f / static_cast<float>(field.resolution);
   const float touch = settings.touchVoxels * voxel;
-  const float separation = static_cast<float>(settings.separationVoxels) * voxel;
+  // Parts of one instance (the spokes of a cross handle) are copies of one another too: no point
+  // within the count's suppression radius of another.
+  const float separation =
+      std::max(static_cast<float>(settings.separationVoxels) * voxel, extraction.nmsRadius);
   const float pairReach = settings.pairReachVoxels * voxel;
   std::vector<ExtractedPoint> out = points;
   for (std::size_t i = 0; i < points.size(); ++i) {

@@ -79,6 +79,22 @@ TEST(RepeatedParts, ACopyThatHasAPointGetsNoSecond) {
   EXPECT_EQ(out.size(), 4u);
 }
 
+TEST(RepeatedParts, NoPointOnACopyWithinTheSuppressionRadius) {
+  // The knobs are 6 voxels (0.19) apart: a suppression radius of 0.25 takes them for parts of
+  // one instance (like the spokes of a cross handle), 0.15 for instances of their own.
+  const auto knobs = knobRow();
+  const auto field = test::plateField(knobs);
+  ExtractionSettings wide;
+  wide.nmsRadius = 0.25f;
+  EXPECT_EQ(
+      completeRepeatedParts(field, {pointAt(field, knobs[0])}, panelWithKnobs(knobs), wide).size(),
+      2u);  // only the last knob is 0.56 away
+  wide.nmsRadius = 0.15f;
+  EXPECT_EQ(
+      completeRepeatedParts(field, {pointAt(field, knobs[0])}, panelWithKnobs(knobs), wide).size(),
+      4u);
+}
+
 TEST(RepeatedParts, NothingIsAddedFromALargePartOrAPartWithoutCopies) {
   const auto knobs = knobRow();
   const auto field = test::plateField(knobs);
