@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
+#include <unordered_map>
 
 #include "core/points/field_lookup.h"
 
@@ -12,13 +13,35 @@ namespace {
 // Where a new point's field is read: the smallest predicted distance within this many voxels.
 constexpr int kFieldRadius = 2;
 
-// How many other parts are copies of part p.
-int copies(const std::vector<ConnectedPart>& parts, std::size_t p, float tolerance) {
-  int n = 0;
-  for (std::size_t q = 0; q < parts.size(); ++q)
-    n += q != p && congruentParts(parts[p], parts[q], tolerance);
-  return n;
-}
+// A knob, a handle or a cap has a few faces at least: single triangles and quads (decals, the
+// pieces of a triangle soup) are never one instance, and a soup of them would make every copy
+// search quadratic.
+constexpr int kMinPartTriangles = 8;
+
+// The parts of an object grouped by triangle count (copies have the same), so that finding a
+// part's copies reads only its group.
+class PartCopies {
+ public:
+  PartCopies(const std::vector<ConnectedPart>& parts, float tolerance)
+      : m_parts(parts), m_tolerance(tolerance) {
+    for (std::size_t p = 0; p < parts.size(); ++p)
+      if (parts[p].triangles >= kMinPartTriangles) m_groups[parts[p].triangles].push_back(p);
+  }
+  // The other parts that are copies of part p.
+  std::vector<std::size_t> of(std::size_t p) const {
+    std::vector<std::size_t> out;
+    const auto group = m_groups.find(m_parts[p].triangles);
+    if (group == m_groups.end()) return out;
+    for (std::size_t q : group->second)
+      if (q != p && congruentParts(m_parts[p], m_parts[q], m_tolerance)) out.push_back(q);
+    return out;
+  }
+
+ private:
+  const std::vector<ConnectedPart>& m_parts;
+  float m_tolerance;
+  std::unordered_map<int, std::vector<std::size_t>> m_groups;
+};
 
 bool small(const ConnectedPart& part, const RepeatedPartSettings& settings) {
   return !part.box.isEmpty() && part.box.diagonal().norm() <= settings.maxPartDiagonal;
@@ -27,14 +50,15 @@ bool small(const ConnectedPart& part, const RepeatedPartSettings& settings) {
 // The part `point` lies on, when it has copies: of the small parts whose grown box holds it and
 // that have a copy, the one with the largest area.
 std::optional<std::size_t> seedPart(const Eigen::Vector3f& point,
-                                    const std::vector<ConnectedPart>& parts, float touch,
+                                    const std::vector<ConnectedPart>& parts,
+                                    const PartCopies& copies, float touch,
                                     const RepeatedPartSettings& settings) {
   std::optional<std::size_t> best;
   for (std::size_t p = 0; p < parts.size(); ++p) {
     if (!small(parts[p], settings) || parts[p].box.exteriorDistance(point) > touch ||
         (best && parts[p].area <= parts[*best].area))
       continue;
-    if (copies(parts, p, settings.congruenceTolerance) > 0) best = p;
+    if (!copies.of(p).empty()) best = p;
   }
   return best;
 }
@@ -42,7 +66,8 @@ std::optional<std::size_t> seedPart(const Eigen::Vector3f& point,
 // The nearest small part with exactly one copy (a pair) within `reach` of `point` (box distance)
 // where the field is at most `maxDistance`.
 std::optional<std::size_t> nearbyPairedPart(const Eigen::Vector3f& point,
-                                            const std::vector<ConnectedPart>& parts, float reach,
+                                            const std::vector<ConnectedPart>& parts,
+                                            const PartCopies& copies, float reach,
                                             float maxDistance, const PredictedField& field,
                                             const DenseField& dense,
                                             const RepeatedPartSettings& settings) {
@@ -53,8 +78,7 @@ std::optional<std::size_t> nearbyPairedPart(const Eigen::Vector3f& point,
     if (!small(parts[p], settings) || gap > bestGap) continue;
     const float d = nearbyDistance(
         field, dense, voxelContaining(parts[p].centroid, field.resolution), kFieldRadius);
-    if (!std::isfinite(d) || d > maxDistance || copies(parts, p, settings.congruenceTolerance) != 1)
-      continue;
+    if (!std::isfinite(d) || d > maxDistance || copies.of(p).size() != 1) continue;
     best = p, bestGap = gap;
   }
   return best;
@@ -88,25 +112,25 @@ std::vector<ExtractedPoint> completeRepeatedParts(const PredictedField& field,
   const float separation =
       std::max(static_cast<float>(settings.separationVoxels) * voxel, extraction.nmsRadius);
   const float pairReach = settings.pairReachVoxels * voxel;
+  const PartCopies copies(parts, settings.congruenceTolerance);
   std::vector<ExtractedPoint> out = points;
   for (std::size_t i = 0; i < points.size(); ++i) {
     ExtractedPoint p = points[i];
-    auto seed = seedPart(p.position, parts, touch, settings);
+    auto seed = seedPart(p.position, parts, copies, touch, settings);
     const bool onSmallPart =
         std::any_of(parts.begin(), parts.end(), [&](const ConnectedPart& part) {
           return small(part, settings) && part.box.exteriorDistance(p.position) <= touch;
         });
     if (!seed && !onSmallPart && pairReach > 0) {
-      seed = nearbyPairedPart(p.position, parts, pairReach,
+      seed = nearbyPairedPart(p.position, parts, copies, pairReach,
                               p.distance + settings.maxDistanceAbovePoint, field, dense, settings);
       if (seed) out[i].position = p.position = parts[*seed].centroid;
     }
     if (!seed) continue;
     const ConnectedPart& part = parts[*seed];
     const Eigen::Vector3f offset = p.position - part.centroid;
-    for (std::size_t q = 0; q < parts.size(); ++q) {
+    for (std::size_t q : copies.of(*seed)) {
       const ConnectedPart& copy = parts[q];
-      if (q == *seed || !congruentParts(part, copy, settings.congruenceTolerance)) continue;
       const Eigen::Vector3f at = pointOnCopy(part, copy, offset, settings.congruenceTolerance);
       const bool taken = std::any_of(out.begin(), out.end(), [&](const ExtractedPoint& o) {
         return (o.position - at).norm() <= separation ||

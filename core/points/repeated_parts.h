@@ -19,7 +19,8 @@ struct RepeatedPartSettings {
   // A point belongs to the parts whose box, grown by this many voxels, holds it.
   float touchVoxels = 1.5f;
   // Only parts up to this box diagonal (normalized units) can be one instance: a knob, a handle,
-  // a burner cap, not a panel or the cabinet.
+  // a burner cap, not a panel or the cabinet. Parts of fewer than 8 triangles never are (decals,
+  // the pieces of a triangle soup).
   float maxPartDiagonal = 0.2f;
   // Copies: congruentParts within this relative tolerance (a knob turned to another setting
   // voxelizes and rounds a little differently).

@@ -95,6 +95,28 @@ TEST(RepeatedParts, NoPointOnACopyWithinTheSuppressionRadius) {
       4u);
 }
 
+TEST(RepeatedParts, TheTrianglesOfASoupAreNoInstances) {
+  // 20 000 equal single triangles over the plate (a triangle soup, as some scans and STL exports
+  // are): each is a part and a copy of all the others, but too simple to be a knob.
+  Mesh soup;
+  for (int t = 0; t < 20000; ++t) {
+    const Eigen::Vector3f at = onPlate(t % 32, (t / 32) % 32) +
+                               Eigen::Vector3f(0, 0, 0.001f * static_cast<float>(t / 1024));
+    const int base = static_cast<int>(soup.positions.size());
+    soup.positions.push_back(at);
+    soup.positions.push_back(at + Eigen::Vector3f(0.2f * kVoxel, 0, 0));
+    soup.positions.push_back(at + Eigen::Vector3f(0, 0.2f * kVoxel, 0));
+    soup.triangles.emplace_back(base, base + 1, base + 2);
+  }
+  const auto parts = connectedParts(soup);
+  ASSERT_EQ(parts.size(), 20000u);
+  const auto field = test::plateField({onPlate(16, 16)});
+  EXPECT_EQ(
+      completeRepeatedParts(field, {pointAt(field, onPlate(16, 16))}, parts, ExtractionSettings{})
+          .size(),
+      1u);
+}
+
 TEST(RepeatedParts, NothingIsAddedFromALargePartOrAPartWithoutCopies) {
   const auto knobs = knobRow();
   const auto field = test::plateField(knobs);
