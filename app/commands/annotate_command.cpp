@@ -106,7 +106,8 @@ void setupAnnotate(CLI::App& root) {
                 "it (a mixer's hot and cold handles)");
   cmd->add_flag("--no-repeated-parts", o->noRepeatedParts,
                 "Switch the repeated-parts pass off: a point on a small part of the mesh does not "
-                "give a point on every copy of that part (a row of equal knobs)");
+                "give a point on every copy of that part (a row of equal knobs), and a point at a "
+                "mixer's spout is not moved onto its pair of handles");
   cmd->add_option("--count", o->counts,
                   "Known instance count per type, e.g. --count heatsource=5 (k-means)");
   cmd->callback([o] {

@@ -72,8 +72,8 @@ void setupEval(CLI::App& root) {
   cmd->add_flag("--no-anchored-pairs", o->noAnchoredPairs,
                 "Do not pair toggle buttons across the spout beside them, as annotate");
   cmd->add_flag("--no-repeated-parts", o->noRepeatedParts,
-                "Switch the repeated-parts pass off (points on copies of a point's part), as "
-                "annotate");
+                "Switch the repeated-parts pass off (points on copies of a point's part, a "
+                "point moved onto a pair of handles), as annotate");
   cmd->add_option("--fit-counts", o->fitCounts,
                   "Refit each model's automatic instance count on the fields of this data and "
                   "write a models folder DIR with the refitted cards (eval it with --models DIR)");
