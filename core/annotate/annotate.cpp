@@ -40,6 +40,22 @@ PredictedField predictField(const model::AffordanceModel& model, const FeatureGr
   return field;
 }
 
+void setPoints(ModelPrediction& prediction, std::vector<ExtractedPoint> points,
+               const FeatureGrid& features, const SurfaceScene& scene, UpAxis fileUp) {
+  std::vector<SurfacePoint> surface;
+  for (const auto& point : points) {
+    std::size_t kept = 0;
+    while (kept < prediction.points.size() && prediction.points[kept].position != point.position)
+      ++kept;
+    surface.push_back(
+        kept < prediction.points.size()
+            ? prediction.surface[kept]
+            : projectToSurface(point.position, features.normalization, scene, fileUp));
+  }
+  prediction.points = std::move(points);
+  prediction.surface = std::move(surface);
+}
+
 ModelPrediction predictionFromField(const model::AffordanceModel& model, PredictedField field,
                                     const FeatureGrid& features, const SurfaceScene& scene,
                                     UpAxis fileUp, InstanceMode mode, int count,
@@ -51,19 +67,19 @@ ModelPrediction predictionFromField(const model::AffordanceModel& model, Predict
   p.type = card.type;
   p.source = card.sourceTag();
   p.field = std::move(field);
+  std::vector<ExtractedPoint> points;
   switch (mode) {
     case InstanceMode::Single:
-      p.points = {argminPoint(p.field, extraction)};
+      points = {argminPoint(p.field, extraction)};
       break;
     case InstanceMode::Count:
-      p.points = kMeansPoints(p.field, count, extraction);
+      points = kMeansPoints(p.field, count, extraction);
       break;
     case InstanceMode::Auto:
-      p.points = autoCountPoints(p.field, extraction);
+      points = autoCountPoints(p.field, extraction);
       break;
   }
-  for (const auto& point : p.points)
-    p.surface.push_back(projectToSurface(point.position, features.normalization, scene, fileUp));
+  setPoints(p, std::move(points), features, scene, fileUp);
   return p;
 }
 

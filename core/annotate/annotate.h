@@ -43,6 +43,12 @@ struct ModelPrediction {
 // symmetric copies of the object (test-time augmentation, core/annotate/symmetry_averaging.h).
 PredictedField predictField(const model::AffordanceModel& model, const FeatureGrid& features,
                             int symmetries = 1);
+// Sets `prediction`'s points (normalized frame) to `points`: one at the position of a point it
+// had keeps that point's surface point, the others are projected onto the surface. The passes
+// after the count (mirror pairs, repeated parts) add and move points through it.
+void setPoints(ModelPrediction& prediction, std::vector<ExtractedPoint> points,
+               const FeatureGrid& features, const SurfaceScene& scene, UpAxis fileUp);
+
 // Points (instance mode) from a field predicted by `model`, projected onto the surface.
 ModelPrediction predictionFromField(const model::AffordanceModel& model, PredictedField field,
                                     const FeatureGrid& features, const SurfaceScene& scene,

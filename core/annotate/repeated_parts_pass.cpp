@@ -1,8 +1,6 @@
 #include "core/annotate/repeated_parts_pass.h"
 
-#include "core/features/feature_grid.h"
 #include "core/grid/normalization.h"
-#include "core/points/surface_projection.h"
 
 namespace sagrid {
 
@@ -24,19 +22,9 @@ void applyRepeatedParts(ModelPrediction& prediction, const std::vector<Connected
                         const ExtractionSettings& extraction,
                         const RepeatedPartSettings& settings) {
   if (prediction.type != "togglebutton") return;
-  auto points =
-      completeRepeatedParts(prediction.field, prediction.points, parts, extraction, settings);
-  for (std::size_t i = 0; i < points.size(); ++i) {
-    if (i < prediction.points.size() && points[i].position == prediction.points[i].position)
-      continue;
-    const SurfacePoint s =
-        projectToSurface(points[i].position, features.normalization, scene, fileUp);
-    if (i < prediction.surface.size())
-      prediction.surface[i] = s;
-    else
-      prediction.surface.push_back(s);
-  }
-  prediction.points = std::move(points);
+  setPoints(prediction,
+            completeRepeatedParts(prediction.field, prediction.points, parts, extraction, settings),
+            features, scene, fileUp);
 }
 
 }  // namespace sagrid

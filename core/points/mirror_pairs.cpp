@@ -119,8 +119,7 @@ std::optional<ExtractedPoint> twinAcross(const MirrorPlane& plane, const Extract
   ExtractedPoint twin;
   twin.position = image;
   twin.distance = distance;
-  twin.confidence =
-      std::exp(-std::max(distance, 0.0f) / std::max(extraction.confidenceScale, 1e-6f));
+  twin.confidence = confidenceOf(distance, extraction);
   return twin;
 }
 

@@ -9,6 +9,11 @@
 #include "core/common/error.h"
 
 namespace sagrid {
+
+float confidenceOf(float distance, const ExtractionSettings& s) {
+  return std::exp(-std::max(0.0f, distance) / std::max(1e-6f, s.confidenceScale));
+}
+
 namespace {
 
 void validate(const PredictedField& field) {
@@ -17,10 +22,6 @@ void validate(const PredictedField& field) {
   if (field.voxels.size() != field.distances.size())
     throw InvalidArgument("point extraction: " + std::to_string(field.distances.size()) +
                           " distances for " + std::to_string(field.voxels.size()) + " voxels");
-}
-
-float confidenceOf(float distance, const ExtractionSettings& s) {
-  return std::exp(-std::max(0.0f, distance) / std::max(1e-6f, s.confidenceScale));
 }
 
 ExtractedPoint pointAt(const PredictedField& field, std::size_t v, const ExtractionSettings& s) {

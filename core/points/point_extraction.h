@@ -50,6 +50,9 @@ struct ExtractedPoint {
   float confidence = 0;  // in (0, 1]
 };
 
+// A point's confidence from its predicted distance: exp(-distance / confidenceScale), in (0, 1].
+float confidenceOf(float distance, const ExtractionSettings& settings);
+
 // Throws InvalidArgument on an empty field or mismatched sizes.
 ExtractedPoint argminPoint(const PredictedField& field, const ExtractionSettings& settings);
 

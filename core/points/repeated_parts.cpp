@@ -47,20 +47,21 @@ bool small(const ConnectedPart& part, const RepeatedPartSettings& settings) {
   return !part.box.isEmpty() && part.box.diagonal().norm() <= settings.maxPartDiagonal;
 }
 
-// The part `point` lies on, when it has copies: of the small parts whose grown box holds it and
-// that have a copy, the one with the largest area.
-std::optional<std::size_t> seedPart(const Eigen::Vector3f& point,
-                                    const std::vector<ConnectedPart>& parts,
-                                    const PartCopies& copies, float touch,
-                                    const RepeatedPartSettings& settings) {
-  std::optional<std::size_t> best;
+// The small parts whose grown box holds a point: whether there are any, and the one it repeats
+// (of those with a copy, the one with the largest area).
+struct PartsAtPoint {
+  bool onSmallPart = false;
+  std::optional<std::size_t> seed;
+};
+PartsAtPoint partsAt(const Eigen::Vector3f& point, const std::vector<ConnectedPart>& parts,
+                     const PartCopies& copies, float touch, const RepeatedPartSettings& settings) {
+  PartsAtPoint at;
   for (std::size_t p = 0; p < parts.size(); ++p) {
-    if (!small(parts[p], settings) || parts[p].box.exteriorDistance(point) > touch ||
-        (best && parts[p].area <= parts[*best].area))
-      continue;
-    if (!copies.of(p).empty()) best = p;
+    if (!small(parts[p], settings) || parts[p].box.exteriorDistance(point) > touch) continue;
+    at.onSmallPart = true;
+    if ((!at.seed || parts[p].area > parts[*at.seed].area) && !copies.of(p).empty()) at.seed = p;
   }
-  return best;
+  return at;
 }
 
 // The nearest small part with exactly one copy (a pair) within `reach` of `point` (box distance)
@@ -116,12 +117,9 @@ std::vector<ExtractedPoint> completeRepeatedParts(const PredictedField& field,
   std::vector<ExtractedPoint> out = points;
   for (std::size_t i = 0; i < points.size(); ++i) {
     ExtractedPoint p = points[i];
-    auto seed = seedPart(p.position, parts, copies, touch, settings);
-    const bool onSmallPart =
-        std::any_of(parts.begin(), parts.end(), [&](const ConnectedPart& part) {
-          return small(part, settings) && part.box.exteriorDistance(p.position) <= touch;
-        });
-    if (!seed && !onSmallPart && pairReach > 0) {
+    const PartsAtPoint at = partsAt(p.position, parts, copies, touch, settings);
+    auto seed = at.seed;
+    if (!seed && !at.onSmallPart && pairReach > 0) {
       seed = nearbyPairedPart(p.position, parts, copies, pairReach,
                               p.distance + settings.maxDistanceAbovePoint, field, dense, settings);
       if (seed) out[i].position = p.position = parts[*seed].centroid;
@@ -131,22 +129,21 @@ std::vector<ExtractedPoint> completeRepeatedParts(const PredictedField& field,
     const Eigen::Vector3f offset = p.position - part.centroid;
     for (std::size_t q : copies.of(*seed)) {
       const ConnectedPart& copy = parts[q];
-      const Eigen::Vector3f at = pointOnCopy(part, copy, offset, settings.congruenceTolerance);
+      const Eigen::Vector3f onCopy = pointOnCopy(part, copy, offset, settings.congruenceTolerance);
       const bool taken = std::any_of(out.begin(), out.end(), [&](const ExtractedPoint& o) {
-        return (o.position - at).norm() <= separation ||
+        return (o.position - onCopy).norm() <= separation ||
                copy.box.exteriorDistance(o.position) <= touch;
       });
       if (taken) continue;
       const float distance =
-          nearbyDistance(field, dense, voxelContaining(at, field.resolution), kFieldRadius);
+          nearbyDistance(field, dense, voxelContaining(onCopy, field.resolution), kFieldRadius);
       if (!std::isfinite(distance) || (settings.maxDistanceAbovePoint >= 0 &&
                                        distance > p.distance + settings.maxDistanceAbovePoint))
         continue;
       ExtractedPoint added;
-      added.position = at;
+      added.position = onCopy;
       added.distance = distance;
-      added.confidence =
-          std::exp(-std::max(distance, 0.0f) / std::max(extraction.confidenceScale, 1e-6f));
+      added.confidence = confidenceOf(distance, extraction);
       out.push_back(added);
     }
   }

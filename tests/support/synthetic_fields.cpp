@@ -52,6 +52,16 @@ PredictedField fieldTowards(const FeatureGrid& grid, const std::vector<Eigen::Ve
   return f;
 }
 
+ExtractedPoint pointOnField(const PredictedField& field, const Eigen::Vector3f& p) {
+  ExtractedPoint e;
+  e.position = p;
+  const VoxelIndex at = voxelContaining(p, field.resolution);
+  for (std::size_t v = 0; v < field.voxels.size(); ++v)
+    if (field.voxels[v] == at) e.distance = field.distances[v];
+  e.confidence = 1.0f;
+  return e;
+}
+
 Eigen::Vector3f onPlate(int i, int j) { return voxelCenter({i, j, 10}, kPlateResolution); }
 
 std::vector<Eigen::Vector3f> fiveBurnersOnPlate() {

@@ -26,6 +26,10 @@ PredictedField plateFieldWithOffsets(const std::vector<Eigen::Vector3f>& centres
 PredictedField fieldTowards(const FeatureGrid& grid, const std::vector<Eigen::Vector3f>& centres,
                             const std::vector<float>& offsets);
 
+// The point at `p` (normalized frame) as the count would give it: the field's distance at its
+// voxel (0 when that voxel is not in the field), confidence 1.
+ExtractedPoint pointOnField(const PredictedField& field, const Eigen::Vector3f& p);
+
 // The centre of plate voxel (i, j) in the normalized frame.
 Eigen::Vector3f onPlate(int i, int j);
 

@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <limits>
 
+#include "support/synthetic_fields.h"
+
 namespace sagrid {
 namespace {
 
@@ -43,16 +45,6 @@ PredictedField fieldOf(const std::vector<VoxelIndex>& voxels,
     f.distances.push_back(best);
   }
   return f;
-}
-
-ExtractedPoint pointAt(const PredictedField& f, const Eigen::Vector3f& p) {
-  ExtractedPoint e;
-  e.position = p;
-  const auto at = voxelContaining(p, kRes);
-  for (std::size_t v = 0; v < f.voxels.size(); ++v)
-    if (f.voxels[v] == at) e.distance = f.distances[v];
-  e.confidence = 1.0f;
-  return e;
 }
 
 ExtractionSettings suppression(float radius) {
@@ -95,7 +87,7 @@ TEST(MirrorPairs, AddsTheTwinTapTheCountMissed) {
   const auto voxels = counterWithTaps({7, 23});
   // The field's minimum at the left tap is deep, at the right one shallow: the count keeps one.
   const auto f = fieldOf(voxels, {tapTop(7), tapTop(23)}, {0.0f, 0.03f});
-  const auto points = completeMirrorPairs(f, {pointAt(f, tapTop(7))}, suppression(0.1f));
+  const auto points = completeMirrorPairs(f, {test::pointOnField(f, tapTop(7))}, suppression(0.1f));
   ASSERT_EQ(points.size(), 2u);
   EXPECT_LT((points[0].position - tapTop(7)).norm(), 1e-6f);
   EXPECT_LT((points[1].position - tapTop(23)).norm(), 1e-5f);
@@ -114,11 +106,13 @@ TEST(MirrorPairs, AddsATwinVoxelizedOneVoxelOff) {
   const auto f = fieldOf(voxels, {tapTop(7), tapTop(24)}, {0.0f, 0.03f});
   MirrorPairSettings settings;
   settings.neighbourhoodVoxels = 1;
-  const auto points = completeMirrorPairs(f, {pointAt(f, tapTop(7))}, suppression(0.1f), settings);
+  const auto points =
+      completeMirrorPairs(f, {test::pointOnField(f, tapTop(7))}, suppression(0.1f), settings);
   ASSERT_EQ(points.size(), 2u);
   EXPECT_LT((points[1].position - tapTop(23)).norm(), 1e-5f);  // the exact image
   settings.matchToleranceVoxels = 0;
-  EXPECT_EQ(completeMirrorPairs(f, {pointAt(f, tapTop(7))}, suppression(0.1f), settings).size(),
+  EXPECT_EQ(completeMirrorPairs(f, {test::pointOnField(f, tapTop(7))}, suppression(0.1f), settings)
+                .size(),
             1u);
 }
 
@@ -128,25 +122,29 @@ TEST(MirrorPairs, NoTwinWhereTheShapeDiffers) {
   const auto voxels = counterWithTaps({7});
   ASSERT_TRUE(findMirrorPlane(voxels, kRes, 0.85f).has_value());
   const auto f = fieldOf(voxels, {tapTop(7), tapTop(23)}, {0.0f, 0.0f});
-  EXPECT_EQ(completeMirrorPairs(f, {pointAt(f, tapTop(7))}, suppression(0.1f)).size(), 1u);
+  EXPECT_EQ(completeMirrorPairs(f, {test::pointOnField(f, tapTop(7))}, suppression(0.1f)).size(),
+            1u);
 }
 
 TEST(MirrorPairs, NoTwinWhereTheFieldIsHigh) {
   const auto voxels = counterWithTaps({7, 23});
   const auto f = fieldOf(voxels, {tapTop(7), tapTop(23)}, {0.0f, 0.2f});
-  EXPECT_EQ(completeMirrorPairs(f, {pointAt(f, tapTop(7))}, suppression(0.1f)).size(), 1u);
+  EXPECT_EQ(completeMirrorPairs(f, {test::pointOnField(f, tapTop(7))}, suppression(0.1f)).size(),
+            1u);
   MirrorPairSettings anyField;
   anyField.maxDistanceAbovePoint = -1;
-  EXPECT_EQ(completeMirrorPairs(f, {pointAt(f, tapTop(7))}, suppression(0.1f), anyField).size(),
+  EXPECT_EQ(completeMirrorPairs(f, {test::pointOnField(f, tapTop(7))}, suppression(0.1f), anyField)
+                .size(),
             2u);
 }
 
 TEST(MirrorPairs, NoTwinWhenBothAreFoundOrThePointIsOnThePlane) {
   const auto voxels = counterWithTaps({7, 23, 15});  // the middle tap covers i 15..16
   const auto f = fieldOf(voxels, {tapTop(7), tapTop(23), tapTop(15)}, {0.0f, 0.0f, 0.0f});
-  const std::vector<ExtractedPoint> both{pointAt(f, tapTop(23)), pointAt(f, tapTop(7))};
+  const std::vector<ExtractedPoint> both{test::pointOnField(f, tapTop(23)),
+                                         test::pointOnField(f, tapTop(7))};
   EXPECT_EQ(completeMirrorPairs(f, both, suppression(0.1f)).size(), 2u);
-  const std::vector<ExtractedPoint> middle{pointAt(f, tapTop(15))};
+  const std::vector<ExtractedPoint> middle{test::pointOnField(f, tapTop(15))};
   EXPECT_EQ(completeMirrorPairs(f, middle, suppression(0.1f)).size(), 1u);
 }
 
@@ -178,13 +176,14 @@ TEST(MirrorPairs, AddsTheOtherHandleAcrossTheSpout) {
   // The handles are 6 voxels apart, within the count's suppression radius (0.3 = 9.6 voxels):
   // the object's own plane (the counter's middle) would not pair them either.
   const auto points =
-      completeAnchoredPairs(f, {pointAt(f, tapTop(7))}, {kSpoutTop}, suppression(0.3f));
+      completeAnchoredPairs(f, {test::pointOnField(f, tapTop(7))}, {kSpoutTop}, suppression(0.3f));
   ASSERT_EQ(points.size(), 2u);
   EXPECT_LT((points[0].position - tapTop(7)).norm(), 1e-6f);
   EXPECT_LT((points[1].position - tapTop(13)).norm(), 1e-5f);
   EXPECT_GE(points[1].distance, 0.03f);
   EXPECT_LE(points[1].distance, 0.03f + kVoxel);
-  EXPECT_EQ(completeMirrorPairs(f, {pointAt(f, tapTop(7))}, suppression(0.3f)).size(), 1u);
+  EXPECT_EQ(completeMirrorPairs(f, {test::pointOnField(f, tapTop(7))}, suppression(0.3f)).size(),
+            1u);
 }
 
 TEST(MirrorPairs, NoTwinAcrossTheSpoutForOneLeverOverIt) {
@@ -194,14 +193,16 @@ TEST(MirrorPairs, NoTwinAcrossTheSpoutForOneLeverOverIt) {
   const Eigen::Vector3f otherEnd =
       0.5f * (voxelCenter({13, 12, 16}, kRes) + voxelCenter({14, 13, 16}, kRes));
   const auto f = fieldOf(voxels, {leverEnd, otherEnd}, {0.0f, 0.0f});
-  EXPECT_EQ(completeAnchoredPairs(f, {pointAt(f, leverEnd)}, {kSpoutTop}, suppression(0.3f)).size(),
-            1u);
+  EXPECT_EQ(
+      completeAnchoredPairs(f, {test::pointOnField(f, leverEnd)}, {kSpoutTop}, suppression(0.3f))
+          .size(),
+      1u);
 }
 
 TEST(MirrorPairs, NoAnchoredTwinWithoutASpoutNearby) {
   const auto voxels = mixerOnCounter(false);
   const auto f = fieldOf(voxels, {tapTop(7), tapTop(13)}, {0.0f, 0.0f});
-  const std::vector<ExtractedPoint> handle{pointAt(f, tapTop(7))};
+  const std::vector<ExtractedPoint> handle{test::pointOnField(f, tapTop(7))};
   EXPECT_EQ(completeAnchoredPairs(f, handle, {}, suppression(0.3f)).size(), 1u);
   // A spout 18 voxels away, beyond the 10-voxel reach.
   const Eigen::Vector3f farSpout = voxelCenter({25, 12, 11}, kRes);
@@ -221,7 +222,9 @@ TEST(MirrorPairs, NoTwinAcrossAPlaneTheSpoutIsNotSymmetricAbout) {
       for (int k = 16; k <= 17; ++k) voxels.push_back({i, j, k});
   const auto f = fieldOf(voxels, {tapTop(7), tapTop(13)}, {0.0f, 0.03f});
   EXPECT_EQ(
-      completeAnchoredPairs(f, {pointAt(f, tapTop(7))}, {kSpoutTop}, suppression(0.3f)).size(), 1u);
+      completeAnchoredPairs(f, {test::pointOnField(f, tapTop(7))}, {kSpoutTop}, suppression(0.3f))
+          .size(),
+      1u);
 }
 
 }  // namespace

@@ -30,21 +30,18 @@ std::vector<ConnectedPart> panelWithKnobs(const std::vector<Eigen::Vector3f>& kn
   return connectedParts(mesh);
 }
 
-ExtractedPoint pointAt(const PredictedField& field, const Eigen::Vector3f& p) {
-  ExtractedPoint e;
-  e.position = p;
-  const VoxelIndex at = voxelContaining(p, field.resolution);
-  for (std::size_t v = 0; v < field.voxels.size(); ++v)
-    if (field.voxels[v] == at) e.distance = field.distances[v];
-  e.confidence = 1.0f;
-  return e;
+// The pass from one point (`at`, normalized frame) with the default extraction settings.
+std::vector<ExtractedPoint> fromPoint(const PredictedField& field, const Eigen::Vector3f& at,
+                                      const std::vector<ConnectedPart>& parts,
+                                      const RepeatedPartSettings& settings = {}) {
+  return completeRepeatedParts(field, {test::pointOnField(field, at)}, parts, ExtractionSettings{},
+                               settings);
 }
 
 TEST(RepeatedParts, AKnobGivesAPointOnEveryCopyInTheRow) {
   const auto knobs = knobRow();
   const auto field = test::plateFieldWithOffsets(knobs, {0.0f, 0.01f, 0.02f, 0.03f});
-  const auto out = completeRepeatedParts(field, {pointAt(field, knobs[1])}, panelWithKnobs(knobs),
-                                         ExtractionSettings{});
+  const auto out = fromPoint(field, knobs[1], panelWithKnobs(knobs));
   ASSERT_EQ(out.size(), 4u);
   EXPECT_TRUE(out[0].position.isApprox(knobs[1]));
   for (const auto& k : knobs) EXPECT_LT(test::nearestExtracted(out, k), 1e-4f);
@@ -57,16 +54,12 @@ TEST(RepeatedParts, AKnobGivesAPointOnEveryCopyInTheRow) {
 TEST(RepeatedParts, NoPointOnACopyWhereTheFieldIsHigh) {
   const auto knobs = knobRow();
   const auto field = test::plateFieldWithOffsets(knobs, {0.0f, 0.0f, 0.0f, 0.2f});
-  const auto out = completeRepeatedParts(field, {pointAt(field, knobs[0])}, panelWithKnobs(knobs),
-                                         ExtractionSettings{});
+  const auto out = fromPoint(field, knobs[0], panelWithKnobs(knobs));
   EXPECT_EQ(out.size(), 3u);
   EXPECT_GT(test::nearestExtracted(out, knobs[3]), 3 * kVoxel);
   RepeatedPartSettings anyField;
   anyField.maxDistanceAbovePoint = -1.0f;
-  EXPECT_EQ(completeRepeatedParts(field, {pointAt(field, knobs[0])}, panelWithKnobs(knobs),
-                                  ExtractionSettings{}, anyField)
-                .size(),
-            4u);
+  EXPECT_EQ(fromPoint(field, knobs[0], panelWithKnobs(knobs), anyField).size(), 4u);
 }
 
 TEST(RepeatedParts, ACopyThatHasAPointGetsNoSecond) {
@@ -74,8 +67,9 @@ TEST(RepeatedParts, ACopyThatHasAPointGetsNoSecond) {
   const auto field = test::plateField(knobs);
   // The second point a little off its knob's centre, still on it.
   const Eigen::Vector3f offKnob = knobs[2] + Eigen::Vector3f(0.5f * kVoxel, 0, 0);
-  const auto out = completeRepeatedParts(field, {pointAt(field, knobs[0]), pointAt(field, offKnob)},
-                                         panelWithKnobs(knobs), ExtractionSettings{});
+  const auto out = completeRepeatedParts(
+      field, {test::pointOnField(field, knobs[0]), test::pointOnField(field, offKnob)},
+      panelWithKnobs(knobs), ExtractionSettings{});
   EXPECT_EQ(out.size(), 4u);
 }
 
@@ -86,13 +80,15 @@ TEST(RepeatedParts, NoPointOnACopyWithinTheSuppressionRadius) {
   const auto field = test::plateField(knobs);
   ExtractionSettings wide;
   wide.nmsRadius = 0.25f;
-  EXPECT_EQ(
-      completeRepeatedParts(field, {pointAt(field, knobs[0])}, panelWithKnobs(knobs), wide).size(),
-      2u);  // only the last knob is 0.56 away
+  EXPECT_EQ(completeRepeatedParts(field, {test::pointOnField(field, knobs[0])},
+                                  panelWithKnobs(knobs), wide)
+                .size(),
+            2u);  // only the last knob is 0.56 away
   wide.nmsRadius = 0.15f;
-  EXPECT_EQ(
-      completeRepeatedParts(field, {pointAt(field, knobs[0])}, panelWithKnobs(knobs), wide).size(),
-      4u);
+  EXPECT_EQ(completeRepeatedParts(field, {test::pointOnField(field, knobs[0])},
+                                  panelWithKnobs(knobs), wide)
+                .size(),
+            4u);
 }
 
 TEST(RepeatedParts, TheTrianglesOfASoupAreNoInstances) {
@@ -111,10 +107,7 @@ TEST(RepeatedParts, TheTrianglesOfASoupAreNoInstances) {
   const auto parts = connectedParts(soup);
   ASSERT_EQ(parts.size(), 20000u);
   const auto field = test::plateField({onPlate(16, 16)});
-  EXPECT_EQ(
-      completeRepeatedParts(field, {pointAt(field, onPlate(16, 16))}, parts, ExtractionSettings{})
-          .size(),
-      1u);
+  EXPECT_EQ(fromPoint(field, onPlate(16, 16), parts).size(), 1u);
 }
 
 TEST(RepeatedParts, NothingIsAddedFromALargePartOrAPartWithoutCopies) {
@@ -122,19 +115,14 @@ TEST(RepeatedParts, NothingIsAddedFromALargePartOrAPartWithoutCopies) {
   const auto field = test::plateField(knobs);
   const auto parts = panelWithKnobs(knobs);
   // On the panel, far from the knobs.
-  const auto onPanel = pointAt(field, onPlate(16, 24));
+  const auto onPanel = test::pointOnField(field, onPlate(16, 24));
   EXPECT_EQ(completeRepeatedParts(field, {onPanel}, parts, ExtractionSettings{}).size(), 1u);
   // One knob larger than the others: no copy of it.
   Mesh mesh = knobBox(knobs[0], Eigen::Vector3f(1.5f, 0.5f, 0.5f) * kVoxel);
   for (std::size_t k = 1; k < knobs.size(); ++k)
     test::append(mesh, knobBox(knobs[k], Eigen::Vector3f(1.0f, 0.5f, 0.5f) * kVoxel));
-  EXPECT_EQ(completeRepeatedParts(field, {pointAt(field, knobs[0])}, connectedParts(mesh),
-                                  ExtractionSettings{})
-                .size(),
-            1u);
-  EXPECT_EQ(
-      completeRepeatedParts(field, {pointAt(field, knobs[0])}, {}, ExtractionSettings{}).size(),
-      1u);
+  EXPECT_EQ(fromPoint(field, knobs[0], connectedParts(mesh)).size(), 1u);
+  EXPECT_EQ(fromPoint(field, knobs[0], {}).size(), 1u);
 }
 
 TEST(RepeatedParts, ATurnedCopyMirrorsThePointAcrossThePlaneBetweenThem) {
@@ -145,8 +133,7 @@ TEST(RepeatedParts, ATurnedCopyMirrorsThePointAcrossThePlaneBetweenThem) {
   test::append(mesh, knobBox(right, Eigen::Vector3f(1.0f, 2.0f, 0.5f) * kVoxel));
   const auto field = test::plateField({left, right});
   const Eigen::Vector3f innerEnd = left + Eigen::Vector3f(1.5f * kVoxel, 0, 0);
-  const auto out = completeRepeatedParts(field, {pointAt(field, innerEnd)}, connectedParts(mesh),
-                                         ExtractionSettings{});
+  const auto out = fromPoint(field, innerEnd, connectedParts(mesh));
   ASSERT_EQ(out.size(), 2u);
   EXPECT_TRUE(out[1].position.isApprox(right - Eigen::Vector3f(1.5f * kVoxel, 0, 0), 1e-5f));
 }
@@ -166,16 +153,14 @@ TEST(RepeatedParts, APointAtTheSpoutMovesOntoTheNearerOfTwoEqualHandlesAndPairsI
   const auto field =
       test::plateFieldWithOffsets({onPlate(15, 16), left, right}, {0.0f, 0.01f, 0.01f});
   // Predicted at the spout's foot, a voxel to its left.
-  const auto out = completeRepeatedParts(field, {pointAt(field, onPlate(15, 16))},
-                                         mixer({left, right}), ExtractionSettings{});
+  const auto out = fromPoint(field, onPlate(15, 16), mixer({left, right}));
   ASSERT_EQ(out.size(), 2u);
   EXPECT_TRUE(out[0].position.isApprox(left, 1e-5f));
   EXPECT_TRUE(out[1].position.isApprox(right, 1e-5f));
   // Off: the point stays where it was.
   RepeatedPartSettings stay;
   stay.pairReachVoxels = 0;
-  const auto kept = completeRepeatedParts(field, {pointAt(field, onPlate(15, 16))},
-                                          mixer({left, right}), ExtractionSettings{}, stay);
+  const auto kept = fromPoint(field, onPlate(15, 16), mixer({left, right}), stay);
   ASSERT_EQ(kept.size(), 1u);
   EXPECT_TRUE(kept[0].position.isApprox(onPlate(15, 16)));
 }
@@ -183,7 +168,7 @@ TEST(RepeatedParts, APointAtTheSpoutMovesOntoTheNearerOfTwoEqualHandlesAndPairsI
 TEST(RepeatedParts, NoMoveOntoPartsThatAreMoreThanAPairOrOutOfReach) {
   const Eigen::Vector3f left = onPlate(11, 16), right = onPlate(21, 16);
   const auto field = test::plateField({onPlate(15, 16), left, right});
-  const auto atSpout = pointAt(field, onPlate(15, 16));
+  const auto atSpout = test::pointOnField(field, onPlate(15, 16));
   // Four equal parts: a row of something else, not a hot and a cold handle.
   EXPECT_EQ(
       completeRepeatedParts(field, {atSpout}, mixer({left, right, onPlate(5, 16), onPlate(27, 16)}),
