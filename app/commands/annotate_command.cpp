@@ -59,7 +59,7 @@ void setupAnnotate(CLI::App& root) {
     bool force = false;
     std::optional<bool> coarseToFine;
     bool noPrintedMarks = false, noMirrorPairs = false, noAnchoredPairs = false,
-         noRepeatedParts = false;
+         noRepeatedParts = false, noSpoutOutlets = false;
     double timeLimit = 600;
   };
   auto o = std::make_shared<Options>();
@@ -108,6 +108,9 @@ void setupAnnotate(CLI::App& root) {
                 "Switch the repeated-parts pass off: a point on a small part of the mesh does not "
                 "give a point on every copy of that part (a row of equal knobs), and a point at a "
                 "mixer's spout is not moved onto its pair of handles");
+  cmd->add_flag("--no-spout-outlets", o->noSpoutOutlets,
+                "Switch the spout-outlet pass off: a fluid-source point on a faucet's handle or "
+                "body is not moved to the outlet under the spout's tip near it");
   cmd->add_option("--count", o->counts,
                   "Known instance count per type, e.g. --count heatsource=5 (k-means)");
   cmd->callback([o] {
@@ -126,6 +129,7 @@ void setupAnnotate(CLI::App& root) {
     options.mirrorPairs = !o->noMirrorPairs;
     options.anchoredPairs = !o->noAnchoredPairs;
     options.repeatedParts = !o->noRepeatedParts;
+    options.spoutOutlets = !o->noSpoutOutlets;
     // Models, their feature options and confidence map load in the worker process.
     options.features.cacheDir = o->cache;
     if (!o->up.empty()) options.features.up = sagrid::parseUpAxis(o->up);

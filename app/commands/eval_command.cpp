@@ -41,7 +41,7 @@ void setupEval(CLI::App& root) {
     int symmetries = sagrid::EvaluationOptions{}.symmetries;
     std::optional<bool> coarseToFine;
     bool noPrintedMarks = false, noMirrorPairs = false, noAnchoredPairs = false,
-         noRepeatedParts = false;
+         noRepeatedParts = false, noSpoutOutlets = false;
     double nearWeight = sagrid::SweepOptions{}.nearWeight;
   };
   auto o = std::make_shared<Options>();
@@ -74,6 +74,9 @@ void setupEval(CLI::App& root) {
   cmd->add_flag("--no-repeated-parts", o->noRepeatedParts,
                 "Switch the repeated-parts pass off (points on copies of a point's part, a "
                 "point moved onto a pair of handles), as annotate");
+  cmd->add_flag("--no-spout-outlets", o->noSpoutOutlets,
+                "Switch the spout-outlet pass off (fluid sources moved to the outlet under the "
+                "spout's tip), as annotate");
   cmd->add_option("--fit-counts", o->fitCounts,
                   "Refit each model's automatic instance count on the fields of this data and "
                   "write a models folder DIR with the refitted cards (eval it with --models DIR)");
@@ -134,6 +137,7 @@ void setupEval(CLI::App& root) {
     options.mirrorPairs = !o->noMirrorPairs;
     options.anchoredPairs = !o->noAnchoredPairs;
     options.repeatedParts = !o->noRepeatedParts;
+    options.spoutOutlets = !o->noSpoutOutlets;
     const auto report = sagrid::evaluateModels(models, options);
     if (!o->fitCounts.empty()) {
       const auto fits =

@@ -6,6 +6,7 @@
 #include "core/annotate/mirror_pairs_pass.h"
 #include "core/annotate/printed_marks_pass.h"
 #include "core/annotate/repeated_parts_pass.h"
+#include "core/annotate/spout_outlet_pass.h"
 #include "core/annotate/symmetry_averaging.h"
 #include "core/common/error.h"
 #include "core/features/feature_grid.h"
@@ -174,6 +175,8 @@ AnnotationResult annotateMeshFile(const fs::path& meshFile, const std::string& i
                                              : std::vector<Eigen::Vector3f>{});
     if (options.repeatedParts && mode == InstanceMode::Auto)
       applyRepeatedParts(p, parts, features, scene, mesh.fileUp, model->card().extraction);
+    if (options.spoutOutlets && mode != InstanceMode::Single)
+      applySpoutOutlets(p, features, scene, mesh.fileUp, model->card().extraction);
     applyPrintedMarks(*model, p, printedMarksFor(printed, r.category, p.type), features, scene,
                       mesh.fileUp, mode, n);
     for (std::size_t i = 0; i < p.points.size(); ++i) {

@@ -88,6 +88,9 @@ struct AnnotateOptions {
   // The repeated-parts pass (core/annotate/repeated_parts_pass.h): a point on every copy of the
   // part a point lies on (a row of equal knobs).
   bool repeatedParts = true;
+  // The spout-outlet pass (core/annotate/spout_outlet_pass.h): a fluid-source point on no
+  // overhang moves to the outlet under the spout's tip near it.
+  bool spoutOutlets = true;
   // Maps the least-sure point to P(right with one key) (core/annotate/object_confidence.h);
   // unfitted = the uncalibrated map.
   ConfidenceCalibration confidence;

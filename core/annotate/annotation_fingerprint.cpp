@@ -32,6 +32,7 @@ std::string annotateOptionsHash(const AnnotateOptions& options) {
       {"mirror_pairs", options.mirrorPairs},
       {"anchored_pairs", options.anchoredPairs},
       {"repeated_parts", options.repeatedParts},
+      {"spout_outlets", options.spoutOutlets},
       {"coarse_to_fine",
        options.coarseToFine ? nlohmann::json(*options.coarseToFine) : nlohmann::json("card")},
       {"features", featureConfigHash(options.features)},

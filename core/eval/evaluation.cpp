@@ -10,6 +10,7 @@
 #include "core/annotate/mirror_pairs_pass.h"
 #include "core/annotate/printed_marks_pass.h"
 #include "core/annotate/repeated_parts_pass.h"
+#include "core/annotate/spout_outlet_pass.h"
 #include "core/common/atomic_file.h"
 #include "core/common/error.h"
 #include "core/common/log.h"
@@ -111,6 +112,9 @@ EvaluationReport evaluateModels(const ModelSet& models, const EvaluationOptions&
         if (options.repeatedParts)
           applyRepeatedParts(autoPredictions.back(), parts, grid, scene, mesh.fileUp,
                              model->card().extraction);
+        if (options.spoutOutlets)
+          applySpoutOutlets(autoPredictions.back(), grid, scene, mesh.fileUp,
+                            model->card().extraction);
         applyPrintedMarks(*model, autoPredictions.back(),
                           printedMarksFor(printed, category, model->card().type), grid, scene,
                           mesh.fileUp, InstanceMode::Auto);

@@ -2,12 +2,14 @@
 // extraction (automatic count, refinement) and surface projection, on one generated stove and
 // one generated sink — the "<= 300 ms per object for all four models" target of the model issue —
 // with and without symmetry averaging; and `annotate` end to end (import, features, category,
-// models, points) on a ~100k-triangle mesh with each in-the-wild addition switched on or off:
+// models, points) on a ~100k-triangle mesh with each in-the-wild addition switched on or off, and
+// the spout-outlet pass alone on the sink:
 //   build/tests/benchmarks/annotate_bench --benchmark_repetitions=3
 //     --benchmark_report_aggregates_only=true
 #include <benchmark/benchmark.h>
 
 #include "core/annotate/annotate.h"
+#include "core/annotate/spout_outlet_pass.h"
 #include "core/dataset/dataset.h"
 #include "core/features/feature_grid.h"
 #include "core/features/printed_marks.h"
@@ -126,5 +128,29 @@ void BM_PrintedMarksGlassHob(benchmark::State& state) {
   state.SetLabel(std::to_string(marks) + " marks");
 }
 BENCHMARK(BM_PrintedMarksGlassHob)->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond);
+
+// The spout-outlet pass alone on the generated sink's fluid-source prediction: vertical rays
+// through each point's neighbourhood, the clearance and sky tests of every overhang, the move.
+// The pass runs on sinks only, so the end-to-end stove above does not include it.
+void BM_SpoutOutletPass(benchmark::State& state) {
+  Fixture& f = fixture();
+  const sagrid::model::AffordanceModel* spouts = nullptr;
+  for (const auto* m : f.models->forCategory("sink"))
+    if (m->card().type == "fluidsource") spouts = m;
+  if (!spouts) {
+    state.SkipWithError("no sink.fluidsource model");
+    return;
+  }
+  const sagrid::ModelPrediction predicted = sagrid::predictWithModel(
+      *spouts, f.features[1], *f.scenes[1], f.meshes[1].fileUp, sagrid::InstanceMode::Auto);
+  for (auto _ : state) {
+    sagrid::ModelPrediction p = predicted;
+    sagrid::applySpoutOutlets(p, f.features[1], *f.scenes[1], f.meshes[1].fileUp,
+                              spouts->card().extraction);
+    benchmark::DoNotOptimize(p.points.data());
+  }
+  state.SetLabel(std::to_string(predicted.points.size()) + " fluid-source points");
+}
+BENCHMARK(BM_SpoutOutletPass)->Unit(benchmark::kMillisecond);
 
 }  // namespace

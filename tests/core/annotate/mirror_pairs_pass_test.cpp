@@ -6,6 +6,7 @@
 #include "core/features/feature_pipeline.h"
 #include "core/geometry/surface_scene.h"
 #include "support/analytic_meshes.h"
+#include "support/object_under_test.h"
 #include "support/synthetic_fields.h"
 #include "support/untrained_models.h"
 
@@ -13,18 +14,13 @@ namespace sagrid {
 namespace {
 
 // A 1 m double-basin counter with a tap at x = -0.3 and one at x = +0.3 (4 x 4 x 20 cm).
-struct Counter {
-  Mesh mesh = test::box({-0.5f, -0.3f, 0.0f}, {0.5f, 0.3f, 0.05f});
+struct Counter : test::ObjectUnderTest {
   Eigen::Vector3f left{-0.3f, 0.0f, 0.25f}, right{0.3f, 0.0f, 0.25f};  // tap tops, mesh frame
-  FeatureGrid grid;
-  std::unique_ptr<SurfaceScene> scene;
   Counter() {
+    mesh = test::box({-0.5f, -0.3f, 0.0f}, {0.5f, 0.3f, 0.05f});
     test::append(mesh, test::box({-0.32f, -0.02f, 0.05f}, {-0.28f, 0.02f, 0.25f}));
     test::append(mesh, test::box({0.28f, -0.02f, 0.05f}, {0.32f, 0.02f, 0.25f}));
-    FeatureOptions options;
-    options.views = 12;
-    grid = computeFeatures(mesh, options);
-    scene = std::make_unique<SurfaceScene>(mesh);
+    finish();
   }
   // Field: distance to the left tap's top, and to the right one's plus `rightOffset`.
   PredictedField field(float rightOffset) const {

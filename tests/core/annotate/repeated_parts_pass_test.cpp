@@ -2,40 +2,29 @@
 
 #include <gtest/gtest.h>
 
-#include "core/features/feature_grid.h"
-#include "core/features/feature_pipeline.h"
-#include "core/geometry/surface_scene.h"
 #include "support/analytic_meshes.h"
-#include "support/synthetic_fields.h"
-#include "support/untrained_models.h"
+#include "support/object_under_test.h"
 
 namespace sagrid {
 namespace {
 
 // A 60 cm range top with four equal knobs (4 x 3 x 4 cm) in a row on its front, 14 cm apart.
-struct RangeWithKnobs {
-  Mesh mesh = test::box({-0.3f, -0.3f, 0.0f}, {0.3f, 0.3f, 0.1f});
+struct RangeWithKnobs : test::ObjectUnderTest {
   std::vector<Eigen::Vector3f> knobs;  // front face centres, mesh frame
-  FeatureGrid grid;
-  std::unique_ptr<SurfaceScene> scene;
   RangeWithKnobs() {
+    mesh = test::box({-0.3f, -0.3f, 0.0f}, {0.3f, 0.3f, 0.1f});
     for (float x : {-0.21f, -0.07f, 0.07f, 0.21f}) {
       test::append(mesh, test::box({x - 0.02f, -0.33f, 0.03f}, {x + 0.02f, -0.3f, 0.07f}));
       knobs.emplace_back(x, -0.33f, 0.05f);
     }
-    FeatureOptions options;
-    options.views = 12;
-    grid = computeFeatures(mesh, options);
-    scene = std::make_unique<SurfaceScene>(mesh);
+    finish();
   }
   // The model's points: only the first knob's minimum is counted.
   ModelPrediction predicted(const std::string& model) const {
     ExtractionSettings oneKnob;
     oneKnob.maxDistance = 0.01f;
     oneKnob.nmsRadius = 0.05f;
-    const auto field = test::fieldTowards(grid, knobs, {0.0f, 0.02f, 0.02f, 0.02f});
-    return predictionFromField(test::untrainedModelFor(model, grid), field, grid, *scene, UpAxis::Z,
-                               InstanceMode::Auto, 1, &oneKnob);
+    return ObjectUnderTest::predicted(model, knobs, {0.0f, 0.02f, 0.02f, 0.02f}, oneKnob);
   }
 };
 
