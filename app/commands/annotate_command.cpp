@@ -59,7 +59,7 @@ void setupAnnotate(CLI::App& root) {
     bool force = false;
     std::optional<bool> coarseToFine;
     bool noPrintedMarks = false, noMirrorPairs = false, noAnchoredPairs = false,
-         noRepeatedParts = false, noSpoutOutlets = false;
+         noRepeatedParts = false, noSpoutOutlets = false, noPartOwnership = false;
     double timeLimit = 600;
   };
   auto o = std::make_shared<Options>();
@@ -111,6 +111,9 @@ void setupAnnotate(CLI::App& root) {
   cmd->add_flag("--no-spout-outlets", o->noSpoutOutlets,
                 "Switch the spout-outlet pass off: a fluid-source point on a faucet's handle or "
                 "body is not moved to the outlet under the spout's tip near it");
+  cmd->add_flag("--no-part-ownership", o->noPartOwnership,
+                "Switch the part-ownership pass off: points of two types may share a small part "
+                "(a burner point on a knob), and knob points on the grate or cabinet are kept");
   cmd->add_option("--count", o->counts,
                   "Known instance count per type, e.g. --count heatsource=5 (k-means)");
   cmd->callback([o] {
@@ -130,6 +133,7 @@ void setupAnnotate(CLI::App& root) {
     options.anchoredPairs = !o->noAnchoredPairs;
     options.repeatedParts = !o->noRepeatedParts;
     options.spoutOutlets = !o->noSpoutOutlets;
+    options.partOwnership = !o->noPartOwnership;
     // Models, their feature options and confidence map load in the worker process.
     options.features.cacheDir = o->cache;
     if (!o->up.empty()) options.features.up = sagrid::parseUpAxis(o->up);

@@ -41,7 +41,7 @@ void setupEval(CLI::App& root) {
     int symmetries = sagrid::EvaluationOptions{}.symmetries;
     std::optional<bool> coarseToFine;
     bool noPrintedMarks = false, noMirrorPairs = false, noAnchoredPairs = false,
-         noRepeatedParts = false, noSpoutOutlets = false;
+         noRepeatedParts = false, noSpoutOutlets = false, noPartOwnership = false;
     double nearWeight = sagrid::SweepOptions{}.nearWeight;
   };
   auto o = std::make_shared<Options>();
@@ -77,6 +77,9 @@ void setupEval(CLI::App& root) {
   cmd->add_flag("--no-spout-outlets", o->noSpoutOutlets,
                 "Switch the spout-outlet pass off (fluid sources moved to the outlet under the "
                 "spout's tip), as annotate");
+  cmd->add_flag("--no-part-ownership", o->noPartOwnership,
+                "Switch the part-ownership pass off (one small part, one type; knob points off "
+                "the knobs' parts), as annotate");
   cmd->add_option("--fit-counts", o->fitCounts,
                   "Refit each model's automatic instance count on the fields of this data and "
                   "write a models folder DIR with the refitted cards (eval it with --models DIR)");
@@ -138,6 +141,7 @@ void setupEval(CLI::App& root) {
     options.anchoredPairs = !o->noAnchoredPairs;
     options.repeatedParts = !o->noRepeatedParts;
     options.spoutOutlets = !o->noSpoutOutlets;
+    options.partOwnership = !o->noPartOwnership;
     const auto report = sagrid::evaluateModels(models, options);
     if (!o->fitCounts.empty()) {
       const auto fits =

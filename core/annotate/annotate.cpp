@@ -4,6 +4,7 @@
 
 #include "core/annotate/coarse_to_fine.h"
 #include "core/annotate/mirror_pairs_pass.h"
+#include "core/annotate/part_ownership_pass.h"
 #include "core/annotate/printed_marks_pass.h"
 #include "core/annotate/repeated_parts_pass.h"
 #include "core/annotate/spout_outlet_pass.h"
@@ -150,7 +151,7 @@ AnnotationResult annotateMeshFile(const fs::path& meshFile, const std::string& i
   const auto categoryModels = models.forCategory(r.category);
   const PrintedMarks printed =
       options.printedMarks ? printedMarksOf(mesh, r.category) : PrintedMarks{};
-  const std::vector<ConnectedPart> parts = options.repeatedParts
+  const std::vector<ConnectedPart> parts = options.repeatedParts || options.partOwnership
                                                ? normalizedParts(mesh, features.normalization)
                                                : std::vector<ConnectedPart>{};
   for (std::size_t m = 0; m < categoryModels.size(); ++m) {
@@ -179,6 +180,11 @@ AnnotationResult annotateMeshFile(const fs::path& meshFile, const std::string& i
       applySpoutOutlets(p, features, scene, mesh.fileUp, model->card().extraction);
     applyPrintedMarks(*model, p, printedMarksFor(printed, r.category, p.type), features, scene,
                       mesh.fileUp, mode, n);
+    r.predictions.push_back(std::move(p));
+  }
+  if (options.partOwnership && options.mode == InstanceMode::Auto && options.counts.empty())
+    applyPartOwnership(r.predictions, parts, features, scene, mesh.fileUp);
+  for (const auto& p : r.predictions)
     for (std::size_t i = 0; i < p.points.size(); ++i) {
       AffordancePoint a;
       a.type = p.type;
@@ -189,8 +195,6 @@ AnnotationResult annotateMeshFile(const fs::path& meshFile, const std::string& i
       a.source = p.source;
       r.labels.affordances.push_back(std::move(a));
     }
-    r.predictions.push_back(std::move(p));
-  }
   r.objectConfidence = options.confidence.probability(leastSurePointDistance(r.predictions));
   r.labels.extra["prediction"] = {{"category_similarity", r.categorySimilarity},
                                   {"category_retrieved", r.categoryRetrieved},

@@ -91,6 +91,10 @@ struct AnnotateOptions {
   // The spout-outlet pass (core/annotate/spout_outlet_pass.h): a fluid-source point on no
   // overhang moves to the outlet under the spout's tip near it.
   bool spoutOutlets = true;
+  // The part-ownership pass (core/annotate/part_ownership_pass.h): one small part, one type (a
+  // burner point on a knob goes), and knob points on the grate or the cabinet go when other knob
+  // points lie on parts of their own.
+  bool partOwnership = true;
   // Maps the least-sure point to P(right with one key) (core/annotate/object_confidence.h);
   // unfitted = the uncalibrated map.
   ConfidenceCalibration confidence;

@@ -33,6 +33,7 @@ std::string annotateOptionsHash(const AnnotateOptions& options) {
       {"anchored_pairs", options.anchoredPairs},
       {"repeated_parts", options.repeatedParts},
       {"spout_outlets", options.spoutOutlets},
+      {"part_ownership", options.partOwnership},
       {"coarse_to_fine",
        options.coarseToFine ? nlohmann::json(*options.coarseToFine) : nlohmann::json("card")},
       {"features", featureConfigHash(options.features)},

@@ -8,6 +8,7 @@
 #include "core/annotate/annotate.h"
 #include "core/annotate/coarse_to_fine.h"
 #include "core/annotate/mirror_pairs_pass.h"
+#include "core/annotate/part_ownership_pass.h"
 #include "core/annotate/printed_marks_pass.h"
 #include "core/annotate/repeated_parts_pass.h"
 #include "core/annotate/spout_outlet_pass.h"
@@ -92,7 +93,7 @@ EvaluationReport evaluateModels(const ModelSet& models, const EvaluationOptions&
       const auto t = Clock::now();
       const PrintedMarks printed =
           options.printedMarks ? printedMarksOf(mesh, category) : PrintedMarks{};
-      const std::vector<ConnectedPart> parts = options.repeatedParts
+      const std::vector<ConnectedPart> parts = options.repeatedParts || options.partOwnership
                                                    ? normalizedParts(mesh, grid.normalization)
                                                    : std::vector<ConnectedPart>{};
       std::vector<ModelPrediction> autoPredictions;
@@ -119,6 +120,8 @@ EvaluationReport evaluateModels(const ModelSet& models, const EvaluationOptions&
                           printedMarksFor(printed, category, model->card().type), grid, scene,
                           mesh.fileUp, InstanceMode::Auto);
       }
+      if (options.partOwnership)
+        applyPartOwnership(autoPredictions, parts, grid, scene, mesh.fileUp);
       modelSeconds += std::chrono::duration<double>(Clock::now() - t).count();
       auto surfaceOf = [](const ModelPrediction& p) {
         std::vector<Eigen::Vector3f> out;

@@ -33,6 +33,7 @@ struct EvaluationOptions {
   bool anchoredPairs = true;         // its pairs across the spouts, as annotate (AnnotateOptions)
   bool repeatedParts = true;         // the repeated-parts pass, as annotate (AnnotateOptions)
   bool spoutOutlets = true;          // the spout-outlet pass, as annotate (AnnotateOptions)
+  bool partOwnership = true;         // the part-ownership pass, as annotate (AnnotateOptions)
   ConfidenceCalibration confidence;  // object confidence map (the models folder's, or unfitted)
   std::function<void(std::size_t, std::size_t, const std::string&)> onProgress;
   // Keep every model's field and ground truth (normalized frame) in the report, for refitting the

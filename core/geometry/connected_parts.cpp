@@ -134,4 +134,24 @@ bool congruentParts(const ConnectedPart& a, const ConnectedPart& b, float tolera
   return (a.spread - b.spread).cwiseAbs().maxCoeff() <= tolerance * spreadScale;
 }
 
+bool isSmallPart(const ConnectedPart& part, float maxDiagonal) {
+  return !part.box.isEmpty() && part.box.diagonal().norm() <= maxDiagonal;
+}
+
+std::optional<std::size_t> partAt(const Eigen::Vector3f& point,
+                                  const std::vector<ConnectedPart>& parts, float touch,
+                                  float maxDiagonal) {
+  std::optional<std::size_t> best;
+  for (std::size_t p = 0; p < parts.size(); ++p) {
+    if (!isSmallPart(parts[p], maxDiagonal) || parts[p].box.exteriorDistance(point) > touch)
+      continue;
+    const float gap = parts[p].box.exteriorDistance(point);
+    const float bestGap = best ? parts[*best].box.exteriorDistance(point) : touch;
+    if (!best || gap < bestGap ||
+        (gap == bestGap && parts[p].box.diagonal().norm() < parts[*best].box.diagonal().norm()))
+      best = p;
+  }
+  return best;
+}
+
 }  // namespace sagrid

@@ -6,6 +6,8 @@
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
+#include <limits>
+#include <optional>
 #include <vector>
 
 namespace sagrid {
@@ -29,5 +31,16 @@ std::vector<ConnectedPart> connectedParts(const Mesh& mesh);
 // Whether `b` is a copy of `a` up to a rigid motion or a mirror: the same triangle count, and
 // area and spread equal within `tolerance` (relative; the spread against a's largest).
 bool congruentParts(const ConnectedPart& a, const ConnectedPart& b, float tolerance);
+
+// A part small enough to be one instance (a knob, a handle, a burner cap): box diagonal at most
+// `maxDiagonal` (in the parts' frame).
+bool isSmallPart(const ConnectedPart& part, float maxDiagonal);
+
+// The part a point lies on: of the parts up to `maxDiagonal` whose box grown by `touch` holds it,
+// the one whose box is nearest (of boxes that hold it, as a knob's box and the cabinet's behind
+// it do, the one with the smallest diagonal); nullopt when none does.
+std::optional<std::size_t> partAt(const Eigen::Vector3f& point,
+                                  const std::vector<ConnectedPart>& parts, float touch,
+                                  float maxDiagonal = std::numeric_limits<float>::infinity());
 
 }  // namespace sagrid

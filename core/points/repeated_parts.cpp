@@ -44,7 +44,7 @@ class PartCopies {
 };
 
 bool small(const ConnectedPart& part, const RepeatedPartSettings& settings) {
-  return !part.box.isEmpty() && part.box.diagonal().norm() <= settings.maxPartDiagonal;
+  return isSmallPart(part, settings.maxPartDiagonal);
 }
 
 // The small parts whose grown box holds a point: whether there are any, and the one it repeats

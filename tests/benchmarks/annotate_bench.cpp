@@ -71,7 +71,8 @@ BENCHMARK(BM_FourModelsAndExtraction)
 // bit 4 = symmetry averaging over 8 copies, bit 8 = coarse-to-fine second pass, bit 16 = the
 // texture pass (printed zones and symbols; this mesh has no texture, so it costs the scan), bit
 // 32 = the mirror-pair pass of the automatic count, bit 64 = the repeated-parts pass (the mesh's
-// connected parts and the copies of each toggle button's part).
+// connected parts and the copies of each toggle button's part), bit 128 = the part-ownership pass
+// (the part under every point of every type).
 void BM_AnnotateDenseEndToEnd(benchmark::State& state) {
   Fixture& f = fixture();
   const fs::path mesh = sagrid::bench::denseCopy(2);
@@ -85,6 +86,7 @@ void BM_AnnotateDenseEndToEnd(benchmark::State& state) {
   options.printedMarks = (additions & 16) != 0;
   options.mirrorPairs = (additions & 32) != 0;
   options.repeatedParts = (additions & 64) != 0;
+  options.partOwnership = (additions & 128) != 0;
   const fs::path out = sagrid::bench::benchDir() / "annotate-out";
   for (auto _ : state)
     benchmark::DoNotOptimize(
@@ -94,7 +96,7 @@ void BM_AnnotateDenseEndToEnd(benchmark::State& state) {
       (additions & 2 ? ", category classified" : ", category given") +
       (additions & 4 ? ", 8 symmetries" : ", 1 copy") + (additions & 8 ? ", coarse-to-fine" : "") +
       (additions & 16 ? ", texture pass" : "") + (additions & 32 ? ", mirror pairs" : "") +
-      (additions & 64 ? ", repeated parts" : ""));
+      (additions & 64 ? ", repeated parts" : "") + (additions & 128 ? ", part ownership" : ""));
 }
 BENCHMARK(BM_AnnotateDenseEndToEnd)
     ->Arg(0)
@@ -110,6 +112,8 @@ BENCHMARK(BM_AnnotateDenseEndToEnd)
     ->Arg(63)
     ->Arg(64)
     ->Arg(127)
+    ->Arg(128)
+    ->Arg(255)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime()
     ->Iterations(2);

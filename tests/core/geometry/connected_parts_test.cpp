@@ -62,5 +62,28 @@ TEST(ConnectedParts, AnEmptyMeshAndBadIndicesGiveNoParts) {
   EXPECT_TRUE(connectedParts(broken).empty());
 }
 
+TEST(ConnectedParts, APointLiesOnThePartWhoseBoxIsNearestTheSmallestWhereBoxesHoldIt) {
+  // A knob in front of a cabinet door: its box inside the door's box, grown.
+  Mesh mesh = test::box({-0.5f, 0.0f, 0.0f}, {0.5f, 0.1f, 1.0f});
+  test::append(mesh, test::box({-0.05f, -0.05f, 0.45f}, {0.05f, 0.0f, 0.55f}));
+  test::append(mesh, test::box({0.2f, -0.05f, 0.45f}, {0.3f, 0.0f, 0.55f}));
+  const auto parts = connectedParts(mesh);
+  ASSERT_EQ(parts.size(), 3u);
+  const std::size_t door = 0, knob = 1;  // the largest first; the knobs tie, the first first
+  // On the knob's front: only the knob's box holds it.
+  EXPECT_EQ(partAt({0.0f, -0.05f, 0.5f}, parts, 0.01f), knob);
+  // On the door's face behind the knob: both boxes hold it, the knob's is smaller.
+  EXPECT_EQ(partAt({0.0f, 0.0f, 0.5f}, parts, 0.01f), knob);
+  // On the door far from the knobs.
+  EXPECT_EQ(partAt({0.0f, 0.0f, 0.9f}, parts, 0.01f), door);
+  // Only small parts: the door is none of them.
+  EXPECT_FALSE(partAt({0.0f, 0.0f, 0.9f}, parts, 0.01f, 0.3f).has_value());
+  // Nearest of two grown boxes: 0.07 from the first knob, 0.03 from the second.
+  EXPECT_EQ(partAt({0.17f, -0.05f, 0.5f}, parts, 0.1f, 0.3f), std::size_t{2});
+  EXPECT_FALSE(partAt({0.0f, -1.0f, 0.5f}, parts, 0.1f).has_value());
+  EXPECT_TRUE(isSmallPart(parts[knob], 0.3f));
+  EXPECT_FALSE(isSmallPart(parts[door], 0.3f));
+}
+
 }  // namespace
 }  // namespace sagrid

@@ -1,0 +1,126 @@
+#include "core/points/part_ownership.h"
+
+#include <gtest/gtest.h>
+
+#include "core/mesh/mesh.h"
+#include "support/analytic_meshes.h"
+
+namespace sagrid {
+namespace {
+
+constexpr int kResolution = 64;
+
+// A hob in the normalized frame: a grate over the whole top (a large part), two burner caps on
+// it, and four knobs in a row on the front edge.
+struct Hob {
+  std::vector<Eigen::Vector3f> knobs{
+      {-0.3f, -0.45f, 0.0f}, {-0.1f, -0.45f, 0.0f}, {0.1f, -0.45f, 0.0f}, {0.3f, -0.45f, 0.0f}};
+  std::vector<Eigen::Vector3f> burners{{-0.2f, 0.1f, 0.05f}, {0.2f, 0.1f, 0.05f}};
+  std::vector<ConnectedPart> parts;
+  Hob() {
+    Mesh mesh = test::box({-0.5f, -0.4f, -0.05f}, {0.5f, 0.5f, 0.0f});
+    for (const auto& b : burners)
+      test::append(mesh, test::box(b - Eigen::Vector3f(0.06f, 0.06f, 0.05f),
+                                   b + Eigen::Vector3f(0.06f, 0.06f, 0.0f)));
+    for (const auto& k : knobs)
+      test::append(mesh, test::box(k - Eigen::Vector3f(0.02f, 0.02f, 0.02f),
+                                   k + Eigen::Vector3f(0.02f, 0.02f, 0.0f)));
+    parts = connectedParts(mesh);
+  }
+};
+
+ExtractedPoint at(const Eigen::Vector3f& position, float confidence) {
+  ExtractedPoint p;
+  p.position = position;
+  p.confidence = confidence;
+  return p;
+}
+
+TypedPoints knobPoints(std::vector<ExtractedPoint> points) { return {std::move(points), true}; }
+TypedPoints burnerPoints(std::vector<ExtractedPoint> points) { return {std::move(points), false}; }
+
+TEST(PartOwnership, ABurnerPointOnAKnobGoesWhenTheKnobPointThereIsSurer) {
+  const Hob hob;
+  const auto out = ownParts({burnerPoints({at(hob.burners[0], 0.7f), at(hob.knobs[2], 0.4f)}),
+                             knobPoints({at(hob.knobs[2], 0.6f), at(hob.knobs[3], 0.5f)})},
+                            hob.parts, kResolution);
+  ASSERT_EQ(out.size(), 2u);
+  ASSERT_EQ(out[0].points.size(), 1u);
+  EXPECT_EQ(out[0].points[0].position, hob.burners[0]);
+  EXPECT_EQ(out[1].points.size(), 2u);
+}
+
+TEST(PartOwnership, TheTypeOfTheSurestPointOwnsThePart) {
+  const Hob hob;
+  const auto out = ownParts({burnerPoints({at(hob.burners[0], 0.7f)}),
+                             knobPoints({at(hob.knobs[0], 0.6f), at(hob.burners[0], 0.5f)})},
+                            hob.parts, kResolution);
+  ASSERT_EQ(out[0].points.size(), 1u);
+  ASSERT_EQ(out[1].points.size(), 1u);
+  EXPECT_EQ(out[1].points[0].position, hob.knobs[0]);
+}
+
+TEST(PartOwnership, KnobPointsOnTheGrateGoWhenOtherKnobPointsLieOnKnobs) {
+  const Hob hob;
+  const std::vector<ExtractedPoint> points{at({0.0f, 0.3f, 0.0f}, 0.9f), at(hob.knobs[1], 0.5f),
+                                           at({-0.4f, 0.4f, 0.0f}, 0.8f), at(hob.knobs[2], 0.4f)};
+  const auto out = ownParts({knobPoints(points)}, hob.parts, kResolution);
+  ASSERT_EQ(out[0].points.size(), 2u);
+  EXPECT_EQ(out[0].points[0].position, hob.knobs[1]);  // the kept points keep their order
+  EXPECT_EQ(out[0].points[1].position, hob.knobs[2]);
+  // Burner points are not parts of their own: on the grate they stay.
+  const auto burners = ownParts({burnerPoints(points)}, hob.parts, kResolution);
+  EXPECT_EQ(burners[0].points.size(), 4u);
+}
+
+TEST(PartOwnership, KnobPointsStayWhereNoneLiesOnASmallPart) {
+  // One part for the whole object (a merged mesh): nothing to own.
+  const auto parts = connectedParts(test::box({-0.5f, -0.5f, -0.1f}, {0.5f, 0.5f, 0.0f}));
+  const auto out =
+      ownParts({knobPoints({at({0.0f, 0.0f, 0.0f}, 0.5f), at({0.3f, 0.0f, 0.0f}, 0.4f)}),
+                burnerPoints({at({0.0f, 0.0f, 0.0f}, 0.9f)})},
+               parts, kResolution);
+  EXPECT_EQ(out[0].points.size(), 2u);
+  EXPECT_EQ(out[1].points.size(), 1u);
+}
+
+TEST(PartOwnership, AKnobPointOnTheGrateBesideAFreeKnobMovesOntoIt) {
+  const Hob hob;
+  // 0.04 behind knob 3's box: more than the 1.5-voxel touch, within the 4-voxel reach.
+  const Eigen::Vector3f beside = hob.knobs[3] + Eigen::Vector3f(0.0f, 0.06f, 0.02f);
+  const auto out =
+      ownParts({knobPoints({at(hob.knobs[0], 0.6f), at(beside, 0.5f)})}, hob.parts, kResolution);
+  ASSERT_EQ(out[0].points.size(), 2u);
+  EXPECT_LT((out[0].points[1].position - hob.knobs[3]).norm(), 0.02f);
+  // Knob 3 already has its point: the point beside it goes.
+  const auto taken =
+      ownParts({knobPoints({at(hob.knobs[3], 0.6f), at(beside, 0.5f)})}, hob.parts, kResolution);
+  EXPECT_EQ(taken[0].points.size(), 1u);
+  PartOwnershipSettings noReach;
+  noReach.reachVoxels = 0.0f;
+  const auto dropped = ownParts({knobPoints({at(hob.knobs[0], 0.6f), at(beside, 0.5f)})}, hob.parts,
+                                kResolution, noReach);
+  EXPECT_EQ(dropped[0].points.size(), 1u);
+}
+
+TEST(PartOwnership, ATypeNeverLosesAllItsPoints) {
+  const Hob hob;
+  const auto out = ownParts({burnerPoints({at(hob.knobs[0], 0.3f), at(hob.knobs[1], 0.4f)}),
+                             knobPoints({at(hob.knobs[0], 0.6f), at(hob.knobs[1], 0.6f)})},
+                            hob.parts, kResolution);
+  ASSERT_EQ(out[0].points.size(), 1u);
+  EXPECT_EQ(out[0].points[0].position, hob.knobs[1]);  // its most confident
+  EXPECT_EQ(out[1].points.size(), 2u);
+}
+
+TEST(PartOwnership, WithoutPartsOrPointsNothingChanges) {
+  const Hob hob;
+  const auto out = ownParts({knobPoints({at({0.0f, 0.3f, 0.0f}, 0.9f), at(hob.knobs[1], 0.5f)})},
+                            {}, kResolution);
+  EXPECT_EQ(out[0].points.size(), 2u);
+  EXPECT_TRUE(ownParts({}, hob.parts, kResolution).empty());
+  EXPECT_TRUE(ownParts({knobPoints({})}, hob.parts, kResolution)[0].points.empty());
+}
+
+}  // namespace
+}  // namespace sagrid
