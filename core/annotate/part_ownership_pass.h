@@ -1,6 +1,7 @@
 // The part-ownership pass (core/points/part_ownership.h) on an object's predictions: points of a
 // type on a small part that a more confident point of another type lies on are dropped, and so
-// are knob points on no small part when other knob points of the object lie on small parts.
+// are knob and burner points on a large part (the grate, a panel) when other points of their type
+// lie on small parts.
 // annotate, eval and the GUI (through annotate) run it on the automatic count once every model of
 // the category has predicted; `--no-part-ownership` switches it off.
 #pragma once

@@ -8,6 +8,12 @@ namespace sagrid {
 
 namespace {
 using PartOf = std::vector<std::vector<std::optional<std::size_t>>>;  // per type, per point
+// The owner of a small part: the type of its most confident point.
+struct Owner {
+  std::size_t type;
+  float confidence;
+};
+using Owners = std::map<std::size_t, Owner>;  // by small part
 
 void keepWhere(TypedPoints& typed, std::vector<std::optional<std::size_t>>& partOf,
                const std::vector<bool>& keep) {
@@ -19,8 +25,10 @@ void keepWhere(TypedPoints& typed, std::vector<std::optional<std::size_t>>& part
   partOf = std::move(parts);
 }
 
-// Knob points on a large part go when the type has points on small parts.
+// Points of a type with ownParts on a large part go (or move onto a free small part within reach)
+// when the type has points on small parts.
 void dropOnLargeParts(TypedPoints& typed, std::vector<std::optional<std::size_t>>& partOf,
+                      std::size_t type, const Owners& owners,
                       const std::vector<ConnectedPart>& parts, float touch, float reach,
                       const PartOwnershipSettings& settings) {
   const bool anyOnPart =
@@ -32,9 +40,13 @@ void dropOnLargeParts(TypedPoints& typed, std::vector<std::optional<std::size_t>
     keep[i] =
         partOf[i] || !under || parts[*under].box.diagonal().norm() <= settings.largePartDiagonal;
     if (keep[i]) continue;
-    // A knob point beside a knob no point of its type lies on moves onto it.
+    // A point beside a small part that no point of its type lies on and no other type owns moves
+    // onto it.
     const auto free = partAt(typed.points[i].position, parts, reach, settings.maxPartDiagonal);
-    if (!free || std::find(partOf.begin(), partOf.end(), free) != partOf.end()) continue;
+    const auto owned = free ? owners.find(*free) : owners.end();
+    if (!free || std::find(partOf.begin(), partOf.end(), free) != partOf.end() ||
+        (owned != owners.end() && owned->second.type != type))
+      continue;
     typed.points[i].position = parts[*free].centroid;
     partOf[i] = free;
     keep[i] = true;
@@ -53,22 +65,20 @@ std::vector<TypedPoints> ownParts(std::vector<TypedPoints> byType,
   for (std::size_t t = 0; t < byType.size(); ++t) {
     for (const auto& point : byType[t].points)
       partOf[t].push_back(partAt(point.position, parts, touch, settings.maxPartDiagonal));
-    dropOnLargeParts(byType[t], partOf[t], parts, touch, reach, settings);
   }
-  // The owner of each small part that holds points: the type of its most confident point.
-  std::map<std::size_t, std::pair<std::size_t, float>> owner;  // part -> (type, confidence)
+  Owners owners;
   for (std::size_t t = 0; t < byType.size(); ++t)
     for (std::size_t i = 0; i < byType[t].points.size(); ++i) {
       if (!partOf[t][i]) continue;
       const float confidence = byType[t].points[i].confidence;
-      auto [it, added] = owner.try_emplace(*partOf[t][i], t, confidence);
-      if (!added && confidence > it->second.second) it->second = {t, confidence};
+      auto [it, added] = owners.try_emplace(*partOf[t][i], Owner{t, confidence});
+      if (!added && confidence > it->second.confidence) it->second = {t, confidence};
     }
   for (std::size_t t = 0; t < byType.size(); ++t) {
     const auto& points = byType[t].points;
     std::vector<bool> keep(points.size());
     for (std::size_t i = 0; i < keep.size(); ++i)
-      keep[i] = !partOf[t][i] || owner.at(*partOf[t][i]).first == t;
+      keep[i] = !partOf[t][i] || owners.at(*partOf[t][i]).type == t;
     // Every type of the category has an instance: a type that would lose all its points keeps
     // its most confident one.
     if (!points.empty() && std::none_of(keep.begin(), keep.end(), [](bool k) { return k; }))
@@ -79,6 +89,8 @@ std::vector<TypedPoints> ownParts(std::vector<TypedPoints> byType,
            points.begin()] = true;
     keepWhere(byType[t], partOf[t], keep);
   }
+  for (std::size_t t = 0; t < byType.size(); ++t)
+    dropOnLargeParts(byType[t], partOf[t], t, owners, parts, touch, reach, settings);
   return byType;
 }
 

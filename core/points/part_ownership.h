@@ -1,9 +1,10 @@
 // Part ownership: one small part of a mesh is one affordance or none. A stove's knob is never one
 // of its burners, a tap's spout never its handle; yet the network, unsure, often puts points of
 // two types on one small part (a burner point on every knob of the row, a handle point on the
-// spout). And knobs are parts of their own: when some of an object's knob points lie on small
-// parts, its knob points on a large part sit on the grate of a hob or on the cabinet front, which
-// the network takes for rows of knobs. Works in the normalized frame.
+// spout). And knobs and burner caps are parts of their own: when some of an object's knob points
+// lie on small parts, its knob points on a large part sit on the grate of a hob or on the cabinet
+// front, which the network takes for rows of knobs; burner points on the grate between the caps
+// likewise. Works in the normalized frame.
 #pragma once
 
 #include <vector>
@@ -14,7 +15,7 @@
 namespace sagrid {
 
 struct PartOwnershipSettings {
-  // A point lies on the smallest small part whose box, grown by this many voxels, holds it.
+  // A point lies on the part whose box, grown by this many voxels, holds it (partAt).
   float touchVoxels = 1.5f;
   // Small parts (normalized units), as RepeatedPartSettings::maxPartDiagonal: a knob, a handle, a
   // burner cap, not a panel, the grate or the cabinet.
@@ -22,22 +23,24 @@ struct PartOwnershipSettings {
   // Large parts: a panel, the grate, the cabinet (box diagonal, normalized units). Between the two
   // sizes lie a tap's turned handles whose boxes grow with the turn: neither.
   float largePartDiagonal = 0.4f;
-  // A knob point on a large part moves onto the nearest small part within this many voxels (box
-  // distance) that no point of its type lies on, instead of being dropped; 0 = never.
+  // A point on a large part moves onto the nearest small part within this many voxels (box
+  // distance) that no point of its type lies on and no other type owns, instead of being dropped;
+  // 0 = never.
   float reachVoxels = 4.0f;
 };
 
 // The points of one type: `ownParts` when the type's instances are parts of their own (toggle
-// buttons).
+// buttons, heat sources).
 struct TypedPoints {
   std::vector<ExtractedPoint> points;
   bool ownParts = false;
 };
 
-// `byType` with points dropped: first, of a type with ownParts that has a point on a small part,
-// every point on no small part and on a large part; then, where points of several types lie on one
-// small part, those of every type but the one of the most confident point there, except that a type
-// never loses all its points (its most confident one stays). The kept points keep their order.
+// `byType` with points dropped: first, where points of several types lie on one small part, those
+// of every type but the one of the most confident point there (the part's owner), except that a
+// type never loses all its points (its most confident one stays); then, of a type with ownParts
+// that still has a point on a small part, every point on no small part and on a large part, unless
+// it can move onto a free small part within reach. The kept points keep their order.
 // `parts` in the normalized frame; `resolution` is the field's (a voxel is 1 / resolution).
 // Unchanged without parts.
 std::vector<TypedPoints> ownParts(std::vector<TypedPoints> byType,

@@ -36,8 +36,10 @@ ExtractedPoint at(const Eigen::Vector3f& position, float confidence) {
   return p;
 }
 
+// Knobs and burner caps are parts of their own; a glass hob's printed zones are not.
 TypedPoints knobPoints(std::vector<ExtractedPoint> points) { return {std::move(points), true}; }
-TypedPoints burnerPoints(std::vector<ExtractedPoint> points) { return {std::move(points), false}; }
+TypedPoints burnerPoints(std::vector<ExtractedPoint> points) { return {std::move(points), true}; }
+TypedPoints zonePoints(std::vector<ExtractedPoint> points) { return {std::move(points), false}; }
 
 TEST(PartOwnership, ABurnerPointOnAKnobGoesWhenTheKnobPointThereIsSurer) {
   const Hob hob;
@@ -68,9 +70,29 @@ TEST(PartOwnership, KnobPointsOnTheGrateGoWhenOtherKnobPointsLieOnKnobs) {
   ASSERT_EQ(out[0].points.size(), 2u);
   EXPECT_EQ(out[0].points[0].position, hob.knobs[1]);  // the kept points keep their order
   EXPECT_EQ(out[0].points[1].position, hob.knobs[2]);
-  // Burner points are not parts of their own: on the grate they stay.
-  const auto burners = ownParts({burnerPoints(points)}, hob.parts, kResolution);
-  EXPECT_EQ(burners[0].points.size(), 4u);
+  // Points of a type whose instances are not parts of their own stay on the grate.
+  const auto zones = ownParts({zonePoints(points)}, hob.parts, kResolution);
+  EXPECT_EQ(zones[0].points.size(), 4u);
+}
+
+TEST(PartOwnership, BurnerPointsOnTheGrateGoWhenOtherBurnerPointsLieOnCaps) {
+  const Hob hob;
+  const auto out =
+      ownParts({burnerPoints({at({0.0f, 0.3f, 0.0f}, 0.9f), at(hob.burners[1], 0.5f)})}, hob.parts,
+               kResolution);
+  ASSERT_EQ(out[0].points.size(), 1u);
+  EXPECT_EQ(out[0].points[0].position, hob.burners[1]);
+}
+
+TEST(PartOwnership, APointNeverMovesOntoAPartAnotherTypeOwns) {
+  const Hob hob;
+  const Eigen::Vector3f beside = hob.knobs[3] + Eigen::Vector3f(0.0f, 0.06f, 0.02f);
+  const auto out = ownParts({burnerPoints({at(hob.burners[0], 0.8f), at(hob.knobs[3], 0.9f)}),
+                             knobPoints({at(hob.knobs[0], 0.6f), at(beside, 0.5f)})},
+                            hob.parts, kResolution);
+  EXPECT_EQ(out[0].points.size(), 2u);  // the surer burner point owns knob 3
+  ASSERT_EQ(out[1].points.size(), 1u);
+  EXPECT_EQ(out[1].points[0].position, hob.knobs[0]);
 }
 
 TEST(PartOwnership, KnobPointsStayWhereNoneLiesOnASmallPart) {
