@@ -113,7 +113,8 @@ void setupAnnotate(CLI::App& root) {
                 "body is not moved to the outlet under the spout's tip near it");
   cmd->add_flag("--no-part-ownership", o->noPartOwnership,
                 "Switch the part-ownership pass off: points of two types may share a small part "
-                "(a burner point on a knob), and knob points on the grate or cabinet are kept");
+                "(a burner point on a knob), and knob and burner points on the grate or a panel "
+                "are kept");
   cmd->add_option("--count", o->counts,
                   "Known instance count per type, e.g. --count heatsource=5 (k-means)");
   cmd->callback([o] {

@@ -78,8 +78,8 @@ void setupEval(CLI::App& root) {
                 "Switch the spout-outlet pass off (fluid sources moved to the outlet under the "
                 "spout's tip), as annotate");
   cmd->add_flag("--no-part-ownership", o->noPartOwnership,
-                "Switch the part-ownership pass off (one small part, one type; knob points off "
-                "the knobs' parts), as annotate");
+                "Switch the part-ownership pass off (one small part, one type; knob and burner "
+                "points on the grate or a panel), as annotate");
   cmd->add_option("--fit-counts", o->fitCounts,
                   "Refit each model's automatic instance count on the fields of this data and "
                   "write a models folder DIR with the refitted cards (eval it with --models DIR)");
