@@ -142,14 +142,13 @@ std::optional<std::size_t> partAt(const Eigen::Vector3f& point,
                                   const std::vector<ConnectedPart>& parts, float touch,
                                   float maxDiagonal) {
   std::optional<std::size_t> best;
+  float bestGap = touch, bestDiagonal = 0.0f;
   for (std::size_t p = 0; p < parts.size(); ++p) {
-    if (!isSmallPart(parts[p], maxDiagonal) || parts[p].box.exteriorDistance(point) > touch)
-      continue;
+    if (!isSmallPart(parts[p], maxDiagonal)) continue;
     const float gap = parts[p].box.exteriorDistance(point);
-    const float bestGap = best ? parts[*best].box.exteriorDistance(point) : touch;
-    if (!best || gap < bestGap ||
-        (gap == bestGap && parts[p].box.diagonal().norm() < parts[*best].box.diagonal().norm()))
-      best = p;
+    const float diagonal = parts[p].box.diagonal().norm();
+    if (gap > bestGap || (best && gap == bestGap && diagonal >= bestDiagonal)) continue;
+    best = p, bestGap = gap, bestDiagonal = diagonal;
   }
   return best;
 }

@@ -32,8 +32,12 @@ std::vector<ConnectedPart> connectedParts(const Mesh& mesh);
 // area and spread equal within `tolerance` (relative; the spread against a's largest).
 bool congruentParts(const ConnectedPart& a, const ConnectedPart& b, float tolerance);
 
-// A part small enough to be one instance (a knob, a handle, a burner cap): box diagonal at most
-// `maxDiagonal` (in the parts' frame).
+// The largest box diagonal of a part that can be one instance (a knob, a handle, a burner cap, not
+// a panel, the grate or the cabinet), in the normalized frame (largest extent 1).
+constexpr float kSmallPartDiagonal = 0.2f;
+
+// A part small enough to be one instance: box diagonal at most `maxDiagonal` (in the parts'
+// frame).
 bool isSmallPart(const ConnectedPart& part, float maxDiagonal);
 
 // The part a point lies on: of the parts up to `maxDiagonal` whose box grown by `touch` holds it,

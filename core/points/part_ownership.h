@@ -17,9 +17,8 @@ namespace sagrid {
 struct PartOwnershipSettings {
   // A point lies on the part whose box, grown by this many voxels, holds it (partAt).
   float touchVoxels = 1.5f;
-  // Small parts (normalized units), as RepeatedPartSettings::maxPartDiagonal: a knob, a handle, a
-  // burner cap, not a panel, the grate or the cabinet.
-  float maxPartDiagonal = 0.2f;
+  // Small parts (box diagonal, normalized units), as the repeated-parts pass's.
+  float maxPartDiagonal = kSmallPartDiagonal;
   // Large parts: a panel, the grate, the cabinet (box diagonal, normalized units). Between the two
   // sizes lie a tap's turned handles whose boxes grow with the turn: neither.
   float largePartDiagonal = 0.4f;

@@ -43,10 +43,6 @@ class PartCopies {
   std::unordered_map<int, std::vector<std::size_t>> m_groups;
 };
 
-bool small(const ConnectedPart& part, const RepeatedPartSettings& settings) {
-  return isSmallPart(part, settings.maxPartDiagonal);
-}
-
 // The small parts whose grown box holds a point: whether there are any, and the one it repeats
 // (of those with a copy, the one with the largest area).
 struct PartsAtPoint {
@@ -57,7 +53,9 @@ PartsAtPoint partsAt(const Eigen::Vector3f& point, const std::vector<ConnectedPa
                      const PartCopies& copies, float touch, const RepeatedPartSettings& settings) {
   PartsAtPoint at;
   for (std::size_t p = 0; p < parts.size(); ++p) {
-    if (!small(parts[p], settings) || parts[p].box.exteriorDistance(point) > touch) continue;
+    if (!isSmallPart(parts[p], settings.maxPartDiagonal) ||
+        parts[p].box.exteriorDistance(point) > touch)
+      continue;
     at.onSmallPart = true;
     if ((!at.seed || parts[p].area > parts[*at.seed].area) && !copies.of(p).empty()) at.seed = p;
   }
@@ -76,7 +74,7 @@ std::optional<std::size_t> nearbyPairedPart(const Eigen::Vector3f& point,
   float bestGap = reach;
   for (std::size_t p = 0; p < parts.size(); ++p) {
     const float gap = parts[p].box.exteriorDistance(point);
-    if (!small(parts[p], settings) || gap > bestGap) continue;
+    if (!isSmallPart(parts[p], settings.maxPartDiagonal) || gap > bestGap) continue;
     const float d = nearbyDistance(
         field, dense, voxelContaining(parts[p].centroid, field.resolution), kFieldRadius);
     if (!std::isfinite(d) || d > maxDistance || copies.of(p).size() != 1) continue;

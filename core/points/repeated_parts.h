@@ -21,7 +21,7 @@ struct RepeatedPartSettings {
   // Only parts up to this box diagonal (normalized units) can be one instance: a knob, a handle,
   // a burner cap, not a panel or the cabinet. Parts of fewer than 8 triangles never are (decals,
   // the pieces of a triangle soup).
-  float maxPartDiagonal = 0.2f;
+  float maxPartDiagonal = kSmallPartDiagonal;
   // Copies: congruentParts within this relative tolerance (a knob turned to another setting
   // voxelizes and rounds a little differently).
   float congruenceTolerance = 0.05f;
