@@ -2,14 +2,18 @@
 // none) that `annotate`, `filter --like` and the GUI use when the models folder has category.json.
 // Parsing, progress and printing only; the work is in core/annotate/category_*.
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <map>
 #include <memory>
+#include <optional>
 
 #include "app/command_registry.h"
 #include "app/progress_bar.h"
 #include "core/annotate/category_cross_validation.h"
+#include "core/annotate/category_evidence.h"
 #include "core/annotate/category_training.h"
 #include "core/annotate/model_set.h"
 #include "core/common/error.h"
@@ -68,13 +72,49 @@ sagrid::FeatureOptions featuresFor(const fs::path& modelsDir) {
 }
 
 struct Options {
-  std::vector<std::string> data, validate;
+  std::vector<std::string> data, validate, gated;
   int folds = 5;
-  std::string out, models, exclude, split, splitOut, up;
-  double threshold = -1, l2 = 1e-2;
+  std::string out, models, exclude, split, splitOut, up, cache;
+  double threshold = -1, l2 = 1e-2, keep = 0.98;
   int iterations = 20000;
-  bool retrieval = false, linear = false, topRelief = false;
+  bool retrieval = false, linear = false, topRelief = false, evidence = false;
 };
+
+// The evidence of a category on a sample: its models run on the sample's mesh (in its labelled
+// up axis, else --up) as `annotate --category` would, features from --cache when given.
+class SampleEvidence {
+ public:
+  SampleEvidence(const sagrid::ModelSet& models, const Options& o) : m_models(models) {
+    m_options.features = models.featureOptions();
+    m_options.features.cacheDir = o.cache;
+    if (!o.up.empty()) m_options.features.up = sagrid::parseUpAxis(o.up);
+  }
+  double operator()(const sagrid::CategorySample& s, const std::string& category) const {
+    auto options = m_options;
+    if (!s.up.empty()) options.features.up = sagrid::parseUpAxis(s.up);
+    return sagrid::affordanceEvidence(s.mesh, category, m_models, options);
+  }
+  // The classifier's decision on `s` after the models folder's evidence gate.
+  sagrid::CategoryDecision gate(const sagrid::CategorySample& s,
+                                const sagrid::CategoryDecision& d) const {
+    const auto* classifier = m_models.categoryClassifier();
+    if (!classifier) return d;
+    return sagrid::applyEvidenceGate(
+        d, classifier->evidence, [&](const std::string& category) { return (*this)(s, category); });
+  }
+
+ private:
+  const sagrid::ModelSet& m_models;
+  sagrid::AnnotateOptions m_options;
+};
+
+void addEvidenceFlags(CLI::App* cmd, Options& o) {
+  cmd->add_flag("--evidence", o.evidence,
+                "Follow the classifier with the models folder's evidence gate: an object filed "
+                "under a category whose models find no point of it (below the gate's threshold) is "
+                "rejected, as `annotate` does (runs the models on every accepted object)");
+  cmd->add_option("--cache", o.cache, "Feature cache folder for the models' runs (default: none)");
+}
 
 // The options that shape a trained classifier (train and cv).
 void addTrainingFlags(CLI::App* cmd, Options& o) {
@@ -144,7 +184,8 @@ void setupCategory(CLI::App& root) {
                (o->linear ? " --linear" : "") + (o->topRelief ? " --top-relief" : "");
     classifier.training["command"] = command;
     const auto ev = sagrid::evaluateCategories(
-        [&](const std::vector<float>& d) { return classifier.classify(d); }, samples);
+        [&](const sagrid::CategorySample& s) { return classifier.classify(s.descriptor); },
+        samples);
     for (const auto& [cls, c] : ev.byClass)
       classifier.training["train_share_right"][cls] = c.total ? double(c.right) / c.total : 0.0;
     const fs::path file = out / sagrid::kCategoryClassifierFile;
@@ -165,6 +206,7 @@ void setupCategory(CLI::App& root) {
       ->check(CLI::IsMember({"y", "z"}));
   eval->add_flag("--retrieval", o->retrieval,
                  "Evaluate today's retrieval by similarity (no rejection) instead of the classifier");
+  addEvidenceFlags(eval, *o);
   eval->callback([o] {
     const fs::path dir = o->models.empty() ? defaultModelsDir() : fs::path(o->models);
     const auto models = sagrid::ModelSet::load(dir);
@@ -179,16 +221,29 @@ void setupCategory(CLI::App& root) {
       std::fprintf(stderr, "%s has no %s: evaluating retrieval\n", dir.string().c_str(),
                    sagrid::kCategoryClassifierFile);
     const double threshold = o->threshold >= 0 ? o->threshold : classifier ? classifier->threshold() : 0.5;
+    if (o->evidence && (!classifier || o->retrieval || classifier->evidence.empty()))
+      throw sagrid::InvalidArgument(dir.string() +
+                                    ": --evidence needs a category classifier with "
+                                    "an evidence gate (`sagrid category evidence`)");
+    const SampleEvidence evidence(models, *o);
+    std::unique_ptr<sagrid::app::ProgressBar> bar;
+    if (o->evidence) bar = std::make_unique<sagrid::app::ProgressBar>("evidence", samples.size());
+    std::size_t done = 0;
     const auto ev = sagrid::evaluateCategories(
-        [&](const std::vector<float>& d) {
-          if (classifier && !o->retrieval) return classifier->classify(d, threshold);
+        [&](const sagrid::CategorySample& s) {
+          if (bar) bar->update(done++);
+          if (classifier && !o->retrieval) {
+            const auto d = classifier->classify(s.descriptor, threshold);
+            return o->evidence ? evidence.gate(s, d) : d;
+          }
           sagrid::CategoryDecision r;
-          const auto ranked = models.rankCategories(d);
+          const auto ranked = models.rankCategories(s.descriptor);
           r.category = r.best = ranked.front().category;
           r.score = ranked.front().similarity;
           return r;
         },
         samples);
+    if (bar) bar->finish();
     std::cout << sagrid::categoryEvaluationTable(ev);
   });
 
@@ -209,17 +264,114 @@ void setupCategory(CLI::App& root) {
   cv->add_option("--models", o->models,
                  "Models folder whose feature settings to use (default resources/models)");
   addTrainingFlags(cv, *o);
+  addEvidenceFlags(cv, *o);
   cv->callback([o] {
-    auto features = featuresFor(o->models.empty() ? defaultModelsDir() : fs::path(o->models));
+    const fs::path dir = o->models.empty() ? defaultModelsDir() : fs::path(o->models);
+    auto features = featuresFor(dir);
     if (!o->up.empty()) features.up = sagrid::parseUpAxis(o->up);
     const auto always = collect(o->data, features, {}, o->topRelief);
     const auto validated = collect(o->validate, features, {}, o->topRelief);
+    std::optional<sagrid::ModelSet> models;
+    std::optional<SampleEvidence> evidence;
+    if (o->evidence) {
+      models = sagrid::ModelSet::load(dir);
+      if (!models->categoryClassifier() || models->categoryClassifier()->evidence.empty())
+        throw sagrid::InvalidArgument(dir.string() +
+                                      ": --evidence needs a category classifier "
+                                      "with an evidence gate (`sagrid category evidence`)");
+      evidence.emplace(*models, *o);
+    }
+    // Each fold's classifier, then the shipped evidence gate (fitted on objects of the category
+    // only: it never saw a distractor).
     const auto ev = sagrid::crossValidateCategories(
         always, validated, o->folds, trainingOptions(*o),
-        [](int k, int folds) { std::fprintf(stderr, "fold %d/%d: training\n", k + 1, folds); });
+        [](int k, int folds) { std::fprintf(stderr, "fold %d/%d: training\n", k + 1, folds); },
+        evidence ? sagrid::CategoryCheck(
+                       [&](const sagrid::CategorySample& s, const sagrid::CategoryDecision& d) {
+                         return evidence->gate(s, d);
+                       })
+                 : sagrid::CategoryCheck{});
     std::cout << "# " << o->folds << "-fold cross-validation over " << validated.size()
               << " objects\n\n"
               << sagrid::categoryEvaluationTable(ev);
+  });
+
+  auto* evidenceCmd = cmd->add_subcommand(
+      "evidence",
+      "Fit the evidence gate of the models folder's classifier: run each category's models on "
+      "the stove and sink objects of the --data folders (as `annotate --category`) and set, per "
+      "category, the threshold on the best point's confidence that --keep of them reach. "
+      "Distractors in the folders are only reported (the share each threshold would reject).");
+  evidenceCmd->add_option("--data", o->data, "Dataset folder (repeat for several)")->required();
+  evidenceCmd->add_option(
+      "--models", o->models,
+      "Models folder whose category.json gets the gate (default resources/models)");
+  evidenceCmd
+      ->add_option("--keep", o->keep,
+                   "Share of each category's objects the gate keeps (default 0.98)")
+      ->check(CLI::Range(0.01, 1.0));
+  evidenceCmd->add_option("--up", o->up, "Up axis (y or z) of objects whose labels do not say")
+      ->check(CLI::IsMember({"y", "z"}));
+  evidenceCmd->add_option("--cache", o->cache, "Feature cache folder (default: none)");
+  evidenceCmd->add_option("--category", o->gated,
+                          "Category to gate (repeat; default: every category with models); the "
+                          "others keep no threshold");
+  evidenceCmd->callback([o] {
+    const fs::path dir = o->models.empty() ? defaultModelsDir() : fs::path(o->models);
+    const fs::path file = dir / sagrid::kCategoryClassifierFile;
+    auto classifier = sagrid::CategoryClassifier::load(file);
+    const auto models = sagrid::ModelSet::load(dir);
+    auto features = models.featureOptions();
+    if (!o->up.empty()) features.up = sagrid::parseUpAxis(o->up);
+    const auto samples = collect(o->data, features, {}, classifier.topRelief());
+    const SampleEvidence evidence(models, *o);
+    const std::vector<std::string> gated = o->gated.empty() ? models.categories() : o->gated;
+    auto isGated = [&gated](const std::string& c) {
+      return std::find(gated.begin(), gated.end(), c) != gated.end();
+    };
+    std::map<std::string, std::vector<double>> own;         // category -> evidence
+    std::map<std::string, std::vector<double>> distractor;  // category -> evidence
+    sagrid::app::ProgressBar bar("evidence", samples.size());
+    for (std::size_t i = 0; i < samples.size(); ++i) {
+      bar.update(i);
+      const auto& s = samples[i];
+      const std::string cls = sagrid::categoryClass(s.category);
+      try {
+        if (cls != sagrid::kRejectedCategory) {
+          if (isGated(cls)) own[cls].push_back(evidence(s, cls));
+        } else {
+          for (const auto& category : gated) distractor[category].push_back(evidence(s, category));
+        }
+      } catch (const sagrid::Error& e) {
+        std::fprintf(stderr, "%s: skipped: %s\n", s.id.c_str(), e.what());
+      }
+    }
+    bar.finish();
+    auto gate = sagrid::fitEvidenceGate(own, o->keep, models);
+    std::string command = "sagrid category evidence";
+    for (const auto& d : o->data) command += " --data " + d;
+    if (!o->up.empty()) command += " --up " + o->up;
+    for (const auto& c : o->gated) command += " --category " + c;
+    command += " --keep " + std::to_string(o->keep) + " --models " + dir.string();
+    gate.record["data"] = o->data;
+    gate.record["command"] = command;
+    std::cout << "| category | objects | threshold | kept | distractors | distractors below |\n"
+                 "|---|---:|---:|---:|---:|---:|\n";
+    for (const auto& [category, threshold] : gate.thresholds) {
+      const auto& values = own.at(category);
+      const auto kept = std::count_if(values.begin(), values.end(),
+                                      [&, t = threshold](double v) { return v >= t; });
+      const auto& others = distractor[category];
+      const auto below =
+          std::count_if(others.begin(), others.end(), [t = threshold](double v) { return v < t; });
+      gate.record["kept"][category] = kept;
+      gate.record["distractors_below"][category] = {below, others.size()};
+      std::printf("| %s | %zu | %.4f | %ld | %zu | %ld |\n", category.c_str(), values.size(),
+                  threshold, static_cast<long>(kept), others.size(), static_cast<long>(below));
+    }
+    classifier.evidence = gate;
+    classifier.save(file);
+    std::fprintf(stderr, "wrote the evidence gate into %s\n", file.string().c_str());
   });
 
   auto* split = cmd->add_subcommand(

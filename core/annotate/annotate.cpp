@@ -2,6 +2,7 @@
 
 #include <chrono>
 
+#include "core/annotate/category_evidence.h"
 #include "core/annotate/coarse_to_fine.h"
 #include "core/annotate/mirror_pairs_pass.h"
 #include "core/annotate/part_ownership_pass.h"
@@ -22,6 +23,19 @@ using Clock = std::chrono::steady_clock;
 namespace {
 double secondsSince(Clock::time_point t) {
   return std::chrono::duration<double>(Clock::now() - t).count();
+}
+
+// Not a stove or sink: no points; the closest category is kept for the curator. `evidence`: the
+// evidence gate rejected it (its value), else the classifier did.
+void recordRejection(AnnotationResult& r, std::optional<double> evidence = std::nullopt) {
+  r.labels.extra["prediction"] = {{"category_score", r.categorySimilarity},
+                                  {"category_retrieved", true},
+                                  {"category_rejected", true},
+                                  {"closest_category", r.closestCategory}};
+  if (evidence) {
+    r.labels.extra["prediction"]["rejected_by"] = "evidence";
+    r.labels.extra["prediction"]["affordance_evidence"] = *evidence;
+  }
 }
 }  // namespace
 
@@ -139,11 +153,7 @@ AnnotationResult annotateMeshFile(const fs::path& meshFile, const std::string& i
   r.labels.object.up = toString(mesh.fileUp);
   if (mesh.fileUpDetected) r.labels.object.upConfidence = mesh.fileUpConfidence;
   if (r.rejected) {
-    // Not a stove or sink: no points; the closest category is kept for the curator.
-    r.labels.extra["prediction"] = {{"category_score", r.categorySimilarity},
-                                    {"category_retrieved", true},
-                                    {"category_rejected", true},
-                                    {"closest_category", r.closestCategory}};
+    recordRejection(r);
     r.modelSeconds = secondsSince(t);
     if (options.onProgress) options.onProgress(1.0f, "done");
     return r;
@@ -195,6 +205,20 @@ AnnotationResult annotateMeshFile(const fs::path& meshFile, const std::string& i
       a.source = p.source;
       r.labels.affordances.push_back(std::move(a));
     }
+  const double evidence = affordanceEvidence(r.predictions);
+  const auto* classifier = models.categoryClassifier();
+  if (r.categoryRetrieved && classifier && !classifier->evidence.passes(r.category, evidence)) {
+    // The classifier's category, but its models find nothing of it here: rejected after all.
+    r.rejected = r.rejectedByEvidence = true;
+    r.closestCategory = r.category;
+    r.category = r.labels.object.category = kRejectedCategory;
+    r.labels.affordances.clear();
+    r.predictions.clear();
+    recordRejection(r, evidence);
+    r.modelSeconds = secondsSince(t);
+    if (options.onProgress) options.onProgress(1.0f, "done");
+    return r;
+  }
   r.objectConfidence = options.confidence.probability(leastSurePointDistance(r.predictions));
   r.labels.extra["prediction"] = {{"category_similarity", r.categorySimilarity},
                                   {"category_retrieved", r.categoryRetrieved},
@@ -203,6 +227,8 @@ AnnotationResult annotateMeshFile(const fs::path& meshFile, const std::string& i
                                   {"symmetries", options.symmetries},
                                   {"printed_zones", printed.zones.size()},
                                   {"printed_symbols", printed.symbols.size()}};
+  if (r.categoryRetrieved && classifier && !classifier->evidence.empty())
+    r.labels.extra["prediction"]["affordance_evidence"] = evidence;
   r.modelSeconds = secondsSince(t);
   if (options.onProgress) options.onProgress(1.0f, "done");
   return r;

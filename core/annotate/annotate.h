@@ -115,6 +115,9 @@ struct AnnotationResult {
   // "none", no points. closestCategory is its best guess, for a curator to pick.
   bool rejected = false;
   std::string closestCategory;
+  // Rejected by the evidence gate (EvidenceGate in category_classifier.h): the classifier filed it
+  // under closestCategory, but that category's models found too little of it.
+  bool rejectedByEvidence = false;
   std::vector<ModelPrediction> predictions;
   double objectConfidence = 0;  // P(right with one key), see AnnotateOptions::confidence
   double importSeconds = 0, featureSeconds = 0, modelSeconds = 0;

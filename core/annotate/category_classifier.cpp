@@ -53,6 +53,11 @@ std::vector<float> categoryInputs(const FeatureGrid& grid, bool topRelief) {
   return categoryInputs(grid.descriptor, sagrid::topRelief(grid.voxels, grid.resolution), true);
 }
 
+bool EvidenceGate::passes(const std::string& category, double evidence) const {
+  const auto it = thresholds.find(category);
+  return it == thresholds.end() || evidence >= it->second;
+}
+
 std::string categoryClass(const std::string& labelledCategory) {
   if (labelledCategory == "stove" || labelledCategory == "sink") return labelledCategory;
   return kRejectedCategory;
@@ -220,6 +225,10 @@ void CategoryClassifier::save(const std::filesystem::path& file) const {
   j["weights"] = m_weights;
   j["bias"] = m_bias;
   j["training"] = training;
+  if (!evidence.empty())
+    j["evidence"] = {{"thresholds", evidence.thresholds},
+                     {"models", evidence.modelShas},
+                     {"record", evidence.record}};
   j["sha256"] = contentSha(j);
   writeFileAtomic(file, j.dump(1) + "\n");
 }
@@ -249,6 +258,12 @@ CategoryClassifier CategoryClassifier::load(const std::filesystem::path& file) {
     c.m_weights = j.at("weights").get<std::vector<std::vector<double>>>();
     c.m_bias = j.at("bias").get<std::vector<double>>();
     c.training = j.value("training", nlohmann::json::object());
+    if (j.contains("evidence")) {
+      const auto& e = j.at("evidence");
+      c.evidence.thresholds = e.at("thresholds").get<std::map<std::string, double>>();
+      c.evidence.modelShas = e.at("models").get<std::map<std::string, std::string>>();
+      c.evidence.record = e.value("record", nlohmann::json::object());
+    }
   } catch (const nlohmann::json::exception& e) {
     throw FileError(file, std::string("malformed category classifier: ") + e.what());
   }
@@ -256,6 +271,10 @@ CategoryClassifier CategoryClassifier::load(const std::filesystem::path& file) {
   bool ok = d > 0 && k >= 2 && c.m_scale.size() == d && c.m_weights.size() == k && c.m_bias.size() == k;
   for (const auto& row : c.m_weights) ok = ok && row.size() == (c.m_quadratic ? 2 * d : d);
   for (float s : c.m_scale) ok = ok && s > 0;
+  for (const auto& [category, t] : c.evidence.thresholds)
+    if (!std::isfinite(t) || t < 0 || t > 1)
+      throw FileError(file, "malformed category classifier: evidence threshold of \"" + category +
+                                "\" is not a confidence in [0, 1]");
   if (!ok)
     throw FileError(file, "malformed category classifier: classes, centre, scale, weights and bias "
                           "do not agree in size");

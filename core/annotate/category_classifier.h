@@ -14,6 +14,7 @@
 #pragma once
 
 #include <filesystem>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -38,6 +39,23 @@ struct CategorySample {
   std::string group;     // where it came from (dataset folder, distractor kind), for reports
   std::vector<float> descriptor;
   double weight = 1.0;  // relative weight in training (few real objects among many generated)
+  std::filesystem::path mesh;  // the object's mesh (the evidence gate runs the models on it)
+  std::string up;              // its labels' up axis, empty = the caller's
+};
+
+// The affordance-evidence gate after the classifier (core/annotate/category_evidence.h): an object
+// the classifier files under a category is rejected after all when the best point that
+// category's models find on it has a confidence below the category's threshold (a blender's jug
+// looks like a basin, but the sink models find no tap on it). Fitted by `sagrid category
+// evidence` for the models whose weights it records; a model set with other weights ignores it.
+struct EvidenceGate {
+  std::map<std::string, double> thresholds;      // category -> least best-point confidence
+  std::map<std::string, std::string> modelShas;  // model name -> weights sha256 it was fitted with
+  nlohmann::json record = nlohmann::json::object();  // how it was fitted (data, keep share, counts)
+
+  bool empty() const { return thresholds.empty(); }
+  // True when `category` has no threshold or `evidence` reaches it.
+  bool passes(const std::string& category, double evidence) const;
 };
 
 struct CategoryTrainingOptions {
@@ -91,6 +109,8 @@ class CategoryClassifier {
   int gridResolution = 0;
   // Free-form record of the training run (data folders, command, counts, accuracy).
   nlohmann::json training = nlohmann::json::object();
+  // Saved as "evidence" (covered by the file's sha256); empty = no gate.
+  EvidenceGate evidence;
 
  private:
   std::vector<std::string> m_classes;  // "none" always last

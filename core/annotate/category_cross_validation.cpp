@@ -21,7 +21,8 @@ void add(CategoryEvaluation& total, const CategoryEvaluation& part) {
 CategoryEvaluation crossValidateCategories(const std::vector<CategorySample>& always,
                                            const std::vector<CategorySample>& validated, int folds,
                                            const CategoryTrainingOptions& options,
-                                           const std::function<void(int, int)>& onFold) {
+                                           const std::function<void(int, int)>& onFold,
+                                           const CategoryCheck& check) {
   if (folds < 2)
     throw InvalidArgument("cross-validation needs at least 2 folds, got " + std::to_string(folds));
   if (validated.size() < static_cast<std::size_t>(folds))
@@ -42,7 +43,11 @@ CategoryEvaluation crossValidateCategories(const std::vector<CategorySample>& al
     for (const auto& s : validated) (fold.at(s.id) == k ? held : train).push_back(s);
     const auto classifier = CategoryClassifier::train(train, options);
     add(total, evaluateCategories(
-                   [&](const std::vector<float>& d) { return classifier.classify(d); }, held));
+                   [&](const CategorySample& s) {
+                     const CategoryDecision d = classifier.classify(s.descriptor);
+                     return check ? check(s, d) : d;
+                   },
+                   held));
   }
   return total;
 }

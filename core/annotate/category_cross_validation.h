@@ -13,13 +13,18 @@
 
 namespace sagrid {
 
+// What follows the classifier's decision on a sample (the evidence gate), or nothing.
+using CategoryCheck =
+    std::function<CategoryDecision(const CategorySample&, const CategoryDecision&)>;
+
 // Each fold of `validated` decided by a classifier trained with `options` on `always` plus the
-// other folds; the folds' evaluations summed (misses in fold order). `onFold(k, folds)` before each
-// fold's training. Throws InvalidArgument when folds < 2 or there are fewer validated samples than
-// folds, or when an id appears twice among them.
+// other folds (then by `check` when given); the folds' evaluations summed (misses in fold order).
+// `onFold(k, folds)` before each fold's training. Throws InvalidArgument when folds < 2 or there
+// are fewer validated samples than folds, or when an id appears twice among them.
 CategoryEvaluation crossValidateCategories(const std::vector<CategorySample>& always,
                                            const std::vector<CategorySample>& validated, int folds,
                                            const CategoryTrainingOptions& options,
-                                           const std::function<void(int, int)>& onFold = {});
+                                           const std::function<void(int, int)>& onFold = {},
+                                           const CategoryCheck& check = {});
 
 }  // namespace sagrid

@@ -55,6 +55,8 @@ std::vector<CategorySample> collectCategorySamples(
       // importer's default for the format.
       if (!labels.object.up.empty()) objectFeatures.up = parseUpAxis(labels.object.up);
       s.descriptor = categoryInputs(extractFeatures(entry.mesh, objectFeatures), topRelief);
+      s.mesh = entry.mesh;
+      s.up = labels.object.up;
       out.push_back(std::move(s));
     } catch (const Error& err) {
       logger()->warn("category data: skipping {}: {}", entry.id, err.what());
@@ -108,12 +110,12 @@ IdSplit readIdSplit(const fs::path& file) {
 }
 
 CategoryEvaluation evaluateCategories(
-    const std::function<CategoryDecision(const std::vector<float>&)>& decide,
+    const std::function<CategoryDecision(const CategorySample&)>& decide,
     const std::vector<CategorySample>& samples) {
   CategoryEvaluation ev;
   for (const auto& s : samples) {
     const std::string truth = categoryClass(s.category);
-    const CategoryDecision d = decide(s.descriptor);
+    const CategoryDecision d = decide(s);
     const bool right = d.category == truth;
     auto& c = ev.byClass[truth];
     ++c.total, c.right += right;

@@ -21,7 +21,7 @@ namespace sagrid {
 // labels.json up axis overrides features.up; objects without labels.json take the manifest's
 // category and features.up. Objects whose features fail are skipped and counted in `failed` (when
 // given). A sample's descriptor is categoryInputs(features, topRelief): with `topRelief` the
-// relief of the object's top follows the descriptor.
+// relief of the object's top follows the descriptor. Samples keep their mesh and labelled up axis.
 std::vector<CategorySample> collectCategorySamples(
     const std::filesystem::path& dataDir, const FeatureOptions& features,
     const std::set<std::string>& excludeIds = {},
@@ -64,9 +64,9 @@ struct CategoryEvaluation {
 };
 
 // `decide` is the classifier under test (a CategoryClassifier at a threshold, or ModelSet's
-// decideCategory for retrieval without a classifier).
+// decideCategory for retrieval without a classifier, perhaps followed by the evidence gate).
 CategoryEvaluation evaluateCategories(
-    const std::function<CategoryDecision(const std::vector<float>&)>& decide,
+    const std::function<CategoryDecision(const CategorySample&)>& decide,
     const std::vector<CategorySample>& samples);
 
 // Markdown: the per-class table (stoves right, sinks right, distractors rejected), per group, the

@@ -5,6 +5,7 @@
 #include <map>
 
 #include "core/common/error.h"
+#include "core/common/log.h"
 
 namespace sagrid {
 
@@ -45,6 +46,20 @@ void ModelSet::setCategoryClassifier(CategoryClassifier classifier,
     if (c != kRejectedCategory && std::find(known.begin(), known.end(), c) == known.end())
       throw ModelError(file.string() + ": the category classifier knows \"" + c +
                        "\" but no model card has that category");
+  // The evidence gate's thresholds are confidences of these very weights: with retrained models
+  // it would reject at the wrong level, so it goes (until `sagrid category evidence` refits it).
+  for (const auto& [name, sha] : classifier.evidence.modelShas) {
+    const auto it = std::find_if(m_models.begin(), m_models.end(),
+                                 [&name = name](const auto& m) { return m.card().name == name; });
+    if (it == m_models.end() || it->card().weightsSha256 != sha) {
+      logger()->warn(
+          "{}: its evidence gate was fitted for other weights of {}; the gate is off "
+          "until `sagrid category evidence` refits it",
+          file.string(), name);
+      classifier.evidence = {};
+      break;
+    }
+  }
   m_classifier = std::move(classifier);
 }
 

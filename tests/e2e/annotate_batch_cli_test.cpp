@@ -31,7 +31,7 @@ const std::string kModels =
 // One symmetric copy: these tests are about the batch, not the prediction.
 const std::string kFast = " --models " + kModels + " --symmetries 1";
 
-std::string q(const fs::path& p) { return shellQuote(p.string()); }
+std::string q(const fs::path& p) { return test::quotedPath(p); }
 
 std::string annotate(const fs::path& in, const fs::path& out, const std::string& more = "") {
   return "annotate " + q(in) + " --out " + q(out) + kFast + more;

@@ -28,7 +28,7 @@ using ::testing::HasSubstr;
 
 const fs::path kSlurmDir = fs::path(SAGRID_SOURCE_DIR) / "packaging" / "slurm";
 
-std::string q(const fs::path& p) { return shellQuote(p.string()); }
+std::string q(const fs::path& p) { return test::quotedPath(p); }
 
 bool slurmInstalled() {
   return runCommand(

@@ -21,5 +21,9 @@ CommandResult runCommand(const std::string& commandLine);
 // Runs the sagrid binary with the given (already shell-quoted) arguments.
 CommandResult runSagrid(const std::string& arguments);
 std::string shellQuote(const std::string& text);
+// A path quoted for a shell command line.
+inline std::string quotedPath(const std::filesystem::path& path) {
+  return shellQuote(path.string());
+}
 
 }  // namespace sagrid::test

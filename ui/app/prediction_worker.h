@@ -22,6 +22,7 @@ struct PredictionResult {
   // is its best guess for the curator.
   bool rejected = false;
   std::string closestCategory;
+  bool rejectedByEvidence = false;  // filed under closestCategory, whose models found too little
   std::vector<AffordancePoint> points;  // mesh file coordinates, status "predicted"
   double objectConfidence = 0;          // P(right with one key), core/annotate/object_confidence.h
   std::vector<DistanceField> fields;

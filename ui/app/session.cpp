@@ -334,7 +334,12 @@ void Session::pollPrediction() {
     m_queue.setConfidence(std::size_t(m_queue.current()), result.objectConfidence);
   if (m_document->labels().object.category.empty() && !result.category.empty())
     m_document->setCategory(result.category);
-  if (result.rejected) {
+  if (result.rejected && result.rejectedByEvidence) {
+    logger()->info(
+        "{}: shaped like a {}, but the {} models find none of its parts on it: no "
+        "points; pick the category and run SAGrid, or place the points by hand",
+        m_document->displayName(), result.closestCategory, result.closestCategory);
+  } else if (result.rejected) {
     // Opened with no points; the curator picks the category (object panel) and runs SAGrid.
     logger()->info("{}: not a known category (closest: {}): no points; pick the category and run "
                    "SAGrid, or place the points by hand",

@@ -6,6 +6,7 @@
 #include <set>
 
 #include "core/annotate/annotation_fingerprint.h"
+#include "core/annotate/category_evidence.h"
 #include "core/common/error.h"
 #include "core/dataset/dataset.h"
 #include "core/features/feature_grid.h"
@@ -160,6 +161,54 @@ TEST(ModelSetTest, CosineSimilarity) {
   EXPECT_NEAR(cosineSimilarity({1, 0}, {0, 1}), 0.0, 1e-12);
   EXPECT_NEAR(cosineSimilarity({1, 1}, {2, 2}), 1.0, 1e-12);
   EXPECT_EQ(cosineSimilarity({1}, {1, 2}), 0.0);
+}
+
+TEST_F(AnnotateTest, TheEvidenceGateRejectsWhatTheCategorysModelsFindTooLittleOf) {
+  // A classifier that files the stove under "stove" (its own descriptor), then the gate.
+  std::vector<CategorySample> samples;
+  for (int i = 0; i < 3; ++i) {
+    samples.push_back({"stove" + std::to_string(i), "stove", "", stoveFeatures.descriptor});
+    samples.push_back({"sink" + std::to_string(i), "sink", "", sinkFeatures.descriptor});
+    std::vector<float> other = stoveFeatures.descriptor;
+    for (float& v : other) v = -v + 0.1f * static_cast<float>(i);
+    samples.push_back({"none" + std::to_string(i), "none", "", other});
+  }
+  auto classifier = CategoryClassifier::train(samples, {});
+  classifier.featureBackend = stoveFeatures.backend;
+  set->setCategoryClassifier(classifier, "category.json");
+  auto run = [&] { return annotateMeshFile(entries[0].mesh, "stove0", *set, annotate, dir / "o"); };
+  const AnnotationResult ungated = run();
+  ASSERT_EQ(ungated.category, "stove");
+  const double evidence = affordanceEvidence(ungated.predictions);
+  ASSERT_GT(evidence, 0.0);
+  ASSERT_LT(evidence, 1.0);  // room for a threshold above it
+
+  classifier.evidence.thresholds["stove"] = evidence;  // reached exactly: kept
+  set->setCategoryClassifier(classifier, "category.json");
+  const AnnotationResult kept = run();
+  EXPECT_EQ(kept.category, "stove");
+  EXPECT_FALSE(kept.labels.affordances.empty());
+  EXPECT_DOUBLE_EQ(kept.labels.extra.at("prediction").at("affordance_evidence").get<double>(),
+                   evidence);
+
+  classifier.evidence.thresholds["stove"] = (evidence + 1.0) / 2;
+  set->setCategoryClassifier(classifier, "category.json");
+  const AnnotationResult rejected = run();
+  EXPECT_TRUE(rejected.rejected);
+  EXPECT_EQ(rejected.category, "none");
+  EXPECT_EQ(rejected.labels.object.category, "none");
+  EXPECT_EQ(rejected.closestCategory, "stove");
+  EXPECT_TRUE(rejected.labels.affordances.empty());
+  EXPECT_TRUE(rejected.predictions.empty());
+  const auto& prediction = rejected.labels.extra.at("prediction");
+  EXPECT_EQ(prediction.at("rejected_by"), "evidence");
+  EXPECT_EQ(prediction.at("closest_category"), "stove");
+
+  // A category the caller names is not second-guessed.
+  annotate.category = "stove";
+  const AnnotationResult named = run();
+  EXPECT_FALSE(named.rejected);
+  EXPECT_FALSE(named.labels.affordances.empty());
 }
 
 TEST_F(AnnotateTest, ReportsStagesInOrderAndStopsWhenCancelled) {

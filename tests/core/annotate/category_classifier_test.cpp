@@ -217,7 +217,8 @@ TEST(CategoryClassifier, RejectsGeneratedDistractors) {
   CategoryTrainingOptions options;
   options.l2 = 0.1;  // 90 objects for 64 dimensions: keep the weights small
   const auto c = CategoryClassifier::train(train, options);
-  const auto ev = evaluateCategories([&](const std::vector<float>& d) { return c.classify(d); }, test);
+  const auto ev =
+      evaluateCategories([&](const CategorySample& s) { return c.classify(s.descriptor); }, test);
   // 10 held-out objects per class; a distractor counts as right only when rejected.
   EXPECT_GE(ev.byClass.at("none").right, 8) << categoryEvaluationTable(ev);
   // Cheap features and 30 objects per class: well above chance (1/3), not the real figure.
@@ -227,7 +228,8 @@ TEST(CategoryClassifier, RejectsGeneratedDistractors) {
 
 TEST(CategoryEvaluation, ListsTheObjectsDecidedWrongly) {
   // A rule by the descriptor's first value: > 0.5 stove, else rejected (best: sink).
-  auto decide = [](const std::vector<float>& d) {
+  auto decide = [](const CategorySample& s) {
+    const auto& d = s.descriptor;
     CategoryDecision r;
     r.best = d[0] > 0.5f ? "stove" : "sink";
     r.score = d[0];
@@ -302,6 +304,28 @@ TEST(CategoryClassifier, ShippedClassifierRejectsGeneratedDistractorsSlow) {
   const auto stove = gen::makeObject("stove", 777, 0, gen::MeshFormat::Obj);
   EXPECT_EQ(set.decideCategory(computeFeatures(stove.mesh, set.featureOptions())).category,
             "stove");
+}
+
+// The shipped classifier and its evidence gate, as `annotate` without --category meets them, on
+// the bundled samples a user opens first: every one filed under its category (the folder name's
+// prefix), none rejected by either.
+TEST(CategoryClassifier, ShippedModelsFileEveryBundledSampleUnderItsCategorySlow) {
+  const auto resources = std::filesystem::path(SAGRID_SOURCE_DIR) / "resources";
+  const ModelSet set = ModelSet::load(resources / "models");
+  ASSERT_NE(set.categoryClassifier(), nullptr);
+  EXPECT_FALSE(set.categoryClassifier()->evidence.empty());
+  int samples = 0;
+  for (const auto& folder : std::filesystem::directory_iterator(resources / "samples")) {
+    if (!folder.is_directory()) continue;
+    const std::string id = folder.path().filename().string();
+    const auto glb = folder.path() / "mesh.glb";
+    const auto mesh = std::filesystem::exists(glb) ? glb : folder.path() / "mesh.obj";
+    const auto r = annotateMeshFile(mesh, id, set, {}, test::freshTempDir());
+    EXPECT_EQ(r.category, id.substr(0, id.find('_')))
+        << id << " (closest " << r.closestCategory << ")";
+    ++samples;
+  }
+  EXPECT_EQ(samples, 6);
 }
 
 }  // namespace
