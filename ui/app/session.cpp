@@ -73,6 +73,7 @@ void Session::openEntry(int index) {
   const std::size_t i = static_cast<std::size_t>(m_queue.current());
   const QueueEntry& entry = m_queue.entry(i);
   m_document.reset();
+  m_predictionNote.clear();
   try {
     m_document = openDocument(entry.mesh, entry.labels);
     m_document->setAutosave(!readOnly);
@@ -285,6 +286,7 @@ void Session::applyDefaultFieldSettings() {
 
 void Session::runPrediction() {
   if (!m_document) return;
+  m_predictionNote.clear();
   std::optional<PredictionJob> job;
   if (m_predictorLookup) {
     try {
@@ -334,16 +336,15 @@ void Session::pollPrediction() {
     m_queue.setConfidence(std::size_t(m_queue.current()), result.objectConfidence);
   if (m_document->labels().object.category.empty() && !result.category.empty())
     m_document->setCategory(result.category);
-  if (result.rejected && result.rejectedByEvidence) {
-    logger()->info(
-        "{}: shaped like a {}, but the {} models find none of its parts on it: no "
-        "points; pick the category and run SAGrid, or place the points by hand",
-        m_document->displayName(), result.closestCategory, result.closestCategory);
-  } else if (result.rejected) {
+  if (result.rejected) {
     // Opened with no points; the curator picks the category (object panel) and runs SAGrid.
-    logger()->info("{}: not a known category (closest: {}): no points; pick the category and run "
-                   "SAGrid, or place the points by hand",
-                   m_document->displayName(), result.closestCategory);
+    m_predictionNote =
+        result.rejectedByEvidence
+            ? "shaped like a " + result.closestCategory + ", but the " + result.closestCategory +
+                  " models find none of its parts on it: no points"
+            : "not a known category (closest: " + result.closestCategory + "): no points";
+    logger()->info("{}: {}; pick the category and run SAGrid, or place the points by hand",
+                   m_document->displayName(), m_predictionNote);
   }
   // Predictions fill an object with no points yet; existing (reviewed) points are never replaced.
   if (m_document->points().empty() && !result.points.empty()) {

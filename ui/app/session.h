@@ -98,6 +98,9 @@ class Session {
   const AnnotationDocument* document() const { return m_document.get(); }
   const ReviewQueue& queue() const { return m_queue; }
   const std::string& currentType() const { return m_currentType; }
+  // Why the last prediction of the open object gave no points (the category was rejected), for
+  // the object panel; empty otherwise.
+  const std::string& predictionNote() const { return m_predictionNote; }
   void setCurrentType(const std::string& type) { m_currentType = type; }
   const RecentFiles& recent() const { return m_recent; }
   bool addModeArmed = false;  // next click on the surface adds a point
@@ -125,6 +128,7 @@ class Session {
   ViewSettings m_view;
   ViewportRect m_viewport;
   std::string m_currentType = "heatsource";
+  std::string m_predictionNote;
   RecentFiles m_recent;
   std::vector<std::string> m_errors;
   PredictionWorker m_worker;

@@ -77,6 +77,11 @@ void drawObjectPanel(Session& session) {
     }
     ImGui::EndCombo();
   }
+  if (!session.predictionNote().empty()) {
+    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(0.95f, 0.75f, 0.35f, 1.0f));
+    ImGui::TextWrapped("%s", session.predictionNote().c_str());
+    ImGui::PopStyleColor();
+  }
   drawMass(session, *doc);
   const PredictionWorker& worker = session.worker();
   if (worker.running()) {

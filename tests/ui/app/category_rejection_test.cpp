@@ -45,9 +45,40 @@ TEST(CategoryRejection, RejectedObjectOpensWithNoPointsAndCuratorPicksCategory) 
   EXPECT_EQ(s.document().labels().object.category, "none");
   EXPECT_TRUE(s.document().points().empty());
   EXPECT_EQ(readLabels(dir / "fresh" / "labels.json").object.category, "none");
+  EXPECT_EQ(session.predictionNote(), "not a known category (closest: stove): no points");
   // The curator picks the category (the object panel's combo calls setCategory).
   session.document()->setCategory("stove");
   EXPECT_EQ(readLabels(dir / "fresh" / "labels.json").object.category, "stove");
+}
+
+TEST(CategoryRejection, TheObjectPanelSaysWhyTheEvidenceGateRejected) {
+  const auto dir = sagrid::test::freshTempDir();
+  ScriptedApp s(dir);
+  auto& session = s.app->session();
+  session.setPredictorLookup([](const AnnotationDocument&) -> std::optional<PredictionJob> {
+    return PredictionJob([](PredictionProgress& progress) {
+      PredictionResult r;
+      r.category = "none";
+      r.rejected = r.rejectedByEvidence = true;
+      r.closestCategory = "sink";
+      progress.fraction = 1.0f;
+      return r;
+    });
+  });
+  session.openObject(dir / "mesh.obj", dir / "labels.json");
+  session.runPrediction();
+  for (int i = 0; i < 200 && session.worker().running(); ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    s.frame({});
+  }
+  s.frame({});
+  EXPECT_EQ(session.predictionNote(),
+            "shaped like a sink, but the sink models find none of its parts on it: no points");
+  // The next prediction (or object) starts without it.
+  session.setPredictorLookup(
+      [](const AnnotationDocument&) { return std::optional<PredictionJob>{}; });
+  session.runPrediction();
+  EXPECT_TRUE(session.predictionNote().empty());
 }
 
 }  // namespace
