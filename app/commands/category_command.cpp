@@ -81,7 +81,8 @@ struct Options {
 };
 
 // The evidence of a category on a sample: its models run on the sample's mesh (in its labelled
-// up axis, else --up) as `annotate --category` would, features from --cache when given.
+// up axis, else --up) as `annotate --category` would, features from --cache when given, else from
+// the cache its descriptor came from (no second feature extraction).
 class SampleEvidence {
  public:
   SampleEvidence(const sagrid::ModelSet& models, const Options& o) : m_models(models) {
@@ -92,6 +93,7 @@ class SampleEvidence {
   double operator()(const sagrid::CategorySample& s, const std::string& category) const {
     auto options = m_options;
     if (!s.up.empty()) options.features.up = sagrid::parseUpAxis(s.up);
+    if (options.features.cacheDir.empty()) options.features.cacheDir = s.featureCache;
     return sagrid::affordanceEvidence(s.mesh, category, m_models, options);
   }
   // The classifier's decision on `s` after the models folder's evidence gate.
@@ -113,7 +115,9 @@ void addEvidenceFlags(CLI::App* cmd, Options& o) {
                 "Follow the classifier with the models folder's evidence gate: an object filed "
                 "under a category whose models find no point of it (below the gate's threshold) is "
                 "rejected, as `annotate` does (runs the models on every accepted object)");
-  cmd->add_option("--cache", o.cache, "Feature cache folder for the models' runs (default: none)");
+  cmd->add_option("--cache", o.cache,
+                  "Feature cache folder for the models' runs (default: each dataset's "
+                  ".sagrid-cache, where the descriptors are cached)");
 }
 
 // The options that shape a trained classifier (train and cv).
@@ -312,7 +316,9 @@ void setupCategory(CLI::App& root) {
       ->check(CLI::Range(0.01, 1.0));
   evidenceCmd->add_option("--up", o->up, "Up axis (y or z) of objects whose labels do not say")
       ->check(CLI::IsMember({"y", "z"}));
-  evidenceCmd->add_option("--cache", o->cache, "Feature cache folder (default: none)");
+  evidenceCmd->add_option("--cache", o->cache,
+                          "Feature cache folder (default: each dataset's .sagrid-cache, where "
+                          "the descriptors are cached)");
   evidenceCmd->add_option("--category", o->gated,
                           "Category to gate (repeat; default: every category with models); the "
                           "others keep no threshold");

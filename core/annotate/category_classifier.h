@@ -41,6 +41,7 @@ struct CategorySample {
   double weight = 1.0;  // relative weight in training (few real objects among many generated)
   std::filesystem::path mesh;  // the object's mesh (the evidence gate runs the models on it)
   std::string up;              // its labels' up axis, empty = the caller's
+  std::filesystem::path featureCache;  // where its features were cached (the models' runs reuse it)
 };
 
 // The affordance-evidence gate after the classifier (core/annotate/category_evidence.h): an object

@@ -57,6 +57,7 @@ std::vector<CategorySample> collectCategorySamples(
       s.descriptor = categoryInputs(extractFeatures(entry.mesh, objectFeatures), topRelief);
       s.mesh = entry.mesh;
       s.up = labels.object.up;
+      s.featureCache = options.cacheDir;
       out.push_back(std::move(s));
     } catch (const Error& err) {
       logger()->warn("category data: skipping {}: {}", entry.id, err.what());

@@ -21,7 +21,8 @@ namespace sagrid {
 // labels.json up axis overrides features.up; objects without labels.json take the manifest's
 // category and features.up. Objects whose features fail are skipped and counted in `failed` (when
 // given). A sample's descriptor is categoryInputs(features, topRelief): with `topRelief` the
-// relief of the object's top follows the descriptor. Samples keep their mesh and labelled up axis.
+// relief of the object's top follows the descriptor. Samples keep their mesh, labelled up axis and
+// feature cache.
 std::vector<CategorySample> collectCategorySamples(
     const std::filesystem::path& dataDir, const FeatureOptions& features,
     const std::set<std::string>& excludeIds = {},

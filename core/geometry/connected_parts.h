@@ -36,6 +36,15 @@ bool congruentParts(const ConnectedPart& a, const ConnectedPart& b, float tolera
 // a panel, the grate or the cabinet), in the normalized frame (largest extent 1).
 constexpr float kSmallPartDiagonal = 0.2f;
 
+// Which part a point lies on, for the passes that reason about parts (repeated parts, part
+// ownership): the small part whose box, grown by `touchVoxels` voxels, holds it.
+struct PartContact {
+  float touchVoxels = 1.5f;
+  // Only parts up to this box diagonal (normalized units) can be one instance; parts of fewer than
+  // 8 triangles never are in the repeated-parts pass (decals, the pieces of a triangle soup).
+  float maxPartDiagonal = kSmallPartDiagonal;
+};
+
 // A part small enough to be one instance: box diagonal at most `maxDiagonal` (in the parts'
 // frame).
 bool isSmallPart(const ConnectedPart& part, float maxDiagonal);

@@ -42,7 +42,8 @@ void dropOnLargeParts(TypedPoints& typed, std::vector<std::optional<std::size_t>
     if (keep[i]) continue;
     // A point beside a small part that no point of its type lies on and no other type owns moves
     // onto it.
-    const auto free = partAt(typed.points[i].position, parts, reach, settings.maxPartDiagonal);
+    const auto free =
+        partAt(typed.points[i].position, parts, reach, settings.contact.maxPartDiagonal);
     const auto owned = free ? owners.find(*free) : owners.end();
     if (!free || std::find(partOf.begin(), partOf.end(), free) != partOf.end() ||
         (owned != owners.end() && owned->second.type != type))
@@ -59,12 +60,12 @@ std::vector<TypedPoints> ownParts(std::vector<TypedPoints> byType,
                                   const std::vector<ConnectedPart>& parts, int resolution,
                                   const PartOwnershipSettings& settings) {
   if (parts.empty() || resolution <= 0) return byType;
-  const float touch = settings.touchVoxels / static_cast<float>(resolution);
+  const float touch = settings.contact.touchVoxels / static_cast<float>(resolution);
   const float reach = settings.reachVoxels / static_cast<float>(resolution);
   PartOf partOf(byType.size());
   for (std::size_t t = 0; t < byType.size(); ++t) {
     for (const auto& point : byType[t].points)
-      partOf[t].push_back(partAt(point.position, parts, touch, settings.maxPartDiagonal));
+      partOf[t].push_back(partAt(point.position, parts, touch, settings.contact.maxPartDiagonal));
   }
   Owners owners;
   for (std::size_t t = 0; t < byType.size(); ++t)

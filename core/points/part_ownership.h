@@ -15,10 +15,8 @@
 namespace sagrid {
 
 struct PartOwnershipSettings {
-  // A point lies on the part whose box, grown by this many voxels, holds it (partAt).
-  float touchVoxels = 1.5f;
-  // Small parts (box diagonal, normalized units), as the repeated-parts pass's.
-  float maxPartDiagonal = kSmallPartDiagonal;
+  // The small part a point lies on (partAt), as the repeated-parts pass's.
+  PartContact contact;
   // Large parts: a panel, the grate, the cabinet (box diagonal, normalized units). Between the two
   // sizes lie a tap's turned handles whose boxes grow with the turn: neither.
   float largePartDiagonal = 0.4f;

@@ -53,7 +53,7 @@ PartsAtPoint partsAt(const Eigen::Vector3f& point, const std::vector<ConnectedPa
                      const PartCopies& copies, float touch, const RepeatedPartSettings& settings) {
   PartsAtPoint at;
   for (std::size_t p = 0; p < parts.size(); ++p) {
-    if (!isSmallPart(parts[p], settings.maxPartDiagonal) ||
+    if (!isSmallPart(parts[p], settings.contact.maxPartDiagonal) ||
         parts[p].box.exteriorDistance(point) > touch)
       continue;
     at.onSmallPart = true;
@@ -74,7 +74,7 @@ std::optional<std::size_t> nearbyPairedPart(const Eigen::Vector3f& point,
   float bestGap = reach;
   for (std::size_t p = 0; p < parts.size(); ++p) {
     const float gap = parts[p].box.exteriorDistance(point);
-    if (!isSmallPart(parts[p], settings.maxPartDiagonal) || gap > bestGap) continue;
+    if (!isSmallPart(parts[p], settings.contact.maxPartDiagonal) || gap > bestGap) continue;
     const float d = nearbyDistance(
         field, dense, voxelContaining(parts[p].centroid, field.resolution), kFieldRadius);
     if (!std::isfinite(d) || d > maxDistance || copies.of(p).size() != 1) continue;
@@ -105,7 +105,7 @@ std::vector<ExtractedPoint> completeRepeatedParts(const PredictedField& field,
     return points;
   const DenseField dense(field.voxels, field.resolution);
   const float voxel = 1.0f / static_cast<float>(field.resolution);
-  const float touch = settings.touchVoxels * voxel;
+  const float touch = settings.contact.touchVoxels * voxel;
   // Parts of one instance (the spokes of a cross handle) are copies of one another too: no point
   // within the count's suppression radius of another.
   const float separation =

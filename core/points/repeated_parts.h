@@ -16,12 +16,8 @@
 namespace sagrid {
 
 struct RepeatedPartSettings {
-  // A point belongs to the parts whose box, grown by this many voxels, holds it.
-  float touchVoxels = 1.5f;
-  // Only parts up to this box diagonal (normalized units) can be one instance: a knob, a handle,
-  // a burner cap, not a panel or the cabinet. Parts of fewer than 8 triangles never are (decals,
-  // the pieces of a triangle soup).
-  float maxPartDiagonal = kSmallPartDiagonal;
+  // The small parts a point belongs to: a knob, a handle, a burner cap, not a panel or the cabinet.
+  PartContact contact;
   // Copies: congruentParts within this relative tolerance (a knob turned to another setting
   // voxelizes and rounds a little differently).
   float congruenceTolerance = 0.05f;
