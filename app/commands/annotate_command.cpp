@@ -8,8 +8,8 @@
 #include <memory>
 #include <nlohmann/json.hpp>
 
-#include "app/cli_switch.h"
 #include "app/command_registry.h"
+#include "app/commands/pass_options_flags.h"
 #include "app/commands/up_axis_option.h"
 #include "app/progress_bar.h"
 #include "core/annotate/annotate_batch.h"
@@ -55,11 +55,8 @@ void setupAnnotate(CLI::App& root) {
   struct Options {
     std::string input, list, out, category, models, cache, up, instances = "auto", shard;
     std::vector<std::string> counts;
-    int symmetries = sagrid::AnnotateOptions{}.symmetries;
     bool force = false;
-    std::optional<bool> coarseToFine;
-    bool noPrintedMarks = false, noMirrorPairs = false, noAnchoredPairs = false,
-         noRepeatedParts = false, noSpoutOutlets = false, noPartOwnership = false;
+    sagrid::PassOptions passes;
     double timeLimit = 600;
   };
   auto o = std::make_shared<Options>();
@@ -86,35 +83,7 @@ void setupAnnotate(CLI::App& root) {
   cmd->add_option("--instances", o->instances,
                   "auto (local minima + suppression), single (argmin, as the paper)")
       ->check(CLI::IsMember({"auto", "single"}));
-  cmd->add_option("--symmetries", o->symmetries,
-                  "Test-time augmentation: average each field over this many symmetric copies "
-                  "of the object (z quarter turns x reflections; 1 = off, 8 = all, the default)")
-      ->check(CLI::Range(1, 8));
-  sagrid::app::addOptionalSwitch(
-      cmd, "--coarse-to-fine,!--no-coarse-to-fine", o->coarseToFine,
-      "Second pass on a crop around each model's points, so a small part on a large "
-      "object is located at its own scale (about 0.5 s more per model)"
-      " (default: as each model's card says, point_extraction.coarse_to_fine)");
-  cmd->add_flag("--no-printed-marks", o->noPrintedMarks,
-                "Switch the texture pass off: cooking zones and touch symbols printed on a "
-                "stove's top (glass hobs) are not taken as its heat-source and toggle points");
-  cmd->add_flag("--no-mirror-pairs", o->noMirrorPairs,
-                "Switch the mirror-pair pass off: on a mirror-symmetric object the automatic count "
-                "does not add the twin of a point whose neighbourhood has the same shape there");
-  cmd->add_flag("--no-anchored-pairs", o->noAnchoredPairs,
-                "Within the mirror-pair pass, do not pair a toggle button across the spout beside "
-                "it (a mixer's hot and cold handles)");
-  cmd->add_flag("--no-repeated-parts", o->noRepeatedParts,
-                "Switch the repeated-parts pass off: a point on a small part of the mesh does not "
-                "give a point on every copy of that part (a row of equal knobs), and a point at a "
-                "mixer's spout is not moved onto its pair of handles");
-  cmd->add_flag("--no-spout-outlets", o->noSpoutOutlets,
-                "Switch the spout-outlet pass off: a fluid-source point on a faucet's handle or "
-                "body is not moved to the outlet under the spout's tip near it");
-  cmd->add_flag("--no-part-ownership", o->noPartOwnership,
-                "Switch the part-ownership pass off: points of two types may share a small part "
-                "(a burner point on a knob), and knob and burner points on the grate or a panel "
-                "are kept");
+  sagrid::app::addPassOptions(*cmd, o->passes);
   cmd->add_option("--count", o->counts,
                   "Known instance count per type, e.g. --count heatsource=5 (k-means)");
   cmd->callback([o] {
@@ -127,14 +96,7 @@ void setupAnnotate(CLI::App& root) {
     settings.force = o->force;
     auto& options = settings.options;
     options.category = o->category;
-    options.symmetries = o->symmetries;
-    options.coarseToFine = o->coarseToFine;
-    options.printedMarks = !o->noPrintedMarks;
-    options.mirrorPairs = !o->noMirrorPairs;
-    options.anchoredPairs = !o->noAnchoredPairs;
-    options.repeatedParts = !o->noRepeatedParts;
-    options.spoutOutlets = !o->noSpoutOutlets;
-    options.partOwnership = !o->noPartOwnership;
+    static_cast<sagrid::PassOptions&>(options) = o->passes;
     // Models, their feature options and confidence map load in the worker process.
     options.features.cacheDir = o->cache;
     if (!o->up.empty()) options.features.up = sagrid::parseUpAxis(o->up);

@@ -7,9 +7,9 @@
 #include <iostream>
 #include <memory>
 
-#include "app/cli_switch.h"
 #include "app/command_registry.h"
 #include "app/commands/learning_curve_options.h"
+#include "app/commands/pass_options_flags.h"
 #include "app/progress_bar.h"
 #include "core/common/atomic_file.h"
 #include "core/common/error.h"
@@ -38,10 +38,7 @@ void setupEval(CLI::App& root) {
     std::vector<std::string> only, compare;
     double minutes = 2;
     int epochs = 0;
-    int symmetries = sagrid::EvaluationOptions{}.symmetries;
-    std::optional<bool> coarseToFine;
-    bool noPrintedMarks = false, noMirrorPairs = false, noAnchoredPairs = false,
-         noRepeatedParts = false, noSpoutOutlets = false, noPartOwnership = false;
+    sagrid::PassOptions passes;
     double nearWeight = sagrid::SweepOptions{}.nearWeight;
   };
   auto o = std::make_shared<Options>();
@@ -54,32 +51,10 @@ void setupEval(CLI::App& root) {
                   "OUT/compare.md + compare.json with every set side by side and each set's own "
                   "report in OUT/compare-<n>/");
   cmd->add_option("--cache", o->cache, "Feature cache (default DATA/.sagrid-cache)");
-  cmd->add_option("--symmetries", o->symmetries,
-                  "Test-time augmentation: average each field over this many symmetric copies "
-                  "of the object (z quarter turns x reflections; 1 = off, 8 = all, the default)")
-      ->check(CLI::Range(1, 8));
   cmd->add_option("--fit-confidence", o->fitConfidence,
                   "Fit the object confidence (P(right with one key)) on this data and write "
                   "DIR/confidence.json (put it beside the models to use it)");
-  sagrid::app::addOptionalSwitch(
-      cmd, "--coarse-to-fine,!--no-coarse-to-fine", o->coarseToFine,
-      "Second pass on a crop around each model's points (small parts on large objects)"
-      " (default: as each model's card says, point_extraction.coarse_to_fine)");
-  cmd->add_flag("--no-printed-marks", o->noPrintedMarks,
-                "Switch the texture pass off (printed zones and touch symbols), as annotate");
-  cmd->add_flag("--no-mirror-pairs", o->noMirrorPairs,
-                "Switch the mirror-pair pass of the automatic count off, as annotate");
-  cmd->add_flag("--no-anchored-pairs", o->noAnchoredPairs,
-                "Do not pair toggle buttons across the spout beside them, as annotate");
-  cmd->add_flag("--no-repeated-parts", o->noRepeatedParts,
-                "Switch the repeated-parts pass off (points on copies of a point's part, a "
-                "point moved onto a pair of handles), as annotate");
-  cmd->add_flag("--no-spout-outlets", o->noSpoutOutlets,
-                "Switch the spout-outlet pass off (fluid sources moved to the outlet under the "
-                "spout's tip), as annotate");
-  cmd->add_flag("--no-part-ownership", o->noPartOwnership,
-                "Switch the part-ownership pass off (one small part, one type; knob and burner "
-                "points on the grate or a panel), as annotate");
+  sagrid::app::addPassOptions(*cmd, o->passes);
   cmd->add_option("--fit-counts", o->fitCounts,
                   "Refit each model's automatic instance count on the fields of this data and "
                   "write a models folder DIR with the refitted cards (eval it with --models DIR)");
@@ -132,16 +107,9 @@ void setupEval(CLI::App& root) {
     options.features = models.featureOptions();
     options.features.cacheDir = o->cache;
     options.onProgress = progress;
-    options.symmetries = o->symmetries;
     options.confidence = sagrid::readConfidenceCalibration(modelsDir);
     options.keepFields = !o->fitCounts.empty();
-    options.coarseToFine = o->coarseToFine;
-    options.printedMarks = !o->noPrintedMarks;
-    options.mirrorPairs = !o->noMirrorPairs;
-    options.anchoredPairs = !o->noAnchoredPairs;
-    options.repeatedParts = !o->noRepeatedParts;
-    options.spoutOutlets = !o->noSpoutOutlets;
-    options.partOwnership = !o->noPartOwnership;
+    static_cast<sagrid::PassOptions&>(options) = o->passes;
     const auto report = sagrid::evaluateModels(models, options);
     if (!o->fitCounts.empty()) {
       const auto fits =

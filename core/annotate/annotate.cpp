@@ -3,12 +3,7 @@
 #include <chrono>
 
 #include "core/annotate/category_evidence.h"
-#include "core/annotate/coarse_to_fine.h"
-#include "core/annotate/mirror_pairs_pass.h"
-#include "core/annotate/part_ownership_pass.h"
-#include "core/annotate/printed_marks_pass.h"
-#include "core/annotate/repeated_parts_pass.h"
-#include "core/annotate/spout_outlet_pass.h"
+#include "core/annotate/point_passes.h"
 #include "core/annotate/symmetry_averaging.h"
 #include "core/common/error.h"
 #include "core/features/feature_grid.h"
@@ -159,41 +154,14 @@ AnnotationResult annotateMeshFile(const fs::path& meshFile, const std::string& i
     return r;
   }
   const auto categoryModels = models.forCategory(r.category);
-  const PrintedMarks printed =
-      options.printedMarks ? printedMarksOf(mesh, r.category) : PrintedMarks{};
-  const std::vector<ConnectedPart> parts = options.repeatedParts || options.partOwnership
-                                               ? normalizedParts(mesh, features.normalization)
-                                               : std::vector<ConnectedPart>{};
-  for (std::size_t m = 0; m < categoryModels.size(); ++m) {
-    const auto* model = categoryModels[m];
-    stage(0.7f + 0.3f * static_cast<float>(m) / static_cast<float>(categoryModels.size()),
-          model->card().name);
-    const auto count = options.counts.find(model->card().type);
-    InstanceMode mode = options.mode;
-    int n = 1;
-    if (count != options.counts.end())
-      mode = InstanceMode::Count, n = count->second;
-    else if (mode == InstanceMode::Count)
-      mode = InstanceMode::Auto;
-    ModelPrediction p = predictWithModel(*model, features, scene, mesh.fileUp, mode, n, nullptr,
-                                         options.symmetries);
-    if (options.coarseToFine.value_or(model->card().extraction.coarseToFine))
-      p = refineInCrop(*model, p, mesh, features, scene, featureOptions, mode, n,
-                       options.symmetries);
-    if (options.mirrorPairs && mode == InstanceMode::Auto)
-      applyMirrorPairs(p, features, scene, mesh.fileUp, model->card().extraction,
-                       options.anchoredPairs ? mirrorAnchors(r.predictions, p.type)
-                                             : std::vector<Eigen::Vector3f>{});
-    if (options.repeatedParts && mode == InstanceMode::Auto)
-      applyRepeatedParts(p, parts, features, scene, mesh.fileUp, model->card().extraction);
-    if (options.spoutOutlets && mode != InstanceMode::Single)
-      applySpoutOutlets(p, features, scene, mesh.fileUp, model->card().extraction);
-    applyPrintedMarks(*model, p, printedMarksFor(printed, r.category, p.type), features, scene,
-                      mesh.fileUp, mode, n);
-    r.predictions.push_back(std::move(p));
-  }
-  if (options.partOwnership && options.mode == InstanceMode::Auto && options.counts.empty())
-    applyPartOwnership(r.predictions, parts, features, scene, mesh.fileUp);
+  CategoryPoints points = predictCategoryPoints(
+      categoryModels, r.category, {mesh, features, scene, featureOptions}, options, options.mode,
+      options.counts, [&](std::size_t m) {
+        stage(0.7f + 0.3f * static_cast<float>(m) / static_cast<float>(categoryModels.size()),
+              categoryModels[m]->card().name);
+      });
+  r.predictions = std::move(points.predictions);
+  const PrintedMarks& printed = points.printed;
   for (const auto& p : r.predictions)
     for (std::size_t i = 0; i < p.points.size(); ++i) {
       AffordancePoint a;

@@ -6,12 +6,7 @@
 #include <sstream>
 
 #include "core/annotate/annotate.h"
-#include "core/annotate/coarse_to_fine.h"
-#include "core/annotate/mirror_pairs_pass.h"
-#include "core/annotate/part_ownership_pass.h"
-#include "core/annotate/printed_marks_pass.h"
-#include "core/annotate/repeated_parts_pass.h"
-#include "core/annotate/spout_outlet_pass.h"
+#include "core/annotate/point_passes.h"
 #include "core/common/atomic_file.h"
 #include "core/common/error.h"
 #include "core/common/log.h"
@@ -91,37 +86,10 @@ EvaluationReport evaluateModels(const ModelSet& models, const EvaluationOptions&
       // Every other extraction mode below reads the same field.
       const auto categoryModels = models.forCategory(category);
       const auto t = Clock::now();
-      const PrintedMarks printed =
-          options.printedMarks ? printedMarksOf(mesh, category) : PrintedMarks{};
-      const std::vector<ConnectedPart> parts = options.repeatedParts || options.partOwnership
-                                                   ? normalizedParts(mesh, grid.normalization)
-                                                   : std::vector<ConnectedPart>{};
-      std::vector<ModelPrediction> autoPredictions;
-      for (const auto* model : categoryModels) {
-        autoPredictions.push_back(predictionFromField(*model,
-                                                      predictField(*model, grid, options.symmetries),
-                                                      grid, scene, mesh.fileUp, InstanceMode::Auto));
-        if (options.coarseToFine.value_or(model->card().extraction.coarseToFine))
-          autoPredictions.back() =
-              refineInCrop(*model, autoPredictions.back(), mesh, grid, scene, objectFeatures,
-                           InstanceMode::Auto, 1, options.symmetries);
-        if (options.mirrorPairs)
-          applyMirrorPairs(
-              autoPredictions.back(), grid, scene, mesh.fileUp, model->card().extraction,
-              options.anchoredPairs ? mirrorAnchors(autoPredictions, model->card().type)
-                                    : std::vector<Eigen::Vector3f>{});
-        if (options.repeatedParts)
-          applyRepeatedParts(autoPredictions.back(), parts, grid, scene, mesh.fileUp,
-                             model->card().extraction);
-        if (options.spoutOutlets)
-          applySpoutOutlets(autoPredictions.back(), grid, scene, mesh.fileUp,
-                            model->card().extraction);
-        applyPrintedMarks(*model, autoPredictions.back(),
-                          printedMarksFor(printed, category, model->card().type), grid, scene,
-                          mesh.fileUp, InstanceMode::Auto);
-      }
-      if (options.partOwnership)
-        applyPartOwnership(autoPredictions, parts, grid, scene, mesh.fileUp);
+      const std::vector<ModelPrediction> autoPredictions =
+          predictCategoryPoints(categoryModels, category, {mesh, grid, scene, objectFeatures},
+                                options, InstanceMode::Auto)
+              .predictions;
       modelSeconds += std::chrono::duration<double>(Clock::now() - t).count();
       auto surfaceOf = [](const ModelPrediction& p) {
         std::vector<Eigen::Vector3f> out;

@@ -15,25 +15,20 @@
 
 #include "core/annotate/model_set.h"
 #include "core/annotate/object_confidence.h"
+#include "core/annotate/pass_options.h"
 #include "core/eval/curator_effort.h"
 #include "core/eval/metrics.h"
 #include "core/eval/reliability.h"
 
 namespace sagrid {
 
-struct EvaluationOptions {
+// The passes after each model are annotate's (PassOptions), so the report measures what annotate
+// writes.
+struct EvaluationOptions : PassOptions {
   std::filesystem::path dataDir;  // a dataset; when it has a val/ split, that is used
   // Where dataDir's manifest may point (readDataset); empty: inside dataDir only.
   std::filesystem::path referenceRoot;
-  FeatureOptions features;        // from the models; cacheDir empty = DATA/.sagrid-cache
-  int symmetries = 8;             // test-time augmentation, as annotate (AnnotateOptions)
-  std::optional<bool> coarseToFine;  // second pass on a crop, as annotate (AnnotateOptions)
-  bool printedMarks = true;          // the texture pass, as annotate (AnnotateOptions)
-  bool mirrorPairs = true;           // the mirror-pair pass, as annotate (AnnotateOptions)
-  bool anchoredPairs = true;         // its pairs across the spouts, as annotate (AnnotateOptions)
-  bool repeatedParts = true;         // the repeated-parts pass, as annotate (AnnotateOptions)
-  bool spoutOutlets = true;          // the spout-outlet pass, as annotate (AnnotateOptions)
-  bool partOwnership = true;         // the part-ownership pass, as annotate (AnnotateOptions)
+  FeatureOptions features;           // from the models; cacheDir empty = DATA/.sagrid-cache
   ConfidenceCalibration confidence;  // object confidence map (the models folder's, or unfitted)
   std::function<void(std::size_t, std::size_t, const std::string&)> onProgress;
   // Keep every model's field and ground truth (normalized frame) in the report, for refitting the

@@ -81,7 +81,7 @@ void TrainingWorker::run(TrainingRequest request) {
     for (std::size_t t = 0; t < types.size(); ++t) {
       DatasetTrainingOptions options;
       options.modelName = request.category + "." + types[t];
-      options.datasets.push_back({request.dataset, 1.0, "data", {}});
+      options.datasets.push_back({request.dataset, 1.0, "data", {}, {}});
       // The same fine-tune as `sagrid train --init DIR` (replay weighted 1:1, fine-tune rate).
       if (!request.initDir.empty() &&
           fs::is_regular_file(request.initDir / (options.modelName + ".json"))) {

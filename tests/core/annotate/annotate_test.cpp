@@ -9,10 +9,12 @@
 #include "core/annotate/category_evidence.h"
 #include "core/common/error.h"
 #include "core/dataset/dataset.h"
+#include "core/eval/evaluation.h"
 #include "core/features/feature_grid.h"
 #include "core/generate/dataset_generator.h"
 #include "core/geometry/surface_scene.h"
 #include "core/mesh/mesh_import.h"
+#include "support/category_samples.h"
 #include "support/test_paths.h"
 #include "support/untrained_models.h"
 
@@ -72,6 +74,40 @@ TEST_F(AnnotateTest, PredictsEveryModelOfTheRetrievedCategoryOnTheSurface) {
     ASSERT_TRUE(a.normal.has_value());
     EXPECT_NEAR(a.normal->norm(), 1.0f, 1e-4f);
   }
+}
+
+TEST_F(AnnotateTest, EvalMeasuresThePointsAnnotateWritesWithTheSamePasses) {
+  // Both run core/annotate/point_passes: with the same (non-default) pass options, eval's
+  // automatic-count points are annotate's, point for point.
+  PassOptions passes;
+  passes.symmetries = 2;
+  passes.mirrorPairs = false;
+  passes.coarseToFine = true;
+  static_cast<PassOptions&>(annotate) = passes;
+  annotate.category = "stove";
+  const AnnotationResult r =
+      annotateMeshFile(entries[0].mesh, "stove0", *set, annotate, dir / "out" / "stove0");
+  EvaluationOptions eval;
+  static_cast<PassOptions&>(eval) = passes;
+  eval.dataDir = dir / "data";
+  eval.features = annotate.features;
+  const EvaluationReport report = evaluateModels(*set, eval);
+  std::size_t compared = 0;
+  for (const auto& object : report.perObject) {
+    if (object.at("category") != "stove") continue;
+    for (const auto& [model, byMethod] : object.at("predictions").items()) {
+      const std::string type = model.substr(model.find('.') + 1);
+      std::vector<Eigen::Vector3f> written;
+      for (const auto& a : r.labels.affordances)
+        if (a.type == type) written.push_back(a.position);
+      const auto& measured = byMethod.at("SAGrid auto count");
+      ASSERT_EQ(measured.size(), written.size()) << model;
+      for (std::size_t i = 0; i < written.size(); ++i, ++compared)
+        for (int k = 0; k < 3; ++k)
+          EXPECT_NEAR(measured[i][k].get<float>(), written[i][k], 1e-5f) << model << " point " << i;
+    }
+  }
+  EXPECT_GT(compared, 0u);
 }
 
 TEST_F(AnnotateTest, WritesTheObjectConfidenceOfTheLeastSurePoint) {
@@ -167,11 +203,13 @@ TEST_F(AnnotateTest, TheEvidenceGateRejectsWhatTheCategorysModelsFindTooLittleOf
   // A classifier that files the stove under "stove" (its own descriptor), then the gate.
   std::vector<CategorySample> samples;
   for (int i = 0; i < 3; ++i) {
-    samples.push_back({"stove" + std::to_string(i), "stove", "", stoveFeatures.descriptor});
-    samples.push_back({"sink" + std::to_string(i), "sink", "", sinkFeatures.descriptor});
+    samples.push_back(
+        test::categorySample("stove" + std::to_string(i), "stove", "", stoveFeatures.descriptor));
+    samples.push_back(
+        test::categorySample("sink" + std::to_string(i), "sink", "", sinkFeatures.descriptor));
     std::vector<float> other = stoveFeatures.descriptor;
     for (float& v : other) v = -v + 0.1f * static_cast<float>(i);
-    samples.push_back({"none" + std::to_string(i), "none", "", other});
+    samples.push_back(test::categorySample("none" + std::to_string(i), "none", "", other));
   }
   auto classifier = CategoryClassifier::train(samples, {});
   classifier.featureBackend = stoveFeatures.backend;

@@ -17,6 +17,7 @@
 #include "core/generate/dataset_generator.h"
 #include "core/grid/top_relief.h"
 #include "core/mesh/mesh_export.h"
+#include "support/category_samples.h"
 #include "support/test_paths.h"
 #include "support/untrained_models.h"
 
@@ -146,8 +147,8 @@ TEST(CategoryClassifier, TheTopReliefIsStoredAndReadWhenDeciding) {
       for (float& v : descriptor) v = noise(rng);
       auto relief = topRelief(*voxels, 64);
       for (float& v : relief) v += noise(rng);
-      samples.push_back({category + std::to_string(i), category, "test",
-                         categoryInputs(descriptor, relief, true)});
+      samples.push_back(test::categorySample(category + std::to_string(i), category, "test",
+                                             categoryInputs(descriptor, relief, true)));
     }
   CategoryTrainingOptions options;
   options.topRelief = true;
@@ -212,7 +213,8 @@ TEST(CategoryClassifier, RejectsGeneratedDistractors) {
   for (const auto& [category, seed] : sets)
     for (int i = 0; i < 40; ++i) {
       const auto o = gen::makeObject(category, seed, i, gen::MeshFormat::Obj);
-      (i < 30 ? train : test).push_back({o.id, category, category, descriptorOf(o)});
+      (i < 30 ? train : test)
+          .push_back(test::categorySample(o.id, category, category, descriptorOf(o)));
     }
   CategoryTrainingOptions options;
   options.l2 = 0.1;  // 90 objects for 64 dimensions: keep the weights small
@@ -237,10 +239,11 @@ TEST(CategoryEvaluation, ListsTheObjectsDecidedWrongly) {
     r.category = r.rejected ? std::string(kRejectedCategory) : r.best;
     return r;
   };
-  const std::vector<CategorySample> samples = {{"gas_stove", "stove", "real", {0.9f}},
-                                               {"camping_stove", "stove", "real", {0.2f}},
-                                               {"oven", "none", "real", {0.7f}},
-                                               {"fridge", "none", "real", {0.1f}}};
+  const std::vector<CategorySample> samples = {
+      test::categorySample("gas_stove", "stove", "real", {0.9f}),
+      test::categorySample("camping_stove", "stove", "real", {0.2f}),
+      test::categorySample("oven", "none", "real", {0.7f}),
+      test::categorySample("fridge", "none", "real", {0.1f})};
   const auto ev = evaluateCategories(decide, samples);
   ASSERT_EQ(ev.misses.size(), 2u);
   EXPECT_EQ(ev.misses[0].id, "camping_stove");
@@ -269,8 +272,11 @@ TEST(CategoryClassifier, AnnotateWritesNoneAndNoPointsForARejectedObject) {
   ModelSet set(std::move(models));
   std::vector<CategorySample> samples;
   for (int i = 0; i < 6; ++i)
-    samples.push_back({"s" + std::to_string(i), i % 3 == 0 ? "stove" : i % 3 == 1 ? "sink" : "none",
-                       "", std::vector<float>(64, static_cast<float>(i))});
+    samples.push_back(test::categorySample("s" + std::to_string(i),
+                                           i % 3 == 0   ? "stove"
+                                           : i % 3 == 1 ? "sink"
+                                                        : "none",
+                                           "", std::vector<float>(64, static_cast<float>(i))));
   auto classifier = CategoryClassifier::train(samples, {});
   classifier.featureBackend = "embedded";
   classifier.setThreshold(1.01);

@@ -9,6 +9,7 @@
 
 #include "core/common/atomic_file.h"
 #include "core/common/error.h"
+#include "support/category_samples.h"
 #include "support/test_paths.h"
 #include "support/untrained_models.h"
 
@@ -77,7 +78,8 @@ CategoryClassifier tinyClassifier() {
   std::vector<CategorySample> samples;
   for (int i = 0; i < 6; ++i) {
     const char* category = i % 3 == 0 ? "stove" : i % 3 == 1 ? "sink" : "none";
-    samples.push_back({"s" + std::to_string(i), category, "", {float(i % 3), float(i), 1.0f}});
+    samples.push_back(test::categorySample("s" + std::to_string(i), category, "",
+                                           {float(i % 3), float(i), 1.0f}));
   }
   auto c = CategoryClassifier::train(samples, {});
   c.featureBackend = "embedded";

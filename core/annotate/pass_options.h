@@ -1,0 +1,41 @@
+// What runs on an object after each model's network, and which steps of it are on: test-time
+// augmentation, the coarse-to-fine crop and the passes of the automatic count. `annotate` and
+// `eval` take the same options and run the same sequence (core/annotate/point_passes.h), so an
+// evaluation measures exactly what annotate writes.
+#pragma once
+
+#include <optional>
+
+namespace sagrid {
+
+struct PassOptions {
+  // Test-time augmentation: copies averaged per model (1 = off, 8 = all). 8 by default: on the
+  // generated bench val split the paper error fell 4.55 -> 4.10 cm, on real-val 13.7 -> 9.4 cm,
+  // real-dev unchanged (4.65 / 4.72 cm), for ~0.1-0.4 s more per object with two models.
+  int symmetries = 8;
+  // Coarse-to-fine: a second pass on a crop around each model's points (core/annotate/
+  // coarse_to_fine.h), for small parts on large objects. Unset: as each model's card says
+  // (point_extraction.coarse_to_fine); true / false: for every model.
+  std::optional<bool> coarseToFine;
+  // The texture pass (core/annotate/printed_marks_pass.h): zones and touch symbols printed on a
+  // stove's top become its heat-source and toggle points.
+  bool printedMarks = true;
+  // The mirror-pair pass of the automatic count (core/annotate/mirror_pairs_pass.h): on a
+  // mirror-symmetric object, the twin of a point whose neighbourhood has the same shape there.
+  bool mirrorPairs = true;
+  // Within it, toggle buttons also paired across the spout beside them (a mixer's hot and cold
+  // handles; completeAnchoredPairs).
+  bool anchoredPairs = true;
+  // The repeated-parts pass (core/annotate/repeated_parts_pass.h): a point on every copy of the
+  // part a point lies on (a row of equal knobs).
+  bool repeatedParts = true;
+  // The spout-outlet pass (core/annotate/spout_outlet_pass.h): a fluid-source point on no
+  // overhang moves to the outlet under the spout's tip near it.
+  bool spoutOutlets = true;
+  // The part-ownership pass (core/annotate/part_ownership_pass.h): one small part, one type (a
+  // burner point on a knob goes), and knob points on the grate or the cabinet go when other knob
+  // points lie on parts of their own.
+  bool partOwnership = true;
+};
+
+}  // namespace sagrid

@@ -1,0 +1,60 @@
+#include "core/annotate/point_passes.h"
+
+#include "core/annotate/coarse_to_fine.h"
+#include "core/annotate/mirror_pairs_pass.h"
+#include "core/annotate/part_ownership_pass.h"
+#include "core/annotate/printed_marks_pass.h"
+#include "core/annotate/repeated_parts_pass.h"
+#include "core/annotate/spout_outlet_pass.h"
+#include "core/geometry/surface_scene.h"
+#include "core/mesh/mesh.h"
+
+namespace sagrid {
+
+CategoryPoints predictCategoryPoints(const std::vector<const model::AffordanceModel*>& models,
+                                     const std::string& category, const ObjectForPasses& object,
+                                     const PassOptions& passes, InstanceMode mode,
+                                     const std::map<std::string, int>& counts,
+                                     const std::function<void(std::size_t)>& beforeModel) {
+  const Mesh& mesh = object.mesh;
+  const FeatureGrid& features = object.features;
+  const SurfaceScene& scene = object.scene;
+  CategoryPoints out;
+  if (passes.printedMarks) out.printed = printedMarksOf(mesh, category);
+  const std::vector<ConnectedPart> parts = passes.repeatedParts || passes.partOwnership
+                                               ? normalizedParts(mesh, features.normalization)
+                                               : std::vector<ConnectedPart>{};
+  for (std::size_t m = 0; m < models.size(); ++m) {
+    if (beforeModel) beforeModel(m);
+    const auto& model = *models[m];
+    const auto& card = model.card();
+    const auto count = counts.find(card.type);
+    InstanceMode modelMode = mode;
+    int n = 1;
+    if (count != counts.end())
+      modelMode = InstanceMode::Count, n = count->second;
+    else if (modelMode == InstanceMode::Count)
+      modelMode = InstanceMode::Auto;
+    ModelPrediction p = predictWithModel(model, features, scene, mesh.fileUp, modelMode, n, nullptr,
+                                         passes.symmetries);
+    if (passes.coarseToFine.value_or(card.extraction.coarseToFine))
+      p = refineInCrop(model, p, mesh, features, scene, object.featureOptions, modelMode, n,
+                       passes.symmetries);
+    if (passes.mirrorPairs && modelMode == InstanceMode::Auto)
+      applyMirrorPairs(p, features, scene, mesh.fileUp, card.extraction,
+                       passes.anchoredPairs ? mirrorAnchors(out.predictions, p.type)
+                                            : std::vector<Eigen::Vector3f>{});
+    if (passes.repeatedParts && modelMode == InstanceMode::Auto)
+      applyRepeatedParts(p, parts, features, scene, mesh.fileUp, card.extraction);
+    if (passes.spoutOutlets && modelMode != InstanceMode::Single)
+      applySpoutOutlets(p, features, scene, mesh.fileUp, card.extraction);
+    applyPrintedMarks(model, p, printedMarksFor(out.printed, category, p.type), features, scene,
+                      mesh.fileUp, modelMode, n);
+    out.predictions.push_back(std::move(p));
+  }
+  if (passes.partOwnership && mode == InstanceMode::Auto && counts.empty())
+    applyPartOwnership(out.predictions, parts, features, scene, mesh.fileUp);
+  return out;
+}
+
+}  // namespace sagrid

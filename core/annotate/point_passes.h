@@ -1,0 +1,45 @@
+// The sequence that turns an object's features into the points of every model of its category:
+// per model the field (averaged over symmetric copies), the instances, the coarse-to-fine crop,
+// then the automatic count's passes (mirror pairs, repeated parts, spout outlets), the printed
+// marks, and across the models the part-ownership pass. `annotate` and `eval` both call it, so
+// what eval measures is what annotate writes; PassOptions switches the steps off one by one.
+#pragma once
+
+#include <functional>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "core/annotate/annotate.h"
+#include "core/features/printed_marks.h"
+
+namespace sagrid {
+
+struct Mesh;
+
+// The object as the models and passes see it: the mesh (file frame, z-up copy used for the
+// passes), its features and surface, and the feature options the crop pass voxelizes with.
+struct ObjectForPasses {
+  const Mesh& mesh;
+  const FeatureGrid& features;
+  const SurfaceScene& scene;
+  const FeatureOptions& featureOptions;
+};
+
+struct CategoryPoints {
+  std::vector<ModelPrediction> predictions;  // one per model, in the models' order
+  PrintedMarks printed;                      // what the texture pass found (empty when off)
+};
+
+// Runs `models` (one category's, `category`) on `object`. `mode` is the instance mode; a type in
+// `counts` takes InstanceMode::Count with its count (k-means), and Count without one falls back
+// to Auto. The automatic count's passes run on Auto models only (spout outlets also with a known
+// count), part ownership only when every model is Auto. `beforeModel(i)` is called before model
+// i runs (progress, cancellation), when given.
+CategoryPoints predictCategoryPoints(const std::vector<const model::AffordanceModel*>& models,
+                                     const std::string& category, const ObjectForPasses& object,
+                                     const PassOptions& passes, InstanceMode mode,
+                                     const std::map<std::string, int>& counts = {},
+                                     const std::function<void(std::size_t)>& beforeModel = {});
+
+}  // namespace sagrid
