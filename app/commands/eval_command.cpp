@@ -33,8 +33,9 @@ void setupEval(CLI::App& root) {
       "each "
       "architecture on DATA/train and compares them on DATA/val (Table I form).");
   struct Options {
-    std::string data, models, out = "eval", cache, sweep, mode = "sparse", fitConfidence, fitCounts,
-                              countObjective = "count";
+    std::vector<std::string> data;
+    std::string models, out = "eval", cache, sweep, mode = "sparse", fitConfidence, fitCounts,
+                        countObjective = "count";
     std::vector<std::string> only, compare;
     double minutes = 2;
     int epochs = 0;
@@ -42,7 +43,10 @@ void setupEval(CLI::App& root) {
     double nearWeight = sagrid::SweepOptions{}.nearWeight;
   };
   auto o = std::make_shared<Options>();
-  cmd->add_option("--data", o->data, "Labelled dataset (manifest.jsonl or object folders)")
+  cmd->add_option("--data", o->data,
+                  "Labelled dataset (manifest.jsonl or object folders; its val/ split when it has "
+                  "one); repeat it to evaluate several together (one report over their union, "
+                  "e.g. --fit-confidence on generated and real objects)")
       ->required();
   cmd->add_option("--models", o->models, "Model folder (default resources/models)");
   cmd->add_option("--out", o->out, "Report folder (default eval)");
@@ -74,8 +78,15 @@ void setupEval(CLI::App& root) {
       ->check(CLI::IsMember({"sparse", "dense"}));
   const auto learningCurve = sagrid::app::addLearningCurveOptions(*cmd);
   cmd->callback([o, learningCurve, cmd] {
-    if (sagrid::app::runLearningCurveIfAsked(*learningCurve, *cmd, o->data, o->out, o->cache,
-                                             o->minutes, o->epochs))
+    auto oneDataset = [&](const char* what) {
+      if (o->data.size() != 1)
+        throw sagrid::InvalidArgument(std::string(what) + " takes one --data, got " +
+                                      std::to_string(o->data.size()));
+      return o->data.front();
+    };
+    if (learningCurve->enabled) oneDataset("--learning-curve");
+    if (sagrid::app::runLearningCurveIfAsked(*learningCurve, *cmd, o->data.front(), o->out,
+                                             o->cache, o->minutes, o->epochs))
       return;
     std::unique_ptr<sagrid::app::ProgressBar> bar;
     auto progress = [&](std::size_t done, std::size_t total, const std::string& id) {
@@ -85,7 +96,7 @@ void setupEval(CLI::App& root) {
     };
     if (!o->sweep.empty()) {
       sagrid::SweepOptions s;
-      s.dataDir = o->data;
+      s.dataDir = oneDataset("--sweep");
       s.outDir = o->out;
       s.architectures = sagrid::splitArchitectures(o->sweep);
       if (!o->only.empty()) s.modelNames = o->only;
@@ -103,7 +114,8 @@ void setupEval(CLI::App& root) {
     const fs::path modelsDir = !o->models.empty() ? fs::path(o->models) : sagrid::defaultModelsDir();
     const auto models = sagrid::ModelSet::load(modelsDir);
     sagrid::EvaluationOptions options;
-    options.dataDir = o->data;
+    options.dataDir = o->data.front();
+    options.moreData.assign(o->data.begin() + 1, o->data.end());
     options.features = models.featureOptions();
     options.features.cacheDir = o->cache;
     options.onProgress = progress;
@@ -111,18 +123,19 @@ void setupEval(CLI::App& root) {
     options.keepFields = !o->fitCounts.empty();
     static_cast<sagrid::PassOptions&>(options) = o->passes;
     const auto report = sagrid::evaluateModels(models, options);
+    const std::string dataText = sagrid::evaluatedData(report);
     if (!o->fitCounts.empty()) {
       const auto fits =
           sagrid::fitCounts(models, report,
                             o->countObjective == "edits" ? sagrid::CountObjective::CuratorEdits
                                                          : sagrid::CountObjective::RightCount);
       sagrid::writeModelsWithFittedCounts(modelsDir, fits, o->fitCounts);
-      std::fprintf(stderr, "counts: refitted on %s -> %s\n%s", o->data.c_str(),
+      std::fprintf(stderr, "counts: refitted on %s -> %s\n%s", dataText.c_str(),
                    o->fitCounts.c_str(), sagrid::countFitMarkdown(fits).c_str());
     }
     if (!o->fitConfidence.empty()) {
       auto fit = sagrid::fitConfidence(report.confidenceSignal, report.oneKey);
-      fit.fittedOn = o->data;
+      fit.fittedOn = dataText;
       fs::create_directories(o->fitConfidence);
       sagrid::writeConfidenceCalibration(o->fitConfidence, fit);
       std::fprintf(stderr, "confidence: fitted on %zu objects (%.0f %% right with one key) -> %s\n",

@@ -45,13 +45,25 @@ std::string paperColumnName(const std::string& name) {
 
 EvaluationReport evaluateModels(const ModelSet& models, const EvaluationOptions& options) {
   EvaluationReport report;
-  report.dataDir =
-      fs::is_directory(options.dataDir / "val") ? options.dataDir / "val" : options.dataDir;
-  const auto entries = readDataset(report.dataDir, options.referenceRoot);
-  if (entries.empty())
-    throw InvalidArgument("dataset " + report.dataDir.string() + " has no objects");
-  FeatureOptions features = options.features;
-  if (features.cacheDir.empty()) features.cacheDir = options.dataDir / ".sagrid-cache";
+  // Each dataset's val/ split when it has one; its objects read their features from --cache, else
+  // from the dataset's own cache.
+  std::vector<DatasetEntry> entries;
+  std::vector<fs::path> cacheOf;
+  std::vector<fs::path> dataDirs = {options.dataDir};
+  dataDirs.insert(dataDirs.end(), options.moreData.begin(), options.moreData.end());
+  for (const fs::path& dir : dataDirs) {
+    const fs::path used = fs::is_directory(dir / "val") ? dir / "val" : dir;
+    if (report.dataDir.empty())
+      report.dataDir = used;
+    else
+      report.moreDataDirs.push_back(used);
+    const auto read = readDataset(used, options.referenceRoot);
+    if (read.empty()) throw InvalidArgument("dataset " + used.string() + " has no objects");
+    entries.insert(entries.end(), read.begin(), read.end());
+    cacheOf.insert(
+        cacheOf.end(), read.size(),
+        options.features.cacheDir.empty() ? dir / ".sagrid-cache" : options.features.cacheDir);
+  }
 
   for (const char* name : kPaperOrder)
     for (const auto& m : models.models())
@@ -73,7 +85,8 @@ EvaluationReport evaluateModels(const ModelSet& models, const EvaluationOptions&
       const ObjectLabels labels = readLabels(entry.labels);
       const std::string category = entry.category.empty() ? labels.object.category : entry.category;
       if (std::find(categories.begin(), categories.end(), category) == categories.end()) continue;
-      FeatureOptions objectFeatures = features;
+      FeatureOptions objectFeatures = options.features;
+      objectFeatures.cacheDir = cacheOf[e];
       const UpAxis up = upAxisOrZ(labels.object.up);
       objectFeatures.up = up;
       const Mesh mesh = importMesh(entry.mesh, ImportOptions(up));
@@ -171,7 +184,7 @@ EvaluationReport evaluateModels(const ModelSet& models, const EvaluationOptions&
   }
   if (options.onProgress) options.onProgress(entries.size(), entries.size(), "");
   if (report.objects == 0)
-    throw InvalidArgument("dataset " + report.dataDir.string() +
+    throw InvalidArgument("dataset " + evaluatedData(report) +
                           " has no object of a category the models know");
   report.modelMilliseconds = 1000.0 * modelSeconds / report.objects;
   report.meanOccupiedVoxels /= static_cast<double>(report.objects);
@@ -221,9 +234,15 @@ std::string perObjectMarkdown(const EvaluationReport& r) {
 }
 }  // namespace
 
+std::string evaluatedData(const EvaluationReport& report) {
+  std::string out = report.dataDir.string();
+  for (const auto& dir : report.moreDataDirs) out += " + " + dir.string();
+  return out;
+}
+
 std::string evaluationMarkdown(const EvaluationReport& r) {
   std::ostringstream md;
-  md << "# SAGrid evaluation\n\nData: `" << r.dataDir.string() << "` — " << r.objects << " objects";
+  md << "# SAGrid evaluation\n\nData: `" << evaluatedData(r) << "` — " << r.objects << " objects";
   if (r.failed) md << " (" << r.failed << " failed)";
   md << ". Models + point extraction: " << reportCell(r.modelMilliseconds, "%.0f")
      << " ms per object (features cached).\n\n";
@@ -283,6 +302,10 @@ std::string evaluationMarkdown(const EvaluationReport& r) {
 nlohmann::json evaluationJson(const EvaluationReport& r) {
   nlohmann::json j;
   j["data"] = r.dataDir.string();
+  if (!r.moreDataDirs.empty()) {
+    j["more_data"] = nlohmann::json::array();
+    for (const auto& dir : r.moreDataDirs) j["more_data"].push_back(dir.string());
+  }
   j["objects"] = r.objects;
   j["failed"] = r.failed;
   j["model_ms_per_object"] = r.modelMilliseconds;

@@ -26,6 +26,9 @@ namespace sagrid {
 // writes.
 struct EvaluationOptions : PassOptions {
   std::filesystem::path dataDir;  // a dataset; when it has a val/ split, that is used
+  // Further datasets (each its val/ split when it has one): the report covers the union, e.g. to
+  // fit the object confidence or the counts on generated and real objects together.
+  std::vector<std::filesystem::path> moreData;
   // Where dataDir's manifest may point (readDataset); empty: inside dataDir only.
   std::filesystem::path referenceRoot;
   FeatureOptions features;           // from the models; cacheDir empty = DATA/.sagrid-cache
@@ -50,7 +53,8 @@ struct MethodMetrics {
 };
 
 struct EvaluationReport {
-  std::filesystem::path dataDir;
+  std::filesystem::path dataDir;                    // the data evaluated (a val/ split when used)
+  std::vector<std::filesystem::path> moreDataDirs;  // with EvaluationOptions::moreData
   std::size_t objects = 0;              // evaluated (of a category with models)
   std::size_t failed = 0;               // could not be evaluated (import/features), logged
   std::vector<std::string> modelNames;  // columns, in the paper's order where known
@@ -71,6 +75,9 @@ struct EvaluationReport {
 };
 
 EvaluationReport evaluateModels(const ModelSet& models, const EvaluationOptions& options);
+
+// The data a report covers: its dataset, " + " each further one.
+std::string evaluatedData(const EvaluationReport& report);
 
 // Markdown tables (Table II form, multi-instance table), JSON, PNG bar chart of the paper metric.
 std::string evaluationMarkdown(const EvaluationReport& report);

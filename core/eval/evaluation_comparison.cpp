@@ -46,12 +46,12 @@ void checkSameData(const std::vector<LabelledReport>& reports) {
   if (reports.empty()) throw InvalidArgument("comparison: no reports");
   for (const auto& lr : reports)
     if (lr.report->objects != reports.front().report->objects ||
-        lr.report->dataDir != reports.front().report->dataDir)
+        evaluatedData(*lr.report) != evaluatedData(*reports.front().report))
       throw InvalidArgument("comparison: " + lr.label + " was evaluated on " +
                             std::to_string(lr.report->objects) + " objects of " +
-                            lr.report->dataDir.string() + ", " + reports.front().label + " on " +
+                            evaluatedData(*lr.report) + ", " + reports.front().label + " on " +
                             std::to_string(reports.front().report->objects) + " of " +
-                            reports.front().report->dataDir.string());
+                            evaluatedData(*reports.front().report));
 }
 
 }  // namespace
@@ -60,8 +60,8 @@ std::string comparisonMarkdown(const std::vector<LabelledReport>& reports) {
   checkSameData(reports);
   const auto names = modelColumns(reports);
   std::ostringstream md;
-  md << "# Model sets side by side\n\nData: `" << reports.front().report->dataDir.string()
-     << "` — " << reports.front().report->objects << " objects.\n\n"
+  md << "# Model sets side by side\n\nData: `" << evaluatedData(*reports.front().report) << "` — "
+     << reports.front().report->objects << " objects.\n\n"
      << "## Single-point error (m, paper's metric)\n\n| Models |";
   for (const auto& n : names) md << ' ' << paperColumnName(n) << " |";
   md << " Avg |\n|---|";

@@ -110,6 +110,30 @@ TEST_F(AnnotateTest, EvalMeasuresThePointsAnnotateWritesWithTheSamePasses) {
   EXPECT_GT(compared, 0u);
 }
 
+TEST_F(AnnotateTest, EvalCoversTheUnionOfEveryDatasetGiven) {
+  gen::generateDataset({{"sink", 2, 7}}, gen::MeshFormat::Glb, dir / "more");
+  EvaluationOptions eval;
+  eval.symmetries = 1;
+  eval.dataDir = dir / "data";
+  eval.moreData = {dir / "more"};
+  eval.features = annotate.features;
+  const EvaluationReport report = evaluateModels(*set, eval);
+  EXPECT_EQ(report.objects, 4u);  // a stove and a sink, and two more sinks
+  EXPECT_EQ(report.perObject.size(), 4u);
+  EXPECT_EQ(report.confidenceSignal.size(), 4u);
+  EXPECT_EQ(evaluatedData(report), (dir / "data").string() + " + " + (dir / "more").string());
+  EXPECT_THAT(evaluationMarkdown(report), HasSubstr(evaluatedData(report)));
+  // Each dataset read its features from its own cache.
+  EXPECT_TRUE(fs::is_directory(dir / "more" / ".sagrid-cache"));
+  eval.moreData = {dir / "missing"};
+  try {
+    evaluateModels(*set, eval);
+    FAIL() << "a missing dataset must be an error";
+  } catch (const Error& e) {
+    EXPECT_THAT(e.what(), HasSubstr("missing"));
+  }
+}
+
 TEST_F(AnnotateTest, WritesTheObjectConfidenceOfTheLeastSurePoint) {
   annotate.category = "stove";
   annotate.confidence.fitted = true;
