@@ -110,6 +110,14 @@ class SampleEvidence {
   sagrid::AnnotateOptions m_options;
 };
 
+// --evidence needs the folder's classifier to carry a gate.
+void requireEvidenceGate(const sagrid::CategoryClassifier* classifier, const fs::path& dir) {
+  if (!classifier || classifier->evidence.empty())
+    throw sagrid::InvalidArgument(dir.string() +
+                                  ": --evidence needs a category classifier with an evidence gate "
+                                  "(`sagrid category evidence`)");
+}
+
 void addEvidenceFlags(CLI::App* cmd, Options& o) {
   cmd->add_flag("--evidence", o.evidence,
                 "Follow the classifier with the models folder's evidence gate: an object filed "
@@ -225,10 +233,7 @@ void setupCategory(CLI::App& root) {
       std::fprintf(stderr, "%s has no %s: evaluating retrieval\n", dir.string().c_str(),
                    sagrid::kCategoryClassifierFile);
     const double threshold = o->threshold >= 0 ? o->threshold : classifier ? classifier->threshold() : 0.5;
-    if (o->evidence && (!classifier || o->retrieval || classifier->evidence.empty()))
-      throw sagrid::InvalidArgument(dir.string() +
-                                    ": --evidence needs a category classifier with "
-                                    "an evidence gate (`sagrid category evidence`)");
+    if (o->evidence) requireEvidenceGate(o->retrieval ? nullptr : classifier, dir);
     const SampleEvidence evidence(models, *o);
     std::unique_ptr<sagrid::app::ProgressBar> bar;
     if (o->evidence) bar = std::make_unique<sagrid::app::ProgressBar>("evidence", samples.size());
@@ -279,10 +284,7 @@ void setupCategory(CLI::App& root) {
     std::optional<SampleEvidence> evidence;
     if (o->evidence) {
       models = sagrid::ModelSet::load(dir);
-      if (!models->categoryClassifier() || models->categoryClassifier()->evidence.empty())
-        throw sagrid::InvalidArgument(dir.string() +
-                                      ": --evidence needs a category classifier "
-                                      "with an evidence gate (`sagrid category evidence`)");
+      requireEvidenceGate(models->categoryClassifier(), dir);
       evidence.emplace(*models, *o);
     }
     // Each fold's classifier, then the shipped evidence gate (fitted on objects of the category

@@ -147,10 +147,14 @@ AnnotationResult annotateMeshFile(const fs::path& meshFile, const std::string& i
   r.labels.object.category = r.category;
   r.labels.object.up = toString(mesh.fileUp);
   if (mesh.fileUpDetected) r.labels.object.upConfidence = mesh.fileUpConfidence;
-  if (r.rejected) {
-    recordRejection(r);
+  // The model stage's time and the final progress report, on every way out.
+  auto finish = [&] {
     r.modelSeconds = secondsSince(t);
     if (options.onProgress) options.onProgress(1.0f, "done");
+  };
+  if (r.rejected) {
+    recordRejection(r);
+    finish();
     return r;
   }
   const auto categoryModels = models.forCategory(r.category);
@@ -183,8 +187,7 @@ AnnotationResult annotateMeshFile(const fs::path& meshFile, const std::string& i
     r.labels.affordances.clear();
     r.predictions.clear();
     recordRejection(r, evidence);
-    r.modelSeconds = secondsSince(t);
-    if (options.onProgress) options.onProgress(1.0f, "done");
+    finish();
     return r;
   }
   r.objectConfidence = options.confidence.probability(leastSurePointDistance(r.predictions));
@@ -197,8 +200,7 @@ AnnotationResult annotateMeshFile(const fs::path& meshFile, const std::string& i
                                   {"printed_symbols", printed.symbols.size()}};
   if (r.categoryRetrieved && classifier && !classifier->evidence.empty())
     r.labels.extra["prediction"]["affordance_evidence"] = evidence;
-  r.modelSeconds = secondsSince(t);
-  if (options.onProgress) options.onProgress(1.0f, "done");
+  finish();
   return r;
 }
 

@@ -49,9 +49,8 @@ EvidenceGate fitEvidenceGate(const std::map<std::string, std::vector<double>>& e
   EvidenceGate gate;
   gate.record["keep"] = keep;
   for (const auto& [category, evidence] : evidenceByCategory) {
+    // forCategory throws InvalidArgument for a category without models.
     const auto categoryModels = models.forCategory(category);
-    if (categoryModels.empty())
-      throw InvalidArgument("evidence gate: no models of category \"" + category + "\"");
     if (evidence.empty())
       throw InvalidArgument("evidence gate: no objects of category \"" + category + "\"");
     gate.thresholds[category] = evidenceThresholdKeeping(evidence, keep);
