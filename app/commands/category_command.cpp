@@ -75,7 +75,7 @@ struct Options {
   std::vector<std::string> data, validate, gated;
   int folds = 5;
   std::string out, models, exclude, split, splitOut, up, cache;
-  double threshold = -1, l2 = 1e-2, keep = 0.98;
+  double threshold = -1, l2 = 1e-2, keep = 0.98, sureAbove = 0;
   int iterations = 20000;
   bool retrieval = false, linear = false, topRelief = false, evidence = false;
 };
@@ -321,6 +321,12 @@ void setupCategory(CLI::App& root) {
   evidenceCmd->add_option("--cache", o->cache,
                           "Feature cache folder (default: each dataset's .sagrid-cache, where "
                           "the descriptors are cached)");
+  evidenceCmd
+      ->add_option("--sure-above", o->sureAbove,
+                   "Ask the models only where the classifier is unsure: a category decided with at "
+                   "least this probability stands whatever its evidence (default: every decision "
+                   "is checked)")
+      ->check(CLI::Range(0.0, 1.0));
   evidenceCmd->add_option("--category", o->gated,
                           "Category to gate (repeat; default: every category with models); the "
                           "others keep no threshold");
@@ -338,6 +344,7 @@ void setupCategory(CLI::App& root) {
       return std::find(gated.begin(), gated.end(), c) != gated.end();
     };
     std::map<std::string, std::vector<double>> own;         // category -> evidence
+    std::map<std::string, std::vector<double>> ownScore;    // the classifier's probability of it
     std::map<std::string, std::vector<double>> distractor;  // category -> evidence
     sagrid::app::ProgressBar bar("evidence", samples.size());
     for (std::size_t i = 0; i < samples.size(); ++i) {
@@ -346,7 +353,11 @@ void setupCategory(CLI::App& root) {
       const std::string cls = sagrid::categoryClass(s.category);
       try {
         if (cls != sagrid::kRejectedCategory) {
-          if (isGated(cls)) own[cls].push_back(evidence(s, cls));
+          if (isGated(cls)) {
+            own[cls].push_back(evidence(s, cls));
+            const auto decision = classifier.classify(s.descriptor);
+            ownScore[cls].push_back(decision.category == cls ? decision.score : 0.0);
+          }
         } else {
           for (const auto& category : gated) distractor[category].push_back(evidence(s, category));
         }
@@ -356,26 +367,35 @@ void setupCategory(CLI::App& root) {
     }
     bar.finish();
     auto gate = sagrid::fitEvidenceGate(own, o->keep, models);
+    if (o->sureAbove > 0) gate.sureProbability = o->sureAbove;
     std::string command = "sagrid category evidence";
     for (const auto& d : o->data) command += " --data " + d;
     if (!o->up.empty()) command += " --up " + o->up;
     for (const auto& c : o->gated) command += " --category " + c;
     command += " --keep " + std::to_string(o->keep) + " --models " + dir.string();
+    if (gate.sureProbability) command += " --sure-above " + std::to_string(*gate.sureProbability);
     gate.record["data"] = o->data;
     gate.record["command"] = command;
-    std::cout << "| category | objects | threshold | kept | distractors | distractors below |\n"
-                 "|---|---:|---:|---:|---:|---:|\n";
+    std::cout << "| category | objects | threshold | kept | kept with the classifier sure | "
+                 "distractors | distractors below |\n"
+                 "|---|---:|---:|---:|---:|---:|---:|\n";
     for (const auto& [category, threshold] : gate.thresholds) {
       const auto& values = own.at(category);
+      const auto& scores = ownScore.at(category);
       const auto kept = std::count_if(values.begin(), values.end(),
                                       [&, t = threshold](double v) { return v >= t; });
+      long keptOrSure = 0;
+      for (std::size_t i = 0; i < values.size(); ++i)
+        keptOrSure += values[i] >= threshold || !gate.asks(scores[i]);
       const auto& others = distractor[category];
       const auto below =
           std::count_if(others.begin(), others.end(), [t = threshold](double v) { return v < t; });
       gate.record["kept"][category] = kept;
+      gate.record["kept_with_sure"][category] = keptOrSure;
       gate.record["distractors_below"][category] = {below, others.size()};
-      std::printf("| %s | %zu | %.4f | %ld | %zu | %ld |\n", category.c_str(), values.size(),
-                  threshold, static_cast<long>(kept), others.size(), static_cast<long>(below));
+      std::printf("| %s | %zu | %.4f | %ld | %ld | %zu | %ld |\n", category.c_str(), values.size(),
+                  threshold, static_cast<long>(kept), keptOrSure, others.size(),
+                  static_cast<long>(below));
     }
     classifier.evidence = gate;
     classifier.save(file);

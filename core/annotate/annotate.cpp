@@ -179,7 +179,8 @@ AnnotationResult annotateMeshFile(const fs::path& meshFile, const std::string& i
     }
   const double evidence = affordanceEvidence(r.predictions);
   const auto* classifier = models.categoryClassifier();
-  if (r.categoryRetrieved && classifier && !classifier->evidence.passes(r.category, evidence)) {
+  if (r.categoryRetrieved && classifier && classifier->evidence.asks(r.categorySimilarity) &&
+      !classifier->evidence.passes(r.category, evidence)) {
     // The classifier's category, but its models find nothing of it here: rejected after all.
     r.rejected = r.rejectedByEvidence = true;
     r.closestCategory = r.category;

@@ -58,6 +58,10 @@ bool EvidenceGate::passes(const std::string& category, double evidence) const {
   return it == thresholds.end() || evidence >= it->second;
 }
 
+bool EvidenceGate::asks(double probability) const {
+  return !sureProbability || probability < *sureProbability;
+}
+
 std::string categoryClass(const std::string& labelledCategory) {
   if (labelledCategory == "stove" || labelledCategory == "sink") return labelledCategory;
   return kRejectedCategory;
@@ -225,10 +229,12 @@ void CategoryClassifier::save(const std::filesystem::path& file) const {
   j["weights"] = m_weights;
   j["bias"] = m_bias;
   j["training"] = training;
-  if (!evidence.empty())
+  if (!evidence.empty()) {
     j["evidence"] = {{"thresholds", evidence.thresholds},
                      {"models", evidence.modelShas},
                      {"record", evidence.record}};
+    if (evidence.sureProbability) j["evidence"]["sure_probability"] = *evidence.sureProbability;
+  }
   j["sha256"] = contentSha(j);
   writeFileAtomic(file, j.dump(1) + "\n");
 }
@@ -263,6 +269,8 @@ CategoryClassifier CategoryClassifier::load(const std::filesystem::path& file) {
       c.evidence.thresholds = e.at("thresholds").get<std::map<std::string, double>>();
       c.evidence.modelShas = e.at("models").get<std::map<std::string, std::string>>();
       c.evidence.record = e.value("record", nlohmann::json::object());
+      if (e.contains("sure_probability"))
+        c.evidence.sureProbability = e.at("sure_probability").get<double>();
     }
   } catch (const nlohmann::json::exception& e) {
     throw FileError(file, std::string("malformed category classifier: ") + e.what());
@@ -275,6 +283,11 @@ CategoryClassifier CategoryClassifier::load(const std::filesystem::path& file) {
     if (!std::isfinite(t) || t < 0 || t > 1)
       throw FileError(file, "malformed category classifier: evidence threshold of \"" + category +
                                 "\" is not a confidence in [0, 1]");
+  if (c.evidence.sureProbability &&
+      !(*c.evidence.sureProbability > 0 && *c.evidence.sureProbability <= 1))
+    throw FileError(file,
+                    "malformed category classifier: evidence sure_probability is not a "
+                    "probability in (0, 1]");
   if (!ok)
     throw FileError(file, "malformed category classifier: classes, centre, scale, weights and bias "
                           "do not agree in size");

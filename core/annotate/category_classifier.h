@@ -16,6 +16,7 @@
 #include <filesystem>
 #include <map>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -53,10 +54,17 @@ struct EvidenceGate {
   std::map<std::string, double> thresholds;      // category -> least best-point confidence
   std::map<std::string, std::string> modelShas;  // model name -> weights sha256 it was fitted with
   nlohmann::json record = nlohmann::json::object();  // how it was fitted (data, keep share, counts)
+  // The models are asked only where the classifier is unsure: a category decided with at least
+  // this probability stands whatever its evidence (a standalone faucet the classifier is sure of,
+  // on which the sink models, trained on faucets over basins, are unsure of their points). Unset:
+  // every decision is checked.
+  std::optional<double> sureProbability;
 
   bool empty() const { return thresholds.empty(); }
   // True when `category` has no threshold or `evidence` reaches it.
   bool passes(const std::string& category, double evidence) const;
+  // True when a decision with this probability is checked (below sureProbability).
+  bool asks(double probability) const;
 };
 
 struct CategoryTrainingOptions {

@@ -25,8 +25,9 @@ double affordanceEvidence(const std::vector<ModelPrediction>& predictions);
 double affordanceEvidence(const std::filesystem::path& meshFile, const std::string& category,
                           const ModelSet& models, AnnotateOptions options);
 
-// `decision` after `gate`: an accepted category with a threshold is rejected (its best category
-// kept) when evidenceOf(category), asked only then, falls short of it.
+// `decision` after `gate`: an accepted category with a threshold, decided with a probability
+// below the gate's sureProbability, is rejected (its best category kept) when evidenceOf(category),
+// asked only then, falls short of it.
 CategoryDecision applyEvidenceGate(const CategoryDecision& decision, const EvidenceGate& gate,
                                    const std::function<double(const std::string&)>& evidenceOf);
 

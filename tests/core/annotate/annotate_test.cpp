@@ -3,6 +3,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <set>
 
 #include "core/annotate/annotation_fingerprint.h"
@@ -265,6 +266,16 @@ TEST_F(AnnotateTest, TheEvidenceGateRejectsWhatTheCategorysModelsFindTooLittleOf
   const auto& prediction = rejected.labels.extra.at("prediction");
   EXPECT_EQ(prediction.at("rejected_by"), "evidence");
   EXPECT_EQ(prediction.at("closest_category"), "stove");
+
+  // A classifier sure of its answer (at or above the gate's ceiling) is not second-guessed either;
+  // below it, the models are asked again.
+  classifier.evidence.sureProbability = ungated.categorySimilarity;
+  set->setCategoryClassifier(classifier, "category.json");
+  EXPECT_EQ(run().category, "stove");
+  classifier.evidence.sureProbability = std::nextafter(ungated.categorySimilarity, 2.0);
+  set->setCategoryClassifier(classifier, "category.json");
+  EXPECT_TRUE(run().rejectedByEvidence);
+  classifier.evidence.sureProbability.reset();
 
   // A category the caller names is not second-guessed.
   annotate.category = "stove";

@@ -56,6 +56,29 @@ TEST(EvidenceGate, RejectsAnAcceptedCategoryWhoseModelsFindTooLittle) {
   EXPECT_EQ(asked, 2);
 }
 
+TEST(EvidenceGate, ADecisionTheClassifierIsSureOfIsNotCheckedByTheModels) {
+  EvidenceGate gate;
+  gate.thresholds["sink"] = 0.05;
+  gate.sureProbability = 0.95;
+  CategoryDecision sink;
+  sink.category = sink.best = "sink";
+  int asked = 0;
+  auto noEvidence = [&asked](const std::string&) { return ++asked, 0.0; };
+  sink.score = 0.97;  // a standalone faucet the sink models are unsure of: kept unasked
+  EXPECT_EQ(applyEvidenceGate(sink, gate, noEvidence).category, "sink");
+  EXPECT_EQ(asked, 0);
+  sink.score = 0.95;  // at the ceiling: sure
+  EXPECT_EQ(applyEvidenceGate(sink, gate, noEvidence).category, "sink");
+  EXPECT_EQ(asked, 0);
+  sink.score = 0.86;  // a washing machine's drum filed as a basin: asked, and rejected
+  EXPECT_TRUE(applyEvidenceGate(sink, gate, noEvidence).rejected);
+  EXPECT_EQ(asked, 1);
+  EXPECT_TRUE(gate.asks(0.94));
+  EXPECT_FALSE(gate.asks(0.95));
+  gate.sureProbability.reset();  // unset: every decision is checked
+  EXPECT_TRUE(gate.asks(1.0));
+}
+
 TEST(EvidenceGate, BestPointConfidenceOfThePredictions) {
   std::vector<ModelPrediction> predictions(2);
   EXPECT_DOUBLE_EQ(affordanceEvidence(predictions), 0.0);  // no points: no evidence
@@ -109,6 +132,10 @@ TEST(EvidenceGate, SavedInCategoryJsonUnderItsSha) {
   EXPECT_DOUBLE_EQ(back.evidence.thresholds.at("sink"), 0.1);
   EXPECT_EQ(back.evidence.modelShas, c.evidence.modelShas);
   EXPECT_EQ(back.evidence.record.at("keep"), 1.0);
+  EXPECT_FALSE(back.evidence.sureProbability);  // none saved: every decision is checked
+  c.evidence.sureProbability = 0.95;
+  c.save(file);
+  EXPECT_DOUBLE_EQ(CategoryClassifier::load(file).evidence.sureProbability.value_or(0), 0.95);
   // A hand-lowered threshold breaks the file's sha.
   auto j = nlohmann::json::parse(readFileBytes(file));
   j["evidence"]["thresholds"]["sink"] = 0.0;
@@ -124,6 +151,17 @@ TEST(EvidenceGate, SavedInCategoryJsonUnderItsSha) {
   } catch (const FileError& e) {
     EXPECT_NE(std::string(e.what()).find("evidence threshold of \"sink\""), std::string::npos)
         << e.what();
+  }
+  // A ceiling that is no probability: named in the error.
+  bad = tinyClassifier();
+  bad.evidence = fitEvidenceGate({{"sink", {0.1, 0.3}}}, 1.0, models);
+  bad.evidence.sureProbability = 0.0;
+  bad.save(file);
+  try {
+    CategoryClassifier::load(file);
+    FAIL() << "an evidence sure_probability of 0 loaded";
+  } catch (const FileError& e) {
+    EXPECT_NE(std::string(e.what()).find("sure_probability"), std::string::npos) << e.what();
   }
 }
 
