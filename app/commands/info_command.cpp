@@ -6,8 +6,8 @@
 #include "app/command_registry.h"
 #include "app/commands/up_axis_option.h"
 #include "core/features/printed_marks.h"
+#include "core/grid/mesh_summary.h"
 #include "core/mesh/mesh_import.h"
-#include "core/mesh/mesh_summary.h"
 
 namespace {
 

@@ -3,11 +3,12 @@
 // and inverse maps are kept so every point shown or written is in the mesh's own frame.
 #pragma once
 
+#include <Eigen/Core>
+#include <Eigen/Geometry>
 #include <optional>
 #include <string>
 
-#include <Eigen/Core>
-#include <Eigen/Geometry>
+#include "core/mesh/bounds_check.h"
 
 namespace sagrid {
 
@@ -29,11 +30,6 @@ struct Normalization {
   // Distances: normalized length -> mesh-frame length.
   float lengthToMesh(float normalizedLength) const { return normalizedLength / scale; }
 };
-
-// Why a bounding box cannot be normalized meaningfully, or nullopt when it can: empty, not
-// finite, no extent (all vertices coincide), or so small against its distance from the origin
-// that float coordinates cannot resolve a 64^3 grid on it (e.g. a 1 m object at 1e9).
-std::optional<std::string> normalizationProblem(const Eigen::AlignedBox3f& box);
 
 // Returns a copy of `mesh` with positions mapped into the normalized frame.
 Mesh normalizedCopy(const Mesh& mesh, const Normalization& normalization);

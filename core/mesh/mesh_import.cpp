@@ -1,15 +1,6 @@
 #include "core/mesh/mesh_import.h"
 
-#include <algorithm>
-#include <cctype>
-#include <cmath>
-#include <cstdio>
-#include <map>
-#include <set>
-#include <system_error>
-
 #include <assimp/DefaultIOSystem.h>
-#include <assimp/Importer.hpp>
 #include <assimp/MemoryIOWrapper.h>
 #include <assimp/config.h>
 #include <assimp/material.h>
@@ -17,13 +8,22 @@
 #include <assimp/scene.h>
 #include <stb_image.h>
 
+#include <algorithm>
+#include <assimp/Importer.hpp>
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <set>
+#include <system_error>
+
 #include "core/common/atomic_file.h"
 #include "core/common/contained_paths.h"
 #include "core/common/error.h"
 #include "core/common/log.h"
 #include "core/common/sha256.h"
 #include "core/common/value_ranges.h"
-#include "core/grid/normalization.h"
+#include "core/mesh/bounds_check.h"
 #include "core/mesh/import_time_limit.h"
 #include "core/mesh/mesh_file_check.h"
 #include "core/mesh/up_axis_detection.h"

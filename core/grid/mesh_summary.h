@@ -3,13 +3,12 @@
 // parses and prints, and so other front ends (GUI, batch reports) can show the same summary.
 #pragma once
 
+#include <Eigen/Geometry>
 #include <filesystem>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <utility>
 #include <vector>
-
-#include <Eigen/Geometry>
-#include <nlohmann/json.hpp>
 
 #include "core/grid/normalization.h"
 #include "core/grid/voxel_grid.h"
@@ -21,17 +20,18 @@ struct MeshSummary {
   std::filesystem::path path;
   std::size_t triangles = 0, vertices = 0, materials = 0, textures = 0;
   UpAxis fileUp = UpAxis::Z;
-  bool fileUpDetected = false;   // chosen from the geometry (then with a confidence)
+  bool fileUpDetected = false;  // chosen from the geometry (then with a confidence)
   float fileUpConfidence = 1.0f;
   std::string sha256;
-  Eigen::AlignedBox3f bounds;       // mesh frame (z-up)
+  Eigen::AlignedBox3f bounds;  // mesh frame (z-up)
   Normalization normalization;
   int resolution = 0;
   std::size_t occupiedVoxels = 0;
   std::vector<std::pair<std::string, double>> stageMilliseconds;  // import, normalize, voxelize
 };
 
-MeshSummary summarizeMesh(const std::filesystem::path& path, const ImportOptions& options, int resolution);
+MeshSummary summarizeMesh(const std::filesystem::path& path, const ImportOptions& options,
+                          int resolution);
 
 std::string formatSummary(const MeshSummary& summary);  // human-readable, several lines
 nlohmann::json summaryJson(const MeshSummary& summary);

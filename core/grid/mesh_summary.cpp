@@ -1,4 +1,4 @@
-#include "core/mesh/mesh_summary.h"
+#include "core/grid/mesh_summary.h"
 
 #include <chrono>
 #include <cstdio>
@@ -30,7 +30,8 @@ std::string formatVector(const Eigen::Vector3f& v) {
 }
 }  // namespace
 
-MeshSummary summarizeMesh(const std::filesystem::path& path, const ImportOptions& options, int resolution) {
+MeshSummary summarizeMesh(const std::filesystem::path& path, const ImportOptions& options,
+                          int resolution) {
   MeshSummary s;
   s.path = path;
   s.resolution = resolution;
@@ -80,7 +81,8 @@ std::string formatSummary(const MeshSummary& s) {
   add("normalize:   p_norm = (p - %s) * %.9g", formatVector(s.normalization.center).c_str(),
       static_cast<double>(s.normalization.scale));
   add("occupied:    %zu of %d^3 voxels", s.occupiedVoxels, s.resolution);
-  for (const auto& [stage, ms] : s.stageMilliseconds) add("time %-9s %.2f ms", (stage + ":").c_str(), ms);
+  for (const auto& [stage, ms] : s.stageMilliseconds)
+    add("time %-9s %.2f ms", (stage + ":").c_str(), ms);
   return out;
 }
 
@@ -97,7 +99,8 @@ nlohmann::json summaryJson(const MeshSummary& s) {
           {"file_up_detected", s.fileUpDetected},
           {"file_up_confidence", s.fileUpConfidence},
           {"bounds", {{"min", vectorJson(s.bounds.min())}, {"max", vectorJson(s.bounds.max())}}},
-          {"normalization", {{"center", vectorJson(s.normalization.center)}, {"scale", s.normalization.scale}}},
+          {"normalization",
+           {{"center", vectorJson(s.normalization.center)}, {"scale", s.normalization.scale}}},
           {"resolution", s.resolution},
           {"occupied_voxels", s.occupiedVoxels},
           {"time_ms", timings}};
