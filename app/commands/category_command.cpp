@@ -324,8 +324,8 @@ void setupCategory(CLI::App& root) {
   evidenceCmd
       ->add_option("--sure-above", o->sureAbove,
                    "Ask the models only where the classifier is unsure: a category decided with at "
-                   "least this probability stands whatever its evidence (default: every decision "
-                   "is checked)")
+                   "least this probability stands whatever its evidence (0, the default: every "
+                   "decision is checked)")
       ->check(CLI::Range(0.0, 1.0));
   evidenceCmd->add_option("--category", o->gated,
                           "Category to gate (repeat; default: every category with models); the "

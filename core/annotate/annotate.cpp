@@ -126,9 +126,12 @@ AnnotationResult annotateMeshFile(const fs::path& meshFile, const std::string& i
   const SurfaceScene scene(mesh);
   r.featureSeconds = secondsSince(t);
 
+  // The classifier's (or retrieval's) decision when the caller names no category; its evidence
+  // gate is applied below, once the category's models have run.
+  std::optional<CategoryDecision> decided;
   if (options.category.empty()) {
     // The classifier with rejection when the models folder has one, else retrieval.
-    const CategoryDecision decision = models.decideCategory(features);
+    const CategoryDecision& decision = decided.emplace(models.decideCategory(features));
     r.category = decision.category;
     r.categorySimilarity = decision.score;
     r.categoryRetrieved = true;
@@ -179,8 +182,10 @@ AnnotationResult annotateMeshFile(const fs::path& meshFile, const std::string& i
     }
   const double evidence = affordanceEvidence(r.predictions);
   const auto* classifier = models.categoryClassifier();
-  if (r.categoryRetrieved && classifier && classifier->evidence.asks(r.categorySimilarity) &&
-      !classifier->evidence.passes(r.category, evidence)) {
+  if (decided && classifier &&
+      applyEvidenceGate(*decided, classifier->evidence, [evidence](const std::string&) {
+        return evidence;
+      }).rejected) {
     // The classifier's category, but its models find nothing of it here: rejected after all.
     r.rejected = r.rejectedByEvidence = true;
     r.closestCategory = r.category;
