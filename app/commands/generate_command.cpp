@@ -48,8 +48,8 @@ void setupGenerate(CLI::App& root) {
          "distractors-appliances: the same with washing machines, toasters and countertop "
          "appliances among them; wall-fixtures: "
          "the dressed sinks the shipped sink models also train on (OUT/wall-fixtures 300); "
-         "glass-hobs: stoves, half of them bare glass hobs, the shipped stove models also train "
-         "on (OUT/glass-hobs 300)")
+         "glass-hobs: stoves, half of them bare glass hobs (OUT/glass-hobs 300; the shipped stove "
+         "models do not train on them, README: the texture pass)")
       ->check(CLI::IsMember(
           {"bench", "distractors", "distractors-appliances", "wall-fixtures", "glass-hobs"}));
   cmd->add_option(

@@ -55,7 +55,8 @@ EvidenceGate fitEvidenceGate(const std::map<std::string, std::vector<double>>& e
     if (evidence.empty())
       throw InvalidArgument("evidence gate: no objects of category \"" + category + "\"");
     gate.thresholds[category] = evidenceThresholdKeeping(evidence, keep);
-    for (const auto* m : categoryModels) gate.modelShas[m->card().name] = m->card().weightsSha256;
+    for (const auto* m : categoryModels)
+      gate.modelShas[m->card().name] = m->card().weightsIdentity();
     gate.record["objects"][category] = evidence.size();
   }
   return gate;

@@ -51,7 +51,7 @@ void ModelSet::setCategoryClassifier(CategoryClassifier classifier,
   for (const auto& [name, sha] : classifier.evidence.modelShas) {
     const auto it = std::find_if(m_models.begin(), m_models.end(),
                                  [&name = name](const auto& m) { return m.card().name == name; });
-    if (it == m_models.end() || it->card().weightsSha256 != sha) {
+    if (it == m_models.end() || it->card().weightsIdentity() != sha) {
       logger()->warn(
           "{}: its evidence gate was fitted for other weights of {}; the gate is off "
           "until `sagrid category evidence` refits it",

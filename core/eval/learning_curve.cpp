@@ -81,7 +81,8 @@ void copyModelFiles(const fs::path& from, const fs::path& to, const std::string&
   for (const auto& e : fs::directory_iterator(from)) {
     if (!e.is_regular_file()) continue;
     const std::string name = e.path().filename().string();
-    if (!only.empty() && name != only + ".json" && name != only + ".pt") continue;
+    // The model's card, weights and its ensemble members' weights (<model>.<member>.pt).
+    if (!only.empty() && name.rfind(only + ".", 0) != 0) continue;
     fs::copy_file(e.path(), to / name, fs::copy_options::overwrite_existing);
   }
 }

@@ -98,8 +98,10 @@ const std::vector<BenchSplit>& applianceDistractorPreset();
 // half: outDir/wall-fixtures (300 sinks, seed 5001, 80 % of those with a basin dressed), mixed
 // OBJ/GLB. Its own seed: the bench split is untouched.
 const std::vector<BenchSplit>& wallFixturePreset();
-// Stoves of which half are bare glass hobs with printed zones and touch controls, which the
-// shipped stove models also train on: outDir/glass-hobs (300 stoves, seed 6001), mixed OBJ/GLB.
+// Stoves of which half are bare glass hobs with printed zones and touch controls:
+// outDir/glass-hobs (300 stoves, seed 6001), mixed OBJ/GLB. The shipped stove models do not train
+// on them (training on them did not teach the network to read the print; README, the texture
+// pass).
 const std::vector<BenchSplit>& glassHobPreset();
 // Writes every split of a preset into outDir/<split name>.
 void generatePreset(const std::vector<BenchSplit>& preset, const std::filesystem::path& outDir,

@@ -95,22 +95,35 @@ AffordanceModel::~AffordanceModel() = default;
 AffordanceModel::AffordanceModel(AffordanceModel&&) noexcept = default;
 AffordanceModel& AffordanceModel::operator=(AffordanceModel&&) noexcept = default;
 
+namespace {
+// One network's weights from `path` into `net` (on the CPU, then to `device`), checked against
+// `sha256` when given; every problem names the card first.
+void loadWeightsInto(SAGridNet& net, const fs::path& path, const std::string& sha256,
+                     const fs::path& cardFile, const torch::Device& device) {
+  const std::string bytes = readFileBytes(path);
+  if (!sha256.empty() && sha256Hex(bytes) != sha256)
+    throw FileError(path, "weights sha256 differs from the model card " +
+                              cardFile.filename().string() +
+                              " (truncated, corrupt or replaced file)");
+  net->to(torch::kCPU);
+  deserializeWeights(net, bytes, path.string());
+  net->to(device);
+  net->eval();
+}
+}  // namespace
+
 AffordanceModel AffordanceModel::load(const fs::path& cardFile) {
   ModelCard card = readModelCard(cardFile);
-  const fs::path weightsPath = cardFile.parent_path() / card.weightsFile;
-  // Every problem with the weights names the card first: it is what the user points us at.
   try {
-    const std::string bytes = readFileBytes(weightsPath);
-    if (!card.weightsSha256.empty() && sha256Hex(bytes) != card.weightsSha256)
-      throw FileError(weightsPath, "weights sha256 differs from the model card " +
-                                       cardFile.filename().string() +
-                                       " (truncated, corrupt or replaced file)");
     AffordanceModel model(card, 0);
-    auto net = model.m_impl->net;
-    net->to(torch::kCPU);
-    deserializeWeights(net, bytes, weightsPath.string());
-    net->to(model.m_impl->device);
-    net->eval();
+    AffordanceModelImpl& impl = *model.m_impl;
+    loadWeightsInto(impl.net, cardFile.parent_path() / card.weightsFile, card.weightsSha256,
+                    cardFile, impl.device);
+    for (const auto& member : card.ensemble) {
+      impl.members.push_back(SAGridNet(impl.shape));
+      loadWeightsInto(impl.members.back(), cardFile.parent_path() / member.file, member.sha256,
+                      cardFile, impl.device);
+    }
     return model;
   } catch (const FileError& e) {
     throw FileError(cardFile, e.what());
@@ -120,6 +133,11 @@ AffordanceModel AffordanceModel::load(const fs::path& cardFile) {
 }
 
 void AffordanceModel::save(const fs::path& cardFile) {
+  // Training writes one network; an ensemble's card lists members it did not write.
+  if (!m_impl->card.ensemble.empty())
+    throw ModelError(cardFile.string() +
+                     ": a model card with weights.ensemble cannot be saved by training (it "
+                     "writes one network); list the members in the card by hand");
   const std::string name = cardFile.stem().string();
   m_impl->card.weightsFile = name + ".pt";
   const std::string bytes = serializeWeights(m_impl->net);
@@ -136,25 +154,38 @@ std::vector<float> AffordanceModel::predictDistances(const FeatureGrid& features
   m_impl->card.checkFeatures(features);
   if (features.voxels.empty()) return {};
   torch::NoGradGuard noGrad;
-  m_impl->net->eval();
   const NetworkObject object = networkObjectOf(features);
   const NetworkBatch batch =
       makeNetworkBatch({&object}, m_impl->shape, m_impl->mode, m_impl->device);
-  // The network regresses D = log(1 + distance); report distances.
-  const torch::Tensor d =
-      torch::expm1(m_impl->net->forward(batch, m_impl->mode)).cpu().contiguous();
+  // The network regresses D = log(1 + distance); report distances (an ensemble's mean distance).
+  auto distances = [&](SAGridNet& net) {
+    net->eval();
+    return torch::expm1(net->forward(batch, m_impl->mode));
+  };
+  torch::Tensor d = distances(m_impl->net);
+  const bool ensemble = !m_impl->card.ensemble.empty();
+  if (ensemble) {
+    for (auto& member : m_impl->members) d = d + distances(member);
+    d = d / static_cast<double>(m_impl->members.size() + 1);
+  }
+  d = d.cpu().contiguous();
   return std::vector<float>(d.data_ptr<float>(), d.data_ptr<float>() + d.numel());
 }
 
 double AffordanceModel::forwardMacs(std::int64_t occupiedVoxels, bool dense) const {
-  return model::forwardMacs(m_impl->shape, dense ? ExecutionMode::Dense : m_impl->mode,
+  return static_cast<double>(networkCount()) *
+         model::forwardMacs(m_impl->shape, dense ? ExecutionMode::Dense : m_impl->mode,
                             occupiedVoxels);
+}
+
+std::size_t AffordanceModel::networkCount() const {
+  return m_impl->card.ensemble.empty() ? 1 : 1 + m_impl->members.size();
 }
 
 std::int64_t AffordanceModel::parameterCount() const {
   std::int64_t n = 0;
   for (const auto& p : m_impl->net->parameters()) n += p.numel();
-  return n;
+  return n * static_cast<std::int64_t>(networkCount());
 }
 
 }  // namespace sagrid::model

@@ -35,14 +35,17 @@ class AffordanceModel {
   ModelCard& card();
 
   // Predicted distance to the nearest affordance (normalized frame units, >= 0) for each occupied
-  // voxel of `features`, in the order of features.voxels. Checks the features against the card
+  // voxel of `features`, in the order of features.voxels; with an ensemble, the mean over its
+  // networks. Checks the features against the card
   // first (ModelError on mismatch).
   std::vector<float> predictDistances(const FeatureGrid& features) const;
 
-  // Total number of weights (parameters), for reports.
+  // Networks that predict: 1, or 1 + the ensemble's members (card weights.ensemble).
+  std::size_t networkCount() const;
+  // Total number of weights (parameters) of every network, for reports.
   std::int64_t parameterCount() const;
-  // Multiply-accumulates of one forward pass over an object with this many occupied voxels, in
-  // the card's execution mode (and, for comparison, in the other).
+  // Multiply-accumulates of one prediction (a forward pass of every network) over an object with
+  // this many occupied voxels, in the card's execution mode (and, for comparison, in the other).
   double forwardMacs(std::int64_t occupiedVoxels, bool dense = false) const;
 
   AffordanceModelImpl& impl() { return *m_impl; }

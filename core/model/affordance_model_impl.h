@@ -15,6 +15,9 @@ struct AffordanceModelImpl {
   ExecutionMode mode = ExecutionMode::Sparse;
   torch::Device device = torch::kCPU;
   SAGridNet net{nullptr};
+  // The card's weights.ensemble, loaded in its order (predictDistances averages over them and net
+  // while the card still names them).
+  std::vector<SAGridNet> members;
 };
 
 NetworkShape networkShapeOf(const ModelCard& card);

@@ -7,6 +7,7 @@
 
 #include "core/common/atomic_file.h"
 #include "core/common/error.h"
+#include "core/common/sha256.h"
 #include "core/features/feature_grid.h"
 #include "core/io/json_file.h"
 #include "core/model/architecture.h"
@@ -14,6 +15,16 @@
 namespace sagrid::model {
 namespace fs = std::filesystem;
 using nlohmann::json;
+
+namespace {
+bool isFileNameBeside(const std::string& name) {
+  return !name.empty() && name.find('/') == std::string::npos &&
+         name.find('\\') == std::string::npos && name != "." && name != "..";
+}
+bool isSha256Hex(const std::string& text) {
+  return text.size() == 64 && std::all_of(text.begin(), text.end(), ::isxdigit);
+}
+}  // namespace
 
 std::pair<std::string, std::string> splitModelName(const std::string& name) {
   const auto dot = name.find('.');
@@ -44,8 +55,32 @@ void ModelCard::checkFeatures(const FeatureGrid& f) const {
              std::to_string(f.resolution) + "^3");
 }
 
+std::optional<NetworkDifference> networkDifference(const ModelCard& a, const ModelCard& b) {
+  const NetworkDifference fields[] = {
+      {"model", a.name, b.name},
+      {"architecture", a.architecture, b.architecture},
+      {"mode", a.mode, b.mode},
+      {"feature backend", a.featureBackend, b.featureBackend},
+      {"feature config", a.featureConfigHash,
+       a.featureConfigHash.empty() ? "" : b.featureConfigHash},
+      {"feature channels", std::to_string(a.featureChannels), std::to_string(b.featureChannels)},
+      {"descriptor size", std::to_string(a.descriptorSize), std::to_string(b.descriptorSize)},
+      {"grid", std::to_string(a.gridResolution) + "^3", std::to_string(b.gridResolution) + "^3"}};
+  for (const auto& f : fields)
+    if (f.a != f.b) return f;
+  return std::nullopt;
+}
+
+std::string ModelCard::weightsIdentity() const {
+  if (ensemble.empty()) return weightsSha256;
+  std::string shas = weightsSha256;
+  for (const auto& member : ensemble) shas += " " + member.sha256;
+  return sha256Hex(shas);
+}
+
 std::string ModelCard::sourceTag() const {
-  return name + "@" + weightsSha256.substr(0, std::min<std::size_t>(8, weightsSha256.size()));
+  const std::string identity = weightsIdentity();
+  return name + "@" + identity.substr(0, std::min<std::size_t>(8, identity.size()));
 }
 
 json toJson(const ModelCard& c) {
@@ -62,6 +97,8 @@ json toJson(const ModelCard& c) {
                    {"descriptor_size", c.descriptorSize}};
   j["grid_resolution"] = c.gridResolution;
   j["weights"] = {{"file", c.weightsFile}, {"sha256", c.weightsSha256}};
+  for (const auto& member : c.ensemble)
+    j["weights"]["ensemble"].push_back({{"file", member.file}, {"sha256", member.sha256}});
   j["point_extraction"] = {{"max_distance", c.extraction.maxDistance},
                            {"nms_radius", c.extraction.nmsRadius},
                            {"confidence_scale", c.extraction.confidenceScale},
@@ -103,6 +140,14 @@ ModelCard modelCardFromJson(const json& j, const fs::path& path) {
     const json& w = field(j, "weights", "");
     c.weightsFile = field(w, "file", "weights.").get<std::string>();
     c.weightsSha256 = field(w, "sha256", "weights.").get<std::string>();
+    if (w.contains("ensemble")) {
+      const json& members = w.at("ensemble");
+      if (!members.is_array())
+        throw FileError(path, "model card: weights.ensemble must be a list of {file, sha256}");
+      for (const json& m : members)
+        c.ensemble.push_back({field(m, "file", "weights.ensemble[].").get<std::string>(),
+                              field(m, "sha256", "weights.ensemble[].").get<std::string>()});
+    }
     if (j.contains("point_extraction")) {
       const json& p = j.at("point_extraction");
       c.extraction.maxDistance = p.value("max_distance", c.extraction.maxDistance);
@@ -183,13 +228,17 @@ void validateCard(const ModelCard& c, const fs::path& path) {
          "is " + std::to_string(c.descriptorSize) + "; expected 0..65536");
   if (c.gridResolution < 1 || c.gridResolution > 1024)
     fail("grid_resolution", "is " + std::to_string(c.gridResolution) + "; expected 1..1024");
-  if (c.weightsFile.empty() || c.weightsFile.find('/') != std::string::npos ||
-      c.weightsFile.find('\\') != std::string::npos || c.weightsFile == "." || c.weightsFile == "..")
-    fail("weights.file", "must be a file name beside the card");
-  if (!c.weightsSha256.empty() &&
-      (c.weightsSha256.size() != 64 ||
-       !std::all_of(c.weightsSha256.begin(), c.weightsSha256.end(), ::isxdigit)))
+  if (!isFileNameBeside(c.weightsFile)) fail("weights.file", "must be a file name beside the card");
+  if (!c.weightsSha256.empty() && !isSha256Hex(c.weightsSha256))
     fail("weights.sha256", "is not 64 hex digits");
+  for (const auto& member : c.ensemble) {
+    if (!isFileNameBeside(member.file) || member.file == c.weightsFile)
+      fail("weights.ensemble[].file",
+           "\"" + member.file + "\" must be another file name beside the card");
+    // A member's sha256 is required: nothing else ties the file to the card.
+    if (!isSha256Hex(member.sha256))
+      fail("weights.ensemble[].sha256", "of " + member.file + " is not 64 hex digits");
+  }
   const std::pair<const char*, float> positive[] = {
       {"point_extraction.max_distance", c.extraction.maxDistance},
       {"point_extraction.nms_radius", c.extraction.nmsRadius},

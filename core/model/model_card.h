@@ -8,6 +8,7 @@
 
 #include <filesystem>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -20,6 +21,12 @@ struct FeatureGrid;
 namespace sagrid::model {
 
 inline constexpr const char* kModelCardSchema = "sagrid.model/1";
+
+// Weights of one network beside the card.
+struct WeightsFile {
+  std::string file;  // relative to the card
+  std::string sha256;
+};
 
 struct ModelCard {
   std::string name;      // "<category>.<type>", e.g. "stove.heatsource"
@@ -34,6 +41,11 @@ struct ModelCard {
   int gridResolution = 64;
   std::string weightsFile;  // relative to the card
   std::string weightsSha256;
+  // weights.ensemble: more networks of the same architecture and features, trained apart (other
+  // data, other seed), whose predicted distances are averaged with the main weights' (the mean
+  // field of two networks has fewer spurious minima than either; the shipped stove.togglebutton).
+  // Empty: the main weights alone.
+  std::vector<WeightsFile> ensemble;
   std::vector<float> descriptorMean;         // mean descriptor of the category's training objects
   std::vector<float> descriptorStd;          // their per-dimension spread (empty on old cards)
   std::vector<float> affordanceFeatureMean;  // mean voxel feature at training affordances
@@ -46,8 +58,20 @@ struct ModelCard {
   // Throws ModelError naming what differs when the features were not made the way the model
   // was trained (backend, config hash, channel count, descriptor size, grid size).
   void checkFeatures(const FeatureGrid& features) const;
-  std::string sourceTag() const;  // "stove.heatsource@<first 8 hex of weights sha256>"
+  // What predicts: the main weights' sha256, or with an ensemble the sha256 of every member's
+  // sha256 in order (what annotation fingerprints and the evidence gate record).
+  std::string weightsIdentity() const;
+  std::string sourceTag() const;  // "stove.heatsource@<first 8 hex of weightsIdentity()>"
 };
+
+// What makes the network of one card unusable in place of another's: the first of model name,
+// architecture, mode, feature backend, feature config (when `a` records one), feature channels,
+// descriptor size and grid in which they differ, with both values; nullopt when none does
+// (fine-tuning from an init model, adding an ensemble member).
+struct NetworkDifference {
+  std::string what, a, b;
+};
+std::optional<NetworkDifference> networkDifference(const ModelCard& a, const ModelCard& b);
 
 // "stove.heatsource" -> {"stove", "heatsource"}; throws InvalidArgument otherwise.
 std::pair<std::string, std::string> splitModelName(const std::string& name);

@@ -104,24 +104,10 @@ struct LoadedDataset {
 // Throws ModelError naming both values when the init model and the requested one differ.
 void checkInitMatches(const model::ModelCard& init, const model::ModelCard& requested,
                       const fs::path& initCard) {
-  auto differ = [&](const std::string& what, const std::string& a, const std::string& b) {
-    if (a != b)
-      throw ModelError("--init " + initCard.string() + ": " + what + " differs: the init model " +
-                       init.name + " has " + a + ", the requested " + requested.name + " has " +
-                       b + "; fine-tuning keeps the network and its input, so they must match");
-  };
-  differ("model", init.name, requested.name);
-  differ("architecture", init.architecture, requested.architecture);
-  differ("mode", init.mode, requested.mode);
-  differ("feature backend", init.featureBackend, requested.featureBackend);
-  if (!init.featureConfigHash.empty())
-    differ("feature config", init.featureConfigHash, requested.featureConfigHash);
-  differ("feature channels", std::to_string(init.featureChannels),
-         std::to_string(requested.featureChannels));
-  differ("descriptor size", std::to_string(init.descriptorSize),
-         std::to_string(requested.descriptorSize));
-  differ("grid", std::to_string(init.gridResolution) + "^3",
-         std::to_string(requested.gridResolution) + "^3");
+  if (const auto d = model::networkDifference(init, requested))
+    throw ModelError("--init " + initCard.string() + ": " + d->what + " differs: the init model " +
+                     init.name + " has " + d->a + ", the requested " + requested.name + " has " +
+                     d->b + "; fine-tuning keeps the network and its input, so they must match");
 }
 
 // A training sample's features as the grid a prediction reads.

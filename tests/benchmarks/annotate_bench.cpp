@@ -6,7 +6,11 @@
 // the spout-outlet pass alone on the sink:
 //   build/tests/benchmarks/annotate_bench --benchmark_repetitions=3
 //     --benchmark_report_aggregates_only=true
+// SAGRID_BENCH_MODELS=DIR times another models folder instead of resources/models (a baseline
+// beside the shipped models, e.g. before and after an ensemble).
 #include <benchmark/benchmark.h>
+
+#include <cstdlib>
 
 #include "core/annotate/annotate.h"
 #include "core/annotate/spout_outlet_pass.h"
@@ -31,8 +35,9 @@ struct Fixture {
 Fixture& fixture() {
   static Fixture f = [] {
     Fixture x;
-    x.models = std::make_unique<sagrid::ModelSet>(
-        sagrid::ModelSet::load(fs::path(SAGRID_SOURCE_DIR) / "resources" / "models"));
+    const char* other = std::getenv("SAGRID_BENCH_MODELS");
+    x.models = std::make_unique<sagrid::ModelSet>(sagrid::ModelSet::load(
+        other && *other ? fs::path(other) : fs::path(SAGRID_SOURCE_DIR) / "resources" / "models"));
     const fs::path dir = fs::temp_directory_path() / "sagrid-annotate-bench";
     sagrid::gen::generateDataset({{"stove", 1, 4242}, {"sink", 1, 4242}},
                                  sagrid::gen::MeshFormat::Obj, dir);

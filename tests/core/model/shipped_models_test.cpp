@@ -31,6 +31,11 @@ TEST(ShippedModels, CardsMatchTheirWeightsAndStayUnder20MB) {
     EXPECT_EQ(card.affordanceFeatureMean.size(), static_cast<std::size_t>(card.featureChannels));
     EXPECT_FALSE(card.training.value("command", "").empty());
     total += weights.size() + fs::file_size(cardFile);
+    for (const auto& member : card.ensemble) {
+      const std::string memberWeights = readFileBytes(kModels / member.file);
+      EXPECT_EQ(sha256Hex(memberWeights), member.sha256) << member.file;
+      total += memberWeights.size();
+    }
   }
   EXPECT_LE(total, 20u * 1024 * 1024);
 }

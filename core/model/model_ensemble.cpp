@@ -1,0 +1,61 @@
+#include "core/model/model_ensemble.h"
+
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "core/common/atomic_file.h"
+#include "core/common/error.h"
+#include "core/common/sha256.h"
+#include "core/model/model_card.h"
+
+namespace sagrid::model {
+namespace fs = std::filesystem;
+
+namespace {
+void requireSame(const ModelCard& model, const ModelCard& member, const fs::path& memberCard) {
+  if (const auto d = networkDifference(model, member))
+    throw ModelError(memberCard.string() + ": the " + d->what + " is " + d->b + " but the model " +
+                     model.name + " has " + d->a + "; an ensemble's networks share one card");
+  if (!member.ensemble.empty())
+    throw ModelError(memberCard.string() + ": is itself an ensemble; add its networks one by one");
+}
+
+// <name>.member<N>.pt with the first N not yet listed nor on disk.
+std::string freeMemberFile(const ModelCard& card, const fs::path& dir) {
+  for (int n = 1;; ++n) {
+    const std::string file = card.name + ".member" + std::to_string(n) + ".pt";
+    bool listed = false;
+    for (const auto& m : card.ensemble) listed = listed || m.file == file;
+    if (!listed && !fs::exists(dir / file)) return file;
+  }
+}
+}  // namespace
+
+fs::path addEnsembleMember(const fs::path& cardFile, const fs::path& memberCardFile) {
+  ModelCard card = readModelCard(cardFile);
+  const ModelCard member = readModelCard(memberCardFile);
+  requireSame(card, member, memberCardFile);
+  const fs::path memberWeights = memberCardFile.parent_path() / member.weightsFile;
+  const std::string bytes = readFileBytes(memberWeights);
+  const std::string sha = sha256Hex(bytes);
+  if (!member.weightsSha256.empty() && sha != member.weightsSha256)
+    throw FileError(memberWeights, "weights sha256 differs from its model card " +
+                                       memberCardFile.filename().string());
+  if (sha == card.weightsSha256)
+    throw ModelError(memberCardFile.string() + ": its weights are the model's own");
+  for (const auto& m : card.ensemble)
+    if (m.sha256 == sha)
+      throw ModelError(memberCardFile.string() + ": its weights are already member " + m.file);
+  const std::string file = freeMemberFile(card, cardFile.parent_path());
+  const fs::path copied = cardFile.parent_path() / file;
+  writeFileAtomic(copied, bytes);
+  card.ensemble.push_back({file, sha});
+  nlohmann::json record = member.training;
+  record["file"] = file;
+  record["final_train_loss"] = member.metrics.value("final_train_loss", nlohmann::json());
+  card.training["ensemble"].push_back(record);
+  writeModelCard(cardFile, card);
+  return copied;
+}
+
+}  // namespace sagrid::model
