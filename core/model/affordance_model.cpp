@@ -163,12 +163,9 @@ std::vector<float> AffordanceModel::predictDistances(const FeatureGrid& features
     return torch::expm1(net->forward(batch, m_impl->mode));
   };
   torch::Tensor d = distances(m_impl->net);
-  const bool ensemble = !m_impl->card.ensemble.empty();
-  if (ensemble) {
-    for (auto& member : m_impl->members) d = d + distances(member);
-    d = d / static_cast<double>(m_impl->members.size() + 1);
-  }
-  d = d.cpu().contiguous();
+  const std::size_t networks = networkCount();
+  for (std::size_t m = 0; m + 1 < networks; ++m) d = d + distances(m_impl->members[m]);
+  d = (d / static_cast<double>(networks)).cpu().contiguous();
   return std::vector<float>(d.data_ptr<float>(), d.data_ptr<float>() + d.numel());
 }
 

@@ -6,6 +6,7 @@
 #include "core/common/atomic_file.h"
 #include "core/common/error.h"
 #include "core/common/sha256.h"
+#include "core/model/affordance_model.h"
 #include "core/model/model_card.h"
 
 namespace sagrid::model {
@@ -35,12 +36,11 @@ fs::path addEnsembleMember(const fs::path& cardFile, const fs::path& memberCardF
   ModelCard card = readModelCard(cardFile);
   const ModelCard member = readModelCard(memberCardFile);
   requireSame(card, member, memberCardFile);
-  const fs::path memberWeights = memberCardFile.parent_path() / member.weightsFile;
-  const std::string bytes = readFileBytes(memberWeights);
+  // Loading the member checks its weights against its card (sha256, every tensor's shape) before
+  // the model's card is touched.
+  AffordanceModel::load(memberCardFile);
+  const std::string bytes = readFileBytes(memberCardFile.parent_path() / member.weightsFile);
   const std::string sha = sha256Hex(bytes);
-  if (!member.weightsSha256.empty() && sha != member.weightsSha256)
-    throw FileError(memberWeights, "weights sha256 differs from its model card " +
-                                       memberCardFile.filename().string());
   if (sha == card.weightsSha256)
     throw ModelError(memberCardFile.string() + ": its weights are the model's own");
   for (const auto& m : card.ensemble)

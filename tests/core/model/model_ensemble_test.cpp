@@ -92,6 +92,15 @@ TEST(ModelEnsemble, AMemberOfAnotherModelOrTheSameWeightsIsRefused) {
     EXPECT_THAT(e.what(), HasSubstr("stove.heatsource"));
   }
   EXPECT_THROW(addEnsembleMember(card, card), ModelError);
+  // A member whose weights no longer match its own card is refused, naming its card.
+  const fs::path damaged = savedNetwork("stove.togglebutton", 2);
+  writeFileAtomic(damaged.parent_path() / "stove.togglebutton.pt", "not weights");
+  try {
+    addEnsembleMember(card, damaged);
+    ADD_FAILURE() << "damaged member weights were added";
+  } catch (const FileError& e) {
+    EXPECT_THAT(e.what(), HasSubstr(damaged.string()));
+  }
   EXPECT_EQ(readFileBytes(card), before);
   EXPECT_FALSE(fs::exists(card.parent_path() / "stove.togglebutton.member1.pt"));
 }
