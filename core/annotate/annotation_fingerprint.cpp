@@ -34,6 +34,7 @@ std::string annotateOptionsHash(const AnnotateOptions& options) {
       {"repeated_parts", options.repeatedParts},
       {"spout_outlets", options.spoutOutlets},
       {"part_ownership", options.partOwnership},
+      {"passes_version", kPointPassesVersion},
       {"coarse_to_fine",
        options.coarseToFine ? nlohmann::json(*options.coarseToFine) : nlohmann::json("card")},
       {"features", featureConfigHash(options.features)},

@@ -11,6 +11,7 @@
 #include "core/common/error.h"
 #include "core/common/log.h"
 #include "core/dataset/dataset.h"
+#include "core/eval/count_breakdown.h"
 #include "core/eval/embedding_search.h"
 #include "core/eval/report_cell.h"
 #include "core/features/feature_grid.h"
@@ -95,6 +96,9 @@ EvaluationReport evaluateModels(const ModelSet& models, const EvaluationOptions&
       const double mpu = metersPerUnit(labels);
       report.meanOccupiedVoxels += static_cast<double>(grid.voxels.size());
       nlohmann::json object = {{"id", entry.id}, {"category", category}, {"meters_per_unit", mpu}};
+      if (const auto generator = labels.object.extra.find("generator");
+          generator != labels.object.extra.end() && generator->is_object())
+        object["generator"] = *generator;
       // One field and automatic-count prediction per model: the timed part, as annotate does it.
       // Every other extraction mode below reads the same field.
       const auto categoryModels = models.forCategory(category);
@@ -292,6 +296,7 @@ std::string evaluationMarkdown(const EvaluationReport& r) {
   };
   effortRow("all: ", r.effort);
   for (const auto& [category, e] : r.effortByCategory) effortRow(category + ": ", e);
+  md << countBreakdownMarkdown(countBreakdown(r.perObject, kMethodNames[kAuto]));
   md << perObjectMarkdown(r);
   md << "\n## Object confidence (" << (r.confidenceCalibrated ? "calibrated" : "uncalibrated")
      << "): does it predict \"right with one key\"?\n\n"
@@ -335,6 +340,8 @@ nlohmann::json evaluationJson(const EvaluationReport& r) {
     j["curator_effort_by_category"][category] = effortJson(e);
   j["confidence_calibrated"] = r.confidenceCalibrated;
   j["reliability"] = toJson(r.reliability);
+  if (const auto breakdown = countBreakdown(r.perObject, kMethodNames[kAuto]); !breakdown.empty())
+    j["count_by_generator"] = countBreakdownJson(breakdown);
   j["per_object"] = r.perObject;
   return j;
 }

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "core/common/error.h"
+#include "core/eval/count_breakdown.h"
 #include "core/eval/report_cell.h"
 
 namespace sagrid {
@@ -98,6 +99,13 @@ std::string comparisonMarkdown(const std::vector<LabelledReport>& reports) {
        << reportCell(e.editsPerObject / e.handPointsPerObject, "%.2f") << " | "
        << reportCell(100 * e.oneKeyShare, "%.1f %%") << " |\n";
   }
+  std::vector<std::string> labels;
+  std::vector<CountBreakdown> breakdowns;
+  for (const auto& lr : reports) {
+    labels.push_back(lr.label);
+    breakdowns.push_back(countBreakdown(lr.report->perObject, kAutoMethod));
+  }
+  md << countBreakdownComparisonMarkdown(labels, breakdowns);
   return md.str();
 }
 

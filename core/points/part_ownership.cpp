@@ -1,6 +1,7 @@
 #include "core/points/part_ownership.h"
 
 #include <algorithm>
+#include <limits>
 #include <map>
 #include <optional>
 
@@ -23,6 +24,34 @@ void keepWhere(TypedPoints& typed, std::vector<std::optional<std::size_t>>& part
     if (keep[i]) points.push_back(typed.points[i]), parts.push_back(partOf[i]);
   typed.points = std::move(points);
   partOf = std::move(parts);
+}
+
+// A type never loses all its points to a rule: without any kept, its most confident one stays.
+void keepOneAtLeast(const std::vector<ExtractedPoint>& points, std::vector<bool>& keep) {
+  if (points.empty() || std::any_of(keep.begin(), keep.end(), [](bool k) { return k; })) return;
+  keep[std::max_element(points.begin(), points.end(),
+                        [](const ExtractedPoint& a, const ExtractedPoint& b) {
+                          return a.confidence < b.confidence;
+                        }) -
+       points.begin()] = true;
+}
+
+// Points of a type with ownParts on a foot go (PartOwnershipSettings::footHeight).
+void dropOnFeet(TypedPoints& typed, std::vector<std::optional<std::size_t>>& partOf,
+                const std::vector<ConnectedPart>& parts, int resolution,
+                const PartOwnershipSettings& settings) {
+  if (!typed.ownParts || settings.footHeight <= 0) return;
+  float bottom = std::numeric_limits<float>::infinity();
+  for (const auto& part : parts) bottom = std::min(bottom, part.box.min().z());
+  const float standing = 0.5f / static_cast<float>(resolution);
+  auto isFoot = [&](std::size_t p) {
+    return parts[p].box.min().z() <= bottom + standing &&
+           parts[p].box.max().z() <= bottom + settings.footHeight;
+  };
+  std::vector<bool> keep(partOf.size());
+  for (std::size_t i = 0; i < partOf.size(); ++i) keep[i] = !partOf[i] || !isFoot(*partOf[i]);
+  keepOneAtLeast(typed.points, keep);
+  keepWhere(typed, partOf, keep);
 }
 
 // Points of a type with ownParts on a large part go (or move onto a free small part within reach)
@@ -80,18 +109,14 @@ std::vector<TypedPoints> ownParts(std::vector<TypedPoints> byType,
     std::vector<bool> keep(points.size());
     for (std::size_t i = 0; i < keep.size(); ++i)
       keep[i] = !partOf[t][i] || owners.at(*partOf[t][i]).type == t;
-    // Every type of the category has an instance: a type that would lose all its points keeps
-    // its most confident one.
-    if (!points.empty() && std::none_of(keep.begin(), keep.end(), [](bool k) { return k; }))
-      keep[std::max_element(points.begin(), points.end(),
-                            [](const ExtractedPoint& a, const ExtractedPoint& b) {
-                              return a.confidence < b.confidence;
-                            }) -
-           points.begin()] = true;
+    // Every type of the category has an instance.
+    keepOneAtLeast(points, keep);
     keepWhere(byType[t], partOf[t], keep);
   }
   for (std::size_t t = 0; t < byType.size(); ++t)
     dropOnLargeParts(byType[t], partOf[t], t, owners, parts, touch, reach, settings);
+  for (std::size_t t = 0; t < byType.size(); ++t)
+    dropOnFeet(byType[t], partOf[t], parts, resolution, settings);
   return byType;
 }
 

@@ -24,6 +24,12 @@ struct PartOwnershipSettings {
   // distance) that no point of its type lies on and no other type owns, instead of being dropped;
   // 0 = never.
   float reachVoxels = 4.0f;
+  // Feet: small parts that stand on the object's support plane (their box reaches within
+  // half a voxel of the lowest point of every part) and rise no higher than this above it
+  // (normalized units). A knob or a burner is never a foot, yet a hot plate's four feet look like
+  // knobs to the network and are copies of one another, so the repeated-parts and mirror-pair
+  // passes multiply a point on one. 0 = no foot rule.
+  float footHeight = 0.06f;
 };
 
 // The points of one type: `ownParts` when the type's instances are parts of their own (toggle
@@ -37,7 +43,8 @@ struct TypedPoints {
 // of every type but the one of the most confident point there (the part's owner), except that a
 // type never loses all its points (its most confident one stays); then, of a type with ownParts
 // that still has a point on a small part, every point on no small part and on a large part, unless
-// it can move onto a free small part within reach. The kept points keep their order.
+// it can move onto a free small part within reach; last, of a type with ownParts, every point on a
+// foot, unless it is the type's last. The kept points keep their order.
 // `parts` in the normalized frame; `resolution` is the field's (a voxel is 1 / resolution).
 // Unchanged without parts.
 std::vector<TypedPoints> ownParts(std::vector<TypedPoints> byType,

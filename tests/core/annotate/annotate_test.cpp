@@ -122,6 +122,10 @@ TEST_F(AnnotateTest, EvalCoversTheUnionOfEveryDatasetGiven) {
   EXPECT_EQ(report.objects, 4u);  // a stove and a sink, and two more sinks
   EXPECT_EQ(report.perObject.size(), 4u);
   EXPECT_EQ(report.confidenceSignal.size(), 4u);
+  // Each generated object carries its generator settings (for the count breakdown by setting).
+  for (const auto& object : report.perObject)
+    EXPECT_TRUE(object.contains("generator") && object.at("generator").contains("kind"))
+        << object.dump();
   EXPECT_EQ(evaluatedData(report), (dir / "data").string() + " + " + (dir / "more").string());
   EXPECT_THAT(evaluationMarkdown(report), HasSubstr(evaluatedData(report)));
   // Each dataset read its features from its own cache.

@@ -144,5 +144,52 @@ TEST(PartOwnership, WithoutPartsOrPointsNothingChanges) {
   EXPECT_TRUE(ownParts({knobPoints({})}, hob.parts, kResolution)[0].points.empty());
 }
 
+// A hot plate in the normalized frame: a slab raised on four small feet, two knobs on its front
+// face (their boxes clear of the support plane), burner caps on top.
+struct HotPlate {
+  std::vector<Eigen::Vector3f> knobs{{-0.3f, -0.22f, 0.06f}, {0.3f, -0.22f, 0.06f}};
+  std::vector<Eigen::Vector3f> feet{{-0.45f, -0.15f, -0.01f},
+                                    {0.45f, -0.15f, -0.01f},
+                                    {-0.45f, 0.15f, -0.01f},
+                                    {0.45f, 0.15f, -0.01f}};
+  std::vector<ConnectedPart> parts;
+  HotPlate() {
+    Mesh mesh = test::box({-0.5f, -0.2f, 0.0f}, {0.5f, 0.2f, 0.1f});
+    for (const auto& k : knobs)
+      test::append(mesh, test::box(k - Eigen::Vector3f(0.02f, 0.02f, 0.02f),
+                                   k + Eigen::Vector3f(0.02f, 0.0f, 0.02f)));
+    for (const auto& f : feet)
+      test::append(mesh, test::box(f - Eigen::Vector3f(0.02f, 0.02f, 0.01f),
+                                   f + Eigen::Vector3f(0.02f, 0.02f, 0.01f)));
+    parts = connectedParts(mesh);
+  }
+};
+
+TEST(PartOwnership, KnobPointsOnFeetGoButATypeKeepsItsLastPoint) {
+  const HotPlate plate;
+  const auto out = ownParts({knobPoints({at(plate.knobs[0], 0.7f), at(plate.feet[0], 0.6f),
+                                         at(plate.knobs[1], 0.5f), at(plate.feet[1], 0.4f)})},
+                            plate.parts, kResolution);
+  ASSERT_EQ(out[0].points.size(), 2u);
+  EXPECT_EQ(out[0].points[0].position, plate.knobs[0]);
+  EXPECT_EQ(out[0].points[1].position, plate.knobs[1]);
+  // Only points on feet: the surest stays.
+  const auto onlyFeet = ownParts({knobPoints({at(plate.feet[2], 0.3f), at(plate.feet[3], 0.5f)})},
+                                 plate.parts, kResolution);
+  ASSERT_EQ(onlyFeet[0].points.size(), 1u);
+  EXPECT_EQ(onlyFeet[0].points[0].position, plate.feet[3]);
+  // Printed marks are no parts of their own; footHeight 0 switches the rule off.
+  EXPECT_EQ(ownParts({zonePoints({at(plate.knobs[0], 0.7f), at(plate.feet[0], 0.6f)})}, plate.parts,
+                     kResolution)[0]
+                .points.size(),
+            2u);
+  PartOwnershipSettings off;
+  off.footHeight = 0;
+  EXPECT_EQ(ownParts({knobPoints({at(plate.knobs[0], 0.7f), at(plate.feet[0], 0.6f)})}, plate.parts,
+                     kResolution, off)[0]
+                .points.size(),
+            2u);
+}
+
 }  // namespace
 }  // namespace sagrid
