@@ -10,6 +10,12 @@ namespace {
 
 constexpr int kResolution = 64;
 
+// A box from centre - below to centre + above for each centre, each a part of its own.
+void appendBoxes(Mesh& mesh, const std::vector<Eigen::Vector3f>& centres,
+                 const Eigen::Vector3f& below, const Eigen::Vector3f& above) {
+  for (const auto& c : centres) test::append(mesh, test::box(c - below, c + above));
+}
+
 // A hob in the normalized frame: a grate over the whole top (a large part), two burner caps on
 // it, and four knobs in a row on the front edge.
 struct Hob {
@@ -19,12 +25,8 @@ struct Hob {
   std::vector<ConnectedPart> parts;
   Hob() {
     Mesh mesh = test::box({-0.5f, -0.4f, -0.05f}, {0.5f, 0.5f, 0.0f});
-    for (const auto& b : burners)
-      test::append(mesh, test::box(b - Eigen::Vector3f(0.06f, 0.06f, 0.05f),
-                                   b + Eigen::Vector3f(0.06f, 0.06f, 0.0f)));
-    for (const auto& k : knobs)
-      test::append(mesh, test::box(k - Eigen::Vector3f(0.02f, 0.02f, 0.02f),
-                                   k + Eigen::Vector3f(0.02f, 0.02f, 0.0f)));
+    appendBoxes(mesh, burners, {0.06f, 0.06f, 0.05f}, {0.06f, 0.06f, 0.0f});
+    appendBoxes(mesh, knobs, {0.02f, 0.02f, 0.02f}, {0.02f, 0.02f, 0.0f});
     parts = connectedParts(mesh);
   }
 };
@@ -155,12 +157,8 @@ struct HotPlate {
   std::vector<ConnectedPart> parts;
   HotPlate() {
     Mesh mesh = test::box({-0.5f, -0.2f, 0.0f}, {0.5f, 0.2f, 0.1f});
-    for (const auto& k : knobs)
-      test::append(mesh, test::box(k - Eigen::Vector3f(0.02f, 0.02f, 0.02f),
-                                   k + Eigen::Vector3f(0.02f, 0.0f, 0.02f)));
-    for (const auto& f : feet)
-      test::append(mesh, test::box(f - Eigen::Vector3f(0.02f, 0.02f, 0.01f),
-                                   f + Eigen::Vector3f(0.02f, 0.02f, 0.01f)));
+    appendBoxes(mesh, knobs, {0.02f, 0.02f, 0.02f}, {0.02f, 0.0f, 0.02f});
+    appendBoxes(mesh, feet, {0.02f, 0.02f, 0.01f}, {0.02f, 0.02f, 0.01f});
     parts = connectedParts(mesh);
   }
 };
