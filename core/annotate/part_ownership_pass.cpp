@@ -2,6 +2,12 @@
 
 namespace sagrid {
 
+PartOwnershipSettings partOwnershipSettingsFor(const std::string& category) {
+  PartOwnershipSettings settings;
+  settings.onePointPerPart = category == "stove";
+  return settings;
+}
+
 void applyPartOwnership(std::vector<ModelPrediction>& predictions,
                         const std::vector<ConnectedPart>& parts, const FeatureGrid& features,
                         const SurfaceScene& scene, UpAxis fileUp,

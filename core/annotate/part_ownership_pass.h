@@ -6,6 +6,7 @@
 // the category has predicted; `--no-part-ownership` switches it off.
 #pragma once
 
+#include <string>
 #include <vector>
 
 #include "core/annotate/annotate.h"
@@ -13,6 +14,11 @@
 #include "core/points/part_ownership.h"
 
 namespace sagrid {
+
+// The settings for a category's objects: one point per part only on stoves (a stove's knob or
+// burner cap is one part; a sink mixer's hot and cold handles are sometimes one part with the
+// body, and on the generated wall-fixture sinks the rule lost sink knobs).
+PartOwnershipSettings partOwnershipSettingsFor(const std::string& category);
 
 // `parts` from normalizedParts (core/annotate/repeated_parts_pass.h); the surface points of the
 // kept points stay as they were.

@@ -10,8 +10,9 @@ namespace sagrid {
 
 // The version of what the passes write: part of the annotation fingerprint's options hash, so a
 // resumed batch predicts again the objects annotated before a pass changed. Raise it with every
-// change to a pass's output (2: part ownership drops knob and burner points on feet).
-inline constexpr int kPointPassesVersion = 2;
+// change to a pass's output (2: part ownership drops knob and burner points on feet; 3: and keeps
+// one point of a type per small part).
+inline constexpr int kPointPassesVersion = 3;
 
 struct PassOptions {
   // Test-time augmentation: copies averaged per model (1 = off, 8 = all). 8 by default: on the

@@ -53,7 +53,8 @@ CategoryPoints predictCategoryPoints(const std::vector<const model::AffordanceMo
     out.predictions.push_back(std::move(p));
   }
   if (passes.partOwnership && mode == InstanceMode::Auto && counts.empty())
-    applyPartOwnership(out.predictions, parts, features, scene, mesh.fileUp);
+    applyPartOwnership(out.predictions, parts, features, scene, mesh.fileUp,
+                       partOwnershipSettingsFor(category));
   return out;
 }
 

@@ -54,6 +54,21 @@ void dropOnFeet(TypedPoints& typed, std::vector<std::optional<std::size_t>>& par
   keepWhere(typed, partOf, keep);
 }
 
+// Of a type with ownParts, one point per small part: the surest (the first on ties).
+void onePointPerPart(TypedPoints& typed, std::vector<std::optional<std::size_t>>& partOf) {
+  if (!typed.ownParts) return;
+  std::map<std::size_t, std::size_t> surest;  // part -> point
+  for (std::size_t i = 0; i < partOf.size(); ++i) {
+    if (!partOf[i]) continue;
+    auto [it, added] = surest.try_emplace(*partOf[i], i);
+    if (!added && typed.points[i].confidence > typed.points[it->second].confidence) it->second = i;
+  }
+  std::vector<bool> keep(partOf.size());
+  for (std::size_t i = 0; i < partOf.size(); ++i)
+    keep[i] = !partOf[i] || surest.at(*partOf[i]) == i;
+  keepWhere(typed, partOf, keep);
+}
+
 // Points of a type with ownParts on a large part go (or move onto a free small part within reach)
 // when the type has points on small parts.
 void dropOnLargeParts(TypedPoints& typed, std::vector<std::optional<std::size_t>>& partOf,
@@ -117,6 +132,8 @@ std::vector<TypedPoints> ownParts(std::vector<TypedPoints> byType,
     dropOnLargeParts(byType[t], partOf[t], t, owners, parts, touch, reach, settings);
   for (std::size_t t = 0; t < byType.size(); ++t)
     dropOnFeet(byType[t], partOf[t], parts, resolution, settings);
+  if (settings.onePointPerPart)
+    for (std::size_t t = 0; t < byType.size(); ++t) onePointPerPart(byType[t], partOf[t]);
   return byType;
 }
 

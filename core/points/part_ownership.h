@@ -30,6 +30,9 @@ struct PartOwnershipSettings {
   // knobs to the network and are copies of one another, so the repeated-parts and mirror-pair
   // passes multiply a point on one. 0 = no foot rule.
   float footHeight = 0.06f;
+  // One knob, one burner cap: of a type's points on one small part only the surest stays (the
+  // repeated-parts and mirror-pair passes can put a second point on a knob's grip or skirt).
+  bool onePointPerPart = true;
 };
 
 // The points of one type: `ownParts` when the type's instances are parts of their own (toggle
@@ -43,8 +46,9 @@ struct TypedPoints {
 // of every type but the one of the most confident point there (the part's owner), except that a
 // type never loses all its points (its most confident one stays); then, of a type with ownParts
 // that still has a point on a small part, every point on no small part and on a large part, unless
-// it can move onto a free small part within reach; last, of a type with ownParts, every point on a
-// foot, unless it is the type's last. The kept points keep their order.
+// it can move onto a free small part within reach; then, of a type with ownParts, every point on a
+// foot, unless it is the type's last; last, of a type with ownParts, every point on a small part
+// that a surer point of its type lies on. The kept points keep their order.
 // `parts` in the normalized frame; `resolution` is the field's (a voxel is 1 / resolution).
 // Unchanged without parts.
 std::vector<TypedPoints> ownParts(std::vector<TypedPoints> byType,

@@ -46,5 +46,11 @@ TEST(PartOwnershipPass, ABurnerPointOnTheKnobGoesAndTheOthersKeepTheirSurfacePoi
   EXPECT_EQ(predictions[1].surface[0].position, knobSurface);
 }
 
+TEST(PartOwnershipPass, OnePointPerPartOnlyOnStoves) {
+  EXPECT_TRUE(partOwnershipSettingsFor("stove").onePointPerPart);
+  EXPECT_FALSE(partOwnershipSettingsFor("sink").onePointPerPart);
+  EXPECT_GT(partOwnershipSettingsFor("sink").footHeight, 0.0f);
+}
+
 }  // namespace
 }  // namespace sagrid

@@ -189,5 +189,28 @@ TEST(PartOwnership, KnobPointsOnFeetGoButATypeKeepsItsLastPoint) {
             2u);
 }
 
+TEST(PartOwnership, OnePointPerKnobTheSurestStays) {
+  const Hob hob;
+  const Eigen::Vector3f besideKnob1 = hob.knobs[1] + Eigen::Vector3f(0.01f, 0.0f, 0.0f);
+  const auto out = ownParts({knobPoints({at(hob.knobs[0], 0.7f), at(besideKnob1, 0.4f),
+                                         at(hob.knobs[1], 0.6f), at(hob.knobs[2], 0.5f)})},
+                            hob.parts, kResolution);
+  ASSERT_EQ(out[0].points.size(), 3u);
+  EXPECT_EQ(out[0].points[0].position, hob.knobs[0]);
+  EXPECT_EQ(out[0].points[1].position, hob.knobs[1]);
+  EXPECT_EQ(out[0].points[2].position, hob.knobs[2]);
+  // Zones printed on one glass top are no parts of their own; the switch turns the rule off.
+  EXPECT_EQ(ownParts({zonePoints({at(hob.knobs[1], 0.6f), at(besideKnob1, 0.4f)})}, hob.parts,
+                     kResolution)[0]
+                .points.size(),
+            2u);
+  PartOwnershipSettings off;
+  off.onePointPerPart = false;
+  EXPECT_EQ(ownParts({knobPoints({at(hob.knobs[1], 0.6f), at(besideKnob1, 0.4f)})}, hob.parts,
+                     kResolution, off)[0]
+                .points.size(),
+            2u);
+}
+
 }  // namespace
 }  // namespace sagrid
