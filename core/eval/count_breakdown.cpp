@@ -28,6 +28,16 @@ std::map<std::string, std::string> stringSettings(const nlohmann::json& generato
 
 }  // namespace
 
+const CountGroup* CountBreakdown::find(const std::string& model, const std::string& setting,
+                                       const std::string& value) const {
+  const auto m = groups.find(model);
+  if (m == groups.end()) return nullptr;
+  const auto k = m->second.find(setting);
+  if (k == m->second.end()) return nullptr;
+  const auto v = k->second.find(value);
+  return v == k->second.end() ? nullptr : &v->second;
+}
+
 CountBreakdown countBreakdown(const nlohmann::json& perObject, const std::string& method) {
   CountBreakdown all;
   for (const auto& object : perObject) {
@@ -72,10 +82,10 @@ std::string countBreakdownMarkdown(const CountBreakdown& breakdown) {
        << "|---|---|---|---|---|---|---|\n";
     for (const auto& [key, values] : settings)
       for (const auto& [value, g] : values) {
-        const double n = static_cast<double>(g.objects);
         md << "| " << key << " | " << value << " | " << g.objects << " | "
-           << reportCell(100.0 * static_cast<double>(g.right) / n, "%.0f %%") << " | " << g.fewer
-           << " | " << g.more << " | " << reportCell(static_cast<double>(g.edits) / n, "%.2f")
+           << reportCell(g.rightPercent(), "%.0f %%") << " | " << g.fewer << " | " << g.more
+           << " | "
+           << reportCell(static_cast<double>(g.edits) / static_cast<double>(g.objects), "%.2f")
            << " |\n";
       }
   }
@@ -103,13 +113,8 @@ std::string countBreakdownComparisonMarkdown(const std::vector<std::string>& lab
       for (const auto& [value, objects] : values) {
         md << "| " << model << " | " << key << " | " << value << " | " << objects << " |";
         for (const auto& b : breakdowns) {
-          double share = NAN;
-          if (const auto m = b.groups.find(model); m != b.groups.end())
-            if (const auto k = m->second.find(key); k != m->second.end())
-              if (const auto v = k->second.find(value); v != k->second.end())
-                share = 100.0 * static_cast<double>(v->second.right) /
-                        static_cast<double>(v->second.objects);
-          md << ' ' << reportCell(share, "%.0f %%") << " |";
+          const CountGroup* g = b.find(model, key, value);
+          md << ' ' << reportCell(g ? g->rightPercent() : NAN, "%.0f %%") << " |";
         }
         md << '\n';
       }

@@ -1,8 +1,8 @@
 // The automatic count broken down by how generated objects were made: for each model and each
 // generator setting recorded in the objects' labels (object.generator, e.g. a stove's `controls`:
 // front_panel, touch, ...), the share of objects whose automatic count is right, too low or too
-// high, and the curator's edits. A right-count share over 50 objects moves by about 6 points with
-// one or two objects; the breakdown says which kind of object fails, so a change can be judged by
+// high, and the curator's edits. A right-count share over 50 objects moves by 2 points with each
+// object; the breakdown says which kind of object fails, so a change can be judged by
 // the objects it was meant for. Only string settings with at least two values are broken down.
 #pragma once
 
@@ -19,12 +19,18 @@ struct CountGroup {
   std::size_t fewer = 0;  // fewer points than the ground truth
   std::size_t more = 0;   // more points
   std::size_t edits = 0;  // curator point edits on this model's type, summed
+  double rightPercent() const {
+    return 100.0 * static_cast<double>(right) / static_cast<double>(objects);
+  }
 };
 
 struct CountBreakdown {
   // model -> setting name -> setting value -> group
   std::map<std::string, std::map<std::string, std::map<std::string, CountGroup>>> groups;
   bool empty() const { return groups.empty(); }
+  // The group of one model's objects with one setting's value; nullptr when there is none.
+  const CountGroup* find(const std::string& model, const std::string& setting,
+                         const std::string& value) const;
 };
 
 // From an evaluation's per-object records (EvaluationReport::perObject: "generator", "truth",
