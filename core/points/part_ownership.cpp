@@ -36,20 +36,27 @@ void keepOneAtLeast(const std::vector<ExtractedPoint>& points, std::vector<bool>
        points.begin()] = true;
 }
 
-// Points of a type with ownParts on a foot go (PartOwnershipSettings::footHeight).
-void dropOnFeet(TypedPoints& typed, std::vector<std::optional<std::size_t>>& partOf,
-                const std::vector<ConnectedPart>& parts, int resolution,
-                const PartOwnershipSettings& settings) {
-  if (!typed.ownParts || settings.footHeight <= 0) return;
+// Which parts are feet (PartOwnershipSettings::footHeight): standing on the lowest point of every
+// part, within half a voxel, and no higher than footHeight above it. None when the rule is off.
+std::vector<bool> feetOf(const std::vector<ConnectedPart>& parts, int resolution,
+                         const PartOwnershipSettings& settings) {
+  std::vector<bool> foot(parts.size(), false);
+  if (settings.footHeight <= 0) return foot;
   float bottom = std::numeric_limits<float>::infinity();
   for (const auto& part : parts) bottom = std::min(bottom, part.box.min().z());
   const float standing = 0.5f / static_cast<float>(resolution);
-  auto isFoot = [&](std::size_t p) {
-    return parts[p].box.min().z() <= bottom + standing &&
-           parts[p].box.max().z() <= bottom + settings.footHeight;
-  };
+  for (std::size_t p = 0; p < parts.size(); ++p)
+    foot[p] = parts[p].box.min().z() <= bottom + standing &&
+              parts[p].box.max().z() <= bottom + settings.footHeight;
+  return foot;
+}
+
+// Points of a type with ownParts on a foot go, unless the type would lose its last.
+void dropOnFeet(TypedPoints& typed, std::vector<std::optional<std::size_t>>& partOf,
+                const std::vector<bool>& foot) {
+  if (!typed.ownParts) return;
   std::vector<bool> keep(partOf.size());
-  for (std::size_t i = 0; i < partOf.size(); ++i) keep[i] = !partOf[i] || !isFoot(*partOf[i]);
+  for (std::size_t i = 0; i < partOf.size(); ++i) keep[i] = !partOf[i] || !foot[*partOf[i]];
   keepOneAtLeast(typed.points, keep);
   keepWhere(typed, partOf, keep);
 }
@@ -128,12 +135,12 @@ std::vector<TypedPoints> ownParts(std::vector<TypedPoints> byType,
     keepOneAtLeast(points, keep);
     keepWhere(byType[t], partOf[t], keep);
   }
-  for (std::size_t t = 0; t < byType.size(); ++t)
+  const std::vector<bool> foot = feetOf(parts, resolution, settings);
+  for (std::size_t t = 0; t < byType.size(); ++t) {
     dropOnLargeParts(byType[t], partOf[t], t, owners, parts, touch, reach, settings);
-  for (std::size_t t = 0; t < byType.size(); ++t)
-    dropOnFeet(byType[t], partOf[t], parts, resolution, settings);
-  if (settings.onePointPerPart)
-    for (std::size_t t = 0; t < byType.size(); ++t) onePointPerPart(byType[t], partOf[t]);
+    dropOnFeet(byType[t], partOf[t], foot);
+    if (settings.onePointPerPart) onePointPerPart(byType[t], partOf[t]);
+  }
   return byType;
 }
 
