@@ -203,7 +203,8 @@ AnnotationResult annotateMeshFile(const fs::path& meshFile, const std::string& i
                                   {"object_confidence_calibrated", options.confidence.fitted},
                                   {"symmetries", options.symmetries},
                                   {"printed_zones", printed.zones.size()},
-                                  {"printed_symbols", printed.symbols.size()}};
+                                  {"printed_symbols", printed.symbols.size()},
+                                  {"touch_keys", points.touchKeys.size()}};
   if (r.categoryRetrieved && classifier && !classifier->evidence.empty())
     r.labels.extra["prediction"]["affordance_evidence"] = evidence;
   finish();

@@ -11,8 +11,8 @@ namespace sagrid {
 // The version of what the passes write: part of the annotation fingerprint's options hash, so a
 // resumed batch predicts again the objects annotated before a pass changed. Raise it with every
 // change to a pass's output (2: part ownership drops knob and burner points on feet; 3: and keeps
-// one point of a type per small part).
-inline constexpr int kPointPassesVersion = 3;
+// one point of a type per small part; 4: the touch-key pass).
+inline constexpr int kPointPassesVersion = 4;
 
 struct PassOptions {
   // Test-time augmentation: copies averaged per model (1 = off, 8 = all). 8 by default: on the
@@ -26,6 +26,9 @@ struct PassOptions {
   // The texture pass (core/annotate/printed_marks_pass.h): zones and touch symbols printed on a
   // stove's top become its heat-source and toggle points.
   bool printedMarks = true;
+  // The touch-key pass (core/annotate/touch_keys_pass.h): the flat pads of a stove's touch
+  // controls become its toggle points where the texture pass found no printed ones.
+  bool touchKeys = true;
   // The mirror-pair pass of the automatic count (core/annotate/mirror_pairs_pass.h): on a
   // mirror-symmetric object, the twin of a point whose neighbourhood has the same shape there.
   bool mirrorPairs = true;

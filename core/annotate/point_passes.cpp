@@ -6,6 +6,7 @@
 #include "core/annotate/printed_marks_pass.h"
 #include "core/annotate/repeated_parts_pass.h"
 #include "core/annotate/spout_outlet_pass.h"
+#include "core/annotate/touch_keys_pass.h"
 #include "core/geometry/surface_scene.h"
 #include "core/mesh/mesh.h"
 
@@ -21,9 +22,13 @@ CategoryPoints predictCategoryPoints(const std::vector<const model::AffordanceMo
   const SurfaceScene& scene = object.scene;
   CategoryPoints out;
   if (passes.printedMarks) out.printed = printedMarksOf(mesh, category);
-  const std::vector<ConnectedPart> parts = passes.repeatedParts || passes.partOwnership
-                                               ? normalizedParts(mesh, features.normalization)
-                                               : std::vector<ConnectedPart>{};
+  const std::vector<ConnectedPart> parts =
+      passes.repeatedParts || passes.partOwnership || passes.touchKeys
+          ? normalizedParts(mesh, features.normalization)
+          : std::vector<ConnectedPart>{};
+  if (passes.touchKeys)
+    out.touchKeys =
+        touchKeysOf(category, parts, scene, features.normalization, features.resolution);
   for (std::size_t m = 0; m < models.size(); ++m) {
     if (beforeModel) beforeModel(m);
     const auto& model = *models[m];
@@ -48,8 +53,9 @@ CategoryPoints predictCategoryPoints(const std::vector<const model::AffordanceMo
       applyRepeatedParts(p, parts, features, scene, mesh.fileUp, card.extraction);
     if (passes.spoutOutlets && modelMode != InstanceMode::Single)
       applySpoutOutlets(p, features, scene, mesh.fileUp, card.extraction);
-    applyPrintedMarks(model, p, printedMarksFor(out.printed, category, p.type), features, scene,
-                      mesh.fileUp, modelMode, n);
+    MarksForType marks = printedMarksFor(out.printed, category, p.type);
+    if (marks.circles.empty()) marks = touchKeysFor(out.touchKeys, p.type);
+    applyPrintedMarks(model, p, marks, features, scene, mesh.fileUp, modelMode, n);
     out.predictions.push_back(std::move(p));
   }
   if (passes.partOwnership && mode == InstanceMode::Auto && counts.empty())

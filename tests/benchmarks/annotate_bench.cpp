@@ -77,7 +77,8 @@ BENCHMARK(BM_FourModelsAndExtraction)
 // texture pass (printed zones and symbols; this mesh has no texture, so it costs the scan), bit
 // 32 = the mirror-pair pass of the automatic count, bit 64 = the repeated-parts pass (the mesh's
 // connected parts and the copies of each toggle button's part), bit 128 = the part-ownership pass
-// (the part under every point of every type).
+// (the part under every point of every type), bit 256 = the touch-key pass (flat pads standing
+// on the top: the parts and a few rays beside each flat one).
 void BM_AnnotateDenseEndToEnd(benchmark::State& state) {
   Fixture& f = fixture();
   const fs::path mesh = sagrid::bench::denseCopy(2);
@@ -92,6 +93,7 @@ void BM_AnnotateDenseEndToEnd(benchmark::State& state) {
   options.mirrorPairs = (additions & 32) != 0;
   options.repeatedParts = (additions & 64) != 0;
   options.partOwnership = (additions & 128) != 0;
+  options.touchKeys = (additions & 256) != 0;
   const fs::path out = sagrid::bench::benchDir() / "annotate-out";
   for (auto _ : state)
     benchmark::DoNotOptimize(
@@ -101,7 +103,8 @@ void BM_AnnotateDenseEndToEnd(benchmark::State& state) {
       (additions & 2 ? ", category classified" : ", category given") +
       (additions & 4 ? ", 8 symmetries" : ", 1 copy") + (additions & 8 ? ", coarse-to-fine" : "") +
       (additions & 16 ? ", texture pass" : "") + (additions & 32 ? ", mirror pairs" : "") +
-      (additions & 64 ? ", repeated parts" : "") + (additions & 128 ? ", part ownership" : ""));
+      (additions & 64 ? ", repeated parts" : "") + (additions & 128 ? ", part ownership" : "") +
+      (additions & 256 ? ", touch keys" : ""));
 }
 BENCHMARK(BM_AnnotateDenseEndToEnd)
     ->Arg(0)
@@ -119,6 +122,8 @@ BENCHMARK(BM_AnnotateDenseEndToEnd)
     ->Arg(127)
     ->Arg(128)
     ->Arg(255)
+    ->Arg(256)
+    ->Arg(511)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime()
     ->Iterations(2);
