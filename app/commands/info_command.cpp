@@ -6,14 +6,45 @@
 #include "app/command_registry.h"
 #include "app/commands/up_axis_option.h"
 #include "core/annotate/repeated_parts_pass.h"
+#include "core/annotate/touch_keys_pass.h"
 #include "core/features/printed_marks.h"
 #include "core/geometry/surface_scene.h"
 #include "core/grid/mesh_summary.h"
 #include "core/grid/normalization.h"
 #include "core/mesh/mesh_import.h"
-#include "core/points/touch_keys.h"
 
 namespace {
+
+void listCircles(const char* kind, const std::vector<sagrid::PrintedCircle>& circles,
+                 sagrid::UpAxis fileUp) {
+  std::printf("%s: %zu\n", kind, circles.size());
+  for (const auto& c : circles) {
+    const Eigen::Vector3f p = sagrid::zUpToFile(c.centre, fileUp);
+    std::printf("  centre (%g, %g, %g)  radius %g  support %.2f\n", p.x(), p.y(), p.z(), c.radius,
+                c.support);
+  }
+}
+
+// The small parts (those the repeated-parts and part-ownership passes reason about), with the
+// copies of each as the repeated-parts pass finds them.
+void listSmallParts(const std::vector<sagrid::ConnectedPart>& parts, const sagrid::Normalization& n,
+                    sagrid::UpAxis fileUp) {
+  const sagrid::RepeatedPartSettings settings;
+  std::vector<std::size_t> small;
+  for (std::size_t p = 0; p < parts.size(); ++p)
+    if (sagrid::isSmallPart(parts[p], settings.contact.maxPartDiagonal)) small.push_back(p);
+  std::printf("small parts: %zu of %zu\n", small.size(), parts.size());
+  for (std::size_t p : small) {
+    int copies = 0;
+    for (std::size_t q : small)
+      copies += q != p && sagrid::congruentParts(parts[p], parts[q], settings.congruenceTolerance);
+    const Eigen::Vector3f c = sagrid::zUpToFile(n.toMesh(parts[p].box.center()), fileUp);
+    const Eigen::Vector3f size = parts[p].box.sizes() / n.scale;
+    std::printf(
+        "  part %zu: %d triangles, box centre (%g, %g, %g), size (%g, %g, %g) z-up, %d copies\n", p,
+        parts[p].triangles, c.x(), c.y(), c.z(), size.x(), size.y(), size.z(), copies);
+  }
+}
 
 void setupInfo(CLI::App& root) {
   auto* cmd = root.add_subcommand(
@@ -22,7 +53,7 @@ void setupInfo(CLI::App& root) {
   struct Options {
     std::string mesh, up;
     int resolution = sagrid::kDefaultGridResolution;
-    bool json = false, marks = false, keys = false;
+    bool json = false, marks = false, keys = false, parts = false;
   };
   auto o = std::make_shared<Options>();
   cmd->add_option("mesh", o->mesh, "Mesh file (.obj .gltf .glb .fbx .dae .ply .stl)")->required();
@@ -36,38 +67,34 @@ void setupInfo(CLI::App& root) {
   cmd->add_flag("--touch-keys", o->keys,
                 "Also list the touch keys the touch-key pass finds (flat pads high on the object, "
                 "parts of their own), in the file's frame");
+  cmd->add_flag(
+      "--parts", o->parts,
+      "Also list the mesh's small parts (a knob, a cap, a handle: those the repeated-parts "
+      "and part-ownership passes reason about) and how many copies each has");
   cmd->callback([o] {
     const auto summary = sagrid::summarizeMesh(o->mesh, sagrid::ImportOptions(sagrid::parseUpAxis(o->up), /*detect=*/true),
                                                o->resolution);
     if (o->json) std::cout << sagrid::summaryJson(summary).dump(2) << "\n";
     else std::cout << sagrid::formatSummary(summary);
-    if (!o->marks && !o->keys) return;
+    if (!o->marks && !o->keys && !o->parts) return;
     const sagrid::ImportOptions import(summary.fileUp, /*detect=*/false);
     const sagrid::Mesh mesh = sagrid::importMesh(o->mesh, import);
-    auto list = [&](const char* kind, const std::vector<sagrid::PrintedCircle>& circles) {
-      std::printf("%s: %zu\n", kind, circles.size());
-      for (const auto& c : circles) {
-        const Eigen::Vector3f p = sagrid::zUpToFile(c.centre, mesh.fileUp);
-        std::printf("  centre (%g, %g, %g)  radius %g  support %.2f\n", p.x(), p.y(), p.z(), c.radius,
-                    c.support);
-      }
-    };
     if (o->marks) {
       const sagrid::PrintedMarks marks = sagrid::findPrintedMarks(mesh);
-      list("printed zones", marks.zones);
-      list("printed symbols", marks.symbols);
+      listCircles("printed zones", marks.zones, mesh.fileUp);
+      listCircles("printed symbols", marks.symbols, mesh.fileUp);
     }
+    if (!o->keys && !o->parts) return;
+    const auto normalization = sagrid::Normalization::fromMesh(mesh);
+    const auto parts = sagrid::normalizedParts(mesh, normalization);
     if (o->keys) {
-      const auto normalization = sagrid::Normalization::fromMesh(mesh);
-      std::vector<sagrid::PrintedCircle> keys;
       const sagrid::SurfaceScene scene(mesh);
-      for (const auto& key :
-           sagrid::findTouchKeys(sagrid::normalizedParts(mesh, normalization), scene, normalization,
-                                 sagrid::kDefaultGridResolution))
-        keys.push_back(
-            {normalization.toMesh(key.centre), normalization.lengthToMesh(key.radius), 1.0f});
-      list("touch keys", keys);
+      listCircles(
+          "touch keys",
+          sagrid::touchKeysOf("stove", parts, scene, normalization, sagrid::kDefaultGridResolution),
+          mesh.fileUp);
     }
+    if (o->parts) listSmallParts(parts, normalization, mesh.fileUp);
   });
 }
 

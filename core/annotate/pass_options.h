@@ -11,8 +11,9 @@ namespace sagrid {
 // The version of what the passes write: part of the annotation fingerprint's options hash, so a
 // resumed batch predicts again the objects annotated before a pass changed. Raise it with every
 // change to a pass's output (2: part ownership drops knob and burner points on feet; 3: and keeps
-// one point of a type per small part; 4: the touch-key pass).
-inline constexpr int kPointPassesVersion = 4;
+// one point of a type per small part; 4: the touch-key pass; 5: on stoves, repeated parts as close
+// as their spacing).
+inline constexpr int kPointPassesVersion = 5;
 
 struct PassOptions {
   // Test-time augmentation: copies averaged per model (1 = off, 8 = all). 8 by default: on the

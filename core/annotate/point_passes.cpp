@@ -50,7 +50,8 @@ CategoryPoints predictCategoryPoints(const std::vector<const model::AffordanceMo
                        passes.anchoredPairs ? mirrorAnchors(out.predictions, p.type)
                                             : std::vector<Eigen::Vector3f>{});
     if (passes.repeatedParts && modelMode == InstanceMode::Auto)
-      applyRepeatedParts(p, parts, features, scene, mesh.fileUp, card.extraction);
+      applyRepeatedParts(p, parts, features, scene, mesh.fileUp, card.extraction,
+                         repeatedPartSettingsFor(category));
     if (passes.spoutOutlets && modelMode != InstanceMode::Single)
       applySpoutOutlets(p, features, scene, mesh.fileUp, card.extraction);
     MarksForType marks = printedMarksFor(out.printed, category, p.type);

@@ -17,6 +17,12 @@ std::vector<ConnectedPart> normalizedParts(const Mesh& mesh, const Normalization
   return parts;
 }
 
+RepeatedPartSettings repeatedPartSettingsFor(const std::string& category) {
+  RepeatedPartSettings settings;
+  settings.separationBySpacing = category == "stove";
+  return settings;
+}
+
 void applyRepeatedParts(ModelPrediction& prediction, const std::vector<ConnectedPart>& parts,
                         const FeatureGrid& features, const SurfaceScene& scene, UpAxis fileUp,
                         const ExtractionSettings& extraction,

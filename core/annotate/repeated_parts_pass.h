@@ -4,6 +4,7 @@
 // it after the mirror pairs and before the printed marks; `--no-repeated-parts` switches it off.
 #pragma once
 
+#include <string>
 #include <vector>
 
 #include "core/annotate/annotate.h"
@@ -14,6 +15,10 @@ namespace sagrid {
 
 // The connected parts of `mesh` (z-up mesh frame) in the normalized frame of `normalization`.
 std::vector<ConnectedPart> normalizedParts(const Mesh& mesh, const Normalization& normalization);
+
+// The settings for a category's objects: copies as close as their spacing only on stoves
+// (RepeatedPartSettings::separationBySpacing).
+RepeatedPartSettings repeatedPartSettingsFor(const std::string& category);
 
 // Adds the points on copies to `prediction` (points and surface), and moves a point onto a nearby
 // pair of equal parts (re-projected), when it is of toggle buttons;

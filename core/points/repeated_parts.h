@@ -15,6 +15,10 @@
 
 namespace sagrid {
 
+// The share of a copy's spacing within which another point makes it taken
+// (RepeatedPartSettings::separationBySpacing).
+constexpr float kSpacingShare = 0.75f;
+
 struct RepeatedPartSettings {
   // The small parts a point belongs to: a knob, a handle, a burner cap, not a panel or the cabinet.
   PartContact contact;
@@ -29,6 +33,11 @@ struct RepeatedPartSettings {
   // touchVoxels of its box: the spokes of one cross handle are copies of one another too (on the
   // 300 generated wall-fixture sinks, curator edits 0.76 -> 0.73 per object with the radius).
   int separationVoxels = 3;
+  // Instead of the suppression radius, at most kSpacingShare of the distance from the copy to the
+  // nearest other copy of its family (at least separationVoxels): a range's knobs can stand closer
+  // together than the count's radius, and with it a row with a point on every other knob got no
+  // more. Off where one instance is several copies (the spokes of a cross handle).
+  bool separationBySpacing = false;
   // A point on no small part (a handle predicted at the spout's foot, on the spout or the basin)
   // moves to the nearest small part within this many voxels that has exactly one copy (a hot and
   // a cold handle) where the field is low enough, and its copy gets a point; 0 = never.

@@ -1,12 +1,14 @@
 // End-to-end: `sagrid info` and `sagrid voxelize` run as a user would, on the real-dev objects
 // and on bad input (one line naming the file, exit code != 0, no output file left behind).
-#include <fstream>
-
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+
+#include <fstream>
 #include <nlohmann/json.hpp>
 
 #include "core/io/npz.h"
+#include "core/mesh/mesh_export.h"
+#include "support/analytic_meshes.h"
 #include "support/import_errors.h"
 #include "support/test_paths.h"
 
@@ -157,6 +159,26 @@ TEST(GeometryCli, HelpAndUpOption) {
   EXPECT_EQ(report["file_up"], "y");
   EXPECT_NEAR(report["bounds"]["max"][2].get<double>(), 2.0, 1e-6);  // file y became z
   EXPECT_NE(runSagrid("info " + shellQuote(mesh.string()) + " --up w").exitCode, 0);
+}
+
+TEST(InfoCommand, ListsTouchKeysAndSmallParts) {
+  // A cooktop (60 x 40 x 20 cm, z up) with two touch keys on its top and a knob on its front.
+  Mesh cooktop = test::box({-0.3f, -0.2f, 0.0f}, {0.3f, 0.2f, 0.2f});
+  for (float x : {-0.1f, 0.1f})
+    test::append(cooktop, test::box({x - 0.01f, 0.0f, 0.2f}, {x + 0.01f, 0.016f, 0.202f}));
+  test::append(cooktop, test::box({0.2f, -0.23f, 0.08f}, {0.24f, -0.2f, 0.12f}));
+  const fs::path dir = test::freshTempDir();
+  exportMesh(cooktop, dir / "cooktop.obj");
+  const auto r = runSagrid("info " + shellQuote((dir / "cooktop.obj").string()) +
+                           " --up z --touch-keys --parts");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("touch keys: 2\n  centre (-0.1, 0.008, 0.202)"));
+  EXPECT_THAT(r.output, HasSubstr("small parts: 3 of 4"));
+  EXPECT_THAT(r.output, HasSubstr("12 triangles, box centre (0.22, -0.215, 0.1), size (0.04, 0.03, "
+                                  "0.04) z-up, 0 copies"));
+  EXPECT_THAT(r.output, HasSubstr("part 1: 12 triangles, box centre (-0.1, 0.008, 0.201), size "
+                                  "(0.02, 0.016, 0.002"));
+  EXPECT_THAT(r.output, HasSubstr("z-up, 1 copies\n  part 2"));
 }
 
 }  // namespace

@@ -58,5 +58,10 @@ TEST(RepeatedPartsPass, LeavesOtherTypesAsTheyAre) {
   EXPECT_EQ(p.surface.size(), 1u);
 }
 
+TEST(RepeatedPartsPass, CopiesAsCloseAsTheirSpacingOnlyOnStoves) {
+  EXPECT_TRUE(repeatedPartSettingsFor("stove").separationBySpacing);
+  EXPECT_FALSE(repeatedPartSettingsFor("sink").separationBySpacing);
+}
+
 }  // namespace
 }  // namespace sagrid

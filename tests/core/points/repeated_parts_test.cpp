@@ -91,6 +91,27 @@ TEST(RepeatedParts, NoPointOnACopyWithinTheSuppressionRadius) {
             4u);
 }
 
+TEST(RepeatedParts, BySpacingKnobsCloserThanTheSuppressionRadiusAllGetPoints) {
+  // Points on every other knob of the row, 6 voxels (0.19) apart, with a suppression radius of
+  // 0.25: the knobs between are within the radius of a point, but farther than 0.75 of their
+  // spacing from it.
+  const auto knobs = knobRow();
+  const auto field = test::plateField(knobs);
+  ExtractionSettings wide;
+  wide.nmsRadius = 0.25f;
+  const std::vector<ExtractedPoint> everyOther{test::pointOnField(field, knobs[0]),
+                                               test::pointOnField(field, knobs[2])};
+  const auto parts = panelWithKnobs(knobs);
+  EXPECT_EQ(completeRepeatedParts(field, everyOther, parts, wide).size(), 2u);
+  RepeatedPartSettings bySpacing;
+  bySpacing.separationBySpacing = true;
+  const auto out = completeRepeatedParts(field, everyOther, parts, wide, bySpacing);
+  ASSERT_EQ(out.size(), 4u);
+  for (const auto& k : knobs) EXPECT_LT(test::nearestExtracted(out, k), 1e-4f);
+  // A copy with a point on it still gets no second one.
+  EXPECT_EQ(completeRepeatedParts(field, out, parts, wide, bySpacing).size(), 4u);
+}
+
 TEST(RepeatedParts, TheTrianglesOfASoupAreNoInstances) {
   // 20 000 equal single triangles over the plate (a triangle soup, as some scans and STL exports
   // are): each is a part and a copy of all the others, but too simple to be a knob.
