@@ -5,6 +5,7 @@ namespace sagrid {
 PartOwnershipSettings partOwnershipSettingsFor(const std::string& category) {
   PartOwnershipSettings settings;
   settings.onePointPerPart = category == "stove";
+  if (category != "stove") settings.strayRowSpacings = 0.0f;
   return settings;
 }
 

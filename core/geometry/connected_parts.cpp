@@ -134,6 +134,21 @@ bool congruentParts(const ConnectedPart& a, const ConnectedPart& b, float tolera
   return (a.spread - b.spread).cwiseAbs().maxCoeff() <= tolerance * spreadScale;
 }
 
+PartCopies::PartCopies(const std::vector<ConnectedPart>& parts, float tolerance)
+    : m_parts(parts), m_tolerance(tolerance) {
+  for (std::size_t p = 0; p < parts.size(); ++p)
+    if (parts[p].triangles >= kMinInstanceTriangles) m_groups[parts[p].triangles].push_back(p);
+}
+
+std::vector<std::size_t> PartCopies::of(std::size_t p) const {
+  std::vector<std::size_t> out;
+  const auto group = m_groups.find(m_parts[p].triangles);
+  if (group == m_groups.end()) return out;
+  for (std::size_t q : group->second)
+    if (q != p && congruentParts(m_parts[p], m_parts[q], m_tolerance)) out.push_back(q);
+  return out;
+}
+
 bool isSmallPart(const ConnectedPart& part, float maxDiagonal) {
   return !part.box.isEmpty() && part.box.diagonal().norm() <= maxDiagonal;
 }

@@ -8,6 +8,7 @@
 #include <Eigen/Geometry>
 #include <limits>
 #include <optional>
+#include <unordered_map>
 #include <vector>
 
 namespace sagrid {
@@ -31,6 +32,30 @@ std::vector<ConnectedPart> connectedParts(const Mesh& mesh);
 // Whether `b` is a copy of `a` up to a rigid motion or a mirror: the same triangle count, and
 // area and spread equal within `tolerance` (relative; the spread against a's largest).
 bool congruentParts(const ConnectedPart& a, const ConnectedPart& b, float tolerance);
+
+// A knob, a handle or a cap has a few faces at least: single triangles and quads (decals, the
+// pieces of a triangle soup) are never one instance, and a soup of them would make every copy
+// search quadratic.
+constexpr int kMinInstanceTriangles = 8;
+
+// The tolerance copies are found with (congruentParts): a knob turned to another setting
+// voxelizes and rounds a little differently.
+constexpr float kCopyTolerance = 0.05f;
+
+// The parts of an object grouped by triangle count (copies have the same), so that finding a
+// part's copies (congruentParts within `tolerance`) reads only its group. Parts of fewer than
+// kMinInstanceTriangles have none. `parts` must outlive it.
+class PartCopies {
+ public:
+  PartCopies(const std::vector<ConnectedPart>& parts, float tolerance);
+  // The other parts that are copies of part p.
+  std::vector<std::size_t> of(std::size_t p) const;
+
+ private:
+  const std::vector<ConnectedPart>& m_parts;
+  float m_tolerance;
+  std::unordered_map<int, std::vector<std::size_t>> m_groups;
+};
 
 // The largest box diagonal of a part that can be one instance (a knob, a handle, a burner cap, not
 // a panel, the grate or the cabinet), in the normalized frame (largest extent 1).

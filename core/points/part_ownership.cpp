@@ -1,6 +1,7 @@
 #include "core/points/part_ownership.h"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <map>
 #include <optional>
@@ -76,6 +77,48 @@ void onePointPerPart(TypedPoints& typed, std::vector<std::optional<std::size_t>>
   keepWhere(typed, partOf, keep);
 }
 
+// The largest family of copies (a part and its copies) every member of which has a point of the
+// type, with at least three members; empty when there is none.
+std::vector<std::size_t> fullRowOf(const std::vector<std::optional<std::size_t>>& partOf,
+                                   const PartCopies& copies) {
+  std::vector<std::size_t> best;
+  for (const auto& part : partOf) {
+    if (!part) continue;
+    std::vector<std::size_t> family = copies.of(*part);
+    family.push_back(*part);
+    const bool full = std::all_of(family.begin(), family.end(), [&](std::size_t member) {
+      return std::find(partOf.begin(), partOf.end(), member) != partOf.end();
+    });
+    if (full && family.size() >= 3 && family.size() > best.size()) best = std::move(family);
+  }
+  return best;
+}
+
+// Points of a type with ownParts farther than strayRowSpacings x the row's spacing from every
+// part of a full row go.
+void dropStrays(TypedPoints& typed, std::vector<std::optional<std::size_t>>& partOf,
+                const std::vector<ConnectedPart>& parts, const PartCopies& copies,
+                const PartOwnershipSettings& settings) {
+  if (!typed.ownParts || settings.strayRowSpacings <= 0) return;
+  const std::vector<std::size_t> row = fullRowOf(partOf, copies);
+  if (row.empty()) return;
+  std::vector<float> nearest;
+  for (std::size_t a : row) {
+    float d = std::numeric_limits<float>::infinity();
+    for (std::size_t b : row)
+      if (a != b) d = std::min(d, (parts[a].centroid - parts[b].centroid).norm());
+    nearest.push_back(d);
+  }
+  std::nth_element(nearest.begin(), nearest.begin() + nearest.size() / 2, nearest.end());
+  const float reach = settings.strayRowSpacings * nearest[nearest.size() / 2];
+  std::vector<bool> keep(partOf.size());
+  for (std::size_t i = 0; i < partOf.size(); ++i)
+    keep[i] = std::any_of(row.begin(), row.end(), [&](std::size_t member) {
+      return (typed.points[i].position - parts[member].centroid).norm() <= reach;
+    });
+  keepWhere(typed, partOf, keep);
+}
+
 // Points of a type with ownParts on a large part go (or move onto a free small part within reach)
 // when the type has points on small parts.
 void dropOnLargeParts(TypedPoints& typed, std::vector<std::optional<std::size_t>>& partOf,
@@ -136,10 +179,12 @@ std::vector<TypedPoints> ownParts(std::vector<TypedPoints> byType,
     keepWhere(byType[t], partOf[t], keep);
   }
   const std::vector<bool> foot = feetOf(parts, resolution, settings);
+  const PartCopies copies(parts, kCopyTolerance);
   for (std::size_t t = 0; t < byType.size(); ++t) {
     dropOnLargeParts(byType[t], partOf[t], t, owners, parts, touch, reach, settings);
     dropOnFeet(byType[t], partOf[t], foot);
     if (settings.onePointPerPart) onePointPerPart(byType[t], partOf[t]);
+    dropStrays(byType[t], partOf[t], parts, copies, settings);
   }
   return byType;
 }

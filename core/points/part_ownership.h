@@ -33,6 +33,11 @@ struct PartOwnershipSettings {
   // One knob, one burner cap: of a type's points on one small part only the surest stays (the
   // repeated-parts and mirror-pair passes can put a second point on a knob's grip or skirt).
   bool onePointPerPart = true;
+  // Strays from a full row: when every copy of one part (at least three: a range's knobs) has a
+  // point of a type, that type's points farther than this many times the row's spacing (the
+  // median distance from a copy to the nearest other) from every copy go: the network takes a
+  // display or a badge at the back for one more knob. 0 = no such rule.
+  float strayRowSpacings = 2.5f;
 };
 
 // The points of one type: `ownParts` when the type's instances are parts of their own (toggle
@@ -47,8 +52,9 @@ struct TypedPoints {
 // type never loses all its points (its most confident one stays); then, of a type with ownParts
 // that still has a point on a small part, every point on no small part and on a large part, unless
 // it can move onto a free small part within reach; then, of a type with ownParts, every point on a
-// foot, unless it is the type's last; last, of a type with ownParts, every point on a small part
-// that a surer point of its type lies on. The kept points keep their order.
+// foot, unless it is the type's last; then, of a type with ownParts, every point on a small part
+// that a surer point of its type lies on; last, of a type with ownParts, the strays from a full
+// row (strayRowSpacings). The kept points keep their order.
 // `parts` in the normalized frame; `resolution` is the field's (a voxel is 1 / resolution).
 // Unchanged without parts.
 std::vector<TypedPoints> ownParts(std::vector<TypedPoints> byType,

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
-#include <unordered_map>
 
 #include "core/points/field_lookup.h"
 
@@ -12,36 +11,6 @@ namespace sagrid {
 namespace {
 // Where a new point's field is read: the smallest predicted distance within this many voxels.
 constexpr int kFieldRadius = 2;
-
-// A knob, a handle or a cap has a few faces at least: single triangles and quads (decals, the
-// pieces of a triangle soup) are never one instance, and a soup of them would make every copy
-// search quadratic.
-constexpr int kMinPartTriangles = 8;
-
-// The parts of an object grouped by triangle count (copies have the same), so that finding a
-// part's copies reads only its group.
-class PartCopies {
- public:
-  PartCopies(const std::vector<ConnectedPart>& parts, float tolerance)
-      : m_parts(parts), m_tolerance(tolerance) {
-    for (std::size_t p = 0; p < parts.size(); ++p)
-      if (parts[p].triangles >= kMinPartTriangles) m_groups[parts[p].triangles].push_back(p);
-  }
-  // The other parts that are copies of part p.
-  std::vector<std::size_t> of(std::size_t p) const {
-    std::vector<std::size_t> out;
-    const auto group = m_groups.find(m_parts[p].triangles);
-    if (group == m_groups.end()) return out;
-    for (std::size_t q : group->second)
-      if (q != p && congruentParts(m_parts[p], m_parts[q], m_tolerance)) out.push_back(q);
-    return out;
-  }
-
- private:
-  const std::vector<ConnectedPart>& m_parts;
-  float m_tolerance;
-  std::unordered_map<int, std::vector<std::size_t>> m_groups;
-};
 
 // The small parts whose grown box holds a point: whether there are any, and the one it repeats
 // (of those with a copy, the one with the largest area).

@@ -22,9 +22,8 @@ constexpr float kSpacingShare = 0.75f;
 struct RepeatedPartSettings {
   // The small parts a point belongs to: a knob, a handle, a burner cap, not a panel or the cabinet.
   PartContact contact;
-  // Copies: congruentParts within this relative tolerance (a knob turned to another setting
-  // voxelizes and rounds a little differently).
-  float congruenceTolerance = 0.05f;
+  // Copies: congruentParts within this relative tolerance.
+  float congruenceTolerance = kCopyTolerance;
   // The field at a copy's point: its smallest predicted distance within two voxels must not
   // exceed the point's own by more than this (normalized units); < 0 = no condition.
   float maxDistanceAbovePoint = 0.05f;

@@ -85,5 +85,35 @@ TEST(ConnectedParts, APointLiesOnThePartWhoseBoxIsNearestTheSmallestWhereBoxesHo
   EXPECT_FALSE(isSmallPart(parts[door], 0.3f));
 }
 
+TEST(ConnectedParts, PartCopiesAreTheCongruentOthersAndNoneForDecals) {
+  Mesh mesh;
+  for (float x : {0.0f, 1.0f, 2.0f})
+    test::append(mesh, test::box({x, 0, 0}, {x + 0.2f, 0.2f, 0.2f}));
+  test::append(mesh, test::box({3, 0, 0}, {3.4f, 0.2f, 0.2f}));  // another shape
+  for (float x : {0.0f, 1.0f}) {  // two equal single triangles: decals
+    const int base = static_cast<int>(mesh.positions.size());
+    for (const Eigen::Vector3f& p :
+         {Eigen::Vector3f(x, 5, 0), Eigen::Vector3f(x + 0.1f, 5, 0), Eigen::Vector3f(x, 5.1f, 0)}) {
+      mesh.positions.push_back(p);
+      mesh.normals.push_back(Eigen::Vector3f::UnitZ());
+    }
+    mesh.triangles.emplace_back(base, base + 1, base + 2);
+  }
+  const auto parts = connectedParts(mesh);
+  ASSERT_EQ(parts.size(), 6u);
+  const PartCopies copies(parts, kCopyTolerance);
+  std::size_t boxCopies = 0, decalCopies = 0;
+  for (std::size_t p = 0; p < parts.size(); ++p) {
+    if (parts[p].triangles == 1)
+      decalCopies += copies.of(p).size();
+    else if (parts[p].box.sizes().x() < 0.3f)
+      boxCopies += copies.of(p).size();
+    else
+      EXPECT_TRUE(copies.of(p).empty());
+  }
+  EXPECT_EQ(boxCopies, 6u);  // each of three boxes has the two others
+  EXPECT_EQ(decalCopies, 0u);
+}
+
 }  // namespace
 }  // namespace sagrid

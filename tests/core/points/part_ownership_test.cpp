@@ -212,5 +212,33 @@ TEST(PartOwnership, OnePointPerKnobTheSurestStays) {
             2u);
 }
 
+TEST(PartOwnership, AStrayFromAFullRowOfKnobsGoes) {
+  // Every knob of the row (0.2 apart) has a point; one more floats 1.4 away (a display at the
+  // back), another 0.45 away, within 2.5 spacings of the row.
+  const Hob hob;
+  const Eigen::Vector3f stray(0.0f, 0.9f, 0.3f), beside(0.75f, -0.45f, 0.0f);
+  std::vector<ExtractedPoint> points;
+  for (const auto& k : hob.knobs) points.push_back(at(k, 0.6f));
+  points.push_back(at(stray, 0.9f));
+  points.push_back(at(beside, 0.5f));
+  const auto out = ownParts({knobPoints(points)}, hob.parts, kResolution);
+  ASSERT_EQ(out[0].points.size(), 5u);
+  for (const auto& p : out[0].points) EXPECT_NE(p.position, stray);
+  PartOwnershipSettings noRule;
+  noRule.strayRowSpacings = 0.0f;
+  EXPECT_EQ(ownParts({knobPoints(points)}, hob.parts, kResolution, noRule)[0].points.size(), 6u);
+}
+
+TEST(PartOwnership, WithoutAFullRowAStrayStays) {
+  // Three of the four knobs have a point: the row is not complete, so nothing says the stray is
+  // not a knob of another shape.
+  const Hob hob;
+  const Eigen::Vector3f stray(0.0f, 0.9f, 0.3f);
+  const auto out = ownParts({knobPoints({at(hob.knobs[0], 0.6f), at(hob.knobs[1], 0.6f),
+                                         at(hob.knobs[2], 0.6f), at(stray, 0.9f)})},
+                            hob.parts, kResolution);
+  EXPECT_EQ(out[0].points.size(), 4u);
+}
+
 }  // namespace
 }  // namespace sagrid
