@@ -34,15 +34,14 @@ void listSmallParts(const std::vector<sagrid::ConnectedPart>& parts, const sagri
   for (std::size_t p = 0; p < parts.size(); ++p)
     if (sagrid::isSmallPart(parts[p], settings.contact.maxPartDiagonal)) small.push_back(p);
   std::printf("small parts: %zu of %zu\n", small.size(), parts.size());
+  const sagrid::PartCopies copies(parts, settings.congruenceTolerance);
   for (std::size_t p : small) {
-    int copies = 0;
-    for (std::size_t q : small)
-      copies += q != p && sagrid::congruentParts(parts[p], parts[q], settings.congruenceTolerance);
     const Eigen::Vector3f c = sagrid::zUpToFile(n.toMesh(parts[p].box.center()), fileUp);
     const Eigen::Vector3f size = parts[p].box.sizes() / n.scale;
     std::printf(
-        "  part %zu: %d triangles, box centre (%g, %g, %g), size (%g, %g, %g) z-up, %d copies\n", p,
-        parts[p].triangles, c.x(), c.y(), c.z(), size.x(), size.y(), size.z(), copies);
+        "  part %zu: %d triangles, box centre (%g, %g, %g), size (%g, %g, %g) z-up, %zu copies\n",
+        p, parts[p].triangles, c.x(), c.y(), c.z(), size.x(), size.y(), size.z(),
+        copies.of(p).size());
   }
 }
 

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <limits>
 #include <numeric>
 #include <unordered_map>
 
@@ -147,6 +148,20 @@ std::vector<std::size_t> PartCopies::of(std::size_t p) const {
   for (std::size_t q : group->second)
     if (q != p && congruentParts(m_parts[p], m_parts[q], m_tolerance)) out.push_back(q);
   return out;
+}
+
+std::vector<std::size_t> PartCopies::familyOf(std::size_t p) const {
+  std::vector<std::size_t> family = of(p);
+  family.push_back(p);
+  return family;
+}
+
+float nearestCentroidDistance(std::size_t p, const std::vector<std::size_t>& family,
+                              const std::vector<ConnectedPart>& parts) {
+  float nearest = std::numeric_limits<float>::infinity();
+  for (std::size_t q : family)
+    if (q != p) nearest = std::min(nearest, (parts[p].centroid - parts[q].centroid).norm());
+  return nearest;
 }
 
 bool isSmallPart(const ConnectedPart& part, float maxDiagonal) {

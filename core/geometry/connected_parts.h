@@ -50,12 +50,20 @@ class PartCopies {
   PartCopies(const std::vector<ConnectedPart>& parts, float tolerance);
   // The other parts that are copies of part p.
   std::vector<std::size_t> of(std::size_t p) const;
+  // Part p's family: its copies, then p.
+  std::vector<std::size_t> familyOf(std::size_t p) const;
 
  private:
   const std::vector<ConnectedPart>& m_parts;
   float m_tolerance;
   std::unordered_map<int, std::vector<std::size_t>> m_groups;
 };
+
+// How far part p's centroid lies from the nearest centroid of the other parts of `family` (a row
+// of copies: its spacing at p); p itself is skipped where it is listed. Infinity when there is no
+// other.
+float nearestCentroidDistance(std::size_t p, const std::vector<std::size_t>& family,
+                              const std::vector<ConnectedPart>& parts);
 
 // The largest box diagonal of a part that can be one instance (a knob, a handle, a burner cap, not
 // a panel, the grate or the cabinet), in the normalized frame (largest extent 1).

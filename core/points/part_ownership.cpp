@@ -84,8 +84,7 @@ std::vector<std::size_t> fullRowOf(const std::vector<std::optional<std::size_t>>
   std::vector<std::size_t> best;
   for (const auto& part : partOf) {
     if (!part) continue;
-    std::vector<std::size_t> family = copies.of(*part);
-    family.push_back(*part);
+    std::vector<std::size_t> family = copies.familyOf(*part);
     const bool full = std::all_of(family.begin(), family.end(), [&](std::size_t member) {
       return std::find(partOf.begin(), partOf.end(), member) != partOf.end();
     });
@@ -103,12 +102,7 @@ void dropStrays(TypedPoints& typed, std::vector<std::optional<std::size_t>>& par
   const std::vector<std::size_t> row = fullRowOf(partOf, copies);
   if (row.empty()) return;
   std::vector<float> nearest;
-  for (std::size_t a : row) {
-    float d = std::numeric_limits<float>::infinity();
-    for (std::size_t b : row)
-      if (a != b) d = std::min(d, (parts[a].centroid - parts[b].centroid).norm());
-    nearest.push_back(d);
-  }
+  for (std::size_t member : row) nearest.push_back(nearestCentroidDistance(member, row, parts));
   std::nth_element(nearest.begin(), nearest.begin() + nearest.size() / 2, nearest.end());
   const float reach = settings.strayRowSpacings * nearest[nearest.size() / 2];
   std::vector<bool> keep(partOf.size());

@@ -52,16 +52,6 @@ std::optional<std::size_t> nearbyPairedPart(const Eigen::Vector3f& point,
   return best;
 }
 
-// How far a copy lies from the nearest other member of its family (the seed part and its copies).
-float spacingOf(std::size_t copy, std::size_t seed, const std::vector<std::size_t>& family,
-                const std::vector<ConnectedPart>& parts) {
-  const Eigen::Vector3f& c = parts[copy].centroid;
-  float spacing = (c - parts[seed].centroid).norm();
-  for (std::size_t r : family)
-    if (r != copy) spacing = std::min(spacing, (c - parts[r].centroid).norm());
-  return spacing;
-}
-
 // Where the point at `offset` from `part`'s centroid goes on `copy`.
 Eigen::Vector3f pointOnCopy(const ConnectedPart& part, const ConnectedPart& copy,
                             const Eigen::Vector3f& offset, float tolerance) {
@@ -104,14 +94,15 @@ std::vector<ExtractedPoint> completeRepeatedParts(const PredictedField& field,
     if (!seed) continue;
     const ConnectedPart& part = parts[*seed];
     const Eigen::Vector3f offset = p.position - part.centroid;
-    const auto& family = copies.of(*seed);
-    for (std::size_t q : family) {
+    const std::vector<std::size_t> family = copies.familyOf(*seed);
+    for (std::size_t q : copies.of(*seed)) {
       const ConnectedPart& copy = parts[q];
       const Eigen::Vector3f onCopy = pointOnCopy(part, copy, offset, settings.congruenceTolerance);
       const float apart =
           settings.separationBySpacing
-              ? std::max(static_cast<float>(settings.separationVoxels) * voxel,
-                         std::min(separation, kSpacingShare * spacingOf(q, *seed, family, parts)))
+              ? std::max(
+                    static_cast<float>(settings.separationVoxels) * voxel,
+                    std::min(separation, kSpacingShare * nearestCentroidDistance(q, family, parts)))
               : separation;
       const bool taken = std::any_of(out.begin(), out.end(), [&](const ExtractedPoint& o) {
         return (o.position - onCopy).norm() <= apart ||

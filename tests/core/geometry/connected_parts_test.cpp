@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "core/mesh/mesh.h"
 #include "support/analytic_meshes.h"
 
@@ -113,6 +115,14 @@ TEST(ConnectedParts, PartCopiesAreTheCongruentOthersAndNoneForDecals) {
   }
   EXPECT_EQ(boxCopies, 6u);  // each of three boxes has the two others
   EXPECT_EQ(decalCopies, 0u);
+  // The boxes 1 apart: a family of three, each 1 from its nearest other.
+  std::size_t first = 0;
+  while (parts[first].triangles != 12 || parts[first].box.sizes().x() > 0.3f) ++first;
+  const auto family = copies.familyOf(first);
+  ASSERT_EQ(family.size(), 3u);
+  EXPECT_EQ(family.back(), first);
+  for (std::size_t p : family) EXPECT_NEAR(nearestCentroidDistance(p, family, parts), 1.0f, 1e-5f);
+  EXPECT_TRUE(std::isinf(nearestCentroidDistance(first, {first}, parts)));
 }
 
 }  // namespace
