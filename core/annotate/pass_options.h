@@ -13,7 +13,7 @@ namespace sagrid {
 // change to a pass's output (2: part ownership drops knob and burner points on feet; 3: and keeps
 // one point of a type per small part; 4: the touch-key pass; 5: on stoves, repeated parts as close
 // as their spacing; 6: on stoves, part ownership drops strays from a full row).
-inline constexpr int kPointPassesVersion = 6;
+inline constexpr int kPointPassesVersion = 7;
 
 struct PassOptions {
   // Test-time augmentation: copies averaged per model (1 = off, 8 = all). 8 by default: on the

@@ -14,6 +14,12 @@ using PartOf = std::vector<std::vector<std::optional<std::size_t>>>;  // per typ
 struct Owner {
   std::size_t type;
   float confidence;
+  bool fullRow;  // the type has a point on every copy of the part
+  // A type with a point on every knob of a row owns them over a surer point of another type (a
+  // burner point on two knobs of a range's seven).
+  bool beats(const Owner& other) const {
+    return fullRow != other.fullRow ? fullRow : confidence > other.confidence;
+  }
 };
 using Owners = std::map<std::size_t, Owner>;  // by small part
 
@@ -79,37 +85,57 @@ void onePointPerPart(TypedPoints& typed, std::vector<std::optional<std::size_t>>
 
 // The largest family of copies (a part and its copies) every member of which has a point of the
 // type, with at least three members; empty when there is none.
-std::vector<std::size_t> fullRowOf(const std::vector<std::optional<std::size_t>>& partOf,
-                                   const PartCopies& copies) {
-  std::vector<std::size_t> best;
-  for (const auto& part : partOf) {
-    if (!part) continue;
-    std::vector<std::size_t> family = copies.familyOf(*part);
-    const bool full = std::all_of(family.begin(), family.end(), [&](std::size_t member) {
-      return std::find(partOf.begin(), partOf.end(), member) != partOf.end();
-    });
-    if (full && family.size() >= 3 && family.size() > best.size()) best = std::move(family);
-  }
-  return best;
+// Whether part p belongs to a family of copies (at least three) each member of which a point lies
+// on (`partOf`: the parts a type's points lie on).
+bool inFullRow(std::size_t p, const std::vector<std::optional<std::size_t>>& partOf,
+               const PartCopies& copies) {
+  const std::vector<std::size_t> family = copies.familyOf(p);
+  return family.size() >= 3 && std::all_of(family.begin(), family.end(), [&](std::size_t member) {
+           return std::find(partOf.begin(), partOf.end(), member) != partOf.end();
+         });
 }
 
-// Points of a type with ownParts farther than strayRowSpacings x the row's spacing from every
-// part of a full row go.
+// Every family of copies (at least three) each member of which a point lies on: a range's rows of
+// knobs.
+std::vector<std::vector<std::size_t>> fullRowsOf(
+    const std::vector<std::optional<std::size_t>>& partOf, const PartCopies& copies) {
+  std::vector<std::vector<std::size_t>> rows;
+  for (const auto& part : partOf) {
+    if (!part || !inFullRow(*part, partOf, copies)) continue;
+    std::vector<std::size_t> family = copies.familyOf(*part);
+    std::sort(family.begin(), family.end());
+    if (std::find(rows.begin(), rows.end(), family) == rows.end())
+      rows.push_back(std::move(family));
+  }
+  return rows;
+}
+
+// How far from a full row's parts a point of its type may lie: strayRowSpacings x the row's
+// spacing (the median distance from a member to the nearest other).
+float rowReach(const std::vector<std::size_t>& row, const std::vector<ConnectedPart>& parts,
+               const PartOwnershipSettings& settings) {
+  std::vector<float> nearest;
+  for (std::size_t member : row) nearest.push_back(nearestCentroidDistance(member, row, parts));
+  std::nth_element(nearest.begin(), nearest.begin() + nearest.size() / 2, nearest.end());
+  return settings.strayRowSpacings * nearest[nearest.size() / 2];
+}
+
+// Points of a type with ownParts farther than strayRowSpacings x a row's spacing from every part of
+// every full row go (a range with two rows of knobs keeps both).
 void dropStrays(TypedPoints& typed, std::vector<std::optional<std::size_t>>& partOf,
                 const std::vector<ConnectedPart>& parts, const PartCopies& copies,
                 const PartOwnershipSettings& settings) {
   if (!typed.ownParts || settings.strayRowSpacings <= 0) return;
-  const std::vector<std::size_t> row = fullRowOf(partOf, copies);
-  if (row.empty()) return;
-  std::vector<float> nearest;
-  for (std::size_t member : row) nearest.push_back(nearestCentroidDistance(member, row, parts));
-  std::nth_element(nearest.begin(), nearest.begin() + nearest.size() / 2, nearest.end());
-  const float reach = settings.strayRowSpacings * nearest[nearest.size() / 2];
-  std::vector<bool> keep(partOf.size());
+  const std::vector<std::vector<std::size_t>> rows = fullRowsOf(partOf, copies);
+  if (rows.empty()) return;
+  std::vector<float> reach;
+  for (const auto& row : rows) reach.push_back(rowReach(row, parts, settings));
+  std::vector<bool> keep(partOf.size(), false);
   for (std::size_t i = 0; i < partOf.size(); ++i)
-    keep[i] = std::any_of(row.begin(), row.end(), [&](std::size_t member) {
-      return (typed.points[i].position - parts[member].centroid).norm() <= reach;
-    });
+    for (std::size_t r = 0; r < rows.size() && !keep[i]; ++r)
+      keep[i] = std::any_of(rows[r].begin(), rows[r].end(), [&](std::size_t member) {
+        return (typed.points[i].position - parts[member].centroid).norm() <= reach[r];
+      });
   keepWhere(typed, partOf, keep);
 }
 
@@ -155,13 +181,15 @@ std::vector<TypedPoints> ownParts(std::vector<TypedPoints> byType,
     for (const auto& point : byType[t].points)
       partOf[t].push_back(partAt(point.position, parts, touch, settings.contact.maxPartDiagonal));
   }
+  const PartCopies copies(parts, kCopyTolerance);
   Owners owners;
   for (std::size_t t = 0; t < byType.size(); ++t)
     for (std::size_t i = 0; i < byType[t].points.size(); ++i) {
       if (!partOf[t][i]) continue;
-      const float confidence = byType[t].points[i].confidence;
-      auto [it, added] = owners.try_emplace(*partOf[t][i], Owner{t, confidence});
-      if (!added && confidence > it->second.confidence) it->second = {t, confidence};
+      const Owner owner{t, byType[t].points[i].confidence,
+                        byType[t].ownParts && inFullRow(*partOf[t][i], partOf[t], copies)};
+      auto [it, added] = owners.try_emplace(*partOf[t][i], owner);
+      if (!added && owner.beats(it->second)) it->second = owner;
     }
   for (std::size_t t = 0; t < byType.size(); ++t) {
     const auto& points = byType[t].points;
@@ -173,7 +201,6 @@ std::vector<TypedPoints> ownParts(std::vector<TypedPoints> byType,
     keepWhere(byType[t], partOf[t], keep);
   }
   const std::vector<bool> foot = feetOf(parts, resolution, settings);
-  const PartCopies copies(parts, kCopyTolerance);
   for (std::size_t t = 0; t < byType.size(); ++t) {
     dropOnLargeParts(byType[t], partOf[t], t, owners, parts, touch, reach, settings);
     dropOnFeet(byType[t], partOf[t], foot);

@@ -35,8 +35,8 @@ struct PartOwnershipSettings {
   bool onePointPerPart = true;
   // Strays from a full row: when every copy of one part (at least three: a range's knobs) has a
   // point of a type, that type's points farther than this many times the row's spacing (the
-  // median distance from a copy to the nearest other) from every copy go: the network takes a
-  // display or a badge at the back for one more knob. 0 = no such rule.
+  // median distance from a copy to the nearest other) from every copy of every full row go: the
+  // network takes a display or a badge at the back for one more knob. 0 = no such rule.
   float strayRowSpacings = 2.5f;
 };
 
@@ -48,15 +48,16 @@ struct TypedPoints {
 };
 
 // `byType` with points dropped: first, where points of several types lie on one small part, those
-// of every type but the one of the most confident point there (the part's owner), except that a
-// type never loses all its points (its most confident one stays); then, of a type with ownParts
-// that still has a point on a small part, every point on no small part and on a large part, unless
-// it can move onto a free small part within reach; then, of a type with ownParts, every point on a
-// foot, unless it is the type's last; then, of a type with ownParts, every point on a small part
-// that a surer point of its type lies on; last, of a type with ownParts, the strays from a full
-// row (strayRowSpacings). The kept points keep their order.
-// `parts` in the normalized frame; `resolution` is the field's (a voxel is 1 / resolution).
-// Unchanged without parts.
+// of every type but the one of the most confident point there (the part's owner; a type with
+// ownParts that has a point on every copy of the part, at least three, owns it before a surer
+// point of a type that has not: a range's row of knobs), except that a type never loses all its
+// points (its most confident one stays); then, of a type with ownParts that still has a point on a
+// small part, every point on no small part and on a large part, unless it can move onto a free
+// small part within reach; then, of a type with ownParts, every point on a foot, unless it is the
+// type's last; then, of a type with ownParts, every point on a small part that a surer point of its
+// type lies on; last, of a type with ownParts, the strays from the full rows (strayRowSpacings).
+// The kept points keep their order. `parts` in the normalized frame; `resolution` is the field's (a
+// voxel is 1 / resolution). Unchanged without parts.
 std::vector<TypedPoints> ownParts(std::vector<TypedPoints> byType,
                                   const std::vector<ConnectedPart>& parts, int resolution,
                                   const PartOwnershipSettings& settings = {});

@@ -212,6 +212,28 @@ TEST(PartOwnership, OnePointPerKnobTheSurestStays) {
             2u);
 }
 
+TEST(PartOwnership, AFullRowOfKnobsOwnsItsKnobsOverSurerBurnerPoints) {
+  // Knob points on all four knobs; surer burner points on two of them.
+  const Hob hob;
+  std::vector<ExtractedPoint> knobs;
+  for (const auto& k : hob.knobs) knobs.push_back(at(k, 0.2f));
+  const auto out = ownParts(
+      {burnerPoints({at(hob.burners[0], 0.8f), at(hob.knobs[1], 0.5f), at(hob.knobs[2], 0.5f)}),
+       knobPoints(knobs)},
+      hob.parts, kResolution);
+  ASSERT_EQ(out[0].points.size(), 1u);
+  EXPECT_EQ(out[0].points[0].position, hob.burners[0]);
+  EXPECT_EQ(out[1].points.size(), 4u);
+  // Three of the four: no full row, the surer burner points own their knobs.
+  knobs.pop_back();
+  const auto partRow = ownParts(
+      {burnerPoints({at(hob.burners[0], 0.8f), at(hob.knobs[1], 0.5f), at(hob.knobs[2], 0.5f)}),
+       knobPoints(knobs)},
+      hob.parts, kResolution);
+  EXPECT_EQ(partRow[0].points.size(), 3u);
+  EXPECT_EQ(partRow[1].points.size(), 1u);
+}
+
 TEST(PartOwnership, AStrayFromAFullRowOfKnobsGoes) {
   // Every knob of the row (0.2 apart) has a point; one more floats 1.4 away (a display at the
   // back), another 0.45 away, within 2.5 spacings of the row.
@@ -227,6 +249,27 @@ TEST(PartOwnership, AStrayFromAFullRowOfKnobsGoes) {
   PartOwnershipSettings noRule;
   noRule.strayRowSpacings = 0.0f;
   EXPECT_EQ(ownParts({knobPoints(points)}, hob.parts, kResolution, noRule)[0].points.size(), 6u);
+}
+
+TEST(PartOwnership, ARangeWithTwoFullRowsKeepsBoth) {
+  // The front row of four knobs (0.2 apart), and three larger oven knobs 0.3 apart at the back,
+  // 0.9 from the front row (beyond 2.5 of its spacings): both rows keep their points; a point
+  // 1 away from either row goes.
+  Hob hob;
+  const std::vector<Eigen::Vector3f> ovenKnobs{
+      {-0.3f, 0.45f, 0.05f}, {0.0f, 0.45f, 0.05f}, {0.3f, 0.45f, 0.05f}};
+  Mesh mesh = test::box({-0.5f, -0.4f, -0.05f}, {0.5f, 0.5f, 0.0f});
+  appendBoxes(mesh, hob.knobs, {0.02f, 0.02f, 0.02f}, {0.02f, 0.02f, 0.0f});
+  appendBoxes(mesh, ovenKnobs, {0.03f, 0.03f, 0.03f}, {0.03f, 0.03f, 0.0f});
+  const auto parts = connectedParts(mesh);
+  const Eigen::Vector3f stray(0.9f, 1.2f, 0.3f);
+  std::vector<ExtractedPoint> points;
+  for (const auto& k : hob.knobs) points.push_back(at(k, 0.6f));
+  for (const auto& k : ovenKnobs) points.push_back(at(k, 0.5f));
+  points.push_back(at(stray, 0.9f));
+  const auto out = ownParts({knobPoints(points)}, parts, kResolution);
+  ASSERT_EQ(out[0].points.size(), 7u);
+  for (const auto& p : out[0].points) EXPECT_NE(p.position, stray);
 }
 
 TEST(PartOwnership, WithoutAFullRowAStrayStays) {
