@@ -12,8 +12,10 @@ namespace sagrid {
 // resumed batch predicts again the objects annotated before a pass changed. Raise it with every
 // change to a pass's output (2: part ownership drops knob and burner points on feet; 3: and keeps
 // one point of a type per small part; 4: the touch-key pass; 5: on stoves, repeated parts as close
-// as their spacing; 6: on stoves, part ownership drops strays from a full row).
-inline constexpr int kPointPassesVersion = 7;
+// as their spacing; 6: on stoves, part ownership drops strays from a full row; 7: a full row owns
+// its parts, and every full row keeps its points; 8: on stoves, knob points move onto the knob
+// parts they lie on or beside).
+inline constexpr int kPointPassesVersion = 8;
 
 struct PassOptions {
   // Test-time augmentation: copies averaged per model (1 = off, 8 = all). 8 by default: on the

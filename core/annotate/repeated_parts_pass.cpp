@@ -20,6 +20,7 @@ std::vector<ConnectedPart> normalizedParts(const Mesh& mesh, const Normalization
 RepeatedPartSettings repeatedPartSettingsFor(const std::string& category) {
   RepeatedPartSettings settings;
   settings.separationBySpacing = category == "stove";
+  if (category == "stove") settings.snapPartVoxels = 1.0f;
   return settings;
 }
 

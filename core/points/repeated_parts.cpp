@@ -26,19 +26,35 @@ PartsAtPoint partsAt(const Eigen::Vector3f& point, const std::vector<ConnectedPa
         parts[p].box.exteriorDistance(point) > touch)
       continue;
     at.onSmallPart = true;
-    if ((!at.seed || parts[p].area > parts[*at.seed].area) && !copies.of(p).empty()) at.seed = p;
+    if (copies.of(p).empty()) continue;
+    if (!at.seed) {
+      at.seed = p;
+      continue;
+    }
+    const ConnectedPart& seed = parts[*at.seed];
+    // Two knobs of a row both within touch: the nearer one.
+    const bool better = congruentParts(seed, parts[p], settings.congruenceTolerance)
+                            ? (parts[p].centroid - point).norm() < (seed.centroid - point).norm()
+                            : parts[p].area > seed.area;
+    if (better) at.seed = p;
   }
   return at;
 }
 
-// The nearest small part with exactly one copy (a pair) within `reach` of `point` (box distance)
-// where the field is at most `maxDistance`.
-std::optional<std::size_t> nearbyPairedPart(const Eigen::Vector3f& point,
-                                            const std::vector<ConnectedPart>& parts,
-                                            const PartCopies& copies, float reach,
-                                            float maxDistance, const PredictedField& field,
-                                            const DenseField& dense,
-                                            const RepeatedPartSettings& settings) {
+// A part that can be a whole knob (RepeatedPartSettings::snapPartVoxels).
+bool isKnobPart(const ConnectedPart& part, float voxel, const RepeatedPartSettings& settings) {
+  return settings.snapPartVoxels > 0 &&
+         part.box.sizes().maxCoeff() >= settings.snapPartVoxels * voxel;
+}
+
+// The nearest small part within `reach` of `point` (box distance) where the field is at most
+// `maxDistance` and `accepts` holds (given the part and its number of copies).
+template <typename Accepts>
+std::optional<std::size_t> nearbyPart(const Eigen::Vector3f& point,
+                                      const std::vector<ConnectedPart>& parts,
+                                      const PartCopies& copies, float reach, float maxDistance,
+                                      const PredictedField& field, const DenseField& dense,
+                                      const RepeatedPartSettings& settings, Accepts accepts) {
   std::optional<std::size_t> best;
   float bestGap = reach;
   for (std::size_t p = 0; p < parts.size(); ++p) {
@@ -46,7 +62,7 @@ std::optional<std::size_t> nearbyPairedPart(const Eigen::Vector3f& point,
     if (!isSmallPart(parts[p], settings.contact.maxPartDiagonal) || gap > bestGap) continue;
     const float d = nearbyDistance(
         field, dense, voxelContaining(parts[p].centroid, field.resolution), kFieldRadius);
-    if (!std::isfinite(d) || d > maxDistance || copies.of(p).size() != 1) continue;
+    if (!std::isfinite(d) || d > maxDistance || !accepts(parts[p], copies.of(p).size())) continue;
     best = p, bestGap = gap;
   }
   return best;
@@ -81,14 +97,33 @@ std::vector<ExtractedPoint> completeRepeatedParts(const PredictedField& field,
       std::max(static_cast<float>(settings.separationVoxels) * voxel, extraction.nmsRadius);
   const float pairReach = settings.pairReachVoxels * voxel;
   const PartCopies copies(parts, settings.congruenceTolerance);
+  const auto isPair = [](const ConnectedPart&, std::size_t n) { return n == 1; };
+  const auto isKnobRow = [&](const ConnectedPart& part, std::size_t n) {
+    return n >= 1 && isKnobPart(part, voxel, settings);
+  };
   std::vector<ExtractedPoint> out = points;
-  for (std::size_t i = 0; i < points.size(); ++i) {
-    ExtractedPoint p = points[i];
+  if (settings.snapPartVoxels > 0) {
+    for (auto& p : out) {
+      const PartsAtPoint at = partsAt(p.position, parts, copies, touch, settings);
+      std::optional<std::size_t> knob;
+      if (at.seed && isKnobPart(parts[*at.seed], voxel, settings))
+        knob = at.seed;
+      else if (!at.onSmallPart && pairReach > 0)
+        knob = nearbyPart(p.position, parts, copies, pairReach,
+                          p.distance + settings.maxDistanceAbovePoint, field, dense, settings,
+                          isKnobRow);
+      if (knob) p.position = parts[*knob].box.center();
+    }
+  }
+  const std::vector<ExtractedPoint> given = out;
+  for (std::size_t i = 0; i < given.size(); ++i) {
+    ExtractedPoint p = given[i];
     const PartsAtPoint at = partsAt(p.position, parts, copies, touch, settings);
     auto seed = at.seed;
     if (!seed && !at.onSmallPart && pairReach > 0) {
-      seed = nearbyPairedPart(p.position, parts, copies, pairReach,
-                              p.distance + settings.maxDistanceAbovePoint, field, dense, settings);
+      seed =
+          nearbyPart(p.position, parts, copies, pairReach,
+                     p.distance + settings.maxDistanceAbovePoint, field, dense, settings, isPair);
       if (seed) out[i].position = p.position = parts[*seed].centroid;
     }
     if (!seed) continue;
@@ -98,11 +133,14 @@ std::vector<ExtractedPoint> completeRepeatedParts(const PredictedField& field,
     for (std::size_t q : copies.of(*seed)) {
       const ConnectedPart& copy = parts[q];
       const Eigen::Vector3f onCopy = pointOnCopy(part, copy, offset, settings.congruenceTolerance);
+      // A knob's copies in a row tighter than separationVoxels: their spacing alone.
+      const float least = isKnobPart(part, voxel, settings)
+                              ? 0.0f
+                              : static_cast<float>(settings.separationVoxels) * voxel;
       const float apart =
           settings.separationBySpacing
-              ? std::max(
-                    static_cast<float>(settings.separationVoxels) * voxel,
-                    std::min(separation, kSpacingShare * nearestCentroidDistance(q, family, parts)))
+              ? std::max(least, std::min(separation,
+                                         kSpacingShare * nearestCentroidDistance(q, family, parts)))
               : separation;
       const bool taken = std::any_of(out.begin(), out.end(), [&](const ExtractedPoint& o) {
         return (o.position - onCopy).norm() <= apart ||

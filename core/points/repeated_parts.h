@@ -41,14 +41,24 @@ struct RepeatedPartSettings {
   // moves to the nearest small part within this many voxels that has exactly one copy (a hot and
   // a cold handle) where the field is low enough, and its copy gets a point; 0 = never.
   float pairReachVoxels = 6.0f;
+  // Knobs that are whole parts (a range's): a point on a small part with copies that is at least
+  // this many voxels across (a knob, not an indicator light) moves to the centre of the part's box
+  // before the copies get points, and a point on no small part to the nearest such part within
+  // pairReachVoxels (a row, not only a pair) where the field is low enough. The network's valley
+  // along a row of knobs puts its points between two knobs or beside the row; a knob is labelled
+  // at its centre. The copies of such a part are taken by a point within kSpacingShare of their
+  // spacing even where the row is tighter than separationVoxels. 0 = off (a handle's point is on
+  // its lever, not at the part's centre).
+  float snapPartVoxels = 0.0f;
 };
 
 // `points` plus, for each point (best first), a point on every copy of the part it lies on: of the
-// small parts that hold it and have a copy, the one with the largest area; a point on no small
-// part is first moved to the centroid of a paired part near it (pairReachVoxels). The new point
-// keeps its offset from the part's centroid, moved to the copy's centroid (mirrored across the
-// plane between the two centroids when the copy's box is not the part's box moved). `parts` are in
-// the normalized frame (connectedParts of the normalized mesh). New points come after the given
+// small parts that hold it and have a copy, the one with the largest area (of equal ones, the
+// nearest); a point on no small part is first moved to the centroid of a paired part near it
+// (pairReachVoxels); with snapPartVoxels, every point is first moved onto its knob (above). The new
+// point keeps its offset from the part's centroid, moved to the copy's centroid (mirrored across
+// the plane between the two centroids when the copy's box is not the part's box moved). `parts` are
+// in the normalized frame (connectedParts of the normalized mesh). New points come after the given
 // ones; a new point's distance is the field's smallest within two voxels, its confidence
 // exp(-distance / confidenceScale). Unchanged without parts or field.
 std::vector<ExtractedPoint> completeRepeatedParts(const PredictedField& field,

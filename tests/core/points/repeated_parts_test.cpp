@@ -159,6 +159,65 @@ TEST(RepeatedParts, ATurnedCopyMirrorsThePointAcrossThePlaneBetweenThem) {
   EXPECT_TRUE(out[1].position.isApprox(right - Eigen::Vector3f(1.5f * kVoxel, 0, 0), 1e-5f));
 }
 
+// A tight row of knobs, 3 voxels apart (2 voxels wide, 1 voxel between them).
+std::vector<Eigen::Vector3f> tightKnobRow() {
+  return {onPlate(6, 16), onPlate(9, 16), onPlate(12, 16), onPlate(15, 16)};
+}
+
+RepeatedPartSettings knobSnapping() {
+  RepeatedPartSettings settings;
+  settings.separationBySpacing = true;
+  settings.snapPartVoxels = 1.0f;
+  return settings;
+}
+
+TEST(RepeatedParts, SnappedAPointBetweenTwoKnobsMovesOntoTheNearerAndTheRowFills) {
+  const auto knobs = tightKnobRow();
+  const auto field = test::plateField(knobs);
+  const auto parts = panelWithKnobs(knobs);
+  // Between the first two knobs, nearer the first, touching both.
+  const Eigen::Vector3f between = knobs[0] + Eigen::Vector3f(1.4f * kVoxel, 0, 0);
+  const auto out = fromPoint(field, between, parts, knobSnapping());
+  ASSERT_EQ(out.size(), 4u);
+  EXPECT_TRUE(out[0].position.isApprox(knobs[0], 1e-5f));
+  for (const auto& k : knobs) EXPECT_LT(test::nearestExtracted(out, k), 1e-4f);
+  // Without snapping the point stays between them, and the copies keep its offset.
+  RepeatedPartSettings bySpacing;
+  bySpacing.separationBySpacing = true;
+  const auto kept = fromPoint(field, between, parts, bySpacing);
+  EXPECT_TRUE(kept[0].position.isApprox(between));
+  EXPECT_GT(test::nearestExtracted(kept, knobs[3]), 0.5f * kVoxel);
+}
+
+TEST(RepeatedParts, SnappedAPointBesideARowOfKnobsMovesOntoTheNearestWithinReach) {
+  const auto knobs = tightKnobRow();
+  const auto field = test::plateField(knobs);
+  const auto parts = panelWithKnobs(knobs);
+  // 4 voxels beside the third knob (3.5 from its box), on no small part.
+  const auto out = fromPoint(field, onPlate(12, 20), parts, knobSnapping());
+  ASSERT_EQ(out.size(), 4u);
+  EXPECT_TRUE(out[0].position.isApprox(knobs[2], 1e-5f));
+  for (const auto& k : knobs) EXPECT_LT(test::nearestExtracted(out, k), 1e-4f);
+  // Out of reach (8 voxels), or without snapping, it stays alone.
+  EXPECT_EQ(fromPoint(field, onPlate(12, 24), parts, knobSnapping()).size(), 1u);
+  RepeatedPartSettings bySpacing;
+  bySpacing.separationBySpacing = true;
+  EXPECT_EQ(fromPoint(field, onPlate(12, 20), parts, bySpacing).size(), 1u);
+}
+
+TEST(RepeatedParts, SnappedPartsUnderAVoxelAreNoKnobs) {
+  // A row of indicator lights half a voxel across: a point beside them stays where it is, and
+  // the copies keep the floor of separationVoxels.
+  const auto lights = tightKnobRow();
+  Mesh mesh = knobBox(onPlate(16, 24), Eigen::Vector3f(0.4f, 0.05f, 0.1f));
+  for (const auto& l : lights)
+    test::append(mesh, knobBox(l, Eigen::Vector3f(0.25f, 0.25f, 0.25f) * kVoxel));
+  const auto field = test::plateField(lights);
+  const auto out = fromPoint(field, onPlate(12, 20), connectedParts(mesh), knobSnapping());
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_TRUE(out[0].position.isApprox(test::pointOnField(field, onPlate(12, 20)).position));
+}
+
 // A mixer on a counter: a spout (a column taller than a small part may be) with two equal handles
 // 5 voxels either side of it, and `extra` more handles further along when given.
 std::vector<ConnectedPart> mixer(const std::vector<Eigen::Vector3f>& handles) {
