@@ -2,13 +2,6 @@
 
 namespace sagrid {
 
-PartOwnershipSettings partOwnershipSettingsFor(const std::string& category) {
-  PartOwnershipSettings settings;
-  settings.onePointPerPart = category == "stove";
-  if (category != "stove") settings.strayRowSpacings = 0.0f;
-  return settings;
-}
-
 void applyPartOwnership(std::vector<ModelPrediction>& predictions,
                         const std::vector<ConnectedPart>& parts, const FeatureGrid& features,
                         const SurfaceScene& scene, UpAxis fileUp,

@@ -15,12 +15,6 @@
 
 namespace sagrid {
 
-// The settings for a category's objects: one point per part and strays from a full row only on
-// stoves (a stove's knob or burner cap is one part; a sink mixer's hot and cold handles are
-// sometimes one part with the body, and on the generated wall-fixture sinks the rule lost sink
-// knobs).
-PartOwnershipSettings partOwnershipSettingsFor(const std::string& category);
-
 // `parts` from normalizedParts (core/annotate/repeated_parts_pass.h); the surface points of the
 // kept points stay as they were.
 void applyPartOwnership(std::vector<ModelPrediction>& predictions,

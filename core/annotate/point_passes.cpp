@@ -1,5 +1,6 @@
 #include "core/annotate/point_passes.h"
 
+#include "core/annotate/category_rules.h"
 #include "core/annotate/coarse_to_fine.h"
 #include "core/annotate/mirror_pairs_pass.h"
 #include "core/annotate/part_ownership_pass.h"
@@ -20,6 +21,7 @@ CategoryPoints predictCategoryPoints(const std::vector<const model::AffordanceMo
   const Mesh& mesh = object.mesh;
   const FeatureGrid& features = object.features;
   const SurfaceScene& scene = object.scene;
+  const CategoryRules rules = categoryRulesFor(category);
   CategoryPoints out;
   if (passes.printedMarks) out.printed = printedMarksOf(mesh, category);
   const std::vector<ConnectedPart> parts =
@@ -51,7 +53,7 @@ CategoryPoints predictCategoryPoints(const std::vector<const model::AffordanceMo
                                             : std::vector<Eigen::Vector3f>{});
     if (passes.repeatedParts && modelMode == InstanceMode::Auto)
       applyRepeatedParts(p, parts, features, scene, mesh.fileUp, card.extraction,
-                         repeatedPartSettingsFor(category));
+                         rules.repeatedParts);
     if (passes.spoutOutlets && modelMode != InstanceMode::Single)
       applySpoutOutlets(p, features, scene, mesh.fileUp, card.extraction);
     MarksForType marks = printedMarksFor(out.printed, category, p.type);
@@ -60,8 +62,7 @@ CategoryPoints predictCategoryPoints(const std::vector<const model::AffordanceMo
     out.predictions.push_back(std::move(p));
   }
   if (passes.partOwnership && mode == InstanceMode::Auto && counts.empty())
-    applyPartOwnership(out.predictions, parts, features, scene, mesh.fileUp,
-                       partOwnershipSettingsFor(category));
+    applyPartOwnership(out.predictions, parts, features, scene, mesh.fileUp, rules.partOwnership);
   return out;
 }
 

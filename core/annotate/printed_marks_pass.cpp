@@ -3,13 +3,16 @@
 #include <algorithm>
 #include <limits>
 
+#include "core/annotate/category_rules.h"
 #include "core/features/feature_grid.h"
 #include "core/model/affordance_model.h"
 
 namespace sagrid {
 
 namespace {
-bool marksStandForItsTypes(const std::string& category) { return category == "stove"; }
+bool marksStandForItsTypes(const std::string& category) {
+  return categoryRulesFor(category).printedMarks;
+}
 // More circles than a hob has zones or touch symbols are a pattern (fries in a fryer, polka
 // dots), not a hob.
 constexpr std::size_t kMostZones = 8, kMostSymbols = 24;

@@ -17,13 +17,6 @@ std::vector<ConnectedPart> normalizedParts(const Mesh& mesh, const Normalization
   return parts;
 }
 
-RepeatedPartSettings repeatedPartSettingsFor(const std::string& category) {
-  RepeatedPartSettings settings;
-  settings.separationBySpacing = category == "stove";
-  if (category == "stove") settings.snapPartVoxels = 1.0f;
-  return settings;
-}
-
 void applyRepeatedParts(ModelPrediction& prediction, const std::vector<ConnectedPart>& parts,
                         const FeatureGrid& features, const SurfaceScene& scene, UpAxis fileUp,
                         const ExtractionSettings& extraction,

@@ -16,10 +16,6 @@ namespace sagrid {
 // The connected parts of `mesh` (z-up mesh frame) in the normalized frame of `normalization`.
 std::vector<ConnectedPart> normalizedParts(const Mesh& mesh, const Normalization& normalization);
 
-// The settings for a category's objects: copies as close as their spacing only on stoves
-// (RepeatedPartSettings::separationBySpacing).
-RepeatedPartSettings repeatedPartSettingsFor(const std::string& category);
-
 // Adds the points on copies to `prediction` (points and surface), and moves a point onto a nearby
 // pair of equal parts (re-projected), when it is of toggle buttons;
 // other types are left as they are: a hob's burners come in several sizes and sit among grate

@@ -1,5 +1,6 @@
 #include "core/annotate/touch_keys_pass.h"
 
+#include "core/annotate/category_rules.h"
 #include "core/grid/normalization.h"
 #include "core/points/touch_keys.h"
 
@@ -9,7 +10,7 @@ std::vector<PrintedCircle> touchKeysOf(const std::string& category,
                                        const std::vector<ConnectedPart>& parts,
                                        const SurfaceScene& scene,
                                        const Normalization& normalization, int resolution) {
-  if (category != "stove") return {};
+  if (!categoryRulesFor(category).touchKeys) return {};
   std::vector<PrintedCircle> circles;
   for (const TouchKey& key : findTouchKeys(parts, scene, normalization, resolution))
     circles.push_back(

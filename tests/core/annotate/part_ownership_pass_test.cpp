@@ -46,13 +46,5 @@ TEST(PartOwnershipPass, ABurnerPointOnTheKnobGoesAndTheOthersKeepTheirSurfacePoi
   EXPECT_EQ(predictions[1].surface[0].position, knobSurface);
 }
 
-TEST(PartOwnershipPass, OnePointPerPartAndStraysOnlyOnStoves) {
-  EXPECT_TRUE(partOwnershipSettingsFor("stove").onePointPerPart);
-  EXPECT_FALSE(partOwnershipSettingsFor("sink").onePointPerPart);
-  EXPECT_GT(partOwnershipSettingsFor("sink").footHeight, 0.0f);
-  EXPECT_GT(partOwnershipSettingsFor("stove").strayRowSpacings, 0.0f);
-  EXPECT_EQ(partOwnershipSettingsFor("sink").strayRowSpacings, 0.0f);
-}
-
 }  // namespace
 }  // namespace sagrid

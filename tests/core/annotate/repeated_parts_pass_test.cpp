@@ -58,12 +58,5 @@ TEST(RepeatedPartsPass, LeavesOtherTypesAsTheyAre) {
   EXPECT_EQ(p.surface.size(), 1u);
 }
 
-TEST(RepeatedPartsPass, CopiesAsCloseAsTheirSpacingAndKnobsSnappedOnlyOnStoves) {
-  EXPECT_TRUE(repeatedPartSettingsFor("stove").separationBySpacing);
-  EXPECT_FALSE(repeatedPartSettingsFor("sink").separationBySpacing);
-  EXPECT_GT(repeatedPartSettingsFor("stove").snapPartVoxels, 0.0f);
-  EXPECT_EQ(repeatedPartSettingsFor("sink").snapPartVoxels, 0.0f);
-}
-
 }  // namespace
 }  // namespace sagrid

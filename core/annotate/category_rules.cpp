@@ -1,0 +1,19 @@
+#include "core/annotate/category_rules.h"
+
+namespace sagrid {
+
+CategoryRules categoryRulesFor(const std::string& category) {
+  CategoryRules rules;
+  if (category != "stove") {
+    rules.partOwnership.onePointPerPart = false;
+    rules.partOwnership.strayRowSpacings = 0.0f;
+    return rules;
+  }
+  rules.printedMarks = true;
+  rules.touchKeys = true;
+  rules.repeatedParts.separationBySpacing = true;
+  rules.repeatedParts.snapPartVoxels = 1.0f;
+  return rules;
+}
+
+}  // namespace sagrid

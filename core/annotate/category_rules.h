@@ -1,0 +1,32 @@
+// What the passes do differently on each category: the one table of the category-specific rules.
+// A stove's knobs and burner caps are parts of their own, its touch controls flat pads or prints
+// on its top; a sink's hot and cold handles are sometimes one part with the mixer's body, and the
+// spokes of one cross handle are copies of one another. So the texture and touch-key passes run
+// on stoves only, and the repeated-parts and part-ownership passes take per-category settings.
+#pragma once
+
+#include <string>
+
+#include "core/points/part_ownership.h"
+#include "core/points/repeated_parts.h"
+
+namespace sagrid {
+
+struct CategoryRules {
+  // Zones and touch symbols printed on the top stand for the heat sources and toggle buttons
+  // (core/annotate/printed_marks_pass.h).
+  bool printedMarks = false;
+  // Flat pads standing on the top are toggle buttons (core/annotate/touch_keys_pass.h).
+  bool touchKeys = false;
+  // Stoves: copies as close as their spacing, knob points moved onto the knob parts
+  // (RepeatedPartSettings::separationBySpacing, snapPartVoxels).
+  RepeatedPartSettings repeatedParts;
+  // Stoves: one point per part, strays from the full rows (onePointPerPart, strayRowSpacings; on
+  // the generated wall-fixture sinks one point per part lost sink knobs).
+  PartOwnershipSettings partOwnership;
+};
+
+// The rules for objects of `category` (defaults for a category without any of its own).
+CategoryRules categoryRulesFor(const std::string& category);
+
+}  // namespace sagrid
