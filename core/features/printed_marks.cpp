@@ -305,7 +305,27 @@ PrintedMarks findPrintedMarks(const Mesh& mesh, const PrintedMarkSettings& setti
         });
     if (!inZone) marks.symbols.push_back(symbol);
   }
+  marks.symbols = symbolsStandingTogether(marks.symbols, settings.isolatedSymbolSpacings);
   return marks;
+}
+
+std::vector<PrintedCircle> symbolsStandingTogether(const std::vector<PrintedCircle>& symbols,
+                                                   float spacings) {
+  if (symbols.size() < 3 || spacings <= 0) return symbols;
+  std::vector<float> nearest;
+  for (std::size_t i = 0; i < symbols.size(); ++i) {
+    float d = std::numeric_limits<float>::infinity();
+    for (std::size_t j = 0; j < symbols.size(); ++j)
+      if (j != i) d = std::min(d, (symbols[i].centre - symbols[j].centre).norm());
+    nearest.push_back(d);
+  }
+  std::vector<float> sorted = nearest;
+  std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
+  const float reach = spacings * sorted[sorted.size() / 2];
+  std::vector<PrintedCircle> kept;
+  for (std::size_t i = 0; i < symbols.size(); ++i)
+    if (nearest[i] <= reach) kept.push_back(symbols[i]);
+  return kept;
 }
 
 }  // namespace sagrid

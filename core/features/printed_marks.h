@@ -34,7 +34,17 @@ struct PrintedMarkSettings {
   float zoneSupport = 0.7f, symbolSupport = 0.9f;
   float zoneMin = 0.05f, zoneMax = 0.3f;        // zone radius / largest extent
   float symbolMin = 0.006f, symbolMax = 0.03f;  // symbol radius / largest extent
+  // A touch panel's symbols stand together: of three or more, a symbol whose nearest other lies
+  // farther than this many times the median distance from a symbol to its nearest other is a
+  // mark of another kind (a logo or a hot-surface sign at the back of a real induction hob) and is
+  // left out; 0 = keep every symbol.
+  float isolatedSymbolSpacings = 2.5f;
 };
+
+// The symbols of `symbols` that stand with the others (PrintedMarkSettings::isolatedSymbolSpacings
+// = `spacings`); all of them when fewer than three or `spacings` <= 0. Their order is kept.
+std::vector<PrintedCircle> symbolsStandingTogether(const std::vector<PrintedCircle>& symbols,
+                                                   float spacings);
 
 // Empty for meshes without textured upward-facing triangles (the common case, and cheap).
 PrintedMarks findPrintedMarks(const Mesh& mesh, const PrintedMarkSettings& settings = {});

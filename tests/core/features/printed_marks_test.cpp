@@ -85,31 +85,73 @@ TEST(PrintedMarks, NothingOnStovesWhoseBurnersAreGeometryOrOnPlainAndNoisyTops) 
 // The 2-zone hob of the real corpus: plus and minus keys printed as filled discs in a row, a
 // line drawn just below them. The line crosses the ring outside each disc that tells a symbol from
 // a noisy texture; it must not hide the keys.
-TEST(PrintedMarks, TouchKeysAboveAPrintedLineAreFound) {
+// A 0.6 m glass top at height 0.9 printed dark with white round keys (radius 6 pixels of 512) at
+// `keys` (pixel column, row), and a white line under the row at `lineRow` when it is positive.
+Mesh glassWithKeys(const std::vector<std::pair<int, int>>& keys, int lineRow) {
   Mesh glass = test::quadZ({0, 0}, {0.6f, 0.6f}, 0.9f);
   Texture print;
   print.width = print.height = 512;
   print.rgba.assign(512 * 512 * 4, 255);
-  const std::vector<int> keyColumns = {150, 190, 320, 360};
-  const int row = 256, radius = 6;
+  const int radius = 6;
   for (int y = 0; y < 512; ++y)
     for (int x = 0; x < 512; ++x) {
-      bool white = (y == row + 8 || y == row + 9) && x >= 120 && x <= 390;
-      for (int c : keyColumns)
-        white = white || (x - c) * (x - c) + (y - row) * (y - row) <= radius * radius;
+      bool white = lineRow > 0 && (y == lineRow + 8 || y == lineRow + 9) && x >= 120 && x <= 390;
+      for (const auto& [c, r] : keys)
+        white = white || (x - c) * (x - c) + (y - r) * (y - r) <= radius * radius;
       for (int k = 0; k < 3; ++k)
         print.rgba[(static_cast<std::size_t>(y) * 512 + x) * 4 + k] = white ? 240 : 20;
     }
   glass.textures = {print};
   glass.materials = {Material{"glass", Eigen::Vector3f::Ones(), 0}};
   glass.triangleMaterials.assign(glass.triangles.size(), 0);
+  return glass;
+}
 
-  const PrintedMarks marks = findPrintedMarks(glass);
-  ASSERT_EQ(marks.symbols.size(), keyColumns.size());
+// Where a pixel of glassWithKeys's print lies on the glass (texture rows run from the far edge).
+Eigen::Vector3f onGlass(const std::pair<int, int>& pixel) {
+  return {(pixel.first + 0.5f) / 512.0f * 0.6f, (1.0f - (pixel.second + 0.5f) / 512.0f) * 0.6f,
+          0.9f};
+}
+
+TEST(PrintedMarks, TouchKeysAboveAPrintedLineAreFound) {
+  const std::vector<std::pair<int, int>> keyPixels = {
+      {150, 256}, {190, 256}, {320, 256}, {360, 256}};
+  const PrintedMarks marks = findPrintedMarks(glassWithKeys(keyPixels, 256));
+  ASSERT_EQ(marks.symbols.size(), keyPixels.size());
   std::vector<Eigen::Vector3f> keys;
-  for (int c : keyColumns) keys.emplace_back((c + 0.5f) / 512.0f * 0.6f, 0.3f, 0.9f);
+  for (const auto& k : keyPixels) keys.push_back(onGlass(k));
   for (const auto& s : marks.symbols) EXPECT_LT(nearest(s.centre, keys), 0.006f);
   EXPECT_TRUE(marks.zones.empty());
+}
+
+TEST(PrintedMarks, ASymbolFarFromTheOthersIsNoTouchKey) {
+  // Four keys 40 pixels apart in a row, and one more round mark 300 pixels away (a sign at the
+  // back of the hob).
+  const std::vector<std::pair<int, int>> keyPixels = {
+      {150, 400}, {190, 400}, {230, 400}, {270, 400}, {256, 100}};
+  const Mesh glass = glassWithKeys(keyPixels, 0);
+  const PrintedMarks marks = findPrintedMarks(glass);
+  ASSERT_EQ(marks.symbols.size(), 4u);
+  for (const auto& s : marks.symbols) EXPECT_GT(nearest(s.centre, {onGlass(keyPixels[4])}), 0.1f);
+  PrintedMarkSettings keepAll;
+  keepAll.isolatedSymbolSpacings = 0;
+  EXPECT_EQ(findPrintedMarks(glass, keepAll).symbols.size(), 5u);
+}
+
+TEST(PrintedMarks, SymbolsStandingTogetherKeepsRowsAndGroupsAndFewSymbols) {
+  const auto at = [](float x, float y) { return PrintedCircle{{x, y, 0.9f}, 0.005f, 1.0f}; };
+  // Two groups of two, 0.3 apart: every symbol has a neighbour 0.03 away.
+  const std::vector<PrintedCircle> groups = {at(0.1f, 0.1f), at(0.13f, 0.1f), at(0.4f, 0.1f),
+                                             at(0.43f, 0.1f)};
+  EXPECT_EQ(symbolsStandingTogether(groups, 2.5f).size(), 4u);
+  // Two symbols far apart: too few to tell which one stands alone.
+  EXPECT_EQ(symbolsStandingTogether({at(0.1f, 0.1f), at(0.5f, 0.5f)}, 2.5f).size(), 2u);
+  // Two close and one far: the far one goes, the order of the others stays.
+  const auto kept =
+      symbolsStandingTogether({at(0.1f, 0.1f), at(0.5f, 0.5f), at(0.12f, 0.1f)}, 2.5f);
+  ASSERT_EQ(kept.size(), 2u);
+  EXPECT_FLOAT_EQ(kept[0].centre.x(), 0.1f);
+  EXPECT_FLOAT_EQ(kept[1].centre.x(), 0.12f);
 }
 
 TEST(PrintedMarks, OnlyUpwardFacingTexturedSurfacesAreRead) {
