@@ -4,7 +4,6 @@
 // it after the mirror pairs and before the printed marks; `--no-repeated-parts` switches it off.
 #pragma once
 
-#include <string>
 #include <vector>
 
 #include "core/annotate/annotate.h"

@@ -1,7 +1,6 @@
 #include "core/points/part_ownership.h"
 
 #include <algorithm>
-#include <cmath>
 #include <limits>
 #include <map>
 #include <optional>
@@ -83,13 +82,10 @@ void onePointPerPart(TypedPoints& typed, std::vector<std::optional<std::size_t>>
   keepWhere(typed, partOf, keep);
 }
 
-// The largest family of copies (a part and its copies) every member of which has a point of the
-// type, with at least three members; empty when there is none.
-// Whether part p belongs to a family of copies (at least three) each member of which a point lies
-// on (`partOf`: the parts a type's points lie on).
-bool inFullRow(std::size_t p, const std::vector<std::optional<std::size_t>>& partOf,
-               const PartCopies& copies) {
-  const std::vector<std::size_t> family = copies.familyOf(p);
+// Whether `family` (a part and its copies) is a full row: at least three members, each of which a
+// point lies on (`partOf`: the parts a type's points lie on).
+bool isFullRow(const std::vector<std::size_t>& family,
+               const std::vector<std::optional<std::size_t>>& partOf) {
   return family.size() >= 3 && std::all_of(family.begin(), family.end(), [&](std::size_t member) {
            return std::find(partOf.begin(), partOf.end(), member) != partOf.end();
          });
@@ -101,8 +97,9 @@ std::vector<std::vector<std::size_t>> fullRowsOf(
     const std::vector<std::optional<std::size_t>>& partOf, const PartCopies& copies) {
   std::vector<std::vector<std::size_t>> rows;
   for (const auto& part : partOf) {
-    if (!part || !inFullRow(*part, partOf, copies)) continue;
+    if (!part) continue;
     std::vector<std::size_t> family = copies.familyOf(*part);
+    if (!isFullRow(family, partOf)) continue;
     std::sort(family.begin(), family.end());
     if (std::find(rows.begin(), rows.end(), family) == rows.end())
       rows.push_back(std::move(family));
@@ -187,7 +184,7 @@ std::vector<TypedPoints> ownParts(std::vector<TypedPoints> byType,
     for (std::size_t i = 0; i < byType[t].points.size(); ++i) {
       if (!partOf[t][i]) continue;
       const Owner owner{t, byType[t].points[i].confidence,
-                        byType[t].ownParts && inFullRow(*partOf[t][i], partOf[t], copies)};
+                        byType[t].ownParts && isFullRow(copies.familyOf(*partOf[t][i]), partOf[t])};
       auto [it, added] = owners.try_emplace(*partOf[t][i], owner);
       if (!added && owner.beats(it->second)) it->second = owner;
     }

@@ -115,9 +115,9 @@ std::vector<ExtractedPoint> completeRepeatedParts(const PredictedField& field,
       if (knob) p.position = parts[*knob].box.center();
     }
   }
-  const std::vector<ExtractedPoint> given = out;
-  for (std::size_t i = 0; i < given.size(); ++i) {
-    ExtractedPoint p = given[i];
+  const std::size_t given = out.size();  // the points added below get no copies of their own
+  for (std::size_t i = 0; i < given; ++i) {
+    ExtractedPoint p = out[i];
     const PartsAtPoint at = partsAt(p.position, parts, copies, touch, settings);
     auto seed = at.seed;
     if (!seed && !at.onSmallPart && pairReach > 0) {
@@ -130,13 +130,14 @@ std::vector<ExtractedPoint> completeRepeatedParts(const PredictedField& field,
     const ConnectedPart& part = parts[*seed];
     const Eigen::Vector3f offset = p.position - part.centroid;
     const std::vector<std::size_t> family = copies.familyOf(*seed);
-    for (std::size_t q : copies.of(*seed)) {
+    // A knob's copies in a row tighter than separationVoxels: their spacing alone.
+    const float least = isKnobPart(part, voxel, settings)
+                            ? 0.0f
+                            : static_cast<float>(settings.separationVoxels) * voxel;
+    for (std::size_t q : family) {
+      if (q == *seed) continue;
       const ConnectedPart& copy = parts[q];
       const Eigen::Vector3f onCopy = pointOnCopy(part, copy, offset, settings.congruenceTolerance);
-      // A knob's copies in a row tighter than separationVoxels: their spacing alone.
-      const float least = isKnobPart(part, voxel, settings)
-                              ? 0.0f
-                              : static_cast<float>(settings.separationVoxels) * voxel;
       const float apart =
           settings.separationBySpacing
               ? std::max(least, std::min(separation,
