@@ -14,8 +14,9 @@ namespace sagrid {
 // one point of a type per small part; 4: the touch-key pass; 5: on stoves, repeated parts as close
 // as their spacing; 6: on stoves, part ownership drops strays from a full row; 7: a full row owns
 // its parts, and every full row keeps its points; 8: on stoves, knob points move onto the knob
-// parts they lie on or beside; 9: a touch symbol far from the others is no control).
-inline constexpr int kPointPassesVersion = 9;
+// parts they lie on or beside; 9: a touch symbol far from the others is no control; 10: oval
+// touch symbols).
+inline constexpr int kPointPassesVersion = 10;
 
 struct PassOptions {
   // Test-time augmentation: copies averaged per model (1 = off, 8 = all). 8 by default: on the

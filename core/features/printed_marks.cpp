@@ -160,102 +160,193 @@ EdgeMap edgesOf(const TopRaster& r, float edgeStep) {
   return e;
 }
 
-// The share of the circle's circumference where an edge crosses it at right angles (within a
-// pixel of the circle, its gradient along the radius): how much of it is really drawn.
+// Whether an edge crosses the outline at `origin` + `distance` x `normal` at right angles (within
+// a pixel of it along `normal`, its gradient along `normal`).
+bool edgeAcross(const EdgeMap& edges, const Eigen::Vector2f& origin, const Eigen::Vector2f& normal,
+                float distance) {
+  for (float t : {0.0f, -1.0f, 1.0f}) {
+    const Eigen::Vector2f q = origin + (distance + t) * normal;
+    if (edges.at(static_cast<int>(std::lround(q.x())), static_cast<int>(std::lround(q.y())), normal,
+                 0.8f))
+      return true;
+  }
+  return false;
+}
+
+// The share of the circle's circumference where an edge crosses it at right angles: how much of
+// it is really drawn.
 float circumferenceSupport(const EdgeMap& edges, float cx, float cy, float radius) {
   const int samples = std::max(24, static_cast<int>(2 * kPi * radius));
   int hits = 0;
   for (int s = 0; s < samples; ++s) {
     const float a = 2 * kPi * static_cast<float>(s) / static_cast<float>(samples);
     const Eigen::Vector2f radial(std::cos(a), std::sin(a));
-    bool hit = false;
-    for (float t : {0.0f, -1.0f, 1.0f}) {
-      const Eigen::Vector2f q = Eigen::Vector2f(cx, cy) + (radius + t) * radial;
-      hit = hit || edges.at(static_cast<int>(std::lround(q.x())),
-                            static_cast<int>(std::lround(q.y())), radial, 0.8f);
-    }
-    hits += hit;
+    hits += edgeAcross(edges, Eigen::Vector2f(cx, cy), radial, radius);
   }
   return static_cast<float>(hits) / static_cast<float>(samples);
 }
 
+// An oval key's outline (a stadium): the points `radius` from the segment between the centres
+// `a` and `b` of its round ends, in raster pixels.
+struct Oval {
+  Eigen::Vector2f a = Eigen::Vector2f::Zero(), b = Eigen::Vector2f::Zero();
+  float radius = 0, support = 0;
+  float length() const { return (b - a).norm(); }
+};
+
+// The share of the oval's outline, `grow` pixels outside it, that edges cross at right angles:
+// its two half circles sampled by angle, its straight sides by length, about one sample a pixel.
+float outlineSupport(const EdgeMap& edges, const Oval& oval, float grow) {
+  const float radius = oval.radius + grow, length = oval.length();
+  const Eigen::Vector2f along = (oval.b - oval.a) / length, across(-along.y(), along.x());
+  const int arcSamples = std::max(12, static_cast<int>(kPi * radius));
+  const int sideSamples = std::max(1, static_cast<int>(length));
+  int hits = 0;
+  for (int s = 0; s < arcSamples; ++s) {
+    const float angle = kPi * (static_cast<float>(s) + 0.5f) / static_cast<float>(arcSamples);
+    const Eigen::Vector2f out = std::sin(angle) * along + std::cos(angle) * across;
+    hits += edgeAcross(edges, oval.b, out, radius);
+    const Eigen::Vector2f back = -std::sin(angle) * along + std::cos(angle) * across;
+    hits += edgeAcross(edges, oval.a, back, radius);
+  }
+  for (int s = 0; s < sideSamples; ++s) {
+    const Eigen::Vector2f onAxis =
+        oval.a + (static_cast<float>(s) + 0.5f) / static_cast<float>(sideSamples) * length * along;
+    hits += edgeAcross(edges, onAxis, across, radius);
+    hits += edgeAcross(edges, onAxis, -across, radius);
+  }
+  return static_cast<float>(hits) / static_cast<float>(2 * (arcSamples + sideSamples));
+}
+
+// A local maximum of the Hough votes for circles: a circle centre candidate, with the share of
+// its circumference that edges really cross (`drawn`).
+struct HoughPeak {
+  float x = 0, y = 0, radius = 0, drawn = 0;
+};
+
 // Hough transform for circles of radius [rMin, rMax] pixels: every edge pixel votes at each
 // radius along and against its gradient; local maxima of the votes (3x3 pixels, radius +- 1) that
-// reach a third of the circumference are candidates, kept when edges really run around a share
-// `minSupport` of it, more than around the circles 5, 9 and 13 pixels outside it (past a drawn
-// line's other edge, and not thrown off by a line drawn beside it). Concentric and overlapping
-// circles are merged, best supported first.
-std::vector<Circle> houghCircles(const TopRaster& r, int rMin, int rMax, float edgeStep,
-                                 float minSupport) {
-  std::vector<Circle> out;
-  if (r.width < 3 || r.height < 3 || rMax < rMin || rMin < 1) return out;
-  const EdgeMap edges = edgesOf(r, edgeStep);
+// reach a third of the circumference are the peaks. The round end of an oval outline is one too,
+// with about half its circle drawn.
+std::vector<HoughPeak> houghPeaks(const EdgeMap& edges, int rMin, int rMax) {
+  std::vector<HoughPeak> peaks;
+  const int width = edges.width, height = edges.height;
+  if (width < 3 || height < 3 || rMax < rMin || rMin < 1) return peaks;
   const int radii = rMax - rMin + 1;
-  const std::size_t plane = static_cast<std::size_t>(r.width) * r.height;
+  const std::size_t plane = static_cast<std::size_t>(width) * height;
+  const auto at = [width](int x, int y) { return static_cast<std::size_t>(y) * width + x; };
   std::vector<float> votes(plane * radii, 0.0f);
-  for (int y = 0; y < r.height; ++y) {
-    for (int x = 0; x < r.width; ++x) {
-      const Eigen::Vector2f& d = edges.direction[r.at(x, y)];
+  for (int y = 0; y < height; ++y) {
+    for (int x = 0; x < width; ++x) {
+      const Eigen::Vector2f& d = edges.direction[at(x, y)];
       if (d.squaredNorm() == 0) continue;
       for (int k = 0; k < radii; ++k) {
         const float rad = static_cast<float>(rMin + k);
         for (float sign : {-1.0f, 1.0f}) {
           const int cx = static_cast<int>(std::lround(x + sign * rad * d.x()));
           const int cy = static_cast<int>(std::lround(y + sign * rad * d.y()));
-          if (cx < 0 || cy < 0 || cx >= r.width || cy >= r.height) continue;
-          votes[k * plane + r.at(cx, cy)] += 1.0f;
+          if (cx < 0 || cy < 0 || cx >= width || cy >= height) continue;
+          votes[k * plane + at(cx, cy)] += 1.0f;
         }
       }
     }
   }
-  std::vector<Circle> candidates;
   for (int k = 0; k < radii; ++k) {
     const float rad = static_cast<float>(rMin + k);
     const float needed = 2 * kPi * rad / 3;
-    for (int y = 1; y + 1 < r.height; ++y) {
-      for (int x = 1; x + 1 < r.width; ++x) {
-        const float v = votes[k * plane + r.at(x, y)];
+    for (int y = 1; y + 1 < height; ++y) {
+      for (int x = 1; x + 1 < width; ++x) {
+        const float v = votes[k * plane + at(x, y)];
         if (v < 0.25f * needed) continue;
         float sum = 0;
         bool isMax = true;
         for (int kk = std::max(0, k - 1); kk <= std::min(radii - 1, k + 1); ++kk)
           for (int dy = -1; dy <= 1; ++dy)
             for (int dx = -1; dx <= 1; ++dx) {
-              const float w = votes[kk * plane + r.at(x + dx, y + dy)];
+              const float w = votes[kk * plane + at(x + dx, y + dy)];
               sum += w;
               if (w > v) isMax = false;
             }
         if (!isMax || sum < needed) continue;
-        // Where edges run everywhere (a noisy texture) they also cross the circles 5, 9 and 13
-        // pixels outside it (inside, a symbol has its icon): only the share beyond that clutter
-        // counts. The least of the three rings: a straight line drawn beside a key (an underline)
-        // runs along a ring only where it is nearly tangent to it, a band a few pixels wide, and
-        // crosses the others at a slant; noise is on all of them.
-        // The rings are read only where the circle itself is covered enough: clutter can only
-        // lower its support.
         const float fx = static_cast<float>(x), fy = static_cast<float>(y);
-        const float drawn = circumferenceSupport(edges, fx, fy, rad);
-        if (drawn < minSupport) continue;
-        const float clutter = std::min({circumferenceSupport(edges, fx, fy, rad + 5),
-                                        circumferenceSupport(edges, fx, fy, rad + 9),
-                                        circumferenceSupport(edges, fx, fy, rad + 13)});
-        const float support = drawn - clutter;
-        if (support >= minSupport)
-          candidates.push_back({static_cast<float>(x), static_cast<float>(y), rad, support});
+        peaks.push_back({fx, fy, rad, circumferenceSupport(edges, fx, fy, rad)});
       }
     }
   }
-  // Best supported first; of equal support the larger circle (a zone's outer ring).
+  return peaks;
+}
+
+// Keeps the candidates that do not overlap a better supported one (or one already in `kept`),
+// best supported first; of equal support the larger (a zone's outer ring). Centres closer than
+// 0.6 of the larger radius overlap.
+void keepApart(std::vector<Circle> candidates, std::vector<Circle>& kept) {
   std::stable_sort(candidates.begin(), candidates.end(), [](const Circle& a, const Circle& b) {
     return a.support != b.support ? a.support > b.support : a.radius > b.radius;
   });
   for (const Circle& c : candidates) {
-    const bool merged = std::any_of(out.begin(), out.end(), [&](const Circle& o) {
+    const bool merged = std::any_of(kept.begin(), kept.end(), [&](const Circle& o) {
       return std::hypot(c.x - o.x, c.y - o.y) < 0.6f * std::max(c.radius, o.radius);
     });
-    if (!merged) out.push_back(c);
+    if (!merged) kept.push_back(c);
   }
+}
+
+// The circles among the peaks whose edges really run around a share `minSupport` of them, more
+// than around the circles 5, 9 and 13 pixels outside them (past a drawn line's other edge, and
+// not thrown off by a line drawn beside it), concentric and overlapping ones merged.
+std::vector<Circle> drawnCircles(const EdgeMap& edges, const std::vector<HoughPeak>& peaks,
+                                 float minSupport) {
+  std::vector<Circle> candidates;
+  for (const HoughPeak& p : peaks) {
+    // Where edges run everywhere (a noisy texture) they also cross the circles 5, 9 and 13
+    // pixels outside it (inside, a symbol has its icon): only the share beyond that clutter
+    // counts. The least of the three rings: a straight line drawn beside a key (an underline)
+    // runs along a ring only where it is nearly tangent to it, a band a few pixels wide, and
+    // crosses the others at a slant; noise is on all of them.
+    // The rings are read only where the circle itself is covered enough: clutter can only
+    // lower its support.
+    if (p.drawn < minSupport) continue;
+    const float clutter = std::min({circumferenceSupport(edges, p.x, p.y, p.radius + 5),
+                                    circumferenceSupport(edges, p.x, p.y, p.radius + 9),
+                                    circumferenceSupport(edges, p.x, p.y, p.radius + 13)});
+    const float support = p.drawn - clutter;
+    if (support >= minSupport) candidates.push_back({p.x, p.y, p.radius, support});
+  }
+  std::vector<Circle> out;
+  keepApart(std::move(candidates), out);
   return out;
+}
+
+// Oval outlines (stadiums) among the peaks: two peaks of about the same radius (within a pixel),
+// each with at least `minEndDrawn` of its circle drawn, `minLength` to `maxLength` radii apart,
+// are the round ends of an oval when edges run around `minSupport` of its outline, beyond the
+// clutter on the outlines 5, 9 and 13 pixels outside it (as for circles). Returned unmerged, as
+// circles at the ovals' centres whose radius is half their length.
+std::vector<Circle> drawnOvals(const EdgeMap& edges, const std::vector<HoughPeak>& peaks,
+                               const OvalShape& shape, float minSupport) {
+  std::vector<Circle> candidates;
+  for (std::size_t i = 0; i < peaks.size(); ++i) {
+    const HoughPeak& p = peaks[i];
+    if (p.drawn < shape.minEndDrawn) continue;
+    for (std::size_t j = i + 1; j < peaks.size(); ++j) {
+      const HoughPeak& q = peaks[j];
+      if (q.drawn < shape.minEndDrawn || std::abs(p.radius - q.radius) > 1) continue;
+      const Oval oval{{p.x, p.y}, {q.x, q.y}, 0.5f * (p.radius + q.radius)};
+      const float length = oval.length();
+      if (length < shape.minLength * oval.radius || length > shape.maxLength * oval.radius)
+        continue;
+      const float drawn = outlineSupport(edges, oval, 0);
+      if (drawn < minSupport) continue;
+      const float clutter =
+          std::min({outlineSupport(edges, oval, 5), outlineSupport(edges, oval, 9),
+                    outlineSupport(edges, oval, 13)});
+      const float support = drawn - clutter;
+      if (support < minSupport) continue;
+      const Eigen::Vector2f centre = 0.5f * (oval.a + oval.b);
+      candidates.push_back({centre.x(), centre.y(), 0.5f * length + oval.radius, support});
+    }
+  }
+  return candidates;
 }
 
 PrintedCircle toMesh(const TopRaster& full, const TopRaster& searched, const Circle& c) {
@@ -285,17 +376,23 @@ PrintedMarks findPrintedMarks(const Mesh& mesh, const PrintedMarkSettings& setti
   const int zoneFactor = 3;
   const TopRaster coarse = downsampled(full, zoneFactor);
   const float coarsePixels = static_cast<float>(settings.pixels) / zoneFactor;
-  for (const Circle& c : houghCircles(coarse, static_cast<int>(settings.zoneMin * coarsePixels),
-                                      static_cast<int>(settings.zoneMax * coarsePixels),
-                                      settings.edgeStep, settings.zoneSupport)) {
+  const EdgeMap coarseEdges = edgesOf(coarse, settings.edgeStep);
+  const std::vector<HoughPeak> zonePeaks =
+      houghPeaks(coarseEdges, static_cast<int>(settings.zoneMin * coarsePixels),
+                 static_cast<int>(settings.zoneMax * coarsePixels));
+  for (const Circle& c : drawnCircles(coarseEdges, zonePeaks, settings.zoneSupport)) {
     const PrintedCircle zone = toMesh(full, coarse, c);
     if (std::isfinite(zone.centre.z())) marks.zones.push_back(zone);
   }
   const float pixels = static_cast<float>(settings.pixels);
-  for (const Circle& c :
-       houghCircles(full, std::max(2, static_cast<int>(settings.symbolMin * pixels)),
-                    static_cast<int>(settings.symbolMax * pixels), settings.edgeStep,
-                    settings.symbolSupport)) {
+  const EdgeMap edges = edgesOf(full, settings.edgeStep);
+  const std::vector<HoughPeak> symbolPeaks =
+      houghPeaks(edges, std::max(2, static_cast<int>(settings.symbolMin * pixels)),
+                 static_cast<int>(settings.symbolMax * pixels));
+  std::vector<Circle> symbols = drawnCircles(edges, symbolPeaks, settings.symbolSupport);
+  if (settings.ovals.maxLength > 0)
+    keepApart(drawnOvals(edges, symbolPeaks, settings.ovals, settings.symbolSupport), symbols);
+  for (const Circle& c : symbols) {
     const PrintedCircle symbol = toMesh(full, full, c);
     if (!std::isfinite(symbol.centre.z())) continue;
     // A dot or a ring inside a zone marks the zone, not a control.

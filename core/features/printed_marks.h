@@ -3,7 +3,9 @@
 // tops are rasterized top-down (the highest surface wins), the luminance edges vote for circle
 // centres along their gradient (a Hough transform), and circles whose circumference the edges
 // support are kept, concentric ones merged. Sizes are shares of the printed area's largest extent,
-// so no units are needed: zones 5-30 % of it, symbols 0.6-3 %.
+// so no units are needed: zones 5-30 % of it, symbols 0.6-3 %. Touch symbols may also be oval
+// outlines (a stadium: two round ends joined by straight sides), as the power or slider key of
+// real induction hobs is.
 #pragma once
 
 #include <Eigen/Core>
@@ -15,7 +17,7 @@ struct Mesh;
 
 struct PrintedCircle {
   Eigen::Vector3f centre = Eigen::Vector3f::Zero();  // mesh frame (z-up), on the printed surface
-  float radius = 0;                                  // mesh units
+  float radius = 0;   // mesh units; an oval symbol's is half its length
   float support = 0;  // share of the circumference its edges cover, in [0, 1]
 };
 
@@ -23,6 +25,14 @@ struct PrintedMarks {
   std::vector<PrintedCircle> zones;    // cooking-zone sized, best supported first
   std::vector<PrintedCircle> symbols;  // touch-symbol sized, outside every zone
   bool empty() const { return zones.empty() && symbols.empty(); }
+};
+
+// What makes two round ends (Hough peaks of the symbol radii) an oval symbol's.
+struct OvalShape {
+  float minEndDrawn = 0.4f;  // share of each end's circle drawn (a half circle's is about 0.5)
+  // Distance between the ends' centres in their radii: from a clear stretch to a long key (1 to
+  // 6 radii); maxLength 0 = no oval symbols.
+  float minLength = 1.0f, maxLength = 6.0f;
 };
 
 struct PrintedMarkSettings {
@@ -39,6 +49,8 @@ struct PrintedMarkSettings {
   // mark of another kind (a logo or a hot-surface sign at the back of a real induction hob) and is
   // left out; 0 = keep every symbol.
   float isolatedSymbolSpacings = 2.5f;
+  // Oval symbols; their outline must be drawn as a round symbol's is (symbolSupport).
+  OvalShape ovals;
 };
 
 // The symbols of `symbols` that stand with the others (PrintedMarkSettings::isolatedSymbolSpacings

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <functional>
 #include <random>
 
 #include "core/generate/dataset_generator.h"
@@ -85,26 +87,36 @@ TEST(PrintedMarks, NothingOnStovesWhoseBurnersAreGeometryOrOnPlainAndNoisyTops) 
 // The 2-zone hob of the real corpus: plus and minus keys printed as filled discs in a row, a
 // line drawn just below them. The line crosses the ring outside each disc that tells a symbol from
 // a noisy texture; it must not hide the keys.
-// A 0.6 m glass top at height 0.9 printed dark with white round keys (radius 6 pixels of 512) at
-// `keys` (pixel column, row), and a white line under the row at `lineRow` when it is positive.
-Mesh glassWithKeys(const std::vector<std::pair<int, int>>& keys, int lineRow) {
+// A 0.6 m glass top at height 0.9 printed dark (512 x 512 pixels), white where `white(x, y)`.
+Mesh printedGlass(const std::function<bool(int, int)>& white) {
   Mesh glass = test::quadZ({0, 0}, {0.6f, 0.6f}, 0.9f);
   Texture print;
   print.width = print.height = 512;
   print.rgba.assign(512 * 512 * 4, 255);
-  const int radius = 6;
   for (int y = 0; y < 512; ++y)
-    for (int x = 0; x < 512; ++x) {
-      bool white = lineRow > 0 && (y == lineRow + 8 || y == lineRow + 9) && x >= 120 && x <= 390;
-      for (const auto& [c, r] : keys)
-        white = white || (x - c) * (x - c) + (y - r) * (y - r) <= radius * radius;
+    for (int x = 0; x < 512; ++x)
       for (int k = 0; k < 3; ++k)
-        print.rgba[(static_cast<std::size_t>(y) * 512 + x) * 4 + k] = white ? 240 : 20;
-    }
+        print.rgba[(static_cast<std::size_t>(y) * 512 + x) * 4 + k] = white(x, y) ? 240 : 20;
   glass.textures = {print};
   glass.materials = {Material{"glass", Eigen::Vector3f::Ones(), 0}};
   glass.triangleMaterials.assign(glass.triangles.size(), 0);
   return glass;
+}
+
+bool onKey(const std::vector<std::pair<int, int>>& keys, int x, int y) {
+  const int radius = 6;
+  return std::any_of(keys.begin(), keys.end(), [&](const auto& k) {
+    return (x - k.first) * (x - k.first) + (y - k.second) * (y - k.second) <= radius * radius;
+  });
+}
+
+// The glass printed with white round keys (radius 6 pixels) at `keys` (pixel column, row), and
+// a white line under the row at `lineRow` when it is positive.
+Mesh glassWithKeys(const std::vector<std::pair<int, int>>& keys, int lineRow) {
+  return printedGlass([&](int x, int y) {
+    const bool line = lineRow > 0 && (y == lineRow + 8 || y == lineRow + 9) && x >= 120 && x <= 390;
+    return line || onKey(keys, x, y);
+  });
 }
 
 // Where a pixel of glassWithKeys's print lies on the glass (texture rows run from the far edge).
@@ -136,6 +148,45 @@ TEST(PrintedMarks, ASymbolFarFromTheOthersIsNoTouchKey) {
   PrintedMarkSettings keepAll;
   keepAll.isolatedSymbolSpacings = 0;
   EXPECT_EQ(findPrintedMarks(glass, keepAll).symbols.size(), 5u);
+}
+
+// Both real induction hobs have one key printed as an oval outline beside their round keys.
+TEST(PrintedMarks, AnOvalKeyIsFoundAtItsCentre) {
+  const std::vector<std::pair<int, int>> keyPixels = {{150, 400}, {190, 400}, {230, 400}};
+  // An outline 2 pixels wide, 8 pixels from the segment between (175, 360) and (205, 360), and
+  // two round outlines as wide side by side (two keys, no oval between them).
+  const auto outline = [](int x, int y, float ax, float bx, float row) {
+    const float t = std::clamp((static_cast<float>(x) - ax) / (bx - ax), 0.0f, 1.0f);
+    const float d =
+        std::hypot(static_cast<float>(x) - (ax + t * (bx - ax)), static_cast<float>(y) - row);
+    return d >= 7.0f && d <= 9.0f;
+  };
+  const Mesh glass = printedGlass([&](int x, int y) {
+    return onKey(keyPixels, x, y) || outline(x, y, 175, 205, 360) || outline(x, y, 300, 300, 360) ||
+           outline(x, y, 320, 320, 360);
+  });
+  const PrintedMarks marks = findPrintedMarks(glass);
+  ASSERT_EQ(marks.symbols.size(), 6u);
+  std::vector<Eigen::Vector3f> expected;
+  for (const auto& k : keyPixels) expected.push_back(onGlass(k));
+  for (int column : {300, 320}) expected.push_back(onGlass({column, 360}));
+  const Eigen::Vector3f ovalCentre = onGlass({190, 360});
+  int ovals = 0;
+  for (const auto& s : marks.symbols) {
+    if ((s.centre - ovalCentre).norm() < 0.006f) {
+      ++ovals;
+      EXPECT_NEAR(s.radius, 23.0f / 512 * 0.6f, 0.004f) << "half its length";
+      continue;
+    }
+    EXPECT_LT(nearest(s.centre, expected), 0.006f);
+  }
+  EXPECT_EQ(ovals, 1);
+
+  PrintedMarkSettings roundOnly;
+  roundOnly.ovals.maxLength = 0;
+  const PrintedMarks round = findPrintedMarks(glass, roundOnly);
+  EXPECT_EQ(round.symbols.size(), 5u);
+  for (const auto& s : round.symbols) EXPECT_GT((s.centre - ovalCentre).norm(), 0.01f);
 }
 
 TEST(PrintedMarks, SymbolsStandingTogetherKeepsRowsAndGroupsAndFewSymbols) {
