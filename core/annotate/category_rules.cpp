@@ -13,6 +13,7 @@ CategoryRules categoryRulesFor(const std::string& category) {
   rules.touchKeys = true;
   rules.repeatedParts.separationBySpacing = true;
   rules.repeatedParts.snapPartVoxels = 1.0f;
+  rules.repeatedParts.sureKnobRow = 3;
   return rules;
 }
 

@@ -19,7 +19,7 @@ struct CategoryRules {
   // Flat pads standing on the top are toggle buttons (core/annotate/touch_keys_pass.h).
   bool touchKeys = false;
   // Stoves: copies as close as their spacing, knob points moved onto the knob parts
-  // (RepeatedPartSettings::separationBySpacing, snapPartVoxels).
+  // (RepeatedPartSettings::separationBySpacing, snapPartVoxels, sureKnobRow).
   RepeatedPartSettings repeatedParts;
   // Stoves: one point per part, strays from the full rows (onePointPerPart, strayRowSpacings; on
   // the generated wall-fixture sinks one point per part lost sink knobs).

@@ -15,8 +15,9 @@ namespace sagrid {
 // as their spacing; 6: on stoves, part ownership drops strays from a full row; 7: a full row owns
 // its parts, and every full row keeps its points; 8: on stoves, knob points move onto the knob
 // parts they lie on or beside; 9: a touch symbol far from the others is no control; 10: oval
-// touch symbols).
-inline constexpr int kPointPassesVersion = 10;
+// touch symbols; 11: on stoves, a point beside a row of three or more knobs moves onto it whatever
+// the field).
+inline constexpr int kPointPassesVersion = 11;
 
 struct PassOptions {
   // Test-time augmentation: copies averaged per model (1 = off, 8 = all). 8 by default: on the

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <optional>
 
 #include "core/points/field_lookup.h"
@@ -101,6 +102,9 @@ std::vector<ExtractedPoint> completeRepeatedParts(const PredictedField& field,
   const auto isKnobRow = [&](const ConnectedPart& part, std::size_t n) {
     return n >= 1 && isKnobPart(part, voxel, settings);
   };
+  const auto isSureKnobRow = [&](const ConnectedPart& part, std::size_t n) {
+    return static_cast<int>(n) + 1 >= settings.sureKnobRow && isKnobPart(part, voxel, settings);
+  };
   std::vector<ExtractedPoint> out = points;
   if (settings.snapPartVoxels > 0) {
     for (auto& p : out) {
@@ -108,10 +112,15 @@ std::vector<ExtractedPoint> completeRepeatedParts(const PredictedField& field,
       std::optional<std::size_t> knob;
       if (at.seed && isKnobPart(parts[*at.seed], voxel, settings))
         knob = at.seed;
-      else if (!at.onSmallPart && pairReach > 0)
+      else if (!at.onSmallPart && pairReach > 0) {
         knob = nearbyPart(p.position, parts, copies, pairReach,
                           p.distance + settings.maxDistanceAbovePoint, field, dense, settings,
                           isKnobRow);
+        if (!knob && settings.sureKnobRow > 0)
+          knob = nearbyPart(p.position, parts, copies, pairReach,
+                            std::numeric_limits<float>::infinity(), field, dense, settings,
+                            isSureKnobRow);
+      }
       if (knob) p.position = parts[*knob].box.center();
     }
   }

@@ -50,6 +50,12 @@ struct RepeatedPartSettings {
   // spacing even where the row is tighter than separationVoxels. 0 = off (a handle's point is on
   // its lever, not at the part's centre).
   float snapPartVoxels = 0.0f;
+  // With snapPartVoxels: a point on no small part moves onto the nearest knob within
+  // pairReachVoxels whose row (the part and its copies) has at least this many knobs, whatever the
+  // field there. A row of equal knobs is surer than the network's field beside it: on a real range
+  // the toggle points lay 7 cm below its row of four knobs, on the bar of the oven door, where the
+  // field at the knobs was higher than maxDistanceAbovePoint allows. 0 = the field decides always.
+  int sureKnobRow = 0;
 };
 
 // `points` plus, for each point (best first), a point on every copy of the part it lies on: of the

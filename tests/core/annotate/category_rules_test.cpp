@@ -11,6 +11,7 @@ TEST(CategoryRules, StovesGetTheirOwnRules) {
   EXPECT_TRUE(stove.touchKeys);
   EXPECT_TRUE(stove.repeatedParts.separationBySpacing);
   EXPECT_GT(stove.repeatedParts.snapPartVoxels, 0.0f);
+  EXPECT_GE(stove.repeatedParts.sureKnobRow, 3);
   EXPECT_TRUE(stove.partOwnership.onePointPerPart);
   EXPECT_GT(stove.partOwnership.strayRowSpacings, 0.0f);
   EXPECT_GT(stove.partOwnership.footHeight, 0.0f);
@@ -24,6 +25,7 @@ TEST(CategoryRules, SinksAndOtherCategoriesKeepTheDefaults) {
     EXPECT_FALSE(rules.touchKeys);
     EXPECT_FALSE(rules.repeatedParts.separationBySpacing);
     EXPECT_EQ(rules.repeatedParts.snapPartVoxels, 0.0f);
+    EXPECT_EQ(rules.repeatedParts.sureKnobRow, 0);
     EXPECT_GT(rules.repeatedParts.pairReachVoxels, 0.0f);
     EXPECT_FALSE(rules.partOwnership.onePointPerPart);
     EXPECT_EQ(rules.partOwnership.strayRowSpacings, 0.0f);

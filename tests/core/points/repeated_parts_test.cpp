@@ -205,6 +205,30 @@ TEST(RepeatedParts, SnappedAPointBesideARowOfKnobsMovesOntoTheNearestWithinReach
   EXPECT_EQ(fromPoint(field, onPlate(12, 20), parts, bySpacing).size(), 1u);
 }
 
+TEST(RepeatedParts, ASureKnobRowTakesAPointBesideItWhateverTheField) {
+  // The field's valley is at the point, 4 voxels beside the third knob; at the knobs it is 0.1
+  // higher, more than maxDistanceAbovePoint (0.05) allows.
+  const auto knobs = tightKnobRow();
+  const Eigen::Vector3f beside = onPlate(12, 20);
+  const auto field = test::plateFieldWithOffsets({beside, knobs[0], knobs[1], knobs[2], knobs[3]},
+                                                 {0.0f, 0.1f, 0.1f, 0.1f, 0.1f});
+  const auto parts = panelWithKnobs(knobs);
+  const auto stays = fromPoint(field, beside, parts, knobSnapping());
+  ASSERT_EQ(stays.size(), 1u);
+  EXPECT_TRUE(stays[0].position.isApprox(beside));
+  RepeatedPartSettings sure = knobSnapping();
+  sure.sureKnobRow = 3;
+  const auto moved = fromPoint(field, beside, parts, sure);
+  ASSERT_FALSE(moved.empty());
+  EXPECT_TRUE(moved[0].position.isApprox(knobs[2], 1e-5f));
+  // A row of four is not sure enough where five are asked for, and out of reach nothing moves.
+  sure.sureKnobRow = 5;
+  EXPECT_TRUE(fromPoint(field, beside, parts, sure)[0].position.isApprox(beside));
+  sure.sureKnobRow = 3;
+  const Eigen::Vector3f far = onPlate(12, 24);
+  EXPECT_TRUE(fromPoint(field, far, parts, sure)[0].position.isApprox(far));
+}
+
 TEST(RepeatedParts, SnappedPartsUnderAVoxelAreNoKnobs) {
   // A row of indicator lights half a voxel across: a point beside them stays where it is, and
   // the copies keep the floor of separationVoxels.
