@@ -14,6 +14,11 @@ CategoryRules categoryRulesFor(const std::string& category) {
   rules.repeatedParts.separationBySpacing = true;
   rules.repeatedParts.snapPartVoxels = 1.0f;
   rules.repeatedParts.sureKnobRow = 3;
+  RepeatedPartSettings caps;
+  caps.roundFlatSeeds = true;
+  caps.maxCopyScale = 1.5f;
+  caps.pairReachVoxels = 0.0f;
+  rules.burnerCaps = caps;
   return rules;
 }
 

@@ -5,6 +5,7 @@
 // on stoves only, and the repeated-parts and part-ownership passes take per-category settings.
 #pragma once
 
+#include <optional>
 #include <string>
 
 #include "core/points/part_ownership.h"
@@ -21,6 +22,10 @@ struct CategoryRules {
   // Stoves: copies as close as their spacing, knob points moved onto the knob parts
   // (RepeatedPartSettings::separationBySpacing, snapPartVoxels, sureKnobRow).
   RepeatedPartSettings repeatedParts;
+  // Stoves: after part ownership, heat-source points on a round flat cap repeat on its copies,
+  // scaled ones too (a wok burner's), that hold no point of another type; unset = heat sources
+  // are left as they are (roundFlatSeeds, maxCopyScale).
+  std::optional<RepeatedPartSettings> burnerCaps;
   // Stoves: one point per part, strays from the full rows (onePointPerPart, strayRowSpacings; on
   // the generated wall-fixture sinks one point per part lost sink knobs).
   PartOwnershipSettings partOwnership;

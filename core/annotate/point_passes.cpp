@@ -63,6 +63,14 @@ CategoryPoints predictCategoryPoints(const std::vector<const model::AffordanceMo
   }
   if (passes.partOwnership && mode == InstanceMode::Auto && counts.empty())
     applyPartOwnership(out.predictions, parts, features, scene, mesh.fileUp, rules.partOwnership);
+  // Burner caps once every part has its owner: a heat-source point on a knob that a knob row owns
+  // is gone by then, and a cap that holds another type's point gets none.
+  if (passes.repeatedParts && rules.burnerCaps && mode == InstanceMode::Auto && counts.empty())
+    for (std::size_t m = 0; m < out.predictions.size(); ++m)
+      if (out.predictions[m].type == "heatsource")
+        applyRepeatedParts(out.predictions[m], parts, features, scene, mesh.fileUp,
+                           models[m]->card().extraction, *rules.burnerCaps,
+                           pointsOfOtherTypes(out.predictions, m));
   return out;
 }
 

@@ -19,12 +19,24 @@ std::vector<ConnectedPart> normalizedParts(const Mesh& mesh, const Normalization
 
 void applyRepeatedParts(ModelPrediction& prediction, const std::vector<ConnectedPart>& parts,
                         const FeatureGrid& features, const SurfaceScene& scene, UpAxis fileUp,
-                        const ExtractionSettings& extraction,
-                        const RepeatedPartSettings& settings) {
-  if (prediction.type != "togglebutton") return;
+                        const ExtractionSettings& extraction, const RepeatedPartSettings& settings,
+                        const std::vector<Eigen::Vector3f>& occupied) {
+  if (prediction.type != "togglebutton" &&
+      !(prediction.type == "heatsource" && settings.roundFlatSeeds))
+    return;
   setPoints(prediction,
-            completeRepeatedParts(prediction.field, prediction.points, parts, extraction, settings),
+            completeRepeatedParts(prediction.field, prediction.points, parts, extraction, settings,
+                                  occupied),
             features, scene, fileUp);
+}
+
+std::vector<Eigen::Vector3f> pointsOfOtherTypes(const std::vector<ModelPrediction>& predictions,
+                                                std::size_t except) {
+  std::vector<Eigen::Vector3f> out;
+  for (std::size_t m = 0; m < predictions.size(); ++m)
+    if (m != except)
+      for (const auto& p : predictions[m].points) out.push_back(p.position);
+  return out;
 }
 
 }  // namespace sagrid

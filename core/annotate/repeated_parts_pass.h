@@ -16,13 +16,20 @@ namespace sagrid {
 std::vector<ConnectedPart> normalizedParts(const Mesh& mesh, const Normalization& normalization);
 
 // Adds the points on copies to `prediction` (points and surface), and moves a point onto a nearby
-// pair of equal parts (re-projected), when it is of toggle buttons;
-// other types are left as they are: a hob's burners come in several sizes and sit among grate
-// bars that are copies of one another (on the bench val split, burner precision fell 90 -> 82 %
-// with the pass on them). `parts` from normalizedParts.
+// pair of equal parts (re-projected), when it is of toggle buttons, or of heat sources with
+// `settings.roundFlatSeeds` (burner caps only); other types are left as they are: a hob's burners
+// come in several sizes and sit among grate bars that are copies of one another (on the bench val
+// split, burner precision fell 90 -> 82 % with the pass on them, every part repeating). A copy
+// that holds one of `occupied` (normalized frame: the points of other types) gets no point.
+// `parts` from normalizedParts.
 void applyRepeatedParts(ModelPrediction& prediction, const std::vector<ConnectedPart>& parts,
                         const FeatureGrid& features, const SurfaceScene& scene, UpAxis fileUp,
                         const ExtractionSettings& extraction,
-                        const RepeatedPartSettings& settings = {});
+                        const RepeatedPartSettings& settings = {},
+                        const std::vector<Eigen::Vector3f>& occupied = {});
+
+// The points (normalized frame) of every prediction but the one at `except`.
+std::vector<Eigen::Vector3f> pointsOfOtherTypes(const std::vector<ModelPrediction>& predictions,
+                                                std::size_t except);
 
 }  // namespace sagrid

@@ -135,8 +135,20 @@ bool congruentParts(const ConnectedPart& a, const ConnectedPart& b, float tolera
   return (a.spread - b.spread).cwiseAbs().maxCoeff() <= tolerance * spreadScale;
 }
 
-PartCopies::PartCopies(const std::vector<ConnectedPart>& parts, float tolerance)
-    : m_parts(parts), m_tolerance(tolerance) {
+std::optional<float> similarityScale(const ConnectedPart& a, const ConnectedPart& b,
+                                     float tolerance, float maxScale) {
+  if (a.triangles != b.triangles || !(a.spread[0] > 0) || !(a.area > 0)) return std::nullopt;
+  const float scale = b.spread[0] / a.spread[0];
+  if (!(scale >= 1.0f / maxScale && scale <= maxScale)) return std::nullopt;
+  const float area = scale * scale * a.area;
+  if (std::abs(b.area - area) > tolerance * std::max(b.area, area)) return std::nullopt;
+  const Eigen::Vector3f spread = scale * a.spread;
+  if ((b.spread - spread).cwiseAbs().maxCoeff() > tolerance * b.spread[0]) return std::nullopt;
+  return scale;
+}
+
+PartCopies::PartCopies(const std::vector<ConnectedPart>& parts, float tolerance, float maxScale)
+    : m_parts(parts), m_tolerance(tolerance), m_maxScale(maxScale) {
   for (std::size_t p = 0; p < parts.size(); ++p)
     if (parts[p].triangles >= kMinInstanceTriangles) m_groups[parts[p].triangles].push_back(p);
 }
@@ -146,7 +158,10 @@ std::vector<std::size_t> PartCopies::of(std::size_t p) const {
   const auto group = m_groups.find(m_parts[p].triangles);
   if (group == m_groups.end()) return out;
   for (std::size_t q : group->second)
-    if (q != p && congruentParts(m_parts[p], m_parts[q], m_tolerance)) out.push_back(q);
+    if (q != p &&
+        (congruentParts(m_parts[p], m_parts[q], m_tolerance) ||
+         (m_maxScale > 1.0f && similarityScale(m_parts[p], m_parts[q], m_tolerance, m_maxScale))))
+      out.push_back(q);
   return out;
 }
 

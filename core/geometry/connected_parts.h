@@ -42,12 +42,20 @@ constexpr int kMinInstanceTriangles = 8;
 // voxelizes and rounds a little differently.
 constexpr float kCopyTolerance = 0.05f;
 
+// The factor `b` is `a` scaled by up to a rigid motion or a mirror, when it is one within
+// [1 / maxScale, maxScale]: the same triangle count, the spread scaled by it and the area by its
+// square within `tolerance` (relative, as congruentParts). A range's wok burner is its other
+// burners' cap made larger.
+std::optional<float> similarityScale(const ConnectedPart& a, const ConnectedPart& b,
+                                     float tolerance, float maxScale);
+
 // The parts of an object grouped by triangle count (copies have the same), so that finding a
-// part's copies (congruentParts within `tolerance`) reads only its group. Parts of fewer than
+// part's copies (congruentParts within `tolerance`; with `maxScale` above 1 also the parts it is
+// scaled to within it, similarityScale) reads only its group. Parts of fewer than
 // kMinInstanceTriangles have none. `parts` must outlive it.
 class PartCopies {
  public:
-  PartCopies(const std::vector<ConnectedPart>& parts, float tolerance);
+  PartCopies(const std::vector<ConnectedPart>& parts, float tolerance, float maxScale = 1.0f);
   // The other parts that are copies of part p.
   std::vector<std::size_t> of(std::size_t p) const;
   // Part p's family: its copies, then p.
@@ -55,7 +63,7 @@ class PartCopies {
 
  private:
   const std::vector<ConnectedPart>& m_parts;
-  float m_tolerance;
+  float m_tolerance, m_maxScale;
   std::unordered_map<int, std::vector<std::size_t>> m_groups;
 };
 

@@ -27,7 +27,7 @@ PartsAtPoint partsAt(const Eigen::Vector3f& point, const std::vector<ConnectedPa
         parts[p].box.exteriorDistance(point) > touch)
       continue;
     at.onSmallPart = true;
-    if (copies.of(p).empty()) continue;
+    if ((settings.roundFlatSeeds && !isRoundFlatPart(parts[p])) || copies.of(p).empty()) continue;
     if (!at.seed) {
       at.seed = p;
       continue;
@@ -69,24 +69,36 @@ std::optional<std::size_t> nearbyPart(const Eigen::Vector3f& point,
   return best;
 }
 
-// Where the point at `offset` from `part`'s centroid goes on `copy`.
+// Where the point at `offset` from `part`'s centroid goes on `copy`; on a copy scaled from it
+// (not congruent within `tolerance`), the offset scales with it.
 Eigen::Vector3f pointOnCopy(const ConnectedPart& part, const ConnectedPart& copy,
-                            const Eigen::Vector3f& offset, float tolerance) {
+                            Eigen::Vector3f offset, float tolerance) {
+  const float scale = congruentParts(part, copy, tolerance) || !(part.spread[0] > 0)
+                          ? 1.0f
+                          : copy.spread[0] / part.spread[0];
+  offset *= scale;
   const Eigen::Vector3f step = copy.centroid - part.centroid;
-  const float size = part.box.diagonal().norm();
+  const float size = scale * part.box.diagonal().norm();
   const bool moved =
-      (part.box.sizes() - copy.box.sizes()).cwiseAbs().maxCoeff() <= tolerance * size;
+      (scale * part.box.sizes() - copy.box.sizes()).cwiseAbs().maxCoeff() <= tolerance * size;
   if (moved || step.norm() <= 0.0f) return copy.centroid + offset;
   const Eigen::Vector3f n = step.normalized();
   return copy.centroid + offset - 2.0f * offset.dot(n) * n;
 }
 }  // namespace
 
+bool isRoundFlatPart(const ConnectedPart& part) {
+  const Eigen::Vector3f size = part.box.sizes();
+  const float wide = std::max(size.x(), size.y()), narrow = std::min(size.x(), size.y());
+  return wide > 0 && wide - narrow <= kRoundShare * wide && size.z() <= kFlatShare * narrow;
+}
+
 std::vector<ExtractedPoint> completeRepeatedParts(const PredictedField& field,
                                                   const std::vector<ExtractedPoint>& points,
                                                   const std::vector<ConnectedPart>& parts,
                                                   const ExtractionSettings& extraction,
-                                                  const RepeatedPartSettings& settings) {
+                                                  const RepeatedPartSettings& settings,
+                                                  const std::vector<Eigen::Vector3f>& occupied) {
   if (points.empty() || parts.empty() || field.voxels.empty() || field.resolution <= 0)
     return points;
   const DenseField dense(field.voxels, field.resolution);
@@ -97,7 +109,7 @@ std::vector<ExtractedPoint> completeRepeatedParts(const PredictedField& field,
   const float separation =
       std::max(static_cast<float>(settings.separationVoxels) * voxel, extraction.nmsRadius);
   const float pairReach = settings.pairReachVoxels * voxel;
-  const PartCopies copies(parts, settings.congruenceTolerance);
+  const PartCopies copies(parts, settings.congruenceTolerance, settings.maxCopyScale);
   const auto isPair = [](const ConnectedPart&, std::size_t n) { return n == 1; };
   const auto isKnobRow = [&](const ConnectedPart& part, std::size_t n) {
     return n >= 1 && isKnobPart(part, voxel, settings);
@@ -152,10 +164,15 @@ std::vector<ExtractedPoint> completeRepeatedParts(const PredictedField& field,
               ? std::max(least, std::min(separation,
                                          kSpacingShare * nearestCentroidDistance(q, family, parts)))
               : separation;
-      const bool taken = std::any_of(out.begin(), out.end(), [&](const ExtractedPoint& o) {
-        return (o.position - onCopy).norm() <= apart ||
-               copy.box.exteriorDistance(o.position) <= touch;
-      });
+      const bool taken =
+          std::any_of(out.begin(), out.end(),
+                      [&](const ExtractedPoint& o) {
+                        return (o.position - onCopy).norm() <= apart ||
+                               copy.box.exteriorDistance(o.position) <= touch;
+                      }) ||
+          std::any_of(occupied.begin(), occupied.end(), [&](const Eigen::Vector3f& o) {
+            return copy.box.exteriorDistance(o) <= touch;
+          });
       if (taken) continue;
       const float distance =
           nearbyDistance(field, dense, voxelContaining(onCopy, field.resolution), kFieldRadius);

@@ -19,11 +19,26 @@ namespace sagrid {
 // (RepeatedPartSettings::separationBySpacing).
 constexpr float kSpacingShare = 0.75f;
 
+// A round flat part (RepeatedPartSettings::roundFlatSeeds): horizontal extents within this share
+// of the larger, height at most this share of the smaller.
+constexpr float kRoundShare = 0.15f, kFlatShare = 0.5f;
+
+// Whether `part` (normalized frame, z up) is round and flat as a burner's cap.
+bool isRoundFlatPart(const ConnectedPart& part);
+
 struct RepeatedPartSettings {
   // The small parts a point belongs to: a knob, a handle, a burner cap, not a panel or the cabinet.
   PartContact contact;
   // Copies: congruentParts within this relative tolerance.
   float congruenceTolerance = kCopyTolerance;
+  // Above 1, a part scaled by up to this factor is a copy too (similarityScale), and a point's
+  // offset from the part's centroid scales with it: a range's wok burner is its other burners'
+  // cap made larger. 1 = congruent copies only.
+  float maxCopyScale = 1.0f;
+  // Only round flat parts repeat (a burner's cap: its two horizontal extents within
+  // kRoundShare of each other, at most kFlatShare of the smaller high): a hob's grate bars are
+  // copies of one another too, and a burner point on one must not put points on the others.
+  bool roundFlatSeeds = false;
   // The field at a copy's point: its smallest predicted distance within two voxels must not
   // exceed the point's own by more than this (normalized units); < 0 = no condition.
   float maxDistanceAbovePoint = 0.05f;
@@ -66,11 +81,11 @@ struct RepeatedPartSettings {
 // the plane between the two centroids when the copy's box is not the part's box moved). `parts` are
 // in the normalized frame (connectedParts of the normalized mesh). New points come after the given
 // ones; a new point's distance is the field's smallest within two voxels, its confidence
-// exp(-distance / confidenceScale). Unchanged without parts or field.
-std::vector<ExtractedPoint> completeRepeatedParts(const PredictedField& field,
-                                                  const std::vector<ExtractedPoint>& points,
-                                                  const std::vector<ConnectedPart>& parts,
-                                                  const ExtractionSettings& extraction,
-                                                  const RepeatedPartSettings& settings = {});
+// exp(-distance / confidenceScale). A copy whose box holds one of `occupied` (within touch: another
+// type's points) gets no point. Unchanged without parts or field.
+std::vector<ExtractedPoint> completeRepeatedParts(
+    const PredictedField& field, const std::vector<ExtractedPoint>& points,
+    const std::vector<ConnectedPart>& parts, const ExtractionSettings& extraction,
+    const RepeatedPartSettings& settings = {}, const std::vector<Eigen::Vector3f>& occupied = {});
 
 }  // namespace sagrid

@@ -12,6 +12,9 @@ TEST(CategoryRules, StovesGetTheirOwnRules) {
   EXPECT_TRUE(stove.repeatedParts.separationBySpacing);
   EXPECT_GT(stove.repeatedParts.snapPartVoxels, 0.0f);
   EXPECT_GE(stove.repeatedParts.sureKnobRow, 3);
+  ASSERT_TRUE(stove.burnerCaps.has_value());
+  EXPECT_TRUE(stove.burnerCaps->roundFlatSeeds);
+  EXPECT_GT(stove.burnerCaps->maxCopyScale, 1.0f);
   EXPECT_TRUE(stove.partOwnership.onePointPerPart);
   EXPECT_GT(stove.partOwnership.strayRowSpacings, 0.0f);
   EXPECT_GT(stove.partOwnership.footHeight, 0.0f);
@@ -26,6 +29,7 @@ TEST(CategoryRules, SinksAndOtherCategoriesKeepTheDefaults) {
     EXPECT_FALSE(rules.repeatedParts.separationBySpacing);
     EXPECT_EQ(rules.repeatedParts.snapPartVoxels, 0.0f);
     EXPECT_EQ(rules.repeatedParts.sureKnobRow, 0);
+    EXPECT_FALSE(rules.burnerCaps.has_value());
     EXPECT_GT(rules.repeatedParts.pairReachVoxels, 0.0f);
     EXPECT_FALSE(rules.partOwnership.onePointPerPart);
     EXPECT_EQ(rules.partOwnership.strayRowSpacings, 0.0f);

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include "core/annotate/category_rules.h"
 #include "support/analytic_meshes.h"
 #include "support/object_under_test.h"
 
@@ -56,6 +57,48 @@ TEST(RepeatedPartsPass, LeavesOtherTypesAsTheyAre) {
                      *range.scene, UpAxis::Z, ExtractionSettings{});
   EXPECT_EQ(p.points.size(), 1u);
   EXPECT_EQ(p.surface.size(), 1u);
+}
+
+// A 60 cm hob with four round flat burner caps (8 x 8 x 2 cm) on its top, the last a wok
+// burner's (10 x 10 x 2.5 cm).
+struct HobWithCaps : test::ObjectUnderTest {
+  std::vector<Eigen::Vector3f> caps;  // top centres, mesh frame
+  HobWithCaps() {
+    mesh = test::box({-0.3f, -0.3f, 0.0f}, {0.3f, 0.3f, 0.1f});
+    const std::vector<Eigen::Vector2f> at = {{-0.15f, -0.15f}, {0.15f, -0.15f}, {-0.15f, 0.15f}};
+    for (const auto& c : at) {
+      test::append(mesh, test::box({c.x() - 0.04f, c.y() - 0.04f, 0.1f},
+                                   {c.x() + 0.04f, c.y() + 0.04f, 0.12f}));
+      caps.emplace_back(c.x(), c.y(), 0.12f);
+    }
+    test::append(mesh, test::box({0.1f, 0.1f, 0.1f}, {0.2f, 0.2f, 0.125f}));
+    caps.emplace_back(0.15f, 0.15f, 0.125f);
+    finish();
+  }
+};
+
+TEST(RepeatedPartsPass, OnStovesABurnerCapRepeatsOnTheOtherCapsTheWokBurnerToo) {
+  const HobWithCaps hob;
+  ExtractionSettings oneBurner;
+  oneBurner.maxDistance = 0.01f;
+  oneBurner.nmsRadius = 0.05f;
+  ModelPrediction p =
+      hob.predicted("stove.heatsource", hob.caps, {0.0f, 0.02f, 0.02f, 0.02f}, oneBurner);
+  ASSERT_EQ(p.points.size(), 1u);
+  const auto parts = normalizedParts(hob.mesh, hob.grid.normalization);
+  ModelPrediction unchanged = p;
+  applyRepeatedParts(unchanged, parts, hob.grid, *hob.scene, UpAxis::Z, ExtractionSettings{});
+  EXPECT_EQ(unchanged.points.size(), 1u);
+  const RepeatedPartSettings caps = *categoryRulesFor("stove").burnerCaps;
+  // A cap that holds a point of another type (a knob point on it) gets none.
+  ModelPrediction besideAKnob = p;
+  applyRepeatedParts(besideAKnob, parts, hob.grid, *hob.scene, UpAxis::Z, ExtractionSettings{},
+                     caps, {hob.grid.normalization.toNormalized(hob.caps[1])});
+  EXPECT_EQ(besideAKnob.points.size(), 3u);
+  EXPECT_GT(nearestSurfacePoint(besideAKnob, hob.caps[1]), 0.05f);
+  applyRepeatedParts(p, parts, hob.grid, *hob.scene, UpAxis::Z, ExtractionSettings{}, caps);
+  ASSERT_EQ(p.points.size(), 4u);
+  for (const auto& cap : hob.caps) EXPECT_LT(nearestSurfacePoint(p, cap), 0.02f);
 }
 
 }  // namespace

@@ -56,6 +56,25 @@ TEST(ConnectedParts, CopiesMovedOrTurnedAreCongruentOtherShapesAreNot) {
   EXPECT_FALSE(congruentParts(box, parts[0], 0.05f));
 }
 
+TEST(ConnectedParts, AScaledPartIsSimilarWithItsScaleWithinTheLimit) {
+  Mesh mesh = test::box({0, 0, 0}, {2, 2, 0.5f});
+  test::append(mesh, test::box({5, 0, 0}, {5 + 2.6f, 2.6f, 0.65f}));  // scaled 1.3
+  test::append(mesh, test::box({10, 0, 0}, {14, 4, 1}));              // scaled 2
+  test::append(mesh, test::box({20, 0, 0}, {22, 2, 2}));              // a cube: other proportions
+  const auto parts = connectedParts(mesh);
+  ASSERT_EQ(parts.size(), 4u);
+  const auto scaled = similarityScale(parts[0], parts[1], kCopyTolerance, 1.5f);
+  ASSERT_TRUE(scaled.has_value());
+  EXPECT_NEAR(*scaled, 1.3f, 1e-4f);
+  EXPECT_NEAR(*similarityScale(parts[1], parts[0], kCopyTolerance, 1.5f), 1 / 1.3f, 1e-4f);
+  EXPECT_FALSE(similarityScale(parts[0], parts[2], kCopyTolerance, 1.5f).has_value());
+  EXPECT_TRUE(similarityScale(parts[0], parts[2], kCopyTolerance, 2.5f).has_value());
+  EXPECT_FALSE(similarityScale(parts[0], parts[3], kCopyTolerance, 2.5f).has_value());
+  // PartCopies takes scaled parts as copies only when asked to.
+  EXPECT_TRUE(PartCopies(parts, kCopyTolerance).of(0).empty());
+  EXPECT_EQ(PartCopies(parts, kCopyTolerance, 1.5f).of(0), std::vector<std::size_t>{1});
+}
+
 TEST(ConnectedParts, AnEmptyMeshAndBadIndicesGiveNoParts) {
   EXPECT_TRUE(connectedParts(Mesh{}).empty());
   Mesh broken;

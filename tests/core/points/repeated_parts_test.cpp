@@ -229,6 +229,40 @@ TEST(RepeatedParts, ASureKnobRowTakesAPointBesideItWhateverTheField) {
   EXPECT_TRUE(fromPoint(field, far, parts, sure)[0].position.isApprox(far));
 }
 
+// Burner caps (round, flat: 2 x 2 x 0.5 voxels) in a row, the last one a wok burner's (scaled
+// 1.3), and grate bars (6 x 0.5 x 0.5 voxels, copies of one another) beside them.
+std::vector<ConnectedPart> capsAndBars(const std::vector<Eigen::Vector3f>& caps,
+                                       const std::vector<Eigen::Vector3f>& bars) {
+  Mesh mesh = knobBox(onPlate(16, 28), Eigen::Vector3f(0.4f, 0.05f, 0.1f));
+  for (std::size_t c = 0; c < caps.size(); ++c) {
+    const float scale = c + 1 == caps.size() ? 1.3f : 1.0f;
+    test::append(mesh, knobBox(caps[c], scale * Eigen::Vector3f(1.0f, 1.0f, 0.25f) * kVoxel));
+  }
+  for (const auto& b : bars)
+    test::append(mesh, knobBox(b, Eigen::Vector3f(3.0f, 0.25f, 0.25f) * kVoxel));
+  return connectedParts(mesh);
+}
+
+TEST(RepeatedParts, RoundFlatCapsRepeatOnTheirCopiesAndScaledCopiesGrateBarsDoNot) {
+  const std::vector<Eigen::Vector3f> caps = {onPlate(6, 8), onPlate(14, 8), onPlate(22, 8)};
+  const std::vector<Eigen::Vector3f> bars = {onPlate(8, 20), onPlate(16, 20), onPlate(24, 20)};
+  const auto parts = capsAndBars(caps, bars);
+  RepeatedPartSettings burners;
+  burners.roundFlatSeeds = true;
+  burners.maxCopyScale = 1.5f;
+  // From the first cap: the second cap and the wok burner's cap.
+  const auto fromCap = fromPoint(test::plateField(caps), caps[0], parts, burners);
+  ASSERT_EQ(fromCap.size(), 3u);
+  for (const auto& c : caps) EXPECT_LT(test::nearestExtracted(fromCap, c), 1e-4f);
+  // Congruent copies only: the wok burner gets no point.
+  RepeatedPartSettings congruent = burners;
+  congruent.maxCopyScale = 1.0f;
+  EXPECT_EQ(fromPoint(test::plateField(caps), caps[0], parts, congruent).size(), 2u);
+  // A point on a grate bar repeats on nothing; without roundFlatSeeds on every bar.
+  EXPECT_EQ(fromPoint(test::plateField(bars), bars[0], parts, burners).size(), 1u);
+  EXPECT_EQ(fromPoint(test::plateField(bars), bars[0], parts).size(), 3u);
+}
+
 TEST(RepeatedParts, SnappedPartsUnderAVoxelAreNoKnobs) {
   // A row of indicator lights half a voxel across: a point beside them stays where it is, and
   // the copies keep the floor of separationVoxels.
