@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <limits>
 
 #include "core/mesh/mesh.h"
@@ -190,7 +191,7 @@ float circumferenceSupport(const EdgeMap& edges, float cx, float cy, float radiu
 // `a` and `b` of its round ends, in raster pixels.
 struct Oval {
   Eigen::Vector2f a = Eigen::Vector2f::Zero(), b = Eigen::Vector2f::Zero();
-  float radius = 0, support = 0;
+  float radius = 0;
   float length() const { return (b - a).norm(); }
 };
 
@@ -291,6 +292,17 @@ void keepApart(std::vector<Circle> candidates, std::vector<Circle>& kept) {
   }
 }
 
+// `drawn` less the clutter: the least of `supportAt(grow)` on the outlines 5, 9 and 13 pixels
+// outside the mark. Where edges run everywhere (a noisy texture) they also cross those (inside, a
+// symbol has its icon): only the share beyond that clutter counts. The least of the three: a
+// straight line drawn beside a key (an underline) runs along an outline only where it is nearly
+// tangent to it, a band a few pixels wide, and crosses the others at a slant; noise is on all of
+// them.
+template <typename SupportAt>
+float beyondClutter(float drawn, SupportAt supportAt) {
+  return drawn - std::min({supportAt(5.0f), supportAt(9.0f), supportAt(13.0f)});
+}
+
 // The circles among the peaks whose edges really run around a share `minSupport` of them, more
 // than around the circles 5, 9 and 13 pixels outside them (past a drawn line's other edge, and
 // not thrown off by a line drawn beside it), concentric and overlapping ones merged.
@@ -298,18 +310,12 @@ std::vector<Circle> drawnCircles(const EdgeMap& edges, const std::vector<HoughPe
                                  float minSupport) {
   std::vector<Circle> candidates;
   for (const HoughPeak& p : peaks) {
-    // Where edges run everywhere (a noisy texture) they also cross the circles 5, 9 and 13
-    // pixels outside it (inside, a symbol has its icon): only the share beyond that clutter
-    // counts. The least of the three rings: a straight line drawn beside a key (an underline)
-    // runs along a ring only where it is nearly tangent to it, a band a few pixels wide, and
-    // crosses the others at a slant; noise is on all of them.
     // The rings are read only where the circle itself is covered enough: clutter can only
     // lower its support.
     if (p.drawn < minSupport) continue;
-    const float clutter = std::min({circumferenceSupport(edges, p.x, p.y, p.radius + 5),
-                                    circumferenceSupport(edges, p.x, p.y, p.radius + 9),
-                                    circumferenceSupport(edges, p.x, p.y, p.radius + 13)});
-    const float support = p.drawn - clutter;
+    const float support = beyondClutter(p.drawn, [&](float grow) {
+      return circumferenceSupport(edges, p.x, p.y, p.radius + grow);
+    });
     if (support >= minSupport) candidates.push_back({p.x, p.y, p.radius, support});
   }
   std::vector<Circle> out;
@@ -324,23 +330,22 @@ std::vector<Circle> drawnCircles(const EdgeMap& edges, const std::vector<HoughPe
 // circles at the ovals' centres whose radius is half their length.
 std::vector<Circle> drawnOvals(const EdgeMap& edges, const std::vector<HoughPeak>& peaks,
                                const OvalShape& shape, float minSupport) {
+  std::vector<HoughPeak> ends;
+  std::copy_if(peaks.begin(), peaks.end(), std::back_inserter(ends),
+               [&](const HoughPeak& p) { return p.drawn >= shape.minEndDrawn; });
   std::vector<Circle> candidates;
-  for (std::size_t i = 0; i < peaks.size(); ++i) {
-    const HoughPeak& p = peaks[i];
-    if (p.drawn < shape.minEndDrawn) continue;
-    for (std::size_t j = i + 1; j < peaks.size(); ++j) {
-      const HoughPeak& q = peaks[j];
-      if (q.drawn < shape.minEndDrawn || std::abs(p.radius - q.radius) > 1) continue;
+  for (std::size_t i = 0; i < ends.size(); ++i) {
+    for (std::size_t j = i + 1; j < ends.size(); ++j) {
+      const HoughPeak &p = ends[i], &q = ends[j];
+      if (std::abs(p.radius - q.radius) > 1) continue;
       const Oval oval{{p.x, p.y}, {q.x, q.y}, 0.5f * (p.radius + q.radius)};
       const float length = oval.length();
       if (length < shape.minLength * oval.radius || length > shape.maxLength * oval.radius)
         continue;
       const float drawn = outlineSupport(edges, oval, 0);
       if (drawn < minSupport) continue;
-      const float clutter =
-          std::min({outlineSupport(edges, oval, 5), outlineSupport(edges, oval, 9),
-                    outlineSupport(edges, oval, 13)});
-      const float support = drawn - clutter;
+      const float support =
+          beyondClutter(drawn, [&](float grow) { return outlineSupport(edges, oval, grow); });
       if (support < minSupport) continue;
       const Eigen::Vector2f centre = 0.5f * (oval.a + oval.b);
       candidates.push_back({centre.x(), centre.y(), 0.5f * length + oval.radius, support});

@@ -73,9 +73,11 @@ std::optional<std::size_t> nearbyPart(const Eigen::Vector3f& point,
 // (not congruent within `tolerance`), the offset scales with it.
 Eigen::Vector3f pointOnCopy(const ConnectedPart& part, const ConnectedPart& copy,
                             Eigen::Vector3f offset, float tolerance) {
-  const float scale = congruentParts(part, copy, tolerance) || !(part.spread[0] > 0)
-                          ? 1.0f
-                          : copy.spread[0] / part.spread[0];
+  const float scale =
+      congruentParts(part, copy, tolerance)
+          ? 1.0f
+          : similarityScale(part, copy, tolerance, std::numeric_limits<float>::max())
+                .value_or(1.0f);
   offset *= scale;
   const Eigen::Vector3f step = copy.centroid - part.centroid;
   const float size = scale * part.box.diagonal().norm();
