@@ -14,6 +14,7 @@ CategoryRules categoryRulesFor(const std::string& category) {
   rules.repeatedParts.separationBySpacing = true;
   rules.repeatedParts.snapPartVoxels = 1.0f;
   rules.repeatedParts.sureKnobRow = 3;
+  rules.repeatedParts.rowContinuationScale = 1.5f;
   RepeatedPartSettings caps;
   caps.roundFlatSeeds = true;
   caps.maxCopyScale = 1.5f;

@@ -20,7 +20,7 @@ struct CategoryRules {
   // Flat pads standing on the top are toggle buttons (core/annotate/touch_keys_pass.h).
   bool touchKeys = false;
   // Stoves: copies as close as their spacing, knob points moved onto the knob parts
-  // (RepeatedPartSettings::separationBySpacing, snapPartVoxels, sureKnobRow).
+  // (RepeatedPartSettings::separationBySpacing, snapPartVoxels, sureKnobRow, rowContinuationScale).
   RepeatedPartSettings repeatedParts;
   // Stoves: after part ownership, heat-source points on a round flat cap repeat on its copies,
   // scaled ones too (a wok burner's), that hold no point of another type; unset = heat sources

@@ -16,8 +16,9 @@ namespace sagrid {
 // its parts, and every full row keeps its points; 8: on stoves, knob points move onto the knob
 // parts they lie on or beside; 9: a touch symbol far from the others is no control; 10: oval
 // touch symbols; 11: on stoves, a point beside a row of three or more knobs moves onto it whatever
-// the field; 12: on stoves, burner caps repeat after part ownership).
-inline constexpr int kPointPassesVersion = 12;
+// the field; 12: on stoves, burner caps repeat after part ownership; 13: on stoves, a larger knob
+// continuing a row of three or more gets a point).
+inline constexpr int kPointPassesVersion = 13;
 
 struct PassOptions {
   // Test-time augmentation: copies averaged per model (1 = off, 8 = all). 8 by default: on the

@@ -5,6 +5,7 @@
 #include <limits>
 #include <optional>
 
+#include "core/geometry/part_rows.h"
 #include "core/points/field_lookup.h"
 
 namespace sagrid {
@@ -157,8 +158,9 @@ std::vector<ExtractedPoint> completeRepeatedParts(const PredictedField& field,
     const float least = isKnobPart(part, voxel, settings)
                             ? 0.0f
                             : static_cast<float>(settings.separationVoxels) * voxel;
-    for (std::size_t q : family) {
-      if (q == *seed) continue;
+    // A point on `copy` (of the family, or continuing its row) unless one is there; with
+    // `fieldDecides`, only where the field is low enough.
+    const auto addOnCopy = [&](std::size_t q, bool fieldDecides) {
       const ConnectedPart& copy = parts[q];
       const Eigen::Vector3f onCopy = pointOnCopy(part, copy, offset, settings.congruenceTolerance);
       const float apart =
@@ -175,18 +177,29 @@ std::vector<ExtractedPoint> completeRepeatedParts(const PredictedField& field,
           std::any_of(occupied.begin(), occupied.end(), [&](const Eigen::Vector3f& o) {
             return copy.box.exteriorDistance(o) <= touch;
           });
-      if (taken) continue;
+      if (taken) return;
       const float distance =
           nearbyDistance(field, dense, voxelContaining(onCopy, field.resolution), kFieldRadius);
-      if (!std::isfinite(distance) || (settings.maxDistanceAbovePoint >= 0 &&
+      if (!std::isfinite(distance) || (fieldDecides && settings.maxDistanceAbovePoint >= 0 &&
                                        distance > p.distance + settings.maxDistanceAbovePoint))
-        continue;
+        return;
       ExtractedPoint added;
       added.position = onCopy;
       added.distance = distance;
       added.confidence = confidenceOf(distance, extraction);
       out.push_back(added);
-    }
+    };
+    for (std::size_t q : family)
+      if (q != *seed) addOnCopy(q, true);
+    if (settings.sureKnobRow <= 0 || settings.rowContinuationScale <= 1.0f ||
+        static_cast<int>(family.size()) < settings.sureKnobRow ||
+        !isKnobPart(part, voxel, settings))
+      continue;
+    if (const auto row = partRow(family, parts, kRowLineShare))
+      for (std::size_t q :
+           rowContinuations(*row, *seed, family, parts, settings.congruenceTolerance,
+                            settings.rowContinuationScale, kRowLineShare, kRowReachSpacings))
+        if (isSmallPart(parts[q], settings.contact.maxPartDiagonal)) addOnCopy(q, false);
   }
   return out;
 }

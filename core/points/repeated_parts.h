@@ -71,7 +71,16 @@ struct RepeatedPartSettings {
   // the toggle points lay 7 cm below its row of four knobs, on the bar of the oven door, where the
   // field at the knobs was higher than maxDistanceAbovePoint allows. 0 = the field decides always.
   int sureKnobRow = 0;
+  // With sureKnobRow: a knob part scaled by up to this factor that continues such a row (on its
+  // line, at most kRowReachSpacings of its spacing beyond its end: core/geometry/part_rows.h) gets
+  // a point too, whatever the field; a real range's oven knob is its burner knobs made 1.23 times
+  // larger, one and a half spacings beyond them. 1 = off.
+  float rowContinuationScale = 1.0f;
 };
+
+// Row continuations (RepeatedPartSettings::rowContinuationScale): a centroid within this share of
+// the row's spacing from its line, at most this many spacings beyond its end.
+constexpr float kRowLineShare = 0.25f, kRowReachSpacings = 2.0f;
 
 // `points` plus, for each point (best first), a point on every copy of the part it lies on: of the
 // small parts that hold it and have a copy, the one with the largest area (of equal ones, the

@@ -229,6 +229,38 @@ TEST(RepeatedParts, ASureKnobRowTakesAPointBesideItWhateverTheField) {
   EXPECT_TRUE(fromPoint(field, far, parts, sure)[0].position.isApprox(far));
 }
 
+TEST(RepeatedParts, ALargerKnobContinuingASureRowGetsAPointWhateverTheField) {
+  // A row of four knobs every 3 voxels, then a knob 1.25 times larger 5 voxels beyond the last
+  // (a range's oven knob): the field there is 0.2 higher than at the row.
+  const auto knobs = tightKnobRow();
+  const Eigen::Vector3f oven = onPlate(20, 16);
+  const auto field = test::plateFieldWithOffsets({knobs[0], knobs[1], knobs[2], knobs[3], oven},
+                                                 {0.0f, 0.0f, 0.0f, 0.0f, 0.2f});
+  const auto withOvenKnobAt = [&](const Eigen::Vector3f& at) {
+    Mesh mesh = knobBox(onPlate(16, 24), Eigen::Vector3f(0.4f, 0.05f, 0.1f));
+    for (const auto& k : knobs)
+      test::append(mesh, knobBox(k, Eigen::Vector3f(1.0f, 0.5f, 0.5f) * kVoxel));
+    test::append(mesh, knobBox(at, 1.25f * Eigen::Vector3f(1.0f, 0.5f, 0.5f) * kVoxel));
+    return connectedParts(mesh);
+  };
+  RepeatedPartSettings sure = knobSnapping();
+  sure.sureKnobRow = 3;
+  sure.rowContinuationScale = 1.5f;
+  const auto out = fromPoint(field, knobs[0], withOvenKnobAt(oven), sure);
+  ASSERT_EQ(out.size(), 5u);
+  EXPECT_LT(test::nearestExtracted(out, oven), 1e-4f);
+  // Off: the row alone. Off the row's line, too far beyond it, or beside a row too short to be
+  // sure: no point either.
+  RepeatedPartSettings off = sure;
+  off.rowContinuationScale = 1.0f;
+  EXPECT_EQ(fromPoint(field, knobs[0], withOvenKnobAt(oven), off).size(), 4u);
+  EXPECT_EQ(fromPoint(field, knobs[0], withOvenKnobAt(onPlate(20, 20)), sure).size(), 4u);
+  EXPECT_EQ(fromPoint(field, knobs[0], withOvenKnobAt(onPlate(24, 16)), sure).size(), 4u);
+  RepeatedPartSettings longer = sure;
+  longer.sureKnobRow = 5;
+  EXPECT_EQ(fromPoint(field, knobs[0], withOvenKnobAt(oven), longer).size(), 4u);
+}
+
 // Burner caps (round, flat: 2 x 2 x 0.5 voxels) in a row, the last one a wok burner's (scaled
 // 1.3), and grate bars (6 x 0.5 x 0.5 voxels, copies of one another) beside them.
 std::vector<ConnectedPart> capsAndBars(const std::vector<Eigen::Vector3f>& caps,
