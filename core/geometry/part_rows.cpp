@@ -34,16 +34,12 @@ std::optional<PartRow> partRow(const std::vector<std::size_t>& family,
   return row;
 }
 
-std::vector<std::size_t> rowContinuations(const PartRow& row, std::size_t model,
-                                          const std::vector<std::size_t>& family,
-                                          const std::vector<ConnectedPart>& parts, float tolerance,
-                                          float maxScale, float lineShare, float reachSpacings) {
+std::vector<std::size_t> rowContinuations(const PartRow& row,
+                                          const std::vector<std::size_t>& candidates,
+                                          const std::vector<ConnectedPart>& parts, float lineShare,
+                                          float reachSpacings) {
   std::vector<std::size_t> out;
-  for (std::size_t q = 0; q < parts.size(); ++q) {
-    if (std::find(family.begin(), family.end(), q) != family.end() ||
-        congruentParts(parts[model], parts[q], tolerance) ||
-        !similarityScale(parts[model], parts[q], tolerance, maxScale))
-      continue;
+  for (std::size_t q : candidates) {
     const Eigen::Vector3f& c = parts[q].centroid;
     const float t = (c - row.origin).dot(row.direction);
     const float beyond = std::max(row.first - t, t - row.last);

@@ -25,13 +25,12 @@ struct PartRow {
 std::optional<PartRow> partRow(const std::vector<std::size_t>& family,
                                const std::vector<ConnectedPart>& parts, float lineShare);
 
-// The parts outside `family` that continue `row` beyond its ends: `model` (a part of the family)
-// scaled by up to `maxScale` (similarityScale within `tolerance`, not congruent: those are the
-// family), centroid within `lineShare` of the spacing from the line and at most `reachSpacings`
-// spacings beyond the nearer end.
-std::vector<std::size_t> rowContinuations(const PartRow& row, std::size_t model,
-                                          const std::vector<std::size_t>& family,
-                                          const std::vector<ConnectedPart>& parts, float tolerance,
-                                          float maxScale, float lineShare, float reachSpacings);
+// The parts of `candidates` (a family's scaled copies: PartCopies with a maxScale) that continue
+// `row` beyond its ends: centroid within `lineShare` of the spacing from the line and at most
+// `reachSpacings` spacings beyond the nearer end.
+std::vector<std::size_t> rowContinuations(const PartRow& row,
+                                          const std::vector<std::size_t>& candidates,
+                                          const std::vector<ConnectedPart>& parts, float lineShare,
+                                          float reachSpacings);
 
 }  // namespace sagrid

@@ -113,6 +113,9 @@ std::vector<ExtractedPoint> completeRepeatedParts(const PredictedField& field,
       std::max(static_cast<float>(settings.separationVoxels) * voxel, extraction.nmsRadius);
   const float pairReach = settings.pairReachVoxels * voxel;
   const PartCopies copies(parts, settings.congruenceTolerance, settings.maxCopyScale);
+  // Scaled copies, of which those on a sure row's line continue it (rowContinuationScale).
+  const PartCopies scaledCopies(parts, settings.congruenceTolerance,
+                                std::max(settings.maxCopyScale, settings.rowContinuationScale));
   const auto isPair = [](const ConnectedPart&, std::size_t n) { return n == 1; };
   const auto isKnobRow = [&](const ConnectedPart& part, std::size_t n) {
     return n >= 1 && isKnobPart(part, voxel, settings);
@@ -195,11 +198,15 @@ std::vector<ExtractedPoint> completeRepeatedParts(const PredictedField& field,
         static_cast<int>(family.size()) < settings.sureKnobRow ||
         !isKnobPart(part, voxel, settings))
       continue;
-    if (const auto row = partRow(family, parts, kRowLineShare))
-      for (std::size_t q :
-           rowContinuations(*row, *seed, family, parts, settings.congruenceTolerance,
-                            settings.rowContinuationScale, kRowLineShare, kRowReachSpacings))
-        if (isSmallPart(parts[q], settings.contact.maxPartDiagonal)) addOnCopy(q, false);
+    const auto row = partRow(family, parts, kRowLineShare);
+    if (!row) continue;
+    std::vector<std::size_t> scaled;
+    for (std::size_t q : scaledCopies.of(*seed))
+      if (std::find(family.begin(), family.end(), q) == family.end() &&
+          isSmallPart(parts[q], settings.contact.maxPartDiagonal))
+        scaled.push_back(q);
+    for (std::size_t q : rowContinuations(*row, scaled, parts, kRowLineShare, kRowReachSpacings))
+      addOnCopy(q, false);
   }
   return out;
 }

@@ -51,11 +51,19 @@ TEST(PartRows, ALargerPartOnTheLineBeyondTheEndContinuesTheRow) {
   const std::vector<std::size_t> family = firstParts(3);
   const auto row = partRow(family, parts, 0.25f);
   ASSERT_TRUE(row.has_value());
-  const auto next = rowContinuations(*row, 0, family, parts, kCopyTolerance, 1.5f, 0.25f, 2.0f);
+  // Candidates as the repeated-parts pass gives them: the first part's scaled copies outside the
+  // family.
+  const auto scaledCopies = [&](float maxScale) {
+    std::vector<std::size_t> out;
+    for (std::size_t q : PartCopies(parts, kCopyTolerance, maxScale).of(0))
+      if (q >= family.size()) out.push_back(q);
+    return out;
+  };
+  const auto next = rowContinuations(*row, scaledCopies(1.5f), parts, 0.25f, 2.0f);
   ASSERT_EQ(next.size(), 1u);
   EXPECT_TRUE(parts[next[0]].centroid.isApprox(Eigen::Vector3f(14, 0, 0), 1e-4f));
   // Scaled copies only within maxScale: none at 1.2.
-  EXPECT_TRUE(rowContinuations(*row, 0, family, parts, kCopyTolerance, 1.2f, 0.25f, 2.0f).empty());
+  EXPECT_TRUE(rowContinuations(*row, scaledCopies(1.2f), parts, 0.25f, 2.0f).empty());
 }
 
 }  // namespace
