@@ -31,6 +31,9 @@ const PassSwitch kPassSwitches[] = {
      "Switch the repeated-parts pass off: a point on a small part of the mesh does not give a "
      "point on every copy of that part (a row of equal knobs), and a point at a mixer's spout is "
      "not moved onto its pair of handles"},
+    {"--no-spout-controls", &PassOptions::spoutControls,
+     "Switch the spout-controls pass off: on a sink, a toggle point on the spout's part (where the "
+     "fluid source is) is not moved to the handle or lever beside it"},
     {"--no-spout-outlets", &PassOptions::spoutOutlets,
      "Switch the spout-outlet pass off: a fluid-source point on a faucet's handle or body is not "
      "moved to the outlet under the spout's tip near it"},

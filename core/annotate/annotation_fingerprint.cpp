@@ -33,6 +33,7 @@ std::string annotateOptionsHash(const AnnotateOptions& options) {
       {"mirror_pairs", options.mirrorPairs},
       {"anchored_pairs", options.anchoredPairs},
       {"repeated_parts", options.repeatedParts},
+      {"spout_controls", options.spoutControls},
       {"spout_outlets", options.spoutOutlets},
       {"part_ownership", options.partOwnership},
       {"passes_version", kPointPassesVersion},

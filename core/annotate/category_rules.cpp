@@ -7,6 +7,7 @@ CategoryRules categoryRulesFor(const std::string& category) {
   if (category != "stove") {
     rules.partOwnership.onePointPerPart = false;
     rules.partOwnership.strayRowSpacings = 0.0f;
+    rules.spoutControls.reachVoxels = 10.0f;
     return rules;
   }
   rules.printedMarks = true;

@@ -10,6 +10,7 @@
 
 #include "core/points/part_ownership.h"
 #include "core/points/repeated_parts.h"
+#include "core/points/spout_controls.h"
 
 namespace sagrid {
 
@@ -29,6 +30,9 @@ struct CategoryRules {
   // Stoves: one point per part, strays from the full rows (onePointPerPart, strayRowSpacings; on
   // the generated wall-fixture sinks one point per part lost sink knobs).
   PartOwnershipSettings partOwnership;
+  // Sinks: a toggle point on the spout's part moves to a small part beside it
+  // (core/annotate/spout_controls_pass.h); off (reachVoxels 0) elsewhere.
+  SpoutControlSettings spoutControls;
 };
 
 // The rules for objects of `category` (defaults for a category without any of its own).

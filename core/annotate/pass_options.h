@@ -17,8 +17,9 @@ namespace sagrid {
 // parts they lie on or beside; 9: a touch symbol far from the others is no control; 10: oval
 // touch symbols; 11: on stoves, a point beside a row of three or more knobs moves onto it whatever
 // the field; 12: on stoves, burner caps repeat after part ownership; 13: on stoves, a larger knob
-// continuing a row of three or more gets a point).
-inline constexpr int kPointPassesVersion = 13;
+// continuing a row of three or more gets a point; 14: on sinks, a toggle point on the spout's part
+// moves to a part beside it).
+inline constexpr int kPointPassesVersion = 14;
 
 struct PassOptions {
   // Test-time augmentation: copies averaged per model (1 = off, 8 = all). 8 by default: on the
@@ -44,6 +45,10 @@ struct PassOptions {
   // The repeated-parts pass (core/annotate/repeated_parts_pass.h): a point on every copy of the
   // part a point lies on (a row of equal knobs).
   bool repeatedParts = true;
+  // The spout-controls pass (core/annotate/spout_controls_pass.h), on sinks before the repeated
+  // parts: a toggle point on the spout's part moves to the small part beside it where the field is
+  // lowest (a widespread faucet's handle).
+  bool spoutControls = true;
   // The spout-outlet pass (core/annotate/spout_outlet_pass.h): a fluid-source point on no
   // overhang moves to the outlet under the spout's tip near it.
   bool spoutOutlets = true;

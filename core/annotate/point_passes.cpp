@@ -6,6 +6,7 @@
 #include "core/annotate/part_ownership_pass.h"
 #include "core/annotate/printed_marks_pass.h"
 #include "core/annotate/repeated_parts_pass.h"
+#include "core/annotate/spout_controls_pass.h"
 #include "core/annotate/spout_outlet_pass.h"
 #include "core/annotate/touch_keys_pass.h"
 #include "core/geometry/surface_scene.h"
@@ -25,7 +26,7 @@ CategoryPoints predictCategoryPoints(const std::vector<const model::AffordanceMo
   CategoryPoints out;
   if (passes.printedMarks) out.printed = printedMarksOf(mesh, category);
   const std::vector<ConnectedPart> parts =
-      passes.repeatedParts || passes.partOwnership || passes.touchKeys
+      passes.repeatedParts || passes.partOwnership || passes.touchKeys || passes.spoutControls
           ? normalizedParts(mesh, features.normalization)
           : std::vector<ConnectedPart>{};
   if (passes.touchKeys)
@@ -51,6 +52,9 @@ CategoryPoints predictCategoryPoints(const std::vector<const model::AffordanceMo
       applyMirrorPairs(p, features, scene, mesh.fileUp, card.extraction,
                        passes.anchoredPairs ? mirrorAnchors(out.predictions, p.type)
                                             : std::vector<Eigen::Vector3f>{});
+    if (passes.spoutControls && modelMode == InstanceMode::Auto)
+      applySpoutControls(p, parts, mirrorAnchors(out.predictions, p.type), features, scene,
+                         mesh.fileUp, card.extraction, rules.spoutControls);
     if (passes.repeatedParts && modelMode == InstanceMode::Auto)
       applyRepeatedParts(p, parts, features, scene, mesh.fileUp, card.extraction,
                          rules.repeatedParts);

@@ -328,16 +328,17 @@ TEST(AnnotationFingerprintTest, EveryPassSwitchChangesTheOptionsHash) {
   // A batch re-annotates an object whose labels were written with other options: switching any
   // pass must change the hash it compares.
   const AnnotateOptions defaults;
-  std::vector<AnnotateOptions> switched(6, defaults);
+  std::vector<AnnotateOptions> switched(7, defaults);
   switched[0].printedMarks = false;
   switched[1].mirrorPairs = false;
   switched[2].anchoredPairs = false;
   switched[3].repeatedParts = false;
   switched[4].spoutOutlets = false;
   switched[5].partOwnership = false;
+  switched[6].spoutControls = false;
   std::set<std::string> hashes{annotateOptionsHash(defaults)};
   for (const auto& options : switched) hashes.insert(annotateOptionsHash(options));
-  EXPECT_EQ(hashes.size(), 7u);
+  EXPECT_EQ(hashes.size(), 8u);
   EXPECT_EQ(annotateOptionsHash(defaults), annotateOptionsHash(AnnotateOptions{}));
 }
 
