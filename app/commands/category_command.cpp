@@ -12,6 +12,7 @@
 
 #include "app/command_registry.h"
 #include "app/progress_bar.h"
+#include "core/annotate/burner_caps_rule.h"
 #include "core/annotate/category_cross_validation.h"
 #include "core/annotate/category_evidence.h"
 #include "core/annotate/category_training.h"
@@ -96,13 +97,20 @@ class SampleEvidence {
     if (options.features.cacheDir.empty()) options.features.cacheDir = s.featureCache;
     return sagrid::affordanceEvidence(s.mesh, category, m_models, options);
   }
-  // The classifier's decision on `s` after the models folder's evidence gate.
+  // The classifier's decision on `s` after the burner-cap rule and the models folder's evidence
+  // gate, as annotate decides.
   sagrid::CategoryDecision gate(const sagrid::CategorySample& s,
                                 const sagrid::CategoryDecision& d) const {
     const auto* classifier = m_models.categoryClassifier();
     if (!classifier) return d;
+    const auto decided = sagrid::withBurnerCaps(d, [&] {
+      auto up = m_options.features.up;
+      if (!s.up.empty()) up = sagrid::parseUpAxis(s.up);
+      return sagrid::importMesh(s.mesh, sagrid::ImportOptions(up, /*detect=*/true));
+    });
     return sagrid::applyEvidenceGate(
-        d, classifier->evidence, [&](const std::string& category) { return (*this)(s, category); });
+        decided, classifier->evidence,
+        [&](const std::string& category) { return (*this)(s, category); });
   }
 
  private:

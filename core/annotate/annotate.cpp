@@ -2,6 +2,7 @@
 
 #include <chrono>
 
+#include "core/annotate/burner_caps_rule.h"
 #include "core/annotate/category_evidence.h"
 #include "core/annotate/point_passes.h"
 #include "core/annotate/symmetry_averaging.h"
@@ -130,8 +131,10 @@ AnnotationResult annotateMeshFile(const fs::path& meshFile, const std::string& i
   // gate is applied below, once the category's models have run.
   std::optional<CategoryDecision> decided;
   if (options.category.empty()) {
-    // The classifier with rejection when the models folder has one, else retrieval.
-    const CategoryDecision& decision = decided.emplace(models.decideCategory(features));
+    // The classifier with rejection when the models folder has one, else retrieval; a sink
+    // decision on a mesh with burner caps is a stove one.
+    const CategoryDecision& decision =
+        decided.emplace(withBurnerCaps(models.decideCategory(features), [&mesh] { return mesh; }));
     r.category = decision.category;
     r.categorySimilarity = decision.score;
     r.categoryRetrieved = true;
@@ -205,6 +208,8 @@ AnnotationResult annotateMeshFile(const fs::path& meshFile, const std::string& i
                                   {"printed_zones", printed.zones.size()},
                                   {"printed_symbols", printed.symbols.size()},
                                   {"touch_keys", points.touchKeys.size()}};
+  if (decided && decided->byBurnerCaps)
+    r.labels.extra["prediction"]["category_by_burner_caps"] = true;
   if (r.categoryRetrieved && classifier && !classifier->evidence.empty())
     r.labels.extra["prediction"]["affordance_evidence"] = evidence;
   finish();

@@ -32,6 +32,9 @@ struct CategoryDecision {
   double score = 0;      // probability of the best non-"none" class (retrieval: similarity)
   bool rejected = false;
   std::string best;      // the best non-"none" class even when rejected (what a curator may pick)
+  // A sink decision turned into a stove one by the mesh's burner caps
+  // (core/annotate/burner_caps_rule.h); the score stays the classifier's.
+  bool byBurnerCaps = false;
 };
 
 struct CategorySample {
