@@ -18,6 +18,11 @@ TEST(CategoryRules, StovesGetTheirOwnRules) {
   EXPECT_TRUE(stove.partOwnership.onePointPerPart);
   EXPECT_GT(stove.partOwnership.strayRowSpacings, 0.0f);
   EXPECT_GT(stove.partOwnership.footHeight, 0.0f);
+  EXPECT_EQ(stove.spoutControls.reachVoxels, 0.0f);  // a stove has no spout
+}
+
+TEST(CategoryRules, SinksMoveTogglePointsOffTheSpout) {
+  EXPECT_GT(categoryRulesFor("sink").spoutControls.reachVoxels, 0.0f);
 }
 
 TEST(CategoryRules, SinksAndOtherCategoriesKeepTheDefaults) {
