@@ -106,7 +106,8 @@ class SampleEvidence {
     const auto decided = sagrid::withBurnerCaps(d, [&] {
       auto up = m_options.features.up;
       if (!s.up.empty()) up = sagrid::parseUpAxis(s.up);
-      return sagrid::importMesh(s.mesh, sagrid::ImportOptions(up, /*detect=*/true));
+      return sagrid::hasBurnerCaps(
+          sagrid::importMesh(s.mesh, sagrid::ImportOptions(up, /*detect=*/true)));
     });
     return sagrid::applyEvidenceGate(
         decided, classifier->evidence,

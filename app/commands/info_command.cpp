@@ -1,10 +1,12 @@
 // `sagrid info MESH [--up y|z] [--resolution N] [--json]`: what SAGrid sees in a mesh file.
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <cstdio>
 #include <iostream>
 
 #include "app/command_registry.h"
 #include "app/commands/up_axis_option.h"
+#include "core/annotate/burner_caps_rule.h"
 #include "core/annotate/repeated_parts_pass.h"
 #include "core/annotate/touch_keys_pass.h"
 #include "core/features/printed_marks.h"
@@ -45,6 +47,20 @@ void listSmallParts(const std::vector<sagrid::ConnectedPart>& parts, const sagri
   }
 }
 
+// The round flat families of two or more parts (burner caps, drains, round knobs) with their
+// widths as shares of the mesh's largest extent, and whether the burner-cap rule after the category
+// classifier takes them for a stove's caps.
+void listRoundFlatFamilies(const sagrid::Mesh& mesh) {
+  std::printf("burner caps: %s\n", sagrid::hasBurnerCaps(mesh) ? "yes" : "no");
+  for (const auto& family : sagrid::roundFlatFamilies(mesh)) {
+    if (family.widthShares.size() < 2) continue;
+    const auto [narrowest, widest] =
+        std::minmax_element(family.widthShares.begin(), family.widthShares.end());
+    std::printf("  round flat part %zu: family of %zu, width %.3f-%.3f of the largest extent\n",
+                family.part, family.widthShares.size(), *narrowest, *widest);
+  }
+}
+
 void setupInfo(CLI::App& root) {
   auto* cmd = root.add_subcommand(
       "info", "Import a mesh and report triangles, vertices, bounding box (z-up mesh frame), the "
@@ -69,7 +85,8 @@ void setupInfo(CLI::App& root) {
   cmd->add_flag(
       "--parts", o->parts,
       "Also list the mesh's small parts (a knob, a cap, a handle: those the repeated-parts "
-      "and part-ownership passes reason about) and how many copies each has");
+      "and part-ownership passes reason about) and how many copies each has, and the round flat "
+      "families the burner-cap rule of the category reads");
   cmd->callback([o] {
     const auto summary = sagrid::summarizeMesh(o->mesh, sagrid::ImportOptions(sagrid::parseUpAxis(o->up), /*detect=*/true),
                                                o->resolution);
@@ -93,7 +110,10 @@ void setupInfo(CLI::App& root) {
           sagrid::touchKeysOf("stove", parts, scene, normalization, sagrid::kDefaultGridResolution),
           mesh.fileUp);
     }
-    if (o->parts) listSmallParts(parts, normalization, mesh.fileUp);
+    if (o->parts) {
+      listSmallParts(parts, normalization, mesh.fileUp);
+      listRoundFlatFamilies(mesh);
+    }
   });
 }
 

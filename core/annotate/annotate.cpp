@@ -133,8 +133,8 @@ AnnotationResult annotateMeshFile(const fs::path& meshFile, const std::string& i
   if (options.category.empty()) {
     // The classifier with rejection when the models folder has one, else retrieval; a sink
     // decision on a mesh with burner caps is a stove one.
-    const CategoryDecision& decision =
-        decided.emplace(withBurnerCaps(models.decideCategory(features), [&mesh] { return mesh; }));
+    const CategoryDecision& decision = decided.emplace(
+        withBurnerCaps(models.decideCategory(features), [&mesh] { return hasBurnerCaps(mesh); }));
     r.category = decision.category;
     r.categorySimilarity = decision.score;
     r.categoryRetrieved = true;

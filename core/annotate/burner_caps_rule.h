@@ -7,7 +7,9 @@
 // then checks with the stove models like any other (core/annotate/category_evidence.h).
 #pragma once
 
+#include <cstddef>
 #include <functional>
+#include <vector>
 
 #include "core/annotate/category_classifier.h"
 
@@ -22,14 +24,27 @@ struct BurnerCapRule {
   float minDiameterShare = 0.05f;
 };
 
-// Whether `mesh` (z-up mesh frame) has a family of at least rule.minCaps congruent round flat
-// parts (isRoundFlatPart; congruentParts within kCopyTolerance; kMinInstanceTriangles or more
-// each) of box width at least rule.minDiameterShare of its largest extent.
+// A round flat part of a mesh and its family: the part (isRoundFlatPart, kMinInstanceTriangles or
+// more), then its round flat copies (congruentParts within kCopyTolerance); each one's box width
+// (the larger horizontal extent) as a share of the mesh's largest extent, the part's first.
+struct RoundFlatFamily {
+  std::size_t part = 0;  // index in connectedParts(mesh)
+  std::vector<float> widthShares;
+};
+
+// One entry per round flat part of `mesh` (z-up mesh frame), in connectedParts' order (a family of
+// n parts appears n times, once from each); none for an empty mesh. `sagrid info --parts` lists
+// them.
+std::vector<RoundFlatFamily> roundFlatFamilies(const Mesh& mesh);
+
+// Whether a part of `mesh` at least rule.minDiameterShare wide has, with itself, at least
+// rule.minCaps members of its round flat family that wide: the mesh's burner caps.
 bool hasBurnerCaps(const Mesh& mesh, const BurnerCapRule& rule = {});
 
-// `decision` unchanged unless it files the object under "sink"; then, when the mesh (read only
-// then) has burner caps, the same decision with category and best "stove" and byBurnerCaps set.
-CategoryDecision withBurnerCaps(const CategoryDecision& decision, const std::function<Mesh()>& mesh,
-                                const BurnerCapRule& rule = {});
+// `decision` unchanged unless it files the object under "sink"; then, when `hasCaps` (asked only
+// then: hasBurnerCaps of the object's mesh) holds, the same decision with category and best
+// "stove" and byBurnerCaps set.
+CategoryDecision withBurnerCaps(const CategoryDecision& decision,
+                                const std::function<bool()>& hasCaps);
 
 }  // namespace sagrid

@@ -113,9 +113,13 @@ std::vector<ExtractedPoint> completeRepeatedParts(const PredictedField& field,
       std::max(static_cast<float>(settings.separationVoxels) * voxel, extraction.nmsRadius);
   const float pairReach = settings.pairReachVoxels * voxel;
   const PartCopies copies(parts, settings.congruenceTolerance, settings.maxCopyScale);
-  // Scaled copies, of which those on a sure row's line continue it (rowContinuationScale).
-  const PartCopies scaledCopies(parts, settings.congruenceTolerance,
-                                std::max(settings.maxCopyScale, settings.rowContinuationScale));
+  // Scaled copies, of which those on a sure row's line continue it (rowContinuationScale); only
+  // where that can happen.
+  const bool continuesRows = settings.sureKnobRow > 0 && settings.rowContinuationScale > 1.0f;
+  std::optional<PartCopies> scaledCopies;
+  if (continuesRows)
+    scaledCopies.emplace(parts, settings.congruenceTolerance,
+                         std::max(settings.maxCopyScale, settings.rowContinuationScale));
   const auto isPair = [](const ConnectedPart&, std::size_t n) { return n == 1; };
   const auto isKnobRow = [&](const ConnectedPart& part, std::size_t n) {
     return n >= 1 && isKnobPart(part, voxel, settings);
@@ -194,14 +198,13 @@ std::vector<ExtractedPoint> completeRepeatedParts(const PredictedField& field,
     };
     for (std::size_t q : family)
       if (q != *seed) addOnCopy(q, true);
-    if (settings.sureKnobRow <= 0 || settings.rowContinuationScale <= 1.0f ||
-        static_cast<int>(family.size()) < settings.sureKnobRow ||
+    if (!continuesRows || static_cast<int>(family.size()) < settings.sureKnobRow ||
         !isKnobPart(part, voxel, settings))
       continue;
     const auto row = partRow(family, parts, kRowLineShare);
     if (!row) continue;
     std::vector<std::size_t> scaled;
-    for (std::size_t q : scaledCopies.of(*seed))
+    for (std::size_t q : scaledCopies->of(*seed))
       if (std::find(family.begin(), family.end(), q) == family.end() &&
           isSmallPart(parts[q], settings.contact.maxPartDiagonal))
         scaled.push_back(q);

@@ -56,16 +56,19 @@ std::vector<ExtractedPoint> movePointsOffSpouts(const PredictedField& field,
     p.confidence = confidenceOf(bestField, extraction);
     moved[i] = true;
   }
-  // A moved point that lands within the count's suppression radius of a point kept before it or
-  // of an unmoved one after it is dropped (the handle had its point already).
+  // A moved point that lands within the count's suppression radius of an unmoved point or of a
+  // moved one kept before it is dropped (the handle had its point already).
   std::vector<ExtractedPoint> kept;
   for (std::size_t i = 0; i < out.size(); ++i) {
     const auto near = [&](const ExtractedPoint& o) {
       return (o.position - out[i].position).norm() <= extraction.nmsRadius;
     };
-    bool taken = moved[i] && std::any_of(kept.begin(), kept.end(), near);
-    for (std::size_t j = i + 1; moved[i] && j < out.size(); ++j) taken |= !moved[j] && near(out[j]);
-    if (!taken) kept.push_back(out[i]);
+    if (moved[i]) {
+      bool besideUnmoved = false;
+      for (std::size_t j = 0; j < out.size(); ++j) besideUnmoved |= !moved[j] && near(out[j]);
+      if (besideUnmoved || std::any_of(kept.begin(), kept.end(), near)) continue;
+    }
+    kept.push_back(out[i]);
   }
   return kept;
 }

@@ -42,10 +42,21 @@ TEST(BurnerCaps, ThreeEqualRoundFlatPartsOfSizeAreCaps) {
   EXPECT_FALSE(hasBurnerCaps(Mesh{}));
 }
 
+TEST(BurnerCaps, EachRoundFlatPartListsItsFamilyWithTheirWidths) {
+  // Three caps 0.12 wide on a counter 1 m long: each lists the three, itself first.
+  const auto families = roundFlatFamilies(counterWithCaps(3, 0.12f));
+  ASSERT_EQ(families.size(), 3u);
+  for (const auto& family : families) {
+    ASSERT_EQ(family.widthShares.size(), 3u);
+    for (float share : family.widthShares) EXPECT_NEAR(share, 0.12f, 1e-4f);
+  }
+  EXPECT_TRUE(roundFlatFamilies(Mesh{}).empty());
+}
+
 TEST(BurnerCaps, OnlyASinkDecisionTurnsIntoAStoveOne) {
   const Mesh withCaps = counterWithCaps(3, 0.12f);
   int read = 0;
-  const auto mesh = [&] { return ++read, withCaps; };
+  const auto mesh = [&] { return ++read, hasBurnerCaps(withCaps); };
   const auto sink = withBurnerCaps(decided("sink", 0.79), mesh);
   EXPECT_EQ(sink.category, "stove");
   EXPECT_EQ(sink.best, "stove");
@@ -60,7 +71,8 @@ TEST(BurnerCaps, OnlyASinkDecisionTurnsIntoAStoveOne) {
   EXPECT_TRUE(withBurnerCaps(rejected, mesh).rejected);
   EXPECT_EQ(read, 1);
   // Without caps the sink stays a sink.
-  const auto bare = withBurnerCaps(decided("sink"), [] { return counterWithCaps(2, 0.12f); });
+  const auto bare =
+      withBurnerCaps(decided("sink"), [] { return hasBurnerCaps(counterWithCaps(2, 0.12f)); });
   EXPECT_EQ(bare.category, "sink");
   EXPECT_FALSE(bare.byBurnerCaps);
 }
