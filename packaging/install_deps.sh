@@ -13,6 +13,8 @@ packages=(
   libspdlog-dev libfmt-dev libcli11-dev nlohmann-json3-dev libstb-dev zlib1g-dev
   # libqhull-dev: convex hulls of the collision parts (core/physics)
   libqhull-dev
+  # In-the-wild glTF: Draco-compressed meshes, EXT_meshopt_compression, WebP textures
+  libdraco-dev libmeshoptimizer-dev libwebp-dev
   xvfb xauth
   # Simulator checks of the exports: MuJoCo 2.2.2 loads and simulates the MJCF export in tests,
   # check_urdf (urdfdom) validates the OmniGibson URDFs.

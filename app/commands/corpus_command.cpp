@@ -1,6 +1,8 @@
 // `sagrid corpus sweethome3d --out DIR`: the real in-the-wild corpus from Debian's Sweet Home 3D
 // packages (stoves, sinks, appliance distractors) as datasets real-train, real-val, distractors
-// and unlabelled. Parsing and dispatch only; the work is in core/corpus.
+// and unlabelled. `sagrid corpus wild --from POOL --out DIR`: the wild pool's meshes with their
+// curated labels as wild-train, wild-val and unlabelled. Parsing and dispatch only; the work is
+// in core/corpus.
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <cstdlib>
@@ -12,6 +14,7 @@
 #include "core/common/error.h"
 #include "core/common/resource_paths.h"
 #include "core/corpus/sweethome3d_corpus.h"
+#include "core/corpus/wild_pool_corpus.h"
 
 namespace {
 namespace fs = std::filesystem;
@@ -26,10 +29,13 @@ fs::path defaultDebCache() {
 
 fs::path defaultLabelsDir() { return sagrid::resourceDir("datasets/sweethome3d"); }
 
+void setupWildCorpus(CLI::App& corpus);
+
 void setupCorpus(CLI::App& root) {
   auto* corpus =
       root.add_subcommand("corpus", "Build a real corpus of objects from a public source");
   corpus->require_subcommand(1);
+  setupWildCorpus(*corpus);
   auto* cmd = corpus->add_subcommand(
       "sweethome3d",
       "Stoves, sinks and appliance distractors from Debian's Sweet Home 3D packages "
@@ -89,6 +95,48 @@ void setupCorpus(CLI::App& root) {
         count(summary.countsByDataset, "real-train"), count(summary.countsByDataset, "real-val"),
         count(summary.countsByDataset, "distractors"), count(summary.countsByDataset, "unlabelled"),
         summary.warnings.size());
+  });
+}
+
+void setupWildCorpus(CLI::App& corpus) {
+  auto* cmd = corpus.add_subcommand(
+      "wild",
+      "The wild pool (meshes from public repositories, as committed; ../shared/data/wild-pool) "
+      "with the curated labels of resources/datasets/wild, written as datasets OUT/wild-train and "
+      "OUT/wild-val (split by repository) and OUT/unlabelled, plus OUT/corpus.json. Checks every "
+      "mesh's sha256 against its provenance and its labels.");
+  struct Options {
+    std::string from, out, labels;
+  };
+  auto o = std::make_shared<Options>();
+  cmd->add_option("--from", o->from, "The pool folder (one folder per object with provenance.json)")->required();
+  cmd->add_option("--out", o->out, "Output folder (replaced only if empty or an earlier corpus)")->required();
+  cmd->add_option("--labels", o->labels,
+                  "Curated labels folder (<id>/labels.json, split.json); default "
+                  "<source>/resources/datasets/wild");
+  cmd->callback([o] {
+    sagrid::WildCorpusOptions options;
+    options.pool = o->from;
+    options.out = o->out;
+    options.labelsDir = o->labels.empty() ? sagrid::resourceDir("datasets/wild") : fs::path(o->labels);
+    if (!o->labels.empty() && !fs::is_directory(options.labelsDir)) {
+      throw sagrid::FileError(options.labelsDir, "labels folder not found");
+    }
+    std::unique_ptr<sagrid::app::ProgressBar> bar;
+    options.progress = [&bar](std::size_t done, std::size_t total, const std::string& id) {
+      if (!bar) bar = std::make_unique<sagrid::app::ProgressBar>("corpus", total);
+      bar->update(done, id);
+    };
+    const sagrid::WildCorpusSummary summary = sagrid::buildWildCorpus(options);
+    if (bar) bar->finish();
+    for (const auto& w : summary.warnings) std::fprintf(stderr, "corpus: warning: %s\n", w.c_str());
+    std::string counts;
+    for (const auto& [dataset, n] : summary.countsByDataset) counts += (counts.empty() ? "" : ", ") + dataset + " " + std::to_string(n);
+    std::string categories;
+    for (const auto& [category, n] : summary.countsByCategory)
+      categories += (categories.empty() ? "" : ", ") + category + " " + std::to_string(n);
+    std::printf("corpus: wild pool -> %s (%s; curated: %s; %zu warnings)\n", o->out.c_str(), counts.c_str(),
+                categories.empty() ? "none" : categories.c_str(), summary.warnings.size());
   });
 }
 

@@ -17,6 +17,8 @@
 #include "core/eval/architecture_sweep.h"
 #include "core/eval/count_fitting.h"
 #include "core/eval/evaluation.h"
+#include "core/common/atomic_file.h"
+#include "core/curation/curation_report.h"
 #include "core/eval/evaluation_comparison.h"
 
 namespace {
@@ -37,6 +39,7 @@ void setupEval(CLI::App& root) {
     std::string models, out = "eval", cache, sweep, mode = "sparse", fitConfidence, fitCounts,
                         countObjective = "count";
     std::vector<std::string> only, compare;
+    std::string curation;
     double minutes = 2;
     int epochs = 0;
     sagrid::PassOptions passes;
@@ -46,8 +49,11 @@ void setupEval(CLI::App& root) {
   cmd->add_option("--data", o->data,
                   "Labelled dataset (manifest.jsonl or object folders; its val/ split when it has "
                   "one); repeat it to evaluate several together (one report over their union, "
-                  "e.g. --fit-confidence on generated and real objects)")
-      ->required();
+                  "e.g. --fit-confidence on generated and real objects)");
+  cmd->add_option("--curation", o->curation,
+                  "Instead of models: report curator throughput from a GUI curation log "
+                  "(actions and edits per object, the one-key share, the slowest objects, time as "
+                  "logged and by a keystroke-level model); writes OUT/curation.md and .json");
   cmd->add_option("--models", o->models, "Model folder (default resources/models)");
   cmd->add_option("--out", o->out, "Report folder (default eval)");
   cmd->add_option("--compare", o->compare,
@@ -78,6 +84,15 @@ void setupEval(CLI::App& root) {
       ->check(CLI::IsMember({"sparse", "dense"}));
   const auto learningCurve = sagrid::app::addLearningCurveOptions(*cmd);
   cmd->callback([o, learningCurve, cmd] {
+    if (!o->curation.empty()) {
+      const sagrid::CurationReport report = sagrid::curationReport(sagrid::readCurationLog(o->curation));
+      fs::create_directories(o->out);
+      sagrid::writeFileAtomic(fs::path(o->out) / "curation.md", sagrid::curationMarkdown(report));
+      sagrid::writeFileAtomic(fs::path(o->out) / "curation.json", sagrid::toJson(report).dump(2) + "\n");
+      std::cout << sagrid::curationMarkdown(report);
+      return;
+    }
+    if (o->data.empty()) throw sagrid::InvalidArgument("eval: --data is required (or --curation LOG)");
     auto oneDataset = [&](const char* what) {
       if (o->data.size() != 1)
         throw sagrid::InvalidArgument(std::string(what) + " takes one --data, got " +

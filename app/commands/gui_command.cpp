@@ -18,6 +18,8 @@ void setupGui(CLI::App& root) {
     bool noPredict = false;
     std::string size = "1440x900";
     std::string models;
+    std::string curationLog;
+    bool noCurationLog = false;
   };
   auto options = std::make_shared<Options>();
   cmd->add_option("paths", options->paths,
@@ -29,6 +31,11 @@ void setupGui(CLI::App& root) {
                 "Do not run SAGrid automatically when an object opens");
   cmd->add_option("--models", options->models, "Model folder (default resources/models)");
   cmd->add_option("--size", options->size, "Window size WIDTHxHEIGHT")->capture_default_str();
+  cmd->add_option("--curation-log", options->curationLog,
+                  "Append every curator action to this JSON-lines log (default: curation.jsonl in "
+                  "the first folder given, or beside the first file); read it with "
+                  "`sagrid eval --curation LOG`");
+  cmd->add_flag("--no-curation-log", options->noCurationLog, "Keep no curation log");
   cmd->callback([options] {
     // A stuck import is cancelled where assimp allows it; the GUI never ends the process (that
     // would lose unsaved work).
@@ -44,6 +51,13 @@ void setupGui(CLI::App& root) {
     appOptions.modelsDir = options->models.empty() ? sagrid::ui::ModelPredictor::defaultModelsDir()
                                                    : std::filesystem::path(options->models);
     sagrid::ui::App app(*context, appOptions);
+    if (!options->noCurationLog && (!options->curationLog.empty() || !options->paths.empty())) {
+      const std::filesystem::path first = options->paths.empty() ? "" : options->paths.front();
+      const std::filesystem::path folder = std::filesystem::is_directory(first) ? first : first.parent_path();
+      app.session().setCurationLog(options->curationLog.empty()
+                                       ? (folder.empty() ? "." : folder) / "curation.jsonl"
+                                       : std::filesystem::path(options->curationLog));
+    }
     if (!options->paths.empty()) {
       app.session().openPaths(
           std::vector<std::filesystem::path>(options->paths.begin(), options->paths.end()));

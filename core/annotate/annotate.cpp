@@ -6,6 +6,7 @@
 #include "core/annotate/category_evidence.h"
 #include "core/annotate/point_passes.h"
 #include "core/annotate/symmetry_averaging.h"
+#include "core/annotate/units_record.h"
 #include "core/common/error.h"
 #include "core/features/feature_grid.h"
 #include "core/features/vector_channels.h"
@@ -153,6 +154,7 @@ AnnotationResult annotateMeshFile(const fs::path& meshFile, const std::string& i
   r.labels.object.category = r.category;
   r.labels.object.up = toString(mesh.fileUp);
   if (mesh.fileUpDetected) r.labels.object.upConfidence = mesh.fileUpConfidence;
+  recordUnitGuess(r.labels.object, guessMetersPerUnit(mesh.bounds().sizes().maxCoeff(), r.category));
   // The model stage's time and the final progress report, on every way out.
   auto finish = [&] {
     r.modelSeconds = secondsSince(t);

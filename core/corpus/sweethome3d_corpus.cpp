@@ -14,6 +14,7 @@
 #include "core/common/atomic_file.h"
 #include "core/common/error.h"
 #include "core/common/sha256.h"
+#include "core/common/staged_folder.h"
 #include "core/io/zip_archive.h"
 #include "core/labels/labels.h"
 
@@ -273,23 +274,6 @@ ShippedLabels readShippedLabels(const fs::path& dir) {
   return shipped;
 }
 
-// Removes the temporary corpus folder unless released.
-class TempFolderGuard {
- public:
-  explicit TempFolderGuard(fs::path path) : m_path(std::move(path)) {}
-  ~TempFolderGuard() {
-    if (!m_released) {
-      std::error_code ec;
-      fs::remove_all(m_path, ec);
-    }
-  }
-  void release() { m_released = true; }
-
- private:
-  fs::path m_path;
-  bool m_released = false;
-};
-
 }  // namespace
 
 std::vector<SweetHome3dSource> locateSweetHome3dSources(
@@ -395,15 +379,7 @@ double estimateMetersPerUnit(const std::vector<double>& catalogSizeCm,
 }
 
 CorpusSummary buildSweetHome3dCorpus(const SweetHome3dCorpusOptions& options) {
-  const fs::path out = options.out;
-  if (out.empty()) throw InvalidArgument("corpus: --out is required");
-  if (fs::exists(out)) {
-    if (!fs::is_directory(out)) throw FileError(out, "exists and is not a folder");
-    if (!fs::is_empty(out) && !fs::exists(out / "corpus.json")) {
-      throw FileError(
-          out, "is a non-empty folder that holds no corpus.json; choose an empty or new folder");
-    }
-  }
+  if (options.out.empty()) throw InvalidArgument("corpus: --out is required");
   const ShippedLabels shipped = readShippedLabels(options.labelsDir);
 
   // Select every object first, so the progress total is known and nothing is written when a
@@ -447,12 +423,8 @@ CorpusSummary buildSweetHome3dCorpus(const SweetHome3dCorpusOptions& options) {
     }
   }
 
-  const fs::path parent = out.has_parent_path() ? out.parent_path() : fs::path(".");
-  fs::create_directories(parent);
-  const fs::path temp =
-      parent / ("." + out.filename().string() + ".tmp-" + std::to_string(::getpid()));
-  fs::remove_all(temp);
-  TempFolderGuard guard(temp);
+  StagedFolder staged(options.out, "corpus.json");
+  const fs::path& temp = staged.path();
   std::map<std::string, std::string> manifests;  // dataset -> manifest.jsonl text
   for (const char* d : {"real-train", "real-val", "distractors", "unlabelled"}) {
     fs::create_directories(temp / d);
@@ -647,14 +619,7 @@ CorpusSummary buildSweetHome3dCorpus(const SweetHome3dCorpusOptions& options) {
   corpus["warnings"] = summary.warnings;
   writeFileAtomic(temp / "corpus.json", corpus.dump(2) + "\n");
 
-  // Swap into place: the old corpus is removed only once the new one is complete.
-  const fs::path old =
-      parent / ("." + out.filename().string() + ".old-" + std::to_string(::getpid()));
-  if (fs::exists(out)) fs::rename(out, old);
-  fs::rename(temp, out);
-  guard.release();
-  std::error_code ec;
-  fs::remove_all(old, ec);
+  staged.commit();
   return summary;
 }
 

@@ -6,7 +6,6 @@
 #include <assimp/material.h>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
-#include <stb_image.h>
 
 #include <algorithm>
 #include <assimp/Importer.hpp>
@@ -24,8 +23,10 @@
 #include "core/common/sha256.h"
 #include "core/common/value_ranges.h"
 #include "core/mesh/bounds_check.h"
+#include "core/mesh/gltf_plain.h"
 #include "core/mesh/import_time_limit.h"
 #include "core/mesh/mesh_file_check.h"
+#include "core/mesh/texture_decode.h"
 #include "core/mesh/up_axis_detection.h"
 
 namespace sagrid {
@@ -100,19 +101,6 @@ std::string oneLine(const std::string& text) {
   return out;
 }
 
-// Decodes an image file or in-memory image into RGBA8 with stb_image.
-std::optional<Texture> decodeImage(const unsigned char* bytes, std::size_t size) {
-  int w = 0, h = 0, channels = 0;
-  stbi_uc* pixels = stbi_load_from_memory(bytes, static_cast<int>(size), &w, &h, &channels, 4);
-  if (!pixels) return std::nullopt;
-  Texture texture;
-  texture.width = w;
-  texture.height = h;
-  texture.rgba.assign(pixels, pixels + static_cast<std::size_t>(w) * h * 4);
-  stbi_image_free(pixels);
-  return texture;
-}
-
 // Collects materials and their textures, external (beside the mesh) or embedded in the file.
 class MaterialReader {
  public:
@@ -165,7 +153,7 @@ class MaterialReader {
 
   static std::optional<Texture> decodeEmbedded(const aiTexture& embedded) {
     if (embedded.mHeight == 0) {  // compressed (PNG, JPEG) bytes, mWidth of them
-      return decodeImage(reinterpret_cast<const unsigned char*>(embedded.pcData), embedded.mWidth);
+      return decodeTexture(reinterpret_cast<const unsigned char*>(embedded.pcData), embedded.mWidth);
     }
     Texture texture;  // raw BGRA texels
     texture.width = static_cast<int>(embedded.mWidth);
@@ -192,7 +180,7 @@ class MaterialReader {
         std::error_code ec;
         if (!fs::is_regular_file(file, ec)) continue;
         const std::string bytes = readFileBytes(file);
-        if (auto texture = decodeImage(reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size())) {
+        if (auto texture = decodeTexture(reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size())) {
           return texture;
         }
       } catch (const FileError& e) {
@@ -443,12 +431,21 @@ Mesh importMesh(const fs::path& path, const ImportOptions& options) {
 
   // With --lenient, a statement cut mid-line is left out: assimp would turn "f 1 2" into a line
   // primitive and refuse the whole file.
-  const std::string parsed = facts.truncation.empty() || bytes.rfind('\n') == std::string::npos
-                                 ? bytes
-                                 : bytes.substr(0, bytes.rfind('\n') + 1);
+  std::string parsed = facts.truncation.empty() || bytes.rfind('\n') == std::string::npos
+                           ? bytes
+                           : bytes.substr(0, bytes.rfind('\n') + 1);
+  // A glTF that uses compression, quantization or WebP is handed to assimp as the plain GLB it
+  // decodes to, under a name of its own beside the file (gltf_plain.h).
+  fs::path parsedPath = path;
+  if (extension == ".gltf" || extension == ".glb") {
+    if (auto plain = plainGlbOf(bytes, path)) {
+      parsed = std::move(*plain);
+      parsedPath = path.parent_path() / (path.stem().string() + ".sagrid-plain.glb");
+    }
+  }
   const ImportDeadline deadline(path, importTimeLimit());
   Assimp::Importer importer;
-  importer.SetIOHandler(new ContainedIOSystem(path, parsed));  // the importer owns it
+  importer.SetIOHandler(new ContainedIOSystem(parsedPath, parsed));  // the importer owns it
   if (auto* progress = deadline.newProgressHandler()) importer.SetProgressHandler(progress);
   // Keep the file's own coordinates: SAGrid does the up-axis turn itself (labels are written in
   // the file's frame), so assimp's Collada z-up to y-up rotation must not happen.
@@ -458,7 +455,7 @@ Mesh importMesh(const fs::path& path, const ImportOptions& options) {
   // some Sweet Home 3D models have) into a line without flagging its mesh as holding lines, and
   // the validator then refuses the whole file (assimp issue 2554). With the flags recomputed
   // from the faces, SortByPType drops the lines and validation checks the rest.
-  const aiScene* scene = importer.ReadFile(path.string(), 0);
+  const aiScene* scene = importer.ReadFile(parsedPath.string(), 0);
   // What the loader parsed, before triangulation: the partial-read check compares this with what
   // the file declares. Triangulation may then lose triangles of polygons that are not simple (a
   // Sweet Home 3D fridge's 32-gons), which is not a cut file.

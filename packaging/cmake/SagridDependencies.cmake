@@ -10,6 +10,12 @@ find_package(CLI11 CONFIG REQUIRED)
 find_package(ZLIB REQUIRED)
 # Qhull (libqhull-dev): convex hulls of the collision parts (core/physics).
 find_package(Qhull CONFIG REQUIRED)
+# In-the-wild glTF (core/mesh/gltf_plain): Draco-compressed primitives (libdraco-dev),
+# EXT_meshopt_compression (libmeshoptimizer-dev), WebP textures (libwebp-dev, pkg-config only).
+find_package(draco CONFIG REQUIRED)
+find_package(meshoptimizer CONFIG REQUIRED)
+find_package(PkgConfig REQUIRED)
+pkg_check_modules(SAGRID_WEBP REQUIRED IMPORTED_TARGET libwebp)
 
 # stb ships headers only; its implementations are compiled once in core/common/stb_impl.cpp.
 find_path(SAGRID_STB_INCLUDE_DIR stb_image.h PATH_SUFFIXES stb REQUIRED)

@@ -76,8 +76,9 @@ void meshSeeds(const fs::path& out, const fs::path& source, const fs::path& shar
   write(out / "mesh_obj" / "cube_text.obj", kCubeObj);
 
   std::vector<fs::path> objs;
+  // The wild pool's GLBs seed the glTF extensions (Draco, WebP) of core/mesh/gltf_plain.
   for (const fs::path root : {source / "resources" / "samples", shared / "data" / "real-dev",
-                              source / "tests" / "data"}) {
+                              source / "tests" / "data", shared / "data" / "wild-pool"}) {
     std::error_code ec;
     if (!fs::is_directory(root, ec)) continue;
     for (const auto& e : fs::recursive_directory_iterator(root)) {

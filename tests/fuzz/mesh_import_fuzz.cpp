@@ -1,6 +1,7 @@
 // Fuzz target: mesh import through the file code path (importMesh on a file named
-// input<SAGRID_FUZZ_EXTENSION>), built once per format: .obj, .ply, .stl, .glb, .fbx (ASCII and
-// binary), then the texture pass's reading of whatever it imported (printed marks on textured
+// input<SAGRID_FUZZ_EXTENSION>), built once per format: .obj, .ply, .stl, .glb (with the glTF
+// extensions' decoding of core/mesh/gltf_plain: Draco, meshopt, quantized accessors, WebP; seeded
+// from the wild pool), .fbx (ASCII and binary), then the texture pass's reading of whatever it imported (printed marks on textured
 // tops).
 #include <cstddef>
 #include <cstdint>

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "core/labels/labels.h"
+#include "core/mesh/unit_guess.h"
 #include "ui/document/distance_field.h"
 
 namespace sagrid::ui {
@@ -26,6 +27,7 @@ struct PredictionResult {
   std::vector<AffordancePoint> points;  // mesh file coordinates, status "predicted"
   double objectConfidence = 0;          // P(right with one key), core/annotate/object_confidence.h
   std::vector<DistanceField> fields;
+  std::optional<UnitGuess> units;  // from the mesh's size and the category (core/mesh/unit_guess.h)
 };
 
 struct PredictionProgress {

@@ -1,6 +1,7 @@
 #include "ui/app/session.h"
 
 #include <algorithm>
+#include <chrono>
 
 #include "core/common/error.h"
 #include "core/common/log.h"
@@ -8,9 +9,16 @@
 #include "core/export/omnigibson_export.h"
 #include "core/export/training_set.h"
 #include "core/training/dataset_training.h"
+#include "ui/document/category_commands.h"
 #include "ui/document/object_loader.h"
 #include "ui/document/point_commands.h"
 #include "ui/document/up_axis_commands.h"
+
+namespace {
+double nowSeconds() {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+}  // namespace
 
 namespace sagrid::ui {
 
@@ -85,6 +93,7 @@ void Session::openEntry(int index) {
     return;
   }
   logger()->info("opened {} ({} of {})", m_document->displayName(), i + 1, m_queue.size());
+  logAction(CurationAction::Open, entry.mesh.filename().string());
   chooseNewPointType();
   applyDefaultFieldSettings();
   frameObject();
@@ -98,26 +107,37 @@ bool Session::next() {
   return true;
 }
 
+bool Session::navigate(int step) {
+  if (m_queue.empty()) return false;
+  logAction(CurationAction::Navigate, step > 0 ? "next" : "previous");
+  return step > 0 ? next() : previous();
+}
+
 bool Session::previous() {
   if (m_queue.current() <= 0) return false;
   openEntry(m_queue.current() - 1);
   return true;
 }
 
-void Session::execute(std::unique_ptr<Command> command) {
+void Session::execute(std::unique_ptr<Command> command) { applyCommand(std::move(command), true); }
+
+void Session::applyCommand(std::unique_ptr<Command> command, bool logged) {
   if (!m_document) return;
+  const CurationAction action = command->curationAction();
+  const std::string what = command->description();
   try {
     m_document->execute(std::move(command));
   } catch (const Error& e) {
     reportError(e.what());
   }
+  if (logged) logAction(action, what);
   updateQueueState();
 }
 
 void Session::undo() {
   if (!m_document) return;
   try {
-    m_document->undo();
+    if (m_document->undo()) logAction(CurationAction::Undo);
   } catch (const Error& e) {
     reportError(e.what());
   }
@@ -127,11 +147,47 @@ void Session::undo() {
 void Session::redo() {
   if (!m_document) return;
   try {
-    m_document->redo();
+    if (m_document->redo()) logAction(CurationAction::Redo);
   } catch (const Error& e) {
     reportError(e.what());
   }
   updateQueueState();
+}
+
+void Session::setCurationLog(const fs::path& path) {
+  if (path.empty()) m_curationLog.reset();
+  else m_curationLog.emplace(path);
+}
+
+void Session::logAction(CurationAction action, const std::string& detail) {
+  if (!m_curationLog || !m_document) return;
+  const std::string& id = m_document->labels().object.id;
+  const std::string object = id.empty() ? m_document->meshPath().stem().string() : id;
+  const std::string problem = m_curationLog->record(object, action, detail);
+  if (!problem.empty()) reportError(problem);
+}
+
+void Session::noteLook(const std::string& what) {
+  const double now = nowSeconds();
+  if (now - m_lastLookSeconds > 1.0) logAction(CurationAction::Look, what);
+  m_lastLookSeconds = now;
+}
+
+void Session::switchCategory(const std::string& category) {
+  if (!m_document || m_document->labels().object.category == category) return;
+  const bool allPredicted = std::all_of(m_document->points().begin(), m_document->points().end(),
+                                        [](const AffordancePoint& p) { return p.status == AffordanceStatus::Predicted; });
+  std::vector<std::unique_ptr<Command>> steps;
+  steps.push_back(std::make_unique<SetCategoryCommand>(category));
+  if (allPredicted && !m_document->points().empty()) {
+    steps.push_back(std::make_unique<ReplacePointsCommand>(std::vector<AffordancePoint>{},
+                                                           "drop the points of the old category"));
+  }
+  execute(std::make_unique<CommandGroup>("Category " + category, std::move(steps)));
+  m_predictionNote.clear();
+  chooseNewPointType();
+  updateQueueState();
+  if (allPredicted && autoPredict) runPrediction();
 }
 
 void Session::accept() {
@@ -141,7 +197,8 @@ void Session::accept() {
     return;
   }
   auto all = makeAcceptAllCommand(m_document->labels());
-  if (!all->empty()) execute(std::move(all));
+  if (!all->empty()) applyCommand(std::move(all), false);
+  logAction(CurationAction::AcceptAll);
   try {
     m_document->setReviewState(ReviewState::Done);
   } catch (const Error& e) {
@@ -189,6 +246,7 @@ void Session::orderQueueLeastSureFirst() {
 
 void Session::skip() {
   if (!m_document) return;
+  logAction(CurationAction::Skip);
   try {
     m_document->setReviewState(ReviewState::Skipped);
   } catch (const Error& e) {
@@ -336,6 +394,7 @@ void Session::pollPrediction() {
     m_queue.setConfidence(std::size_t(m_queue.current()), result.objectConfidence);
   if (m_document->labels().object.category.empty() && !result.category.empty())
     m_document->setCategory(result.category);
+  if (!m_document->unitsKnown() && result.units) m_document->setUnitGuess(*result.units);
   if (result.rejected) {
     // Opened with no points; the curator picks the category (object panel) and runs SAGrid.
     m_predictionNote =

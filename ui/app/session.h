@@ -7,9 +7,11 @@
 #include <filesystem>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "core/curation/curation_log.h"
 #include "ui/app/prediction_worker.h"
 #include "ui/app/recent_files.h"
 #include "ui/document/annotation_document.h"
@@ -44,6 +46,8 @@ class Session {
   void openObject(const std::filesystem::path& mesh, const std::filesystem::path& labels);
   bool next();
   bool previous();
+  // N / P: next() or previous() as the curator's own move (logged as "navigate").
+  bool navigate(int step);
 
   // Review ---------------------------------------------------------------------------------------
   // A: accepts the selected point; with none selected accepts every point, marks the object
@@ -61,7 +65,18 @@ class Session {
   void redo();
   void deleteSelected();
   void changeSelectedType(const std::string& type);
+  // Switches the open object's category (one undoable step) and, when its points are all still
+  // predicted, drops them and predicts again for the new category.
+  void switchCategory(const std::string& category);
   void saveNow();
+
+  // Curation log (issue 41): every curator action of this session, appended as JSON lines to
+  // `path` (the GUI: curation.jsonl beside the dataset). Empty: no log.
+  void setCurationLog(const std::filesystem::path& path);
+  const std::optional<CurationLogWriter>& curationLog() const { return m_curationLog; }
+  // An orbit, pan, zoom or close-up: logged as one "look" per gesture (repeats within a second
+  // of the last, like the steps of a wheel or held arrow key, count once).
+  void noteLook(const std::string& what);
 
   // View -----------------------------------------------------------------------------------------
   void frameObject();
@@ -121,6 +136,8 @@ class Session {
 
   void updateQueueState();
   void applyDefaultFieldSettings();
+  void logAction(CurationAction action, const std::string& detail = "");
+  void applyCommand(std::unique_ptr<Command> command, bool logged);
 
   ReviewQueue m_queue;
   std::unique_ptr<AnnotationDocument> m_document;
@@ -134,6 +151,8 @@ class Session {
   PredictionWorker m_worker;
   PredictorLookup m_predictorLookup;
   MassEstimate m_massEstimate;
+  std::optional<CurationLogWriter> m_curationLog;
+  double m_lastLookSeconds = -1e9;
 };
 
 }  // namespace sagrid::ui

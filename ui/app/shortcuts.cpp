@@ -77,16 +77,17 @@ bool handleShortcuts(const std::vector<InputEvent>& events, Session& session,
         session.deleteSelected();
         break;
       case GLFW_KEY_N:
-        session.next();
+        session.navigate(+1);
         break;
       case GLFW_KEY_P:
-        session.previous();
+        session.navigate(-1);
         break;
       case GLFW_KEY_S:
         session.skip();
         break;
       case GLFW_KEY_F:
         session.frameSelection();
+        session.noteLook("close-up");
         break;
       case GLFW_KEY_W:
         session.view().wireframe = !session.view().wireframe;
@@ -111,23 +112,29 @@ bool handleShortcuts(const std::vector<InputEvent>& events, Session& session,
         break;
       case GLFW_KEY_LEFT:
         shift ? session.camera().pan(20, 0) : session.camera().orbit(0.08f, 0);
+        session.noteLook("arrow keys");
         break;
       case GLFW_KEY_RIGHT:
         shift ? session.camera().pan(-20, 0) : session.camera().orbit(-0.08f, 0);
+        session.noteLook("arrow keys");
         break;
       case GLFW_KEY_UP:
         shift ? session.camera().pan(0, 20) : session.camera().orbit(0, 0.08f);
+        session.noteLook("arrow keys");
         break;
       case GLFW_KEY_DOWN:
         shift ? session.camera().pan(0, -20) : session.camera().orbit(0, -0.08f);
+        session.noteLook("arrow keys");
         break;
       case GLFW_KEY_EQUAL:
       case GLFW_KEY_KP_ADD:
         session.camera().zoom(1);
+        session.noteLook("zoom");
         break;
       case GLFW_KEY_MINUS:
       case GLFW_KEY_KP_SUBTRACT:
         session.camera().zoom(-1);
+        session.noteLook("zoom");
         break;
       default:
         break;

@@ -56,7 +56,10 @@ void ViewportInput::handle(const std::vector<InputEvent>& events, Session& sessi
         }
         break;
       case InputEvent::Kind::Scroll:
-        if (!panelsWantMouse && session.viewport().contains(m_x, m_y)) session.camera().zoom(e.y);
+        if (!panelsWantMouse && session.viewport().contains(m_x, m_y)) {
+          session.camera().zoom(e.y);
+          session.noteLook("zoom");
+        }
         break;
       default:
         break;
@@ -135,6 +138,9 @@ void ViewportInput::release(const InputEvent&, Session& session) {
     } else {
       doc->select(pickMarker(session, m_x, m_y, kPickRadius));
     }
+  }
+  if (m_gesture == Gesture::Orbit || (m_gesture == Gesture::Pan && m_moved)) {
+    session.noteLook(m_gesture == Gesture::Orbit ? "orbit" : "pan");
   }
   m_gesture = Gesture::None;
   m_button = -1;

@@ -3,6 +3,7 @@
 #include <map>
 #include <utility>
 
+#include "core/annotate/units_record.h"
 #include "core/common/log.h"
 #include "core/geometry/surface_scene.h"
 #include "core/grid/voxelize.h"
@@ -46,8 +47,8 @@ Eigen::Vector3f AnnotationDocument::toFile(const Eigen::Vector3f& viewPoint) con
 
 bool AnnotationDocument::unitsKnown() const {
   const auto& object = m_labels.object.extra;
-  const bool inObject =
-      object.is_object() && (object.contains("meters_per_unit") || object.contains("units"));
+  const bool inObject = object.is_object() && (object.contains("meters_per_unit") || object.contains("units") ||
+                                                object.contains(kUnitGuessField));
   const bool topLevel =
       m_labels.extra.is_object() && m_labels.extra.contains("units");  // real-dev form
   return inObject || topLevel;
@@ -84,6 +85,14 @@ bool AnnotationDocument::redo() {
 
 void AnnotationDocument::changed() {
   if (m_selected >= static_cast<int>(m_labels.affordances.size())) m_selected = -1;
+  m_metersPerUnit = static_cast<float>(sagrid::metersPerUnit(m_labels));  // a units edit
+  ++m_revision;
+  save();
+}
+
+void AnnotationDocument::setUnitGuess(const UnitGuess& guess) {
+  recordUnitGuess(m_labels.object, guess);
+  m_metersPerUnit = static_cast<float>(sagrid::metersPerUnit(m_labels));
   ++m_revision;
   save();
 }

@@ -4,6 +4,8 @@
 // redo() and is autosaved atomically to labels.json, so a crash or kill loses nothing.
 #pragma once
 
+#include "core/mesh/unit_guess.h"
+
 #include <Eigen/Core>
 #include <cstdint>
 #include <filesystem>
@@ -47,6 +49,8 @@ class AnnotationDocument {
   float metersPerUnit() const { return m_metersPerUnit; }
   // Whether the labels say what the mesh unit is; if not, lengths are shown in "units", not "m".
   bool unitsKnown() const;
+  // Records annotate's guess of the units (flagged until the curator sets them, SetUnitsCommand).
+  void setUnitGuess(const UnitGuess& guess);
   const char* lengthUnit() const { return unitsKnown() ? "m" : "units"; }
 
   // Editing (autosaves; throws sagrid::Error if the save fails — the edit itself stays applied).

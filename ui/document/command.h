@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "core/curation/curation_log.h"
 #include "core/labels/labels.h"
 
 namespace sagrid::ui {
@@ -21,6 +22,8 @@ class Command {
   // Index of the point to select after apply (-1: leave the selection alone).
   virtual int selectionAfterApply() const { return -1; }
   virtual int selectionAfterRevert() const { return -1; }
+  // What the curation log calls this edit (core/curation/curation_log.h).
+  virtual CurationAction curationAction() const { return CurationAction::Edit; }
 };
 
 // Applies children in order and reverts them in reverse: one undo step for many changes.
@@ -30,6 +33,10 @@ class CommandGroup final : public Command {
   void apply(ObjectLabels& labels) override;
   void revert(ObjectLabels& labels) override;
   std::string description() const override { return m_description; }
+  // A group is the action of its children (accepting every point is many accepts, one step).
+  CurationAction curationAction() const override {
+    return m_children.empty() ? CurationAction::Edit : m_children.front()->curationAction();
+  }
   bool empty() const { return m_children.empty(); }
 
  private:

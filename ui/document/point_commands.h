@@ -20,6 +20,7 @@ class MovePointCommand final : public Command {
   void apply(ObjectLabels& labels) override;
   void revert(ObjectLabels& labels) override;
   std::string description() const override { return m_description; }
+  CurationAction curationAction() const override { return CurationAction::Drag; }
   int selectionAfterApply() const override { return m_index; }
   int selectionAfterRevert() const override { return m_index; }
 
@@ -41,6 +42,7 @@ class AddPointCommand final : public Command {
   void apply(ObjectLabels& labels) override;
   void revert(ObjectLabels& labels) override;
   std::string description() const override { return "Add " + m_point.type; }
+  CurationAction curationAction() const override { return CurationAction::Add; }
   int selectionAfterApply() const override { return m_index; }
 
  private:
@@ -54,6 +56,7 @@ class DeletePointCommand final : public Command {
   void apply(ObjectLabels& labels) override;
   void revert(ObjectLabels& labels) override;
   std::string description() const override { return "Delete " + m_point.type; }
+  CurationAction curationAction() const override { return CurationAction::Delete; }
   int selectionAfterRevert() const override { return m_index; }
 
  private:
@@ -68,6 +71,7 @@ class AcceptPointCommand final : public Command {
   void apply(ObjectLabels& labels) override;
   void revert(ObjectLabels& labels) override;
   std::string description() const override { return "Accept point"; }
+  CurationAction curationAction() const override { return CurationAction::Accept; }
   int selectionAfterApply() const override { return m_index; }
   int selectionAfterRevert() const override { return m_index; }
 
@@ -83,6 +87,7 @@ class ChangeTypeCommand final : public Command {
   void apply(ObjectLabels& labels) override;
   void revert(ObjectLabels& labels) override;
   std::string description() const override { return "Change type to " + m_type; }
+  CurationAction curationAction() const override { return CurationAction::Retype; }
   int selectionAfterApply() const override { return m_index; }
   int selectionAfterRevert() const override { return m_index; }
 

@@ -6,7 +6,9 @@
 
 #include "core/mesh/mesh_import.h"
 #include "ui/app/session.h"
+#include "core/annotate/units_record.h"
 #include "ui/document/mass_commands.h"
+#include "ui/document/units_commands.h"
 #include "ui/panels/panels.h"
 
 namespace sagrid::ui {
@@ -38,6 +40,37 @@ void drawMass(Session& session, const AnnotationDocument& doc) {
   }
 }
 
+// Units: the file's numbers in metres unless the labels say otherwise. A guessed unit (annotate,
+// from plausible sizes of the category) is flagged until the curator picks one (undoable).
+void drawUnits(Session& session, const AnnotationDocument& doc) {
+  struct Choice {
+    const char* name;
+    double meters;
+  };
+  static const Choice kChoices[] = {{"m", 1.0}, {"cm", 0.01}, {"mm", 0.001}, {"in", 0.0254}};
+  const std::optional<UnitGuess> guess = recordedUnitGuess(doc.labels().object);
+  const double current = doc.metersPerUnit();
+  const char* shown = "custom";
+  for (const Choice& c : kChoices)
+    if (std::abs(current - c.meters) <= 1e-6 * c.meters) shown = c.name;
+  char label[96];
+  std::snprintf(label, sizeof label, "units: %s%s", shown,
+                guess ? " (guessed)" : doc.unitsKnown() ? "" : " (unknown: m assumed)");
+  if (guess) ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(0.95f, 0.75f, 0.35f, 1.0f));
+  ImGui::SetNextItemWidth(-1);
+  const bool open = ImGui::BeginCombo("##units", label);
+  if (guess) ImGui::PopStyleColor();
+  if (guess && ImGui::IsItemHovered()) ImGui::SetTooltip("%s", guess->reason.c_str());
+  if (open) {
+    for (const Choice& c : kChoices) {
+      // Picking the guessed unit confirms it: the guess flag goes, the value stays.
+      if (ImGui::Selectable(c.name, shown == c.name && !guess))
+        session.execute(std::make_unique<SetUnitsCommand>(c.meters));
+    }
+    ImGui::EndCombo();
+  }
+}
+
 }  // namespace
 
 void drawObjectPanel(Session& session) {
@@ -62,6 +95,7 @@ void drawObjectPanel(Session& session) {
     }
     ImGui::EndCombo();
   }
+  drawUnits(session, *doc);
   const Eigen::Vector3f size = doc->mesh().bounds().sizes() * doc->metersPerUnit();
   ImGui::TextDisabled("size %.3f x %.3f x %.3f %s", size.x(), size.y(), size.z(),
                       doc->lengthUnit());
@@ -73,7 +107,7 @@ void drawObjectPanel(Session& session) {
   if (ImGui::BeginCombo("##category", category.empty() ? "category: unknown"
                                                        : ("category: " + category).c_str())) {
     for (const char* c : kCategories) {
-      if (ImGui::Selectable(c, category == c)) doc->setCategory(c);
+      if (ImGui::Selectable(c, category == c)) session.switchCategory(c);
     }
     ImGui::EndCombo();
   }

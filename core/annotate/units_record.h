@@ -1,0 +1,24 @@
+// How labels.json records the units of a file that does not state them (issue 41):
+// object.meters_per_unit_guess = {"unit", "meters_per_unit", "sure", "reason"}, and
+// object.meters_per_unit set from the guess unless it is metres. A curator who sets the units
+// (GUI, undoable) replaces the guess: the value stays, the guess record goes.
+#pragma once
+
+#include <optional>
+
+#include "core/labels/labels.h"
+#include "core/mesh/unit_guess.h"
+
+namespace sagrid {
+
+inline constexpr const char* kUnitGuessField = "meters_per_unit_guess";
+
+void recordUnitGuess(ObjectInfo& object, const UnitGuess& guess);
+
+// The guess, when the object's units are guessed and not yet confirmed.
+std::optional<UnitGuess> recordedUnitGuess(const ObjectInfo& object);
+
+// The curator's units: object.meters_per_unit = metersPerUnit, the guess record removed.
+void setCuratedUnits(ObjectInfo& object, double metersPerUnit);
+
+}  // namespace sagrid

@@ -1,0 +1,61 @@
+#include "core/mesh/unit_guess.h"
+
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+namespace sagrid {
+
+namespace {
+struct Unit {
+  const char* name;
+  double meters;
+};
+// In the order a tie is broken: how often in-the-wild files use each.
+constexpr std::array<Unit, 4> kUnits{{{"m", 1.0}, {"cm", 0.01}, {"mm", 0.001}, {"in", 0.0254}}};
+
+// How far, in log10, `meters` lies outside the range (0 inside).
+double outside(double meters, const PlausibleSize& range) {
+  if (meters < range.minMeters) return std::log10(range.minMeters / meters);
+  if (meters > range.maxMeters) return std::log10(meters / range.maxMeters);
+  return 0.0;
+}
+}  // namespace
+
+PlausibleSize plausibleSize(const std::string& category) {
+  if (category == "stove") return {0.3, 1.5};  // a two-zone hob to a six-burner range
+  if (category == "sink") return {0.1, 2.0};   // a tap to a double vanity
+  return {0.1, 3.0};                           // a toaster to a tall fridge or a kitchen island
+}
+
+UnitGuess guessMetersPerUnit(double largestExtent, const std::string& category) {
+  UnitGuess guess;
+  if (!(largestExtent > 0) || !std::isfinite(largestExtent)) {
+    guess.unit = "m";
+    guess.reason = "no extent to judge; metres kept";
+    return guess;
+  }
+  const PlausibleSize range = plausibleSize(category);
+  double best = std::numeric_limits<double>::infinity();
+  int fitting = 0;
+  for (const Unit& unit : kUnits) {
+    const double off = outside(largestExtent * unit.meters, range);
+    if (off == 0) ++fitting;
+    if (off < best) {
+      best = off;
+      guess.metersPerUnit = unit.meters;
+      guess.unit = unit.name;
+    }
+  }
+  guess.sure = fitting == 1;
+  char line[200];
+  std::snprintf(line, sizeof line, "largest extent %.4g units: %.3g m in %s, %s the %s size range (%.2g-%.2g m)%s",
+                largestExtent, largestExtent * guess.metersPerUnit, guess.unit.c_str(),
+                best == 0 ? "within" : "nearest to", category == "stove" || category == "sink" ? category.c_str() : "appliance",
+                range.minMeters, range.maxMeters, guess.sure ? "" : "; other units fit too");
+  guess.reason = line;
+  return guess;
+}
+
+}  // namespace sagrid

@@ -1,0 +1,31 @@
+// Units of files that do not say (issue 41): in-the-wild meshes are in metres, centimetres,
+// millimetres or inches, and a stove 90 units tall is in centimetres. The guess takes the unit
+// under which the object's largest extent is a plausible size for its category (one size range
+// per category, wide enough for a cooktop and a range, a tap and a vanity), preferring the more
+// common unit where several fit. Curators confirm or set it in the GUI; mass estimates and exports
+// use object.meters_per_unit.
+#pragma once
+
+#include <string>
+
+namespace sagrid {
+
+struct UnitGuess {
+  double metersPerUnit = 1.0;
+  std::string unit;    // "m", "cm", "mm" or "in"
+  bool sure = false;   // only this unit puts the object in its category's range
+  std::string reason;  // one line for labels.json and the GUI
+};
+
+struct PlausibleSize {
+  double minMeters = 0;  // largest extent
+  double maxMeters = 0;
+};
+
+// The range of largest extents the guess accepts for "stove", "sink" or anything else ("none").
+PlausibleSize plausibleSize(const std::string& category);
+
+// `largestExtent` in file units (> 0).
+UnitGuess guessMetersPerUnit(double largestExtent, const std::string& category);
+
+}  // namespace sagrid
