@@ -10,6 +10,7 @@
 #include "core/annotate/repeated_parts_pass.h"
 #include "core/annotate/touch_keys_pass.h"
 #include "core/features/printed_marks.h"
+#include "core/geometry/material_parts.h"
 #include "core/geometry/surface_scene.h"
 #include "core/grid/mesh_summary.h"
 #include "core/grid/normalization.h"
@@ -47,6 +48,20 @@ void listSmallParts(const std::vector<sagrid::ConnectedPart>& parts, const sagri
   }
 }
 
+void listMaterialParts(const sagrid::Mesh& mesh) {
+  const auto parts = sagrid::materialParts(mesh);
+  std::printf("material parts: %zu\n", parts.size());
+  for (const auto& [material, part] : parts) {
+    const Eigen::Vector3f c = sagrid::zUpToFile(part.box.center(), mesh.fileUp);
+    const Eigen::Vector3f size = part.box.sizes();
+    const std::string name = material >= 0 && material < static_cast<int>(mesh.materials.size())
+                                 ? mesh.materials[std::size_t(material)].name
+                                 : std::string("(none)");
+    std::printf("  material %d '%s': %d triangles, box centre (%g, %g, %g), size (%g, %g, %g) z-up\n", material,
+                name.c_str(), part.triangles, c.x(), c.y(), c.z(), size.x(), size.y(), size.z());
+  }
+}
+
 // The round flat families of two or more parts (burner caps, drains, round knobs) with their
 // widths as shares of the mesh's largest extent, and whether the burner-cap rule after the category
 // classifier takes them for a stove's caps.
@@ -68,7 +83,7 @@ void setupInfo(CLI::App& root) {
   struct Options {
     std::string mesh, up;
     int resolution = sagrid::kDefaultGridResolution;
-    bool json = false, marks = false, keys = false, parts = false;
+    bool json = false, marks = false, keys = false, parts = false, materialParts = false;
   };
   auto o = std::make_shared<Options>();
   cmd->add_option("mesh", o->mesh, "Mesh file (.obj .gltf .glb .fbx .dae .ply .stl)")->required();
@@ -87,14 +102,19 @@ void setupInfo(CLI::App& root) {
       "Also list the mesh's small parts (a knob, a cap, a handle: those the repeated-parts "
       "and part-ownership passes reason about) and how many copies each has, and the round flat "
       "families the burner-cap rule of the category reads");
+  cmd->add_flag("--material-parts", o->materialParts,
+                "Also list, per material, the connected parts of its triangles with their box "
+                "centre in the file's frame and size: where zones, knobs and handles are drawn in "
+                "a material of their own on a fused body, these are the curator's candidates");
   cmd->callback([o] {
     const auto summary = sagrid::summarizeMesh(o->mesh, sagrid::ImportOptions(sagrid::parseUpAxis(o->up), /*detect=*/true),
                                                o->resolution);
     if (o->json) std::cout << sagrid::summaryJson(summary).dump(2) << "\n";
     else std::cout << sagrid::formatSummary(summary);
-    if (!o->marks && !o->keys && !o->parts) return;
+    if (!o->marks && !o->keys && !o->parts && !o->materialParts) return;
     const sagrid::ImportOptions import(summary.fileUp, /*detect=*/false);
     const sagrid::Mesh mesh = sagrid::importMesh(o->mesh, import);
+    if (o->materialParts) listMaterialParts(mesh);
     if (o->marks) {
       const sagrid::PrintedMarks marks = sagrid::findPrintedMarks(mesh);
       listCircles("printed zones", marks.zones, mesh.fileUp);

@@ -20,8 +20,8 @@ const std::string kTriangle = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
 // A pool object as the pool lays it out: the mesh, a texture in a sub-folder, look.png and
 // provenance.json.
 void addPoolObject(const fs::path& pool, const std::string& id, const std::string& repo, const std::string& mesh) {
-  test::writeFile(pool / id / "model.obj", mesh);
   fs::create_directories(pool / id / "textures");
+  test::writeFile(pool / id / "model.obj", mesh);
   test::writeFile(pool / id / "textures" / "t.png", "png");
   test::writeFile(pool / id / "look.png", "png");
   const nlohmann::json provenance{{"repo", repo}, {"commit", "abc"}, {"path", "assets/model.obj"},
@@ -42,6 +42,7 @@ fs::path labelsFolder(const fs::path& root, const std::string& sha) {
   p.position = {0.2f, 0.2f, 0.0f};
   p.status = AffordanceStatus::Added;
   labels.affordances.push_back(p);
+  fs::create_directories(root / "a");
   writeLabels(root / "a" / "labels.json", labels);
   test::writeFile(root / "split.json", R"({"wild-train": ["owner/one"], "wild-val": ["owner/two"]})");
   return root;

@@ -1,0 +1,23 @@
+// The parts of a mesh by material: for each material, the connected parts of its triangles. In
+// low-poly and product models a burner's zone, a knob or a tap's handle is often fused into one
+// connected body but drawn in a material of its own, so these are the candidates a curator (or a
+// part segmentation) looks at where connected parts alone say nothing.
+#pragma once
+
+#include <vector>
+
+#include "core/geometry/connected_parts.h"
+
+namespace sagrid {
+
+struct Mesh;
+
+struct MaterialPart {
+  int material = -1;  // index into mesh.materials; -1 where the mesh has none
+  ConnectedPart part;
+};
+
+// Every material's connected parts, materials in order, each material's parts largest first.
+std::vector<MaterialPart> materialParts(const Mesh& mesh);
+
+}  // namespace sagrid
