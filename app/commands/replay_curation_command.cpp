@@ -1,0 +1,53 @@
+// `sagrid replay-curation PATHS --truth DIR --curation-log LOG`: a curator who knows the right
+// labels (DIR/<id>/labels.json) reviews the objects of PATHS in the GUI's session, from the
+// predictions in their labels.json, and the session's curation log records every action; then
+// `sagrid eval --curation LOG` reports the throughput. Parsing only; the work is in ui/app.
+#include <CLI/CLI.hpp>
+#include <cstdio>
+#include <filesystem>
+
+#include "app/command_registry.h"
+#include "core/common/error.h"
+#include "core/labels/labels.h"
+#include "ui/app/curation_replay.h"
+#include "ui/app/session.h"
+
+namespace {
+namespace fs = std::filesystem;
+
+void setupReplayCuration(CLI::App& root) {
+  auto* cmd = root.add_subcommand(
+      "replay-curation",
+      "Review PATHS (folders of objects whose labels.json hold the predictions) in the GUI's "
+      "session as a curator who knows the right labels in --truth would: switch the category, set "
+      "the units, drag, delete and add points, accept; every action goes to the curation log. "
+      "Changes the labels.json files of PATHS: run it on a copy.");
+  struct Options {
+    std::vector<std::string> paths;
+    std::string truth, log;
+  };
+  auto o = std::make_shared<Options>();
+  cmd->add_option("paths", o->paths, "Folders or mesh files, as for sagrid gui")->required();
+  cmd->add_option("--truth", o->truth, "Folder of right labels, <id>/labels.json")->required();
+  cmd->add_option("--curation-log", o->log, "Curation log to append to")->required();
+  cmd->callback([o] {
+    if (!fs::is_directory(o->truth)) throw sagrid::FileError(o->truth, "labels folder not found");
+    sagrid::ui::Session session;
+    session.autoPredict = false;
+    session.logErrors = true;
+    session.setCurationLog(o->log);
+    session.openPaths(std::vector<fs::path>(o->paths.begin(), o->paths.end()));
+    const fs::path truthDir = o->truth;
+    const auto summary = sagrid::ui::replayCuration(session, [&truthDir](const std::string& id) {
+      const fs::path file = truthDir / id / "labels.json";
+      return fs::is_regular_file(file) ? std::optional<sagrid::ObjectLabels>(sagrid::readLabels(file)) : std::nullopt;
+    });
+    for (const auto& e : session.pendingErrors()) std::fprintf(stderr, "replay-curation: %s\n", e.c_str());
+    std::printf("replay-curation: %zu objects reviewed, %zu without right labels (skipped), %zu failed; log %s\n",
+                summary.objects, summary.withoutTruth, summary.failed, o->log.c_str());
+  });
+}
+
+}  // namespace
+
+SAGRID_REGISTER_COMMAND("replay-curation", setupReplayCuration);

@@ -1,0 +1,33 @@
+// What a curator who knows an object's right labels does to it in the GUI, step by step, when it
+// opens with predictions: switch the category if it is wrong (the GUI then drops the old
+// category's predicted points), set the units if they are wrong, drag every predicted point that
+// is matched (Hungarian, per type) to a right point but lies farther than the match radius, delete
+// every extra point, add every missing one, and accept the rest with one key. The edits are the
+// ones core/eval/curator_effort.h counts; the replay (ui/app/curation_replay.h) performs them
+// through the GUI's own session so the curation log measures them.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "core/curation/curation_log.h"
+#include "core/eval/metrics.h"
+#include "core/labels/labels.h"
+
+namespace sagrid {
+
+struct CurationStep {
+  CurationAction action = CurationAction::Drag;  // Category, Units, Drag, Delete or Add
+  std::string category;                          // Category
+  double metersPerUnit = 1.0;                    // Units
+  int index = -1;                                // Drag, Delete: the point's index at that moment
+  AffordancePoint point;                         // Drag: where to; Add: the point
+};
+
+// Units count as wrong when they differ by more than this ratio (0.1 %).
+inline constexpr double kUnitsTolerance = 1e-3;
+
+std::vector<CurationStep> curationPlan(const ObjectLabels& opened, const ObjectLabels& truth,
+                                       double radiusMeters = kMatchRadiusMeters);
+
+}  // namespace sagrid

@@ -1,0 +1,31 @@
+// A curator who knows the right labels, replayed through the GUI's own session (issue 41): each
+// object of the session's queue is opened, the steps of core/curation/curation_plan.h are taken
+// with the same calls the GUI's keys and panels make (category list, units list, point drag,
+// Del, add), and the object is accepted with A. The session's curation log then records exactly
+// the actions a person would need, so `sagrid eval --curation` measures the GUI's throughput on
+// real objects from the models' predictions, the same whoever runs it.
+#pragma once
+
+#include <functional>
+#include <optional>
+#include <string>
+
+#include "core/labels/labels.h"
+
+namespace sagrid::ui {
+
+class Session;
+
+struct CurationReplaySummary {
+  std::size_t objects = 0;       // replayed and accepted
+  std::size_t withoutTruth = 0;  // skipped (S): no right labels for them
+  std::size_t failed = 0;        // could not be opened
+};
+
+// `truthOf(id)` returns the right labels of an object, named by its mesh's folder (an object
+// folder, as datasets lay them out), or nullopt to skip it. The session should not predict on opening (autoPredict off):
+// the queue's labels.json files hold the predictions to start from.
+CurationReplaySummary replayCuration(Session& session,
+                                     const std::function<std::optional<ObjectLabels>(const std::string&)>& truthOf);
+
+}  // namespace sagrid::ui
