@@ -10,6 +10,7 @@
 #include "core/common/error.h"
 #include "core/labels/labels.h"
 #include "ui/app/curation_replay.h"
+#include "ui/app/model_predictor.h"
 #include "ui/app/session.h"
 
 namespace {
@@ -24,24 +25,34 @@ void setupReplayCuration(CLI::App& root) {
       "Changes the labels.json files of PATHS: run it on a copy.");
   struct Options {
     std::vector<std::string> paths;
-    std::string truth, log;
+    std::string truth, log, models;
+    bool noRepredict = false;
   };
   auto o = std::make_shared<Options>();
   cmd->add_option("paths", o->paths, "Folders or mesh files, as for sagrid gui")->required();
   cmd->add_option("--truth", o->truth, "Folder of right labels, <id>/labels.json")->required();
   cmd->add_option("--curation-log", o->log, "Curation log to append to")->required();
+  cmd->add_option("--models", o->models, "Models that predict again after a category switch (default: the installed models)");
+  cmd->add_flag("--no-repredict", o->noRepredict,
+                "A category switch only drops the old points (the GUI before it predicted again)");
   cmd->callback([o] {
     if (!fs::is_directory(o->truth)) throw sagrid::FileError(o->truth, "labels folder not found");
     sagrid::ui::Session session;
+    sagrid::ui::ModelPredictor predictor(o->models.empty() ? sagrid::ui::ModelPredictor::defaultModelsDir()
+                                                           : fs::path(o->models));
+    session.setPredictorLookup([&predictor](const sagrid::ui::AnnotationDocument& doc) { return predictor.jobFor(doc); });
     session.autoPredict = false;
     session.logErrors = true;
     session.setCurationLog(o->log);
     session.openPaths(std::vector<fs::path>(o->paths.begin(), o->paths.end()));
     const fs::path truthDir = o->truth;
-    const auto summary = sagrid::ui::replayCuration(session, [&truthDir](const std::string& id) {
-      const fs::path file = truthDir / id / "labels.json";
-      return fs::is_regular_file(file) ? std::optional<sagrid::ObjectLabels>(sagrid::readLabels(file)) : std::nullopt;
-    });
+    const auto summary = sagrid::ui::replayCuration(
+        session,
+        [&truthDir](const std::string& id) {
+          const fs::path file = truthDir / id / "labels.json";
+          return fs::is_regular_file(file) ? std::optional<sagrid::ObjectLabels>(sagrid::readLabels(file)) : std::nullopt;
+        },
+        !o->noRepredict);
     for (const auto& e : session.pendingErrors()) std::fprintf(stderr, "replay-curation: %s\n", e.c_str());
     std::printf("replay-curation: %zu objects reviewed, %zu without right labels (skipped), %zu failed; log %s\n",
                 summary.objects, summary.withoutTruth, summary.failed, o->log.c_str());

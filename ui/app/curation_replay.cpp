@@ -1,6 +1,8 @@
 #include "ui/app/curation_replay.h"
 
+#include <chrono>
 #include <memory>
+#include <thread>
 
 #include "core/curation/curation_plan.h"
 #include "ui/app/session.h"
@@ -10,10 +12,12 @@
 namespace sagrid::ui {
 
 namespace {
-void takeStep(Session& session, const CurationStep& step) {
+void takeStep(Session& session, const CurationStep& step, bool repredict) {
   switch (step.action) {
     case CurationAction::Category:
+      session.autoPredict = repredict;
       session.switchCategory(step.category);
+      session.autoPredict = false;
       break;
     case CurationAction::Units:
       session.execute(std::make_unique<SetUnitsCommand>(step.metersPerUnit));
@@ -36,11 +40,19 @@ void takeStep(Session& session, const CurationStep& step) {
       break;
   }
 }
+// A category switch predicts again for the new category (when the session has models): wait for
+// it and apply it, as the GUI's frame loop does.
+void awaitPrediction(Session& session) {
+  while (session.worker().running()) std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  session.pollPrediction();
+}
 }  // namespace
 
 CurationReplaySummary replayCuration(Session& session,
-                                     const std::function<std::optional<ObjectLabels>(const std::string&)>& truthOf) {
+                                     const std::function<std::optional<ObjectLabels>(const std::string&)>& truthOf,
+                                     bool repredict) {
   CurationReplaySummary summary;
+  session.autoPredict = false;
   const std::size_t total = session.queue().size();
   for (std::size_t i = 0; i < total; ++i) {
     // Accepting (A) or skipping (S) the previous object already opened this one.
@@ -57,7 +69,13 @@ CurationReplaySummary replayCuration(Session& session,
       session.skip();
       continue;
     }
-    for (const CurationStep& step : curationPlan(doc->labels(), *truth)) takeStep(session, step);
+    std::vector<CurationStep> steps = curationPlan(doc->labels(), *truth);
+    if (!steps.empty() && steps.front().action == CurationAction::Category) {
+      takeStep(session, steps.front(), repredict);
+      awaitPrediction(session);
+      steps = curationPlan(session.document()->labels(), *truth);  // from what the switch left
+    }
+    for (const CurationStep& step : steps) takeStep(session, step, repredict);
     session.document()->select(-1);
     session.accept();
     ++summary.objects;

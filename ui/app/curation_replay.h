@@ -22,10 +22,13 @@ struct CurationReplaySummary {
   std::size_t failed = 0;        // could not be opened
 };
 
+// With `repredict` and a predictor on the session, a category switch predicts again for the new
+// category, as in the GUI, and the rest of the plan starts from those points; objects never
+// predict on opening (their labels.json hold the predictions to start from).
 // `truthOf(id)` returns the right labels of an object, named by its mesh's folder (an object
-// folder, as datasets lay them out), or nullopt to skip it. The session should not predict on opening (autoPredict off):
-// the queue's labels.json files hold the predictions to start from.
+// folder, as datasets lay them out), or nullopt to skip it.
 CurationReplaySummary replayCuration(Session& session,
-                                     const std::function<std::optional<ObjectLabels>(const std::string&)>& truthOf);
+                                     const std::function<std::optional<ObjectLabels>(const std::string&)>& truthOf,
+                                     bool repredict = true);
 
 }  // namespace sagrid::ui
