@@ -55,7 +55,7 @@ void setupAnnotate(CLI::App& root) {
   struct Options {
     std::string input, list, out, category, models, cache, up, instances = "auto", shard;
     std::vector<std::string> counts;
-    bool force = false;
+    bool force = false, noSuggestions = false;
     sagrid::PassOptions passes;
     double timeLimit = 600;
   };
@@ -77,6 +77,9 @@ void setupAnnotate(CLI::App& root) {
       ->check(CLI::NonNegativeNumber);
   cmd->add_option("--category", o->category,
                   "Object category (default: chosen by descriptor retrieval)");
+  cmd->add_flag("--no-suggestions", o->noSuggestions,
+                "An object the category decision rejects gets no points (by default it keeps its "
+                "likeliest category's points, flagged as suggestions, for a curator to confirm)");
   cmd->add_option("--models", o->models, "Model folder (default: the installed models)");
   cmd->add_option("--cache", o->cache, "Feature cache folder (default: none)");
   sagrid::app::addUpAxisOption(*cmd, o->up, sagrid::app::kDetectedUpDefault);
@@ -97,6 +100,7 @@ void setupAnnotate(CLI::App& root) {
     auto& options = settings.options;
     options.category = o->category;
     static_cast<sagrid::PassOptions&>(options) = o->passes;
+    options.suggestions = !o->noSuggestions;
     // Models, their feature options and confidence map load in the worker process.
     options.features.cacheDir = o->cache;
     if (!o->up.empty()) options.features.up = sagrid::parseUpAxis(o->up);

@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <functional>
 #include <memory>
 
 #include "app/command_registry.h"
@@ -27,7 +28,27 @@ fs::path defaultDebCache() {
   return fs::temp_directory_path() / "sagrid-debs";
 }
 
-fs::path defaultLabelsDir() { return sagrid::resourceDir("datasets/sweethome3d"); }
+// --labels when given (it must exist), else the labels shipped in resources/datasets/<name>.
+fs::path labelsFolder(const std::string& given, const std::string& name) {
+  if (given.empty()) return sagrid::resourceDir("datasets/" + name);
+  if (!fs::is_directory(given)) throw sagrid::FileError(given, "labels folder not found");
+  return given;
+}
+
+// A corpus build's progress bar, made on its first report.
+struct CorpusProgress {
+  std::unique_ptr<sagrid::app::ProgressBar> bar;
+  std::function<void(std::size_t, std::size_t, const std::string&)> callback() {
+    return [this](std::size_t done, std::size_t total, const std::string& id) {
+      if (!bar) bar = std::make_unique<sagrid::app::ProgressBar>("corpus", total);
+      bar->update(done, id);
+    };
+  }
+  void finish() {
+    if (bar) bar->finish();
+    bar.reset();
+  }
+};
 
 void setupWildCorpus(CLI::App& corpus);
 
@@ -70,18 +91,11 @@ void setupCorpus(CLI::App& root) {
     sagrid::SweetHome3dCorpusOptions options;
     options.out = o->out;
     options.sources = sagrid::locateSweetHome3dSources(packages, log);
-    options.labelsDir = o->labels.empty() ? defaultLabelsDir() : fs::path(o->labels);
-    if (!o->labels.empty() && !fs::is_directory(options.labelsDir)) {
-      throw sagrid::FileError(options.labelsDir, "labels folder not found");
-    }
-    std::unique_ptr<sagrid::app::ProgressBar> bar;
-    options.progress = [&bar](std::size_t done, std::size_t total, const std::string& id) {
-      if (!bar) bar = std::make_unique<sagrid::app::ProgressBar>("corpus", total);
-      bar->update(done, id);
-    };
+    options.labelsDir = labelsFolder(o->labels, "sweethome3d");
+    CorpusProgress progress;
+    options.progress = progress.callback();
     const sagrid::CorpusSummary summary = sagrid::buildSweetHome3dCorpus(options);
-    if (bar) bar->finish();
-    bar.reset();
+    progress.finish();
     for (const auto& w : summary.warnings) std::fprintf(stderr, "corpus: warning: %s\n", w.c_str());
     auto count = [](const std::map<std::string, int>& m, const char* key) {
       const auto it = m.find(key);
@@ -118,17 +132,11 @@ void setupWildCorpus(CLI::App& corpus) {
     sagrid::WildCorpusOptions options;
     options.pool = o->from;
     options.out = o->out;
-    options.labelsDir = o->labels.empty() ? sagrid::resourceDir("datasets/wild") : fs::path(o->labels);
-    if (!o->labels.empty() && !fs::is_directory(options.labelsDir)) {
-      throw sagrid::FileError(options.labelsDir, "labels folder not found");
-    }
-    std::unique_ptr<sagrid::app::ProgressBar> bar;
-    options.progress = [&bar](std::size_t done, std::size_t total, const std::string& id) {
-      if (!bar) bar = std::make_unique<sagrid::app::ProgressBar>("corpus", total);
-      bar->update(done, id);
-    };
+    options.labelsDir = labelsFolder(o->labels, "wild");
+    CorpusProgress progress;
+    options.progress = progress.callback();
     const sagrid::WildCorpusSummary summary = sagrid::buildWildCorpus(options);
-    if (bar) bar->finish();
+    progress.finish();
     for (const auto& w : summary.warnings) std::fprintf(stderr, "corpus: warning: %s\n", w.c_str());
     std::string counts;
     for (const auto& [dataset, n] : summary.countsByDataset) counts += (counts.empty() ? "" : ", ") + dataset + " " + std::to_string(n);

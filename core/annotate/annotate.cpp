@@ -1,10 +1,12 @@
 #include "core/annotate/annotate.h"
 
+#include <algorithm>
 #include <chrono>
 
 #include "core/annotate/burner_caps_rule.h"
 #include "core/annotate/category_evidence.h"
 #include "core/annotate/point_passes.h"
+#include "core/annotate/suggested_points.h"
 #include "core/annotate/symmetry_averaging.h"
 #include "core/annotate/units_record.h"
 #include "core/common/error.h"
@@ -33,6 +35,20 @@ void recordRejection(AnnotationResult& r, std::optional<double> evidence = std::
     r.labels.extra["prediction"]["rejected_by"] = "evidence";
     r.labels.extra["prediction"]["affordance_evidence"] = *evidence;
   }
+}
+// The models' points as labels: status predicted, with their confidence and model source.
+void appendPredictedPoints(ObjectLabels& labels, const std::vector<ModelPrediction>& predictions) {
+  for (const auto& p : predictions)
+    for (std::size_t i = 0; i < p.points.size(); ++i) {
+      AffordancePoint a;
+      a.type = p.type;
+      a.position = p.surface[i].position;
+      a.normal = p.surface[i].normal;
+      a.status = AffordanceStatus::Predicted;
+      a.confidence = p.points[i].confidence;
+      a.source = p.source;
+      labels.affordances.push_back(std::move(a));
+    }
 }
 }  // namespace
 
@@ -162,6 +178,16 @@ AnnotationResult annotateMeshFile(const fs::path& meshFile, const std::string& i
   };
   if (r.rejected) {
     recordRejection(r);
+    const auto known = models.categories();
+    if (options.suggestions && std::find(known.begin(), known.end(), r.closestCategory) != known.end()) {
+      // No hard gate: the likeliest category's points, as suggestions.
+      const auto closestModels = models.forCategory(r.closestCategory);
+      const CategoryPoints suggested =
+          predictCategoryPoints(closestModels, r.closestCategory, {mesh, features, scene, featureOptions}, options,
+                                options.mode, options.counts, [](std::size_t) {});
+      appendPredictedPoints(r.labels, suggested.predictions);
+      markSuggestions(r.labels, r.closestCategory);
+    }
     finish();
     return r;
   }
@@ -174,17 +200,7 @@ AnnotationResult annotateMeshFile(const fs::path& meshFile, const std::string& i
       });
   r.predictions = std::move(points.predictions);
   const PrintedMarks& printed = points.printed;
-  for (const auto& p : r.predictions)
-    for (std::size_t i = 0; i < p.points.size(); ++i) {
-      AffordancePoint a;
-      a.type = p.type;
-      a.position = p.surface[i].position;
-      a.normal = p.surface[i].normal;
-      a.status = AffordanceStatus::Predicted;
-      a.confidence = p.points[i].confidence;
-      a.source = p.source;
-      r.labels.affordances.push_back(std::move(a));
-    }
+  appendPredictedPoints(r.labels, r.predictions);
   const double evidence = affordanceEvidence(r.predictions);
   const auto* classifier = models.categoryClassifier();
   if (decided && classifier &&
@@ -195,7 +211,8 @@ AnnotationResult annotateMeshFile(const fs::path& meshFile, const std::string& i
     r.rejected = r.rejectedByEvidence = true;
     r.closestCategory = r.category;
     r.category = r.labels.object.category = kRejectedCategory;
-    r.labels.affordances.clear();
+    if (options.suggestions) markSuggestions(r.labels, r.closestCategory);
+    else r.labels.affordances.clear();
     r.predictions.clear();
     recordRejection(r, evidence);
     finish();

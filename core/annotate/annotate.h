@@ -68,6 +68,9 @@ ModelPrediction predictWithModel(const model::AffordanceModel& model, const Feat
 // PassOptions this extends.
 struct AnnotateOptions : PassOptions {
   std::string category;     // empty: retrieval
+  // A rejected object ("none") still gets its likeliest category's points, flagged as suggestions
+  // (core/annotate/suggested_points.h); off: no points, as before.
+  bool suggestions = true;
   FeatureOptions features;  // backend must match the cards; cacheDir optional
   InstanceMode mode = InstanceMode::Auto;
   std::map<std::string, int> counts;  // type -> known instance count (InstanceMode::Count)
@@ -88,7 +91,8 @@ struct AnnotationResult {
   double categorySimilarity = 0;  // cosine similarity to the category mean (retrieval)
   bool categoryRetrieved = false;
   // The category classifier (models folder's category.json) found no known category: category
-  // "none", no points. closestCategory is its best guess, for a curator to pick.
+  // "none"; with AnnotateOptions::suggestions its points are closestCategory's, flagged as
+  // suggestions (predictions stays empty). closestCategory is its best guess, for a curator.
   bool rejected = false;
   std::string closestCategory;
   // Rejected by the evidence gate (EvidenceGate in category_classifier.h): the classifier filed it

@@ -36,6 +36,7 @@ std::string annotateOptionsHash(const AnnotateOptions& options) {
       {"spout_controls", options.spoutControls},
       {"spout_outlets", options.spoutOutlets},
       {"part_ownership", options.partOwnership},
+      {"suggestions", options.suggestions},
       {"passes_version", kPointPassesVersion},
       {"coarse_to_fine",
        options.coarseToFine ? nlohmann::json(*options.coarseToFine) : nlohmann::json("card")},

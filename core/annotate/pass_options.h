@@ -18,8 +18,9 @@ namespace sagrid {
 // touch symbols; 11: on stoves, a point beside a row of three or more knobs moves onto it whatever
 // the field; 12: on stoves, burner caps repeat after part ownership; 13: on stoves, a larger knob
 // continuing a row of three or more gets a point; 14: on sinks, a toggle point on the spout's part
-// moves to a part beside it).
-inline constexpr int kPointPassesVersion = 14;
+// moves to a part beside it; 15: a rejected object keeps its likeliest category's points as
+// suggestions).
+inline constexpr int kPointPassesVersion = 15;
 
 struct PassOptions {
   // Test-time augmentation: copies averaged per model (1 = off, 8 = all). 8 by default: on the

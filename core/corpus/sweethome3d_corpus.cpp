@@ -423,7 +423,8 @@ CorpusSummary buildSweetHome3dCorpus(const SweetHome3dCorpusOptions& options) {
     }
   }
 
-  StagedFolder staged(options.out, "corpus.json");
+  requireReplaceableFolder(options.out, "corpus.json");
+  StagedFolder staged(options.out);
   const fs::path& temp = staged.path();
   std::map<std::string, std::string> manifests;  // dataset -> manifest.jsonl text
   for (const char* d : {"real-train", "real-val", "distractors", "unlabelled"}) {

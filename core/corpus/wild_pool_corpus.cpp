@@ -102,7 +102,8 @@ WildCorpusSummary buildWildCorpus(const WildCorpusOptions& options) {
   const std::map<std::string, std::string> split =
       fs::is_regular_file(splitFile) ? readWildSplit(splitFile) : std::map<std::string, std::string>{};
   WildCorpusSummary summary;
-  StagedFolder staged(options.out, "corpus.json");
+  requireReplaceableFolder(options.out, "corpus.json");
+  StagedFolder staged(options.out);
   std::map<std::string, std::string> manifests{{"wild-train", ""}, {"wild-val", ""}, {"unlabelled", ""}};
   json listing = json::array();
   for (std::size_t i = 0; i < objects.size(); ++i) {

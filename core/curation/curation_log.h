@@ -21,6 +21,7 @@ enum class CurationAction {
   Delete,     // a point deleted
   Retype,     // a point's type changed
   Category,   // the object's category switched
+  ConfirmCategory,  // the suggested category of a rejected object taken, with its points (one key)
   Units,      // the object's units set
   Edit,       // another edit (mass, up axis)
   Undo,

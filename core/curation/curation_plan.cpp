@@ -4,6 +4,7 @@
 #include <cmath>
 #include <set>
 
+#include "core/annotate/suggested_points.h"
 #include "core/eval/hungarian.h"
 
 namespace sagrid {
@@ -12,7 +13,18 @@ std::vector<CurationStep> curationPlan(const ObjectLabels& opened, const ObjectL
                                        double radiusMeters) {
   std::vector<CurationStep> steps;
   std::vector<AffordancePoint> points = opened.affordances;
-  if (opened.object.category != truth.object.category) {
+  const std::optional<std::string> suggested = suggestedCategory(opened);
+  if (suggested && *suggested == truth.object.category) {
+    // One key (C) takes the suggested category with its points.
+    CurationStep s;
+    s.action = CurationAction::ConfirmCategory;
+    s.category = *suggested;
+    steps.push_back(s);
+  } else {
+    // Accepting "none" drops the suggestions; a switch to another category drops them too.
+    points.erase(std::remove_if(points.begin(), points.end(), isSuggestion), points.end());
+  }
+  if (opened.object.category != truth.object.category && !(suggested && *suggested == truth.object.category)) {
     CurationStep s;
     s.action = CurationAction::Category;
     s.category = truth.object.category;

@@ -1,6 +1,7 @@
 // What a curator who knows an object's right labels does to it in the GUI, step by step, when it
-// opens with predictions: switch the category if it is wrong (the GUI then drops the old
-// category's predicted points), set the units if they are wrong, drag every predicted point that
+// opens with predictions: take a rejected object's suggested category with one key when it is
+// right (its suggested points stay), else switch the category if it is wrong (the GUI then drops
+// the old category's predicted points; accepting "none" drops suggestions), set the units if they are wrong, drag every predicted point that
 // is matched (Hungarian, per type) to a right point but lies farther than the match radius, delete
 // every extra point, add every missing one, and accept the rest with one key. The edits are the
 // ones core/eval/curator_effort.h counts; the replay (ui/app/curation_replay.h) performs them
@@ -17,7 +18,7 @@
 namespace sagrid {
 
 struct CurationStep {
-  CurationAction action = CurationAction::Drag;  // Category, Units, Drag, Delete or Add
+  CurationAction action = CurationAction::Drag;  // (Confirm)Category, Units, Drag, Delete or Add
   std::string category;                          // Category
   double metersPerUnit = 1.0;                    // Units
   int index = -1;                                // Drag, Delete: the point's index at that moment

@@ -17,6 +17,7 @@ std::string klmSequence(CurationAction action) {
     case CurationAction::Delete: return "MPBBK";    // select, Del
     case CurationAction::Retype: return "MPBBK";    // select, digit
     case CurationAction::Category: return "MPBBPBB";  // open the list, pick
+    case CurationAction::ConfirmCategory: return "MK";  // key C
     case CurationAction::Units: return "MPBBPBB";
     case CurationAction::Edit: return "MPBBPBB";
     case CurationAction::Undo: return "MKK";        // Ctrl+Z
@@ -39,7 +40,8 @@ namespace {
 bool isEdit(CurationAction a) {
   switch (a) {
     case CurationAction::Drag: case CurationAction::Add: case CurationAction::Delete: case CurationAction::Retype:
-    case CurationAction::Category: case CurationAction::Units: case CurationAction::Edit:
+    case CurationAction::Category: case CurationAction::ConfirmCategory: case CurationAction::Units:
+    case CurationAction::Edit:
       return true;
     default:
       return false;

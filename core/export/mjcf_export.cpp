@@ -7,7 +7,7 @@
 #include "core/export/export_frame.h"
 #include "core/export/robocasa_sites.h"
 #include "core/export/simulator_geometry.h"
-#include "core/export/staged_folder.h"
+#include "core/common/staged_folder.h"
 #include "core/export/stl_file.h"
 #include "core/export/xml_text.h"
 #include "core/physics/convex_decomposition.h"
@@ -107,7 +107,7 @@ SimulatorExport exportMjcf(const ObjectLabels& labels, const fs::path& meshPath,
       exportdetail::buildSimulatorGeometry(labels, meshPath, labelsPath, options);
   SimulatorExport result;
   result.warnings = std::move(geometry.warnings);
-  exportdetail::StagedFolder staged(outDir / folderName);
+  StagedFolder staged(outDir / folderName);
 
   std::ostringstream xml;
   xml << "<mujoco model=\"" << escapeXml(id) << "\">\n"

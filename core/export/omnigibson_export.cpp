@@ -10,7 +10,7 @@
 #include "core/export/export_frame.h"
 #include "core/export/omnigibson_meta_links.h"
 #include "core/export/simulator_geometry.h"
-#include "core/export/staged_folder.h"
+#include "core/common/staged_folder.h"
 #include "core/export/xml_text.h"
 #include "core/mesh/mesh_export.h"
 #include "core/physics/convex_decomposition.h"
@@ -110,7 +110,7 @@ SimulatorExport exportOmniGibson(const ObjectLabels& labels, const fs::path& mes
   if (labels.object.category.empty())
     result.warnings.push_back(id + ": no category; exported under the category 'object'");
   const std::string category = safeFileName(lowerCase(labels.object.category), 64, "object");
-  exportdetail::StagedFolder staged(outDir / category / model);
+  StagedFolder staged(outDir / category / model);
   const fs::path root = staged.path();
 
   // Visual mesh: the imported mesh, z up in metres, as one OBJ with one MTL (the importer's

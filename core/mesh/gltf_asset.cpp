@@ -63,19 +63,9 @@ std::string bufferBytes(GltfAsset& asset, const json& buffer, std::size_t index,
   if (uri != buffer.end()) {
     if (!uri->is_string()) fail(asset, where + " has a 'uri' that is not text");
     const std::string text = uri->get<std::string>();
-    try {
-      if (auto inline_ = dataUriBytes(text)) {
-        bytes = std::move(*inline_);
-      } else {
-        const fs::path folder = asset.path.parent_path().empty() ? fs::path(".") : asset.path.parent_path();
-        const fs::path file = resolveContained(folder, percentDecoded(text), asset.path);
-        std::error_code ec;
-        if (!fs::is_regular_file(file, ec)) fail(asset, where + ": its file '" + text + "' is missing");
-        bytes = readFileBytes(file);
-      }
-    } catch (const InvalidArgument& e) {
-      fail(asset, where + ": " + e.what());
-    }
+    auto read = referencedBytes(asset, text, where);
+    if (!read) fail(asset, where + ": its file '" + text + "' is missing");
+    bytes = std::move(*read);
   } else if (index == 0 && glbBinary) {
     bytes = *glbBinary;
   } else if (buffer.contains("extensions") && buffer["extensions"].contains("EXT_meshopt_compression")) {
@@ -180,6 +170,19 @@ void readElements(const GltfAsset& asset, const std::string& bytes, std::size_t 
 }
 
 }  // namespace
+
+std::optional<std::string> referencedBytes(const GltfAsset& asset, const std::string& uri, const std::string& where) {
+  try {
+    if (auto inline_ = dataUriBytes(uri)) return inline_;
+  } catch (const InvalidArgument& e) {
+    fail(asset, where + ": " + e.what());
+  }
+  const fs::path folder = asset.path.parent_path().empty() ? fs::path(".") : asset.path.parent_path();
+  const fs::path file = resolveContained(folder, percentDecoded(uri), asset.path);
+  std::error_code ec;
+  if (!fs::is_regular_file(file, ec)) return std::nullopt;
+  return readFileBytes(file);
+}
 
 const json& gltfElement(const GltfAsset& asset, const char* array, std::size_t index) {
   const auto it = asset.document.find(array);

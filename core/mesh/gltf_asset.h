@@ -8,6 +8,7 @@
 #include <cstddef>
 #include <filesystem>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -26,6 +27,11 @@ struct GltfAsset {
 // GLB's structure was checked by checkMeshFile. Throws FileError for malformed JSON, a buffer
 // whose file is missing or outside the mesh's folder, or that holds fewer bytes than it declares.
 GltfAsset readGltfAsset(std::string_view bytes, const std::filesystem::path& path);
+
+// The bytes a buffer or image `uri` names: a data URI's, or a file's inside the mesh's folder
+// (percent-escapes decoded). nullopt when the file is missing. Throws FileError naming `where` for
+// a malformed data URI or a path that leaves the folder.
+std::optional<std::string> referencedBytes(const GltfAsset& asset, const std::string& uri, const std::string& where);
 
 // The bytes of buffer view `view`: a slice of its buffer, or for an EXT_meshopt_compression view
 // the decoded data. Throws FileError when the view lies outside its buffer or does not decode.

@@ -316,22 +316,12 @@ std::optional<std::pair<std::string, std::string>> imageBytes(const GltfAsset& a
     bytes = bufferViewBytes(asset, accessorIndex(asset, image["bufferView"], where));
   } else if (image.contains("uri") && image["uri"].is_string()) {
     const std::string uri = image["uri"].get<std::string>();
-    try {
-      if (auto inline_ = dataUriBytes(uri)) {
-        bytes = std::move(*inline_);
-      } else {
-        const fs::path folder = asset.path.parent_path().empty() ? fs::path(".") : asset.path.parent_path();
-        const fs::path file = resolveContained(folder, percentDecoded(uri), asset.path);
-        std::error_code ec;
-        if (!fs::is_regular_file(file, ec)) {
-          logger()->warn("{}: {}: its file '{}' is missing; using the material colour", asset.path.string(), where, uri);
-          return std::nullopt;
-        }
-        bytes = readFileBytes(file);
-      }
-    } catch (const InvalidArgument& e) {
-      throw FileError(asset.path, where + ": " + e.what());
+    auto read = referencedBytes(asset, uri, where);
+    if (!read) {
+      logger()->warn("{}: {}: its file '{}' is missing; using the material colour", asset.path.string(), where, uri);
+      return std::nullopt;
     }
+    bytes = std::move(*read);
   } else {
     return std::nullopt;
   }

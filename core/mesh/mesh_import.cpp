@@ -26,6 +26,7 @@
 #include "core/mesh/gltf_plain.h"
 #include "core/mesh/import_time_limit.h"
 #include "core/mesh/mesh_file_check.h"
+#include "core/mesh/object_folder.h"
 #include "core/mesh/texture_decode.h"
 #include "core/mesh/up_axis_detection.h"
 
@@ -170,10 +171,13 @@ class MaterialReader {
   }
 
   // As written, then just the file name beside the mesh (exports often carry absolute paths);
-  // either way only inside the mesh's own folder, and only regular files.
+  // either way only inside the mesh's own folder, and only regular files. A relative reference
+  // into a sibling folder ("../materials/textures/x.png") is read when it stays inside the
+  // object's folder (object_folder.h).
   std::optional<Texture> loadExternal(std::string reference) {
     std::replace(reference.begin(), reference.end(), '\\', '/');
     const fs::path dir = m_meshPath.parent_path().empty() ? fs::path(".") : m_meshPath.parent_path();
+    if (auto texture = loadFromObjectFolder(dir, reference)) return texture;
     for (const std::string& candidate : {reference, fs::path(reference).filename().string()}) {
       try {
         const fs::path file = resolveContained(dir, candidate, m_meshPath);
@@ -188,6 +192,17 @@ class MaterialReader {
       }
     }
     return std::nullopt;
+  }
+
+  std::optional<Texture> loadFromObjectFolder(const fs::path& dir, const std::string& reference) const {
+    if (reference.find("..") == std::string::npos || fs::path(reference).is_absolute()) return std::nullopt;
+    const fs::path object = objectFolderOf(m_meshPath);
+    if (object == dir) return std::nullopt;
+    const fs::path file = (dir / reference).lexically_normal();
+    std::error_code ec;
+    if (!isInsideFolder(file, object) || !fs::is_regular_file(file, ec)) return std::nullopt;
+    const std::string bytes = readFileBytes(file);
+    return decodeTexture(reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size());
   }
 
   const aiScene& m_scene;

@@ -20,24 +20,17 @@ const char* imageMimeType(std::string_view bytes) {
 
 std::optional<Texture> decodeTexture(const unsigned char* bytes, std::size_t size) {
   if (size == 0 || size > static_cast<std::size_t>(INT_MAX)) return std::nullopt;
-  Texture texture;
-  if (isWebp(std::string_view(reinterpret_cast<const char*>(bytes), size))) {
-    int w = 0, h = 0;
-    std::uint8_t* pixels = WebPDecodeRGBA(bytes, size, &w, &h);
-    if (!pixels) return std::nullopt;
-    texture.width = w;
-    texture.height = h;
-    texture.rgba.assign(pixels, pixels + static_cast<std::size_t>(w) * h * 4);
-    WebPFree(pixels);
-    return texture;
-  }
+  const bool webp = isWebp(std::string_view(reinterpret_cast<const char*>(bytes), size));
   int w = 0, h = 0, channels = 0;
-  stbi_uc* pixels = stbi_load_from_memory(bytes, static_cast<int>(size), &w, &h, &channels, 4);
+  std::uint8_t* pixels = webp ? WebPDecodeRGBA(bytes, size, &w, &h)
+                              : stbi_load_from_memory(bytes, static_cast<int>(size), &w, &h, &channels, 4);
   if (!pixels) return std::nullopt;
+  Texture texture;
   texture.width = w;
   texture.height = h;
   texture.rgba.assign(pixels, pixels + static_cast<std::size_t>(w) * h * 4);
-  stbi_image_free(pixels);
+  if (webp) WebPFree(pixels);
+  else stbi_image_free(pixels);
   return texture;
 }
 

@@ -14,6 +14,9 @@ namespace sagrid::ui {
 namespace {
 void takeStep(Session& session, const CurationStep& step, bool repredict) {
   switch (step.action) {
+    case CurationAction::ConfirmCategory:
+      session.confirmSuggestedCategory();
+      break;
     case CurationAction::Category:
       session.autoPredict = repredict;
       session.switchCategory(step.category);

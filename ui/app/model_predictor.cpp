@@ -5,6 +5,7 @@
 
 #include "core/annotate/annotate.h"
 #include "core/annotate/model_set.h"
+#include "core/annotate/suggested_points.h"
 #include "core/annotate/units_record.h"
 #include "core/common/error.h"
 #include "core/common/log.h"
@@ -68,6 +69,7 @@ std::optional<PredictionJob> ModelPredictor::jobFor(const AnnotationDocument& do
     result.points = r.labels.affordances;
     result.objectConfidence = r.objectConfidence;
     result.units = recordedUnitGuess(r.labels.object);
+    result.suggestedCategory = suggestedCategory(r.labels);
     for (const ModelPrediction& p : r.predictions) {
       DistanceField field;
       field.type = p.type;

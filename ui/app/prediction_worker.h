@@ -27,7 +27,8 @@ struct PredictionResult {
   std::vector<AffordancePoint> points;  // mesh file coordinates, status "predicted"
   double objectConfidence = 0;          // P(right with one key), core/annotate/object_confidence.h
   std::vector<DistanceField> fields;
-  std::optional<UnitGuess> units;  // from the mesh's size and the category (core/mesh/unit_guess.h)
+  std::optional<UnitGuess> units;
+  std::optional<std::string> suggestedCategory;  // a rejected object's points are this category's  // from the mesh's size and the category (core/mesh/unit_guess.h)
 };
 
 struct PredictionProgress {

@@ -9,6 +9,7 @@
 #include "core/export/omnigibson_export.h"
 #include "core/export/training_set.h"
 #include "core/training/dataset_training.h"
+#include "core/annotate/suggested_points.h"
 #include "ui/document/category_commands.h"
 #include "ui/document/object_loader.h"
 #include "ui/document/point_commands.h"
@@ -173,8 +174,19 @@ void Session::noteLook(const std::string& what) {
   m_lastLookSeconds = now;
 }
 
+void Session::confirmSuggestedCategory() {
+  if (!m_document || !suggestedCategory(m_document->labels())) return;
+  execute(std::make_unique<ConfirmSuggestionsCommand>());
+  m_predictionNote.clear();
+  chooseNewPointType();
+}
+
 void Session::switchCategory(const std::string& category) {
   if (!m_document || m_document->labels().object.category == category) return;
+  if (suggestedCategory(m_document->labels()) == category) {
+    confirmSuggestedCategory();
+    return;
+  }
   const bool allPredicted = std::all_of(m_document->points().begin(), m_document->points().end(),
                                         [](const AffordancePoint& p) { return p.status == AffordanceStatus::Predicted; });
   std::vector<std::unique_ptr<Command>> steps;
@@ -196,6 +208,8 @@ void Session::accept() {
     execute(std::make_unique<AcceptPointCommand>(m_document->selected()));
     return;
   }
+  // Accepting a rejected object keeps "none": its suggested points go.
+  if (suggestedCategory(m_document->labels())) applyCommand(std::make_unique<DropSuggestionsCommand>(), false);
   auto all = makeAcceptAllCommand(m_document->labels());
   if (!all->empty()) applyCommand(std::move(all), false);
   logAction(CurationAction::AcceptAll);
@@ -396,12 +410,15 @@ void Session::pollPrediction() {
     m_document->setCategory(result.category);
   if (!m_document->unitsKnown() && result.units) m_document->setUnitGuess(*result.units);
   if (result.rejected) {
-    // Opened with no points; the curator picks the category (object panel) and runs SAGrid.
+    // Opened as "none"; its likeliest category's points, if any, are suggestions: C takes them.
+    const std::string points = result.points.empty()
+                                   ? "no points"
+                                   : "its points are suggestions: C takes " + result.closestCategory + ", A keeps none";
     m_predictionNote =
         result.rejectedByEvidence
             ? "shaped like a " + result.closestCategory + ", but the " + result.closestCategory +
-                  " models find none of its parts on it: no points"
-            : "not a known category (closest: " + result.closestCategory + "): no points";
+                  " models find none of its parts on it: " + points
+            : "not a known category (closest: " + result.closestCategory + "): " + points;
     logger()->info("{}: {}; pick the category and run SAGrid, or place the points by hand",
                    m_document->displayName(), m_predictionNote);
   }
@@ -419,6 +436,10 @@ void Session::pollPrediction() {
     } catch (const Error& e) {
       reportError(e.what());
     }
+  }
+  if (result.suggestedCategory &&
+      std::any_of(m_document->points().begin(), m_document->points().end(), isSuggestion)) {
+    m_document->setSuggestedCategory(*result.suggestedCategory);
   }
   m_document->setPredictedFields(std::move(result.fields));
   logger()->info("prediction done: {} points", m_document->points().size());

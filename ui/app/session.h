@@ -68,6 +68,9 @@ class Session {
   // Switches the open object's category (one undoable step) and, when its points are all still
   // predicted, drops them and predicts again for the new category.
   void switchCategory(const std::string& category);
+  // C: a rejected object's suggested category, taken with its suggested points (one undoable
+  // step); nothing when the object has no suggestions.
+  void confirmSuggestedCategory();
   void saveNow();
 
   // Curation log (issue 41): every curator action of this session, appended as JSON lines to

@@ -17,6 +17,7 @@ const std::vector<ShortcutHelp>& shortcutHelp() {
       {"Click", "select a point (empty space: deselect)"},
       {"Shift+click, Insert then click", "add a point of the current type"},
       {"A", "accept the selected point; none selected: accept all and go to the next object"},
+      {"C", "take the suggested category of a rejected object, with its points"},
       {"Del / Backspace", "delete the selected point"},
       {"1-9", "current type (and the selected point's type)"},
       {"N / P", "next / previous object"},
@@ -84,6 +85,9 @@ bool handleShortcuts(const std::vector<InputEvent>& events, Session& session,
         break;
       case GLFW_KEY_S:
         session.skip();
+        break;
+      case GLFW_KEY_C:
+        session.confirmSuggestedCategory();
         break;
       case GLFW_KEY_F:
         session.frameSelection();

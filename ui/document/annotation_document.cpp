@@ -3,6 +3,7 @@
 #include <map>
 #include <utility>
 
+#include "core/annotate/suggested_points.h"
 #include "core/annotate/units_record.h"
 #include "core/common/log.h"
 #include "core/geometry/surface_scene.h"
@@ -93,6 +94,12 @@ void AnnotationDocument::changed() {
 void AnnotationDocument::setUnitGuess(const UnitGuess& guess) {
   recordUnitGuess(m_labels.object, guess);
   m_metersPerUnit = static_cast<float>(sagrid::metersPerUnit(m_labels));
+  ++m_revision;
+  save();
+}
+
+void AnnotationDocument::setSuggestedCategory(const std::string& category) {
+  m_labels.object.extra[kSuggestedCategoryField] = category;
   ++m_revision;
   save();
 }

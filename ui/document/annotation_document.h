@@ -51,6 +51,9 @@ class AnnotationDocument {
   bool unitsKnown() const;
   // Records annotate's guess of the units (flagged until the curator sets them, SetUnitsCommand).
   void setUnitGuess(const UnitGuess& guess);
+  // Records that the points are suggestions of `category` for a rejected object
+  // (core/annotate/suggested_points.h).
+  void setSuggestedCategory(const std::string& category);
   const char* lengthUnit() const { return unitsKnown() ? "m" : "units"; }
 
   // Editing (autosaves; throws sagrid::Error if the save fails — the edit itself stays applied).

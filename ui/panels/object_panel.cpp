@@ -6,6 +6,7 @@
 
 #include "core/mesh/mesh_import.h"
 #include "ui/app/session.h"
+#include "core/annotate/suggested_points.h"
 #include "core/annotate/units_record.h"
 #include "ui/document/mass_commands.h"
 #include "ui/document/units_commands.h"
@@ -110,6 +111,11 @@ void drawObjectPanel(Session& session) {
       if (ImGui::Selectable(c, category == c)) session.switchCategory(c);
     }
     ImGui::EndCombo();
+  }
+  if (const auto suggested = suggestedCategory(doc->labels())) {
+    // A rejected object's points are its likeliest category's: one key takes them.
+    if (ImGui::Button(("take suggested: " + *suggested + " (C)").c_str(), ImVec2(-1, 0)))
+      session.confirmSuggestedCategory();
   }
   if (!session.predictionNote().empty()) {
     ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(0.95f, 0.75f, 0.35f, 1.0f));

@@ -8,6 +8,7 @@
 
 #include "core/annotate/annotation_fingerprint.h"
 #include "core/annotate/category_evidence.h"
+#include "core/annotate/suggested_points.h"
 #include "core/common/error.h"
 #include "core/dataset/dataset.h"
 #include "core/eval/evaluation.h"
@@ -265,11 +266,17 @@ TEST_F(AnnotateTest, TheEvidenceGateRejectsWhatTheCategorysModelsFindTooLittleOf
   EXPECT_EQ(rejected.category, "none");
   EXPECT_EQ(rejected.labels.object.category, "none");
   EXPECT_EQ(rejected.closestCategory, "stove");
-  EXPECT_TRUE(rejected.labels.affordances.empty());
   EXPECT_TRUE(rejected.predictions.empty());
+  // No hard gate: the stove's points stay, flagged as suggestions of "stove".
+  ASSERT_EQ(rejected.labels.affordances.size(), kept.labels.affordances.size());
+  for (const auto& a : rejected.labels.affordances) EXPECT_TRUE(isSuggestion(a));
+  EXPECT_EQ(suggestedCategory(rejected.labels), "stove");
   const auto& prediction = rejected.labels.extra.at("prediction");
   EXPECT_EQ(prediction.at("rejected_by"), "evidence");
   EXPECT_EQ(prediction.at("closest_category"), "stove");
+  annotate.suggestions = false;  // as before: no points
+  EXPECT_TRUE(run().labels.affordances.empty());
+  annotate.suggestions = true;
 
   // A classifier sure of its answer (at or above the gate's ceiling) is not second-guessed either;
   // below it, the models are asked again.
@@ -328,7 +335,7 @@ TEST(AnnotationFingerprintTest, EveryPassSwitchChangesTheOptionsHash) {
   // A batch re-annotates an object whose labels were written with other options: switching any
   // pass must change the hash it compares.
   const AnnotateOptions defaults;
-  std::vector<AnnotateOptions> switched(7, defaults);
+  std::vector<AnnotateOptions> switched(8, defaults);
   switched[0].printedMarks = false;
   switched[1].mirrorPairs = false;
   switched[2].anchoredPairs = false;
@@ -336,9 +343,10 @@ TEST(AnnotationFingerprintTest, EveryPassSwitchChangesTheOptionsHash) {
   switched[4].spoutOutlets = false;
   switched[5].partOwnership = false;
   switched[6].spoutControls = false;
+  switched[7].suggestions = false;
   std::set<std::string> hashes{annotateOptionsHash(defaults)};
   for (const auto& options : switched) hashes.insert(annotateOptionsHash(options));
-  EXPECT_EQ(hashes.size(), 8u);
+  EXPECT_EQ(hashes.size(), 9u);
   EXPECT_EQ(annotateOptionsHash(defaults), annotateOptionsHash(AnnotateOptions{}));
 }
 

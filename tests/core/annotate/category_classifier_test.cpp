@@ -285,6 +285,7 @@ TEST(CategoryClassifier, AnnotateWritesNoneAndNoPointsForARejectedObject) {
   options.features.resolution = 32;
   options.features.views = 12;
   options.features.renderSize = 32;
+  options.suggestions = false;  // the card-only models cannot predict suggestions
   const auto r = annotateMeshFile(dir / "mesh.obj", "d", set, options, dir);
   EXPECT_TRUE(r.rejected);
   EXPECT_EQ(r.category, "none");

@@ -1,0 +1,77 @@
+// A rejected object's suggested points in the GUI session: C takes the suggested category with
+// them (one undoable step), A keeps "none" and drops them; the replayed curator's plan does the
+// same.
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+#include "core/annotate/suggested_points.h"
+#include "core/curation/curation_plan.h"
+#include "support/test_paths.h"
+#include "ui/app/session.h"
+
+namespace sagrid::ui {
+namespace {
+namespace fs = std::filesystem;
+
+fs::path rejectedStove(const fs::path& dir) {
+  fs::create_directories(dir);
+  std::ofstream(dir / "mesh.obj") << "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3\nf 1 3 4\n";
+  ObjectLabels labels;
+  labels.object.id = "stove";
+  labels.object.mesh = "mesh.obj";
+  labels.object.category = "none";
+  labels.object.up = "z";
+  AffordancePoint p;
+  p.type = "heatsource";
+  p.position = {0.5f, 0.5f, 0.0f};
+  labels.affordances = {p, p};
+  labels.affordances[1].type = "togglebutton";
+  markSuggestions(labels, "stove");
+  writeLabels(dir / "labels.json", labels);
+  return dir / "labels.json";
+}
+
+TEST(Suggestions, CTakesTheSuggestedCategoryWithItsPointsAndUndoGivesThemBack) {
+  const fs::path labels = rejectedStove(test::freshTempDir() / "stove");
+  Session session;
+  session.autoPredict = false;
+  session.openPaths({labels.parent_path()});
+  session.confirmSuggestedCategory();
+  const ObjectLabels taken = readLabels(labels);
+  EXPECT_EQ(taken.object.category, "stove");
+  ASSERT_EQ(taken.affordances.size(), 2u);
+  EXPECT_FALSE(isSuggestion(taken.affordances[0]));
+  EXPECT_FALSE(suggestedCategory(taken));
+  session.undo();
+  EXPECT_EQ(readLabels(labels).object.category, "none");
+  EXPECT_TRUE(isSuggestion(readLabels(labels).affordances[0]));
+}
+
+TEST(Suggestions, AcceptingKeepsNoneAndDropsThem) {
+  const fs::path labels = rejectedStove(test::freshTempDir() / "stove");
+  Session session;
+  session.autoPredict = false;
+  session.openPaths({labels.parent_path()});
+  session.accept();
+  const ObjectLabels kept = readLabels(labels);
+  EXPECT_EQ(kept.object.category, "none");
+  EXPECT_TRUE(kept.affordances.empty());
+  EXPECT_EQ(kept.reviewState, ReviewState::Done);
+}
+
+TEST(Suggestions, TheCuratorsPlanTakesThemWithOneKeyOrLetsAcceptDropThem) {
+  const ObjectLabels opened = readLabels(rejectedStove(test::freshTempDir() / "stove"));
+  ObjectLabels stove;
+  stove.object.category = "stove";
+  stove.affordances = opened.affordances;
+  const auto take = curationPlan(opened, stove);
+  ASSERT_EQ(take.size(), 1u);
+  EXPECT_EQ(take[0].action, CurationAction::ConfirmCategory);
+  ObjectLabels none;
+  none.object.category = "none";
+  EXPECT_TRUE(curationPlan(opened, none).empty());
+}
+
+}  // namespace
+}  // namespace sagrid::ui
