@@ -43,7 +43,7 @@ void setupReplayCuration(CLI::App& root) {
     session.setPredictorLookup([&predictor](const sagrid::ui::AnnotationDocument& doc) { return predictor.jobFor(doc); });
     session.autoPredict = false;
     session.logErrors = true;
-    session.setCurationLog(o->log);
+    session.setCurationLog(o->log, /*replayed=*/true);
     session.openPaths(std::vector<fs::path>(o->paths.begin(), o->paths.end()));
     const fs::path truthDir = o->truth;
     const auto summary = sagrid::ui::replayCuration(

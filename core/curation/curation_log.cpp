@@ -67,11 +67,12 @@ std::string CurationLogWriter::record(const std::string& object, CurationAction 
   if (m_failed || m_path.empty()) return {};
   const double now =
       std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch()).count();
-  const nlohmann::json line{{"time", isoTime(now)},
+  nlohmann::json line{{"time", isoTime(now)},
                             {"seconds", std::round(now * 1000.0) / 1000.0},
                             {"object", object},
                             {"action", toString(action)},
                             {"detail", detail}};
+  if (m_replayed) line["replayed"] = true;
   std::ofstream out(m_path, std::ios::app | std::ios::binary);
   out << line.dump() << '\n';
   out.flush();
@@ -103,7 +104,8 @@ std::vector<CurationEvent> readCurationLog(const std::filesystem::path& path) {
     const double seconds = j["seconds"].get<double>();
     if (!std::isfinite(seconds)) throw FileError(path, where + " has a time that is not finite");
     events.push_back({seconds, j["object"].get<std::string>(), *action,
-                      j.contains("detail") && j["detail"].is_string() ? j["detail"].get<std::string>() : ""});
+                      j.contains("detail") && j["detail"].is_string() ? j["detail"].get<std::string>() : "",
+                      j.value("replayed", false)});
   }
   return events;
 }

@@ -39,6 +39,7 @@ struct CurationEvent {
   std::string object;  // the object's id (labels' object.id, else the mesh file's stem)
   CurationAction action = CurationAction::Open;
   std::string detail;  // e.g. the command's description
+  bool replayed = false;  // taken by `sagrid replay-curation`, not a person: its times are the machine's
 };
 
 // Appends events to a log file, one flushed line each, so a crash loses at most the line being
@@ -46,13 +47,15 @@ struct CurationEvent {
 // one warning returned to the caller; curation itself goes on.
 class CurationLogWriter {
  public:
-  explicit CurationLogWriter(std::filesystem::path path) : m_path(std::move(path)) {}
+  explicit CurationLogWriter(std::filesystem::path path, bool replayed = false)
+      : m_path(std::move(path)), m_replayed(replayed) {}
   // Returns an error message the first time a write fails, else empty.
   std::string record(const std::string& object, CurationAction action, const std::string& detail = "");
   const std::filesystem::path& path() const { return m_path; }
 
  private:
   std::filesystem::path m_path;
+  bool m_replayed = false;
   bool m_failed = false;
 };
 

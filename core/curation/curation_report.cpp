@@ -73,6 +73,8 @@ CurationReport curationReport(const std::vector<CurationEvent>& events, const Kl
   }
   CurationReport report;
   report.operators = ops;
+  report.replayed = !events.empty() && std::all_of(events.begin(), events.end(),
+                                                   [](const CurationEvent& e) { return e.replayed; });
   for (const std::string& id : order) {
     ObjectCuration& o = byObject[id];
     if (!finished[id] && o.edits == 0) continue;
@@ -106,6 +108,8 @@ std::string curationMarkdown(const CurationReport& report, std::size_t slowest) 
                 report.objects.size(), report.meanEdits, 100.0 * report.oneKeyShare, report.meanLoggedSeconds,
                 report.meanKlmSeconds, report.objectsPerHourLogged, report.objectsPerHourKlm);
   md += line;
+  if (report.replayed)
+    md += "Replayed by `sagrid replay-curation`: the logged times are the machine's; the KLM times are a person's.\n\n";
   md += "Actions:";
   for (const CurationAction a : allCurationActions()) {
     const auto it = report.actions.find(a);
@@ -149,6 +153,7 @@ nlohmann::json toJson(const CurationReport& report) {
           {"mean_klm_seconds", report.meanKlmSeconds},
           {"objects_per_hour_logged", report.objectsPerHourLogged},
           {"objects_per_hour_klm", report.objectsPerHourKlm},
+          {"replayed", report.replayed},
           {"klm_operators", {{"K", report.operators.keystroke}, {"P", report.operators.point},
                              {"B", report.operators.button}, {"M", report.operators.mental}}}};
 }

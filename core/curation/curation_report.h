@@ -49,6 +49,7 @@ struct CurationReport {
   double meanKlmSeconds = 0;
   double objectsPerHourLogged = 0;
   double objectsPerHourKlm = 0;
+  bool replayed = false;  // every event replayed: the logged times are the machine's, not a person's
 };
 
 // Objects the log shows being finished (accept-all or skip) or edited; objects only opened and

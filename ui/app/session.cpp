@@ -155,9 +155,9 @@ void Session::redo() {
   updateQueueState();
 }
 
-void Session::setCurationLog(const fs::path& path) {
+void Session::setCurationLog(const fs::path& path, bool replayed) {
   if (path.empty()) m_curationLog.reset();
-  else m_curationLog.emplace(path);
+  else m_curationLog.emplace(path, replayed);
 }
 
 void Session::logAction(CurationAction action, const std::string& detail) {

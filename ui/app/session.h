@@ -75,7 +75,7 @@ class Session {
 
   // Curation log (issue 41): every curator action of this session, appended as JSON lines to
   // `path` (the GUI: curation.jsonl beside the dataset). Empty: no log.
-  void setCurationLog(const std::filesystem::path& path);
+  void setCurationLog(const std::filesystem::path& path, bool replayed = false);
   const std::optional<CurationLogWriter>& curationLog() const { return m_curationLog; }
   // An orbit, pan, zoom or close-up: logged as one "look" per gesture (repeats within a second
   // of the last, like the steps of a wheel or held arrow key, count once).

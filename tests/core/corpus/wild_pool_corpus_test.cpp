@@ -108,3 +108,28 @@ TEST(WildPoolCorpus, TheSplitNamesEachRepositoryOnce) {
 
 }  // namespace
 }  // namespace sagrid
+
+namespace sagrid {
+namespace {
+
+// The shipped wild labels against the pool itself (skipped where ../shared is absent): every
+// object curated, every sha256 matching its mesh, every repository placed by the split, and the
+// counts the dataset README states.
+TEST(WildPoolCorpus, TheShippedLabelsCoverThePoolExactly) {
+  const fs::path pool = test::sharedDir() / "data" / "wild-pool";
+  if (!fs::is_directory(pool)) GTEST_SKIP() << "no " << pool;
+  WildCorpusOptions options;
+  options.pool = pool;
+  options.out = test::freshTempDir() / "wild";
+  options.labelsDir = fs::path(SAGRID_SOURCE_DIR) / "resources" / "datasets" / "wild";
+  const WildCorpusSummary summary = buildWildCorpus(options);
+  EXPECT_TRUE(summary.warnings.empty()) << summary.warnings.front();
+  EXPECT_EQ(summary.countsByDataset.count("unlabelled") ? summary.countsByDataset.at("unlabelled") : 0, 0);
+  EXPECT_EQ(summary.countsByCategory.at("stove"), 12);
+  EXPECT_EQ(summary.countsByCategory.at("sink"), 18);
+  EXPECT_EQ(summary.countsByCategory.at("none"), 51);
+  EXPECT_EQ(readDataset(options.out / "wild-train").size() + readDataset(options.out / "wild-val").size(), 81u);
+}
+
+}  // namespace
+}  // namespace sagrid

@@ -64,6 +64,17 @@ TEST(CurationReport, EditsOneKeyLoggedTimeAndTheKeystrokeModel) {
   EXPECT_NEAR(report.objectsPerHourKlm, 3600.0 / ((a.klmSeconds + b.klmSeconds) / 2), 1e-9);
   EXPECT_THAT(curationMarkdown(report), ::testing::HasSubstr("| 2 | 1.00 | 50.0 % |"));
   EXPECT_EQ(toJson(report)["objects"][1]["actions"]["drag"], 1);
+  EXPECT_FALSE(report.replayed);
+}
+
+TEST(CurationReport, AReplayedLogSaysItsTimesAreTheMachines) {
+  const auto path = test::freshTempDir() / "replayed.jsonl";
+  CurationLogWriter writer(path, /*replayed=*/true);
+  writer.record("a", CurationAction::Open);
+  writer.record("a", CurationAction::AcceptAll);
+  const CurationReport report = curationReport(readCurationLog(path));
+  EXPECT_TRUE(report.replayed);
+  EXPECT_THAT(curationMarkdown(report), ::testing::HasSubstr("the logged times are the machine's"));
 }
 
 }  // namespace
