@@ -29,6 +29,11 @@ std::uint32_t u32At(std::string_view b, std::size_t at) {
   return v;
 }
 
+// What one buffer view may decode to and one accessor may hold: far beyond any appliance mesh,
+// short of what a hostile count would make us allocate.
+constexpr std::size_t kMaxDecodedViewBytes = std::size_t{1} << 29;  // 512 MiB
+constexpr std::size_t kMaxAccessorValues = std::size_t{1} << 26;    // 512 MiB of doubles
+
 [[noreturn]] void fail(const GltfAsset& asset, const std::string& problem) {
   throw FileError(asset.path, problem);
 }
@@ -94,7 +99,7 @@ std::string decodeMeshoptView(const GltfAsset& asset, const json& ext, const std
   if (offset > source.size() || length > source.size() - offset) {
     fail(asset, ctx + " lies outside buffer " + std::to_string(buffer) + " (truncated?)");
   }
-  if (stride == 0 || stride > 256 || count > (std::size_t{1} << 28)) {
+  if (stride == 0 || stride > 256 || count > kMaxDecodedViewBytes / stride) {
     fail(asset, ctx + " has an implausible byteStride " + std::to_string(stride) + " or count " + std::to_string(count));
   }
   const std::string mode = ext.value("mode", std::string("ATTRIBUTES"));
@@ -148,11 +153,10 @@ double componentValue(const char* at, int componentType, bool normalized) {
   }
 }
 
-// Reads `count` elements of `components` values each from `bytes` at `offset` with `stride`.
-void readElements(const GltfAsset& asset, const std::string& bytes, std::size_t offset,
-                  std::size_t stride, std::size_t count, int components, int componentType,
-                  bool normalized, const std::string& where, double* out) {
-  const std::size_t elementSize = componentSize(componentType) * static_cast<std::size_t>(components);
+// Fails unless `count` elements of `elementSize` bytes at `offset` with `stride` lie in `bytes`
+// (checked before anything is allocated for them).
+void requireElementsFit(const GltfAsset& asset, const std::string& bytes, std::size_t offset, std::size_t stride,
+                        std::size_t count, std::size_t elementSize, const std::string& where) {
   if (count == 0) return;
   if (offset > bytes.size() || (count - 1) > (bytes.size() - offset) / std::max<std::size_t>(stride, 1) ||
       offset + (count - 1) * stride + elementSize > bytes.size()) {
@@ -160,6 +164,14 @@ void readElements(const GltfAsset& asset, const std::string& bytes, std::size_t 
                     " elements of " + std::to_string(elementSize) + " bytes from byte " +
                     std::to_string(offset) + " of " + std::to_string(bytes.size()) + ")");
   }
+}
+
+// Reads `count` elements of `components` values each from `bytes` at `offset` with `stride`.
+void readElements(const GltfAsset& asset, const std::string& bytes, std::size_t offset,
+                  std::size_t stride, std::size_t count, int components, int componentType,
+                  bool normalized, const std::string& where, double* out) {
+  const std::size_t elementSize = componentSize(componentType) * static_cast<std::size_t>(components);
+  requireElementsFit(asset, bytes, offset, stride, count, elementSize, where);
   const std::size_t size = componentSize(componentType);
   for (std::size_t e = 0; e < count; ++e) {
     const char* element = bytes.data() + offset + e * stride;
@@ -262,10 +274,10 @@ AccessorValues readAccessor(const GltfAsset& asset, std::size_t index) {
   const int componentType = static_cast<int>(requiredSize(asset, a, "componentType", where));
   if (result.components == 0) fail(asset, where + " has an unknown type");
   if (componentSize(componentType) == 0) fail(asset, where + " has unknown componentType " + std::to_string(componentType));
-  if (result.count > (std::size_t{1} << 28)) fail(asset, where + " declares an implausible count " + std::to_string(result.count));
+  if (result.count > kMaxAccessorValues / static_cast<std::size_t>(result.components))
+    fail(asset, where + " declares an implausible count " + std::to_string(result.count));
   const bool normalized = a.value("normalized", false);
   const std::size_t elementSize = componentSize(componentType) * static_cast<std::size_t>(result.components);
-  result.values.assign(result.count * result.components, 0.0);
   if (a.contains("bufferView")) {
     const std::size_t view = sizeField(asset, a, "bufferView", where);
     const std::string bytes = bufferViewBytes(asset, view);
@@ -275,13 +287,19 @@ AccessorValues readAccessor(const GltfAsset& asset, std::size_t index) {
       stride = sizeField(asset, v["extensions"]["EXT_meshopt_compression"], "byteStride", where, 0);
     }
     if (stride == 0) stride = elementSize;
-    readElements(asset, bytes, sizeField(asset, a, "byteOffset", where), stride, result.count,
-                 result.components, componentType, normalized, where, result.values.data());
+    const std::size_t offset = sizeField(asset, a, "byteOffset", where);
+    requireElementsFit(asset, bytes, offset, stride, result.count, elementSize, where);
+    result.values.assign(result.count * result.components, 0.0);
+    readElements(asset, bytes, offset, stride, result.count, result.components, componentType, normalized, where,
+                 result.values.data());
+  } else {
+    result.values.assign(result.count * result.components, 0.0);
   }
   if (a.contains("sparse")) {
     const json& sparse = a["sparse"];
     const std::string sw = where + " (sparse)";
     const std::size_t count = requiredSize(asset, sparse, "count", sw);
+    if (count > result.count) fail(asset, sw + " substitutes more elements than the accessor has");
     if (!sparse.contains("indices") || !sparse.contains("values")) fail(asset, sw + " lacks indices or values");
     const json& si = sparse["indices"];
     const json& sv = sparse["values"];

@@ -351,3 +351,18 @@ TEST(GltfPlain, APlainGltfIsLeftToAssimpUnchanged) {
 
 }  // namespace
 }  // namespace sagrid
+
+namespace sagrid {
+namespace {
+
+TEST(GltfPlain, AHostileCountIsRefusedBeforeAnythingIsAllocated) {
+  json d = baseDocument();
+  d["extensionsUsed"] = {"KHR_mesh_quantization"};
+  d["meshes"] = json::parse(R"([{"primitives": [{"attributes": {"POSITION": 0}}]}])");
+  d["accessors"] = json::array({{{"componentType", 5126}, {"count", 1u << 30}, {"type", "MAT4"}}});
+  EXPECT_THAT(test::importError(test::writeFile(test::freshTempDir() / "huge.gltf", d.dump())),
+              ::testing::HasSubstr("glTF accessor 0 declares an implausible count"));
+}
+
+}  // namespace
+}  // namespace sagrid
