@@ -75,6 +75,7 @@ sagrid::FeatureOptions featuresFor(const fs::path& modelsDir) {
 struct Options {
   std::vector<std::string> data, validate, gated;
   int folds = 5;
+  bool bySource = false;  // category cv: leave one source out
   std::string out, models, exclude, split, splitOut, up, cache;
   double threshold = -1, l2 = 1e-2, keep = 0.98, sureAbove = 0;
   int iterations = 20000;
@@ -279,6 +280,10 @@ void setupCategory(CLI::App& root) {
                  "times while they train")
       ->required();
   cv->add_option("--folds", o->folds, "Number of folds (default 5)")->check(CLI::Range(2, 1000));
+  cv->add_flag("--by-source", o->bySource,
+               "Leave one source out instead of --folds: each source of the validated objects "
+               "(a wild-pool repository, a Sweet Home 3D library, else the dataset folder) is a "
+               "fold, decided by a classifier that saw none of its objects");
   cv->add_option("--models", o->models,
                  "Models folder whose feature settings to use (default resources/models)");
   addTrainingFlags(cv, *o);
@@ -298,16 +303,17 @@ void setupCategory(CLI::App& root) {
     }
     // Each fold's classifier, then the shipped evidence gate (fitted on objects of the category
     // only: it never saw a distractor).
-    const auto ev = sagrid::crossValidateCategories(
-        always, validated, o->folds, trainingOptions(*o),
-        [](int k, int folds) { std::fprintf(stderr, "fold %d/%d: training\n", k + 1, folds); },
-        evidence ? sagrid::CategoryCheck(
-                       [&](const sagrid::CategorySample& s, const sagrid::CategoryDecision& d) {
-                         return evidence->gate(s, d);
-                       })
-                 : sagrid::CategoryCheck{});
-    std::cout << "# " << o->folds << "-fold cross-validation over " << validated.size()
-              << " objects\n\n"
+    const auto onFold = [](int k, int folds) { std::fprintf(stderr, "fold %d/%d: training\n", k + 1, folds); };
+    const auto check = evidence ? sagrid::CategoryCheck(
+                                      [&](const sagrid::CategorySample& s, const sagrid::CategoryDecision& d) {
+                                        return evidence->gate(s, d);
+                                      })
+                                : sagrid::CategoryCheck{};
+    const auto ev = o->bySource
+                        ? sagrid::crossValidateCategoriesBySource(always, validated, trainingOptions(*o), onFold, check)
+                        : sagrid::crossValidateCategories(always, validated, o->folds, trainingOptions(*o), onFold, check);
+    std::cout << "# " << (o->bySource ? std::string("leave-one-source-out") : std::to_string(o->folds) + "-fold")
+              << " cross-validation over " << validated.size() << " objects\n\n"
               << sagrid::categoryEvaluationTable(ev);
   });
 

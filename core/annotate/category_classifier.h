@@ -41,6 +41,7 @@ struct CategorySample {
   std::string id;
   std::string category;  // "stove", "sink", or anything else = distractor ("none")
   std::string group;     // where it came from (dataset folder, distractor kind), for reports
+  std::string source;    // its source for leave-one-source-out (core/dataset/object_source.h)
   std::vector<float> descriptor;
   double weight = 1.0;  // relative weight in training (few real objects among many generated)
   std::filesystem::path mesh;  // the object's mesh (the evidence gate runs the models on it)

@@ -1,5 +1,6 @@
 #include "core/annotate/category_cross_validation.h"
 
+#include <map>
 #include <set>
 
 #include "core/common/error.h"
@@ -15,6 +16,26 @@ void add(CategoryEvaluation& total, const CategoryEvaluation& part) {
   for (const auto& [truth, predicted] : part.confusion)
     for (const auto& [category, n] : predicted) total.confusion[truth][category] += n;
   total.misses.insert(total.misses.end(), part.misses.begin(), part.misses.end());
+}
+// Each fold k of `validated` (fold.at(id)) decided by a classifier trained without it.
+CategoryEvaluation crossValidate(const std::vector<CategorySample>& always, const std::vector<CategorySample>& validated,
+                                 const std::map<std::string, int>& fold, int folds,
+                                 const CategoryTrainingOptions& options, const std::function<void(int, int)>& onFold,
+                                 const CategoryCheck& check) {
+  CategoryEvaluation total;
+  for (int k = 0; k < folds; ++k) {
+    if (onFold) onFold(k, folds);
+    std::vector<CategorySample> train = always, held;
+    for (const auto& s : validated) (fold.at(s.id) == k ? held : train).push_back(s);
+    const auto classifier = CategoryClassifier::train(train, options);
+    add(total, evaluateCategories(
+                   [&](const CategorySample& s) {
+                     const CategoryDecision d = classifier.classify(s.descriptor);
+                     return check ? check(s, d) : d;
+                   },
+                   held));
+  }
+  return total;
 }
 }  // namespace
 
@@ -35,21 +56,27 @@ CategoryEvaluation crossValidateCategories(const std::vector<CategorySample>& al
       throw InvalidArgument("cross-validation: object id \"" + s.id + "\" appears twice");
     ids.push_back(s.id);
   }
-  const auto fold = assignFolds(ids, folds);
-  CategoryEvaluation total;
-  for (int k = 0; k < folds; ++k) {
-    if (onFold) onFold(k, folds);
-    std::vector<CategorySample> train = always, held;
-    for (const auto& s : validated) (fold.at(s.id) == k ? held : train).push_back(s);
-    const auto classifier = CategoryClassifier::train(train, options);
-    add(total, evaluateCategories(
-                   [&](const CategorySample& s) {
-                     const CategoryDecision d = classifier.classify(s.descriptor);
-                     return check ? check(s, d) : d;
-                   },
-                   held));
+  return crossValidate(always, validated, assignFolds(ids, folds), folds, options, onFold, check);
+}
+
+CategoryEvaluation crossValidateCategoriesBySource(const std::vector<CategorySample>& always,
+                                                   const std::vector<CategorySample>& validated,
+                                                   const CategoryTrainingOptions& options,
+                                                   const std::function<void(int, int)>& onFold,
+                                                   const CategoryCheck& check) {
+  std::map<std::string, int> sourceFold;
+  for (const auto& s : validated) sourceFold.emplace(s.source, 0);
+  if (sourceFold.size() < 2)
+    throw InvalidArgument("leave-one-source-out needs objects of at least 2 sources, got " +
+                          std::to_string(sourceFold.size()));
+  int k = 0;
+  for (auto& [source, fold] : sourceFold) fold = k++;
+  std::map<std::string, int> fold;
+  for (const auto& s : validated) {
+    if (!fold.emplace(s.id, sourceFold.at(s.source)).second)
+      throw InvalidArgument("cross-validation: object id \"" + s.id + "\" appears twice");
   }
-  return total;
+  return crossValidate(always, validated, fold, static_cast<int>(sourceFold.size()), options, onFold, check);
 }
 
 }  // namespace sagrid

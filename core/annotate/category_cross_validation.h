@@ -27,4 +27,12 @@ CategoryEvaluation crossValidateCategories(const std::vector<CategorySample>& al
                                            const std::function<void(int, int)>& onFold = {},
                                            const CategoryCheck& check = {});
 
+// Leave one source out: each source of `validated` (CategorySample::source) is a fold, decided by
+// a classifier that saw no object of it. Throws InvalidArgument for fewer than two sources.
+CategoryEvaluation crossValidateCategoriesBySource(const std::vector<CategorySample>& always,
+                                                   const std::vector<CategorySample>& validated,
+                                                   const CategoryTrainingOptions& options,
+                                                   const std::function<void(int, int)>& onFold = {},
+                                                   const CategoryCheck& check = {});
+
 }  // namespace sagrid

@@ -11,6 +11,7 @@
 #include "core/common/log.h"
 #include "core/common/sha256.h"
 #include "core/dataset/dataset.h"
+#include "core/dataset/object_source.h"
 #include "core/labels/labels.h"
 #include "core/mesh/mesh_import.h"
 
@@ -46,6 +47,7 @@ std::vector<CategorySample> collectCategorySamples(
       s.id = entry.id;
       s.category = entry.category.empty() ? labels.object.category : entry.category;
       s.group = folder;
+      s.source = objectSource(labels, entry.mesh, folder);
       const auto generator = labels.object.extra.find("generator");
       if (categoryClass(s.category) == kRejectedCategory && generator != labels.object.extra.end() &&
           generator->is_object() && generator->contains("kind"))

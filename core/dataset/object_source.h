@@ -1,0 +1,17 @@
+// Where a curated object comes from, for leave-one-source-out evaluation (objects of one source
+// look alike, so a split inside a source flatters): the repository of a wild-pool object, the
+// library of a Sweet Home 3D one, else the dataset folder it was read from.
+#pragma once
+
+#include <filesystem>
+#include <string>
+
+#include "core/labels/labels.h"
+
+namespace sagrid {
+
+// labels' object.provenance.repo, else the "repo" or "library" of a provenance.json beside the
+// mesh (the corpora write one), else `fallback`.
+std::string objectSource(const ObjectLabels& labels, const std::filesystem::path& mesh, const std::string& fallback);
+
+}  // namespace sagrid
