@@ -20,6 +20,8 @@
 #include "core/common/atomic_file.h"
 #include "core/curation/curation_report.h"
 #include "core/eval/evaluation_comparison.h"
+#include "core/eval/unit_guess_score.h"
+#include "core/labels/labels.h"
 
 namespace {
 namespace fs = std::filesystem;
@@ -39,7 +41,7 @@ void setupEval(CLI::App& root) {
     std::string models, out = "eval", cache, sweep, mode = "sparse", fitConfidence, fitCounts,
                         countObjective = "count";
     std::vector<std::string> only, compare;
-    std::string curation;
+    std::string curation, units, truth;
     double minutes = 2;
     int epochs = 0;
     sagrid::PassOptions passes;
@@ -50,6 +52,11 @@ void setupEval(CLI::App& root) {
                   "Labelled dataset (manifest.jsonl or object folders; its val/ split when it has "
                   "one); repeat it to evaluate several together (one report over their union, "
                   "e.g. --fit-confidence on generated and real objects)");
+  cmd->add_option("--units", o->units,
+                  "Instead of models: score the units guesses an `annotate --out` folder recorded "
+                  "against the curated units of --truth (<folder of the mesh>/labels.json); writes "
+                  "OUT/units.md");
+  cmd->add_option("--truth", o->truth, "With --units: the curated labels folder");
   cmd->add_option("--curation", o->curation,
                   "Instead of models: report curator throughput from a GUI curation log "
                   "(actions and edits per object, the one-key share, the slowest objects, time as "
@@ -90,6 +97,22 @@ void setupEval(CLI::App& root) {
       sagrid::writeFileAtomic(fs::path(o->out) / "curation.md", sagrid::curationMarkdown(report));
       sagrid::writeFileAtomic(fs::path(o->out) / "curation.json", sagrid::toJson(report).dump(2) + "\n");
       std::cout << sagrid::curationMarkdown(report);
+      return;
+    }
+    if (!o->units.empty()) {
+      if (o->truth.empty()) throw sagrid::InvalidArgument("eval --units needs --truth DIR");
+      std::vector<std::pair<sagrid::ObjectLabels, sagrid::ObjectLabels>> pairs;
+      for (const auto& entry : fs::directory_iterator(o->units)) {
+        const fs::path file = entry.path() / "labels.json";
+        if (!fs::is_regular_file(file)) continue;
+        sagrid::ObjectLabels predicted = sagrid::readLabels(file);
+        const fs::path truth = fs::path(o->truth) / fs::path(predicted.object.mesh).parent_path().filename() / "labels.json";
+        if (fs::is_regular_file(truth)) pairs.emplace_back(std::move(predicted), sagrid::readLabels(truth));
+      }
+      const std::string md = sagrid::unitGuessMarkdown(sagrid::scoreUnitGuesses(pairs));
+      fs::create_directories(o->out);
+      sagrid::writeFileAtomic(fs::path(o->out) / "units.md", md);
+      std::cout << md;
       return;
     }
     if (o->data.empty()) throw sagrid::InvalidArgument("eval: --data is required (or --curation LOG)");

@@ -8,10 +8,12 @@
 
 #include "app/command_registry.h"
 #include "core/common/error.h"
+#include "core/curation/prediction_seed.h"
 #include "core/labels/labels.h"
 #include "ui/app/curation_replay.h"
 #include "ui/app/model_predictor.h"
 #include "ui/app/session.h"
+#include "ui/document/review_queue.h"
 
 namespace {
 namespace fs = std::filesystem;
@@ -25,18 +27,26 @@ void setupReplayCuration(CLI::App& root) {
       "Changes the labels.json files of PATHS: run it on a copy.");
   struct Options {
     std::vector<std::string> paths;
-    std::string truth, log, models;
+    std::string truth, log, models, predictions;
     bool noRepredict = false;
   };
   auto o = std::make_shared<Options>();
   cmd->add_option("paths", o->paths, "Folders or mesh files, as for sagrid gui")->required();
   cmd->add_option("--truth", o->truth, "Folder of right labels, <id>/labels.json")->required();
   cmd->add_option("--curation-log", o->log, "Curation log to append to")->required();
+  cmd->add_option("--predictions", o->predictions,
+                  "An `annotate --out` folder: its labels are first written beside the meshes they "
+                  "describe (inside the first of PATHS), as the objects' starting point");
   cmd->add_option("--models", o->models, "Models that predict again after a category switch (default: the installed models)");
   cmd->add_flag("--no-repredict", o->noRepredict,
                 "A category switch only drops the old points (the GUI before it predicted again)");
   cmd->callback([o] {
     if (!fs::is_directory(o->truth)) throw sagrid::FileError(o->truth, "labels folder not found");
+    if (!o->predictions.empty()) {
+      const std::size_t seeded =
+          sagrid::seedPredictions(o->predictions, o->paths.front(), sagrid::ui::labelsPathFor);
+      std::printf("replay-curation: %zu objects start from the predictions in %s\n", seeded, o->predictions.c_str());
+    }
     sagrid::ui::Session session;
     sagrid::ui::ModelPredictor predictor(o->models.empty() ? sagrid::ui::ModelPredictor::defaultModelsDir()
                                                            : fs::path(o->models));

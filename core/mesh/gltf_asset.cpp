@@ -214,26 +214,36 @@ int accessorComponents(std::string_view type) {
   return 0;
 }
 
+namespace {
+// The JSON of a .glb or .gltf, and for a GLB its BIN chunk (nullopt when it has none).
+std::pair<json, std::optional<std::string_view>> gltfParts(std::string_view bytes, const fs::path& path) {
+  if (bytes.size() < 12 || u32At(bytes, 0) != kGlbMagic) return {parseJsonDocument(bytes, path), std::nullopt};
+  const std::size_t declared = std::min<std::size_t>(u32At(bytes, 8), bytes.size());
+  const std::size_t jsonLength = u32At(bytes, 12);
+  if (u32At(bytes, 16) != kJsonChunk || 20 + jsonLength > declared)
+    throw FileError(path, "binary glTF has no valid JSON chunk");
+  json document = parseJsonDocument(bytes.substr(20, jsonLength), path);
+  const std::size_t binAt = 20 + ((jsonLength + 3) & ~std::size_t{3});
+  if (binAt + 8 > declared || u32At(bytes, binAt + 4) != kBinChunk) return {std::move(document), std::nullopt};
+  const std::size_t length = u32At(bytes, binAt);
+  if (binAt + 8 + length > declared) throw FileError(path, "binary glTF's BIN chunk is truncated");
+  return {std::move(document), bytes.substr(binAt + 8, length)};
+}
+}  // namespace
+
+json readGltfDocument(std::string_view bytes, const fs::path& path) {
+  json document = gltfParts(bytes, path).first;
+  if (!document.is_object()) throw FileError(path, "glTF JSON is not an object");
+  return document;
+}
+
 GltfAsset readGltfAsset(std::string_view bytes, const fs::path& path) {
   GltfAsset asset;
   asset.path = path;
-  std::string binary;
-  bool hasBinary = false;
-  if (bytes.size() >= 12 && u32At(bytes, 0) == kGlbMagic) {
-    const std::size_t declared = std::min<std::size_t>(u32At(bytes, 8), bytes.size());
-    const std::size_t jsonLength = u32At(bytes, 12);
-    if (u32At(bytes, 16) != kJsonChunk || 20 + jsonLength > declared) fail(asset, "binary glTF has no valid JSON chunk");
-    asset.document = parseJsonDocument(bytes.substr(20, jsonLength), path);
-    const std::size_t binAt = 20 + ((jsonLength + 3) & ~std::size_t{3});
-    if (binAt + 8 <= declared && u32At(bytes, binAt + 4) == kBinChunk) {
-      const std::size_t length = u32At(bytes, binAt);
-      if (binAt + 8 + length > declared) fail(asset, "binary glTF's BIN chunk is truncated");
-      binary.assign(bytes.substr(binAt + 8, length));
-      hasBinary = true;
-    }
-  } else {
-    asset.document = parseJsonDocument(bytes, path);
-  }
+  auto [document, bin] = gltfParts(bytes, path);
+  asset.document = std::move(document);
+  const std::string binary = bin ? std::string(*bin) : std::string();
+  const bool hasBinary = bin.has_value();
   if (!asset.document.is_object()) fail(asset, "glTF JSON is not an object");
   const auto buffers = asset.document.find("buffers");
   if (buffers != asset.document.end()) {

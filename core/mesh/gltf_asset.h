@@ -28,6 +28,9 @@ struct GltfAsset {
 // whose file is missing or outside the mesh's folder, or that holds fewer bytes than it declares.
 GltfAsset readGltfAsset(std::string_view bytes, const std::filesystem::path& path);
 
+// The JSON document alone (no buffer read): what the extension checks need.
+nlohmann::json readGltfDocument(std::string_view bytes, const std::filesystem::path& path);
+
 // The bytes a buffer or image `uri` names: a data URI's, or a file's inside the mesh's folder
 // (percent-escapes decoded). nullopt when the file is missing. Throws FileError naming `where` for
 // a malformed data URI or a path that leaves the folder.

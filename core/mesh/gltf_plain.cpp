@@ -381,9 +381,13 @@ void dropRewrittenNames(json& document) {
 }  // namespace
 
 std::optional<std::string> plainGlbOf(std::string_view bytes, const fs::path& path) {
+  {
+    // Extensions first, from the JSON alone: a plain file's buffers are assimp's to read.
+    const json document = readGltfDocument(bytes, path);
+    requireReadableExtensions(document, path);
+    if (!needsRewrite(document)) return std::nullopt;
+  }
   const GltfAsset asset = readGltfAsset(bytes, path);
-  requireReadableExtensions(asset.document, path);
-  if (!needsRewrite(asset.document)) return std::nullopt;
   json document = asset.document;
   PlainGlbWriter writer;
   if (document.contains("meshes") && document["meshes"].is_array()) {

@@ -7,15 +7,15 @@ namespace fs = std::filesystem;
 
 fs::path objectFolderOf(const fs::path& meshPath) {
   const fs::path own = meshPath.parent_path().empty() ? fs::path(".") : meshPath.parent_path();
-  fs::path folder = own;
+  std::error_code ec;
+  fs::path folder = fs::absolute(own, ec).lexically_normal();
+  if (ec) return own;
   for (int level = 0; level < 3; ++level) {
-    std::error_code ec;
     for (const char* marker : {"labels.json", "provenance.json", "model.config", "model.sdf"}) {
-      if (fs::is_regular_file(folder / marker, ec)) return folder;
+      if (fs::is_regular_file(folder / marker, ec)) return level == 0 ? own : folder;
     }
-    const fs::path parent = fs::absolute(folder, ec).lexically_normal().parent_path();
-    if (ec || parent == fs::absolute(folder, ec).lexically_normal()) break;
-    folder = parent;
+    if (folder == folder.parent_path()) break;  // the root
+    folder = folder.parent_path();
   }
   return own;
 }

@@ -3,13 +3,13 @@
 #include <algorithm>
 #include <chrono>
 
+#include "core/annotate/suggested_points.h"
 #include "core/common/error.h"
 #include "core/common/log.h"
 #include "core/export/mjcf_export.h"
 #include "core/export/omnigibson_export.h"
 #include "core/export/training_set.h"
 #include "core/training/dataset_training.h"
-#include "core/annotate/suggested_points.h"
 #include "ui/document/category_commands.h"
 #include "ui/document/object_loader.h"
 #include "ui/document/point_commands.h"
@@ -176,7 +176,7 @@ void Session::noteLook(const std::string& what) {
 
 void Session::confirmSuggestedCategory() {
   if (!m_document || !suggestedCategory(m_document->labels())) return;
-  execute(std::make_unique<ConfirmSuggestionsCommand>());
+  execute(SettleSuggestionsCommand::confirm());
   m_predictionNote.clear();
   chooseNewPointType();
 }
@@ -198,7 +198,6 @@ void Session::switchCategory(const std::string& category) {
   execute(std::make_unique<CommandGroup>("Category " + category, std::move(steps)));
   m_predictionNote.clear();
   chooseNewPointType();
-  updateQueueState();
   if (allPredicted && autoPredict) runPrediction();
 }
 
@@ -209,7 +208,7 @@ void Session::accept() {
     return;
   }
   // Accepting a rejected object keeps "none": its suggested points go.
-  if (suggestedCategory(m_document->labels())) applyCommand(std::make_unique<DropSuggestionsCommand>(), false);
+  if (suggestedCategory(m_document->labels())) applyCommand(SettleSuggestionsCommand::drop(), false);
   auto all = makeAcceptAllCommand(m_document->labels());
   if (!all->empty()) applyCommand(std::move(all), false);
   logAction(CurationAction::AcceptAll);

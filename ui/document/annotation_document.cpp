@@ -93,15 +93,12 @@ void AnnotationDocument::changed() {
 
 void AnnotationDocument::setUnitGuess(const UnitGuess& guess) {
   recordUnitGuess(m_labels.object, guess);
-  m_metersPerUnit = static_cast<float>(sagrid::metersPerUnit(m_labels));
-  ++m_revision;
-  save();
+  changed();
 }
 
 void AnnotationDocument::setSuggestedCategory(const std::string& category) {
   m_labels.object.extra[kSuggestedCategoryField] = category;
-  ++m_revision;
-  save();
+  changed();
 }
 
 void AnnotationDocument::setReviewState(ReviewState state) {

@@ -5,6 +5,7 @@
 // with them (C), or keeps "none" and drops them (accepting the object).
 #pragma once
 
+#include <memory>
 #include <string>
 
 #include "core/annotate/suggested_points.h"
@@ -28,33 +29,34 @@ class SetCategoryCommand final : public Command {
   std::string m_before;
 };
 
-// Takes the suggested category: it becomes the object's and its points ordinary predictions.
-class ConfirmSuggestionsCommand final : public Command {
+// A rejected object's suggestions settled (core/annotate/suggested_points.h): `settle` is
+// confirmSuggestions (C: the suggested category becomes the object's, its points ordinary
+// predictions) or dropSuggestions (A on "none": the suggested points go). Undo restores them.
+class SettleSuggestionsCommand final : public Command {
  public:
+  using Settle = void (*)(ObjectLabels&);
+  static std::unique_ptr<SettleSuggestionsCommand> confirm() {
+    return std::make_unique<SettleSuggestionsCommand>(confirmSuggestions, "Take the suggested category",
+                                                      CurationAction::ConfirmCategory);
+  }
+  static std::unique_ptr<SettleSuggestionsCommand> drop() {
+    return std::make_unique<SettleSuggestionsCommand>(dropSuggestions, "Drop the suggested points",
+                                                      CurationAction::Delete);
+  }
+  SettleSuggestionsCommand(Settle settle, std::string description, CurationAction action)
+      : m_settle(settle), m_description(std::move(description)), m_action(action) {}
   void apply(ObjectLabels& labels) override {
     m_before = labels;
-    confirmSuggestions(labels);
+    m_settle(labels);
   }
   void revert(ObjectLabels& labels) override { labels = m_before; }
-  std::string description() const override { return "Take the suggested category"; }
-  CurationAction curationAction() const override { return CurationAction::ConfirmCategory; }
+  std::string description() const override { return m_description; }
+  CurationAction curationAction() const override { return m_action; }
 
  private:
-  ObjectLabels m_before;
-};
-
-// Keeps "none": the suggested points go.
-class DropSuggestionsCommand final : public Command {
- public:
-  void apply(ObjectLabels& labels) override {
-    m_before = labels;
-    dropSuggestions(labels);
-  }
-  void revert(ObjectLabels& labels) override { labels = m_before; }
-  std::string description() const override { return "Drop the suggested points"; }
-  CurationAction curationAction() const override { return CurationAction::Delete; }
-
- private:
+  Settle m_settle;
+  std::string m_description;
+  CurationAction m_action;
   ObjectLabels m_before;
 };
 

@@ -4,10 +4,10 @@
 #include <cstdio>
 #include <memory>
 
-#include "core/mesh/mesh_import.h"
-#include "ui/app/session.h"
 #include "core/annotate/suggested_points.h"
 #include "core/annotate/units_record.h"
+#include "core/mesh/mesh_import.h"
+#include "ui/app/session.h"
 #include "ui/document/mass_commands.h"
 #include "ui/document/units_commands.h"
 #include "ui/panels/panels.h"
