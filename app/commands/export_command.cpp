@@ -1,5 +1,5 @@
 // `sagrid export LABELS_OR_DIR --format omnigibson|mjcf --out DIR [--collision none|hull|decompose]
-// [--legacy-fluidsource] [--mesh-root DIR]`: simulator exports, headless.
+// [--legacy-fluidsource] [--no-controls] [--mesh-root DIR]`: simulator exports, headless.
 #include <CLI/CLI.hpp>
 #include <filesystem>
 #include <iostream>
@@ -18,7 +18,7 @@ void setupExport(CLI::App& root) {
   struct Options {
     std::string input, format, out, collision = "decompose", meshRoot;
     int maxParts = 32;
-    bool legacyFluidSource = false;
+    bool legacyFluidSource = false, noControls = false;
   };
   auto o = std::make_shared<Options>();
   cmd->add_option("input", o->input,
@@ -39,6 +39,10 @@ void setupExport(CLI::App& root) {
   cmd->add_flag("--legacy-fluidsource", o->legacyFluidSource,
                 "OmniGibson: write fluid outlets as 'fluidsource' (OmniGibson before the "
                 "'particlesource' rename)");
+  cmd->add_flag("--no-controls", o->noControls,
+                "Export toggle buttons as sites only, the body one rigid piece (by default each "
+                "knob, lever or button is a moving part on its joint: knob_<loc>_joint, "
+                "handle_joint; revolute or prismatic links in URDF)");
   cmd->add_option("--mesh-root", o->meshRoot,
                   "Folder the labels' object.mesh may lead into (e.g. the data folder of "
                   "`annotate --out` labels); by default a mesh must lie in the labels' folder");
@@ -48,6 +52,7 @@ void setupExport(CLI::App& root) {
     options.maxCollisionParts = o->maxParts;
     options.legacyFluidSource = o->legacyFluidSource;
     options.meshRoot = o->meshRoot;
+    options.articulatedControls = !o->noControls;
     // One line per stage on stderr: enough to see a large mesh is moving, quiet otherwise.
     auto lastStage = std::make_shared<std::string>();
     options.progress = [lastStage](float fraction, const std::string& stage) {

@@ -9,11 +9,13 @@
 #include "core/annotate/burner_caps_rule.h"
 #include "core/annotate/repeated_parts_pass.h"
 #include "core/annotate/touch_keys_pass.h"
+#include "core/controls/control_part.h"
 #include "core/features/printed_marks.h"
 #include "core/geometry/material_parts.h"
 #include "core/geometry/surface_scene.h"
 #include "core/grid/mesh_summary.h"
 #include "core/grid/normalization.h"
+#include "core/labels/labels.h"
 #include "core/mesh/mesh_import.h"
 
 namespace {
@@ -76,6 +78,33 @@ void listRoundFlatFamilies(const sagrid::Mesh& mesh) {
   }
 }
 
+// The control part of each toggle button point of a labels file, as the exports cut and move it.
+void listControls(const sagrid::Mesh& mesh, const std::string& labelsPath) {
+  const sagrid::ObjectLabels labels = sagrid::readLabels(labelsPath);
+  std::vector<Eigen::Vector3f> points;
+  for (const auto& point : labels.affordances)
+    if (point.type == "togglebutton") points.push_back(sagrid::fileToZUp(point.position, mesh.fileUp));
+  const sagrid::ControlParts controls = sagrid::findControlParts(mesh, points);
+  std::printf("controls: %zu toggle button points\n", points.size());
+  const Eigen::Matrix3f toFile = sagrid::fileToZUpRotation(mesh.fileUp).transpose();
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const auto& part = controls.parts[i];
+    std::printf("  control %zu: ", i + 1);
+    if (part) {
+      const Eigen::Vector3f axis = toFile * part->axis;
+      const Eigen::Vector3f pivot = sagrid::zUpToFile(part->pivot, mesh.fileUp);
+      std::printf("%s (%s), %zu triangles, axis (%.3f, %.3f, %.3f), pivot (%g, %g, %g), radius %g",
+                  sagrid::toString(part->motion), sagrid::toString(part->origin),
+                  part->triangles.size(), axis.x(), axis.y(), axis.z(), pivot.x(), pivot.y(),
+                  pivot.z(), part->radius);
+    } else {
+      std::printf("site only");
+    }
+    if (!controls.warnings[i].empty()) std::printf(" -- %s", controls.warnings[i].c_str());
+    std::printf("\n");
+  }
+}
+
 void setupInfo(CLI::App& root) {
   auto* cmd = root.add_subcommand(
       "info", "Import a mesh and report triangles, vertices, bounding box (z-up mesh frame), the "
@@ -84,6 +113,7 @@ void setupInfo(CLI::App& root) {
     std::string mesh, up;
     int resolution = sagrid::kDefaultGridResolution;
     bool json = false, marks = false, keys = false, parts = false, materialParts = false;
+    std::string controls;
   };
   auto o = std::make_shared<Options>();
   cmd->add_option("mesh", o->mesh, "Mesh file (.obj .gltf .glb .fbx .dae .ply .stl)")->required();
@@ -106,15 +136,20 @@ void setupInfo(CLI::App& root) {
                 "Also list, per material, the connected parts of its triangles with their box "
                 "centre in the file's frame and size: where zones, knobs and handles are drawn in "
                 "a material of their own on a fused body, these are the curator's candidates");
+  cmd->add_option("--controls", o->controls,
+                  "Also list, for each toggle button point of this labels.json, the control part "
+                  "the exports cut and move: knob, lever or button, where its part comes from "
+                  "(connected, material, grown, disc), its triangles, axis and pivot (file frame)");
   cmd->callback([o] {
     const auto summary = sagrid::summarizeMesh(o->mesh, sagrid::ImportOptions(sagrid::parseUpAxis(o->up), /*detect=*/true),
                                                o->resolution);
     if (o->json) std::cout << sagrid::summaryJson(summary).dump(2) << "\n";
     else std::cout << sagrid::formatSummary(summary);
-    if (!o->marks && !o->keys && !o->parts && !o->materialParts) return;
+    if (!o->marks && !o->keys && !o->parts && !o->materialParts && o->controls.empty()) return;
     const sagrid::ImportOptions import(summary.fileUp, /*detect=*/false);
     const sagrid::Mesh mesh = sagrid::importMesh(o->mesh, import);
     if (o->materialParts) listMaterialParts(mesh);
+    if (!o->controls.empty()) listControls(mesh, o->controls);
     if (o->marks) {
       const sagrid::PrintedMarks marks = sagrid::findPrintedMarks(mesh);
       listCircles("printed zones", marks.zones, mesh.fileUp);

@@ -104,12 +104,6 @@ std::string formatNumber(double value) {
   return buffer;
 }
 
-double jsonNumber(float value) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.7g", static_cast<double>(value));
-  return std::strtod(buffer, nullptr);
-}
-
 std::string formatVector(const Eigen::Vector3d& v) {
   return formatNumber(v.x()) + " " + formatNumber(v.y()) + " " + formatNumber(v.z());
 }

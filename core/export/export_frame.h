@@ -31,9 +31,6 @@ std::filesystem::path copyMeshWithDependencies(const std::filesystem::path& mesh
                                                const std::string& newName = "");
 // "%.6g"; throws Error for NaN or infinity (validation upstream must have caught them).
 std::string formatNumber(double value);
-// A float coordinate as the double JSON writes, rounded to 7 significant digits (what a float
-// holds), so 0.2f reads 0.2 and not 0.20000000298023224.
-double jsonNumber(float value);
 // "x y z" with formatNumber.
 std::string formatVector(const Eigen::Vector3d& v);
 

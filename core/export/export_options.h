@@ -38,6 +38,9 @@ struct ExportOptions {
   // it (annotate --out writes "../../data/x/mesh.glb"); empty: only inside the labels' folder.
   // The rule: core/dataset/labels_mesh.h.
   std::filesystem::path meshRoot;
+  // Toggle buttons as moving parts (hinged knobs and levers, sliding buttons: core/controls);
+  // false: sites only, the body one rigid piece (`--no-controls`).
+  bool articulatedControls = true;
 };
 
 }  // namespace sagrid

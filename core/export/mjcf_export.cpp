@@ -1,10 +1,12 @@
 #include "core/export/mjcf_export.h"
 
+#include <algorithm>
 #include <sstream>
 
 #include "core/common/atomic_file.h"
 #include "core/common/contained_paths.h"
 #include "core/export/export_frame.h"
+#include "core/export/mjcf_controls.h"
 #include "core/export/robocasa_sites.h"
 #include "core/export/simulator_geometry.h"
 #include "core/common/staged_folder.h"
@@ -23,15 +25,8 @@ namespace {
 
 constexpr double kMinRegionHalfSize = 0.0005;  // metres; MuJoCo refuses zero-sized boxes
 
-std::string rgbaFor(const std::string& type) {
-  if (type == "heatsource") return "1 0.4 0.1 0.6";
-  if (type == "fluidsource") return "0.2 0.6 1 0.6";
-  if (type == "togglebutton") return "0.3 0.9 0.35 0.6";
-  return "0.9 0.9 0.2 0.6";
-}
-
 void writeAssets(std::ostringstream& xml, const exportdetail::SimulatorGeometry& geometry,
-                 const fs::path& folder) {
+                 const std::vector<std::string>& controlBodies, const fs::path& folder) {
   fs::create_directories(folder / "meshes");
   xml << "  <asset>\n";
   for (const auto& part : geometry.visualParts) {
@@ -47,6 +42,7 @@ void writeAssets(std::ostringstream& xml, const exportdetail::SimulatorGeometry&
                     exportdetail::encodeBinaryStl(physics::toMesh(geometry.collisionParts[i])));
     xml << "    <mesh name=\"" << name << "\" file=\"meshes/" << name << ".stl\"/>\n";
   }
+  exportdetail::writeControlAssets(xml, geometry.controls, controlBodies, geometry.mesh, folder);
   xml << "  </asset>\n";
 }
 
@@ -76,21 +72,41 @@ void writeGeoms(std::ostringstream& xml, const exportdetail::SimulatorGeometry& 
       << "\" contype=\"0\" conaffinity=\"0\" group=\"3\" rgba=\"0 1 0 0\"/>\n";
 }
 
-void writeSites(std::ostringstream& xml, const ObjectLabels& labels,
-                const exportdetail::SimulatorGeometry& geometry) {
+// One site per point (robocasa_sites.h), the controls' recorded pairings passed on.
+std::vector<exportdetail::MjcfSite> objectSites(const ObjectLabels& labels,
+                                                const exportdetail::SimulatorGeometry& geometry,
+                                                std::vector<std::string>& warnings) {
   std::vector<exportdetail::SimulatorPoint> points;
   for (const auto& point : labels.affordances) {
     points.push_back({point.type, exportdetail::toSimulatorFrame(labels, point.position,
-                                                                 geometry.metersPerUnit)});
+                                                                 geometry.metersPerUnit), {}});
   }
-  for (const auto& site :
-       exportdetail::robocasaSites(points, geometry.bounds, labels.object.category)) {
-    xml << "      <site name=\"" << escapeXml(site.name) << "\" type=\"" << site.shape
-        << "\" pos=\"" << formatVector(site.position.cast<double>()) << "\" size=\""
-        << formatNumber(site.size.x());
-    if (site.shape == "cylinder") xml << " " << formatNumber(site.size.y());
-    xml << "\" rgba=\"" << rgbaFor(site.affordanceType) << "\" group=\"3\"/>\n";
+  for (const auto& control : geometry.controls) points[control.point].drives = control.drives;
+  return exportdetail::robocasaSites(points, geometry.bounds, labels.object.category, &warnings);
+}
+
+// Burners and other points' sites in "object", each control's site in its body, each water site
+// in its spout body.
+void writeBodies(std::ostringstream& xml, const exportdetail::SimulatorGeometry& geometry,
+                 const std::vector<exportdetail::MjcfSite>& sites,
+                 const std::vector<std::string>& controlBodies) {
+  std::vector<bool> inControl(sites.size(), false);
+  for (const auto& control : geometry.controls) inControl[control.point] = true;
+  for (std::size_t i = 0; i < sites.size(); ++i) {
+    if (!inControl[i] && sites[i].affordanceType != "fluidsource")
+      exportdetail::writeSite(xml, sites[i], "      ");
   }
+  const bool oneHandle =
+      std::none_of(sites.begin(), sites.end(), [](const auto& s) { return s.name == "handle_temp"; });
+  for (std::size_t c = 0; c < geometry.controls.size(); ++c) {
+    const auto& control = geometry.controls[c];
+    const std::string& body = controlBodies[c];
+    exportdetail::writeControlBody(
+        xml, control, body, sites[control.point],
+        exportdetail::controlJoints(control, body, oneHandle && body == "handle"));
+  }
+  for (const auto& site : sites)
+    if (site.affordanceType == "fluidsource") exportdetail::writeSpoutBody(xml, site);
 }
 
 }  // namespace
@@ -108,6 +124,9 @@ SimulatorExport exportMjcf(const ObjectLabels& labels, const fs::path& meshPath,
   SimulatorExport result;
   result.warnings = std::move(geometry.warnings);
   StagedFolder staged(outDir / folderName);
+  const std::vector<exportdetail::MjcfSite> sites = objectSites(labels, geometry, result.warnings);
+  std::vector<std::string> controlBodies;
+  for (const auto& control : geometry.controls) controlBodies.push_back(sites[control.point].name);
 
   std::ostringstream xml;
   xml << "<mujoco model=\"" << escapeXml(id) << "\">\n"
@@ -118,12 +137,16 @@ SimulatorExport exportMjcf(const ObjectLabels& labels, const fs::path& meshPath,
       << "    <default class=\"collision\"><geom type=\"mesh\" group=\"0\" "
          "rgba=\"0.5 0.5 0.5 1\"/></default>\n"
       << "  </default>\n";
-  writeAssets(xml, geometry, staged.path());
-  xml << "  <worldbody>\n    <body name=\"object\">\n";
+  writeAssets(xml, geometry, controlBodies, staged.path());
+  // RoboCasa's nesting: worldbody > body > body name="object" (its sites at ./body/body/site,
+  // its controls' joints at ./body/body/body/joint).
+  xml << "  <worldbody>\n  <body>\n    <body name=\"object\">\n";
   writeInertial(xml, geometry.mass);
   writeGeoms(xml, geometry);
-  writeSites(xml, labels, geometry);
-  xml << "    </body>\n  </worldbody>\n</mujoco>\n";
+  writeBodies(xml, geometry, sites, controlBodies);
+  xml << "    </body>\n  </body>\n  </worldbody>\n";
+  exportdetail::writeContactExclusions(xml, controlBodies);
+  xml << "</mujoco>\n";
   writeFileAtomic(staged.path() / (folderName + ".xml"), xml.str());
   staged.commit();
 
@@ -131,6 +154,8 @@ SimulatorExport exportMjcf(const ObjectLabels& labels, const fs::path& meshPath,
   result.mainFile = result.root / (folderName + ".xml");
   for (const auto& part : geometry.visualParts)
     result.visualTriangles += static_cast<int>(part.mesh.triangles.size());
+  for (const auto& control : geometry.controls)
+    result.visualTriangles += static_cast<int>(control.mesh.triangles.size());
   result.collisionParts = static_cast<int>(geometry.collisionParts.size());
   result.massKg = geometry.mass.mass;
   if (labels.affordances.empty())

@@ -5,6 +5,9 @@
 //    hull, or none (ExportOptions::collision);
 //  - the body's mass and inertia (core/physics estimate, or the curator's object.mass_kg);
 //  - RoboCasa's site names (robocasa_sites.h) and a `reg_main` box geom with the bounding box;
+//  - RoboCasa's nesting, worldbody > body > body name="object", with every toggle button's part a
+//    child body on its joint (knob_<loc>_joint, handle_joint, ...; mjcf_controls.h) and the
+//    water site in a spout body (ExportOptions::articulatedControls);
 //  - <compiler angle="radian"/>; everything in the body frame: z up, metres.
 // The folder is written beside its final place and renamed into it at the end.
 #pragma once

@@ -7,6 +7,7 @@
 #include "core/common/atomic_file.h"
 #include "core/common/contained_paths.h"
 #include "core/common/error.h"
+#include "core/common/json_number.h"
 #include "core/export/export_frame.h"
 #include "core/export/omnigibson_meta_links.h"
 #include "core/export/simulator_geometry.h"
@@ -152,7 +153,6 @@ SimulatorExport exportOmniGibson(const ObjectLabels& labels, const fs::path& mes
                   head + link.str() + metaLinksXml(metaLinks) + "</robot>\n");
 
   // misc/metadata.json as record_obj_metadata_from_urdf writes it, plus the meta links.
-  using exportdetail::jsonNumber;
   const Eigen::Vector3f size = geometry.bounds.sizes();
   const Eigen::Vector3f offset = geometry.bounds.center();
   nlohmann::json metadata = {

@@ -2,6 +2,7 @@
 
 #include <map>
 
+#include "core/common/json_number.h"
 #include "core/export/export_frame.h"
 #include "core/export/omnigibson_export.h"
 

@@ -1,5 +1,7 @@
 #include "core/export/robocasa_sites.h"
 
+#include "core/controls/control_pairing.h"
+
 #include <algorithm>
 #include <cctype>
 #include <cmath>
@@ -44,6 +46,48 @@ float burnerRadius(const std::vector<Eigen::Vector2f>& burners, std::size_t i,
   return std::clamp(radius, kMinBurnerRadius, kMaxBurnerRadius);
 }
 
+// Knob (point index) -> burner (index among the burners): the recorded pairing when every knob
+// has one and no burner is driven twice, else the layout's.
+std::map<std::size_t, std::size_t> knobBurners(const std::vector<SimulatorPoint>& points,
+                                               const std::vector<std::size_t>& knobs,
+                                               const std::vector<Eigen::Vector2f>& burners,
+                                               const std::vector<std::string>& locations,
+                                               std::vector<std::string>* warnings) {
+  std::map<std::size_t, std::size_t> paired;
+  bool recorded = !knobs.empty();
+  std::set<int> driven;
+  for (std::size_t k : knobs) {
+    const std::optional<int>& d = points[k].drives;
+    if (!d || *d >= static_cast<int>(burners.size()) || (*d >= 0 && !driven.insert(*d).second)) {
+      if (d && warnings)
+        warnings->push_back("knob point " + std::to_string(k + 1) + " drives heat source " +
+                            std::to_string(*d) + ", which is not there or driven twice; knobs "
+                            "paired by layout");
+      recorded = false;
+      break;
+    }
+  }
+  if (recorded) {
+    for (std::size_t k : knobs)
+      if (*points[k].drives >= 0) paired[k] = static_cast<std::size_t>(*points[k].drives);
+  } else {
+    std::vector<Eigen::Vector2f> knobXy;
+    for (std::size_t k : knobs) knobXy.push_back(points[k].position.head<2>());
+    const std::vector<int> drives = pairKnobsWithBurners(knobXy, burners);
+    for (std::size_t n = 0; n < knobs.size(); ++n)
+      if (drives[n] >= 0) paired[knobs[n]] = static_cast<std::size_t>(drives[n]);
+  }
+  if (warnings) {
+    std::set<std::size_t> lit;
+    for (const auto& entry : paired) lit.insert(entry.second);
+    for (std::size_t b = 0; b < burners.size(); ++b)
+      if (!lit.count(b))
+        warnings->push_back("burner_on_" + locations[b] +
+                            " has no knob: RoboCasa never lights it (add or pair a knob)");
+  }
+  return paired;
+}
+
 }  // namespace
 
 std::vector<std::string> burnerLocations(const std::vector<Eigen::Vector2f>& burners) {
@@ -74,7 +118,8 @@ std::vector<std::string> burnerLocations(const std::vector<Eigen::Vector2f>& bur
 
 std::vector<MjcfSite> robocasaSites(const std::vector<SimulatorPoint>& points,
                                     const Eigen::AlignedBox3f& bounds,
-                                    const std::string& category) {
+                                    const std::string& category,
+                                    std::vector<std::string>* warnings) {
   std::vector<Eigen::Vector2f> burners;
   std::vector<std::size_t> burnerIndex;
   for (std::size_t i = 0; i < points.size(); ++i) {
@@ -88,29 +133,22 @@ std::vector<MjcfSite> robocasaSites(const std::vector<SimulatorPoint>& points,
       category == "sink" || std::any_of(points.begin(), points.end(),
                                         [](const auto& p) { return p.type == "fluidsource"; });
 
-  // Knobs take the location of the burner nearest along x (knobs usually sit in a row below
-  // their burners), each burner once while unclaimed burners remain.
   std::vector<std::size_t> knobs;
   for (std::size_t i = 0; i < points.size(); ++i)
     if (points[i].type == "togglebutton") knobs.push_back(i);
-  std::map<std::size_t, std::string> knobLocation;
-  std::set<std::size_t> claimed;
-  for (std::size_t k : knobs) {
-    float best = std::numeric_limits<float>::infinity();
-    std::size_t bestBurner = burners.size();
-    for (int pass = 0; pass < 2 && bestBurner == burners.size(); ++pass) {
-      for (std::size_t b = 0; b < burners.size(); ++b) {
-        if (pass == 0 && claimed.count(b)) continue;
-        const float d = std::abs(burners[b].x() - points[k].position.x());
-        if (d < best) best = d, bestBurner = b;
-      }
-    }
-    if (bestBurner < burners.size()) {
-      claimed.insert(bestBurner);
-      knobLocation[k] = locations[bestBurner];
-    }
+  std::map<std::size_t, std::string> toggleName;
+  if (hasWater) {
+    std::vector<std::size_t> fromLeft = knobs;
+    std::stable_sort(fromLeft.begin(), fromLeft.end(), [&](std::size_t a, std::size_t b) {
+      return points[a].position.x() < points[b].position.x();
+    });
+    for (std::size_t n = 0; n < fromLeft.size(); ++n)
+      toggleName[fromLeft[n]] = n == 0 ? "handle" : (n == 1 ? "handle_temp" : "handle_extra");
+  } else if (!burners.empty()) {
+    for (std::size_t k = 0; k < knobs.size(); ++k) toggleName[knobs[k]] = "knob_dummy";
+    for (const auto& [knob, burner] : knobBurners(points, knobs, burners, locations, warnings))
+      toggleName[knob] = "knob_" + locations[burner];
   }
-
   std::set<std::string> taken;
   std::map<std::string, int> perType;
   std::vector<MjcfSite> sites;
@@ -128,10 +166,8 @@ std::vector<MjcfSite> robocasaSites(const std::vector<SimulatorPoint>& points,
       site.shape = "cylinder";
       site.size = {kWaterRadius, kWaterHalfHeight};
       site.position.z() -= kWaterHalfHeight;  // the stream hangs below the outlet
-    } else if (p.type == "togglebutton" && knobLocation.count(i)) {
-      site.name = uniqueName("knob_" + knobLocation[i], taken);
-    } else if (p.type == "togglebutton" && hasWater) {
-      site.name = uniqueName("handle", taken);
+    } else if (p.type == "togglebutton" && toggleName.count(i)) {
+      site.name = uniqueName(toggleName[i], taken);
     } else {
       std::string base;
       for (unsigned char c : p.type) base.push_back(std::isalnum(c) ? std::tolower(c) : '_');

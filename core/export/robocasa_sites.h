@@ -9,6 +9,7 @@
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -17,6 +18,7 @@ namespace sagrid::exportdetail {
 struct SimulatorPoint {
   std::string type;          // affordance type, e.g. "heatsource"
   Eigen::Vector3f position;  // z up, metres
+  std::optional<int> drives;  // a knob's recorded burner: the index among the heat sources
 };
 
 struct MjcfSite {
@@ -34,10 +36,14 @@ inline constexpr float kWaterHalfHeight = 0.16f;
 // when a layout has more burners than RoboCasa has names.
 std::vector<std::string> burnerLocations(const std::vector<Eigen::Vector2f>& burners);
 
-// One site per point, in input order. `bounds` (metres) sizes a lone burner; a "sink" category
-// (or any object with a fluid outlet) names its toggles `handle`.
+// One site per point, in input order. `bounds` (metres) sizes a lone burner. A stove's knobs are
+// `knob_<loc>` after the burner each drives (the recorded pairing when every knob has a valid
+// one, else core/controls/control_pairing.h), knobs driving nothing `knob_dummy`; a "sink"
+// category (or any object with a fluid outlet) names its toggles from the left `handle`,
+// `handle_temp`, then `handle_extra`. Problems with the pairing go to `warnings` when given.
 std::vector<MjcfSite> robocasaSites(const std::vector<SimulatorPoint>& points,
                                     const Eigen::AlignedBox3f& bounds,
-                                    const std::string& category = "");
+                                    const std::string& category = "",
+                                    std::vector<std::string>* warnings = nullptr);
 
 }  // namespace sagrid::exportdetail

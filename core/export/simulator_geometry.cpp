@@ -7,6 +7,7 @@
 #include "core/export/export_frame.h"
 #include "core/export/export_units.h"
 #include "core/mesh/mesh_import.h"
+#include "core/mesh/triangle_subset.h"
 #include "core/physics/convex_decomposition.h"
 
 namespace sagrid::exportdetail {
@@ -79,9 +80,16 @@ SimulatorGeometry buildSimulatorGeometry(const ObjectLabels& labels, const fs::p
                     "units (object.units / object.meters_per_unit in labels.json)");
   }
 
+  geometry.body = geometry.mesh;
+  if (options.articulatedControls) {
+    ControlSplit split =
+        splitControls(labels, geometry.mesh, units.metersPerUnit, shownLabels, geometry.warnings);
+    geometry.controls = std::move(split.controls);
+    if (!geometry.controls.empty()) geometry.body = triangleSubset(geometry.mesh, split.body);
+  }
   std::vector<std::string> shapeWarnings;  // about the mesh: named after it below
-  geometry.visualParts = visualParts(geometry.mesh, shapeWarnings);
-  geometry.collisionParts = collisionParts(geometry.mesh, options, shapeWarnings);
+  geometry.visualParts = visualParts(geometry.body, shapeWarnings);
+  geometry.collisionParts = collisionParts(geometry.body, options, shapeWarnings);
   if (options.progress) options.progress(0.9f, "mass");
   physics::MassOptions massOptions;
   massOptions.category = labels.object.category;

@@ -1,14 +1,16 @@
 // Everything a simulator export writes about an object's shape, computed once: the mesh loaded
 // through the same importer as every other command (import before export: what cannot be loaded
-// is refused), stood up (z up) and scaled to metres; its visual parts; its collision parts
-// (none, one hull or the convex decomposition); its mass and inertia (the curator's mass from
-// labels when set); and the warnings a user should see.
+// is refused), stood up (z up) and scaled to metres; its moving control parts (control_geometry.h)
+// and the body less them; the body's visual parts and collision parts (none, one hull or the
+// convex decomposition); the whole object's mass and inertia (the curator's mass from labels when
+// set); and the warnings a user should see.
 #pragma once
 
 #include <filesystem>
 #include <string>
 #include <vector>
 
+#include "core/export/control_geometry.h"
 #include "core/export/export_options.h"
 #include "core/export/visual_parts.h"
 #include "core/labels/labels.h"
@@ -19,7 +21,9 @@
 namespace sagrid::exportdetail {
 
 struct SimulatorGeometry {
-  Mesh mesh;  // z up, metres
+  Mesh mesh;  // z up, metres; the whole object
+  Mesh body;  // the mesh less its moving control parts (the visual and collision geometry)
+  std::vector<ControlGeometry> controls;  // ExportOptions::articulatedControls
   Eigen::AlignedBox3f bounds;
   double metersPerUnit = 1.0;
   std::vector<MeshPart> visualParts;

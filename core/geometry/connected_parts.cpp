@@ -4,100 +4,31 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <cstring>
 #include <limits>
-#include <numeric>
 #include <unordered_map>
 
+#include "core/geometry/triangle_components.h"
 #include "core/mesh/mesh.h"
 
 namespace sagrid {
 
-namespace {
-
-// The same position, bit for bit (0 and -0 apart, which a mesh's seams do not produce).
-struct PositionKey {
-  std::uint32_t x, y, z;
-  bool operator==(const PositionKey& o) const { return x == o.x && y == o.y && z == o.z; }
-};
-struct PositionKeyHash {
-  std::size_t operator()(const PositionKey& k) const {
-    std::uint64_t h = k.x;
-    h = h * 0x9E3779B97F4A7C15ull ^ k.y;
-    h = h * 0x9E3779B97F4A7C15ull ^ k.z;
-    return static_cast<std::size_t>(h ^ (h >> 29));
-  }
-};
-PositionKey keyOf(const Eigen::Vector3f& p) {
-  PositionKey k{};
-  std::memcpy(&k.x, &p.x(), sizeof(float));
-  std::memcpy(&k.y, &p.y(), sizeof(float));
-  std::memcpy(&k.z, &p.z(), sizeof(float));
-  return k;
-}
-
-class UnionFind {
- public:
-  explicit UnionFind(std::size_t n) : m_parent(n) {
-    std::iota(m_parent.begin(), m_parent.end(), std::size_t{0});
-  }
-  std::size_t find(std::size_t a) {
-    while (m_parent[a] != a) a = m_parent[a] = m_parent[m_parent[a]];
-    return a;
-  }
-  void join(std::size_t a, std::size_t b) {
-    a = find(a), b = find(b);
-    if (a != b) m_parent[std::max(a, b)] = std::min(a, b);
-  }
-
- private:
-  std::vector<std::size_t> m_parent;
-};
-
-bool validTriangle(const Eigen::Vector3i& t, std::size_t vertices) {
-  for (int c = 0; c < 3; ++c)
-    if (t[c] < 0 || static_cast<std::size_t>(t[c]) >= vertices) return false;
-  return true;
-}
-
-}  // namespace
-
 std::vector<ConnectedPart> connectedParts(const Mesh& mesh) {
-  // Weld: one id per distinct position.
-  std::unordered_map<PositionKey, std::size_t, PositionKeyHash> ids;
-  std::vector<std::size_t> welded(mesh.positions.size());
-  std::vector<Eigen::Vector3f> distinct;
-  for (std::size_t v = 0; v < mesh.positions.size(); ++v) {
-    const auto [it, added] = ids.emplace(keyOf(mesh.positions[v]), distinct.size());
-    if (added) distinct.push_back(mesh.positions[v]);
-    welded[v] = it->second;
-  }
-  UnionFind sets(distinct.size());
-  for (const auto& t : mesh.triangles) {
-    if (!validTriangle(t, mesh.positions.size())) continue;
-    sets.join(welded[static_cast<std::size_t>(t[0])], welded[static_cast<std::size_t>(t[1])]);
-    sets.join(welded[static_cast<std::size_t>(t[0])], welded[static_cast<std::size_t>(t[2])]);
-  }
-  // One part per root that a triangle reaches, in the order of the first triangle.
-  std::unordered_map<std::size_t, std::size_t> partOfRoot;
-  std::vector<ConnectedPart> parts;
-  std::vector<std::size_t> partOfVertex(distinct.size(), SIZE_MAX);
-  for (const auto& t : mesh.triangles) {
-    if (!validTriangle(t, mesh.positions.size())) continue;
-    const std::size_t root = sets.find(welded[static_cast<std::size_t>(t[0])]);
-    const auto [it, added] = partOfRoot.emplace(root, parts.size());
-    if (added) parts.emplace_back();
-    ConnectedPart& part = parts[it->second];
-    const Eigen::Vector3f& a = mesh.positions[static_cast<std::size_t>(t[0])];
-    const Eigen::Vector3f& b = mesh.positions[static_cast<std::size_t>(t[1])];
-    const Eigen::Vector3f& c = mesh.positions[static_cast<std::size_t>(t[2])];
+  const TriangleComponents components = triangleComponents(mesh);
+  std::vector<ConnectedPart> parts(static_cast<std::size_t>(components.count));
+  std::vector<std::size_t> partOfVertex(components.weldedPositions.size(), SIZE_MAX);
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+    const int component = components.ofTriangle[t];
+    if (component < 0) continue;
+    ConnectedPart& part = parts[static_cast<std::size_t>(component)];
+    const Eigen::Vector3f& a = mesh.positions[static_cast<std::size_t>(mesh.triangles[t][0])];
+    const Eigen::Vector3f& b = mesh.positions[static_cast<std::size_t>(mesh.triangles[t][1])];
+    const Eigen::Vector3f& c = mesh.positions[static_cast<std::size_t>(mesh.triangles[t][2])];
     part.triangles += 1;
     part.area += 0.5f * (b - a).cross(c - a).norm();
-    for (int corner = 0; corner < 3; ++corner) {
-      const std::size_t w = welded[static_cast<std::size_t>(t[corner])];
-      partOfVertex[w] = it->second;
-    }
+    for (int corner : components.weldedCorners[t])
+      partOfVertex[static_cast<std::size_t>(corner)] = static_cast<std::size_t>(component);
   }
+  const std::vector<Eigen::Vector3f>& distinct = components.weldedPositions;
   // Centroid, box and principal spread of each part's distinct vertices.
   std::vector<Eigen::Vector3d> sum(parts.size(), Eigen::Vector3d::Zero());
   std::vector<Eigen::Matrix3d> outer(parts.size(), Eigen::Matrix3d::Zero());

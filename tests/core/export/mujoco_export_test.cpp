@@ -12,6 +12,8 @@
 
 #include <mujoco/mujoco.h>
 
+#include "mujoco_model.h"
+
 #include <cstring>
 #include <iostream>
 #include <memory>
@@ -32,14 +34,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-using ModelPtr = std::unique_ptr<mjModel, decltype(&mj_deleteModel)>;
-
-ModelPtr loadModel(const fs::path& xml) {
-  char error[1000] = "";
-  ModelPtr model(mj_loadXML(xml.c_str(), nullptr, error, sizeof error), &mj_deleteModel);
-  EXPECT_TRUE(model) << xml << ": " << error;
-  return model;
-}
+using test::loadModel;
+using test::ModelPtr;
 
 int visualFaces(const mjModel& m) {
   int faces = 0;
@@ -68,12 +64,13 @@ struct Rest {
 };
 
 Rest simulate(const mjModel& model, double seconds) {
-  std::unique_ptr<mjData, decltype(&mj_deleteData)> data(mj_makeData(&model), &mj_deleteData);
+  const test::DataPtr data = test::makeData(model);
   const int steps = static_cast<int>(seconds / model.opt.timestep);
   for (int i = 0; i < steps; ++i) mj_step(&model, data.get());
   const int body = mj_name2id(&model, mjOBJ_BODY, "probe");
   const mjtNum* p = data->xpos + 3 * body;
-  const mjtNum* v = data->qvel;  // the probe's free joint is the only joint
+  // The probe's free joint (the object's controls have joints of their own).
+  const mjtNum* v = data->qvel + model.jnt_dofadr[model.body_jntadr[body]];
   return {Eigen::Vector3f(p[0], p[1], p[2]),
           static_cast<float>(std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]))};
 }
@@ -118,12 +115,14 @@ TEST(MujocoExport, RealObjectsLoadWithEveryTriangle) {
     ASSERT_TRUE(model);
     const Mesh mesh = importMesh(test::realDevDir() / name / "mesh.obj");
     EXPECT_EQ(visualFaces(*model), static_cast<int>(mesh.triangleCount()));
+    const int object = mj_name2id(model.get(), mjOBJ_BODY, "object");
+    ASSERT_GE(object, 0);
     std::cout << name << ": MuJoCo visual faces " << visualFaces(*model) << ", imported triangles "
               << mesh.triangleCount() << ", collision parts " << results[0].collisionParts
-              << ", mass " << model->body_mass[1] << " kg\n";
+              << ", mass " << model->body_mass[object] << " kg\n";
     EXPECT_EQ(results[0].visualTriangles, static_cast<int>(mesh.triangleCount()));
     EXPECT_GT(results[0].collisionParts, 0);
-    EXPECT_NEAR(model->body_mass[1], results[0].massKg, 1e-5 * results[0].massKg);
+    EXPECT_NEAR(model->body_mass[object], results[0].massKg, 1e-5 * results[0].massKg);
     // The figure of issue 12: the LIBERO stove has 1,038 triangles in many o/g groups.
     if (std::string(name) == "libero__flat_stove") EXPECT_EQ(visualFaces(*model), 1038);
   }

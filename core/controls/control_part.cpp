@@ -1,0 +1,453 @@
+#include "core/controls/control_part.h"
+
+#include <Eigen/Eigenvalues>
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <limits>
+
+#include "core/geometry/closest_point_on_triangle.h"
+#include "core/geometry/connected_parts.h"
+#include "core/geometry/triangle_components.h"
+#include "core/mesh/mesh.h"
+
+namespace sagrid {
+
+namespace {
+
+// Components whose boxes come this close (a share of the object's diagonal) touch: a knob's
+// pointer on its cap, a skirt under it.
+constexpr float kTouchShare = 0.01f;
+// Components within the part's box grown by this share of its diagonal go with it.
+constexpr float kWithShare = 0.25f;
+// A grown part reaches at most this far from its point: a share of the distance to the nearest
+// other control and of the object's diagonal.
+constexpr float kGrowSpacingShare = 0.45f;
+constexpr float kGrowDiagonalShare = 0.05f;
+// Grown triangles that stand out of the panel by less than this share of the tallest do not
+// belong to the control (the panel around it).
+constexpr float kStandOutShare = 0.15f;
+// A region standing out by less than this share of its radius is printed on the panel.
+constexpr float kFlatShare = 0.08f;
+// A part whose height along its axis is under this share of its radius is pressed, not turned.
+constexpr float kButtonShare = 0.3f;
+// A part this many times longer than wide across its axis is a lever.
+constexpr float kLeverElongation = 2.2f;
+// A lever's ends: the vertices within this share of its length from each end.
+constexpr float kLeverEndShare = 0.15f;
+// A disc cut around a printed key: this share of the grown radius.
+constexpr float kDiscShare = 0.5f;
+
+struct Surface {
+  const Mesh& mesh;
+  std::vector<Eigen::Vector3f> centroids;
+  std::vector<float> areas;
+  std::vector<bool> valid;
+  float totalArea = 0;
+  float diagonal = 0;
+
+  explicit Surface(const Mesh& m) : mesh(m) {
+    const std::size_t n = m.triangles.size();
+    centroids.resize(n), areas.assign(n, 0.0f), valid.assign(n, false);
+    for (std::size_t t = 0; t < n; ++t) {
+      const Eigen::Vector3i& tri = m.triangles[t];
+      bool ok = true;
+      for (int c = 0; c < 3; ++c)
+        ok = ok && tri[c] >= 0 && static_cast<std::size_t>(tri[c]) < m.positions.size();
+      if (!ok) continue;
+      valid[t] = true;
+      const auto& a = corner(t, 0);
+      const auto& b = corner(t, 1);
+      const auto& c = corner(t, 2);
+      centroids[t] = (a + b + c) / 3.0f;
+      areas[t] = 0.5f * (b - a).cross(c - a).norm();
+      totalArea += areas[t];
+    }
+    const Eigen::AlignedBox3f box = m.bounds();
+    diagonal = box.isEmpty() ? 0.0f : box.diagonal().norm();
+  }
+  const Eigen::Vector3f& corner(std::size_t t, int c) const {
+    return mesh.positions[static_cast<std::size_t>(mesh.triangles[t][c])];
+  }
+  Eigen::Vector3f closestOn(std::size_t t, const Eigen::Vector3f& p) const {
+    return closestPointOnTriangle(p, corner(t, 0), corner(t, 1), corner(t, 2));
+  }
+};
+
+// The triangle nearest `p` among those `keep` accepts; -1 when there is none.
+template <typename Keep>
+int nearestTriangle(const Surface& s, const Eigen::Vector3f& p, Keep keep,
+                    Eigen::Vector3f* closest = nullptr) {
+  int best = -1;
+  float bestDistance = std::numeric_limits<float>::infinity();
+  for (std::size_t t = 0; t < s.valid.size(); ++t) {
+    if (!s.valid[t] || !keep(t)) continue;
+    const Eigen::Vector3f q = s.closestOn(t, p);
+    const float d = (q - p).squaredNorm();
+    if (d < bestDistance) {
+      bestDistance = d, best = static_cast<int>(t);
+      if (closest) *closest = q;
+    }
+  }
+  return best;
+}
+
+std::vector<int> distinctVertices(const Mesh& mesh, const std::vector<int>& triangles) {
+  std::vector<int> vertices;
+  for (int t : triangles)
+    for (int c = 0; c < 3; ++c) vertices.push_back(mesh.triangles[static_cast<std::size_t>(t)][c]);
+  std::sort(vertices.begin(), vertices.end());
+  vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
+  return vertices;
+}
+
+// Principal directions of points, largest spread first.
+struct Principal {
+  Eigen::Vector3f mean = Eigen::Vector3f::Zero();
+  Eigen::Matrix3f directions = Eigen::Matrix3f::Identity();  // columns, largest spread first
+  Eigen::Vector3f spread = Eigen::Vector3f::Zero();          // standard deviations
+};
+
+Principal principalOf(const std::vector<Eigen::Vector3f>& points) {
+  Principal out;
+  if (points.empty()) return out;
+  Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+  for (const auto& p : points) mean += p.cast<double>();
+  mean /= static_cast<double>(points.size());
+  Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
+  for (const auto& p : points) {
+    const Eigen::Vector3d d = p.cast<double>() - mean;
+    covariance += d * d.transpose();
+  }
+  covariance /= static_cast<double>(points.size());
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(covariance);
+  out.mean = mean.cast<float>();
+  for (int i = 0; i < 3; ++i) {
+    out.directions.col(i) = solver.eigenvectors().col(2 - i).cast<float>();
+    out.spread[i] = static_cast<float>(std::sqrt(std::max(0.0, solver.eigenvalues()[2 - i])));
+  }
+  return out;
+}
+
+// Any unit vector perpendicular to `n`.
+Eigen::Vector3f perpendicular(const Eigen::Vector3f& n) {
+  const Eigen::Vector3f other =
+      std::abs(n.x()) < 0.9f ? Eigen::Vector3f::UnitX() : Eigen::Vector3f::UnitY();
+  return n.cross(other).normalized();
+}
+
+struct ComponentStats {
+  Eigen::AlignedBox3f box;
+  float area = 0;
+  Eigen::Vector3d weightedCentroid = Eigen::Vector3d::Zero();
+  Eigen::Vector3f centroid() const {
+    if (area > 0) return (weightedCentroid / area).cast<float>();
+    return box.center();
+  }
+};
+
+std::vector<ComponentStats> componentStats(const Surface& s, const TriangleComponents& c) {
+  std::vector<ComponentStats> stats(static_cast<std::size_t>(c.count));
+  for (std::size_t t = 0; t < c.ofTriangle.size(); ++t) {
+    if (c.ofTriangle[t] < 0) continue;
+    ComponentStats& st = stats[static_cast<std::size_t>(c.ofTriangle[t])];
+    for (int k = 0; k < 3; ++k) st.box.extend(s.corner(t, k));
+    st.area += s.areas[t];
+    st.weightedCentroid += static_cast<double>(s.areas[t]) * s.centroids[t].cast<double>();
+  }
+  return stats;
+}
+
+std::size_t nearestPoint(const Eigen::Vector3f& x, const std::vector<Eigen::Vector3f>& points) {
+  std::size_t best = 0;
+  for (std::size_t i = 1; i < points.size(); ++i)
+    if ((points[i] - x).squaredNorm() < (points[best] - x).squaredNorm()) best = i;
+  return best;
+}
+
+struct PointContext {
+  std::size_t index;
+  const std::vector<Eigen::Vector3f>& points;
+  const std::vector<int>& seeds;  // each point's nearest triangle
+  float spacing;                  // distance to the nearest other point (the diagonal if none)
+};
+
+// The component a point lies on: of the components whose box, grown by the touch distance, holds
+// it, the one with the smallest box (a knob, not the panel it is sunk into); else the component of
+// its nearest triangle.
+int seedComponent(const std::vector<ComponentStats>& stats, const TriangleComponents& c,
+                  const Eigen::Vector3f& p, int nearestTriangle, float touch) {
+  int best = -1;
+  float bestDiagonal = std::numeric_limits<float>::infinity();
+  for (std::size_t k = 0; k < stats.size(); ++k) {
+    const float diagonal = stats[k].box.diagonal().norm();
+    if (stats[k].box.exteriorDistance(p) <= touch && diagonal < bestDiagonal)
+      best = static_cast<int>(k), bestDiagonal = diagonal;
+  }
+  if (best < 0 && nearestTriangle >= 0) best = c.ofTriangle[static_cast<std::size_t>(nearestTriangle)];
+  return best;
+}
+
+// The point's part from one labelling of the triangles: the component it lies on with the small
+// components touching it, each nearer this point than any other; none when that component is too
+// large or another point lies on it too.
+std::optional<std::vector<int>> componentPart(const Surface& s, const TriangleComponents& c,
+                                              const PointContext& ctx) {
+  const std::vector<ComponentStats> stats = componentStats(s, c);
+  const float touch = kTouchShare * s.diagonal;
+  std::vector<int> seeds;
+  for (std::size_t i = 0; i < ctx.points.size(); ++i)
+    seeds.push_back(seedComponent(stats, c, ctx.points[i], ctx.seeds[i], touch));
+  const int seed = seeds[ctx.index];
+  if (seed < 0) return std::nullopt;
+  std::vector<bool> foreign(stats.size(), false);  // another point lies on it
+  for (std::size_t i = 0; i < seeds.size(); ++i)
+    if (i != ctx.index && seeds[i] >= 0) foreign[static_cast<std::size_t>(seeds[i])] = true;
+  const float maxDiagonal = std::min(kSmallPartDiagonal * s.diagonal, 2.0f * ctx.spacing);
+  const auto small = [&](std::size_t k) {
+    return !foreign[k] && stats[k].box.diagonal().norm() <= maxDiagonal &&
+           stats[k].area <= kMaxControlAreaShare * s.totalArea &&
+           nearestPoint(stats[k].centroid(), ctx.points) == ctx.index;
+  };
+  const auto seedIndex = static_cast<std::size_t>(seed);
+  if (!small(seedIndex)) return std::nullopt;
+  // What belongs with it lies within its box grown a little: a pointer, a cap, a ring; not a bar
+  // or a rail it is mounted on.
+  Eigen::AlignedBox3f reach = stats[seedIndex].box;
+  const Eigen::Vector3f grow = Eigen::Vector3f::Constant(
+      std::max(touch, kWithShare * stats[seedIndex].box.diagonal().norm()));
+  reach.extend(reach.min() - grow).extend(reach.max() + grow);
+  std::vector<bool> member(stats.size(), false);
+  for (std::size_t k = 0; k < stats.size(); ++k)
+    member[k] = k == seedIndex || (reach.contains(stats[k].box) && small(k));
+  std::vector<int> triangles;
+  for (std::size_t t = 0; t < c.ofTriangle.size(); ++t)
+    if (c.ofTriangle[t] >= 0 && member[static_cast<std::size_t>(c.ofTriangle[t])])
+      triangles.push_back(static_cast<int>(t));
+  return triangles;
+}
+
+struct GrownRegion {
+  std::vector<int> triangles;  // standing out of the panel; empty when flat
+  Eigen::Vector3f panelNormal = Eigen::Vector3f::UnitZ();
+  float radius = 0;
+};
+
+// The surface around the point within the grow radius (by distance: a soup of loose triangles
+// grows as a welded surface does), less what does not stand out of the panel around it (the
+// panel: the ring of triangles just outside).
+GrownRegion grownRegion(const Surface& s, const PointContext& ctx) {
+  GrownRegion out;
+  const Eigen::Vector3f& p = ctx.points[ctx.index];
+  out.radius = std::min(kGrowSpacingShare * ctx.spacing, kGrowDiagonalShare * s.diagonal);
+  std::vector<int> region, ring;
+  for (std::size_t t = 0; t < s.valid.size(); ++t) {
+    if (!s.valid[t]) continue;
+    const float d = (s.centroids[t] - p).norm();
+    if (d <= out.radius) region.push_back(static_cast<int>(t));
+    else if (d <= 2.0f * out.radius) ring.push_back(static_cast<int>(t));
+  }
+  if (ring.empty()) {  // nothing around it: the region is all there is
+    std::sort(region.begin(), region.end());
+    out.triangles = region;
+    return out;
+  }
+  std::vector<Eigen::Vector3f> ringPoints;
+  for (int t : ring) ringPoints.push_back(s.centroids[static_cast<std::size_t>(t)]);
+  const Principal panel = principalOf(ringPoints);
+  Eigen::Vector3f normal = panel.directions.col(2);
+  if ((p - panel.mean).dot(normal) < 0) normal = -normal;
+  out.panelNormal = normal;
+  float tallest = 0;
+  for (int t : region)
+    for (int k = 0; k < 3; ++k)
+      tallest = std::max(tallest, (s.corner(static_cast<std::size_t>(t), k) - panel.mean).dot(normal));
+  if (tallest < kFlatShare * out.radius) return out;  // printed on the panel
+  for (int t : region)
+    if ((s.centroids[static_cast<std::size_t>(t)] - panel.mean).dot(normal) > kStandOutShare * tallest)
+      out.triangles.push_back(t);
+  std::sort(out.triangles.begin(), out.triangles.end());
+  return out;
+}
+
+float areaOf(const Surface& s, const std::vector<int>& triangles) {
+  float area = 0;
+  for (int t : triangles) area += s.areas[static_cast<std::size_t>(t)];
+  return area;
+}
+
+ControlPart describe(const Surface& s, std::vector<int> triangles, PartOrigin origin) {
+  ControlPart part;
+  part.origin = origin;
+  std::sort(triangles.begin(), triangles.end());
+  triangles.erase(std::unique(triangles.begin(), triangles.end()), triangles.end());
+  std::vector<Eigen::Vector3f> vertices;
+  for (int v : distinctVertices(s.mesh, triangles))
+    vertices.push_back(s.mesh.positions[static_cast<std::size_t>(v)]);
+  const Principal shape = principalOf(vertices);
+  const Eigen::Vector3f centre = shape.mean;
+  // What holds the part: the nearest point of the rest of the surface; the part stands out of it.
+  std::vector<bool> inPart(s.valid.size(), false);
+  for (int t : triangles) inPart[static_cast<std::size_t>(t)] = true;
+  Eigen::Vector3f holder = centre;
+  const int holderTriangle =
+      nearestTriangle(s, centre, [&](std::size_t t) { return !inPart[t]; }, &holder);
+  Eigen::Vector3f out = centre - holder;
+  if (holderTriangle < 0 || out.norm() < 1e-6f * std::max(s.diagonal, 1e-12f))
+    out = shape.directions.col(2);  // held by nothing apart: its thinnest direction
+  out.normalize();
+
+  // Height along `out` and the shape across it.
+  float low = std::numeric_limits<float>::infinity(), high = -low;
+  std::vector<Eigen::Vector3f> across;
+  for (const auto& v : vertices) {
+    const float h = (v - centre).dot(out);
+    low = std::min(low, h), high = std::max(high, h);
+    across.push_back(v - h * out);
+  }
+  const Principal flat = principalOf(across);
+  float radius = 0;
+  for (const auto& a : across) radius = std::max(radius, (a - flat.mean).norm());
+  part.radius = radius;
+  part.pivot = centre;
+  const bool elongated = flat.spread[0] > kLeverElongation * std::max(flat.spread[1], 1e-12f);
+  if (elongated) {
+    part.motion = ControlMotion::Lever;
+    Eigen::Vector3f along = flat.directions.col(0);
+    // The held end is the one nearer the rest of the surface; the free end points away from it.
+    float first = std::numeric_limits<float>::infinity(), last = -first;
+    for (const auto& v : vertices) {
+      const float t = (v - centre).dot(along);
+      first = std::min(first, t), last = std::max(last, t);
+    }
+    const auto endGap = [&](float end) {
+      Eigen::Vector3f sum = Eigen::Vector3f::Zero();
+      int count = 0;
+      for (const auto& v : vertices)
+        if (std::abs((v - centre).dot(along) - end) <= kLeverEndShare * (last - first)) sum += v, ++count;
+      Eigen::Vector3f nearest = centre;
+      const Eigen::Vector3f slab = count ? Eigen::Vector3f(sum / static_cast<float>(count)) : centre;
+      if (nearestTriangle(s, slab, [&](std::size_t t) { return !inPart[t]; }, &nearest) < 0)
+        return 0.0f;
+      return (nearest - slab).norm();
+    };
+    if (endGap(last) < endGap(first)) along = -along, std::swap(first, last), first = -first, last = -last;
+    part.pivot = centre + first * along;
+    const Eigen::Vector3f axis = along.cross(out);
+    part.axis = axis.norm() > 1e-6f ? axis.normalized() : perpendicular(along);
+  } else if (high - low < kButtonShare * radius) {
+    part.motion = ControlMotion::Button;
+    part.axis = -out;
+  } else {
+    part.motion = ControlMotion::Knob;
+    Eigen::Vector3f axis = out;
+    float best = 0.8f;  // the symmetry axis where the shape has one near `out`
+    for (int i = 0; i < 3; ++i) {
+      const float c = std::abs(shape.directions.col(i).dot(out));
+      if (c > best) best = c, axis = shape.directions.col(i);
+    }
+    part.axis = axis.dot(out) < 0 ? -axis : axis;
+    part.axis.normalize();
+  }
+  part.triangles = std::move(triangles);
+  return part;
+}
+
+}  // namespace
+
+const char* toString(ControlMotion motion) {
+  switch (motion) {
+    case ControlMotion::Knob: return "knob";
+    case ControlMotion::Lever: return "lever";
+    case ControlMotion::Button: return "button";
+  }
+  return "knob";
+}
+
+const char* toString(PartOrigin origin) {
+  switch (origin) {
+    case PartOrigin::Connected: return "connected";
+    case PartOrigin::Material: return "material";
+    case PartOrigin::Grown: return "grown";
+    case PartOrigin::Disc: return "disc";
+  }
+  return "connected";
+}
+
+std::optional<ControlMotion> parseControlMotion(const std::string& text) {
+  for (ControlMotion m : {ControlMotion::Knob, ControlMotion::Lever, ControlMotion::Button})
+    if (text == toString(m)) return m;
+  return std::nullopt;
+}
+
+std::optional<PartOrigin> parsePartOrigin(const std::string& text) {
+  for (PartOrigin o : {PartOrigin::Connected, PartOrigin::Material, PartOrigin::Grown, PartOrigin::Disc})
+    if (text == toString(o)) return o;
+  return std::nullopt;
+}
+
+ControlPart describeControlPart(const Mesh& mesh, std::vector<int> triangles, PartOrigin origin) {
+  const Surface surface(mesh);
+  triangles.erase(std::remove_if(triangles.begin(), triangles.end(),
+                                 [&](int t) {
+                                   return t < 0 || static_cast<std::size_t>(t) >= surface.valid.size() ||
+                                          !surface.valid[static_cast<std::size_t>(t)];
+                                 }),
+                  triangles.end());
+  return describe(surface, std::move(triangles), origin);
+}
+
+ControlParts findControlParts(const Mesh& mesh, const std::vector<Eigen::Vector3f>& points) {
+  ControlParts result;
+  result.parts.resize(points.size());
+  result.warnings.resize(points.size());
+  const Surface surface(mesh);
+  if (points.empty() || !(surface.totalArea > 0)) {
+    for (auto& warning : result.warnings) warning = "the mesh has no surface; site only";
+    return result;
+  }
+  std::vector<int> seeds;
+  for (const auto& p : points) seeds.push_back(nearestTriangle(surface, p, [](std::size_t) { return true; }));
+  const TriangleComponents connected = triangleComponents(mesh, false);
+  const bool materials = std::adjacent_find(mesh.triangleMaterials.begin(), mesh.triangleMaterials.end(),
+                                            std::not_equal_to<>()) != mesh.triangleMaterials.end();
+  const std::optional<TriangleComponents> byMaterial =
+      materials ? std::optional<TriangleComponents>(triangleComponents(mesh, true)) : std::nullopt;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    float spacing = surface.diagonal;
+    for (std::size_t j = 0; j < points.size(); ++j)
+      if (j != i) spacing = std::min(spacing, (points[j] - points[i]).norm());
+    const PointContext ctx{i, points, seeds, spacing};
+    if (byMaterial) {
+      if (auto tris = componentPart(surface, *byMaterial, ctx)) {
+        result.parts[i] = describe(surface, std::move(*tris), PartOrigin::Material);
+        continue;
+      }
+    }
+    if (auto tris = componentPart(surface, connected, ctx)) {
+      result.parts[i] = describe(surface, std::move(*tris), PartOrigin::Connected);
+      continue;
+    }
+    GrownRegion grown = grownRegion(surface, ctx);
+    if (areaOf(surface, grown.triangles) > kMaxControlAreaShare * surface.totalArea) {
+      result.warnings[i] = "its part would take most of the object; site only";
+      continue;
+    }
+    if (!grown.triangles.empty()) {
+      result.parts[i] = describe(surface, std::move(grown.triangles), PartOrigin::Grown);
+      continue;
+    }
+    ControlPart disc;  // printed on the panel: a thin disc pressed into it
+    disc.origin = PartOrigin::Disc;
+    disc.motion = ControlMotion::Button;
+    disc.axis = -grown.panelNormal;
+    disc.pivot = points[i];
+    disc.radius = kDiscShare * grown.radius;
+    result.parts[i] = disc;
+    result.warnings[i] =
+        "nothing stands out of the surface there (printed?); a thin disc slides in its place";
+  }
+  return result;
+}
+
+}  // namespace sagrid

@@ -1,0 +1,60 @@
+// The part of the mesh a toggle button point switches with, and how it moves: a rotary knob
+// turns about its axis of rotational symmetry, a lever about its pivot at the held end, a push
+// button or touch key slides along its normal. One mechanism for every file: the part is the
+// small component of the point's material it lies on (with the small components inside its box:
+// a knob's pointer, its cap), else the same over connected triangles whatever their material,
+// else the surface grown around the point up to where it stops standing out of the panel; a point
+// on nothing that stands out (a key printed on glass) gets a thin disc. A component is small when
+// no other point lies on it, it is nearer this point than any other and holds little of the
+// object.
+// Everything in the mesh's z-up frame and units.
+#pragma once
+
+#include <Eigen/Core>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace sagrid {
+
+struct Mesh;
+
+enum class ControlMotion { Knob, Lever, Button };
+enum class PartOrigin { Connected, Material, Grown, Disc };
+
+const char* toString(ControlMotion motion);
+const char* toString(PartOrigin origin);
+std::optional<ControlMotion> parseControlMotion(const std::string& text);
+std::optional<PartOrigin> parsePartOrigin(const std::string& text);
+
+// A knob or lever is a hinge, a button a slide.
+inline bool isHinge(ControlMotion motion) { return motion != ControlMotion::Button; }
+
+struct ControlPart {
+  std::vector<int> triangles;  // sorted indices into the mesh's triangles; empty for a disc
+  ControlMotion motion = ControlMotion::Knob;
+  PartOrigin origin = PartOrigin::Connected;
+  // Hinge: the axis (a positive turn lifts a lever's free end away from what holds it; a knob's
+  // points out of the panel). Slide: the direction a press moves it (into the panel). Unit length.
+  Eigen::Vector3f axis = Eigen::Vector3f::UnitZ();
+  Eigen::Vector3f pivot = Eigen::Vector3f::Zero();  // on the hinge axis; a slide's part centre
+  float radius = 0;  // half the part's largest extent across the axis (a disc's radius)
+};
+
+struct ControlParts {
+  std::vector<std::optional<ControlPart>> parts;  // per point; nullopt: a site only
+  std::vector<std::string> warnings;  // per point: why it was left a site or got a disc; or empty
+};
+
+// A part is refused (site only) when it would hold more than this share of the object's surface.
+inline constexpr float kMaxControlAreaShare = 0.25f;
+
+// The part of each point of `points` (toggle button points, mesh frame). Points are told apart:
+// a part never holds what lies nearer another point.
+ControlParts findControlParts(const Mesh& mesh, const std::vector<Eigen::Vector3f>& points);
+
+// The motion of a given part (the curator's triangles): its axis and pivot from its shape and
+// from where the rest of the mesh holds it.
+ControlPart describeControlPart(const Mesh& mesh, std::vector<int> triangles, PartOrigin origin);
+
+}  // namespace sagrid
