@@ -20,7 +20,8 @@ namespace {
 // generate_collision_meshes -> simplify_convex_hull) for its GPU physics; MuJoCo takes that too.
 constexpr int kMaxHullVertices = 60;
 
-std::vector<physics::ConvexPart> collisionParts(const Mesh& mesh, const ExportOptions& options,
+std::vector<physics::ConvexPart> collisionParts(const Mesh& mesh, const Eigen::AlignedBox3f& frame,
+                                                const ExportOptions& options,
                                                 std::vector<std::string>& warnings) {
   switch (options.collision) {
     case CollisionMode::None:
@@ -31,6 +32,7 @@ std::vector<physics::ConvexPart> collisionParts(const Mesh& mesh, const ExportOp
       physics::DecompositionOptions decomposition;
       decomposition.maxParts = options.maxCollisionParts;
       decomposition.maxVerticesPerPart = kMaxHullVertices;
+      decomposition.frame = frame;
       if (options.progress) {
         decomposition.progress = [&options](float fraction, const std::string& stage) {
           options.progress(0.1f + 0.79f * std::clamp(fraction, 0.0f, 1.0f), "collision: " + stage);
@@ -89,7 +91,8 @@ SimulatorGeometry buildSimulatorGeometry(const ObjectLabels& labels, const fs::p
   }
   std::vector<std::string> shapeWarnings;  // about the mesh: named after it below
   geometry.visualParts = visualParts(geometry.body, shapeWarnings);
-  geometry.collisionParts = collisionParts(geometry.body, options, shapeWarnings);
+  geometry.collisionParts =
+      collisionParts(geometry.body, geometry.bounds, options, shapeWarnings);
   if (options.progress) options.progress(0.9f, "mass");
   physics::MassOptions massOptions;
   massOptions.category = labels.object.category;

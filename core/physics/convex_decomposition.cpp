@@ -52,7 +52,7 @@ class Decomposer {
   Decomposer(const Mesh& mesh, const DecompositionOptions& options)
       : m_options(options),
         m_n(options.resolution),
-        m_solid(solidVoxels(mesh, options.resolution, options.holeClosingVoxels)),
+        m_solid(solidVoxels(mesh, options.resolution, options.holeClosingVoxels, options.frame)),
         m_pieces(mesh, m_solid.normalization, options.resolution),
         m_partOf(m_solid.solid.voxelCount(), -1),
         m_mark(m_solid.solid.voxelCount(), 0) {

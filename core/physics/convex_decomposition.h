@@ -12,9 +12,11 @@
 // hull while the budget allows.
 #pragma once
 
+#include <Eigen/Geometry>
 #include <atomic>
 #include <functional>
 #include <string>
+#include <optional>
 #include <vector>
 
 #include "core/physics/convex_part.h"
@@ -38,6 +40,9 @@ struct DecompositionOptions {
   int maxVerticesPerPart = 64;
   // Holes in the surface narrower than about 2 * this many voxels are closed before filling.
   int holeClosingVoxels = 1;
+  // The box the voxel grid spans, when not the mesh's own bounds (solid_voxels.h): a body with
+  // its moving parts cut away is cut on the whole object's grid, so the cut does not move.
+  std::optional<Eigen::AlignedBox3f> frame;
   DecompositionProgress progress;         // optional
   const std::atomic<bool>* cancel = nullptr;  // optional; throws Cancelled when set
 };

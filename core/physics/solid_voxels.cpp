@@ -63,12 +63,14 @@ Mask floodFromBorder(const Mask& walls, int n) {
 
 }  // namespace
 
-SolidVoxels solidVoxels(const Mesh& mesh, int resolution, int closingVoxels) {
+SolidVoxels solidVoxels(const Mesh& mesh, int resolution, int closingVoxels,
+                        const std::optional<Eigen::AlignedBox3f>& frame) {
   if (mesh.triangles.empty()) throw Error("the mesh has no triangles");
   if (resolution < 8 || closingVoxels < 0 || 2 * (closingVoxels + 2) >= resolution / 2)
     throw InvalidArgument("voxel resolution " + std::to_string(resolution) + " with " +
                           std::to_string(closingVoxels) + " closing voxels is out of range");
-  const Eigen::AlignedBox3f box = mesh.bounds();
+  Eigen::AlignedBox3f box = mesh.bounds();
+  if (frame) box.extend(*frame);
   if (const auto problem = normalizationProblem(box)) throw Error("the mesh " + *problem);
 
   SolidVoxels result{Normalization::fromBounds(box), VoxelGrid(resolution), VoxelGrid(resolution)};

@@ -6,7 +6,9 @@
 // stay open.
 #pragma once
 
+#include <Eigen/Geometry>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "core/grid/normalization.h"
@@ -30,8 +32,11 @@ struct SolidVoxels {
   double voxelSize() const { return 1.0 / (normalization.scale * surface.resolution()); }  // mesh units
 };
 
-// Throws Error for a mesh with no triangles or a box that cannot be normalized.
-SolidVoxels solidVoxels(const Mesh& mesh, int resolution, int closingVoxels);
+// Throws Error for a mesh with no triangles or a box that cannot be normalized. `frame`, when
+// given, is the box the grid spans (with the mesh's own bounds added): a body with parts cut away
+// voxelizes on the same grid as the whole object.
+SolidVoxels solidVoxels(const Mesh& mesh, int resolution, int closingVoxels,
+                        const std::optional<Eigen::AlignedBox3f>& frame = std::nullopt);
 
 }  // namespace physics
 }  // namespace sagrid

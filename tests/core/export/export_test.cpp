@@ -142,11 +142,17 @@ TEST(MjcfExport, StoveSitesPartsAndInertia) {
   EXPECT_NE(
       xml.find("<site name=\"burner_on_front_left\" type=\"cylinder\" pos=\"-0.15 -0.1 0.1\""),
       std::string::npos);
-  // One STL per material, every triangle in one of them.
+  // The body one STL per material, each knob (a box of the second material) its own; every
+  // triangle in one of them.
   EXPECT_TRUE(fs::exists(result.root / "meshes" / "visual_0.stl"));
-  EXPECT_TRUE(fs::exists(result.root / "meshes" / "visual_1.stl"));
+  EXPECT_FALSE(fs::exists(result.root / "meshes" / "visual_1.stl"));
+  for (const char* loc : {"rear_left", "rear_right", "front_left", "front_right"}) {
+    EXPECT_TRUE(fs::exists(result.root / "meshes" / (std::string("visual_knob_") + loc + ".stl")));
+    EXPECT_NE(xml.find(std::string("<joint name=\"knob_") + loc + "_joint\" type=\"hinge\""),
+              std::string::npos);
+  }
   EXPECT_EQ(result.visualTriangles, 12 * 5);
-  EXPECT_NE(xml.find("class=\"visual\" mesh=\"visual_1\""), std::string::npos);
+  EXPECT_NE(xml.find("class=\"visual\" mesh=\"visual_knob_front_left\""), std::string::npos);
   EXPECT_NE(xml.find("contype=\"0\" conaffinity=\"0\" group=\"1\""), std::string::npos);
   EXPECT_NE(xml.find("<geom name=\"collision_0\" class=\"collision\""), std::string::npos);
   EXPECT_NE(xml.find("<geom name=\"reg_main\" type=\"box\" pos=\"0 -0.01 0.05\" "

@@ -215,12 +215,6 @@ TEST(MujocoControls, TorqueOnOneKnobLightsExactlyItsBurner) {
       data->qfrc_applied[model->jnt_dofadr[joint]] = 1.0;  // N m
       mj_step(model.get(), data.get());
     }
-    if (std::getenv("DEBUG_CONTACTS")) {
-      std::cout << "ncon " << data->ncon << "\n";
-      for (int c = 0; c < data->ncon && c < 20; ++c)
-        std::cout << name(*model, mjOBJ_GEOM, data->contact[c].geom1) << " - " << name(*model, mjOBJ_GEOM, data->contact[c].geom2) << " dist " << data->contact[c].dist << "\n";
-      for (int j = 0; j < model->njnt; ++j) std::cout << name(*model, mjOBJ_JOINT, j) << " " << data->qpos[model->jnt_qposadr[j]] << " limited " << (int)model->jnt_limited[j] << " range " << model->jnt_range[2*j] << " " << model->jnt_range[2*j+1] << "\n";
-    }
     std::set<std::string> lit;
     for (const auto& [other, otherJoint] : lookups.burners)
       if (otherJoint >= 0 && burnerLit(data->qpos[model->jnt_qposadr[otherJoint]])) lit.insert(other);
