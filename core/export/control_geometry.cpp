@@ -59,6 +59,12 @@ physics::MassProperties partMass(const Mesh& partMesh, const ControlPart& part) 
 
 }  // namespace
 
+ControlMotionRange controlMotionRange(const ControlPart& part, bool tapHandle) {
+  if (!isHinge(part.motion) && !tapHandle) return {false, part.axis, 0.0, kButtonTravel};
+  const Eigen::Vector3f axis = isHinge(part.motion) ? part.axis : Eigen::Vector3f(-part.axis);
+  return {true, axis, 0.0, tapHandle ? kHandleRange : kKnobRange};
+}
+
 ControlSplit splitControls(const ObjectLabels& labels, const Mesh& mesh, double metersPerUnit,
                            const std::filesystem::path& labelsPath,
                            std::vector<std::string>& warnings) {

@@ -32,6 +32,22 @@ struct ControlGeometry {
   float axisLow = 0, axisHigh = 0;  // the part's extent along part.axis from the pivot, metres
 };
 
+// How far a control moves from where the mesh shows it: a stove knob turns up to 270 degrees one
+// way (RoboCasa lights its burner from 0.35 rad), a tap handle up to 90 (RoboCasa runs water from
+// 0.4 rad), a button travels 4 mm; damping as RoboCasa's fixtures. A tap's handle is turned or
+// lifted, never pressed: a flat one turns about its axis.
+inline constexpr double kKnobRange = 4.71238898;
+inline constexpr double kHandleRange = 1.57079633;
+inline constexpr double kButtonTravel = 0.004;
+inline constexpr double kControlDamping = 1.0;
+
+struct ControlMotionRange {
+  bool hinge = true;
+  Eigen::Vector3f axis = Eigen::Vector3f::UnitZ();
+  double low = 0, high = 0;  // radians or metres
+};
+ControlMotionRange controlMotionRange(const ControlPart& part, bool tapHandle);
+
 struct ControlSplit {
   std::vector<ControlGeometry> controls;
   std::vector<bool> body;  // per triangle of the mesh: stays with the body

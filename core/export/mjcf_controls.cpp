@@ -74,16 +74,12 @@ void writeCollisionGeom(std::ostringstream& xml, const ControlGeometry& control,
 
 std::vector<MjcfJoint> controlJoints(const ControlGeometry& control, const std::string& body,
                                      bool onlySinkHandle) {
-  const ControlPart& part = control.part;
   std::vector<MjcfJoint> joints;
-  // A tap's handle is turned or lifted (RoboCasa's Sink reads an angle), never pressed.
-  const bool handle = body.rfind("handle", 0) == 0;
-  if (!isHinge(part.motion) && !handle) {
-    joints.push_back({body + "_joint", "slide", part.axis, 0.0, kButtonTravel});
-    return joints;
-  }
-  const Eigen::Vector3f axis = isHinge(part.motion) ? part.axis : Eigen::Vector3f(-part.axis);
-  joints.push_back({body + "_joint", "hinge", axis, 0.0, handle ? kHandleRange : kKnobRange});
+  const ControlMotionRange motion =
+      controlMotionRange(control.part, body.rfind("handle", 0) == 0);
+  joints.push_back({body + "_joint", motion.hinge ? "hinge" : "slide", motion.axis, motion.low,
+                    motion.high});
+  if (!motion.hinge) return joints;
   if (onlySinkHandle)
     joints.push_back({"handle_temp_joint", "hinge", Eigen::Vector3f::UnitZ(), -kTemperatureRange,
                       kTemperatureRange});

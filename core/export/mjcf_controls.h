@@ -25,14 +25,8 @@ struct MjcfJoint {
   double low = 0, high = 0;  // radians or metres
 };
 
-// Knob ranges: a stove knob turns up to 270 degrees one way (RoboCasa lights its burner from
-// 0.35 rad), a sink handle up to 90 (water runs from 0.4 rad), a handle's temperature +-45, a
-// button travels 4 mm.
-inline constexpr double kKnobRange = 4.71238898;
-inline constexpr double kHandleRange = 1.57079633;
+// A tap handle's temperature turns +-45 degrees.
 inline constexpr double kTemperatureRange = 0.78539816;
-inline constexpr double kButtonTravel = 0.004;
-inline constexpr double kControlDamping = 1.0;
 inline constexpr double kLockedRange = 1e-4;  // radians
 
 // The joints of the control named `body` (its site's name): `<body>_joint`; a sink's only handle

@@ -72,19 +72,6 @@ void writeGeoms(std::ostringstream& xml, const exportdetail::SimulatorGeometry& 
       << "\" contype=\"0\" conaffinity=\"0\" group=\"3\" rgba=\"0 1 0 0\"/>\n";
 }
 
-// One site per point (robocasa_sites.h), the controls' recorded pairings passed on.
-std::vector<exportdetail::MjcfSite> objectSites(const ObjectLabels& labels,
-                                                const exportdetail::SimulatorGeometry& geometry,
-                                                std::vector<std::string>& warnings) {
-  std::vector<exportdetail::SimulatorPoint> points;
-  for (const auto& point : labels.affordances) {
-    points.push_back({point.type, exportdetail::toSimulatorFrame(labels, point.position,
-                                                                 geometry.metersPerUnit), {}});
-  }
-  for (const auto& control : geometry.controls) points[control.point].drives = control.drives;
-  return exportdetail::robocasaSites(points, geometry.bounds, labels.object.category, &warnings);
-}
-
 // Burners and other points' sites in "object", each control's site in its body, each water site
 // in its spout body.
 void writeBodies(std::ostringstream& xml, const exportdetail::SimulatorGeometry& geometry,
@@ -124,7 +111,8 @@ SimulatorExport exportMjcf(const ObjectLabels& labels, const fs::path& meshPath,
   SimulatorExport result;
   result.warnings = std::move(geometry.warnings);
   StagedFolder staged(outDir / folderName);
-  const std::vector<exportdetail::MjcfSite> sites = objectSites(labels, geometry, result.warnings);
+  const std::vector<exportdetail::MjcfSite> sites =
+      exportdetail::simulatorSites(labels, geometry, result.warnings);
   std::vector<std::string> controlBodies;
   for (const auto& control : geometry.controls) controlBodies.push_back(sites[control.point].name);
 

@@ -11,6 +11,8 @@
 #include "core/export/export_frame.h"
 #include "core/export/omnigibson_meta_links.h"
 #include "core/export/simulator_geometry.h"
+#include "core/export/urdf_controls.h"
+#include "core/export/urdf_xml.h"
 #include "core/common/staged_folder.h"
 #include "core/export/xml_text.h"
 #include "core/mesh/mesh_export.h"
@@ -21,49 +23,16 @@ namespace sagrid {
 namespace fs = std::filesystem;
 using exportdetail::formatNumber;
 using exportdetail::formatVector;
+using exportdetail::inertialXml;
 using exportdetail::kBaseLink;
+using exportdetail::origin;
+using exportdetail::unitBoxPart;
+using exportdetail::UnitBoxPart;
 
 namespace {
 
 constexpr double kMetaLinkMass = 0.0001;  // what _create_urdf_meta_link gives meta links
 constexpr double kMetaLinkInertia = 0.00001;
-
-// A collision part as the importer stores them (generate_urdf_for_mesh): vertices divided by the
-// part's bounding-box extents, the extents as the URDF mesh scale.
-struct UnitBoxPart {
-  std::string obj;
-  Eigen::Vector3d scale;
-};
-
-UnitBoxPart unitBoxPart(const physics::ConvexPart& part) {
-  Eigen::AlignedBox3d box;
-  for (const auto& v : part.vertices) box.extend(v.cast<double>());
-  UnitBoxPart out;
-  out.scale = box.sizes().cwiseMax(1e-6);  // parts span a volume; guard the division anyway
-  std::ostringstream obj;
-  obj << "# convex collision part written by sagrid (unit bounding box; URDF scale restores it)\n";
-  for (const auto& v : part.vertices)
-    obj << "v " << formatVector(v.cast<double>().cwiseQuotient(out.scale)) << "\n";
-  for (const auto& t : part.triangles)
-    obj << "f " << t[0] + 1 << " " << t[1] + 1 << " " << t[2] + 1 << "\n";
-  out.obj = obj.str();
-  return out;
-}
-
-std::string origin(const Eigen::Vector3d& xyz) {
-  return "<origin xyz=\"" + formatVector(xyz) + "\" rpy=\"0 0 0\"/>";
-}
-
-std::string inertialXml(const physics::MassProperties& mass) {
-  const Eigen::Matrix3d& I = mass.inertia;
-  std::ostringstream xml;
-  xml << "    <inertial>\n      " << origin(mass.centerOfMass) << "\n      <mass value=\""
-      << formatNumber(mass.mass) << "\"/>\n      <inertia ixx=\"" << formatNumber(I(0, 0))
-      << "\" ixy=\"" << formatNumber(I(0, 1)) << "\" ixz=\"" << formatNumber(I(0, 2)) << "\" iyy=\""
-      << formatNumber(I(1, 1)) << "\" iyz=\"" << formatNumber(I(1, 2)) << "\" izz=\""
-      << formatNumber(I(2, 2)) << "\"/>\n    </inertial>\n";
-  return xml.str();
-}
 
 std::string metaLinksXml(const std::vector<exportdetail::MetaLink>& links) {
   std::ostringstream xml;
@@ -114,9 +83,9 @@ SimulatorExport exportOmniGibson(const ObjectLabels& labels, const fs::path& mes
   StagedFolder staged(outDir / category / model);
   const fs::path root = staged.path();
 
-  // Visual mesh: the imported mesh, z up in metres, as one OBJ with one MTL (the importer's
+  // Visual mesh: the imported mesh less its moving controls, z up in metres, as one OBJ with one MTL (the importer's
   // _force_asset_pipeline_materials allows one mtllib per OBJ) and its textures.
-  Mesh visual = geometry.mesh;
+  Mesh visual = geometry.body;
   visual.fileUp = UpAxis::Z;
   // Material names become safe MTL names in encodeObj (no line breaks: issue 14).
   const std::string visualName = model + "_base_link_visual";
@@ -138,6 +107,9 @@ SimulatorExport exportOmniGibson(const ObjectLabels& labels, const fs::path& mes
          << "\"/></geometry>\n    </collision>\n";
   }
   link << inertialXml(geometry.mass) << "  </link>\n";
+  const std::vector<exportdetail::MjcfSite> sites =
+      exportdetail::simulatorSites(labels, geometry, result.warnings);
+  link << exportdetail::controlLinksXml(geometry, sites, model, root);
 
   std::vector<exportdetail::SimulatorPoint> points;
   for (const auto& point : labels.affordances) {
@@ -177,7 +149,7 @@ SimulatorExport exportOmniGibson(const ObjectLabels& labels, const fs::path& mes
 
   result.root = outDir / category / model;
   result.mainFile = result.root / "urdf" / (model + ".urdf");
-  result.visualTriangles = static_cast<int>(geometry.mesh.triangles.size());
+  result.visualTriangles = static_cast<int>(geometry.mesh.triangles.size());  // body and controls
   result.collisionParts = static_cast<int>(geometry.collisionParts.size());
   result.massKg = geometry.mass.mass;
   if (labels.affordances.empty())

@@ -113,4 +113,14 @@ SimulatorGeometry buildSimulatorGeometry(const ObjectLabels& labels, const fs::p
   return geometry;
 }
 
+std::vector<MjcfSite> simulatorSites(const ObjectLabels& labels,
+                                     const SimulatorGeometry& geometry,
+                                     std::vector<std::string>& warnings) {
+  std::vector<SimulatorPoint> points;
+  for (const auto& point : labels.affordances)
+    points.push_back({point.type, toSimulatorFrame(labels, point.position, geometry.metersPerUnit), {}});
+  for (const auto& control : geometry.controls) points[control.point].drives = control.drives;
+  return robocasaSites(points, geometry.bounds, labels.object.category, &warnings);
+}
+
 }  // namespace sagrid::exportdetail

@@ -12,6 +12,7 @@
 
 #include "core/export/control_geometry.h"
 #include "core/export/export_options.h"
+#include "core/export/robocasa_sites.h"
 #include "core/export/visual_parts.h"
 #include "core/labels/labels.h"
 #include "core/mesh/mesh.h"
@@ -39,5 +40,12 @@ SimulatorGeometry buildSimulatorGeometry(const ObjectLabels& labels,
                                          const std::filesystem::path& meshPath,
                                          const std::filesystem::path& labelsPath,
                                          const ExportOptions& options);
+
+// One site per point, named as RoboCasa looks them up (robocasa_sites.h), with the controls'
+// recorded pairings; the names of the controls' bodies and links too. Pairing problems go to
+// `warnings`.
+std::vector<MjcfSite> simulatorSites(const ObjectLabels& labels,
+                                     const SimulatorGeometry& geometry,
+                                     std::vector<std::string>& warnings);
 
 }  // namespace sagrid::exportdetail

@@ -266,6 +266,30 @@ TEST_F(OmniGibsonConformance, BaseLinkHasMassAndInertia) {
   }
 }
 
+// Controls that turn (DESIGN.md: revolute/prismatic links for OmniGibson): each of the stove's
+// knobs is a child link of base_link on a revolute joint with limits and damping, its visual and
+// collision meshes written; the meta links stay on base_link.
+TEST_F(OmniGibsonConformance, KnobsAreRevoluteChildLinks) {
+  const std::string text = urdf(*s_stove, "_with_meta_links");
+  for (const char* loc : {"rear_left", "rear_right", "front_left", "front_right"}) {
+    SCOPED_TRACE(loc);
+    const std::string knob = std::string("knob_") + loc;
+    const auto joint = matches(text, "<joint name=\"" + knob +
+                                         "_joint\" type=\"revolute\">[\\s\\S]*?</joint>");
+    ASSERT_EQ(joint.size(), 1u);
+    EXPECT_NE(text.find("<child link=\"" + knob + "_link\"/>"), std::string::npos);
+    EXPECT_NE(text.find("<link name=\"" + knob + "_link\">"), std::string::npos);
+    EXPECT_TRUE(fs::exists(s_stove->root / "shape" / "visual" /
+                           (model(*s_stove) + "_" + knob + "_link_visual.obj")));
+    EXPECT_TRUE(fs::exists(s_stove->root / "shape" / "collision" /
+                           (model(*s_stove) + "_" + knob + "_link_collision_0.obj")));
+  }
+  EXPECT_EQ(matches(text, "<limit lower=\"0\" upper=\"([^\"]+)\"").size(), 4u);
+  EXPECT_EQ(matches(text, "<dynamics damping=\"([^\"]+)\"").size(), 4u);
+  for (const auto& parent : matches(text, "meta__base_link_[a-z]+_\\d+_0_joint\"[^>]*>\\s*<origin[^>]*>\\s*<parent link=\"([^\"]+)\""))
+    EXPECT_EQ(parent, "base_link");
+}
+
 // urdfdom's check_urdf (Debian liburdfdom-tools) parses both URDFs: one root link, every joint's
 // links present.
 TEST_F(OmniGibsonConformance, CheckUrdfAcceptsBothUrdfs) {
