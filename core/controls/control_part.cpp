@@ -33,6 +33,8 @@ constexpr float kFlatShare = 0.08f;
 constexpr float kButtonShare = 0.3f;
 // A part this many times longer than wide across its axis is a lever.
 constexpr float kLeverElongation = 2.2f;
+// Below this, the direction out of a lever's holder lies along the lever: it lifts upwards.
+constexpr float kLiftMinimum = 0.3f;
 // A lever's ends: the vertices within this share of its length from each end.
 constexpr float kLeverEndShare = 0.15f;
 // A disc cut around a printed key: this share of the grown radius.
@@ -310,10 +312,12 @@ ControlPart describe(const Surface& s, std::vector<int> triangles, PartOrigin or
   for (const auto& a : across) radius = std::max(radius, (a - flat.mean).norm());
   part.radius = radius;
   part.pivot = centre;
-  const bool elongated = flat.spread[0] > kLeverElongation * std::max(flat.spread[1], 1e-12f);
-  if (elongated) {
+  // Long and thin, whether across what holds it (a top lever) or out of it (a side lever).
+  const bool long3d = shape.spread[0] > kLeverElongation * std::max(shape.spread[1], 1e-12f);
+  const bool longAcross = flat.spread[0] > kLeverElongation * std::max(flat.spread[1], 1e-12f);
+  if (long3d || longAcross) {
     part.motion = ControlMotion::Lever;
-    Eigen::Vector3f along = flat.directions.col(0);
+    Eigen::Vector3f along = long3d ? shape.directions.col(0) : flat.directions.col(0);
     // The held end is the one nearer the rest of the surface; the free end points away from it.
     float first = std::numeric_limits<float>::infinity(), last = -first;
     for (const auto& v : vertices) {
@@ -333,7 +337,11 @@ ControlPart describe(const Surface& s, std::vector<int> triangles, PartOrigin or
     };
     if (endGap(last) < endGap(first)) along = -along, std::swap(first, last), first = -first, last = -last;
     part.pivot = centre + first * along;
-    const Eigen::Vector3f axis = along.cross(out);
+    // It lifts away from what holds it: about the axis across it and that direction (up where it
+    // points straight out of its holder).
+    Eigen::Vector3f lift = out - out.dot(along) * along;
+    if (lift.norm() < kLiftMinimum) lift = Eigen::Vector3f::UnitZ() - along.z() * along;
+    const Eigen::Vector3f axis = along.cross(lift);
     part.axis = axis.norm() > 1e-6f ? axis.normalized() : perpendicular(along);
   } else if (high - low < kButtonShare * radius) {
     part.motion = ControlMotion::Button;

@@ -1,0 +1,164 @@
+// Control parts on synthetic panels with known parts: which triangles move, how (knob, lever,
+// button), about which axis and pivot; each way a part is found (its material's component, the
+// connected component, the surface grown around the point, a disc) and the refusals.
+#include "core/controls/control_part.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <numeric>
+
+#include "core/mesh/mesh.h"
+#include "support/analytic_meshes.h"
+
+namespace sagrid {
+namespace {
+
+// A 60 x 40 cm panel facing +z at z = 0 (a box 2 cm thick), in material 0.
+Mesh panel() {
+  Mesh m = test::box({-0.3f, -0.2f, -0.02f}, {0.3f, 0.2f, 0.0f});
+  m.materials.resize(2);
+  m.triangleMaterials.assign(m.triangles.size(), 0);
+  return m;
+}
+
+// Appends `part` in `material`; returns its triangles' indices.
+std::vector<int> addPart(Mesh& mesh, const Mesh& part, int material) {
+  const int first = static_cast<int>(mesh.triangles.size());
+  test::append(mesh, part);
+  mesh.triangleMaterials.resize(mesh.triangles.size(), material);
+  std::vector<int> triangles(part.triangles.size());
+  std::iota(triangles.begin(), triangles.end(), first);
+  return triangles;
+}
+
+TEST(ControlParts, KnobsOnAPanelTurnAboutTheirAxisOutOfThePanel) {
+  Mesh mesh = panel();
+  const auto left = addPart(mesh, test::box({-0.12f, -0.02f, 0.0f}, {-0.08f, 0.02f, 0.025f}), 1);
+  const auto right = addPart(mesh, test::box({0.08f, -0.02f, 0.0f}, {0.12f, 0.02f, 0.025f}), 1);
+  const ControlParts found =
+      findControlParts(mesh, {{-0.1f, 0.0f, 0.025f}, {0.1f, 0.0f, 0.025f}});
+  ASSERT_EQ(found.parts.size(), 2u);
+  for (std::size_t i = 0; i < 2; ++i) {
+    ASSERT_TRUE(found.parts[i]);
+    const ControlPart& part = *found.parts[i];
+    EXPECT_EQ(part.triangles, i == 0 ? left : right);
+    EXPECT_EQ(part.motion, ControlMotion::Knob);
+    EXPECT_EQ(part.origin, PartOrigin::Material);
+    EXPECT_GT(part.axis.dot(Eigen::Vector3f::UnitZ()), 0.99f);  // out of the panel
+    EXPECT_NEAR(part.pivot.x(), i == 0 ? -0.1f : 0.1f, 1e-4f);
+    EXPECT_NEAR(part.pivot.y(), 0.0f, 1e-4f);
+    EXPECT_TRUE(found.warnings[i].empty());
+  }
+}
+
+TEST(ControlParts, WithoutMaterialsTheConnectedComponentIsThePart) {
+  Mesh mesh = panel();
+  const auto knob = addPart(mesh, test::box({-0.02f, -0.02f, 0.0f}, {0.02f, 0.02f, 0.03f}), 0);
+  mesh.triangleMaterials.clear();
+  const ControlParts found = findControlParts(mesh, {{0.0f, 0.0f, 0.03f}});
+  ASSERT_TRUE(found.parts[0]);
+  EXPECT_EQ(found.parts[0]->triangles, knob);
+  EXPECT_EQ(found.parts[0]->origin, PartOrigin::Connected);
+}
+
+TEST(ControlParts, AKnobFusedIntoTheBodyIsFoundByItsMaterial) {
+  Mesh mesh = panel();
+  const auto knob = addPart(mesh, test::box({-0.02f, -0.02f, 0.0f}, {0.02f, 0.02f, 0.03f}), 1);
+  // A bridge of the panel's material joins the knob's corner to the panel's: one connected body.
+  const int a = mesh.triangles[static_cast<std::size_t>(knob.front())][0];
+  mesh.positions.push_back({0.3f, 0.2f, 0.0f});
+  mesh.positions.push_back({0.3f, -0.2f, 0.0f});
+  mesh.normals.resize(mesh.positions.size(), Eigen::Vector3f::UnitZ());
+  const int n = static_cast<int>(mesh.positions.size());
+  mesh.triangles.emplace_back(a, n - 2, n - 1);
+  mesh.triangleMaterials.push_back(0);
+  const ControlParts found = findControlParts(mesh, {{0.0f, 0.0f, 0.03f}});
+  ASSERT_TRUE(found.parts[0]);
+  EXPECT_EQ(found.parts[0]->triangles, knob);
+  EXPECT_EQ(found.parts[0]->origin, PartOrigin::Material);
+}
+
+TEST(ControlParts, ALeverTurnsAboutItsHeldEnd) {
+  Mesh mesh = panel();
+  // A tap body (a post) and a lever from its top reaching 10 cm towards -y.
+  addPart(mesh, test::box({-0.02f, -0.02f, 0.0f}, {0.02f, 0.02f, 0.1f}), 0);
+  const auto lever = addPart(mesh, test::box({-0.008f, -0.12f, 0.1f}, {0.008f, 0.0f, 0.115f}), 1);
+  const ControlParts found = findControlParts(mesh, {{0.0f, -0.06f, 0.115f}});
+  ASSERT_TRUE(found.parts[0]);
+  const ControlPart& part = *found.parts[0];
+  EXPECT_EQ(part.triangles, lever);
+  EXPECT_EQ(part.motion, ControlMotion::Lever);
+  EXPECT_NEAR(part.pivot.y(), 0.0f, 1e-3f);  // the end over the post
+  EXPECT_GT(std::abs(part.axis.x()), 0.99f);  // across the lever, level
+  // A positive turn lifts the free end.
+  const Eigen::Vector3f tip(0.0f, -0.12f, 0.1075f);
+  const Eigen::Vector3f lift = part.axis.cross(tip - part.pivot);
+  EXPECT_GT(lift.z(), 0.0f);
+}
+
+TEST(ControlParts, AFlatPadIsAButtonPressedIntoThePanel) {
+  Mesh mesh = panel();
+  const auto pad = addPart(mesh, test::box({-0.02f, -0.02f, 0.0f}, {0.02f, 0.02f, 0.003f}), 1);
+  const ControlParts found = findControlParts(mesh, {{0.0f, 0.0f, 0.003f}});
+  ASSERT_TRUE(found.parts[0]);
+  EXPECT_EQ(found.parts[0]->triangles, pad);
+  EXPECT_EQ(found.parts[0]->motion, ControlMotion::Button);
+  EXPECT_LT(found.parts[0]->axis.z(), -0.99f);
+}
+
+// A panel of 2 cm cells whose vertex at the point is raised: a bump of the panel's own surface.
+Mesh bumpyPanel(float bump) {
+  Mesh m;
+  const int n = 21;
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const float x = -0.2f + 0.02f * i, y = -0.2f + 0.02f * j;
+      const bool centre = i == n / 2 && j == n / 2;
+      m.positions.push_back({x, y, centre ? bump : 0.0f});
+    }
+  for (int j = 0; j + 1 < n; ++j)
+    for (int i = 0; i + 1 < n; ++i) {
+      const int a = j * n + i;
+      m.triangles.emplace_back(a, a + 1, a + n + 1);
+      m.triangles.emplace_back(a, a + n + 1, a + n);
+    }
+  m.computeVertexNormals();
+  return m;
+}
+
+TEST(ControlParts, AFusedBumpIsGrownAndAPrintedKeyGetsADisc) {
+  // A second control 12 cm away sets the grow radius (0.45 x 12 = 5.4 cm).
+  const std::vector<Eigen::Vector3f> points{{0.0f, 0.0f, 0.02f}, {0.12f, 0.0f, 0.0f}};
+  const ControlParts bumped = findControlParts(bumpyPanel(0.02f), points);
+  ASSERT_TRUE(bumped.parts[0]);
+  EXPECT_EQ(bumped.parts[0]->origin, PartOrigin::Grown);
+  EXPECT_EQ(bumped.parts[0]->triangles.size(), 6u);  // the fan around the raised vertex
+  const ControlParts flat = findControlParts(bumpyPanel(0.0f), points);
+  ASSERT_TRUE(flat.parts[0]);
+  EXPECT_EQ(flat.parts[0]->origin, PartOrigin::Disc);
+  EXPECT_TRUE(flat.parts[0]->triangles.empty());
+  EXPECT_GT(flat.parts[0]->radius, 0.0f);
+  EXPECT_NE(flat.warnings[0].find("printed"), std::string::npos);
+}
+
+TEST(ControlParts, NoPointsAndNoSurfaceAreNotErrors) {
+  EXPECT_TRUE(findControlParts(panel(), {}).parts.empty());
+  const ControlParts none = findControlParts(Mesh(), {{0, 0, 0}});
+  ASSERT_EQ(none.parts.size(), 1u);
+  EXPECT_FALSE(none.parts[0]);
+  EXPECT_FALSE(none.warnings[0].empty());
+}
+
+TEST(ControlParts, DescribeAGivenPartIgnoresTrianglesTheMeshLacks) {
+  Mesh mesh = panel();
+  auto knob = addPart(mesh, test::box({-0.02f, -0.02f, 0.0f}, {0.02f, 0.02f, 0.03f}), 1);
+  knob.push_back(100000);
+  knob.push_back(-3);
+  const ControlPart part = describeControlPart(mesh, knob, PartOrigin::Grown);
+  EXPECT_EQ(part.triangles.size(), 12u);
+  EXPECT_EQ(part.motion, ControlMotion::Knob);
+}
+
+}  // namespace
+}  // namespace sagrid
