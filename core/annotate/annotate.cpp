@@ -7,6 +7,7 @@
 #include "core/annotate/category_evidence.h"
 #include "core/annotate/point_passes.h"
 #include "core/annotate/suggested_points.h"
+#include "core/controls/control_annotation.h"
 #include "core/annotate/symmetry_averaging.h"
 #include "core/annotate/units_record.h"
 #include "core/common/error.h"
@@ -218,6 +219,7 @@ AnnotationResult annotateMeshFile(const fs::path& meshFile, const std::string& i
     finish();
     return r;
   }
+  annotateControls(r.labels, mesh);
   r.objectConfidence = options.confidence.probability(leastSurePointDistance(r.predictions));
   r.labels.extra["prediction"] = {{"category_similarity", r.categorySimilarity},
                                   {"category_retrieved", r.categoryRetrieved},

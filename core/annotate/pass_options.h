@@ -19,8 +19,8 @@ namespace sagrid {
 // the field; 12: on stoves, burner caps repeat after part ownership; 13: on stoves, a larger knob
 // continuing a row of three or more gets a point; 14: on sinks, a toggle point on the spout's part
 // moves to a part beside it; 15: a rejected object keeps its likeliest category's points as
-// suggestions).
-inline constexpr int kPointPassesVersion = 15;
+// suggestions; 16: every toggle button point records its control part, motion and burner).
+inline constexpr int kPointPassesVersion = 16;
 
 struct PassOptions {
   // Test-time augmentation: copies averaged per model (1 = off, 8 = all). 8 by default: on the

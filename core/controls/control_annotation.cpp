@@ -1,0 +1,40 @@
+#include "core/controls/control_annotation.h"
+
+#include "core/controls/control_pairing.h"
+#include "core/controls/control_part.h"
+#include "core/controls/control_record.h"
+
+namespace sagrid {
+
+std::vector<std::string> annotateControls(ObjectLabels& labels, const Mesh& mesh) {
+  std::vector<std::size_t> toggles, burners;
+  std::vector<Eigen::Vector3f> points;
+  std::vector<Eigen::Vector2f> knobXy, burnerXy;
+  for (std::size_t i = 0; i < labels.affordances.size(); ++i) {
+    const AffordancePoint& p = labels.affordances[i];
+    const Eigen::Vector3f zUp = fileToZUp(p.position, mesh.fileUp);
+    if (p.type == "togglebutton") toggles.push_back(i), points.push_back(zUp), knobXy.push_back(zUp.head<2>());
+    if (p.type == "heatsource") burners.push_back(i), burnerXy.push_back(zUp.head<2>());
+  }
+  std::vector<std::string> warnings;
+  if (toggles.empty()) return warnings;
+  const ControlParts found = findControlParts(mesh, points);
+  const std::vector<int> drives = pairKnobsWithBurners(knobXy, burnerXy);
+  for (std::size_t k = 0; k < toggles.size(); ++k) {
+    AffordancePoint& point = labels.affordances[toggles[k]];
+    if (!found.warnings[k].empty())
+      warnings.push_back("toggle button point " + std::to_string(toggles[k] + 1) + ": " +
+                         found.warnings[k]);
+    if (point.status != AffordanceStatus::Predicted && point.extra.contains(kControlField)) continue;
+    if (!found.parts[k]) {
+      point.extra.erase(kControlField);
+      continue;
+    }
+    ControlRecord record{*found.parts[k], {}};
+    if (!burners.empty()) record.drives = drives[k];
+    writeControlRecord(point, record, mesh.fileUp);
+  }
+  return warnings;
+}
+
+}  // namespace sagrid
