@@ -10,12 +10,14 @@
 #include "core/annotate/repeated_parts_pass.h"
 #include "core/annotate/touch_keys_pass.h"
 #include "core/controls/control_part.h"
+#include "core/controls/control_turn.h"
 #include "core/features/printed_marks.h"
 #include "core/geometry/material_parts.h"
 #include "core/geometry/surface_scene.h"
 #include "core/grid/mesh_summary.h"
 #include "core/grid/normalization.h"
 #include "core/labels/labels.h"
+#include "core/mesh/mesh_export.h"
 #include "core/mesh/mesh_import.h"
 
 namespace {
@@ -79,7 +81,8 @@ void listRoundFlatFamilies(const sagrid::Mesh& mesh) {
 }
 
 // The control part of each toggle button point of a labels file, as the exports cut and move it.
-void listControls(const sagrid::Mesh& mesh, const std::string& labelsPath) {
+void listControls(const sagrid::Mesh& mesh, const std::string& labelsPath, float turn,
+                  const std::string& turnedMesh) {
   const sagrid::ObjectLabels labels = sagrid::readLabels(labelsPath);
   std::vector<Eigen::Vector3f> points;
   for (const auto& point : labels.affordances)
@@ -103,6 +106,13 @@ void listControls(const sagrid::Mesh& mesh, const std::string& labelsPath) {
     if (!controls.warnings[i].empty()) std::printf(" -- %s", controls.warnings[i].c_str());
     std::printf("\n");
   }
+  if (turnedMesh.empty()) return;
+  std::vector<sagrid::ControlPart> parts;
+  for (const auto& part : controls.parts)
+    if (part) parts.push_back(*part);
+  const float press = turn * 0.005f / 0.6f;  // 0.6 rad presses a button 5 mm (mesh units)
+  sagrid::exportMesh(sagrid::turnControls(mesh, parts, turn, press), turnedMesh);
+  std::printf("controls turned by %g rad: %s\n", turn, turnedMesh.c_str());
 }
 
 void setupInfo(CLI::App& root) {
@@ -113,7 +123,8 @@ void setupInfo(CLI::App& root) {
     std::string mesh, up;
     int resolution = sagrid::kDefaultGridResolution;
     bool json = false, marks = false, keys = false, parts = false, materialParts = false;
-    std::string controls;
+    std::string controls, turnedMesh;
+    float turn = 0.6f;
   };
   auto o = std::make_shared<Options>();
   cmd->add_option("mesh", o->mesh, "Mesh file (.obj .gltf .glb .fbx .dae .ply .stl)")->required();
@@ -140,6 +151,11 @@ void setupInfo(CLI::App& root) {
                   "Also list, for each toggle button point of this labels.json, the control part "
                   "the exports cut and move: knob, lever or button, where its part comes from "
                   "(connected, material, grown, disc), its triangles, axis and pivot (file frame)");
+  cmd->add_option("--turned-mesh", o->turnedMesh,
+                  "With --controls: also write the mesh with every control moved as the exports "
+                  "move it (.obj or .glb, file frame): knobs and levers turned by --turn radians, "
+                  "buttons pressed");
+  cmd->add_option("--turn", o->turn, "Angle for --turned-mesh, radians")->capture_default_str();
   cmd->callback([o] {
     const auto summary = sagrid::summarizeMesh(o->mesh, sagrid::ImportOptions(sagrid::parseUpAxis(o->up), /*detect=*/true),
                                                o->resolution);
@@ -149,7 +165,7 @@ void setupInfo(CLI::App& root) {
     const sagrid::ImportOptions import(summary.fileUp, /*detect=*/false);
     const sagrid::Mesh mesh = sagrid::importMesh(o->mesh, import);
     if (o->materialParts) listMaterialParts(mesh);
-    if (!o->controls.empty()) listControls(mesh, o->controls);
+    if (!o->controls.empty()) listControls(mesh, o->controls, o->turn, o->turnedMesh);
     if (o->marks) {
       const sagrid::PrintedMarks marks = sagrid::findPrintedMarks(mesh);
       listCircles("printed zones", marks.zones, mesh.fileUp);

@@ -37,6 +37,8 @@ constexpr float kLeverElongation = 2.2f;
 constexpr float kLiftMinimum = 0.3f;
 // A lever's ends: the vertices within this share of its length from each end.
 constexpr float kLeverEndShare = 0.15f;
+// A lever's held end this many times wider than its free end is a hub it turns with.
+constexpr float kHubShare = 2.0f;
 // A disc cut around a printed key: this share of the grown radius.
 constexpr float kDiscShare = 0.5f;
 
@@ -278,6 +280,29 @@ float areaOf(const Surface& s, const std::vector<int>& triangles) {
   return area;
 }
 
+// The vertices within kLeverEndShare of a lever's length from one end: their centroid and how far
+// they reach from the lever's line.
+struct EndSlab {
+  Eigen::Vector3f centroid = Eigen::Vector3f::Zero();
+  float width = 0;
+};
+
+EndSlab endSlab(const std::vector<Eigen::Vector3f>& vertices, const Eigen::Vector3f& centre,
+                const Eigen::Vector3f& along, float end, float length) {
+  EndSlab slab;
+  int count = 0;
+  for (const auto& v : vertices)
+    if (std::abs((v - centre).dot(along) - end) <= kLeverEndShare * length) slab.centroid += v, ++count;
+  if (count == 0) return slab;
+  slab.centroid /= static_cast<float>(count);
+  for (const auto& v : vertices) {
+    if (std::abs((v - centre).dot(along) - end) > kLeverEndShare * length) continue;
+    const Eigen::Vector3f d = v - slab.centroid;
+    slab.width = std::max(slab.width, (d - d.dot(along) * along).norm());
+  }
+  return slab;
+}
+
 ControlPart describe(const Surface& s, std::vector<int> triangles, PartOrigin origin) {
   ControlPart part;
   part.origin = origin;
@@ -325,18 +350,24 @@ ControlPart describe(const Surface& s, std::vector<int> triangles, PartOrigin or
       first = std::min(first, t), last = std::max(last, t);
     }
     const auto endGap = [&](float end) {
-      Eigen::Vector3f sum = Eigen::Vector3f::Zero();
-      int count = 0;
-      for (const auto& v : vertices)
-        if (std::abs((v - centre).dot(along) - end) <= kLeverEndShare * (last - first)) sum += v, ++count;
-      Eigen::Vector3f nearest = centre;
-      const Eigen::Vector3f slab = count ? Eigen::Vector3f(sum / static_cast<float>(count)) : centre;
+      const Eigen::Vector3f slab = endSlab(vertices, centre, along, end, last - first).centroid;
+      Eigen::Vector3f nearest = slab;
       if (nearestTriangle(s, slab, [&](std::size_t t) { return !inPart[t]; }, &nearest) < 0)
         return 0.0f;
       return (nearest - slab).norm();
     };
     if (endGap(last) < endGap(first)) along = -along, std::swap(first, last), first = -first, last = -last;
     part.pivot = centre + first * along;
+    // A lever on a hub (a cartridge's cap, much wider than the lever's free end) turns with the
+    // hub about the hub's axis, out of what holds it.
+    const EndSlab held = endSlab(vertices, centre, along, first, last - first);
+    const EndSlab free = endSlab(vertices, centre, along, last, last - first);
+    if (held.width > kHubShare * std::max(free.width, 1e-12f)) {
+      part.pivot = held.centroid;
+      part.axis = out;
+      part.triangles = std::move(triangles);
+      return part;
+    }
     // It lifts away from what holds it: about the axis across it and that direction (up where it
     // points straight out of its holder).
     Eigen::Vector3f lift = out - out.dot(along) * along;

@@ -1,0 +1,18 @@
+// An object with its controls moved as a simulator would move them: each hinged part turned by an
+// angle about its axis through its pivot, each slide pressed by a distance along its axis. The
+// parts' triangles get vertices of their own (a fused knob's seam stays with the body), so the
+// body keeps its shape. For looking at what an export will do (`sagrid info --turn`).
+#pragma once
+
+#include <vector>
+
+#include "core/controls/control_part.h"
+#include "core/mesh/mesh.h"
+
+namespace sagrid {
+
+// `parts` in the mesh's frame and units; discs (no triangles) move nothing.
+Mesh turnControls(const Mesh& mesh, const std::vector<ControlPart>& parts, float angle,
+                  float press);
+
+}  // namespace sagrid
