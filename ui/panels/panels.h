@@ -28,6 +28,8 @@ bool drawMainMenu(Session& session, FileBrowser& browser);
 // `confidence`: the models' confidence map, for the precision measured at the auto-accept setting.
 void drawQueuePanel(Session& session, const ConfidenceCalibration& confidence);
 void drawPointsPanel(Session& session);
+// The selected toggle button's control part, motion, axis and burner (inside the Points panel).
+void drawControlEditor(Session& session, int index);
 void drawFieldPanel(Session& session, const SceneRenderer& scene);
 void drawObjectPanel(Session& session);
 void drawLogPanel(const LogBuffer& log);

@@ -92,6 +92,7 @@ void drawPointsPanel(Session& session) {
       }
       ImGui::EndCombo();
     }
+    if (points[std::size_t(selected)].type == "togglebutton") drawControlEditor(session, selected);
   } else if (!points.empty()) {
     if (ImGui::Button("Accept all and next (A)", ImVec2(-1, 0))) session.accept();
   }

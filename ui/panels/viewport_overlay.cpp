@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "ui/app/session.h"
+#include "ui/document/control_view.h"
 #include "ui/panels/panels.h"
 #include "ui/render/colormap.h"
 #include "ui/render/scene_renderer.h"
@@ -44,6 +45,39 @@ void pointLabels(const Session& session, ImDrawList* draw) {
                         IM_COL32(15, 17, 20, 190), 3.0f);
     draw->AddText(textAt, toU32(typeColor(p.type)), text);
   }
+}
+
+// The selected toggle button's moving part, translucent, and the axis it turns about (or slides
+// along) through its pivot.
+void selectedControl(const Session& session, ImDrawList* draw) {
+  const AnnotationDocument* doc = session.document();
+  const auto shown = shownControl(*doc, doc->selected());
+  if (!shown) return;
+  const ViewportRect& vp = session.viewport();
+  const Mesh& mesh = doc->mesh();
+  const auto toScreen = [&](const Eigen::Vector3f& p, ImVec2& out) {
+    Eigen::Vector2f pixel;
+    if (!session.camera().project(p, pixel)) return false;
+    out = ImVec2(vp.x + pixel.x(), vp.y + pixel.y());
+    return true;
+  };
+  constexpr std::size_t kMaxDrawn = 20000;  // a highlight, not a second renderer
+  const ImU32 fill = IM_COL32(90, 230, 110, 70);
+  for (std::size_t i = 0; i < shown->part.triangles.size() && i < kMaxDrawn; ++i) {
+    const auto& t = mesh.triangles[static_cast<std::size_t>(shown->part.triangles[i])];
+    ImVec2 a, b, c;
+    if (toScreen(mesh.positions[std::size_t(t[0])], a) && toScreen(mesh.positions[std::size_t(t[1])], b) &&
+        toScreen(mesh.positions[std::size_t(t[2])], c))
+      draw->AddTriangleFilled(a, b, c, fill);
+  }
+  const float reach = std::max(shown->part.radius * 2.0f, 1e-3f * mesh.bounds().diagonal().norm());
+  ImVec2 from, to;
+  if (toScreen(shown->part.pivot - reach * shown->part.axis, from) &&
+      toScreen(shown->part.pivot + reach * shown->part.axis, to)) {
+    draw->AddLine(from, to, IM_COL32(255, 220, 60, 255), 2.5f);
+    draw->AddCircleFilled(to, 4.0f, IM_COL32(255, 220, 60, 255));
+  }
+  if (toScreen(shown->part.pivot, from)) draw->AddCircle(from, 5.0f, IM_COL32(255, 220, 60, 255));
 }
 
 // The world axes as seen by the camera, in the viewport's bottom-left corner.
@@ -113,6 +147,7 @@ void drawViewportOverlay(const Session& session, const SceneRenderer& scene) {
                   IM_COL32(170, 175, 185, 255), hint);
     return;
   }
+  if (session.view().showPoints) selectedControl(session, draw);
   if (session.view().showPoints) pointLabels(session, draw);
   legend(session, scene, draw);
 }

@@ -1,0 +1,26 @@
+// The control of a toggle button point as the GUI shows and edits it: the point's record, else the
+// part the exports would find on the mesh (core/controls), in the mesh's z-up frame. Found parts
+// are kept until the document changes, so drawing a selected point costs nothing per frame.
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "core/controls/control_part.h"
+
+namespace sagrid::ui {
+
+class AnnotationDocument;
+
+struct ShownControl {
+  ControlPart part;            // z-up mesh frame
+  bool recorded = false;       // from labels.json; else found now
+  std::optional<int> drives;   // the record's burner (an index among the heat sources)
+  std::string warning;         // why a found one is a disc or missing
+};
+
+// Nullopt for points that are not toggle buttons, and where no part can move (warning then lost:
+// see findControlParts). Throws nothing: a malformed record reads as none.
+std::optional<ShownControl> shownControl(const AnnotationDocument& document, int index);
+
+}  // namespace sagrid::ui

@@ -1,0 +1,105 @@
+// The selected toggle button's control in the Points panel (issue 42): what moves, how, about
+// which axis, and on a stove which burner it lights; each change one undoable command. The
+// viewport draws the part and its axis (viewport_overlay.cpp).
+#include <imgui.h>
+
+#include <cstdio>
+#include <memory>
+
+#include "core/controls/control_record.h"
+#include "ui/app/session.h"
+#include "ui/document/control_commands.h"
+#include "ui/document/control_view.h"
+#include "ui/panels/panels.h"
+
+namespace sagrid::ui {
+
+namespace {
+
+void setControl(Session& session, int index, const ShownControl& shown, const std::string& what) {
+  ControlRecord record{shown.part, shown.drives};
+  session.execute(std::make_unique<SetControlCommand>(
+      index, controlJson(record, session.document()->mesh().fileUp), what));
+}
+
+void motionCombo(Session& session, int index, ShownControl shown) {
+  ImGui::SetNextItemWidth(110);
+  if (!ImGui::BeginCombo("##motion", toString(shown.part.motion))) return;
+  for (ControlMotion m : {ControlMotion::Knob, ControlMotion::Lever, ControlMotion::Button}) {
+    if (ImGui::Selectable(toString(m), m == shown.part.motion) && m != shown.part.motion) {
+      shown.part.motion = m;
+      setControl(session, index, shown, std::string("moves as a ") + toString(m));
+    }
+  }
+  ImGui::EndCombo();
+}
+
+void axisButtons(Session& session, int index, ShownControl shown) {
+  if (ImGui::Button("Flip axis")) {
+    shown.part.axis = -shown.part.axis;
+    setControl(session, index, shown, "axis flipped");
+  }
+  ImGui::SameLine();
+  const char* names[] = {"x", "y", "z"};
+  for (int a = 0; a < 3; ++a) {
+    ImGui::SameLine();
+    if (ImGui::SmallButton(names[a])) {
+      shown.part.axis = Eigen::Vector3f::Unit(a);
+      setControl(session, index, shown, std::string("axis along ") + names[a]);
+    }
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Axis along the view's %s (z up)", names[a]);
+  }
+}
+
+// The burner a stove knob lights: one of the heat source points, or none.
+void drivesCombo(Session& session, int index, ShownControl shown) {
+  const auto& points = session.document()->points();
+  std::vector<int> burners;
+  for (int i = 0; i < static_cast<int>(points.size()); ++i)
+    if (points[std::size_t(i)].type == "heatsource") burners.push_back(i);
+  if (burners.empty()) return;
+  const int current = shown.drives.value_or(-1);
+  char preview[64] = "no burner";
+  if (current >= 0 && current < static_cast<int>(burners.size()))
+    std::snprintf(preview, sizeof preview, "burner: point %d", burners[std::size_t(current)] + 1);
+  ImGui::SetNextItemWidth(-1);
+  if (!ImGui::BeginCombo("##drives", preview)) return;
+  for (int k = -1; k < static_cast<int>(burners.size()); ++k) {
+    char label[64] = "no burner";
+    if (k >= 0) std::snprintf(label, sizeof label, "burner: point %d", burners[std::size_t(k)] + 1);
+    if (ImGui::Selectable(label, k == current) && k != current) {
+      shown.drives = k;
+      setControl(session, index, shown, label);
+    }
+  }
+  ImGui::EndCombo();
+}
+
+}  // namespace
+
+void drawControlEditor(Session& session, int index) {
+  const AnnotationDocument& doc = *session.document();
+  const std::optional<ShownControl> shown = shownControl(doc, index);
+  ImGui::Separator();
+  ImGui::TextUnformatted("Control");
+  if (!shown) {
+    ImGui::TextDisabled("No part moves here: a site only in the exports.");
+    return;
+  }
+  ImGui::Text("%s, %zu triangles (%s)%s", toString(shown->part.motion),
+              shown->part.triangles.size(), toString(shown->part.origin),
+              shown->recorded ? "" : ", found now");
+  if (!shown->warning.empty()) ImGui::TextWrapped("%s", shown->warning.c_str());
+  motionCombo(session, index, *shown);
+  ImGui::SameLine();
+  axisButtons(session, index, *shown);
+  drivesCombo(session, index, *shown);
+  if (!shown->recorded && ImGui::Button("Keep this part"))
+    setControl(session, index, *shown, "part kept");
+  if (shown->recorded) {
+    if (ImGui::Button("Find the part again"))
+      session.execute(std::make_unique<SetControlCommand>(index, nlohmann::json(), "found again"));
+  }
+}
+
+}  // namespace sagrid::ui
