@@ -135,7 +135,7 @@ void writeControlBody(std::ostringstream& xml, const ControlGeometry& control,
         << "\" pos=\"0 0 0\" axis=\"" << formatVector(joint.axis.cast<double>())
         << "\" limited=\"true\" range=\"" << formatNumber(joint.low) << " "
         << formatNumber(joint.high) << "\" damping=\"" << formatNumber(kControlDamping)
-        << "\"/>\n";
+        << "\" armature=\"" << formatNumber(kControlArmature) << "\"/>\n";
   }
   const std::string visual = "visual_" + body;
   if (!control.mesh.triangles.empty()) {
@@ -163,8 +163,10 @@ void writeSpoutBody(std::ostringstream& xml, const MjcfSite& water) {
       << "\" diaginertia=\"" << formatNumber(kSpoutInertia) << " " << formatNumber(kSpoutInertia)
       << " " << formatNumber(kSpoutInertia) << "\"/>\n"
       << "        <joint name=\"" << escapeXml(body) << "_joint\" type=\"hinge\" pos=\"0 0 0\" "
-         "axis=\"0 0 1\" limited=\"true\" range=\"" << formatNumber(-kLockedRange) << " " << formatNumber(kLockedRange) << "\" damping=\""
-      << formatNumber(kControlDamping) << "\"/>\n";
+         "axis=\"0 0 1\" limited=\"true\" range=\""
+      << formatNumber(-kLockedRange) << " " << formatNumber(kLockedRange) << "\" damping=\""
+      << formatNumber(kControlDamping) << "\" armature=\"" << formatNumber(kControlArmature)
+      << "\"/>\n";
   writeSite(xml, water, "        ", outlet);
   xml << "      </body>\n";
 }

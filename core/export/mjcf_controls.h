@@ -28,6 +28,9 @@ struct MjcfJoint {
 // A tap handle's temperature turns +-45 degrees.
 inline constexpr double kTemperatureRange = 0.78539816;
 inline constexpr double kLockedRange = 1e-4;  // radians
+// Added to a control joint's inertia (kg m^2): a knob of a few grams is otherwise near singular
+// for MuJoCo ("inertia matrix too close to singular").
+inline constexpr double kControlArmature = 1e-4;
 
 // The joints of the control named `body` (its site's name): `<body>_joint`; a sink's only handle
 // also turns about z for the temperature (`handle_temp_joint`).
