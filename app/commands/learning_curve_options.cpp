@@ -26,6 +26,10 @@ std::shared_ptr<LearningCurveCli> addLearningCurveOptions(CLI::App& eval) {
                   "model with objects in DATA)");
   eval.add_option("--folds", o->folds, "With --learning-curve: folds (default 3)")
       ->check(CLI::Range(2, 1000));
+  eval.add_flag("--by-source", o->bySource,
+                "With --learning-curve: folds of whole sources (each wild-pool repository, Sweet "
+                "Home 3D library, other dataset folder), none fine-tuned on and held out at once "
+                "(leave-one-source-out); --folds is then the number of source groups");
   eval.add_option("--ks", o->ks,
                   "With --learning-curve: object counts, e.g. 0,2,5,10,all (default)");
   eval.add_option("--seed", o->seed, "With --learning-curve: seed of the folds and fine-tunes");
@@ -44,6 +48,7 @@ bool runLearningCurveIfAsked(const LearningCurveCli& cli, CLI::App& eval, const 
   o.initDir = !cli.init.empty() ? fs::path(cli.init) : sagrid::defaultModelsDir();
   o.modelNames = cli.models;
   o.folds = cli.folds;
+  o.bySource = cli.bySource;
   o.ks = parseLearningCurveKs(cli.ks);
   o.seed = cli.seed;
   o.epochs = epochs;

@@ -17,10 +17,11 @@ struct LearningCurveCli {
   std::string init, ks = "0,2,5,10,all", replay;
   std::vector<std::string> models;
   int folds = 3;
+  bool bySource = false;
   unsigned seed = 1;
 };
 
-// Adds --learning-curve, --init, --model, --folds, --ks, --seed, --replay to `eval`.
+// Adds --learning-curve, --init, --model, --folds, --by-source, --ks, --seed, --replay to `eval`.
 std::shared_ptr<LearningCurveCli> addLearningCurveOptions(CLI::App& eval);
 
 // Runs the learning curve on --data with eval's --minutes / --epochs / --cache / --out when

@@ -13,6 +13,7 @@
 #include "core/common/atomic_file.h"
 #include "core/common/error.h"
 #include "core/dataset/dataset.h"
+#include "core/dataset/object_source.h"
 #include "core/eval/evaluation.h"
 #include "core/labels/labels.h"
 #include "core/model/model_card.h"
@@ -31,6 +32,7 @@ struct RealObject {
   DatasetEntry entry;
   std::string category;
   std::set<std::string> types;
+  std::string source;
 };
 
 std::string kLabel(int k) { return k == kAllObjects ? "all" : std::to_string(k); }
@@ -168,6 +170,30 @@ std::vector<std::vector<std::size_t>> kFoldSplit(std::size_t count, int folds, u
   return result;
 }
 
+std::vector<std::vector<std::size_t>> sourceFoldSplit(const std::vector<std::string>& sources,
+                                                      int folds, unsigned seed) {
+  std::map<std::string, std::vector<std::size_t>> members;
+  for (std::size_t i = 0; i < sources.size(); ++i) members[sources[i]].push_back(i);
+  if (members.size() < 2 || folds < 2)
+    throw InvalidArgument("learning curve by source: needs at least 2 sources and 2 folds (got " +
+                          std::to_string(members.size()) + " sources, " + std::to_string(folds) +
+                          " folds)");
+  std::vector<const std::vector<std::size_t>*> order;
+  for (const auto& [source, indices] : members) order.push_back(&indices);
+  std::mt19937 rng(seed);
+  std::shuffle(order.begin(), order.end(), rng);
+  std::stable_sort(order.begin(), order.end(),
+                   [](const auto* a, const auto* b) { return a->size() > b->size(); });
+  std::vector<std::vector<std::size_t>> result(
+      std::min<std::size_t>(static_cast<std::size_t>(folds), members.size()));
+  for (const auto* indices : order) {
+    auto smallest = std::min_element(result.begin(), result.end(),
+                                     [](const auto& a, const auto& b) { return a.size() < b.size(); });
+    smallest->insert(smallest->end(), indices->begin(), indices->end());
+  }
+  return result;
+}
+
 std::vector<int> parseLearningCurveKs(const std::string& text) {
   std::vector<int> ks;
   std::stringstream in(text);
@@ -194,8 +220,8 @@ LearningCurveReport runLearningCurve(const LearningCurveOptions& options) {
   };
   std::vector<RealObject> objects;
   for (const auto& e : readDataset(options.dataDir)) {
-    RealObject o{e, e.category, {}};
     const ObjectLabels labels = readLabels(e.labels);
+    RealObject o{e, e.category, {}, objectSource(labels, e.mesh, options.dataDir.filename().string())};
     if (o.category.empty()) o.category = labels.object.category;
     for (const auto& a : labels.affordances) o.types.insert(a.type);
     objects.push_back(std::move(o));
@@ -237,12 +263,19 @@ LearningCurveReport runLearningCurve(const LearningCurveOptions& options) {
     }
   }
 
-  std::vector<std::string> categories;
-  for (const auto& o : objects) categories.push_back(o.category);
-  const auto split = kFoldSplit(objects.size(), options.folds, options.seed, categories);
+  std::vector<std::string> categories, sources;
+  for (const auto& o : objects) categories.push_back(o.category), sources.push_back(o.source);
+  const auto split = options.bySource
+                         ? sourceFoldSplit(sources, options.folds, options.seed)
+                         : kFoldSplit(objects.size(), options.folds, options.seed, categories);
   for (const auto& fold : split) {
     report.folds.emplace_back();
-    for (std::size_t i : fold) report.folds.back().push_back(objects[i].entry.id);
+    std::set<std::string> foldSources;
+    for (std::size_t i : fold) {
+      report.folds.back().push_back(objects[i].entry.id);
+      foldSources.insert(objects[i].source);
+    }
+    if (options.bySource) report.foldSources.emplace_back(foldSources.begin(), foldSources.end());
   }
   FeatureOptions features = ModelSet::load(options.initDir).featureOptions();
   features.cacheDir =
@@ -358,13 +391,20 @@ std::string learningCurveMarkdown(const LearningCurveReport& r) {
   std::ostringstream md;
   md << "# Learning curve\n\n"
      << "Fine-tuning " << r.initDir.string() << " on k objects of " << r.dataDir.string() << " ("
-     << r.folds.size() << "-fold, seed " << r.seed << ", "
+     << r.folds.size() << "-fold" << (r.foldSources.empty() ? "" : " by source") << ", seed "
+     << r.seed << ", "
      << (r.minutes > 0 && r.epochs == 0 ? std::to_string(r.minutes) + " min"
                                         : std::to_string(r.epochs) + " epoch(s)")
      << " per fine-tune, " << (r.replay ? "with" : "without")
      << " bench replay). Error: the paper's metric (distance from the single predicted point to "
         "the nearest ground truth) on the held-out fold, mean ± sd across folds, in cm. k = 0 "
         "is the init model.\n";
+  for (std::size_t f = 0; f < r.foldSources.size(); ++f) {
+    md << (f == 0 ? "\nFolds (sources held out together):\n" : "") << "- fold " << f + 1 << " ("
+       << r.folds[f].size() << " objects):";
+    for (const auto& source : r.foldSources[f]) md << " " << source;
+    md << "\n";
+  }
   if (!r.ks.empty())
     md << "\n## Average of the models\n\n| k | models | error (cm) | ÷ error at k = "
        << kLabel(r.ks.front()) << " |\n|---|---|---|---|\n";
@@ -396,6 +436,7 @@ json learningCurveJson(const LearningCurveReport& r) {
   j["init"] = fs::absolute(r.initDir).lexically_normal().string();
   j["seed"] = r.seed;
   j["folds"] = r.folds;
+  if (!r.foldSources.empty()) j["fold_sources"] = r.foldSources;
   j["epochs"] = r.epochs;
   j["minutes"] = r.minutes;
   j["replay"] = r.replay;

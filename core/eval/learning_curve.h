@@ -22,7 +22,10 @@ struct LearningCurveOptions {
   std::filesystem::path dataDir;  // the real dataset (object folders or manifest.jsonl)
   std::filesystem::path initDir;  // the models fine-tuned, evaluated as they are for k = 0
   std::vector<std::string> modelNames;  // empty = every model of initDir with data objects
-  int folds = 3;                        // clamped to the object count
+  int folds = 3;                        // clamped to the object count (by source: the sources)
+  // Folds of whole sources (core/dataset/object_source.h: a repository, a library, a dataset
+  // folder): no source is both fine-tuned on and held out, the leave-one-source-out protocol.
+  bool bySource = false;
   std::vector<int> ks = {0, 2, 5, 10, kAllObjects};
   unsigned seed = 1;
   int epochs = 0;       // per fine-tune; 0 = `minutes`
@@ -47,6 +50,7 @@ struct LearningCurveReport {
   std::filesystem::path dataDir, initDir;
   unsigned seed = 1;
   std::vector<std::vector<std::string>> folds;  // object ids per fold
+  std::vector<std::vector<std::string>> foldSources;  // by source: the sources of each fold
   std::vector<int> ks;
   std::vector<std::string> modelNames;
   std::vector<LearningCurvePoint> points;
@@ -62,6 +66,12 @@ struct LearningCurveReport {
 // Throws InvalidArgument for count < 2, folds < 2 or groups of another size.
 std::vector<std::vector<std::size_t>> kFoldSplit(std::size_t count, int folds, unsigned seed,
                                                  const std::vector<std::string>& groups = {});
+
+// Object indices in `folds` disjoint folds of whole sources (sources[i] is object i's): the
+// sources in a seeded order, largest first, each dealt to the fold with the fewest objects so far.
+// The same seed gives the same folds. Throws InvalidArgument for fewer than 2 sources or folds.
+std::vector<std::vector<std::size_t>> sourceFoldSplit(const std::vector<std::string>& sources,
+                                                      int folds, unsigned seed);
 
 // "0,2,5,10,all" -> {0, 2, 5, 10, kAllObjects}; throws InvalidArgument for anything else.
 std::vector<int> parseLearningCurveKs(const std::string& text);

@@ -1,6 +1,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <map>
+#include <set>
 
 #include "core/common/error.h"
 #include "core/eval/learning_curve.h"
@@ -23,6 +25,26 @@ TEST(LearningCurve, FoldsAreDisjointCoverEveryObjectOnceAndAreReproducible) {
   EXPECT_EQ(kFoldSplit(2, 5, 1).size(), 2u);  // clamped to the object count
   EXPECT_THROW(kFoldSplit(1, 3, 1), InvalidArgument);
   EXPECT_THROW(kFoldSplit(5, 1, 1), InvalidArgument);
+}
+
+TEST(LearningCurve, SourceFoldsAreDisjointBySourceCoverEveryObjectAndAreReproducible) {
+  // 16 objects from 6 sources of unequal size.
+  const std::vector<std::string> sources{"a", "a", "a", "a", "a", "b", "b", "b", "c", "c",
+                                         "d", "d", "e", "f", "f", "f"};
+  const auto folds = sourceFoldSplit(sources, 3, 7);
+  ASSERT_EQ(folds.size(), 3u);
+  std::vector<int> seen(sources.size(), 0);
+  std::map<std::string, std::set<std::size_t>> foldsOfSource;
+  for (std::size_t f = 0; f < folds.size(); ++f) {
+    EXPECT_GE(folds[f].size(), 5u);  // 16 objects dealt largest source first: 5, 5, 6
+    for (std::size_t i : folds[f]) ++seen[i], foldsOfSource[sources[i]].insert(f);
+  }
+  for (int s : seen) EXPECT_EQ(s, 1);
+  for (const auto& [source, in] : foldsOfSource) EXPECT_EQ(in.size(), 1u) << source;
+  EXPECT_EQ(sourceFoldSplit(sources, 3, 7), folds);
+  EXPECT_EQ(sourceFoldSplit(sources, 50, 7).size(), 6u);  // at most one fold per source
+  EXPECT_THROW(sourceFoldSplit({"a", "a", "a"}, 3, 1), InvalidArgument);
+  EXPECT_THROW(sourceFoldSplit(sources, 1, 1), InvalidArgument);
 }
 
 TEST(LearningCurve, FoldsAreStratifiedByGroup) {
