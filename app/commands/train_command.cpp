@@ -14,6 +14,7 @@
 
 #include "app/cli_switch.h"
 #include "app/command_registry.h"
+#include "core/training/guarded_update.h"
 #include "app/progress_bar.h"
 #include "core/common/error.h"
 #include "core/generate/dataset_generator.h"
@@ -35,6 +36,7 @@ struct TrainCommandOptions {
   double nearWeight = 0;
   bool resume = false;
   std::optional<bool> coarseToFine;  // unset: from --init's card
+  std::string guard;  // held-out curated objects: the update is adopted only where better
   bool lossGiven = false;  // --near-weight or --target-cap on the command line
 };
 
@@ -186,6 +188,11 @@ void setupTrain(CLI::App& root) {
                   "sampling weight (default 1); repeat to mix datasets: each step picks a dataset "
                   "by weight, then an object uniformly; an epoch is as many draws as all datasets "
                   "hold objects. With --preset: where the bench split is (generated when missing)");
+  cmd->add_option("--guard", o->guard,
+                  "With --init: curated objects of other sources than --data (e.g. another "
+                  "repository's); the fine-tuned model replaces the --init one in --out only if "
+                  "its single-point error there is lower, else the current model is kept and the "
+                  "candidate goes to OUT/refused/ (OUT/guard.jsonl: the figures)");
   cmd->add_option("--init", o->init,
                   "Fine-tune: start from MODEL.pt (card beside it) or a folder holding "
                   "<model>.json, e.g. resources/models. Architecture, mode and features must match");
@@ -264,8 +271,26 @@ void setupTrain(CLI::App& root) {
     if (o->data.empty()) throw sagrid::InvalidArgument("--data is required (or --preset default)");
     if (o->model.empty())
       throw sagrid::InvalidArgument("--model is required, e.g. --model stove.heatsource");
-    trainOne(*o, dataSources(*o), o->model,
-             o->out.empty() ? fs::path("models") : fs::path(o->out));
+    const fs::path out = o->out.empty() ? fs::path("models") : fs::path(o->out);
+    if (o->guard.empty()) {
+      trainOne(*o, dataSources(*o), o->model, out);
+      return;
+    }
+    // Guarded: the candidate trains beside the models, and replaces the current one only where
+    // the held-out curated objects say it is better.
+    if (o->init.empty()) throw sagrid::InvalidArgument("--guard is for fine-tuning; give --init too");
+    sagrid::GuardOptions guard;
+    guard.currentDir = fs::is_directory(o->init) ? fs::path(o->init) : fs::path(o->init).parent_path();
+    guard.candidateDir = out / (".candidate." + o->model);
+    guard.modelName = o->model;
+    guard.heldOutDir = o->guard;
+    fs::remove_all(guard.candidateDir);
+    trainOne(*o, dataSources(*o), o->model, guard.candidateDir);
+    const sagrid::GuardVerdict verdict = sagrid::judgeUpdate(guard);
+    sagrid::applyVerdict(verdict, guard, out);
+    fs::remove_all(guard.candidateDir);
+    std::printf("%s: %s%s\n", o->model.c_str(), verdict.reason.c_str(),
+                verdict.adopted ? "" : (" (candidate in " + (out / "refused").string() + ")").c_str());
   });
 }
 

@@ -17,6 +17,7 @@
 #include "core/eval/evaluation.h"
 #include "core/labels/labels.h"
 #include "core/model/model_card.h"
+#include "core/model/model_files.h"
 #include "core/plot/plot.h"
 #include "core/training/dataset_training.h"
 
@@ -76,17 +77,6 @@ void writeSubsetDataset(const fs::path& dir, const std::vector<const RealObject*
              "\n";
   fs::create_directories(dir);
   writeFileAtomic(dir / "manifest.jsonl", lines);
-}
-
-void copyModelFiles(const fs::path& from, const fs::path& to, const std::string& only = "") {
-  fs::create_directories(to);
-  for (const auto& e : fs::directory_iterator(from)) {
-    if (!e.is_regular_file()) continue;
-    const std::string name = e.path().filename().string();
-    // The model's card, weights and its ensemble members' weights (<model>.<member>.pt).
-    if (!only.empty() && name.rfind(only + ".", 0) != 0) continue;
-    fs::copy_file(e.path(), to / name, fs::copy_options::overwrite_existing);
-  }
 }
 
 struct Stats {
@@ -306,7 +296,7 @@ LearningCurveReport runLearningCurve(const LearningCurveOptions& options) {
     for (const int k : options.ks) {
       const fs::path modelsDir = foldDir / ("k" + kLabel(k)) / "models";
       fs::remove_all(modelsDir);
-      copyModelFiles(options.initDir, modelsDir);
+      model::copyModelFiles(options.initDir, modelsDir);
       std::vector<int> kUsed;
       for (const auto& name : report.modelNames) {
         const auto [category, type] = model::splitModelName(name);
@@ -319,7 +309,7 @@ LearningCurveReport runLearningCurve(const LearningCurveOptions& options) {
         if (used == 0) continue;
         const auto key = std::make_pair(name, used);
         if (tuned.count(key)) {
-          copyModelFiles(tuned[key], modelsDir, name);
+          model::copyModelFiles(tuned[key], modelsDir, name);
           continue;
         }
         const fs::path dataDir = foldDir / (name + ".k" + std::to_string(used));

@@ -1,0 +1,35 @@
+#include "core/model/model_files.h"
+
+#include <vector>
+
+namespace sagrid::model {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::vector<fs::path> filesOf(const fs::path& folder, const std::string& modelName) {
+  std::vector<fs::path> files;
+  for (const auto& e : fs::directory_iterator(folder)) {
+    if (!e.is_regular_file()) continue;
+    const std::string name = e.path().filename().string();
+    if (!modelName.empty() && name.rfind(modelName + ".", 0) != 0) continue;
+    files.push_back(e.path());
+  }
+  return files;
+}
+
+}  // namespace
+
+void copyModelFiles(const fs::path& from, const fs::path& to, const std::string& modelName) {
+  fs::create_directories(to);
+  for (const auto& file : filesOf(from, modelName))
+    fs::copy_file(file, to / file.filename(), fs::copy_options::overwrite_existing);
+}
+
+void moveModelFiles(const fs::path& from, const fs::path& to, const std::string& modelName) {
+  fs::create_directories(to);
+  for (const auto& file : filesOf(from, modelName)) fs::rename(file, to / file.filename());
+}
+
+}  // namespace sagrid::model

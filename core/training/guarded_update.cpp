@@ -1,0 +1,115 @@
+#include "core/training/guarded_update.h"
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "core/annotate/model_set.h"
+#include "core/common/atomic_file.h"
+#include "core/eval/evaluation.h"
+#include "core/labels/labels.h"
+#include "core/dataset/dataset.h"
+#include "core/model/model_card.h"
+#include "core/model/model_files.h"
+
+namespace sagrid {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct HeldOutError {
+  double error = NAN;
+  std::size_t objects = 0;
+};
+
+// The model alone (its files copied to a folder of their own) on the held-out objects.
+HeldOutError heldOutError(const fs::path& modelsDir, const GuardOptions& o, const fs::path& scratch) {
+  fs::remove_all(scratch);
+  model::copyModelFiles(modelsDir, scratch, o.modelName);
+  const ModelSet models = ModelSet::load(scratch);
+  EvaluationOptions e;
+  e.dataDir = o.heldOutDir;
+  e.referenceRoot = o.referenceRoot;
+  e.features = o.features ? *o.features : models.featureOptions();
+  e.features.cacheDir = o.cacheDir.empty() ? o.heldOutDir / ".sagrid-cache" : o.cacheDir;
+  const EvaluationReport report = evaluateModels(models, e);
+  fs::remove_all(scratch);
+  HeldOutError out;
+  const auto& byModel = report.methods.front().byModel;  // "SAGrid argmin (paper)"
+  if (const auto it = byModel.find(o.modelName); it != byModel.end() && it->second.objects > 0) {
+    out.objects = it->second.objects;
+    out.error = it->second.paperError;
+  }
+  return out;
+}
+
+std::string centimetres(double metres) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.1f cm", metres * 100);
+  return text;
+}
+
+// Held-out objects of the model's category with points of its type.
+std::size_t heldOutObjectsOfType(const GuardOptions& o) {
+  const auto [category, type] = model::splitModelName(o.modelName);
+  std::size_t count = 0;
+  for (const auto& entry : readDataset(o.heldOutDir, o.referenceRoot)) {
+    const ObjectLabels labels = readLabels(entry.labels);
+    const std::string objectCategory = entry.category.empty() ? labels.object.category : entry.category;
+    if (objectCategory == category && !labels.ofType(type).empty()) ++count;
+  }
+  return count;
+}
+
+}  // namespace
+
+GuardVerdict judgeUpdate(const GuardOptions& o) {
+  if (heldOutObjectsOfType(o) == 0) {
+    GuardVerdict v;
+    v.model = o.modelName;
+    v.currentError = v.candidateError = NAN;
+    v.reason = "no held-out object of its type in " + o.heldOutDir.string() + ": current model kept";
+    return v;
+  }
+  const fs::path scratch = o.candidateDir / ".guard-scratch";
+  const HeldOutError current = heldOutError(o.currentDir, o, scratch);
+  const HeldOutError candidate = heldOutError(o.candidateDir, o, scratch);
+  GuardVerdict v;
+  v.model = o.modelName;
+  v.objects = candidate.objects;
+  v.currentError = current.error;
+  v.candidateError = candidate.error;
+  if (candidate.objects == 0) {
+    v.reason = "no held-out object of its type in " + o.heldOutDir.string() + ": current model kept";
+    return v;
+  }
+  v.adopted = candidate.error < current.error;
+  v.reason = centimetres(current.error) + " -> " + centimetres(candidate.error) + " on " +
+             std::to_string(candidate.objects) + " held-out object(s): " +
+             (v.adopted ? "adopted" : "refused, current model kept");
+  return v;
+}
+
+void applyVerdict(const GuardVerdict& v, const GuardOptions& o, const fs::path& outDir) {
+  fs::create_directories(outDir);
+  if (v.adopted) {
+    model::moveModelFiles(o.candidateDir, outDir, o.modelName);
+  } else {
+    model::moveModelFiles(o.candidateDir, outDir / "refused", o.modelName);
+    if (fs::weakly_canonical(o.currentDir) != fs::weakly_canonical(outDir))
+      model::copyModelFiles(o.currentDir, outDir, o.modelName);
+  }
+  const auto number = [](double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(); };
+  const nlohmann::json line = {{"model", v.model},
+                               {"held_out", fs::absolute(o.heldOutDir).lexically_normal().string()},
+                               {"objects", v.objects},
+                               {"current_error_m", number(v.currentError)},
+                               {"candidate_error_m", number(v.candidateError)},
+                               {"adopted", v.adopted},
+                               {"time", currentUtcTimestamp()}};
+  std::ofstream(outDir / "guard.jsonl", std::ios::app) << line.dump() << "\n";
+}
+
+}  // namespace sagrid

@@ -1,0 +1,46 @@
+// Guarded updates (issue 40, DESIGN.md "Updates are guarded"): a model trained or fine-tuned on
+// curated objects replaces the current one only where curated objects it did not train on say it
+// is better. Both are evaluated with the paper's single-point metric (core/eval) on the held-out
+// objects of the model's category and type; the candidate is adopted when its error is lower,
+// else the current model stays and the candidate is kept aside, with the figures that refused it.
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <string>
+
+#include "core/features/feature_pipeline.h"
+
+
+namespace sagrid {
+
+struct GuardVerdict {
+  std::string model;
+  std::size_t objects = 0;      // held-out objects of its type evaluated
+  double currentError = 0;      // metres (NaN when no object)
+  double candidateError = 0;
+  bool adopted = false;
+  std::string reason;           // one line for the CLI and the GUI
+};
+
+struct GuardOptions {
+  std::filesystem::path currentDir;    // the models folder the update would replace
+  std::filesystem::path candidateDir;  // where the candidate was trained to
+  std::string modelName;               // e.g. "stove.heatsource"
+  std::filesystem::path heldOutDir;    // curated objects of other sources than the training data
+  std::filesystem::path referenceRoot;  // where heldOutDir's manifest may point
+  std::filesystem::path cacheDir;      // features of heldOutDir; empty: heldOutDir/.sagrid-cache
+  // The features the models read; unset: from their cards (backend, resolution).
+  std::optional<FeatureOptions> features;
+};
+
+// Evaluates both; throws what evaluation throws (missing model, unreadable data).
+GuardVerdict judgeUpdate(const GuardOptions& options);
+
+// Puts the verdict into effect in `outDir`: adopted, the candidate's files move there; refused,
+// they move to outDir/refused/ and the current model's files are copied into outDir (unless it is
+// the current folder). Appends the verdict to outDir/guard.jsonl.
+void applyVerdict(const GuardVerdict& verdict, const GuardOptions& options,
+                  const std::filesystem::path& outDir);
+
+}  // namespace sagrid

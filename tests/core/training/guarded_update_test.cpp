@@ -1,0 +1,92 @@
+// Guarded updates: of two models of one type, the guard adopts the one with the lower error on
+// held-out objects and refuses the other, whichever is called current; a refused candidate goes
+// aside with the current model kept in place, and every verdict is logged. Tiny models on a 16^3
+// grid trained for this test.
+#include "core/training/guarded_update.h"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+#include "core/common/atomic_file.h"
+#include "core/generate/dataset_generator.h"
+#include "core/model/model_files.h"
+#include "core/training/dataset_training.h"
+#include "support/test_paths.h"
+
+namespace sagrid {
+namespace {
+
+namespace fs = std::filesystem;
+constexpr const char* kModel = "stove.heatsource";
+
+FeatureOptions tinyFeatures() {
+  FeatureOptions f;
+  f.resolution = 16;
+  f.views = 6;
+  return f;
+}
+
+void trainTiny(const fs::path& data, const fs::path& out, unsigned seed, int epochs) {
+  DatasetTrainingOptions o;
+  o.modelName = kModel;
+  o.architecture = "[3,1,8],[3,2,8,2]";
+  o.features = tinyFeatures();
+  o.dataDir = data;
+  o.outDir = out;
+  o.training.epochs = epochs;
+  o.training.batchSize = 1;
+  o.training.seed = seed;
+  trainFromDataset(o);
+}
+
+TEST(GuardedUpdate, AdoptsTheBetterModelAndRefusesTheWorse) {
+  const fs::path dir = test::freshTempDir();
+  gen::generateDataset({{"stove", 3, 21}}, gen::MeshFormat::Obj, dir / "train");
+  gen::generateDataset({{"stove", 3, 22}}, gen::MeshFormat::Obj, dir / "held-out");
+  trainTiny(dir / "train", dir / "a", 1, 1);
+  trainTiny(dir / "train", dir / "b", 2, 3);
+
+  GuardOptions ab{dir / "a", dir / "b", kModel, dir / "held-out", {}, {}, tinyFeatures()};
+  GuardOptions ba{dir / "b", dir / "a", kModel, dir / "held-out", {}, {}, tinyFeatures()};
+  const GuardVerdict forward = judgeUpdate(ab), backward = judgeUpdate(ba);
+  EXPECT_EQ(forward.objects, 3u);
+  ASSERT_NE(forward.candidateError, forward.currentError);
+  EXPECT_DOUBLE_EQ(forward.candidateError, backward.currentError);  // the same model either way
+  EXPECT_NE(forward.adopted, backward.adopted);
+  const GuardVerdict& adopted = forward.adopted ? forward : backward;
+  EXPECT_LT(adopted.candidateError, adopted.currentError);
+  EXPECT_NE(adopted.reason.find("adopted"), std::string::npos);
+
+  // The refused one in effect: it goes aside, the current model is what OUT holds.
+  const GuardVerdict& refused = forward.adopted ? backward : forward;
+  const GuardOptions& refusedOptions = forward.adopted ? ba : ab;
+  const fs::path candidate = dir / "candidate";
+  model::copyModelFiles(refusedOptions.candidateDir, candidate, kModel);
+  GuardOptions applied = refusedOptions;
+  applied.candidateDir = candidate;
+  applyVerdict(refused, applied, dir / "out");
+  const std::string pt = std::string(kModel) + ".pt";
+  EXPECT_EQ(readFileBytes(dir / "out" / pt), readFileBytes(refusedOptions.currentDir / pt));
+  EXPECT_EQ(readFileBytes(dir / "out" / "refused" / pt), readFileBytes(refusedOptions.candidateDir / pt));
+  EXPECT_FALSE(fs::exists(candidate / pt));
+  std::ifstream log(dir / "out" / "guard.jsonl");
+  std::string line;
+  ASSERT_TRUE(std::getline(log, line));
+  EXPECT_NE(line.find("\"adopted\":false"), std::string::npos) << line;
+}
+
+TEST(GuardedUpdate, WithoutHeldOutObjectsOfItsTypeTheCurrentModelStays) {
+  const fs::path dir = test::freshTempDir();
+  gen::generateDataset({{"stove", 2, 31}}, gen::MeshFormat::Obj, dir / "train");
+  gen::generateDataset({{"sink", 2, 32}}, gen::MeshFormat::Obj, dir / "sinks");
+  trainTiny(dir / "train", dir / "a", 1, 1);
+  trainTiny(dir / "train", dir / "b", 2, 1);
+  const GuardVerdict v = judgeUpdate({dir / "a", dir / "b", kModel, dir / "sinks", {}, {}, tinyFeatures()});
+  EXPECT_FALSE(v.adopted);
+  EXPECT_EQ(v.objects, 0u);
+  EXPECT_NE(v.reason.find("no held-out object"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace sagrid
