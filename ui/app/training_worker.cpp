@@ -1,5 +1,7 @@
 #include "ui/app/training_worker.h"
 
+#include "core/training/guarded_update.h"
+
 #include <algorithm>
 #include <nlohmann/json.hpp>
 #include <set>
@@ -95,7 +97,8 @@ void TrainingWorker::run(TrainingRequest request) {
             options.datasets.push_back(r);
         }
       }
-      options.outDir = request.outDir;
+      const bool guarded = !options.init.empty() && !request.heldOut.empty();
+      options.outDir = guarded ? request.outDir / (".candidate." + options.modelName) : request.outDir;
       options.command = options.init.empty() ? "sagrid gui (Train panel)"
                                              : "sagrid gui (Train panel, fine-tune of " +
                                                    request.initDir.string() + ")";
@@ -120,6 +123,15 @@ void TrainingWorker::run(TrainingRequest request) {
       const auto result = trainFromDataset(options);
       logger()->info("trained {} on {} objects ({:.0f} s)", result.card.name, result.objectsUsed,
                      result.trainingSeconds);
+      if (guarded) {
+        update([&](TrainingStatus& s) { s.phase = "guard: " + options.modelName + " on held-out objects"; });
+        GuardOptions guard{request.initDir, options.outDir, options.modelName, request.heldOut, {}, {}};
+        const GuardVerdict verdict = judgeUpdate(guard);
+        applyVerdict(verdict, guard, request.outDir);
+        fs::remove_all(options.outDir);
+        logger()->info("guard: {}: {}", options.modelName, verdict.reason);
+        update([&](TrainingStatus& s) { s.verdicts.push_back(options.modelName + ": " + verdict.reason); });
+      }
     }
 
     // Predict the queue again with the new models; reviewed objects keep what the curator decided.

@@ -28,6 +28,9 @@ struct TrainingRequest {
   // `sagrid train --init DIR` does; a type without a model there is trained from scratch.
   std::filesystem::path initDir;
   bool replay = true;  // with initDir: the bench split's train half replayed 1:1 beside the set
+  // With initDir: curated objects of other sources; each fine-tuned model replaces the init one
+  // only where it is better there (core/training/guarded_update.h). Empty: unguarded.
+  std::filesystem::path heldOut;
 };
 
 struct TrainingStatus {
@@ -36,6 +39,7 @@ struct TrainingStatus {
   float fraction = 0;         // of the whole request
   std::vector<float> losses;  // per step report of the model being trained
   std::string finished;       // summary once done
+  std::vector<std::string> verdicts;  // the guard's, one line per model
   std::string error;
 };
 

@@ -13,6 +13,7 @@ void drawTrainPanel(Session& session, TrainingWorker& worker,
                     const std::filesystem::path& initModels) {
   if (!ImGui::CollapsingHeader("Train")) return;
   static float minutes = 1.0f;  // UI preference only, not document state
+  static char heldOut[512] = "";  // curated objects of other sources: the guard's
   const AnnotationDocument* doc = session.document();
   const std::string category = doc ? doc->labels().object.category : std::string();
   ImGui::TextWrapped("Training set: %s", session.trainingSetDir.string().c_str());
@@ -22,6 +23,13 @@ void drawTrainPanel(Session& session, TrainingWorker& worker,
   if (!status.running) {
     ImGui::SetNextItemWidth(-110);
     ImGui::SliderFloat("min / model", &minutes, 0.2f, 10.0f, "%.1f");
+    if (!initModels.empty()) {
+      ImGui::SetNextItemWidth(-110);
+      ImGui::InputText("held out", heldOut, sizeof heldOut);
+      if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("A dataset of curated objects from other sources than the training set: "
+                          "each fine-tuned model is adopted only where it is better there");
+    }
     ImGui::BeginDisabled(category.empty());
     const std::string label = category.empty()        ? "Train (set a category)"
                               : initModels.empty() ? "Train " + category + " models"
@@ -34,6 +42,7 @@ void drawTrainPanel(Session& session, TrainingWorker& worker,
       request.minutesPerModel = minutes;
       request.requeue = session.queue().entries();
       request.initDir = initModels;
+      request.heldOut = heldOut;
       worker.start(std::move(request));
     }
     ImGui::EndDisabled();
@@ -48,6 +57,7 @@ void drawTrainPanel(Session& session, TrainingWorker& worker,
                      0.0f, FLT_MAX, ImVec2(-1, 70));
   }
   if (!status.finished.empty()) ImGui::TextWrapped("%s", status.finished.c_str());
+  for (const auto& verdict : status.verdicts) ImGui::TextWrapped("guard: %s", verdict.c_str());
   if (!status.error.empty())
     ImGui::TextColored(ImVec4(1, 0.45f, 0.45f, 1), "%s", status.error.c_str());
 }

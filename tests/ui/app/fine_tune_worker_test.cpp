@@ -43,5 +43,43 @@ TEST(FineTuneWorker, InitsFromTheLoadedModels) {
   }
 }
 
+// Guarded (issue 40): with held-out curated objects each fine-tuned model is judged there; the
+// panel shows one verdict per model and the models folder holds, per model, the better one.
+TEST(FineTuneWorker, GuardsEachModelOnHeldOutObjects) {
+  const auto dir = sagrid::test::freshTempDir();
+  for (const auto& [name, seed] : {std::pair<std::string, int>{"train", 31}, {"held-out", 32}})
+    ASSERT_EQ(sagrid::test::runSagrid("generate --category stove --count 1 --seed " +
+                                      std::to_string(seed) + " --out " +
+                                      sagrid::test::shellQuote((dir / name).string()))
+                  .exitCode,
+              0);
+  const fs::path shipped = fs::path(SAGRID_SOURCE_DIR) / "resources" / "models";
+  TrainingWorker worker;
+  TrainingRequest request;
+  request.dataset = dir / "train";
+  request.category = "stove";
+  request.outDir = dir / "models";
+  request.epochs = 1;
+  request.initDir = shipped;
+  request.replay = false;
+  request.heldOut = dir / "held-out";
+  worker.start(request);
+  for (int i = 0; i < 3600 && worker.running(); ++i)
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  ASSERT_FALSE(worker.running()) << "guarded fine-tune did not finish in 180 s";
+  const TrainingStatus status = worker.status();
+  ASSERT_TRUE(status.error.empty()) << status.error;
+  ASSERT_EQ(status.verdicts.size(), 2u);
+  for (const auto& verdict : status.verdicts) EXPECT_NE(verdict.find("held-out object"), std::string::npos) << verdict;
+  for (const char* name : {"stove.heatsource", "stove.togglebutton"}) {
+    const bool refused = fs::exists(dir / "models" / "refused" / (std::string(name) + ".pt"));
+    const auto card = model::readModelCard(dir / "models" / (std::string(name) + ".json"));
+    const auto init = model::readModelCard(shipped / (std::string(name) + ".json"));
+    // Refused: the shipped model stays; adopted: the fine-tune of it.
+    EXPECT_EQ(card.weightsSha256 == init.weightsSha256, refused) << name;
+  }
+  EXPECT_FALSE(fs::exists(dir / "models" / ".candidate.stove.heatsource"));
+}
+
 }  // namespace
 }  // namespace sagrid::ui
