@@ -73,11 +73,21 @@ std::vector<float> symmetryAveragedDistances(const model::AffordanceModel& model
                                              const std::vector<std::array<int, 3>>& vectorChannels,
                                              int count) {
   count = std::clamp(count, 1, 8);
-  std::vector<float> sum = model.predictDistances(grid);
-  std::vector<std::size_t> order;
+  // Every copy first, then their passes side by side (each on one thread: the same numbers
+  // whatever the thread count), then the sum in the copies' order.
+  std::vector<FeatureGrid> copies;
+  std::vector<std::vector<std::size_t>> orders(static_cast<std::size_t>(count));
+  copies.reserve(static_cast<std::size_t>(count));
+  std::vector<const FeatureGrid*> passes{&grid};
   for (int i = 1; i < count; ++i) {
-    const FeatureGrid copy = transformFeatureGrid(grid, gridSymmetries()[i], vectorChannels, &order);
-    const std::vector<float> d = model.predictDistances(copy);
+    copies.push_back(transformFeatureGrid(grid, gridSymmetries()[i], vectorChannels, &orders[i]));
+    passes.push_back(&copies.back());
+  }
+  std::vector<std::vector<float>> fields = model.predictDistances(passes);
+  std::vector<float> sum = std::move(fields[0]);
+  for (int i = 1; i < count; ++i) {
+    const std::vector<float>& d = fields[i];
+    const std::vector<std::size_t>& order = orders[i];
     for (std::size_t o = 0; o < d.size(); ++o) sum[order[o]] += d[o];
   }
   for (float& d : sum) d /= static_cast<float>(count);

@@ -12,11 +12,14 @@
 
 namespace sagrid {
 
-inline void parallelFor(std::size_t count, std::size_t minParallelCount,
+// On `threadCount` workers (at most; <= 0: defaultThreadCount). Use it for work whose items are
+// independent: a result must not depend on how the range is cut (no float sums across chunks),
+// or it will differ with the thread count.
+inline void parallelFor(std::size_t count, std::size_t minParallelCount, int threadCount,
                         const std::function<void(std::size_t begin, std::size_t end)>& body) {
-  const std::size_t threads =
-      std::min<std::size_t>(static_cast<std::size_t>(defaultThreadCount()),
-                            count / std::max<std::size_t>(1, minParallelCount / 2));
+  const std::size_t threads = std::min<std::size_t>(
+      static_cast<std::size_t>(threadCount > 0 ? threadCount : defaultThreadCount()),
+      count / std::max<std::size_t>(1, minParallelCount / 2));
   if (count < minParallelCount || threads <= 1) {
     if (count > 0) body(0, count);
     return;
@@ -29,6 +32,11 @@ inline void parallelFor(std::size_t count, std::size_t minParallelCount,
   }
   body(0, std::min(count, chunk));
   for (auto& w : workers) w.join();
+}
+
+inline void parallelFor(std::size_t count, std::size_t minParallelCount,
+                        const std::function<void(std::size_t begin, std::size_t end)>& body) {
+  parallelFor(count, minParallelCount, 0, body);
 }
 
 }  // namespace sagrid

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/common/error.h"
+#include "core/common/parallel_for.h"
 
 namespace sagrid {
 
@@ -32,22 +33,24 @@ VoxelAggregator::VoxelAggregator(std::vector<Eigen::Vector3f> points, int channe
       m_sums(m_points.size() * channels, 0.0f),
       m_counts(m_points.size(), 0) {}
 
-void VoxelAggregator::addView(const ViewCamera& camera, const FeatureMap& features,
-                              const DepthMapRef* depth) {
+void VoxelAggregator::checkView(const FeatureMap& features, const DepthMapRef* depth) const {
   if (features.channels != m_channels) {
     throw Error("feature map has " + std::to_string(features.channels) + " channels, expected " +
                 std::to_string(m_channels));
   }
-  const bool occlusion = m_mode == Aggregation::OcclusionAware;
-  if (occlusion && (!depth || !depth->depth)) {
+  if (m_mode == Aggregation::OcclusionAware && (!depth || !depth->depth)) {
     throw Error("occlusion-aware aggregation needs the view's depth map");
   }
-  ++m_viewsAdded;
+}
+
+void VoxelAggregator::addSamples(const ViewCamera& camera, const FeatureMap& features,
+                                 const DepthMapRef* depth, std::size_t begin, std::size_t end) {
+  const bool occlusion = m_mode == Aggregation::OcclusionAware;
   // Project with the rotation inlined: this loop runs points x views times.
   const Eigen::Matrix3f rt = camera.rotation().transpose();
   const Eigen::Vector3f position = camera.position();
   const float f = 0.5f / std::tan(camera.fov / 2.0f);
-  for (std::size_t p = 0; p < m_points.size(); ++p) {
+  for (std::size_t p = begin; p < end; ++p) {
     const Eigen::Vector3f c = rt * (m_points[p] - position);
     if (c.z() <= 0.0f) {
       if (!occlusion) ++m_counts[p];  // TRELLIS: still a view, contributing nothing
@@ -58,6 +61,30 @@ void VoxelAggregator::addView(const ViewCamera& camera, const FeatureMap& featur
     addBilinearSample(features, uv, 1.0f, &m_sums[p * m_channels]);
     ++m_counts[p];
   }
+}
+
+void VoxelAggregator::addView(const ViewCamera& camera, const FeatureMap& features,
+                              const DepthMapRef* depth) {
+  checkView(features, depth);
+  ++m_viewsAdded;
+  addSamples(camera, features, depth, 0, m_points.size());
+}
+
+void VoxelAggregator::addViews(const std::vector<const ViewCamera*>& cameras,
+                               const std::vector<const FeatureMap*>& features,
+                               const std::vector<DepthMapRef>& depths, int threads) {
+  if (features.size() != cameras.size() || (!depths.empty() && depths.size() != cameras.size()))
+    throw Error("addViews: one feature map (and depth map) per camera expected");
+  for (std::size_t v = 0; v < cameras.size(); ++v)
+    checkView(*features[v], depths.empty() ? nullptr : &depths[v]);
+  // Points are independent: how they are split between threads cannot change a sum.
+  constexpr std::size_t kMinParallelPoints = 2048;
+  parallelFor(
+      m_points.size(), kMinParallelPoints, threads, [&](std::size_t begin, std::size_t end) {
+        for (std::size_t v = 0; v < cameras.size(); ++v)
+          addSamples(*cameras[v], *features[v], depths.empty() ? nullptr : &depths[v], begin, end);
+      });
+  m_viewsAdded += static_cast<int>(cameras.size());
 }
 
 void VoxelAggregator::merge(const VoxelAggregator& other) {

@@ -36,7 +36,17 @@ class VoxelAggregator {
 
   // Adds one view. `depth` is required for Aggregation::OcclusionAware (ignored for Mean).
   void addView(const ViewCamera& camera, const FeatureMap& features, const DepthMapRef* depth);
-  void merge(const VoxelAggregator& other);  // same points and settings; for per-thread partials
+  // Adds several views on `threads` workers (<= 0: defaultThreadCount), the points split between
+  // them: each point still adds the views in the order given, so the sums are bit for bit those
+  // of addView one view after the other, whatever the thread count. `depths` as for addView
+  // (empty for Mean).
+  void addViews(const std::vector<const ViewCamera*>& cameras,
+                const std::vector<const FeatureMap*>& features,
+                const std::vector<DepthMapRef>& depths, int threads);
+  // Same points and settings. Float sums depend on their order: merged partials of views split
+  // between threads differ (in the last bits) from one aggregator that saw every view, so a
+  // result that must not depend on the thread count uses addViews instead.
+  void merge(const VoxelAggregator& other);
 
   std::size_t pointCount() const { return m_points.size(); }
   int channels() const { return m_channels; }
@@ -48,6 +58,11 @@ class VoxelAggregator {
   std::vector<float> mean() const;
 
  private:
+  void checkView(const FeatureMap& features, const DepthMapRef* depth) const;
+  // The view's samples for points [begin, end).
+  void addSamples(const ViewCamera& camera, const FeatureMap& features, const DepthMapRef* depth,
+                  std::size_t begin, std::size_t end);
+
   std::vector<Eigen::Vector3f> m_points;
   int m_channels;
   Aggregation m_mode;

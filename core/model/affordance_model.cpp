@@ -1,7 +1,12 @@
 #include "core/model/affordance_model.h"
 
+#include <atomic>
 #include <cmath>
+#include <exception>
+#include <mutex>
+#include <optional>
 #include <sstream>
+#include <thread>
 
 #include "core/common/atomic_file.h"
 #include "core/common/error.h"
@@ -150,23 +155,88 @@ void AffordanceModel::save(const fs::path& cardFile) {
 const ModelCard& AffordanceModel::card() const { return m_impl->card; }
 ModelCard& AffordanceModel::card() { return m_impl->card; }
 
+namespace {
+// A forward pass on the CPU runs on one intra-op thread, so that its result does not depend on
+// the thread count: split between threads, the BLAS (OpenBLAS) computes a GEMM with other
+// blockings and kernels, and ATen's vectorised loops put each chunk's tail on a scalar path. The
+// last bits then decide near-ties between minima of the field, which moved a point by a whole
+// part between a one-process run and the one-core tasks of a Slurm array (issue 42). Several
+// passes (symmetric copies, ensemble members) run side by side instead. ATen keeps the count per
+// thread (an OpenMP setting, which an OpenMP BLAS follows); its global copy, read by threads that
+// start using ATen, is set back to the configured count.
+class OneIntraOpThread {
+ public:
+  OneIntraOpThread() : m_changed(at::get_num_threads() != 1) {
+    if (m_changed) at::set_num_threads(1);
+  }
+  ~OneIntraOpThread() {
+    if (m_changed) at::set_num_threads(defaultThreadCount());
+  }
+  OneIntraOpThread(const OneIntraOpThread&) = delete;
+  OneIntraOpThread& operator=(const OneIntraOpThread&) = delete;
+
+ private:
+  bool m_changed;
+};
+}  // namespace
+
 std::vector<float> AffordanceModel::predictDistances(const FeatureGrid& features) const {
-  m_impl->card.checkFeatures(features);
-  if (features.voxels.empty()) return {};
-  torch::NoGradGuard noGrad;
-  const NetworkObject object = networkObjectOf(features);
-  const NetworkBatch batch =
-      makeNetworkBatch({&object}, m_impl->shape, m_impl->mode, m_impl->device);
-  // The network regresses D = log(1 + distance); report distances (an ensemble's mean distance).
-  auto distances = [&](SAGridNet& net) {
-    net->eval();
-    return torch::expm1(net->forward(batch, m_impl->mode));
-  };
-  torch::Tensor d = distances(m_impl->net);
+  return predictDistances(std::vector<const FeatureGrid*>{&features}).front();
+}
+
+std::vector<std::vector<float>> AffordanceModel::predictDistances(
+    const std::vector<const FeatureGrid*>& grids) const {
+  for (const FeatureGrid* features : grids) m_impl->card.checkFeatures(*features);
   const std::size_t networks = networkCount();
-  for (std::size_t m = 0; m + 1 < networks; ++m) d = d + distances(m_impl->members[m]);
-  d = (d / static_cast<double>(networks)).cpu().contiguous();
-  return std::vector<float>(d.data_ptr<float>(), d.data_ptr<float>() + d.numel());
+  // Before any pass: eval() writes the modules' flags, which concurrent passes only read.
+  m_impl->net->eval();
+  for (std::size_t m = 0; m + 1 < networks; ++m) m_impl->members[m]->eval();
+  const bool cpu = m_impl->device.is_cpu();
+  std::vector<std::vector<float>> out(grids.size());
+  auto predictOne = [&](std::size_t g) {
+    const FeatureGrid& features = *grids[g];
+    if (features.voxels.empty()) return;
+    std::optional<OneIntraOpThread> oneThread;
+    if (cpu) oneThread.emplace();
+    torch::NoGradGuard noGrad;
+    const NetworkObject object = networkObjectOf(features);
+    const NetworkBatch batch =
+        makeNetworkBatch({&object}, m_impl->shape, m_impl->mode, m_impl->device);
+    // The network regresses D = log(1 + distance); report distances (an ensemble's mean, its
+    // networks added in their order).
+    auto distances = [&](SAGridNet& net) {
+      return torch::expm1(net->forward(batch, m_impl->mode));
+    };
+    torch::Tensor d = distances(m_impl->net);
+    for (std::size_t m = 0; m + 1 < networks; ++m) d = d + distances(m_impl->members[m]);
+    d = (d / static_cast<double>(networks)).cpu().contiguous();
+    out[g].assign(d.data_ptr<float>(), d.data_ptr<float>() + d.numel());
+  };
+  const std::size_t workers =
+      cpu ? std::min(grids.size(), static_cast<std::size_t>(defaultThreadCount())) : 1;
+  if (workers <= 1) {
+    for (std::size_t g = 0; g < grids.size(); ++g) predictOne(g);
+    return out;
+  }
+  // Passes are independent: which worker runs one cannot change its numbers.
+  std::atomic<std::size_t> next{0};
+  std::exception_ptr error;
+  std::mutex errorMutex;
+  auto work = [&] {
+    try {
+      for (std::size_t g = next++; g < grids.size(); g = next++) predictOne(g);
+    } catch (...) {
+      std::lock_guard<std::mutex> lock(errorMutex);
+      if (!error) error = std::current_exception();
+      next = grids.size();
+    }
+  };
+  std::vector<std::thread> pool;
+  for (std::size_t t = 1; t < workers; ++t) pool.emplace_back(work);
+  work();
+  for (auto& t : pool) t.join();
+  if (error) std::rethrow_exception(error);
+  return out;
 }
 
 double AffordanceModel::forwardMacs(std::int64_t occupiedVoxels, bool dense) const {

@@ -39,6 +39,12 @@ class AffordanceModel {
   // networks. Checks the features against the card
   // first (ModelError on mismatch).
   std::vector<float> predictDistances(const FeatureGrid& features) const;
+  // The same for several grids (e.g. the symmetric copies of one object), run side by side. On
+  // the CPU each pass runs on one intra-op thread, so the numbers are bit for bit the same
+  // whatever the thread count (SAGRID_THREADS): a one-process run and the one-core tasks of a
+  // Slurm array give the same points. Parallelism comes from passes running side by side.
+  std::vector<std::vector<float>> predictDistances(
+      const std::vector<const FeatureGrid*>& grids) const;
 
   // Networks that predict: 1, or 1 + the ensemble's members (card weights.ensemble).
   std::size_t networkCount() const;

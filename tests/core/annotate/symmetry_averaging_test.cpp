@@ -104,5 +104,28 @@ TEST(SymmetryAveraging, AveragedFieldIsEquivariantForAnyModel) {
   EXPECT_GT(differs, 1e-3);
 }
 
+TEST(SymmetryAveraging, CopiesPredictedSideBySideEqualCopiesPredictedOneByOneBitForBit) {
+  // The copies' passes run on parallel threads, each on one intra-op thread (issue 42): every
+  // copy's field, and their sum in the copies' order, are those of one pass after another.
+  const FeatureGrid g = randomGrid(10, 13);
+  const model::AffordanceModel model = test::untrainedModelFor("stove.heatsource", g, 5);
+  std::vector<FeatureGrid> copies;
+  std::vector<std::vector<std::size_t>> orders(8);
+  for (int i = 0; i < 8; ++i)
+    copies.push_back(transformFeatureGrid(g, gridSymmetries()[i], kNormal, &orders[i]));
+  std::vector<const FeatureGrid*> grids;
+  for (const auto& c : copies) grids.push_back(&c);
+  const std::vector<std::vector<float>> together = model.predictDistances(grids);
+  ASSERT_EQ(together.size(), 8u);
+  std::vector<float> sum(g.voxels.size(), 0.0f);
+  for (int i = 0; i < 8; ++i) {
+    const std::vector<float> alone = model.predictDistances(copies[i]);
+    EXPECT_EQ(together[i], alone) << "copy " << i;
+    for (std::size_t o = 0; o < alone.size(); ++o) sum[orders[i][o]] += alone[o];
+  }
+  for (float& d : sum) d /= 8.0f;
+  EXPECT_EQ(symmetryAveragedDistances(model, g, kNormal), sum);
+}
+
 }  // namespace
 }  // namespace sagrid

@@ -121,6 +121,40 @@ TEST(VoxelAggregation, OcclusionAwareEqualsBruteForceOverVisibleViews) {
   EXPECT_GT(partial, 10);  // the random depths do occlude some views of many points
 }
 
+TEST(VoxelAggregation, AddViewsOnAnyThreadCountEqualsOneViewAfterAnotherBitForBit) {
+  Scene s = randomScene();
+  // Enough points to be split between threads.
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<float> coord(-0.5f, 0.5f);
+  while (s.points.size() < 6000) s.points.emplace_back(coord(rng), coord(rng), coord(rng));
+  const float tol = 0.05f;
+  VoxelAggregator one(s.points, 3, Aggregation::OcclusionAware, tol);
+  std::vector<const ViewCamera*> cameras;
+  std::vector<const FeatureMap*> maps;
+  std::vector<DepthMapRef> depths;
+  for (std::size_t v = 0; v < s.cameras.size(); ++v) {
+    const DepthMapRef d{s.depthSize, s.depthSize, s.depths[v].data()};
+    one.addView(s.cameras[v], s.maps[v], &d);
+    cameras.push_back(&s.cameras[v]);
+    maps.push_back(&s.maps[v]);
+    depths.push_back(d);
+  }
+  for (int threads : {1, 2, 3, 5}) {
+    VoxelAggregator batched(s.points, 3, Aggregation::OcclusionAware, tol);
+    // In two batches, as the embedded backend adds them.
+    const std::size_t half = cameras.size() / 2;
+    batched.addViews({cameras.begin(), cameras.begin() + half}, {maps.begin(), maps.begin() + half},
+                     {depths.begin(), depths.begin() + half}, threads);
+    batched.addViews({cameras.begin() + half, cameras.end()}, {maps.begin() + half, maps.end()},
+                     {depths.begin() + half, depths.end()}, threads);
+    EXPECT_EQ(batched.viewsAdded(), one.viewsAdded());
+    EXPECT_EQ(batched.counts(), one.counts()) << threads;
+    EXPECT_EQ(batched.sums(), one.sums()) << threads;  // exactly: the same order of additions
+  }
+  VoxelAggregator mismatched(s.points, 3, Aggregation::OcclusionAware, tol);
+  EXPECT_THROW(mismatched.addViews(cameras, maps, {}, 2), Error);  // occlusion needs depths
+}
+
 TEST(VoxelAggregation, BilinearSampleAtTexelCentreIsTheTexel) {
   FeatureMap m;
   m.resize(4, 3, 2);
