@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <map>
 #include <memory>
@@ -20,6 +21,7 @@
 #include "core/common/error.h"
 #include "core/common/resource_paths.h"
 #include "core/dataset/dataset.h"
+#include "core/labels/labels.h"
 #include "core/mesh/mesh_import.h"
 #include "core/model/model_card.h"
 
@@ -73,7 +75,7 @@ sagrid::FeatureOptions featuresFor(const fs::path& modelsDir) {
 }
 
 struct Options {
-  std::vector<std::string> data, validate, gated;
+  std::vector<std::string> data, validate, gated, guard;
   int folds = 5;
   bool bySource = false;  // category cv: leave one source out
   std::string out, models, exclude, split, splitOut, up, cache;
@@ -162,6 +164,33 @@ sagrid::CategoryTrainingOptions trainingOptions(const Options& o) {
   return options;
 }
 
+// The guard on a classifier update: the candidate and the classifier `current` holds (none: the
+// candidate is adopted) decide the held-out objects; the candidate is adopted only if its share
+// right, averaged over the classes, is higher. The verdict goes to stdout and OUT/guard.jsonl.
+bool guardAdopts(const sagrid::CategoryClassifier& candidate, const fs::path& current,
+                 const std::vector<std::string>& heldOut, const sagrid::FeatureOptions& features) {
+  const auto shareRight = [&](const sagrid::CategoryClassifier& c) {
+    const auto samples = collect(heldOut, features, {}, c.topRelief());
+    return sagrid::balancedShareRight(sagrid::evaluateCategories(
+        [&](const sagrid::CategorySample& s) { return c.classify(s.descriptor); }, samples));
+  };
+  const double after = shareRight(candidate);
+  std::error_code ec;
+  const bool hasCurrent = fs::exists(current, ec);
+  const double before = hasCurrent ? shareRight(sagrid::CategoryClassifier::load(current)) : -1;
+  const bool adopted = after > before;
+  char was[32] = "(none)";
+  if (hasCurrent) std::snprintf(was, sizeof was, "%.1f %%", 100 * before);
+  std::printf("category classifier: share right %s -> %.1f %% on the held-out objects: %s\n", was,
+              100 * after, adopted ? "adopted" : "refused, current classifier kept");
+  nlohmann::json line = {{"model", "category"}, {"held_out", heldOut}, {"adopted", adopted},
+                         {"candidate_share_right", after}, {"time", sagrid::currentUtcTimestamp()}};
+  if (hasCurrent) line["current_share_right"] = before;
+  fs::create_directories(current.parent_path());
+  std::ofstream(current.parent_path() / "guard.jsonl", std::ios::app) << line.dump() << "\n";
+  return adopted;
+}
+
 void setupCategory(CLI::App& root) {
   auto* cmd = root.add_subcommand(
       "category",
@@ -182,6 +211,11 @@ void setupCategory(CLI::App& root) {
   train->add_option("--out", o->out, "Models folder to write category.json into (default resources/models)");
   train->add_option("--exclude-split", o->exclude,
                     "Id split file (category split): its val ids are held out of training");
+  train->add_option("--guard", o->guard,
+                    "Held-out dataset folders (curated objects of other sources than --data; "
+                    "repeat): the new classifier replaces OUT's only if its share right there, "
+                    "averaged over stoves, sinks and look-alikes, is higher; else it goes to "
+                    "OUT/refused/ (OUT/guard.jsonl: the figures)");
   addTrainingFlags(train, *o);
   train->callback([o] {
     const fs::path out = o->out.empty() ? defaultModelsDir() : fs::path(o->out);
@@ -210,7 +244,10 @@ void setupCategory(CLI::App& root) {
         samples);
     for (const auto& [cls, c] : ev.byClass)
       classifier.training["train_share_right"][cls] = c.total ? double(c.right) / c.total : 0.0;
-    const fs::path file = out / sagrid::kCategoryClassifierFile;
+    fs::path file = out / sagrid::kCategoryClassifierFile;
+    if (!o->guard.empty() && !guardAdopts(classifier, file, o->guard, features))
+      file = out / "refused" / sagrid::kCategoryClassifierFile;
+    fs::create_directories(file.parent_path());
     classifier.save(file);
     std::cout << "# training objects\n\n" << sagrid::categoryEvaluationTable(ev) << "\n";
     std::fprintf(stderr, "wrote %s (%zu objects)\n", file.string().c_str(), samples.size());

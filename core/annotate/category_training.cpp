@@ -169,4 +169,15 @@ std::string categoryEvaluationTable(const CategoryEvaluation& ev) {
   return out.str();
 }
 
+double balancedShareRight(const CategoryEvaluation& evaluation) {
+  double sum = 0;
+  int classes = 0;
+  for (const auto& [cls, count] : evaluation.byClass) {
+    if (count.total == 0) continue;
+    sum += static_cast<double>(count.right) / count.total;
+    ++classes;
+  }
+  return classes ? sum / classes : 0.0;
+}
+
 }  // namespace sagrid

@@ -70,6 +70,10 @@ CategoryEvaluation evaluateCategories(
     const std::function<CategoryDecision(const CategorySample&)>& decide,
     const std::vector<CategorySample>& samples);
 
+// The mean over the true classes of the share decided right: stoves, sinks and look-alikes count
+// alike however many of each there are (the guard on classifier updates compares it). 0 when empty.
+double balancedShareRight(const CategoryEvaluation& evaluation);
+
 // Markdown: the per-class table (stoves right, sinks right, distractors rejected), per group, the
 // confusion matrix and the list of objects decided wrongly.
 std::string categoryEvaluationTable(const CategoryEvaluation& evaluation);

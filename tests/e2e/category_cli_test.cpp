@@ -4,7 +4,10 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <fstream>
+
 #include "core/annotate/category_classifier.h"
+#include "core/common/atomic_file.h"
 #include "core/generate/dataset_generator.h"
 #include "support/test_paths.h"
 
@@ -50,6 +53,32 @@ TEST(CategoryCli, EvidenceFitsTheGateOfTheAskedCategoryAndEvalUsesItSlow) {
   r = runSagrid("category eval" + data + " --evidence");
   ASSERT_EQ(r.exitCode, 0) << r.output;
   EXPECT_THAT(r.output, HasSubstr("| stoves right | 3 |"));
+}
+
+// The guard on classifier updates (issue 40): a classifier trained for one step decides the
+// held-out objects worse than the shipped one and is refused (written to OUT/refused/, the
+// shipped file untouched), and the verdict is logged.
+TEST(CategoryCli, TheGuardRefusesAWorseClassifierAndKeepsTheCurrentOne) {
+  const fs::path dir = test::freshTempDir();
+  gen::generateDataset({{"stove", 3, 41}, {"sink", 3, 42}, {"none", 3, 43}}, gen::MeshFormat::Obj,
+                       dir / "train");
+  gen::generateDataset({{"stove", 2, 44}, {"sink", 2, 45}, {"none", 2, 46}}, gen::MeshFormat::Obj,
+                       dir / "held-out");
+  const fs::path models = dir / "models";
+  fs::copy(fs::path(SAGRID_SOURCE_DIR) / "resources" / "models", models,
+           fs::copy_options::recursive);
+  const std::string shipped = readFileBytes(models / kCategoryClassifierFile);
+  const std::string train = "category train --data " + quotedPath(dir / "train") + " --out " +
+                            quotedPath(models) + " --guard " + quotedPath(dir / "held-out");
+  auto r = runSagrid(train + " --iterations 1");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("refused, current classifier kept"));
+  EXPECT_EQ(readFileBytes(models / kCategoryClassifierFile), shipped);
+  EXPECT_TRUE(fs::exists(models / "refused" / kCategoryClassifierFile));
+  std::ifstream log(models / "guard.jsonl");
+  std::string line;
+  ASSERT_TRUE(std::getline(log, line));
+  EXPECT_THAT(line, HasSubstr("\"adopted\":false"));
 }
 
 }  // namespace
