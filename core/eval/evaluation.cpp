@@ -11,6 +11,7 @@
 #include "core/common/error.h"
 #include "core/common/log.h"
 #include "core/dataset/dataset.h"
+#include "core/dataset/object_source.h"
 #include "core/eval/count_breakdown.h"
 #include "core/eval/embedding_search.h"
 #include "core/eval/report_cell.h"
@@ -50,6 +51,7 @@ EvaluationReport evaluateModels(const ModelSet& models, const EvaluationOptions&
   // from the dataset's own cache.
   std::vector<DatasetEntry> entries;
   std::vector<fs::path> cacheOf;
+  std::vector<std::string> datasetOf;  // the folder each entry was read from: its fallback source
   std::vector<fs::path> dataDirs = {options.dataDir};
   dataDirs.insert(dataDirs.end(), options.moreData.begin(), options.moreData.end());
   for (const fs::path& dir : dataDirs) {
@@ -64,6 +66,7 @@ EvaluationReport evaluateModels(const ModelSet& models, const EvaluationOptions&
     cacheOf.insert(
         cacheOf.end(), read.size(),
         options.features.cacheDir.empty() ? dir / ".sagrid-cache" : options.features.cacheDir);
+    datasetOf.insert(datasetOf.end(), read.size(), dir.filename().string());
   }
 
   for (const char* name : kPaperOrder)
@@ -76,7 +79,8 @@ EvaluationReport evaluateModels(const ModelSet& models, const EvaluationOptions&
 
   std::vector<std::map<std::string, TypeMetricsAccumulator>> acc(kMethodCount);
   CuratorEffortAccumulator effort;
-  std::map<std::string, CuratorEffortAccumulator> effortByCategory;
+  std::map<std::string, CuratorEffortAccumulator> effortByCategory, effortBySource;
+  std::map<std::string, std::pair<double, std::size_t>> errorBySource;  // sum, count
   double modelSeconds = 0;
   const auto categories = models.categories();
   for (std::size_t e = 0; e < entries.size(); ++e) {
@@ -95,7 +99,10 @@ EvaluationReport evaluateModels(const ModelSet& models, const EvaluationOptions&
       const SurfaceScene scene(mesh);
       const double mpu = metersPerUnit(labels);
       report.meanOccupiedVoxels += static_cast<double>(grid.voxels.size());
-      nlohmann::json object = {{"id", entry.id}, {"category", category}, {"meters_per_unit", mpu}};
+      const std::string source =
+          objectSource(labels, entry.mesh, datasetOf[e]);
+      nlohmann::json object = {
+          {"id", entry.id}, {"category", category}, {"meters_per_unit", mpu}, {"source", source}};
       if (const auto generator = labels.object.extra.find("generator");
           generator != labels.object.extra.end() && generator->is_object())
         object["generator"] = *generator;
@@ -137,7 +144,11 @@ EvaluationReport evaluateModels(const ModelSet& models, const EvaluationOptions&
         auto record = [&](Method method, const std::vector<Eigen::Vector3f>& predicted) {
           const double single = nearestDistance(predicted.front(), truth, mpu);
           acc[method][card.name].addSingle(single);
-          if (method == kArgmin) object["paper_error_m"][card.name] = single;
+          if (method == kArgmin) {
+            object["paper_error_m"][card.name] = single;
+            errorBySource[source].first += single;
+            ++errorBySource[source].second;
+          }
           acc[method][card.name].addMatch(matchPoints(predicted, truth, mpu));
           nlohmann::json points = nlohmann::json::array();
           for (const auto& p : predicted) points.push_back({p.x(), p.y(), p.z()});
@@ -177,6 +188,7 @@ EvaluationReport evaluateModels(const ModelSet& models, const EvaluationOptions&
       object["one_key"] = objectEdits.total() == 0;
       effort.addObject(objectEdits);
       effortByCategory[category].addObject(objectEdits);
+      effortBySource[source].addObject(objectEdits);
       report.perObject.push_back(object);
       ++report.objects;
     } catch (const Cancelled&) {
@@ -202,6 +214,13 @@ EvaluationReport evaluateModels(const ModelSet& models, const EvaluationOptions&
   report.confidenceCalibrated = options.confidence.fitted;
   report.reliability = reliabilityReport(report.confidence, report.oneKey);
   for (const auto& [category, a] : effortByCategory) report.effortByCategory[category] = a.result();
+  for (const auto& [source, a] : effortBySource) {
+    EvaluationReport::SourceFigures& f = report.bySource[source];
+    f.effort = a.result();
+    const auto& [sum, count] = errorBySource[source];
+    f.paperErrors = count;
+    f.paperError = count ? sum / static_cast<double>(count) : NAN;
+  }
   return report;
 }
 
@@ -296,6 +315,18 @@ std::string evaluationMarkdown(const EvaluationReport& r) {
   };
   effortRow("all: ", r.effort);
   for (const auto& [category, e] : r.effortByCategory) effortRow(category + ": ", e);
+  if (r.bySource.size() > 1) {
+    md << "\n## By source\n\nEach repository, library or dataset folder the objects come from "
+          "(objects of one source look alike: read a rule's worth source by source). Single-point "
+          "error: the paper's metric, averaged over the source's objects and models.\n\n"
+       << "| Source | Objects | Single-point error | Edits ÷ by hand | Right with one key |\n"
+       << "|---|---|---|---|---|\n";
+    for (const auto& [source, f] : r.bySource)
+      md << "| " << source << " | " << f.effort.objects << " | "
+         << reportCell(100 * f.paperError, "%.1f cm") << " | "
+         << reportCell(f.effort.editsPerObject / f.effort.handPointsPerObject, "%.2f") << " | "
+         << reportCell(100 * f.effort.oneKeyShare, "%.1f %%") << " |\n";
+  }
   md << countBreakdownMarkdown(countBreakdown(r.perObject, kMethodNames[kAuto]));
   md << perObjectMarkdown(r);
   md << "\n## Object confidence (" << (r.confidenceCalibrated ? "calibrated" : "uncalibrated")
@@ -338,6 +369,11 @@ nlohmann::json evaluationJson(const EvaluationReport& r) {
   j["curator_effort"] = effortJson(r.effort);
   for (const auto& [category, e] : r.effortByCategory)
     j["curator_effort_by_category"][category] = effortJson(e);
+  for (const auto& [source, f] : r.bySource) {
+    j["by_source"][source] = effortJson(f.effort);
+    j["by_source"][source]["paper_error_m"] = number(f.paperError);
+    j["by_source"][source]["paper_errors"] = f.paperErrors;
+  }
   j["confidence_calibrated"] = r.confidenceCalibrated;
   j["reliability"] = toJson(r.reliability);
   if (const auto breakdown = countBreakdown(r.perObject, kMethodNames[kAuto]); !breakdown.empty())

@@ -64,6 +64,15 @@ struct EvaluationReport {
                                  // + projection, features cached
   CuratorEffort effort;  // SAGrid auto count, all objects
   std::map<std::string, CuratorEffort> effortByCategory;
+  // By source (core/dataset/object_source.h: repository, library, dataset folder), for
+  // leave-one-source-out reading: the curator effort and the single-point error (paper metric,
+  // argmin) averaged over the source's objects and models.
+  struct SourceFigures {
+    CuratorEffort effort;
+    double paperError = 0;  // metres; NaN without ground truth of any model's type
+    std::size_t paperErrors = 0;
+  };
+  std::map<std::string, SourceFigures> bySource;
   // Per evaluated object: the confidence signal (least-sure point), its calibrated confidence and
   // whether the automatic prediction was right with one key; and their reliability.
   std::vector<double> confidenceSignal, confidence;

@@ -128,6 +128,11 @@ TEST_F(AnnotateTest, EvalCoversTheUnionOfEveryDatasetGiven) {
     EXPECT_TRUE(object.contains("generator") && object.at("generator").contains("kind"))
         << object.dump();
   EXPECT_EQ(evaluatedData(report), (dir / "data").string() + " + " + (dir / "more").string());
+  // Generated objects carry no provenance: each dataset folder is a source of its own.
+  ASSERT_EQ(report.bySource.size(), 2u);
+  EXPECT_EQ(report.bySource.at("data").effort.objects, 2u);
+  EXPECT_EQ(report.bySource.at("more").effort.objects, 2u);
+  EXPECT_THAT(evaluationMarkdown(report), HasSubstr("## By source"));
   EXPECT_THAT(evaluationMarkdown(report), HasSubstr(evaluatedData(report)));
   // Each dataset read its features from its own cache.
   EXPECT_TRUE(fs::is_directory(dir / "more" / ".sagrid-cache"));
