@@ -1,6 +1,5 @@
 #include "core/controls/control_part.h"
 
-#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
 #include <functional>
@@ -8,6 +7,7 @@
 
 #include "core/geometry/closest_point_on_triangle.h"
 #include "core/geometry/connected_parts.h"
+#include "core/geometry/principal_axes.h"
 #include "core/geometry/triangle_components.h"
 #include "core/mesh/mesh.h"
 
@@ -113,24 +113,8 @@ struct Principal {
 };
 
 Principal principalOf(const std::vector<Eigen::Vector3f>& points) {
-  Principal out;
-  if (points.empty()) return out;
-  Eigen::Vector3d mean = Eigen::Vector3d::Zero();
-  for (const auto& p : points) mean += p.cast<double>();
-  mean /= static_cast<double>(points.size());
-  Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
-  for (const auto& p : points) {
-    const Eigen::Vector3d d = p.cast<double>() - mean;
-    covariance += d * d.transpose();
-  }
-  covariance /= static_cast<double>(points.size());
-  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(covariance);
-  out.mean = mean.cast<float>();
-  for (int i = 0; i < 3; ++i) {
-    out.directions.col(i) = solver.eigenvectors().col(2 - i).cast<float>();
-    out.spread[i] = static_cast<float>(std::sqrt(std::max(0.0, solver.eigenvalues()[2 - i])));
-  }
-  return out;
+  const PrincipalAxes axes = principalAxes(points);
+  return {axes.mean.cast<float>(), axes.axes.cast<float>(), axes.spread.cast<float>()};
 }
 
 // Any unit vector perpendicular to `n`.

@@ -4,9 +4,8 @@
 #include <cstdio>
 #include <memory>
 
-#include <Eigen/Eigenvalues>
-
 #include "core/common/third_party_warnings.h"
+#include "core/geometry/principal_axes.h"
 #include "core/mesh/mesh.h"
 
 SAGRID_THIRD_PARTY_BEGIN
@@ -77,17 +76,8 @@ struct PrincipalExtent {
 };
 
 PrincipalExtent principalExtent(const std::vector<Eigen::Vector3f>& points) {
-  Eigen::Vector3d mean = Eigen::Vector3d::Zero();
-  for (const auto& p : points) mean += p.cast<double>();
-  mean /= static_cast<double>(points.size());
-  Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
-  for (const auto& p : points) {
-    const Eigen::Vector3d d = p.cast<double>() - mean;
-    covariance += d * d.transpose();
-  }
-  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(covariance);
   PrincipalExtent result;
-  for (int c = 0; c < 3; ++c) result.axes.col(c) = solver.eigenvectors().col(2 - c);
+  result.axes = principalAxes(points).axes;
   Eigen::Vector3d lo = Eigen::Vector3d::Constant(1e300), hi = -lo;
   for (const auto& p : points) {
     const Eigen::Vector3d q = result.axes.transpose() * p.cast<double>();

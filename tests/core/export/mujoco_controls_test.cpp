@@ -60,10 +60,9 @@ bool burnerLit(double angle) {
   return a >= 0.35 && a <= kTwoPi - 0.35;
 }
 
-// The world positions of a body's visual mesh vertices, averaged.
-Eigen::Vector3d visualCentroid(const mjModel& m, const mjData& d, int body) {
-  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
-  int count = 0;
+// The world positions of a body's visual mesh vertices.
+std::vector<Eigen::Vector3d> visualVertices(const mjModel& m, const mjData& d, int body) {
+  std::vector<Eigen::Vector3d> out;
   for (int g = 0; g < m.ngeom; ++g) {
     if (m.geom_bodyid[g] != body || m.geom_type[g] != mjGEOM_MESH) continue;
     const int mesh = m.geom_dataid[g];
@@ -71,26 +70,22 @@ Eigen::Vector3d visualCentroid(const mjModel& m, const mjData& d, int body) {
     const Eigen::Map<const Eigen::Vector3d> origin(d.geom_xpos + 3 * g);
     for (int v = 0; v < m.mesh_vertnum[mesh]; ++v) {
       const float* p = m.mesh_vert + 3 * (m.mesh_vertadr[mesh] + v);
-      sum += origin + rotation * Eigen::Vector3d(p[0], p[1], p[2]);
-      ++count;
+      out.push_back(origin + rotation * Eigen::Vector3d(p[0], p[1], p[2]));
     }
   }
-  return count ? Eigen::Vector3d(sum / count) : Eigen::Vector3d(d.xpos[3 * body], d.xpos[3 * body + 1], d.xpos[3 * body + 2]);
+  return out;
 }
 
-// The diagonal of a body's visual vertices' box (its part's size).
-double visualSize(const mjModel& m, const mjData& d, int body) {
+Eigen::Vector3d centroidOf(const std::vector<Eigen::Vector3d>& points) {
+  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+  for (const auto& p : points) sum += p;
+  return points.empty() ? sum : Eigen::Vector3d(sum / static_cast<double>(points.size()));
+}
+
+// The diagonal of their box (the part's size).
+double sizeOf(const std::vector<Eigen::Vector3d>& points) {
   Eigen::AlignedBox3d box;
-  for (int g = 0; g < m.ngeom; ++g) {
-    if (m.geom_bodyid[g] != body || m.geom_type[g] != mjGEOM_MESH) continue;
-    const int mesh = m.geom_dataid[g];
-    const Eigen::Map<const Eigen::Matrix<mjtNum, 3, 3, Eigen::RowMajor>> rotation(d.geom_xmat + 9 * g);
-    const Eigen::Map<const Eigen::Vector3d> origin(d.geom_xpos + 3 * g);
-    for (int v = 0; v < m.mesh_vertnum[mesh]; ++v) {
-      const float* p = m.mesh_vert + 3 * (m.mesh_vertadr[mesh] + v);
-      box.extend(origin + rotation * Eigen::Vector3d(p[0], p[1], p[2]));
-    }
-  }
+  for (const auto& p : points) box.extend(p);
   return box.isEmpty() ? 0.0 : box.diagonal().norm();
 }
 
@@ -113,8 +108,9 @@ void expectEveryJointTurnsItsOwnPart(const mjModel& m) {
       for (int k = 0; k < 3; ++k) EXPECT_NEAR(turned->xpos[3 * b + k], rest->xpos[3 * b + k], 1e-9);
       for (int k = 0; k < 4; ++k) EXPECT_NEAR(turned->xquat[4 * b + k], rest->xquat[4 * b + k], 1e-9);
     }
-    const double size = visualSize(m, *rest, body);
-    const double moved = (visualCentroid(m, *turned, body) - visualCentroid(m, *rest, body)).norm();
+    const auto before = visualVertices(m, *rest, body);
+    const double size = sizeOf(before);
+    const double moved = (centroidOf(visualVertices(m, *turned, body)) - centroidOf(before)).norm();
     if (size > 0) EXPECT_LT(moved, size / 3.0) << "size " << size;
   }
 }
