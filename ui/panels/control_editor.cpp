@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <memory>
 
+#include "core/controls/control_part_edit.h"
 #include "core/controls/control_record.h"
 #include "ui/app/session.h"
 #include "ui/document/control_commands.h"
@@ -75,6 +76,26 @@ void drivesCombo(Session& session, int index, ShownControl shown) {
   ImGui::EndCombo();
 }
 
+// Grow or shrink the part by one ring of triangles (its motion found again from its new shape),
+// or put the pivot at the point itself.
+void partButtons(Session& session, int index, ShownControl shown) {
+  const Mesh& mesh = session.document()->mesh();
+  const auto reshape = [&](std::vector<int> triangles, const char* what) {
+    if (triangles.empty() || triangles == shown.part.triangles) return;
+    const ControlPart described = describeControlPart(mesh, std::move(triangles), PartOrigin::Grown);
+    shown.part = described;
+    setControl(session, index, shown, what);
+  };
+  if (ImGui::Button("Grow")) reshape(grownPart(mesh, shown.part.triangles), "part grown");
+  ImGui::SameLine();
+  if (ImGui::Button("Shrink")) reshape(shrunkPart(mesh, shown.part.triangles), "part shrunk");
+  ImGui::SameLine();
+  if (ImGui::Button("Pivot at the point")) {
+    shown.part.pivot = session.document()->pointInView(index);
+    setControl(session, index, shown, "pivot at the point");
+  }
+}
+
 }  // namespace
 
 void drawControlEditor(Session& session, int index) {
@@ -93,6 +114,7 @@ void drawControlEditor(Session& session, int index) {
   motionCombo(session, index, *shown);
   ImGui::SameLine();
   axisButtons(session, index, *shown);
+  partButtons(session, index, *shown);
   drivesCombo(session, index, *shown);
   if (!shown->recorded && ImGui::Button("Keep this part"))
     setControl(session, index, *shown, "part kept");

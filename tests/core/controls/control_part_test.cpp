@@ -2,6 +2,7 @@
 // button), about which axis and pivot; each way a part is found (its material's component, the
 // connected component, the surface grown around the point, a disc) and the refusals.
 #include "core/controls/control_part.h"
+#include "core/controls/control_part_edit.h"
 
 #include <gtest/gtest.h>
 
@@ -158,6 +159,19 @@ TEST(ControlParts, DescribeAGivenPartIgnoresTrianglesTheMeshLacks) {
   const ControlPart part = describeControlPart(mesh, knob, PartOrigin::Grown);
   EXPECT_EQ(part.triangles.size(), 12u);
   EXPECT_EQ(part.motion, ControlMotion::Knob);
+}
+
+TEST(ControlPartEdit, GrowAddsTheNeighboursAndShrinkTakesThemBack) {
+  const Mesh mesh = bumpyPanel(0.02f);  // the fan of 6 triangles around the raised vertex
+  const ControlParts found = findControlParts(mesh, {{0.0f, 0.0f, 0.02f}, {0.12f, 0.0f, 0.0f}});
+  ASSERT_TRUE(found.parts[0]);
+  const std::vector<int> fan = found.parts[0]->triangles;
+  const std::vector<int> grown = grownPart(mesh, fan);
+  EXPECT_GT(grown.size(), fan.size());
+  EXPECT_TRUE(std::includes(grown.begin(), grown.end(), fan.begin(), fan.end()));
+  EXPECT_EQ(shrunkPart(mesh, grown), fan);
+  EXPECT_EQ(shrunkPart(mesh, fan), fan);  // all border: kept, never emptied
+  EXPECT_TRUE(grownPart(mesh, {}).empty());
 }
 
 }  // namespace
