@@ -15,6 +15,7 @@
 #include "core/dataset/dataset.h"
 #include "core/dataset/object_source.h"
 #include "core/eval/evaluation.h"
+#include "core/eval/report_cell.h"
 #include "core/labels/labels.h"
 #include "core/model/model_card.h"
 #include "core/model/model_files.h"
@@ -383,7 +384,7 @@ std::string learningCurveMarkdown(const LearningCurveReport& r) {
      << "Fine-tuning " << r.initDir.string() << " on k objects of " << r.dataDir.string() << " ("
      << r.folds.size() << "-fold" << (r.foldSources.empty() ? "" : " by source") << ", seed "
      << r.seed << ", "
-     << (r.minutes > 0 && r.epochs == 0 ? std::to_string(r.minutes) + " min"
+     << (r.minutes > 0 && r.epochs == 0 ? reportCell(r.minutes, "%g min")
                                         : std::to_string(r.epochs) + " epoch(s)")
      << " per fine-tune, " << (r.replay ? "with" : "without")
      << " bench replay). Error: the paper's metric (distance from the single predicted point to "

@@ -70,14 +70,31 @@ void selectedControl(const Session& session, ImDrawList* draw) {
         toScreen(mesh.positions[std::size_t(t[2])], c))
       draw->AddTriangleFilled(a, b, c, fill);
   }
+  // The axis through the pivot, left out around the point's marker so the marker stays visible.
   const float reach = std::max(shown->part.radius * 2.0f, 1e-3f * mesh.bounds().diagonal().norm());
-  ImVec2 from, to;
-  if (toScreen(shown->part.pivot - reach * shown->part.axis, from) &&
-      toScreen(shown->part.pivot + reach * shown->part.axis, to)) {
-    draw->AddLine(from, to, IM_COL32(255, 220, 60, 255), 2.5f);
-    draw->AddCircleFilled(to, 4.0f, IM_COL32(255, 220, 60, 255));
-  }
-  if (toScreen(shown->part.pivot, from)) draw->AddCircle(from, 5.0f, IM_COL32(255, 220, 60, 255));
+  const ImU32 yellow = IM_COL32(255, 220, 60, 255);
+  ImVec2 pivot, from, to, marker;
+  if (!toScreen(shown->part.pivot, pivot) ||
+      !toScreen(shown->part.pivot - reach * shown->part.axis, from) ||
+      !toScreen(shown->part.pivot + reach * shown->part.axis, to))
+    return;
+  const bool markerShown = toScreen(doc->pointInView(doc->selected()), marker);
+  const float clear = session.view().markerPixels * 1.35f + 6.0f;
+  const auto segment = [&](ImVec2 a, ImVec2 b) {
+    // From a to b, less the part within `clear` of the marker (a circle cut out of the segment).
+    const float dx = b.x - a.x, dy = b.y - a.y, length2 = dx * dx + dy * dy;
+    if (!markerShown || length2 <= 0) return draw->AddLine(a, b, yellow, 2.5f);
+    const float t = std::clamp(((marker.x - a.x) * dx + (marker.y - a.y) * dy) / length2, 0.0f, 1.0f);
+    const float cx = a.x + t * dx - marker.x, cy = a.y + t * dy - marker.y;
+    const float gap2 = clear * clear - (cx * cx + cy * cy);
+    if (gap2 <= 0) return draw->AddLine(a, b, yellow, 2.5f);
+    const float half = std::sqrt(gap2 / length2);
+    if (t - half > 0) draw->AddLine(a, ImVec2(a.x + (t - half) * dx, a.y + (t - half) * dy), yellow, 2.5f);
+    if (t + half < 1) draw->AddLine(ImVec2(a.x + (t + half) * dx, a.y + (t + half) * dy), b, yellow, 2.5f);
+  };
+  segment(from, pivot);
+  segment(pivot, to);
+  draw->AddCircleFilled(to, 4.0f, yellow);
 }
 
 // The world axes as seen by the camera, in the viewport's bottom-left corner.
