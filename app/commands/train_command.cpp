@@ -284,7 +284,8 @@ void setupTrain(CLI::App& root) {
     guard.candidateDir = out / (".candidate." + o->model);
     guard.modelName = o->model;
     guard.heldOutDir = o->guard;
-    fs::remove_all(guard.candidateDir);
+    // An interrupted guarded fine-tune resumes from the candidate's checkpoint (--resume).
+    if (!o->resume) fs::remove_all(guard.candidateDir);
     trainOne(*o, dataSources(*o), o->model, guard.candidateDir);
     const sagrid::GuardVerdict verdict = sagrid::judgeUpdate(guard);
     sagrid::applyVerdict(verdict, guard, out);
