@@ -8,6 +8,7 @@
 #include "core/geometry/closest_point_on_triangle.h"
 #include "core/geometry/connected_parts.h"
 #include "core/geometry/principal_axes.h"
+#include "core/geometry/surface_scene.h"
 #include "core/geometry/triangle_components.h"
 #include "core/mesh/mesh.h"
 
@@ -160,6 +161,15 @@ struct PointContext {
   float spacing;                  // distance to the nearest other point (the diagonal if none)
 };
 
+// One labelling of the triangles (connected, or connected within a material) as every point's
+// search reads it: each component's box, area and centroid, and the component each point lies
+// on. Computed once per labelling, not per point.
+struct Labelling {
+  const TriangleComponents& components;
+  std::vector<ComponentStats> stats;
+  std::vector<int> seeds;  // per point: its component, or -1
+};
+
 // The component a point lies on: of the components whose box, grown by the touch distance, holds
 // it, the one with the smallest box (a knob, not the panel it is sunk into); else the component of
 // its nearest triangle.
@@ -176,21 +186,27 @@ int seedComponent(const std::vector<ComponentStats>& stats, const TriangleCompon
   return best;
 }
 
-// The point's part from one labelling of the triangles: the component it lies on with the small
-// components touching it, each nearer this point than any other; none when that component is too
-// large or another point lies on it too.
-std::optional<std::vector<int>> componentPart(const Surface& s, const TriangleComponents& c,
-                                              const PointContext& ctx) {
-  const std::vector<ComponentStats> stats = componentStats(s, c);
+Labelling labellingOf(const Surface& s, const TriangleComponents& c,
+                      const std::vector<Eigen::Vector3f>& points,
+                      const std::vector<int>& nearestTriangles) {
+  Labelling l{c, componentStats(s, c), {}};
   const float touch = kTouchShare * s.diagonal;
-  std::vector<int> seeds;
-  for (std::size_t i = 0; i < ctx.points.size(); ++i)
-    seeds.push_back(seedComponent(stats, c, ctx.points[i], ctx.seeds[i], touch));
-  const int seed = seeds[ctx.index];
+  for (std::size_t i = 0; i < points.size(); ++i)
+    l.seeds.push_back(seedComponent(l.stats, c, points[i], nearestTriangles[i], touch));
+  return l;
+}
+
+// The point's part from one labelling of the triangles: the component it lies on with the small
+// components inside its box, each nearer this point than any other; none when that component is
+// too large or another point lies on it too.
+std::optional<std::vector<int>> componentPart(const Surface& s, const Labelling& l,
+                                              const PointContext& ctx) {
+  const std::vector<ComponentStats>& stats = l.stats;
+  const int seed = l.seeds[ctx.index];
   if (seed < 0) return std::nullopt;
   std::vector<bool> foreign(stats.size(), false);  // another point lies on it
-  for (std::size_t i = 0; i < seeds.size(); ++i)
-    if (i != ctx.index && seeds[i] >= 0) foreign[static_cast<std::size_t>(seeds[i])] = true;
+  for (std::size_t i = 0; i < l.seeds.size(); ++i)
+    if (i != ctx.index && l.seeds[i] >= 0) foreign[static_cast<std::size_t>(l.seeds[i])] = true;
   const float maxDiagonal = std::min(kSmallPartDiagonal * s.diagonal, 2.0f * ctx.spacing);
   const auto small = [&](std::size_t k) {
     return !foreign[k] && stats[k].box.diagonal().norm() <= maxDiagonal &&
@@ -203,14 +219,15 @@ std::optional<std::vector<int>> componentPart(const Surface& s, const TriangleCo
   // or a rail it is mounted on.
   Eigen::AlignedBox3f reach = stats[seedIndex].box;
   const Eigen::Vector3f grow = Eigen::Vector3f::Constant(
-      std::max(touch, kWithShare * stats[seedIndex].box.diagonal().norm()));
+      std::max(kTouchShare * s.diagonal, kWithShare * stats[seedIndex].box.diagonal().norm()));
   reach.extend(reach.min() - grow).extend(reach.max() + grow);
   std::vector<bool> member(stats.size(), false);
   for (std::size_t k = 0; k < stats.size(); ++k)
     member[k] = k == seedIndex || (reach.contains(stats[k].box) && small(k));
+  const std::vector<int>& ofTriangle = l.components.ofTriangle;
   std::vector<int> triangles;
-  for (std::size_t t = 0; t < c.ofTriangle.size(); ++t)
-    if (c.ofTriangle[t] >= 0 && member[static_cast<std::size_t>(c.ofTriangle[t])])
+  for (std::size_t t = 0; t < ofTriangle.size(); ++t)
+    if (ofTriangle[t] >= 0 && member[static_cast<std::size_t>(ofTriangle[t])])
       triangles.push_back(static_cast<int>(t));
   return triangles;
 }
@@ -430,12 +447,16 @@ ControlParts findControlParts(const Mesh& mesh, const std::vector<Eigen::Vector3
     return result;
   }
   std::vector<int> seeds;
-  for (const auto& p : points) seeds.push_back(nearestTriangle(surface, p, [](std::size_t) { return true; }));
+  for (const ClosestPoint& c : SurfaceScene(mesh).closestPoints(points)) seeds.push_back(c.triangle);
   const TriangleComponents connected = triangleComponents(mesh, false);
+  const Labelling byConnection = labellingOf(surface, connected, points, seeds);
   const bool materials = std::adjacent_find(mesh.triangleMaterials.begin(), mesh.triangleMaterials.end(),
                                             std::not_equal_to<>()) != mesh.triangleMaterials.end();
-  const std::optional<TriangleComponents> byMaterial =
+  const std::optional<TriangleComponents> materialComponents =
       materials ? std::optional<TriangleComponents>(triangleComponents(mesh, true)) : std::nullopt;
+  const std::optional<Labelling> byMaterial =
+      materialComponents ? std::optional<Labelling>(labellingOf(surface, *materialComponents, points, seeds))
+                         : std::nullopt;
   for (std::size_t i = 0; i < points.size(); ++i) {
     float spacing = surface.diagonal;
     for (std::size_t j = 0; j < points.size(); ++j)
@@ -447,7 +468,7 @@ ControlParts findControlParts(const Mesh& mesh, const std::vector<Eigen::Vector3
         continue;
       }
     }
-    if (auto tris = componentPart(surface, connected, ctx)) {
+    if (auto tris = componentPart(surface, byConnection, ctx)) {
       result.parts[i] = describe(surface, std::move(*tris), PartOrigin::Connected);
       continue;
     }

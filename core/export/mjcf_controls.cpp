@@ -6,7 +6,6 @@
 #include "core/export/export_frame.h"
 #include "core/export/stl_file.h"
 #include "core/export/xml_text.h"
-#include "core/mesh/triangle_subset.h"
 
 namespace sagrid::exportdetail {
 
@@ -87,15 +86,12 @@ std::vector<MjcfJoint> controlJoints(const ControlGeometry& control, const std::
 }
 
 void writeControlAssets(std::ostringstream& xml, const std::vector<ControlGeometry>& controls,
-                        const std::vector<std::string>& bodies, const Mesh& mesh,
-                        const fs::path& folder) {
+                        const std::vector<std::string>& bodies, const fs::path& folder) {
   for (std::size_t i = 0; i < controls.size(); ++i) {
     if (controls[i].mesh.triangles.empty()) continue;
     const std::string name = "visual_" + bodies[i];
     writeFileAtomic(folder / "meshes" / (name + ".stl"), encodeBinaryStl(controls[i].mesh));
-    std::vector<bool> keep(mesh.triangles.size(), false);
-    for (int t : controls[i].part.triangles) keep[static_cast<std::size_t>(t)] = true;
-    const Eigen::Vector3f color = meshColor(triangleSubset(mesh, keep));
+    const Eigen::Vector3f color = meshColor(controls[i].mesh);  // the cut part keeps materials
     xml << "    <material name=\"" << escapeXml(name) << "\" rgba=\""
         << formatVector(color.cast<double>()) << " 1\"/>\n"
         << "    <mesh name=\"" << escapeXml(name) << "\" file=\"meshes/" << escapeXml(name)
@@ -106,8 +102,14 @@ void writeControlAssets(std::ostringstream& xml, const std::vector<ControlGeomet
 void writeContactExclusions(std::ostringstream& xml, const std::vector<std::string>& bodies) {
   if (bodies.empty()) return;
   xml << "  <contact>\n";
-  for (const auto& body : bodies)
-    xml << "    <exclude body1=\"object\" body2=\"" << escapeXml(body) << "\"/>\n";
+  for (std::size_t i = 0; i < bodies.size(); ++i) {
+    xml << "    <exclude body1=\"object\" body2=\"" << escapeXml(bodies[i]) << "\"/>\n";
+    // Neighbouring controls' collision shapes may overlap where their parts nearly touch (a knob
+    // row): one turned must not drag the next along.
+    for (std::size_t j = i + 1; j < bodies.size(); ++j)
+      xml << "    <exclude body1=\"" << escapeXml(bodies[i]) << "\" body2=\"" << escapeXml(bodies[j])
+          << "\"/>\n";
+  }
   xml << "  </contact>\n";
 }
 

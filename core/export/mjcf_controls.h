@@ -39,8 +39,7 @@ std::vector<MjcfJoint> controlJoints(const ControlGeometry& control, const std::
 
 // Mesh assets (meshes/visual_<body>.stl) and materials for the controls with a mesh.
 void writeControlAssets(std::ostringstream& xml, const std::vector<ControlGeometry>& controls,
-                        const std::vector<std::string>& bodies, const Mesh& mesh,
-                        const std::filesystem::path& folder);
+                        const std::vector<std::string>& bodies, const std::filesystem::path& folder);
 
 // One control's body, indented under "object"; `site` is its point's site (simulator frame).
 void writeControlBody(std::ostringstream& xml, const ControlGeometry& control,
@@ -49,7 +48,7 @@ void writeControlBody(std::ostringstream& xml, const ControlGeometry& control,
 
 // MuJoCo filters contacts between a body and its parent only where the parent moves; "object"
 // stands still, so each control is excluded from touching it explicitly (its part is cut from
-// the body, whose collision geoms cover where it sits).
+// the body, whose collision geoms cover where it sits), and from touching the other controls.
 void writeContactExclusions(std::ostringstream& xml, const std::vector<std::string>& bodies);
 
 // A site, at its position less `origin` (its body's position), coloured by affordance type.

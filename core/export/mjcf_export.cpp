@@ -42,7 +42,7 @@ void writeAssets(std::ostringstream& xml, const exportdetail::SimulatorGeometry&
                     exportdetail::encodeBinaryStl(physics::toMesh(geometry.collisionParts[i])));
     xml << "    <mesh name=\"" << name << "\" file=\"meshes/" << name << ".stl\"/>\n";
   }
-  exportdetail::writeControlAssets(xml, geometry.controls, controlBodies, geometry.mesh, folder);
+  exportdetail::writeControlAssets(xml, geometry.controls, controlBodies, folder);
   xml << "  </asset>\n";
 }
 

@@ -1,5 +1,7 @@
 #include "ui/document/control_view.h"
 
+#include <map>
+
 #include "core/common/error.h"
 #include "core/controls/control_record.h"
 #include "ui/document/annotation_document.h"
@@ -8,18 +10,30 @@ namespace sagrid::ui {
 
 namespace {
 
-// The parts found for one revision of one document.
+// The parts found for one revision of one document, and what was shown of each point (records
+// parsed once per revision, not once per frame).
 struct FoundCache {
   const AnnotationDocument* document = nullptr;
   std::uint64_t revision = 0;
+  std::filesystem::path labels;  // with the address: a new document at a freed one's address
   std::vector<int> toggles;  // point indices
   ControlParts found;
+  bool searched = false;     // `found` computed (only when a point has no record)
+  std::map<int, std::optional<ShownControl>> shown;
 };
 
-const FoundCache& foundFor(const AnnotationDocument& document) {
+FoundCache& cacheFor(const AnnotationDocument& document) {
   static FoundCache cache;
-  if (cache.document == &document && cache.revision == document.revision()) return cache;
-  cache = FoundCache{&document, document.revision(), {}, {}};
+  if (cache.document != &document || cache.revision != document.revision() ||
+      cache.labels != document.labelsPath())
+    cache = FoundCache{&document, document.revision(), document.labelsPath(), {}, {}, false, {}};
+  return cache;
+}
+
+const FoundCache& foundFor(const AnnotationDocument& document) {
+  FoundCache& cache = cacheFor(document);
+  if (cache.searched) return cache;
+  cache.searched = true;
   std::vector<Eigen::Vector3f> points;
   for (int i = 0; i < static_cast<int>(document.points().size()); ++i) {
     if (document.points()[std::size_t(i)].type != "togglebutton") continue;
@@ -30,9 +44,7 @@ const FoundCache& foundFor(const AnnotationDocument& document) {
   return cache;
 }
 
-}  // namespace
-
-std::optional<ShownControl> shownControl(const AnnotationDocument& document, int index) {
+std::optional<ShownControl> controlOf(const AnnotationDocument& document, int index) {
   if (index < 0 || static_cast<std::size_t>(index) >= document.points().size()) return std::nullopt;
   const AffordancePoint& point = document.points()[std::size_t(index)];
   if (point.type != "togglebutton") return std::nullopt;
@@ -49,6 +61,16 @@ std::optional<ShownControl> shownControl(const AnnotationDocument& document, int
     return ShownControl{*cache.found.parts[k], false, std::nullopt, cache.found.warnings[k]};
   }
   return std::nullopt;
+}
+
+}  // namespace
+
+std::optional<ShownControl> shownControl(const AnnotationDocument& document, int index) {
+  FoundCache& cache = cacheFor(document);
+  if (const auto it = cache.shown.find(index); it != cache.shown.end()) return it->second;
+  const std::optional<ShownControl> shown = controlOf(document, index);
+  cacheFor(document).shown[index] = shown;
+  return shown;
 }
 
 }  // namespace sagrid::ui
