@@ -10,6 +10,7 @@
 #include <map>
 #include <memory>
 #include <optional>
+#include <set>
 
 #include "app/command_registry.h"
 #include "app/progress_bar.h"
@@ -164,6 +165,20 @@ sagrid::CategoryTrainingOptions trainingOptions(const Options& o) {
   return options;
 }
 
+// A guard set of one class cannot judge a classifier: one that calls everything that class would
+// score best on it.
+void requireSeveralClasses(const std::vector<sagrid::CategorySample>& heldOut) {
+  std::set<std::string> classes;
+  for (const auto& s : heldOut) classes.insert(sagrid::categoryClass(s.category));
+  if (classes.size() >= 2) return;
+  throw sagrid::InvalidArgument(
+      "the --guard folders hold " +
+      (classes.empty() ? std::string("no object") : "only " + *classes.begin() + " objects") +
+      ": a classifier that calls everything one class would look best there; give held-out "
+      "objects of at least two of stove, sink and look-alike (none). Nothing was written; the "
+      "current classifier stays");
+}
+
 // The guard on a classifier update: the candidate and the classifier `current` holds (none: the
 // candidate is adopted) decide the held-out objects; the candidate is adopted only if its share
 // right, averaged over the classes, is higher. The verdict goes to stdout and OUT/guard.jsonl.
@@ -171,6 +186,7 @@ bool guardAdopts(const sagrid::CategoryClassifier& candidate, const fs::path& cu
                  const std::vector<std::string>& heldOut, const sagrid::FeatureOptions& features) {
   const auto shareRight = [&](const sagrid::CategoryClassifier& c) {
     const auto samples = collect(heldOut, features, {}, c.topRelief());
+    requireSeveralClasses(samples);
     return sagrid::balancedShareRight(sagrid::evaluateCategories(
         [&](const sagrid::CategorySample& s) { return c.classify(s.descriptor); }, samples));
   };

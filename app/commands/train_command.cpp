@@ -284,9 +284,14 @@ void setupTrain(CLI::App& root) {
     guard.candidateDir = out / (".candidate." + o->model);
     guard.modelName = o->model;
     guard.heldOutDir = o->guard;
+    const auto sources = dataSources(*o);
+    std::vector<fs::path> curated;
+    for (const auto& source : sources)
+      if (source.role == "data") curated.push_back(source.dir);
+    sagrid::checkGuardedUpdate(guard, curated);
     // An interrupted guarded fine-tune resumes from the candidate's checkpoint (--resume).
     if (!o->resume) fs::remove_all(guard.candidateDir);
-    trainOne(*o, dataSources(*o), o->model, guard.candidateDir);
+    trainOne(*o, sources, o->model, guard.candidateDir);
     const sagrid::GuardVerdict verdict = sagrid::judgeUpdate(guard);
     sagrid::applyVerdict(verdict, guard, out);
     fs::remove_all(guard.candidateDir);

@@ -7,11 +7,13 @@
 
 #include "core/annotate/model_set.h"
 #include "core/common/atomic_file.h"
+#include "core/common/error.h"
 #include "core/eval/evaluation.h"
 #include "core/labels/labels.h"
 #include "core/dataset/dataset.h"
 #include "core/model/model_card.h"
 #include "core/model/model_files.h"
+#include "core/training/curated_data_check.h"
 
 namespace sagrid {
 
@@ -64,6 +66,17 @@ std::size_t heldOutObjectsOfType(const GuardOptions& o) {
 }
 
 }  // namespace
+
+void checkGuardedUpdate(const GuardOptions& o, const std::vector<fs::path>& trainingDirs) {
+  try {
+    ModelSet::load(o.currentDir);
+  } catch (const ModelError& e) {
+    throw ModelError(o.currentDir.string() + " does not load as one set of models (" + e.what() +
+                     "); nothing was trained and the current models stay: keep models of one "
+                     "version and feature setup in a folder");
+  }
+  requireSoundCuratedData({trainingDirs, o.heldOutDir, o.referenceRoot});
+}
 
 GuardVerdict judgeUpdate(const GuardOptions& o) {
   if (heldOutObjectsOfType(o) == 0) {

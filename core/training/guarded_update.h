@@ -8,9 +8,9 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "core/features/feature_pipeline.h"
-
 
 namespace sagrid {
 
@@ -33,6 +33,13 @@ struct GuardOptions {
   // The features the models read; unset: from their cards (backend, resolution).
   std::optional<FeatureOptions> features;
 };
+
+// Before anything trains: throws ModelError naming the folder when the current models folder
+// does not load as one set (models of different versions or feature setups side by side), and
+// InvalidArgument listing the curated data's problems (curated_data_check.h) in `trainingDirs`
+// and the held-out folder. Nothing is trained then, and the current model stays.
+void checkGuardedUpdate(const GuardOptions& options,
+                        const std::vector<std::filesystem::path>& trainingDirs);
 
 // Evaluates both; throws what evaluation throws (missing model, unreadable data).
 GuardVerdict judgeUpdate(const GuardOptions& options);

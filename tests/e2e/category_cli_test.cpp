@@ -79,6 +79,18 @@ TEST(CategoryCli, TheGuardRefusesAWorseClassifierAndKeepsTheCurrentOne) {
   std::string line;
   ASSERT_TRUE(std::getline(log, line));
   EXPECT_THAT(line, HasSubstr("\"adopted\":false"));
+
+  // Held-out objects of one class cannot judge a classifier (calling everything a stove would
+  // score best there): refused with the reason, nothing written.
+  fs::remove_all(models / "refused");
+  gen::generateDataset({{"stove", 2, 47}}, gen::MeshFormat::Obj, dir / "stoves");
+  r = runSagrid("category train --data " + quotedPath(dir / "train") + " --out " +
+                quotedPath(models) + " --guard " + quotedPath(dir / "stoves") +
+                " --iterations 1");
+  EXPECT_EQ(r.exitCode, 1) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("hold only stove objects"));
+  EXPECT_EQ(readFileBytes(models / kCategoryClassifierFile), shipped);
+  EXPECT_FALSE(fs::exists(models / "refused"));
 }
 
 }  // namespace

@@ -66,5 +66,51 @@ TEST(FineTuneCli, ReplayWithoutInitAndMismatchedArchitectureAreClearErrors) {
   EXPECT_THAT(r.output, HasSubstr("[3,1,8]"));
 }
 
+// A guarded fine-tune that was interrupted (its candidate's checkpoint left beside the models)
+// continues with --resume and ends with the guard's verdict; labels far from their mesh stop it
+// before anything trains, and nothing is written.
+TEST(FineTuneCli, AGuardedFineTuneResumesAndRefusesLabelsFarFromTheirMesh) {
+  const fs::path dir = test::freshTempDir();
+  gen::generateDataset({{"stove", 1, 24}}, gen::MeshFormat::Obj, dir / "real");
+  gen::generateDataset({{"stove", 1, 25}}, gen::MeshFormat::Obj, dir / "held-out");
+  gen::generateDataset({{"stove", 1, 26}}, gen::MeshFormat::Obj, dir / "replay");
+  const std::string models = shellQuote((fs::path(SAGRID_SOURCE_DIR) / "resources/models").string());
+  const std::string fineTune = "train --data " + shellQuote((dir / "real").string()) + " --init " +
+                               models + " --model stove.togglebutton --epochs 3 --replay " +
+                               shellQuote((dir / "replay").string());
+  const std::string guard = " --guard " + shellQuote((dir / "held-out").string());
+  const fs::path out = dir / "out";
+  // The interrupted run: killed once its candidate's first checkpoint is written.
+  const std::string checkpoint =
+      shellQuote((out / ".candidate.stove.togglebutton" / "stove.togglebutton.checkpoint").string());
+  auto r = test::runCommand(
+      shellQuote(test::sagridBinary().string()) + " " + fineTune + guard + " --out " +
+      shellQuote(out.string()) + " & pid=$!; timeout 300 sh -c 'until [ -f " + checkpoint +
+      " ]; do sleep 0.05; done'; kill -9 $pid; wait $pid; test -f " + checkpoint);
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_FALSE(fs::exists(out / "stove.togglebutton.pt"));
+  r = test::runSagrid("--verbose " + fineTune + " --resume" + guard + " --out " + shellQuote(out.string()));
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("resuming stove.togglebutton after epoch "));
+  EXPECT_THAT(r.output, HasSubstr("held-out object(s): "));
+  EXPECT_TRUE(fs::exists(out / "stove.togglebutton.pt"));
+  EXPECT_TRUE(fs::exists(out / "guard.jsonl"));
+  EXPECT_FALSE(fs::exists(out / ".candidate.stove.togglebutton"));
+
+  // Labels in centimetres on a mesh in metres (x 100): refused before training, OUT untouched.
+  const fs::path labelsFile = dir / "real" / "stove_s24_00000" / "labels.json";
+  nlohmann::json labels = nlohmann::json::parse(readFileBytes(labelsFile));
+  for (auto& point : labels.at("affordances"))
+    for (auto& x : point.at("position")) x = x.get<double>() * 100;
+  writeFileAtomic(labelsFile, labels.dump());
+  const std::string before = readFileBytes(out / "stove.togglebutton.pt");
+  r = test::runSagrid(fineTune + guard + " --out " + shellQuote(out.string()));
+  EXPECT_EQ(r.exitCode, 1) << r.output;
+  EXPECT_THAT(r.output, HasSubstr(labelsFile.string()));
+  EXPECT_THAT(r.output, HasSubstr("outside its mesh"));
+  EXPECT_THAT(r.output, HasSubstr("the current model stays"));
+  EXPECT_EQ(readFileBytes(out / "stove.togglebutton.pt"), before);
+}
+
 }  // namespace
 }  // namespace sagrid

@@ -80,6 +80,10 @@ void TrainingWorker::run(TrainingRequest request) {
                             request.category + " object with points; add some first");
     }
     const double steps = double(types.size()) + 1.0;  // models, then the queue
+    if (!request.initDir.empty() && !request.heldOut.empty()) {
+      update([&](TrainingStatus& s) { s.phase = "checking the curated data and " + request.initDir.string(); });
+      checkGuardedUpdate({request.initDir, {}, {}, request.heldOut, {}, {}, {}}, {request.dataset});
+    }
     for (std::size_t t = 0; t < types.size(); ++t) {
       DatasetTrainingOptions options;
       options.modelName = request.category + "." + types[t];
@@ -99,6 +103,7 @@ void TrainingWorker::run(TrainingRequest request) {
       }
       const bool guarded = !options.init.empty() && !request.heldOut.empty();
       options.outDir = guarded ? request.outDir / (".candidate." + options.modelName) : request.outDir;
+      const GuardOptions guard{request.initDir, options.outDir, options.modelName, request.heldOut, {}, {}, {}};
       options.command = options.init.empty() ? "sagrid gui (Train panel)"
                                              : "sagrid gui (Train panel, fine-tune of " +
                                                    request.initDir.string() + ")";
@@ -125,7 +130,6 @@ void TrainingWorker::run(TrainingRequest request) {
                      result.trainingSeconds);
       if (guarded) {
         update([&](TrainingStatus& s) { s.phase = "guard: " + options.modelName + " on held-out objects"; });
-        GuardOptions guard{request.initDir, options.outDir, options.modelName, request.heldOut, {}, {}};
         const GuardVerdict verdict = judgeUpdate(guard);
         applyVerdict(verdict, guard, request.outDir);
         fs::remove_all(options.outDir);

@@ -7,6 +7,9 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "core/common/error.h"
 
 #include "core/common/atomic_file.h"
 #include "core/generate/dataset_generator.h"
@@ -86,6 +89,32 @@ TEST(GuardedUpdate, WithoutHeldOutObjectsOfItsTypeTheCurrentModelStays) {
   EXPECT_FALSE(v.adopted);
   EXPECT_EQ(v.objects, 0u);
   EXPECT_NE(v.reason.find("no held-out object"), std::string::npos);
+}
+
+TEST(GuardedUpdate, AModelsFolderMixingFeatureSetupsIsRefusedBeforeTraining) {
+  const fs::path dir = test::freshTempDir();
+  gen::generateDataset({{"stove", 2, 33}}, gen::MeshFormat::Obj, dir / "train");
+  gen::generateDataset({{"stove", 1, 34}}, gen::MeshFormat::Obj, dir / "held-out");
+  trainTiny(dir / "train", dir / "current", 1, 1);
+  // A second model of another grid size beside it (an older version left in the folder).
+  nlohmann::json card = nlohmann::json::parse(readFileBytes(dir / "current" / "stove.heatsource.json"));
+  card["name"] = "stove.togglebutton";
+  card["type"] = "togglebutton";
+  card["grid_resolution"] = 32;
+  writeFileAtomic(dir / "current" / "stove.togglebutton.json", card.dump());
+  fs::copy_file(dir / "current" / "stove.heatsource.pt", dir / "current" / "stove.togglebutton.pt");
+  const GuardOptions guard{dir / "current", dir / "candidate", kModel, dir / "held-out", {}, {}, tinyFeatures()};
+  try {
+    checkGuardedUpdate(guard, {dir / "train"});
+    FAIL() << "no error";
+  } catch (const ModelError& e) {
+    EXPECT_NE(std::string(e.what()).find("does not load as one set"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find((dir / "current").string()), std::string::npos) << e.what();
+  }
+  // One setup in the folder and sound data: no objection.
+  fs::remove(dir / "current" / "stove.togglebutton.json");
+  fs::remove(dir / "current" / "stove.togglebutton.pt");
+  EXPECT_NO_THROW(checkGuardedUpdate(guard, {dir / "train"}));
 }
 
 }  // namespace
