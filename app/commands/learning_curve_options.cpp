@@ -33,6 +33,10 @@ std::shared_ptr<LearningCurveCli> addLearningCurveOptions(CLI::App& eval) {
   eval.add_option("--ks", o->ks,
                   "With --learning-curve: object counts, e.g. 0,2,5,10,all (default)");
   eval.add_option("--seed", o->seed, "With --learning-curve: seed of the folds and fine-tunes");
+  eval.add_option("--adapt", o->adapt,
+                  "With --learning-curve: what each fine-tune changes: everything (default) or "
+                  "head (the last layer and the output head; batch-norm statistics kept)")
+      ->check(CLI::IsMember({"everything", "head"}));
   eval.add_option("--replay", o->replay,
                   "With --learning-curve: replay folder (default the bench split's train half); "
                   "none = no replay");
@@ -54,6 +58,7 @@ bool runLearningCurveIfAsked(const LearningCurveCli& cli, CLI::App& eval, const 
   o.epochs = epochs;
   o.minutes = eval.count("--minutes") ? minutes : 0;  // eval's --minutes default is --sweep's
   o.replay = cli.replay != "none";
+  o.adapted = sagrid::model::parseAdaptedPart(cli.adapt);
   if (o.replay && !cli.replay.empty()) o.replayDir = cli.replay;
   o.cacheDir = cache;
   o.outDir = out;

@@ -31,6 +31,7 @@ struct TrainCommandOptions {
   double minutes = 0;
   int batch = 4;
   double lr = 0;  // 0: kFineTuneLearningRate with --init, else kFromScratchLearningRate
+  std::string adapt = "everything";  // with --init: what the fine-tune changes
   unsigned seed = 1;
   double targetCap = 0;
   double nearWeight = 0;
@@ -84,6 +85,7 @@ std::string commandLine(const TrainCommandOptions& o, const std::vector<std::str
   if (o.epochs) s << " --epochs " << o.epochs;
   if (o.minutes > 0) s << " --minutes " << o.minutes;
   s << " --batch " << o.batch << " --lr " << learningRate(o) << " --seed " << o.seed;
+  if (o.adapt != "everything") s << " --adapt " << o.adapt;
   if (o.targetCap > 0) s << " --target-cap " << o.targetCap;
   if (o.nearWeight > 0) s << " --near-weight " << o.nearWeight;
   if (o.coarseToFine) s << (*o.coarseToFine ? " --coarse-to-fine" : " --no-coarse-to-fine");
@@ -140,6 +142,7 @@ sagrid::DatasetTrainingResult trainOne(const TrainCommandOptions& o,
   t.training.targetCap = static_cast<float>(o.targetCap);
   t.training.nearWeight = static_cast<float>(o.nearWeight);
   t.training.resume = o.resume;
+  t.training.adapted = sagrid::model::parseAdaptedPart(o.adapt);
   std::vector<std::string> dataArgs;
   for (const auto& d : data)
     if (d.role == "data") {
@@ -214,6 +217,11 @@ void setupTrain(CLI::App& root) {
                   "(the last epoch may stop part way)")
       ->check(CLI::NonNegativeNumber);
   cmd->add_option("--batch", o->batch, "Objects per step (default 4)")->check(CLI::PositiveNumber);
+  cmd->add_option("--adapt", o->adapt,
+                  "With --init: what the fine-tune changes: everything (default) or head (the "
+                  "last layer and the output head; earlier layers and batch-norm statistics stay "
+                  "the init model's)")
+      ->check(CLI::IsMember({"everything", "head"}));
   cmd->add_option("--lr", o->lr,
                   "Peak learning rate of AdamW (cosine schedule; default 3e-3, 1e-3 with --init)")
       ->check(CLI::PositiveNumber);

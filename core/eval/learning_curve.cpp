@@ -224,6 +224,7 @@ LearningCurveReport runLearningCurve(const LearningCurveOptions& options) {
   report.seed = options.seed;
   report.ks = options.ks;
   report.replay = options.replay;
+  report.adapted = options.adapted;
   report.epochs = options.epochs > 0 || options.minutes > 0 ? options.epochs : kDefaultEpochs;
   report.minutes = options.minutes;
 
@@ -326,6 +327,7 @@ LearningCurveReport runLearningCurve(const LearningCurveOptions& options) {
         t.training.epochs = report.epochs;
         t.training.minutes = options.minutes;
         t.training.learningRate = kFineTuneLearningRate;
+        t.training.adapted = options.adapted;
         t.training.seed = options.seed;
         t.command = "sagrid eval --learning-curve (fold " + std::to_string(foldNumber) + ", k " +
                     std::to_string(used) + ")";
@@ -387,7 +389,8 @@ std::string learningCurveMarkdown(const LearningCurveReport& r) {
      << (r.minutes > 0 && r.epochs == 0 ? reportCell(r.minutes, "%g min")
                                         : std::to_string(r.epochs) + " epoch(s)")
      << " per fine-tune, " << (r.replay ? "with" : "without")
-     << " bench replay). Error: the paper's metric (distance from the single predicted point to "
+     << " bench replay, adapting " << (r.adapted == model::AdaptedPart::Head ? "the last layer and head only, batch-norm statistics kept" : "every weight")
+     << "). Error: the paper's metric (distance from the single predicted point to "
         "the nearest ground truth) on the held-out fold, mean ± sd across folds, in cm. k = 0 "
         "is the init model.\n";
   for (std::size_t f = 0; f < r.foldSources.size(); ++f) {
@@ -431,6 +434,7 @@ json learningCurveJson(const LearningCurveReport& r) {
   j["epochs"] = r.epochs;
   j["minutes"] = r.minutes;
   j["replay"] = r.replay;
+  j["adapted"] = model::toString(r.adapted);
   j["ks"] = json::array();
   for (int k : r.ks) j["ks"].push_back(kLabel(k));
   j["points"] = json::array();

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "core/training/trainer.h"
 #include "core/training/training_sources.h"
 
 namespace sagrid {
@@ -31,6 +32,7 @@ struct LearningCurveOptions {
   int epochs = 0;       // per fine-tune; 0 = `minutes`
   double minutes = 0;   // per fine-tune; both 0 = 5 epochs
   bool replay = true;   // replay beside the k objects (weighted 1:1)
+  model::AdaptedPart adapted = model::AdaptedPart::Everything;  // what each fine-tune changes
   std::filesystem::path replayDir;  // empty = the default bench replay (training_sources.h)
   std::filesystem::path cacheDir;   // features of dataDir; empty = dataDir/.sagrid-cache
   std::filesystem::path outDir;     // report; fine-tuned models under outDir/work/
@@ -55,6 +57,7 @@ struct LearningCurveReport {
   std::vector<std::string> modelNames;
   std::vector<LearningCurvePoint> points;
   bool replay = true;
+  model::AdaptedPart adapted = model::AdaptedPart::Everything;
   int epochs = 0;
   double minutes = 0;
 };

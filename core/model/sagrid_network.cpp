@@ -173,8 +173,12 @@ SAGridNetImpl::SAGridNetImpl(const NetworkShape& shape) : m_shape(shape) {
 
 torch::Tensor SAGridNetImpl::batchNormRelu(const torch::Tensor& x, std::size_t layer) {
   return torch::relu(torch::batch_norm(x, m_bnWeights[layer], m_bnBiases[layer], m_bnMeans[layer],
-                                       m_bnVars[layer], is_training(), 0.1, 1e-5,
+                                       m_bnVars[layer], is_training() && !m_frozenStatistics, 0.1, 1e-5,
                                        /*cudnn_enabled=*/true));
+}
+
+std::vector<torch::Tensor> SAGridNetImpl::lastLayerParameters() const {
+  return {m_convWeights.back(), m_bnWeights.back(), m_bnBiases.back(), m_headWeight, m_headBias};
 }
 
 torch::Tensor SAGridNetImpl::forward(const NetworkBatch& batch, ExecutionMode mode,

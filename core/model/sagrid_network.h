@@ -64,6 +64,12 @@ class SAGridNetImpl : public torch::nn::Module {
 
   const NetworkShape& shape() const { return m_shape; }
 
+  // The last convolution's weights, its batch norm's scale and shift, and the output head.
+  std::vector<torch::Tensor> lastLayerParameters() const;
+  // Frozen, batch norm uses the running statistics in training mode too and leaves them as they
+  // are (fine-tuning the last layer on a few objects).
+  void setFrozenStatistics(bool frozen) { m_frozenStatistics = frozen; }
+
  private:
   torch::Tensor forwardSparse(const NetworkBatch& batch, bool fold);
   torch::Tensor forwardDense(const NetworkBatch& batch, bool fold);
@@ -74,6 +80,7 @@ class SAGridNetImpl : public torch::nn::Module {
   std::vector<torch::Tensor> m_bnWeights, m_bnBiases, m_bnMeans, m_bnVars;
   torch::Tensor m_headWeight;  // (1, C_last)
   torch::Tensor m_headBias;    // (1)
+  bool m_frozenStatistics = false;
 };
 TORCH_MODULE(SAGridNet);
 

@@ -347,6 +347,7 @@ DatasetTrainingResult trainFromDataset(const DatasetTrainingOptions& options) {
                 {"epochs", result.curve.empty() ? 0 : result.curve.back().epoch},
                 {"batch_size", training.batchSize},
                 {"learning_rate", training.learningRate},
+                {"adapted", model::toString(training.adapted)},
                 {"weight_decay", training.weightDecay},
                 {"seed", training.seed},
                 {"target_cap", training.targetCap},

@@ -33,6 +33,15 @@ struct EpochRecord {
   double seconds = 0;       // elapsed since the start of training (all sessions)
 };
 
+// What a fine-tune changes (issue 40: a few real objects must not undo what the bench taught).
+enum class AdaptedPart {
+  Everything,  // every weight, batch-norm statistics from the batches (as training from scratch)
+  Head,        // the last convolution, its batch norm's scale and shift and the output head; the
+               // batch-norm statistics and every earlier layer stay those of the init model
+};
+const char* toString(AdaptedPart part);           // "everything" | "head"
+AdaptedPart parseAdaptedPart(const std::string& text);  // throws InvalidArgument
+
 struct TrainingOptions {
   int epochs = 0;      // 0: from `minutes` (planned anew before every step), else 40
   double minutes = 0;  // time budget of the loop; used only when epochs == 0
@@ -54,6 +63,7 @@ struct TrainingOptions {
   std::vector<std::array<int, 3>> vectorChannels;  // rotated with the grid (normals)
   std::filesystem::path checkpointFile;            // written after every epoch; empty = none
   bool resume = false;                             // continue from checkpointFile when it exists
+  AdaptedPart adapted = AdaptedPart::Everything;
   std::function<void(const TrainingProgress&)> onProgress;
   const std::atomic<bool>* cancel = nullptr;  // throws Cancelled after saving a checkpoint
 };

@@ -1,5 +1,6 @@
 #include "core/training/trainer.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <numeric>
@@ -127,7 +128,52 @@ bool loadCheckpoint(const fs::path& file, SAGridNet& net, torch::optim::AdamW& o
   return true;
 }
 
+// The parameters a fine-tune of `part` trains. The others take no gradient (backward then stops
+// at the last layer) and, for the head, batch norm keeps the init model's statistics, until the
+// scope ends.
+class AdaptationScope {
+ public:
+  AdaptationScope(SAGridNet& net, AdaptedPart part) : m_net(net) {
+    if (part == AdaptedPart::Everything) {
+      trained = net->parameters();
+      return;
+    }
+    trained = net->lastLayerParameters();
+    for (auto& p : net->parameters()) {
+      const bool isTrained = std::any_of(trained.begin(), trained.end(),
+                                         [&](const torch::Tensor& t) { return t.is_same(p); });
+      if (!isTrained && p.requires_grad()) {
+        p.requires_grad_(false);
+        m_frozen.push_back(p);
+      }
+    }
+    net->setFrozenStatistics(true);
+  }
+  ~AdaptationScope() {
+    for (auto& p : m_frozen) p.requires_grad_(true);
+    m_net->setFrozenStatistics(false);
+  }
+  AdaptationScope(const AdaptationScope&) = delete;
+  AdaptationScope& operator=(const AdaptationScope&) = delete;
+
+  std::vector<torch::Tensor> trained;
+
+ private:
+  SAGridNet& m_net;
+  std::vector<torch::Tensor> m_frozen;
+};
+
 }  // namespace
+
+const char* toString(AdaptedPart part) {
+  return part == AdaptedPart::Head ? "head" : "everything";
+}
+
+AdaptedPart parseAdaptedPart(const std::string& text) {
+  if (text == "everything") return AdaptedPart::Everything;
+  if (text == "head") return AdaptedPart::Head;
+  throw InvalidArgument("adapted part \"" + text + "\": expected everything or head");
+}
 
 std::size_t plannedSteps(std::size_t stepsDone, double elapsedSeconds, double secondsPerStep,
                          double budgetSeconds) {
@@ -150,8 +196,9 @@ std::vector<EpochRecord> trainModel(AffordanceModel& model,
   configureTorchRuntime();
   AffordanceModelImpl& impl = model.impl();
   SAGridNet& net = impl.net;
+  const AdaptationScope adaptation(net, options.adapted);
   torch::optim::AdamW optimizer(
-      net->parameters(),
+      adaptation.trained,
       torch::optim::AdamWOptions(options.learningRate).weight_decay(options.weightDecay));
 
   const int batchSize = std::max(1, options.batchSize);
