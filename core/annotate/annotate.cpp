@@ -219,7 +219,7 @@ AnnotationResult annotateMeshFile(const fs::path& meshFile, const std::string& i
     finish();
     return r;
   }
-  annotateControls(r.labels, mesh);
+  annotateControls(r.labels, mesh, scene);
   r.objectConfidence = options.confidence.probability(leastSurePointDistance(r.predictions));
   r.labels.extra["prediction"] = {{"category_similarity", r.categorySimilarity},
                                   {"category_retrieved", r.categoryRetrieved},

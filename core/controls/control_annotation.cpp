@@ -3,10 +3,16 @@
 #include "core/controls/control_pairing.h"
 #include "core/controls/control_part.h"
 #include "core/controls/control_record.h"
+#include "core/geometry/surface_scene.h"
 
 namespace sagrid {
 
 std::vector<std::string> annotateControls(ObjectLabels& labels, const Mesh& mesh) {
+  return annotateControls(labels, mesh, SurfaceScene(mesh));
+}
+
+std::vector<std::string> annotateControls(ObjectLabels& labels, const Mesh& mesh,
+                                          const SurfaceScene& scene) {
   std::vector<std::size_t> toggles, burners;
   std::vector<Eigen::Vector3f> points;
   std::vector<Eigen::Vector2f> knobXy, burnerXy;
@@ -18,7 +24,7 @@ std::vector<std::string> annotateControls(ObjectLabels& labels, const Mesh& mesh
   }
   std::vector<std::string> warnings;
   if (toggles.empty()) return warnings;
-  const ControlParts found = findControlParts(mesh, points);
+  const ControlParts found = findControlParts(mesh, scene, points);
   const std::vector<int> drives = pairKnobsWithBurners(knobXy, burnerXy);
   for (std::size_t k = 0; k < toggles.size(); ++k) {
     AffordancePoint& point = labels.affordances[toggles[k]];

@@ -12,8 +12,13 @@
 
 namespace sagrid {
 
+class SurfaceScene;
+
 // `mesh` in its z-up frame, as imported for these labels. Returns the warnings of points left a
 // site (each naming its point).
 std::vector<std::string> annotateControls(ObjectLabels& labels, const Mesh& mesh);
+// The same with `scene` built on `mesh` already (annotate has one).
+std::vector<std::string> annotateControls(ObjectLabels& labels, const Mesh& mesh,
+                                          const SurfaceScene& scene);
 
 }  // namespace sagrid

@@ -438,6 +438,12 @@ ControlPart describeControlPart(const Mesh& mesh, std::vector<int> triangles, Pa
 }
 
 ControlParts findControlParts(const Mesh& mesh, const std::vector<Eigen::Vector3f>& points) {
+  if (points.empty()) return {};  // no scene to build
+  return findControlParts(mesh, SurfaceScene(mesh), points);
+}
+
+ControlParts findControlParts(const Mesh& mesh, const SurfaceScene& scene,
+                              const std::vector<Eigen::Vector3f>& points) {
   ControlParts result;
   result.parts.resize(points.size());
   result.warnings.resize(points.size());
@@ -447,7 +453,7 @@ ControlParts findControlParts(const Mesh& mesh, const std::vector<Eigen::Vector3
     return result;
   }
   std::vector<int> seeds;
-  for (const ClosestPoint& c : SurfaceScene(mesh).closestPoints(points)) seeds.push_back(c.triangle);
+  for (const ClosestPoint& c : scene.closestPoints(points)) seeds.push_back(c.triangle);
   const TriangleComponents connected = triangleComponents(mesh, false);
   const Labelling byConnection = labellingOf(surface, connected, points, seeds);
   const bool materials = std::adjacent_find(mesh.triangleMaterials.begin(), mesh.triangleMaterials.end(),

@@ -18,6 +18,7 @@
 namespace sagrid {
 
 struct Mesh;
+class SurfaceScene;
 
 enum class ControlMotion { Knob, Lever, Button };
 enum class PartOrigin { Connected, Material, Grown, Disc };
@@ -52,6 +53,10 @@ inline constexpr float kMaxControlAreaShare = 0.25f;
 // The part of each point of `points` (toggle button points, mesh frame). Points are told apart:
 // a part never holds what lies nearer another point.
 ControlParts findControlParts(const Mesh& mesh, const std::vector<Eigen::Vector3f>& points);
+// The same with `scene` built on `mesh` already (annotate has one): its points' nearest triangles
+// come from it instead of a new one.
+ControlParts findControlParts(const Mesh& mesh, const SurfaceScene& scene,
+                              const std::vector<Eigen::Vector3f>& points);
 
 // The motion of a given part (the curator's triangles): its axis and pivot from its shape and
 // from where the rest of the mesh holds it.

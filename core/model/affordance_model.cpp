@@ -163,7 +163,9 @@ namespace {
 // part between a one-process run and the one-core tasks of a Slurm array (issue 42). Several
 // passes (symmetric copies, ensemble members) run side by side instead. ATen keeps the count per
 // thread (an OpenMP setting, which an OpenMP BLAS follows); its global copy, read by threads that
-// start using ATen, is set back to the configured count.
+// start using ATen, is set back to the configured count. Each change also rebuilds ATen's global
+// thread pool (whose new workers spin a while), so a batch of passes sets the count once around
+// them all: its worker threads then start at one thread and change nothing.
 class OneIntraOpThread {
  public:
   OneIntraOpThread() : m_changed(at::get_num_threads() != 1) {
@@ -192,6 +194,8 @@ std::vector<std::vector<float>> AffordanceModel::predictDistances(
   m_impl->net->eval();
   for (std::size_t m = 0; m + 1 < networks; ++m) m_impl->members[m]->eval();
   const bool cpu = m_impl->device.is_cpu();
+  std::optional<OneIntraOpThread> passesOnOneThread;
+  if (cpu) passesOnOneThread.emplace();
   std::vector<std::vector<float>> out(grids.size());
   auto predictOne = [&](std::size_t g) {
     const FeatureGrid& features = *grids[g];
