@@ -1,5 +1,7 @@
 #include "core/annotate/point_passes.h"
 
+#include <future>
+
 #include "core/annotate/category_rules.h"
 #include "core/annotate/coarse_to_fine.h"
 #include "core/annotate/mirror_pairs_pass.h"
@@ -14,6 +16,36 @@
 
 namespace sagrid {
 
+namespace {
+
+// How one model runs: a type in `counts` takes InstanceMode::Count with its count (k-means), and
+// Count without one falls back to Auto.
+struct ModelRun {
+  InstanceMode mode = InstanceMode::Auto;
+  int count = 1;
+};
+
+ModelRun modelRunOf(const std::string& type, InstanceMode mode,
+                    const std::map<std::string, int>& counts) {
+  const auto count = counts.find(type);
+  if (count != counts.end()) return {InstanceMode::Count, count->second};
+  return {mode == InstanceMode::Count ? InstanceMode::Auto : mode, 1};
+}
+
+// A model's points before the passes that read other models' points: its field and instances,
+// then the coarse-to-fine crop.
+ModelPrediction locateWithModel(const model::AffordanceModel& model, const ObjectForPasses& object,
+                                const PassOptions& passes, ModelRun run) {
+  ModelPrediction p = predictWithModel(model, object.features, object.scene, object.mesh.fileUp,
+                                       run.mode, run.count, nullptr, passes.symmetries);
+  if (passes.coarseToFine.value_or(model.card().extraction.coarseToFine))
+    p = refineInCrop(model, p, object.mesh, object.features, object.scene, object.featureOptions,
+                     run.mode, run.count, passes.symmetries);
+  return p;
+}
+
+}  // namespace
+
 CategoryPoints predictCategoryPoints(const std::vector<const model::AffordanceModel*>& models,
                                      const std::string& category, const ObjectForPasses& object,
                                      const PassOptions& passes, InstanceMode mode,
@@ -23,6 +55,17 @@ CategoryPoints predictCategoryPoints(const std::vector<const model::AffordanceMo
   const FeatureGrid& features = object.features;
   const SurfaceScene& scene = object.scene;
   const CategoryRules rules = categoryRulesFor(category);
+  // Each model's field, instances and crop read nothing of the other models, so the models run
+  // side by side, and the mesh's marks and parts beside them; each step gives the same numbers
+  // on any thread. The passes that read other models' points then run in the models' order.
+  std::vector<ModelRun> runs;
+  std::vector<std::future<ModelPrediction>> located;
+  for (std::size_t m = 0; m < models.size(); ++m) {
+    if (beforeModel) beforeModel(m);
+    runs.push_back(modelRunOf(models[m]->card().type, mode, counts));
+    located.push_back(std::async(std::launch::async, locateWithModel, std::cref(*models[m]),
+                                 std::cref(object), std::cref(passes), runs.back()));
+  }
   CategoryPoints out;
   if (passes.printedMarks) out.printed = printedMarksOf(mesh, category);
   const std::vector<ConnectedPart> parts =
@@ -33,21 +76,10 @@ CategoryPoints predictCategoryPoints(const std::vector<const model::AffordanceMo
     out.touchKeys =
         touchKeysOf(category, parts, scene, features.normalization, features.resolution);
   for (std::size_t m = 0; m < models.size(); ++m) {
-    if (beforeModel) beforeModel(m);
     const auto& model = *models[m];
     const auto& card = model.card();
-    const auto count = counts.find(card.type);
-    InstanceMode modelMode = mode;
-    int n = 1;
-    if (count != counts.end())
-      modelMode = InstanceMode::Count, n = count->second;
-    else if (modelMode == InstanceMode::Count)
-      modelMode = InstanceMode::Auto;
-    ModelPrediction p = predictWithModel(model, features, scene, mesh.fileUp, modelMode, n, nullptr,
-                                         passes.symmetries);
-    if (passes.coarseToFine.value_or(card.extraction.coarseToFine))
-      p = refineInCrop(model, p, mesh, features, scene, object.featureOptions, modelMode, n,
-                       passes.symmetries);
+    const InstanceMode modelMode = runs[m].mode;
+    ModelPrediction p = located[m].get();
     if (passes.mirrorPairs && modelMode == InstanceMode::Auto)
       applyMirrorPairs(p, features, scene, mesh.fileUp, card.extraction,
                        passes.anchoredPairs ? mirrorAnchors(out.predictions, p.type)
@@ -62,7 +94,7 @@ CategoryPoints predictCategoryPoints(const std::vector<const model::AffordanceMo
       applySpoutOutlets(p, features, scene, mesh.fileUp, card.extraction);
     MarksForType marks = printedMarksFor(out.printed, category, p.type);
     if (marks.circles.empty()) marks = touchKeysFor(out.touchKeys, p.type);
-    applyPrintedMarks(model, p, marks, features, scene, mesh.fileUp, modelMode, n);
+    applyPrintedMarks(model, p, marks, features, scene, mesh.fileUp, modelMode, runs[m].count);
     out.predictions.push_back(std::move(p));
   }
   if (passes.partOwnership && mode == InstanceMode::Auto && counts.empty())
