@@ -28,13 +28,7 @@ void renderInto(const Mesh& mesh, const SurfaceScene& scene, const ViewCamera& c
   out.resize(size, size);
   const std::size_t n = out.pixelCount();
   rays.origins.assign(n, camera.position());
-  rays.directions.resize(n);
-  for (int y = 0; y < size; ++y) {
-    for (int x = 0; x < size; ++x) {
-      rays.directions[static_cast<std::size_t>(y) * size + x] =
-          camera.rayDirection((x + 0.5f) / size, (y + 0.5f) / size);
-    }
-  }
+  camera.pixelRayDirections(size, rays.directions);
   scene.intersectMany(rays.origins, rays.directions, rays.hits);
   for (std::size_t p = 0; p < n; ++p) {
     const auto& hit = rays.hits[p];

@@ -5,6 +5,15 @@
 
 namespace sagrid {
 
+namespace {
+// Normalized focal length (fx = fy) of a square image with full field of view `fov`.
+float focalLength(float fov) { return 0.5f / std::tan(fov / 2.0f); }
+
+Eigen::Vector3f directionThrough(const Eigen::Matrix3f& rotation, float f, float u, float v) {
+  return rotation * Eigen::Vector3f((u - 0.5f) / f, (v - 0.5f) / f, 1.0f);
+}
+}  // namespace
+
 ViewCamera ViewCamera::lookAtOrigin(float yaw, float pitch, float radius, float fov) {
   ViewCamera cam;
   cam.yaw = yaw;
@@ -39,7 +48,7 @@ Eigen::Matrix4f ViewCamera::extrinsics() const {
 }
 
 Eigen::Matrix3f ViewCamera::intrinsics() const {
-  const float f = 0.5f / std::tan(fov / 2.0f);
+  const float f = focalLength(fov);
   Eigen::Matrix3f k = Eigen::Matrix3f::Identity();
   k(0, 0) = f;
   k(1, 1) = f;
@@ -58,13 +67,22 @@ Eigen::Matrix4f ViewCamera::blenderTransform() const {
 Eigen::Vector2f ViewCamera::project(const Eigen::Vector3f& world, float* depth) const {
   const Eigen::Vector3f c = rotation().transpose() * (world - position());
   if (depth) *depth = c.z();
-  const float f = 0.5f / std::tan(fov / 2.0f);
+  const float f = focalLength(fov);
   return {f * c.x() / c.z() + 0.5f, f * c.y() / c.z() + 0.5f};
 }
 
 Eigen::Vector3f ViewCamera::rayDirection(float u, float v) const {
-  const float f = 0.5f / std::tan(fov / 2.0f);
-  return rotation() * Eigen::Vector3f((u - 0.5f) / f, (v - 0.5f) / f, 1.0f);
+  return directionThrough(rotation(), focalLength(fov), u, v);
+}
+
+void ViewCamera::pixelRayDirections(int size, std::vector<Eigen::Vector3f>& out) const {
+  const Eigen::Matrix3f r = rotation();
+  const float f = focalLength(fov);
+  out.resize(static_cast<std::size_t>(size) * size);
+  for (int y = 0; y < size; ++y)
+    for (int x = 0; x < size; ++x)
+      out[static_cast<std::size_t>(y) * size + x] =
+          directionThrough(r, f, (x + 0.5f) / size, (y + 0.5f) / size);
 }
 
 }  // namespace sagrid

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <vector>
 
 namespace sagrid {
 
@@ -31,6 +32,9 @@ struct ViewCamera {
   // Ray through normalized image coordinates (u, v). The direction is scaled so that the ray
   // parameter t equals depth along the optical axis (z-depth), which is what depth maps store.
   Eigen::Vector3f rayDirection(float u, float v) const;
+  // rayDirection through the centre of every pixel of a size x size image, row by row, into
+  // `out` (the rotation and focal length worked out once per image, not per pixel).
+  void pixelRayDirections(int size, std::vector<Eigen::Vector3f>& out) const;
 };
 
 }  // namespace sagrid
