@@ -37,6 +37,10 @@ std::shared_ptr<LearningCurveCli> addLearningCurveOptions(CLI::App& eval) {
                   "With --learning-curve: what each fine-tune changes: everything (default) or "
                   "head (the last layer and the output head; batch-norm statistics kept)")
       ->check(CLI::IsMember({"everything", "head"}));
+  eval.add_flag("--guard", o->guard,
+                "With --learning-curve: guard every fine-tune as `train --guard` does, on a "
+                "quarter of the training folds' sources held out of the fine-tunes; where the "
+                "guard refuses, the init model stands for that k");
   eval.add_option("--replay", o->replay,
                   "With --learning-curve: replay folder (default the bench split's train half); "
                   "none = no replay");
@@ -59,6 +63,7 @@ bool runLearningCurveIfAsked(const LearningCurveCli& cli, CLI::App& eval, const 
   o.minutes = eval.count("--minutes") ? minutes : 0;  // eval's --minutes default is --sweep's
   o.replay = cli.replay != "none";
   o.adapted = sagrid::model::parseAdaptedPart(cli.adapt);
+  o.guarded = cli.guard;
   if (o.replay && !cli.replay.empty()) o.replayDir = cli.replay;
   o.cacheDir = cache;
   o.outDir = out;

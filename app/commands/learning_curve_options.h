@@ -15,13 +15,15 @@ namespace sagrid::app {
 struct LearningCurveCli {
   bool enabled = false;
   std::string init, ks = "0,2,5,10,all", replay, adapt = "everything";
+  bool guard = false;
   std::vector<std::string> models;
   int folds = 3;
   bool bySource = false;
   unsigned seed = 1;
 };
 
-// Adds --learning-curve, --init, --model, --folds, --by-source, --ks, --seed, --replay, --adapt to `eval`.
+// Adds --learning-curve, --init, --model, --folds, --by-source, --ks, --seed, --replay, --adapt, --guard to
+// `eval`.
 std::shared_ptr<LearningCurveCli> addLearningCurveOptions(CLI::App& eval);
 
 // Runs the learning curve on --data with eval's --minutes / --epochs / --cache / --out when

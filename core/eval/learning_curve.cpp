@@ -21,6 +21,7 @@
 #include "core/model/model_files.h"
 #include "core/plot/plot.h"
 #include "core/training/dataset_training.h"
+#include "core/training/guarded_update.h"
 
 namespace sagrid {
 namespace fs = std::filesystem;
@@ -185,6 +186,23 @@ std::vector<std::vector<std::size_t>> sourceFoldSplit(const std::vector<std::str
   return result;
 }
 
+namespace {
+// A guarded learning curve's fold: the training folds' objects split into those the fine-tunes
+// draw from (in their order) and the guard set (one of four source groups of them; none when
+// they come from one source).
+std::pair<std::vector<const RealObject*>, std::vector<const RealObject*>> splitOffGuardSet(
+    const std::vector<const RealObject*>& pool, unsigned seed) {
+  std::vector<std::string> sources;
+  for (const auto* o : pool) sources.push_back(o->source);
+  if (std::set<std::string>(sources.begin(), sources.end()).size() < 2) return {pool, {}};
+  const auto groups = sourceFoldSplit(sources, 4, seed);
+  const std::set<std::size_t> guard(groups.back().begin(), groups.back().end());
+  std::vector<const RealObject*> fineTune, held;
+  for (std::size_t i = 0; i < pool.size(); ++i) (guard.count(i) ? held : fineTune).push_back(pool[i]);
+  return {fineTune, held};
+}
+}  // namespace
+
 std::vector<int> parseLearningCurveKs(const std::string& text) {
   std::vector<int> ks;
   std::stringstream in(text);
@@ -225,6 +243,7 @@ LearningCurveReport runLearningCurve(const LearningCurveOptions& options) {
   report.ks = options.ks;
   report.replay = options.replay;
   report.adapted = options.adapted;
+  report.guarded = options.guarded;
   report.epochs = options.epochs > 0 || options.minutes > 0 ? options.epochs : kDefaultEpochs;
   report.minutes = options.minutes;
 
@@ -292,8 +311,21 @@ LearningCurveReport runLearningCurve(const LearningCurveOptions& options) {
       if (g != f)
         for (std::size_t i : split[g]) pool.push_back(&objects[i]);
     writeSubsetDataset(foldDir / "test", test);
+    const fs::path guardDir = foldDir / "guard";
+    if (options.guarded) {
+      const auto [fineTunePool, guardSet] = splitOffGuardSet(pool, options.seed);
+      if (guardSet.empty())
+        throw InvalidArgument("learning curve --guard: fold " + std::to_string(foldNumber) +
+                              "'s training folds hold one source only; a guard needs another");
+      pool = fineTunePool;
+      writeSubsetDataset(guardDir, guardSet);
+      say("fold " + std::to_string(foldNumber) + ": guard set of " +
+          std::to_string(guardSet.size()) + " object(s), fine-tunes drawn from " +
+          std::to_string(pool.size()));
+    }
 
     std::map<std::pair<std::string, int>, fs::path> tuned;  // (model, k used) -> its folder
+    std::map<std::pair<std::string, int>, bool> adopted;    // (model, k used) -> guard's verdict
     std::map<std::vector<int>, std::vector<LearningCurvePoint>> evaluated;  // by all k used
     for (const int k : options.ks) {
       const fs::path modelsDir = foldDir / ("k" + kLabel(k)) / "models";
@@ -323,7 +355,7 @@ LearningCurveReport runLearningCurve(const LearningCurveOptions& options) {
         t.modelName = name;
         t.features = features;
         t.features.cacheDir.clear();  // per dataset (above)
-        t.outDir = modelsDir;
+        t.outDir = options.guarded ? modelsDir / ".candidate" : modelsDir;
         t.training.epochs = report.epochs;
         t.training.minutes = options.minutes;
         t.training.learningRate = kFineTuneLearningRate;
@@ -334,6 +366,17 @@ LearningCurveReport runLearningCurve(const LearningCurveOptions& options) {
         const auto start = std::chrono::steady_clock::now();
         const auto result = trainFromDataset(t);
         tuned[key] = modelsDir;
+        adopted[key] = true;
+        if (options.guarded) {
+          const GuardOptions guard{options.initDir, t.outDir, name, guardDir, objectsRoot,
+                                   features.cacheDir, features};
+          const GuardVerdict verdict = judgeUpdate(guard);
+          applyVerdict(verdict, guard, modelsDir);
+          fs::remove_all(t.outDir);
+          adopted[key] = verdict.adopted;
+          say("fold " + std::to_string(foldNumber) + " k=" + kLabel(k) + " " + name +
+              ": guard: " + verdict.reason);
+        }
         char line[256];
         std::snprintf(
             line, sizeof line,
@@ -359,6 +402,8 @@ LearningCurveReport runLearningCurve(const LearningCurveOptions& options) {
           p.fold = foldNumber;
           p.kUsed = kUsed[m];
           p.paperError = NAN;
+          if (const auto a = adopted.find({p.model, kUsed[m]}); a != adopted.end())
+            p.adopted = a->second;
           const auto& byModel = r.methods.front().byModel;  // "SAGrid argmin (paper)"
           if (const auto it = byModel.find(p.model); it != byModel.end()) {
             p.testObjects = it->second.objects;
@@ -393,6 +438,15 @@ std::string learningCurveMarkdown(const LearningCurveReport& r) {
      << "). Error: the paper's metric (distance from the single predicted point to "
         "the nearest ground truth) on the held-out fold, mean ± sd across folds, in cm. k = 0 "
         "is the init model.\n";
+  if (r.guarded) {
+    std::size_t tunes = 0, kept = 0;
+    for (const auto& p : r.points)
+      if (p.kUsed > 0) ++tunes, kept += p.adopted ? 1 : 0;
+    md << "\nGuarded: each fine-tune was kept only where its error on a guard set (a quarter of the "
+          "training folds' sources, none of them fine-tuned on) was lower than the init model's; "
+       << kept << " of " << tunes << " (model, fold, k) results come from a kept fine-tune, the "
+       << "others are the init model's.\n";
+  }
   for (std::size_t f = 0; f < r.foldSources.size(); ++f) {
     md << (f == 0 ? "\nFolds (sources held out together):\n" : "") << "- fold " << f + 1 << " ("
        << r.folds[f].size() << " objects):";
@@ -435,6 +489,7 @@ json learningCurveJson(const LearningCurveReport& r) {
   j["minutes"] = r.minutes;
   j["replay"] = r.replay;
   j["adapted"] = model::toString(r.adapted);
+  j["guarded"] = r.guarded;
   j["ks"] = json::array();
   for (int k : r.ks) j["ks"].push_back(kLabel(k));
   j["points"] = json::array();
@@ -444,7 +499,8 @@ json learningCurveJson(const LearningCurveReport& r) {
                            {"k", kLabel(p.k)},
                            {"k_used", p.kUsed},
                            {"test_objects", p.testObjects},
-                           {"paper_error_m", number(p.paperError)}});
+                           {"paper_error_m", number(p.paperError)},
+                           {"adopted", p.adopted}});
   j["summary"] = json::object();
   for (const auto& model : r.modelNames)
     for (int k : r.ks) {

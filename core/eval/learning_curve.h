@@ -33,6 +33,11 @@ struct LearningCurveOptions {
   double minutes = 0;   // per fine-tune; both 0 = 5 epochs
   bool replay = true;   // replay beside the k objects (weighted 1:1)
   model::AdaptedPart adapted = model::AdaptedPart::Everything;  // what each fine-tune changes
+  // Each fine-tune guarded as `train --guard` guards it (core/training/guarded_update.h): a
+  // quarter of the training folds' sources (at least one, seeded) is the guard set and the k
+  // objects come from the rest; the fine-tuned model is kept only where its error on the guard
+  // set is lower than the init model's, else the init model stands for that k.
+  bool guarded = false;
   std::filesystem::path replayDir;  // empty = the default bench replay (training_sources.h)
   std::filesystem::path cacheDir;   // features of dataDir; empty = dataDir/.sagrid-cache
   std::filesystem::path outDir;     // report; fine-tuned models under outDir/work/
@@ -46,6 +51,7 @@ struct LearningCurvePoint {
   int kUsed = 0;       // objects of the model's type actually fine-tuned on
   std::size_t testObjects = 0;  // held-out objects evaluated for this model
   double paperError = 0;        // metres, mean over testObjects; NaN when none
+  bool adopted = true;          // guarded: the fine-tune passed the guard (k = 0: true)
 };
 
 struct LearningCurveReport {
@@ -58,6 +64,7 @@ struct LearningCurveReport {
   std::vector<LearningCurvePoint> points;
   bool replay = true;
   model::AdaptedPart adapted = model::AdaptedPart::Everything;
+  bool guarded = false;
   int epochs = 0;
   double minutes = 0;
 };

@@ -37,5 +37,36 @@ TEST(LearningCurveCli, FoldsReachObjectFoldersLinkedFromElsewhere) {
   EXPECT_EQ(report.at("folds")[0].size() + report.at("folds")[1].size(), 2u);
 }
 
+// --guard: each fold's training sources are split into the fine-tune pool and a guard set of
+// other sources, every fine-tune is judged there, and the report says which were kept.
+TEST(LearningCurveCli, AGuardedCurveJudgesEveryFineTuneOnSourcesItDidNotTrainOn) {
+  const fs::path dir = test::freshTempDir();
+  gen::generateDataset({{"stove", 3, 33}}, gen::MeshFormat::Obj, dir / "real");
+  gen::generateDataset({{"stove", 1, 34}}, gen::MeshFormat::Obj, dir / "replay");
+  int n = 0;
+  for (const auto& e : fs::directory_iterator(dir / "real"))
+    if (e.is_directory())
+      writeFileAtomic(e.path() / "provenance.json", "{\"repo\": \"owner/source" + std::to_string(n++) + "\"}");
+  const auto r = test::runCommand(
+      "cd " + shellQuote(SAGRID_SOURCE_DIR) + " && " + shellQuote(test::sagridBinary().string()) +
+      " eval --learning-curve --by-source --guard --data " + shellQuote((dir / "real").string()) +
+      " --init resources/models --model stove.heatsource --ks 0,1 --folds 3 --epochs 1 --replay " +
+      shellQuote((dir / "replay").string()) + " --out " + shellQuote((dir / "lc").string()));
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("fold 1: guard set of 1 object(s), fine-tunes drawn from 1"));
+  EXPECT_THAT(r.output, HasSubstr("k=1 stove.heatsource: guard: "));
+  EXPECT_THAT(r.output, HasSubstr("held-out object(s): "));
+  const auto report = nlohmann::json::parse(readFileBytes(dir / "lc" / "learning_curve.json"));
+  EXPECT_TRUE(report.at("guarded").get<bool>());
+  int fineTunes = 0;
+  for (const auto& point : report.at("points"))
+    if (point.at("k_used").get<int>() == 1) {
+      ++fineTunes;
+      EXPECT_TRUE(point.contains("adopted"));
+    }
+  EXPECT_EQ(fineTunes, 3);
+  EXPECT_THAT(readFileBytes(dir / "lc" / "learning_curve.md"), HasSubstr("Guarded: each fine-tune"));
+}
+
 }  // namespace
 }  // namespace sagrid
