@@ -191,16 +191,31 @@ int plyTypeSize(const std::string& type) {
   return 0;
 }
 
-std::vector<std::string> words(std::string_view line) {
-  std::vector<std::string> out;
+// Calls `word(start, length)` for each whitespace-separated word of `line`.
+template <typename Word>
+void forEachWord(std::string_view line, Word word) {
   std::size_t i = 0;
   while (i < line.size()) {
     while (i < line.size() && std::isspace(static_cast<unsigned char>(line[i]))) ++i;
     const std::size_t start = i;
     while (i < line.size() && !std::isspace(static_cast<unsigned char>(line[i]))) ++i;
-    if (i > start) out.emplace_back(line.substr(start, i - start));
+    if (i > start) word(start, i - start);
   }
+}
+
+std::vector<std::string> words(std::string_view line) {
+  std::vector<std::string> out;
+  forEachWord(line, [&](std::size_t start, std::size_t length) {
+    out.emplace_back(line.substr(start, length));
+  });
   return out;
+}
+
+// words(line).size() without making the words (an OBJ has a face line per triangle).
+std::size_t wordCount(std::string_view line) {
+  std::size_t count = 0;
+  forEachWord(line, [&count](std::size_t, std::size_t) { ++count; });
+  return count;
 }
 
 class PlyCheck {
@@ -450,7 +465,7 @@ MeshFileFacts checkObj(std::string_view b) {
     const std::string_view line = trimmedStart(b.substr(at, next - at));
     if (!line.empty()) last = line;
     if (line.size() > 2 && line[0] == 'f' && std::isspace(static_cast<unsigned char>(line[1]))) {
-      const std::size_t refs = words(line).size() - 1;
+      const std::size_t refs = wordCount(line) - 1;
       if (refs >= 3) triangles += refs - 2;
     }
     at = next + 1;
