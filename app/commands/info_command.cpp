@@ -8,7 +8,6 @@
 #include "app/commands/up_axis_option.h"
 #include "core/annotate/burner_caps_rule.h"
 #include "core/annotate/repeated_parts_pass.h"
-#include "core/annotate/touch_keys_pass.h"
 #include "core/controls/control_part.h"
 #include "core/controls/control_turn.h"
 #include "core/features/printed_marks.h"
@@ -122,7 +121,7 @@ void setupInfo(CLI::App& root) {
   struct Options {
     std::string mesh, up;
     int resolution = sagrid::kDefaultGridResolution;
-    bool json = false, marks = false, keys = false, parts = false, materialParts = false;
+    bool json = false, marks = false, parts = false, materialParts = false;
     std::string controls, turnedMesh;
     float turn = 0.6f;
   };
@@ -135,9 +134,6 @@ void setupInfo(CLI::App& root) {
   cmd->add_flag("--printed-marks", o->marks,
                 "Also list the circles printed on upward textured surfaces that the texture pass "
                 "reads (cooking zones, touch symbols), in the file's frame");
-  cmd->add_flag("--touch-keys", o->keys,
-                "Also list the touch keys the touch-key pass finds (flat pads high on the object, "
-                "parts of their own), in the file's frame");
   cmd->add_flag(
       "--parts", o->parts,
       "Also list the mesh's small parts (a knob, a cap, a handle: those the repeated-parts "
@@ -161,7 +157,7 @@ void setupInfo(CLI::App& root) {
                                                o->resolution);
     if (o->json) std::cout << sagrid::summaryJson(summary).dump(2) << "\n";
     else std::cout << sagrid::formatSummary(summary);
-    if (!o->marks && !o->keys && !o->parts && !o->materialParts && o->controls.empty()) return;
+    if (!o->marks && !o->parts && !o->materialParts && o->controls.empty()) return;
     const sagrid::ImportOptions import(summary.fileUp, /*detect=*/false);
     const sagrid::Mesh mesh = sagrid::importMesh(o->mesh, import);
     if (o->materialParts) listMaterialParts(mesh);
@@ -171,20 +167,10 @@ void setupInfo(CLI::App& root) {
       listCircles("printed zones", marks.zones, mesh.fileUp);
       listCircles("printed symbols", marks.symbols, mesh.fileUp);
     }
-    if (!o->keys && !o->parts) return;
+    if (!o->parts) return;
     const auto normalization = sagrid::Normalization::fromMesh(mesh);
-    const auto parts = sagrid::normalizedParts(mesh, normalization);
-    if (o->keys) {
-      const sagrid::SurfaceScene scene(mesh);
-      listCircles(
-          "touch keys",
-          sagrid::touchKeysOf("stove", parts, scene, normalization, sagrid::kDefaultGridResolution),
-          mesh.fileUp);
-    }
-    if (o->parts) {
-      listSmallParts(parts, normalization, mesh.fileUp);
-      listRoundFlatFamilies(mesh);
-    }
+    listSmallParts(sagrid::normalizedParts(mesh, normalization), normalization, mesh.fileUp);
+    listRoundFlatFamilies(mesh);
   });
 }
 

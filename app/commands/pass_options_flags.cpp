@@ -18,9 +18,6 @@ const PassSwitch kPassSwitches[] = {
     {"--no-printed-marks", &PassOptions::printedMarks,
      "Switch the texture pass off: cooking zones and touch symbols printed on a stove's top "
      "(glass hobs) are not taken as its heat-source and toggle points"},
-    {"--no-touch-keys", &PassOptions::touchKeys,
-     "Switch the touch-key pass off: the flat pads of a stove's touch controls (small flat parts "
-     "standing on its top) are not taken as its toggle points"},
     {"--no-mirror-pairs", &PassOptions::mirrorPairs,
      "Switch the mirror-pair pass off: on a mirror-symmetric object the automatic count does not "
      "add the twin of a point whose neighbourhood has the same shape there"},

@@ -227,8 +227,7 @@ AnnotationResult annotateMeshFile(const fs::path& meshFile, const std::string& i
                                   {"object_confidence_calibrated", options.confidence.fitted},
                                   {"symmetries", options.symmetries},
                                   {"printed_zones", printed.zones.size()},
-                                  {"printed_symbols", printed.symbols.size()},
-                                  {"touch_keys", points.touchKeys.size()}};
+                                  {"printed_symbols", printed.symbols.size()}};
   if (decided && decided->byBurnerCaps)
     r.labels.extra["prediction"]["category_by_burner_caps"] = true;
   if (r.categoryRetrieved && classifier && !classifier->evidence.empty())

@@ -29,7 +29,6 @@ std::string annotateOptionsHash(const AnnotateOptions& options) {
       {"counts", options.counts},
       {"symmetries", options.symmetries},
       {"printed_marks", options.printedMarks},
-      {"touch_keys", options.touchKeys},
       {"mirror_pairs", options.mirrorPairs},
       {"anchored_pairs", options.anchoredPairs},
       {"repeated_parts", options.repeatedParts},

@@ -11,7 +11,6 @@ CategoryRules categoryRulesFor(const std::string& category) {
     return rules;
   }
   rules.printedMarks = true;
-  rules.touchKeys = true;
   rules.repeatedParts.separationBySpacing = true;
   rules.repeatedParts.snapPartVoxels = 1.0f;
   rules.repeatedParts.sureKnobRow = 3;

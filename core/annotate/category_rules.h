@@ -1,8 +1,7 @@
 // What the passes do differently on each category: the one table of the category-specific rules.
-// A stove's knobs and burner caps are parts of their own, its touch controls flat pads or prints
-// on its top; a sink's hot and cold handles are sometimes one part with the mixer's body, and the
-// spokes of one cross handle are copies of one another. So the texture and touch-key passes run
-// on stoves only, and the repeated-parts and part-ownership passes take per-category settings.
+// A stove's knobs and burner caps are parts of their own, its touch controls prints on its top; a
+// sink's hot and cold handles are sometimes one part with the mixer's body, and the spokes of one
+// cross handle are copies of one another. So the texture pass runs on stoves only, and the repeated-parts and part-ownership passes take per-category settings.
 #pragma once
 
 #include <optional>
@@ -18,8 +17,6 @@ struct CategoryRules {
   // Zones and touch symbols printed on the top stand for the heat sources and toggle buttons
   // (core/annotate/printed_marks_pass.h).
   bool printedMarks = false;
-  // Flat pads standing on the top are toggle buttons (core/annotate/touch_keys_pass.h).
-  bool touchKeys = false;
   // Stoves: copies as close as their spacing, knob points moved onto the knob parts
   // (RepeatedPartSettings::separationBySpacing, snapPartVoxels, sureKnobRow, rowContinuationScale).
   RepeatedPartSettings repeatedParts;

@@ -19,8 +19,10 @@ namespace sagrid {
 // the field; 12: on stoves, burner caps repeat after part ownership; 13: on stoves, a larger knob
 // continuing a row of three or more gets a point; 14: on sinks, a toggle point on the spout's part
 // moves to a part beside it; 15: a rejected object keeps its likeliest category's points as
-// suggestions; 16: every toggle button point records its control part, motion and burner).
-inline constexpr int kPointPassesVersion = 16;
+// suggestions; 16: every toggle button point records its control part, motion and burner; 17: the
+// touch-key pass removed: on curated real objects no pass was made on it helped no source and
+// hurt one).
+inline constexpr int kPointPassesVersion = 17;
 
 struct PassOptions {
   // Test-time augmentation: copies averaged per model (1 = off, 8 = all). 8 by default: on the
@@ -34,9 +36,6 @@ struct PassOptions {
   // The texture pass (core/annotate/printed_marks_pass.h): zones and touch symbols printed on a
   // stove's top become its heat-source and toggle points.
   bool printedMarks = true;
-  // The touch-key pass (core/annotate/touch_keys_pass.h): the flat pads of a stove's touch
-  // controls become its toggle points where the texture pass found no printed ones.
-  bool touchKeys = true;
   // The mirror-pair pass of the automatic count (core/annotate/mirror_pairs_pass.h): on a
   // mirror-symmetric object, the twin of a point whose neighbourhood has the same shape there.
   bool mirrorPairs = true;

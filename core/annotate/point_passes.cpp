@@ -10,7 +10,6 @@
 #include "core/annotate/repeated_parts_pass.h"
 #include "core/annotate/spout_controls_pass.h"
 #include "core/annotate/spout_outlet_pass.h"
-#include "core/annotate/touch_keys_pass.h"
 #include "core/geometry/surface_scene.h"
 #include "core/mesh/mesh.h"
 
@@ -69,12 +68,9 @@ CategoryPoints predictCategoryPoints(const std::vector<const model::AffordanceMo
   CategoryPoints out;
   if (passes.printedMarks) out.printed = printedMarksOf(mesh, category);
   const std::vector<ConnectedPart> parts =
-      passes.repeatedParts || passes.partOwnership || passes.touchKeys || passes.spoutControls
+      passes.repeatedParts || passes.partOwnership || passes.spoutControls
           ? normalizedParts(mesh, features.normalization)
           : std::vector<ConnectedPart>{};
-  if (passes.touchKeys)
-    out.touchKeys =
-        touchKeysOf(category, parts, scene, features.normalization, features.resolution);
   for (std::size_t m = 0; m < models.size(); ++m) {
     const auto& model = *models[m];
     const auto& card = model.card();
@@ -92,8 +88,7 @@ CategoryPoints predictCategoryPoints(const std::vector<const model::AffordanceMo
                          rules.repeatedParts);
     if (passes.spoutOutlets && modelMode != InstanceMode::Single)
       applySpoutOutlets(p, features, scene, mesh.fileUp, card.extraction);
-    MarksForType marks = printedMarksFor(out.printed, category, p.type);
-    if (marks.circles.empty()) marks = touchKeysFor(out.touchKeys, p.type);
+    const MarksForType marks = printedMarksFor(out.printed, category, p.type);
     applyPrintedMarks(model, p, marks, features, scene, mesh.fileUp, modelMode, runs[m].count);
     out.predictions.push_back(std::move(p));
   }

@@ -1,7 +1,7 @@
 // The sequence that turns an object's features into the points of every model of its category:
 // per model the field (averaged over symmetric copies), the instances, the coarse-to-fine crop,
 // then the automatic count's passes (mirror pairs, repeated parts, spout outlets), the printed
-// marks or else the touch keys, and across the models the part-ownership pass. `annotate` and
+// marks, and across the models the part-ownership pass. `annotate` and
 // `eval` both call it, so what eval measures is what annotate writes; PassOptions switches the
 // steps off one by one.
 #pragma once
@@ -30,7 +30,6 @@ struct ObjectForPasses {
 struct CategoryPoints {
   std::vector<ModelPrediction> predictions;  // one per model, in the models' order
   PrintedMarks printed;                      // what the texture pass found (empty when off)
-  std::vector<PrintedCircle> touchKeys;      // what the touch-key pass found (empty when off)
 };
 
 // Runs `models` (one category's, `category`) on `object`. `mode` is the instance mode; a type in

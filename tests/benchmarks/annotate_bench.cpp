@@ -77,8 +77,7 @@ BENCHMARK(BM_FourModelsAndExtraction)
 // texture pass (printed zones and symbols; this mesh has no texture, so it costs the scan), bit
 // 32 = the mirror-pair pass of the automatic count, bit 64 = the repeated-parts pass (the mesh's
 // connected parts and the copies of each toggle button's part), bit 128 = the part-ownership pass
-// (the part under every point of every type), bit 256 = the touch-key pass (flat pads standing
-// on the top: the parts and a few rays beside each flat one).
+// (the part under every point of every type).
 void BM_AnnotateDenseEndToEnd(benchmark::State& state) {
   Fixture& f = fixture();
   const fs::path mesh = sagrid::bench::denseCopy(2);
@@ -93,7 +92,6 @@ void BM_AnnotateDenseEndToEnd(benchmark::State& state) {
   options.mirrorPairs = (additions & 32) != 0;
   options.repeatedParts = (additions & 64) != 0;
   options.partOwnership = (additions & 128) != 0;
-  options.touchKeys = (additions & 256) != 0;
   const fs::path out = sagrid::bench::benchDir() / "annotate-out";
   for (auto _ : state)
     benchmark::DoNotOptimize(
@@ -103,8 +101,7 @@ void BM_AnnotateDenseEndToEnd(benchmark::State& state) {
       (additions & 2 ? ", category classified" : ", category given") +
       (additions & 4 ? ", 8 symmetries" : ", 1 copy") + (additions & 8 ? ", coarse-to-fine" : "") +
       (additions & 16 ? ", texture pass" : "") + (additions & 32 ? ", mirror pairs" : "") +
-      (additions & 64 ? ", repeated parts" : "") + (additions & 128 ? ", part ownership" : "") +
-      (additions & 256 ? ", touch keys" : ""));
+      (additions & 64 ? ", repeated parts" : "") + (additions & 128 ? ", part ownership" : ""));
 }
 BENCHMARK(BM_AnnotateDenseEndToEnd)
     ->Arg(0)
@@ -122,8 +119,6 @@ BENCHMARK(BM_AnnotateDenseEndToEnd)
     ->Arg(127)
     ->Arg(128)
     ->Arg(255)
-    ->Arg(256)
-    ->Arg(511)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime()
     ->Iterations(2);

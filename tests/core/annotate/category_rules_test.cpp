@@ -8,7 +8,6 @@ namespace {
 TEST(CategoryRules, StovesGetTheirOwnRules) {
   const CategoryRules stove = categoryRulesFor("stove");
   EXPECT_TRUE(stove.printedMarks);
-  EXPECT_TRUE(stove.touchKeys);
   EXPECT_TRUE(stove.repeatedParts.separationBySpacing);
   EXPECT_GT(stove.repeatedParts.snapPartVoxels, 0.0f);
   EXPECT_GE(stove.repeatedParts.sureKnobRow, 3);
@@ -30,7 +29,6 @@ TEST(CategoryRules, SinksAndOtherCategoriesKeepTheDefaults) {
     SCOPED_TRACE(category);
     const CategoryRules rules = categoryRulesFor(category);
     EXPECT_FALSE(rules.printedMarks);
-    EXPECT_FALSE(rules.touchKeys);
     EXPECT_FALSE(rules.repeatedParts.separationBySpacing);
     EXPECT_EQ(rules.repeatedParts.snapPartVoxels, 0.0f);
     EXPECT_EQ(rules.repeatedParts.sureKnobRow, 0);
