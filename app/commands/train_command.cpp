@@ -281,6 +281,12 @@ void setupTrain(CLI::App& root) {
       throw sagrid::InvalidArgument("--model is required, e.g. --model stove.heatsource");
     const fs::path out = o->out.empty() ? fs::path("models") : fs::path(o->out);
     if (o->guard.empty()) {
+      // Unguarded fine-tunes made held-out real objects worse (README "Guarded updates").
+      if (!o->init.empty())
+        std::fprintf(stderr,
+                     "note: an unguarded fine-tune is kept whether or not it is better; give "
+                     "--guard HELD_OUT (curated objects of other sources) to keep it only where "
+                     "it is\n");
       trainOne(*o, dataSources(*o), o->model, out);
       return;
     }

@@ -29,6 +29,8 @@ void drawTrainPanel(Session& session, TrainingWorker& worker,
       if (ImGui::IsItemHovered())
         ImGui::SetTooltip("A dataset of curated objects from other sources than the training set: "
                           "each fine-tuned model is adopted only where it is better there");
+      if (heldOut[0] == '\0')
+        ImGui::TextDisabled("Unguarded: every fine-tuned model is kept, better or not");
     }
     ImGui::BeginDisabled(category.empty());
     const std::string label = category.empty()        ? "Train (set a category)"
