@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cstdio>
 #include <iostream>
+#include <nlohmann/json.hpp>
+#include <optional>
 
 #include "app/command_registry.h"
 #include "app/commands/up_axis_option.h"
@@ -18,6 +20,7 @@
 #include "core/labels/labels.h"
 #include "core/mesh/mesh_export.h"
 #include "core/mesh/mesh_import.h"
+#include "core/mesh/unit_guess.h"
 
 namespace {
 
@@ -122,7 +125,7 @@ void setupInfo(CLI::App& root) {
     std::string mesh, up;
     int resolution = sagrid::kDefaultGridResolution;
     bool json = false, marks = false, parts = false, materialParts = false;
-    std::string controls, turnedMesh;
+    std::string controls, turnedMesh, unitsFor;
     float turn = 0.6f;
   };
   auto o = std::make_shared<Options>();
@@ -152,11 +155,27 @@ void setupInfo(CLI::App& root) {
                   "move it (.obj or .glb, file frame): knobs and levers turned by --turn radians, "
                   "buttons pressed");
   cmd->add_option("--turn", o->turn, "Angle for --turned-mesh, radians")->capture_default_str();
+  cmd->add_option("--units-for", o->unitsFor,
+                  "Also print the units `annotate` guesses for this file were it of this category "
+                  "(stove, sink, none): the unit, metres per unit and why");
   cmd->callback([o] {
     const auto summary = sagrid::summarizeMesh(o->mesh, sagrid::ImportOptions(sagrid::parseUpAxis(o->up), /*detect=*/true),
                                                o->resolution);
-    if (o->json) std::cout << sagrid::summaryJson(summary).dump(2) << "\n";
-    else std::cout << sagrid::formatSummary(summary);
+    std::optional<sagrid::UnitGuess> units;
+    if (!o->unitsFor.empty())
+      units = sagrid::guessMetersPerUnit(summary.bounds.sizes().maxCoeff(), o->unitsFor);
+    if (o->json) {
+      nlohmann::json report = sagrid::summaryJson(summary);
+      if (units)
+        report["units_guess"] = {{"unit", units->unit}, {"meters_per_unit", units->metersPerUnit},
+                                 {"sure", units->sure}, {"reason", units->reason}};
+      std::cout << report.dump(2) << "\n";
+    } else {
+      std::cout << sagrid::formatSummary(summary);
+      if (units)
+        std::printf("units guess: %s, %g m per unit (%s)\n", units->unit.c_str(),
+                    units->metersPerUnit, units->reason.c_str());
+    }
     if (!o->marks && !o->parts && !o->materialParts && o->controls.empty()) return;
     const sagrid::ImportOptions import(summary.fileUp, /*detect=*/false);
     const sagrid::Mesh mesh = sagrid::importMesh(o->mesh, import);

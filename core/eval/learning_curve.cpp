@@ -326,6 +326,7 @@ LearningCurveReport runLearningCurve(const LearningCurveOptions& options) {
 
     std::map<std::pair<std::string, int>, fs::path> tuned;  // (model, k used) -> its folder
     std::map<std::pair<std::string, int>, bool> adopted;    // (model, k used) -> guard's verdict
+    std::map<std::string, HeldOutError> initOnGuard;       // model -> the init model's figure
     std::map<std::vector<int>, std::vector<LearningCurvePoint>> evaluated;  // by all k used
     for (const int k : options.ks) {
       const fs::path modelsDir = foldDir / ("k" + kLabel(k)) / "models";
@@ -370,7 +371,11 @@ LearningCurveReport runLearningCurve(const LearningCurveOptions& options) {
         if (options.guarded) {
           const GuardOptions guard{options.initDir, t.outDir, name, guardDir, objectsRoot,
                                    features.cacheDir, features};
-          const GuardVerdict verdict = judgeUpdate(guard);
+          const auto init = initOnGuard.find(name);
+          const GuardVerdict verdict =
+              judgeUpdate(guard, init == initOnGuard.end() ? std::nullopt
+                                                           : std::optional<HeldOutError>(init->second));
+          initOnGuard[name] = {verdict.currentError, verdict.objects};
           applyVerdict(verdict, guard, modelsDir);
           fs::remove_all(t.outDir);
           adopted[key] = verdict.adopted;

@@ -21,32 +21,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-struct HeldOutError {
-  double error = NAN;
-  std::size_t objects = 0;
-};
-
-// The model alone (its files copied to a folder of their own) on the held-out objects.
-HeldOutError heldOutError(const fs::path& modelsDir, const GuardOptions& o, const fs::path& scratch) {
-  fs::remove_all(scratch);
-  model::copyModelFiles(modelsDir, scratch, o.modelName);
-  const ModelSet models = ModelSet::load(scratch);
-  EvaluationOptions e;
-  e.dataDir = o.heldOutDir;
-  e.referenceRoot = o.referenceRoot;
-  e.features = o.features ? *o.features : models.featureOptions();
-  e.features.cacheDir = o.cacheDir.empty() ? o.heldOutDir / ".sagrid-cache" : o.cacheDir;
-  const EvaluationReport report = evaluateModels(models, e);
-  fs::remove_all(scratch);
-  HeldOutError out;
-  const auto& byModel = report.methods.front().byModel;  // "SAGrid argmin (paper)"
-  if (const auto it = byModel.find(o.modelName); it != byModel.end() && it->second.objects > 0) {
-    out.objects = it->second.objects;
-    out.error = it->second.paperError;
-  }
-  return out;
-}
-
 std::string centimetres(double metres) {
   char text[32];
   std::snprintf(text, sizeof text, "%.1f cm", metres * 100);
@@ -67,6 +41,28 @@ std::size_t heldOutObjectsOfType(const GuardOptions& o) {
 
 }  // namespace
 
+// The model is loaded alone from a folder of its own (a copy of its files).
+HeldOutError heldOutError(const fs::path& modelsDir, const GuardOptions& o) {
+  const fs::path scratch = o.candidateDir / ".guard-scratch";
+  fs::remove_all(scratch);
+  model::copyModelFiles(modelsDir, scratch, o.modelName);
+  const ModelSet models = ModelSet::load(scratch);
+  EvaluationOptions e;
+  e.dataDir = o.heldOutDir;
+  e.referenceRoot = o.referenceRoot;
+  e.features = o.features ? *o.features : models.featureOptions();
+  e.features.cacheDir = o.cacheDir.empty() ? o.heldOutDir / ".sagrid-cache" : o.cacheDir;
+  const EvaluationReport report = evaluateModels(models, e);
+  fs::remove_all(scratch);
+  HeldOutError out{NAN, 0};
+  const auto& byModel = report.methods.front().byModel;  // "SAGrid argmin (paper)"
+  if (const auto it = byModel.find(o.modelName); it != byModel.end() && it->second.objects > 0) {
+    out.objects = it->second.objects;
+    out.error = it->second.paperError;
+  }
+  return out;
+}
+
 void checkGuardedUpdate(const GuardOptions& o, const std::vector<fs::path>& trainingDirs) {
   try {
     ModelSet::load(o.currentDir);
@@ -78,7 +74,7 @@ void checkGuardedUpdate(const GuardOptions& o, const std::vector<fs::path>& trai
   requireSoundCuratedData({trainingDirs, o.heldOutDir, o.referenceRoot});
 }
 
-GuardVerdict judgeUpdate(const GuardOptions& o) {
+GuardVerdict judgeUpdate(const GuardOptions& o, const std::optional<HeldOutError>& known) {
   if (heldOutObjectsOfType(o) == 0) {
     GuardVerdict v;
     v.model = o.modelName;
@@ -86,9 +82,8 @@ GuardVerdict judgeUpdate(const GuardOptions& o) {
     v.reason = "no held-out object of its type in " + o.heldOutDir.string() + ": current model kept";
     return v;
   }
-  const fs::path scratch = o.candidateDir / ".guard-scratch";
-  const HeldOutError current = heldOutError(o.currentDir, o, scratch);
-  const HeldOutError candidate = heldOutError(o.candidateDir, o, scratch);
+  const HeldOutError current = known ? *known : heldOutError(o.currentDir, o);
+  const HeldOutError candidate = heldOutError(o.candidateDir, o);
   GuardVerdict v;
   v.model = o.modelName;
   v.objects = candidate.objects;

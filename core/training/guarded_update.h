@@ -14,6 +14,11 @@
 
 namespace sagrid {
 
+// A model's single-point error on the held-out objects of its type.
+struct HeldOutError {
+  double error = 0;         // metres (NaN when no object)
+  std::size_t objects = 0;
+};
 struct GuardVerdict {
   std::string model;
   std::size_t objects = 0;      // held-out objects of its type evaluated
@@ -41,8 +46,14 @@ struct GuardOptions {
 void checkGuardedUpdate(const GuardOptions& options,
                         const std::vector<std::filesystem::path>& trainingDirs);
 
-// Evaluates both; throws what evaluation throws (missing model, unreadable data).
-GuardVerdict judgeUpdate(const GuardOptions& options);
+// The model options.modelName of `modelsDir`, alone, on the held-out objects. Throws what
+// evaluation throws (missing model, unreadable data).
+HeldOutError heldOutError(const std::filesystem::path& modelsDir, const GuardOptions& options);
+
+// Evaluates both (the current model only when `current` is not given: a caller judging several
+// candidates against one current model on one held-out folder evaluates it once).
+GuardVerdict judgeUpdate(const GuardOptions& options,
+                         const std::optional<HeldOutError>& current = std::nullopt);
 
 // Puts the verdict into effect in `outDir`: adopted, the candidate's files move there; refused,
 // they move to outDir/refused/ and the current model's files are copied into outDir (unless it is

@@ -1,9 +1,9 @@
 #!/usr/bin/env python3
 """Leave-one-source-out test of the units guess (issue 41 item 5) on curated real objects.
 
-Compares, on every curated object (its largest extent from `sagrid info`, its curated
-meters_per_unit and category), today's rule (core/mesh/unit_guess.cpp: one hand-set size range
-per category, the commoner unit on ties) with a size prior learned from the other sources
+Compares, on every curated object (its largest extent and the product's own guess from
+`sagrid info --units-for CATEGORY`, its curated meters_per_unit and category), today's rule
+(core/mesh/unit_guess.cpp: one hand-set size range per category, the commoner unit on ties) with a size prior learned from the other sources
 (log-normal largest extent per category, unit shares counted, a log-uniform "game units"
 alternative over DECADES decades). A guess is right within a factor 1.5 of the curated value.
 
@@ -25,31 +25,23 @@ def objects(sagrid, folders):
             o = labels['object'] if isinstance(labels['object'], dict) else {'id': labels['object']}
             mesh = o.get('mesh') or next(f for f in sorted(os.listdir(os.path.dirname(labels_file)))
                                          if f.split('.')[-1].lower() in ('obj', 'glb', 'gltf', 'ply', 'stl', 'dae', 'fbx'))
-            info = subprocess.run([sagrid, 'info', os.path.join(folder, name, mesh), '--up', o.get('up', 'z')],
-                                  capture_output=True, text=True).stdout
-            size = [float(x) for l in info.splitlines() if l.startswith('size:')
-                    for x in l.split('(')[1].rstrip(')').split(',')]
-            if not size:
+            category = o.get('category', labels.get('category', ''))
+            info = subprocess.run([sagrid, 'info', os.path.join(folder, name, mesh), '--up', o.get('up', 'z'),
+                                   '--units-for', category, '--json'], capture_output=True, text=True)
+            if info.returncode != 0:
                 continue
+            report = json.loads(info.stdout)
             # As core/dataset/object_source.h: the repository, else the library, else the folder.
             provenance = o.get('provenance') or {}
             beside = os.path.join(folder, name, 'provenance.json')
             if not provenance and os.path.isfile(beside):
                 provenance = json.load(open(beside))
             source = provenance.get('repo') or provenance.get('library') or folder
-            yield dict(id=o['id'], category=o.get('category', labels.get('category', '')),
-                       extent=max(size), mpu=o.get('meters_per_unit', 1.0), source=source)
-
-
-def hand_ranges(extent, category, _):
-    lo, hi = {'stove': (0.3, 1.5), 'sink': (0.1, 2.0)}.get(category, (0.1, 3.0))
-    best = None
-    for _, m in UNITS:
-        x = extent * m
-        off = 0 if lo <= x <= hi else math.log10(lo / x if x < lo else x / hi)
-        if best is None or off < best[0]:
-            best = (off, m)
-    return best[1]
+            box = report['bounds']
+            yield dict(id=o['id'], category=category,
+                       extent=max(hi - lo for lo, hi in zip(box['min'], box['max'])),
+                       mpu=o.get('meters_per_unit', 1.0), source=source,
+                       today=report['units_guess']['meters_per_unit'])
 
 
 def unit_class(mpu):
@@ -71,7 +63,8 @@ def fit(train):
 
 
 def learned(decades):
-    def guess(extent, category, prior):
+    def guess(r, prior):
+        extent, category = r['extent'], r['category']
         sizes, share = prior
         mean, sd = sizes.get(category, sizes.get('none'))
         best = max((share[n] * math.exp(-((math.log10(extent * m) - mean) / sd) ** 2 / 2) /
@@ -86,7 +79,7 @@ def loso(rows, guess):
     for source in sorted(set(r['source'] for r in rows)):
         prior = fit([r for r in rows if r['source'] != source])
         for r in (r for r in rows if r['source'] == source):
-            g = guess(r['extent'], r['category'], prior)
+            g = guess(r, prior)
             ok = max(g / r['mpu'], r['mpu'] / g) <= 1.5
             right += ok
             if max(r['mpu'], 1 / r['mpu']) > 1.5:
@@ -101,8 +94,9 @@ def main():
     rows = list(objects(sys.argv[1], sys.argv[2:]))
     print('%d curated objects, %d sources\n' % (len(rows), len(set(r['source'] for r in rows))))
     print('| guess | right | files not in metres right |\n|---|---|---|')
-    methods = [('hand-set ranges (today)', hand_ranges)] + [
-        ('learned size prior, game units over %g decades' % d, learned(d)) for d in (3, 6, 1e9)]
+    methods = [('hand-set ranges (today, the product\'s guess)', lambda r, _: r['today'])]
+    methods += [('learned size prior, game units over %g decades' % d, learned(d)) for d in (3, 6)]
+    methods += [('learned size prior, no game units', learned(float('inf')))]
     for name, guess in methods:
         right, nmr, nm, wrong = loso(rows, guess)
         print('| %s | %d / %d | %d / %d |' % (name, right, len(rows), nmr, nm))

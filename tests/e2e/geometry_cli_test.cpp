@@ -161,6 +161,19 @@ TEST(GeometryCli, HelpAndUpOption) {
   EXPECT_NE(runSagrid("info " + shellQuote(mesh.string()) + " --up w").exitCode, 0);
 }
 
+TEST(InfoCommand, PrintsTheUnitsAnnotateWouldGuess) {
+  // A stove 90 units tall is in centimetres.
+  const fs::path dir = test::freshTempDir();
+  exportMesh(test::box({0, 0, 0}, {60, 60, 90}), dir / "stove.obj");
+  const std::string info = "info " + shellQuote((dir / "stove.obj").string()) + " --up z";
+  auto r = runSagrid(info + " --units-for stove");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("units guess: cm, 0.01 m per unit (largest extent 90 units"));
+  r = runSagrid(info + " --units-for stove --json");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_EQ(nlohmann::json::parse(r.output).at("units_guess").at("unit"), "cm");
+}
+
 TEST(InfoCommand, ListsSmallParts) {
   // A cooktop (60 x 40 x 20 cm, z up) with two flat pads on its top and a knob on its front.
   Mesh cooktop = test::box({-0.3f, -0.2f, 0.0f}, {0.3f, 0.2f, 0.2f});

@@ -15,6 +15,7 @@
 #include "core/model/affordance_model.h"
 #include "core/training/dataset_training.h"
 #include "support/test_paths.h"
+#include "support/tiny_training.h"
 
 namespace sagrid {
 namespace {
@@ -22,23 +23,12 @@ namespace fs = std::filesystem;
 using ::testing::HasSubstr;
 
 constexpr const char* kModel = "stove.heatsource";
-constexpr const char* kArch = "[3,1,8],[3,2,8,2]";
+constexpr const char* kArch = test::kTinyArchitecture;
+using test::tinyFeatures;
 
-FeatureOptions tinyFeatures() {
-  FeatureOptions f;
-  f.resolution = 16;
-  f.views = 6;
-  return f;
-}
-
+// Without augmentation: the first step's batch is the object as it is.
 DatasetTrainingOptions tinyOptions(const fs::path& out) {
-  DatasetTrainingOptions o;
-  o.modelName = kModel;
-  o.architecture = kArch;
-  o.features = tinyFeatures();
-  o.outDir = out;
-  o.training.epochs = 1;
-  o.training.batchSize = 1;
+  DatasetTrainingOptions o = test::tinyTraining(kModel, {}, out);
   o.training.augmentation.rotate = false;
   o.training.augmentation.reflect = false;
   o.training.augmentation.translate = false;

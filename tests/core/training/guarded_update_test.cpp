@@ -16,6 +16,7 @@
 #include "core/model/model_files.h"
 #include "core/training/dataset_training.h"
 #include "support/test_paths.h"
+#include "support/tiny_training.h"
 
 namespace sagrid {
 namespace {
@@ -23,22 +24,10 @@ namespace {
 namespace fs = std::filesystem;
 constexpr const char* kModel = "stove.heatsource";
 
-FeatureOptions tinyFeatures() {
-  FeatureOptions f;
-  f.resolution = 16;
-  f.views = 6;
-  return f;
-}
+using test::tinyFeatures;
 
 void trainTiny(const fs::path& data, const fs::path& out, unsigned seed, int epochs) {
-  DatasetTrainingOptions o;
-  o.modelName = kModel;
-  o.architecture = "[3,1,8],[3,2,8,2]";
-  o.features = tinyFeatures();
-  o.dataDir = data;
-  o.outDir = out;
-  o.training.epochs = epochs;
-  o.training.batchSize = 1;
+  DatasetTrainingOptions o = test::tinyTraining(kModel, data, out, epochs);
   o.training.seed = seed;
   trainFromDataset(o);
 }
@@ -60,6 +49,11 @@ TEST(GuardedUpdate, AdoptsTheBetterModelAndRefusesTheWorse) {
   const GuardVerdict& adopted = forward.adopted ? forward : backward;
   EXPECT_LT(adopted.candidateError, adopted.currentError);
   EXPECT_NE(adopted.reason.find("adopted"), std::string::npos);
+  // The current model's figure, when the caller has it, is not evaluated again: it decides.
+  const GuardVerdict again = judgeUpdate(ab, HeldOutError{forward.currentError, forward.objects});
+  EXPECT_EQ(again.adopted, forward.adopted);
+  EXPECT_DOUBLE_EQ(again.candidateError, forward.candidateError);
+  EXPECT_FALSE(judgeUpdate(ab, HeldOutError{0.0, forward.objects}).adopted);  // nothing beats 0
 
   // The refused one in effect: it goes aside, the current model is what OUT holds.
   const GuardVerdict& refused = forward.adopted ? backward : forward;

@@ -8,6 +8,7 @@
 #include "core/model/affordance_model_impl.h"
 #include "core/training/dataset_training.h"
 #include "support/test_paths.h"
+#include "support/tiny_training.h"
 
 namespace sagrid {
 namespace {
@@ -16,16 +17,7 @@ namespace fs = std::filesystem;
 constexpr const char* kModel = "stove.heatsource";
 
 DatasetTrainingOptions tinyOptions(const fs::path& data, const fs::path& out) {
-  DatasetTrainingOptions o;
-  o.modelName = kModel;
-  o.architecture = "[3,1,8],[3,2,8,2]";
-  o.features.resolution = 16;
-  o.features.views = 6;
-  o.dataDir = data;
-  o.outDir = out;
-  o.training.epochs = 2;
-  o.training.batchSize = 1;
-  return o;
+  return test::tinyTraining(kModel, data, out, 2);
 }
 
 // Whether each named parameter or buffer of the two models' networks is equal.
