@@ -40,6 +40,9 @@ constexpr float kLiftMinimum = 0.3f;
 constexpr float kLeverEndShare = 0.15f;
 // A lever's held end this many times wider than its free end is a hub it turns with.
 constexpr float kHubShare = 2.0f;
+// A part whose faces' normals sum to more than this share of its area is an open sheet facing
+// one way (a flat key), not a closed or two-sided part.
+constexpr float kSheetFacing = 0.5f;
 // A disc cut around a printed key: this share of the grown radius.
 constexpr float kDiscShare = 0.5f;
 
@@ -281,6 +284,17 @@ float areaOf(const Surface& s, const std::vector<int>& triangles) {
   return area;
 }
 
+// The area-weighted sum of the triangles' normals: the way an open sheet looks (its area times its
+// normal for a flat one), near zero for a closed or two-sided part.
+Eigen::Vector3f facingOf(const Surface& s, const std::vector<int>& triangles) {
+  Eigen::Vector3f sum = Eigen::Vector3f::Zero();
+  for (int t : triangles) {
+    const auto u = static_cast<std::size_t>(t);
+    sum += 0.5f * (s.corner(u, 1) - s.corner(u, 0)).cross(s.corner(u, 2) - s.corner(u, 0));
+  }
+  return sum;
+}
+
 // The vertices within kLeverEndShare of a lever's length from one end: their centroid and how far
 // they reach from the lever's line.
 struct EndSlab {
@@ -378,6 +392,11 @@ ControlPart describe(const Surface& s, std::vector<int> triangles, PartOrigin or
   } else if (high - low < kButtonShare * radius) {
     part.motion = ControlMotion::Button;
     part.axis = -out;
+    // An open sheet (a key drawn as one face) is pressed against the way it looks: what holds it
+    // may lie level with it or over its edge, which turns `out` around.
+    const Eigen::Vector3f facing = facingOf(s, triangles);
+    if (facing.norm() > kSheetFacing * areaOf(s, triangles) && part.axis.dot(facing) > 0)
+      part.axis = -part.axis;
   } else {
     part.motion = ControlMotion::Knob;
     Eigen::Vector3f axis = out;

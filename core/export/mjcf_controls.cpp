@@ -1,6 +1,7 @@
 #include "core/export/mjcf_controls.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "core/common/atomic_file.h"
 #include "core/export/export_frame.h"
@@ -71,13 +72,28 @@ void writeCollisionGeom(std::ostringstream& xml, const ControlGeometry& control,
 
 }  // namespace
 
+bool pressDrivesSwitch(const ControlGeometry& control, const std::string& body,
+                       const std::set<std::string>& burnerSites) {
+  const std::string knob = "knob_";
+  return !controlMotionRange(control.part, false).hinge && body.rfind(knob, 0) == 0 &&
+         burnerSites.count("burner_on_" + body.substr(knob.size())) > 0;
+}
+
 std::vector<MjcfJoint> controlJoints(const ControlGeometry& control, const std::string& body,
-                                     bool onlySinkHandle) {
+                                     bool onlySinkHandle, bool drivesSwitch) {
   std::vector<MjcfJoint> joints;
   const ControlMotionRange motion =
       controlMotionRange(control.part, body.rfind("handle", 0) == 0);
-  joints.push_back({body + "_joint", motion.hinge ? "hinge" : "slide", motion.axis, motion.low,
-                    motion.high});
+  MjcfJoint joint{body + (drivesSwitch ? "_press_joint" : "_joint"),
+                  motion.hinge ? "hinge" : "slide", motion.axis, motion.low, motion.high};
+  if (!motion.hinge) {
+    joint.frictionLoss = kButtonHold;
+    // Its weight along the press (z is up): carried by a long spring from the other side.
+    const double weight = control.mass.mass * kGravity * -static_cast<double>(motion.axis.z());
+    joint.stiffness = std::abs(weight) / kCarrySpringLength;
+    joint.springRef = weight > 0 ? -kCarrySpringLength : kCarrySpringLength;
+  }
+  joints.push_back(joint);
   if (!motion.hinge) return joints;
   if (onlySinkHandle)
     joints.push_back({"handle_temp_joint", "hinge", Eigen::Vector3f::UnitZ(), -kTemperatureRange,
@@ -137,7 +153,12 @@ void writeControlBody(std::ostringstream& xml, const ControlGeometry& control,
         << "\" pos=\"0 0 0\" axis=\"" << formatVector(joint.axis.cast<double>())
         << "\" limited=\"true\" range=\"" << formatNumber(joint.low) << " "
         << formatNumber(joint.high) << "\" damping=\"" << formatNumber(kControlDamping)
-        << "\" armature=\"" << formatNumber(kControlArmature) << "\"/>\n";
+        << "\" armature=\"" << formatNumber(kControlArmature) << "\"";
+    if (joint.frictionLoss > 0) xml << " frictionloss=\"" << formatNumber(joint.frictionLoss) << "\"";
+    if (joint.stiffness > 0)
+      xml << " stiffness=\"" << formatNumber(joint.stiffness) << "\" springref=\""
+          << formatNumber(joint.springRef) << "\"";
+    xml << "/>\n";
   }
   const std::string visual = "visual_" + body;
   if (!control.mesh.triangles.empty()) {
@@ -153,6 +174,32 @@ void writeControlBody(std::ostringstream& xml, const ControlGeometry& control,
   writeCollisionGeom(xml, control, body);
   writeSite(xml, site, "        ", part.pivot);
   xml << "      </body>\n";
+}
+
+void writeSwitchBody(std::ostringstream& xml, const ControlGeometry& control,
+                     const std::string& body) {
+  const ControlPart& part = control.part;
+  xml << "      <body name=\"" << escapeXml(body) << "_switch\" pos=\""
+      << formatVector(part.pivot.cast<double>()) << "\">\n"
+      << "        <inertial pos=\"0 0 0\" mass=\"" << formatNumber(kSwitchMass)
+      << "\" diaginertia=\"" << formatNumber(kSwitchInertia) << " " << formatNumber(kSwitchInertia)
+      << " " << formatNumber(kSwitchInertia) << "\"/>\n"
+      << "        <joint name=\"" << escapeXml(body) << "_joint\" type=\"hinge\" pos=\"0 0 0\" axis=\""
+      << formatVector(part.axis.cast<double>()) << "\" limited=\"true\" range=\"0 "
+      << formatNumber(kSwitchAngle) << "\" damping=\"0\" armature=\""
+      << formatNumber(kSwitchArmature) << "\"/>\n"
+      << "      </body>\n";
+}
+
+void writeSwitchEqualities(std::ostringstream& xml, const std::vector<std::string>& switchedBodies) {
+  if (switchedBodies.empty()) return;
+  // MuJoCo's joint equality: joint1 - its reference = polycoef(joint2 - its reference).
+  xml << "  <equality>\n";
+  for (const auto& body : switchedBodies)
+    xml << "    <joint joint1=\"" << escapeXml(body) << "_joint\" joint2=\"" << escapeXml(body)
+        << "_press_joint\" polycoef=\"0 " << formatNumber(kSwitchAngle / kButtonTravel)
+        << " 0 0 0\"/>\n";
+  xml << "  </equality>\n";
 }
 
 void writeSpoutBody(std::ostringstream& xml, const MjcfSite& water) {

@@ -74,9 +74,11 @@ void writeGeoms(std::ostringstream& xml, const exportdetail::SimulatorGeometry& 
 
 // Burners and other points' sites in "object", each control's site in its body, each water site
 // in its spout body.
-void writeBodies(std::ostringstream& xml, const exportdetail::SimulatorGeometry& geometry,
-                 const std::vector<exportdetail::MjcfSite>& sites,
-                 const std::vector<std::string>& controlBodies) {
+// Returns the bodies of the buttons that drive a switch (exportdetail::writeSwitchBody).
+std::vector<std::string> writeBodies(std::ostringstream& xml,
+                                     const exportdetail::SimulatorGeometry& geometry,
+                                     const std::vector<exportdetail::MjcfSite>& sites,
+                                     const std::vector<std::string>& controlBodies) {
   std::vector<bool> inControl(sites.size(), false);
   for (const auto& control : geometry.controls) inControl[control.point] = true;
   for (std::size_t i = 0; i < sites.size(); ++i) {
@@ -85,15 +87,25 @@ void writeBodies(std::ostringstream& xml, const exportdetail::SimulatorGeometry&
   }
   const bool oneHandle =
       std::none_of(sites.begin(), sites.end(), [](const auto& s) { return s.name == "handle_temp"; });
+  std::set<std::string> burnerSites;
+  for (const auto& site : sites)
+    if (site.affordanceType == "heatsource") burnerSites.insert(site.name);
+  std::vector<std::string> switched;
   for (std::size_t c = 0; c < geometry.controls.size(); ++c) {
     const auto& control = geometry.controls[c];
     const std::string& body = controlBodies[c];
+    const bool drivesSwitch = exportdetail::pressDrivesSwitch(control, body, burnerSites);
     exportdetail::writeControlBody(
         xml, control, body, sites[control.point],
-        exportdetail::controlJoints(control, body, oneHandle && body == "handle"));
+        exportdetail::controlJoints(control, body, oneHandle && body == "handle", drivesSwitch));
+    if (drivesSwitch) {
+      exportdetail::writeSwitchBody(xml, control, body);
+      switched.push_back(body);
+    }
   }
   for (const auto& site : sites)
     if (site.affordanceType == "fluidsource") exportdetail::writeSpoutBody(xml, site);
+  return switched;
 }
 
 }  // namespace
@@ -131,9 +143,10 @@ SimulatorExport exportMjcf(const ObjectLabels& labels, const fs::path& meshPath,
   xml << "  <worldbody>\n  <body>\n    <body name=\"object\">\n";
   writeInertial(xml, geometry.mass);
   writeGeoms(xml, geometry);
-  writeBodies(xml, geometry, sites, controlBodies);
+  const std::vector<std::string> switched = writeBodies(xml, geometry, sites, controlBodies);
   xml << "    </body>\n  </body>\n  </worldbody>\n";
   exportdetail::writeContactExclusions(xml, controlBodies);
+  exportdetail::writeSwitchEqualities(xml, switched);
   xml << "</mujoco>\n";
   writeFileAtomic(staged.path() / (folderName + ".xml"), xml.str());
   staged.commit();

@@ -28,6 +28,7 @@
 #include "core/common/atomic_file.h"
 #include "core/corpus/wild_pool_corpus.h"
 #include "core/dataset/dataset.h"
+#include "core/export/control_geometry.h"
 #include "core/export/export_objects.h"
 #include "core/export/mjcf_export.h"
 #include "core/generate/random.h"
@@ -111,7 +112,9 @@ void expectEveryJointTurnsItsOwnPart(const mjModel& m) {
     const auto before = visualVertices(m, *rest, body);
     const double size = sizeOf(before);
     const double moved = (centroidOf(visualVertices(m, *turned, body)) - centroidOf(before)).norm();
-    if (size > 0) EXPECT_LT(moved, size / 3.0) << "size " << size;
+    if (size > 0) {
+      EXPECT_LT(moved, size / 3.0) << "size " << size;
+    }
   }
 }
 
@@ -192,30 +195,42 @@ TEST(MujocoControls, EveryBurnerOfGeneratedStovesHasItsKnobJoint) {
   }
 }
 
-// A 1 N m torque (or 1 N on a pressed button) on each knob paired with a burner, for 1 s from
-// rest: a turned knob lights exactly its burner by RoboCasa's flame rule; a button (a slide) can
-// light none, the rule reads an angle. Returns {knobs that lit their burner, buttons}.
+// A 1 N m torque on each knob paired with a burner (1 N on a button's press, which drives its
+// switch's knob joint, mjcf_controls.h), for 1 s from rest: exactly its burner lights by RoboCasa's
+// flame rule; left alone, none lights. Returns {knobs turned, buttons pressed}.
 std::pair<int, int> expectEachKnobLightsOnlyItsBurner(const mjModel& model) {
   const Lookups lookups = robocasaLookups(model);
-  int lighting = 0, buttons = 0;
+  // Left alone for 1 s, nothing lights: no key sinks in under its weight.
+  {
+    const test::DataPtr data = test::makeData(model);
+    for (int i = 0; i < static_cast<int>(1.0 / model.opt.timestep); ++i) mj_step(&model, data.get());
+    for (const auto& [loc, joint] : lookups.burners)
+      if (joint >= 0) {
+        EXPECT_FALSE(burnerLit(data->qpos[model.jnt_qposadr[joint]])) << loc << " at rest";
+      }
+  }
+  int turned = 0, pressed = 0;
   for (const auto& [loc, joint] : lookups.burners) {
     if (joint < 0) continue;  // a burner without a knob (the export warns): RoboCasa never lights it
     SCOPED_TRACE(loc);
+    EXPECT_EQ(model.jnt_type[joint], mjJNT_HINGE);
+    const int press = mj_name2id(&model, mjOBJ_JOINT, ("knob_" + loc + "_press_joint").c_str());
+    const int pushed = press >= 0 ? press : joint;
     const test::DataPtr data = test::makeData(model);
     const int steps = static_cast<int>(1.0 / model.opt.timestep);
     for (int i = 0; i < steps; ++i) {
-      data->qfrc_applied[model.jnt_dofadr[joint]] = 1.0;
+      data->qfrc_applied[model.jnt_dofadr[pushed]] = 1.0;
       mj_step(&model, data.get());
     }
     std::set<std::string> lit;
     for (const auto& [other, otherJoint] : lookups.burners)
       if (otherJoint >= 0 && burnerLit(data->qpos[model.jnt_qposadr[otherJoint]])) lit.insert(other);
-    const bool slide = model.jnt_type[joint] == mjJNT_SLIDE;
-    const std::set<std::string> expected = slide ? std::set<std::string>{} : std::set<std::string>{loc};
-    EXPECT_EQ(lit, expected) << "position " << data->qpos[model.jnt_qposadr[joint]];
-    ++(slide ? buttons : lighting);
+    EXPECT_EQ(lit, std::set<std::string>{loc})
+        << "knob angle " << data->qpos[model.jnt_qposadr[joint]] << ", pushed joint at "
+        << data->qpos[model.jnt_qposadr[pushed]];
+    ++(press >= 0 ? pressed : turned);
   }
-  return {lighting, buttons};
+  return {turned, pressed};
 }
 
 TEST(MujocoControls, TorqueOnOneKnobLightsExactlyItsBurner) {
@@ -231,6 +246,41 @@ TEST(MujocoControls, TorqueOnOneKnobLightsExactlyItsBurner) {
   for (const auto& [loc, joint] : lookups.burners) EXPECT_GE(joint, 0) << loc;
   EXPECT_EQ(expectEachKnobLightsOnlyItsBurner(*model),
             std::make_pair(static_cast<int>(lookups.burners.size()), 0));
+}
+
+// A stove with touch keys: each key paired with a burner slides on its press joint and drives a
+// switch whose knob joint RoboCasa reads; pressing a key lights exactly its burner, and RoboCasa
+// setting a knob's angle (Stove.set_knob_state) pulls its key in.
+TEST(MujocoControls, APressedKeyLightsExactlyItsBurner) {
+  for (std::uint64_t seed = 1; seed < 300; ++seed) {
+    gen::Rng rng(seed);
+    const gen::GeneratedObject stove = gen::generateStove(rng);
+    if (stove.generator.value("controls", "") != "touch") continue;
+    const auto dir = test::freshTempDir();
+    const fs::path labelsPath = test::writeGeneratedObject(dir / "in", stove, "stove");
+    const Exported e = exportObject(labelsPath, dir / "in" / "mesh.obj", dir / "out");
+    if (e.xml.find("_press_joint") == std::string::npos) continue;
+    SCOPED_TRACE(stove.generator.dump());
+    const ModelPtr model = loadModel(e.result.mainFile);
+    ASSERT_TRUE(model);
+    const auto [turned, pressed] = expectEachKnobLightsOnlyItsBurner(*model);
+    EXPECT_GT(pressed, 0);
+    // RoboCasa turns a knob on by setting its angle; the key follows into the panel.
+    const Lookups lookups = robocasaLookups(*model);
+    for (const auto& [loc, joint] : lookups.burners) {
+      const int press = mj_name2id(model.get(), mjOBJ_JOINT, ("knob_" + loc + "_press_joint").c_str());
+      if (press < 0) continue;
+      EXPECT_EQ(bodyDepth(*model, model->jnt_bodyid[joint]), 3);
+      const test::DataPtr data = test::makeData(*model);
+      data->qpos[model->jnt_qposadr[joint]] = 1.0;
+      for (int i = 0; i < static_cast<int>(0.5 / model->opt.timestep); ++i) mj_step(model.get(), data.get());
+      EXPECT_GT(data->qpos[model->jnt_qposadr[press]], 0.5 * exportdetail::kButtonTravel) << loc;
+      EXPECT_TRUE(burnerLit(data->qpos[model->jnt_qposadr[joint]])) << loc;
+    }
+    expectEveryJointTurnsItsOwnPart(*model);
+    return;
+  }
+  FAIL() << "no generated touch stove with a key paired with a burner in 300 seeds";
 }
 
 TEST(MujocoControls, GeneratedSinksRunWaterFromTheirHandle) {
@@ -285,7 +335,7 @@ TEST(MujocoControls, SlowEveryCuratedRealControlIsAJointThatTurnsInPlace) {
     for (const auto& entry : readDataset(corpus.out / set)) objects.push_back(entry.labels);
   for (const auto& entry : fs::directory_iterator(test::realDevDir()))
     if (fs::exists(entry.path() / "labels.json")) objects.push_back(entry.path() / "labels.json");
-  int toggles = 0, joints = 0, tested = 0, burners = 0, lighting = 0, buttons = 0;
+  int toggles = 0, joints = 0, tested = 0, burners = 0, turned = 0, pressed = 0;
   for (const auto& labelsPath : objects) {
     const ObjectLabels labels = readLabels(labelsPath);
     if (labels.object.category != "stove" && labels.object.category != "sink") continue;
@@ -299,10 +349,10 @@ TEST(MujocoControls, SlowEveryCuratedRealControlIsAJointThatTurnsInPlace) {
     ASSERT_TRUE(model);
     ++tested;
     const int points = static_cast<int>(labels.ofType("togglebutton").size());
-    // Bodies on joints, less the spouts: one per control.
+    // Bodies on joints with geoms (not the spouts, not a button's switch): one per control.
     int moving = 0;
     for (int b = 1; b < model->nbody; ++b)
-      if (model->body_jntnum[b] > 0 && name(*model, mjOBJ_BODY, b).rfind("spout", 0) != 0) ++moving;
+      if (model->body_jntnum[b] > 0 && model->body_geomnum[b] > 0) ++moving;
     std::cout << labelsPath.parent_path().filename().string() << ": " << points
               << " toggle points, " << moving << " joints\n";
     toggles += points, joints += moving;
@@ -311,14 +361,14 @@ TEST(MujocoControls, SlowEveryCuratedRealControlIsAJointThatTurnsInPlace) {
     if (labels.object.category == "stove") {
       const Lookups lookups = robocasaLookups(*model);
       burners += static_cast<int>(lookups.burners.size());
-      const auto [lit, pressed] = expectEachKnobLightsOnlyItsBurner(*model);
-      lighting += lit, buttons += pressed;
+      const auto [byKnob, byButton] = expectEachKnobLightsOnlyItsBurner(*model);
+      turned += byKnob, pressed += byButton;
     }
   }
   std::cout << tested << " curated real stoves and sinks: " << joints << " joints for " << toggles
-            << " toggle button points; of " << burners << " stove burners " << lighting
-            << " light from their knob alone, " << buttons
-            << " are paired with a pressed button (a slide: RoboCasa's rule reads an angle)\n";
+            << " toggle button points; of " << burners << " stove burners " << turned
+            << " light from their turned knob alone, " << pressed
+            << " from their pressed button alone\n";
   EXPECT_GE(tested, 30);
 }
 
