@@ -43,6 +43,9 @@ constexpr float kHubShare = 2.0f;
 // A part whose faces' normals sum to more than this share of its area is an open sheet facing
 // one way (a flat key), not a closed or two-sided part.
 constexpr float kSheetFacing = 0.5f;
+// A button's way out of what holds it is trusted when it runs at least this much (cosine) along
+// the button's thinnest direction.
+constexpr float kAlongThin = 0.5f;
 // A disc cut around a printed key: this share of the grown radius.
 constexpr float kDiscShare = 0.5f;
 
@@ -318,6 +321,34 @@ EndSlab endSlab(const std::vector<Eigen::Vector3f>& vertices, const Eigen::Vecto
   return slab;
 }
 
+// The way a part (`inPart`, its shape) stands out of what holds it: from the nearest point of the
+// rest of the surface to its centre; none where nothing apart holds it or what does runs through
+// its centre (a key level with its panel).
+std::optional<Eigen::Vector3f> awayFromHolder(const Surface& s, const std::vector<bool>& inPart,
+                                              const Principal& shape) {
+  Eigen::Vector3f holder = shape.mean;
+  const int holderTriangle =
+      nearestTriangle(s, shape.mean, [&](std::size_t t) { return !inPart[t]; }, &holder);
+  const Eigen::Vector3f out = shape.mean - holder;
+  if (holderTriangle < 0 || out.norm() < 1e-6f * std::max(s.diagonal, 1e-12f)) return std::nullopt;
+  return out.normalized();
+}
+
+// Where a button goes when pressed: into what holds it (against `out`). Where the key is flat and
+// what holds it lies level with it or over its edge, `out` runs along the key: then along the key's
+// thinnest direction, against the way it faces when drawn as one open sheet, else towards the
+// middle of the object (a key on a top is pressed down, one on a front panel back).
+Eigen::Vector3f pressDirection(const Surface& s, const std::vector<int>& triangles,
+                               const Principal& shape, const std::optional<Eigen::Vector3f>& out) {
+  const Eigen::Vector3f thin = shape.directions.col(2).normalized();
+  const Eigen::Vector3f facing = facingOf(s, triangles);
+  if (facing.norm() > kSheetFacing * areaOf(s, triangles))
+    return facing.dot(thin) > 0 ? Eigen::Vector3f(-thin) : thin;
+  if (out && std::abs(out->dot(thin)) >= kAlongThin) return -*out;
+  const Eigen::Vector3f inward = s.mesh.bounds().center() - shape.mean;
+  return inward.dot(thin) >= 0 ? thin : Eigen::Vector3f(-thin);
+}
+
 ControlPart describe(const Surface& s, std::vector<int> triangles, PartOrigin origin) {
   ControlPart part;
   part.origin = origin;
@@ -328,16 +359,11 @@ ControlPart describe(const Surface& s, std::vector<int> triangles, PartOrigin or
     vertices.push_back(s.mesh.positions[static_cast<std::size_t>(v)]);
   const Principal shape = principalOf(vertices);
   const Eigen::Vector3f centre = shape.mean;
-  // What holds the part: the nearest point of the rest of the surface; the part stands out of it.
   std::vector<bool> inPart(s.valid.size(), false);
   for (int t : triangles) inPart[static_cast<std::size_t>(t)] = true;
-  Eigen::Vector3f holder = centre;
-  const int holderTriangle =
-      nearestTriangle(s, centre, [&](std::size_t t) { return !inPart[t]; }, &holder);
-  Eigen::Vector3f out = centre - holder;
-  if (holderTriangle < 0 || out.norm() < 1e-6f * std::max(s.diagonal, 1e-12f))
-    out = shape.directions.col(2);  // held by nothing apart: its thinnest direction
-  out.normalize();
+  const std::optional<Eigen::Vector3f> held = awayFromHolder(s, inPart, shape);
+  // Held by nothing apart: its thinnest direction.
+  const Eigen::Vector3f out = held.value_or(Eigen::Vector3f(shape.directions.col(2).normalized()));
 
   // Height along `out` and the shape across it.
   float low = std::numeric_limits<float>::infinity(), high = -low;
@@ -391,12 +417,7 @@ ControlPart describe(const Surface& s, std::vector<int> triangles, PartOrigin or
     part.axis = axis.norm() > 1e-6f ? axis.normalized() : perpendicular(along);
   } else if (high - low < kButtonShare * radius) {
     part.motion = ControlMotion::Button;
-    part.axis = -out;
-    // An open sheet (a key drawn as one face) is pressed against the way it looks: what holds it
-    // may lie level with it or over its edge, which turns `out` around.
-    const Eigen::Vector3f facing = facingOf(s, triangles);
-    if (facing.norm() > kSheetFacing * areaOf(s, triangles) && part.axis.dot(facing) > 0)
-      part.axis = -part.axis;
+    part.axis = pressDirection(s, triangles, shape, held);
   } else {
     part.motion = ControlMotion::Knob;
     Eigen::Vector3f axis = out;
@@ -443,6 +464,17 @@ std::optional<PartOrigin> parsePartOrigin(const std::string& text) {
   for (PartOrigin o : {PartOrigin::Connected, PartOrigin::Material, PartOrigin::Grown, PartOrigin::Disc})
     if (text == toString(o)) return o;
   return std::nullopt;
+}
+
+Eigen::Vector3f pressDirection(const Mesh& mesh, const std::vector<int>& triangles) {
+  const Surface s(mesh);
+  std::vector<Eigen::Vector3f> vertices;
+  for (int v : distinctVertices(mesh, triangles)) vertices.push_back(mesh.positions[static_cast<std::size_t>(v)]);
+  if (vertices.empty()) return Eigen::Vector3f::UnitZ();
+  std::vector<bool> inPart(s.valid.size(), false);
+  for (int t : triangles) inPart[static_cast<std::size_t>(t)] = true;
+  const Principal shape = principalOf(vertices);
+  return pressDirection(s, triangles, shape, awayFromHolder(s, inPart, shape));
 }
 
 ControlPart describeControlPart(const Mesh& mesh, std::vector<int> triangles, PartOrigin origin) {

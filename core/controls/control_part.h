@@ -58,6 +58,11 @@ ControlParts findControlParts(const Mesh& mesh, const std::vector<Eigen::Vector3
 ControlParts findControlParts(const Mesh& mesh, const SurfaceScene& scene,
                               const std::vector<Eigen::Vector3f>& points);
 
+// Where the part of `triangles` goes when pressed as a button (unit length): into what holds it;
+// for a flat key level with what holds it, along its thinnest direction against the way it faces
+// (one open sheet) or towards the middle of the object.
+Eigen::Vector3f pressDirection(const Mesh& mesh, const std::vector<int>& triangles);
+
 // The motion of a given part (the curator's triangles): its axis and pivot from its shape and
 // from where the rest of the mesh holds it.
 ControlPart describeControlPart(const Mesh& mesh, std::vector<int> triangles, PartOrigin origin);

@@ -147,6 +147,7 @@ ControlSplit splitControls(const ObjectLabels& labels, const Mesh& mesh, double 
         // Flat: it stays drawn on the body and a thin disc moves in its place.
         warnings.push_back(name + ": its part is flat; a thin disc slides in its place");
         control.mesh = Mesh();
+        if (part->motion != ControlMotion::Button) part->axis = pressDirection(mesh, part->triangles);
         part->triangles.clear();
         part->motion = ControlMotion::Button;
         part->origin = PartOrigin::Disc;

@@ -113,8 +113,9 @@ SimulatorExport exportOmniGibson(const ObjectLabels& labels, const fs::path& mes
 
   std::vector<exportdetail::SimulatorPoint> points;
   for (const auto& point : labels.affordances) {
-    points.push_back({point.type, exportdetail::toSimulatorFrame(labels, point.position,
-                                                                 geometry.metersPerUnit)});
+    points.push_back({point.type,
+                      exportdetail::toSimulatorFrame(labels, point.position, geometry.metersPerUnit),
+                      std::nullopt});
   }
   const auto metaLinks =
       exportdetail::omnigibsonMetaLinks(points, options.legacyFluidSource, result.warnings);

@@ -108,6 +108,30 @@ TEST(ControlParts, AFlatPadIsAButtonPressedIntoThePanel) {
   EXPECT_LT(found.parts[0]->axis.z(), -0.99f);
 }
 
+// A key drawn as a flat quad level with the panel's top, as some in-the-wild stoves have it: what
+// holds it is beside it, not under it, so "out of the panel" says nothing; the key is pressed
+// into the panel along its thin direction whether its quad is one-sided (facing up, or wound
+// facing down) or two-sided.
+TEST(ControlParts, AFlatKeyLevelWithThePanelIsPressedIntoIt) {
+  const auto quad = [](bool up) {
+    Mesh q;
+    q.positions = {{-0.02f, -0.02f, 0.0f}, {0.02f, -0.02f, 0.0f}, {0.02f, 0.02f, 0.0f}, {-0.02f, 0.02f, 0.0f}};
+    if (up) q.triangles = {{0, 1, 2}, {0, 2, 3}};
+    else q.triangles = {{0, 2, 1}, {0, 3, 2}};
+    return q;
+  };
+  for (int sides : {1, 2}) {
+    SCOPED_TRACE(sides);
+    Mesh mesh = panel();
+    std::vector<int> key = addPart(mesh, quad(true), 1);
+    if (sides == 2) {
+      const auto back = addPart(mesh, quad(false), 1);
+      key.insert(key.end(), back.begin(), back.end());
+    }
+    EXPECT_LT(pressDirection(mesh, key).z(), -0.99f);
+  }
+}
+
 // A panel of 2 cm cells whose vertex at the point is raised: a bump of the panel's own surface.
 Mesh bumpyPanel(float bump) {
   Mesh m;
