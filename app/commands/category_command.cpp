@@ -18,6 +18,7 @@
 #include "core/annotate/category_cross_validation.h"
 #include "core/annotate/category_evidence.h"
 #include "core/annotate/category_training.h"
+#include "core/annotate/category_update.h"
 #include "core/annotate/model_set.h"
 #include "core/common/error.h"
 #include "core/common/resource_paths.h"
@@ -32,39 +33,33 @@ namespace fs = std::filesystem;
 using sagrid::defaultModelsDir;  // ./resources, <bin>/../share/sagrid or the source tree
 
 
-// Descriptors of every --data folder, minus the excluded ids, with a progress bar per folder.
+// Descriptors of every --data folder (DIR@W weighs its objects W times), minus the excluded ids,
+// with a progress bar per folder.
 std::vector<sagrid::CategorySample> collect(const std::vector<std::string>& dirs,
                                             const sagrid::FeatureOptions& features,
                                             const std::set<std::string>& exclude, bool topRelief) {
-  std::vector<sagrid::CategorySample> all;
-  for (const auto& arg : dirs) {
-    // DIR@W weighs the folder's objects W times (a few real objects among many generated ones).
-    std::string dir = arg;
-    double weight = 1.0;
-    const auto at = arg.rfind('@');
-    if (at != std::string::npos) {
-      try {
-        weight = std::stod(arg.substr(at + 1));
-        dir = arg.substr(0, at);
-      } catch (const std::exception&) {
-        throw sagrid::InvalidArgument("--data " + arg + ": expected DIR or DIR@WEIGHT");
-      }
-    }
-    std::unique_ptr<sagrid::app::ProgressBar> bar;
-    std::size_t failed = 0;
-    auto samples = sagrid::collectCategorySamples(
-        dir, features, exclude,
-        [&](std::size_t done, std::size_t total, const std::string&) {
-          if (!bar) bar = std::make_unique<sagrid::app::ProgressBar>("features " + dir, total);
-          bar->update(done);
-        },
-        &failed, topRelief);
-    if (bar) bar->finish();
-    if (failed) std::fprintf(stderr, "%s: %zu objects skipped (features failed)\n", dir.c_str(), failed);
-    for (auto& s : samples) s.weight = weight;
-    all.insert(all.end(), samples.begin(), samples.end());
-  }
-  return all;
+  std::vector<sagrid::WeightedFolder> folders;
+  for (const auto& arg : dirs) folders.push_back(sagrid::parseWeightedFolder(arg));
+  std::unique_ptr<sagrid::app::ProgressBar> bar;
+  fs::path barDir;
+  std::vector<std::size_t> skipped;
+  auto samples = sagrid::collectWeightedSamples(
+      folders, features, exclude, topRelief,
+      [&](const fs::path& dir, std::size_t done, std::size_t total) {
+        if (!bar || barDir != dir) {
+          if (bar) bar->finish();
+          bar = std::make_unique<sagrid::app::ProgressBar>("features " + dir.string(), total);
+          barDir = dir;
+        }
+        bar->update(done);
+      },
+      &skipped);
+  if (bar) bar->finish();
+  for (std::size_t f = 0; f < folders.size(); ++f)
+    if (skipped[f])
+      std::fprintf(stderr, "%s: %zu objects skipped (features failed)\n",
+                   folders[f].dir.string().c_str(), skipped[f]);
+  return samples;
 }
 
 // Feature options of the cards in `modelsDir` (the classifier must see what they saw); the
@@ -165,46 +160,17 @@ sagrid::CategoryTrainingOptions trainingOptions(const Options& o) {
   return options;
 }
 
-// A guard set of one class cannot judge a classifier: one that calls everything that class would
-// score best on it.
-void requireSeveralClasses(const std::vector<sagrid::CategorySample>& heldOut) {
-  std::set<std::string> classes;
-  for (const auto& s : heldOut) classes.insert(sagrid::categoryClass(s.category));
-  if (classes.size() >= 2) return;
-  throw sagrid::InvalidArgument(
-      "the --guard folders hold " +
-      (classes.empty() ? std::string("no object") : "only " + *classes.begin() + " objects") +
-      ": a classifier that calls everything one class would look best there; give held-out "
-      "objects of at least two of stove, sink and look-alike (none). Nothing was written; the "
-      "current classifier stays");
-}
-
-// The guard on a classifier update: the candidate and the classifier `current` holds (none: the
-// candidate is adopted) decide the held-out objects; the candidate is adopted only if its share
-// right, averaged over the classes, is higher. The verdict goes to stdout and OUT/guard.jsonl.
+// The guard on a classifier update (core/annotate/category_update.h): the verdict goes to stdout
+// and OUT/guard.jsonl.
 bool guardAdopts(const sagrid::CategoryClassifier& candidate, const fs::path& current,
                  const std::vector<std::string>& heldOut, const sagrid::FeatureOptions& features) {
-  const auto shareRight = [&](const sagrid::CategoryClassifier& c) {
-    const auto samples = collect(heldOut, features, {}, c.topRelief());
-    requireSeveralClasses(samples);
-    return sagrid::balancedShareRight(sagrid::evaluateCategories(
-        [&](const sagrid::CategorySample& s) { return c.classify(s.descriptor); }, samples));
-  };
-  const double after = shareRight(candidate);
-  std::error_code ec;
-  const bool hasCurrent = fs::exists(current, ec);
-  const double before = hasCurrent ? shareRight(sagrid::CategoryClassifier::load(current)) : -1;
-  const bool adopted = after > before;
-  char was[32] = "(none)";
-  if (hasCurrent) std::snprintf(was, sizeof was, "%.1f %%", 100 * before);
-  std::printf("category classifier: share right %s -> %.1f %% on the held-out objects: %s\n", was,
-              100 * after, adopted ? "adopted" : "refused, current classifier kept");
-  nlohmann::json line = {{"model", "category"}, {"held_out", heldOut}, {"adopted", adopted},
-                         {"candidate_share_right", after}, {"time", sagrid::currentUtcTimestamp()}};
-  if (hasCurrent) line["current_share_right"] = before;
-  fs::create_directories(current.parent_path());
-  std::ofstream(current.parent_path() / "guard.jsonl", std::ios::app) << line.dump() << "\n";
-  return adopted;
+  std::vector<sagrid::WeightedFolder> folders;
+  for (const auto& dir : heldOut) folders.push_back(sagrid::parseWeightedFolder(dir));
+  const sagrid::CategoryVerdict verdict =
+      sagrid::judgeCategoryUpdate(candidate, current, folders, features);
+  std::printf("%s\n", verdict.reason.c_str());
+  sagrid::recordCategoryVerdict(verdict, current.parent_path(), heldOut);
+  return verdict.adopted;
 }
 
 void setupCategory(CLI::App& root) {

@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "core/annotate/annotate.h"
+#include "core/annotate/category_update.h"
 #include "core/annotate/model_set.h"
 #include "core/common/atomic_file.h"
 #include "core/common/error.h"
@@ -74,6 +75,72 @@ void TrainingWorker::update(const std::function<void(TrainingStatus&)>& change) 
 
 void TrainingWorker::run(TrainingRequest request) {
   try {
+    if (request.categoryClassifier) runCategoryClassifier(request);
+    else runPointModels(request);
+    std::lock_guard<std::mutex> lock(m_mutex);
+    m_finishedFlag = true;
+  } catch (const Cancelled&) {
+    update([](TrainingStatus& s) { s.phase = "cancelled"; });
+  } catch (const std::exception& e) {
+    update([&](TrainingStatus& s) {
+      s.error = e.what();
+      s.phase = "failed";
+    });
+  }
+  update([](TrainingStatus& s) { s.running = false; });
+  m_running = false;
+}
+
+void TrainingWorker::runCategoryClassifier(const TrainingRequest& request) {
+  const fs::path from = request.initDir.empty() ? request.outDir : request.initDir;
+  const fs::path currentFile = from / kCategoryClassifierFile;
+  std::error_code ec;
+  if (!fs::is_regular_file(currentFile, ec))
+    throw InvalidArgument("no category classifier in " + from.string() +
+                          " to retrain (train one with `sagrid category train`)");
+  const CategoryClassifier current = CategoryClassifier::load(currentFile);
+  const FeatureOptions features = ModelSet::load(from).featureOptions();
+  std::vector<std::string> missing;
+  const CategoryClassifier candidate = retrainCategoryClassifier(
+      current, request.dataset, kCuratedCategoryWeight, features, missing,
+      [&](const fs::path& dir, std::size_t done, std::size_t total) {
+        if (m_cancel) throw Cancelled();
+        update([&](TrainingStatus& s) {
+          s.phase = "category features " + std::to_string(done) + "/" + std::to_string(total) +
+                    " " + dir.filename().string();
+          s.fraction = total ? 0.8f * float(done) / float(total) : 0.0f;
+        });
+      });
+  for (const auto& dir : missing) logger()->warn("category classifier: {} is not here; retrained without it", dir);
+  bool adopted = true;
+  std::string verdictLine = "unguarded: the retrained classifier is kept, better or not";
+  if (!request.heldOut.empty()) {
+    update([&](TrainingStatus& s) { s.phase = "guard: the category classifier on held-out objects"; s.fraction = 0.9f; });
+    const CategoryVerdict verdict =
+        judgeCategoryUpdate(candidate, currentFile, {{request.heldOut, 1.0}}, features);
+    recordCategoryVerdict(verdict, request.outDir, {request.heldOut.string()});
+    adopted = verdict.adopted;
+    verdictLine = verdict.reason;
+  }
+  const fs::path file =
+      adopted ? request.outDir / kCategoryClassifierFile : request.outDir / "refused" / kCategoryClassifierFile;
+  fs::create_directories(file.parent_path());
+  candidate.save(file);
+  logger()->info("{}; wrote {}", verdictLine, file.string());
+  update([&](TrainingStatus& s) {
+    s.fraction = 1.0f;
+    s.phase = "done";
+    s.verdicts.push_back(verdictLine);
+    s.finished = "category classifier retrained with " + request.dataset.string() +
+                 (missing.empty() ? std::string()
+                                  : " (" + std::to_string(missing.size()) +
+                                        " of its training folders are not on this machine)") +
+                 (adopted ? "; adopted" : "; refused: " + file.string());
+  });
+}
+
+void TrainingWorker::runPointModels(const TrainingRequest& request) {
+  {
     const auto types = trainingTypes(request.dataset, request.category);
     if (types.empty()) {
       throw InvalidArgument("the training set " + request.dataset.string() + " has no " +
@@ -189,18 +256,7 @@ void TrainingWorker::run(TrainingRequest request) {
                    std::to_string(compared) + " predicted points moved";
     });
     logger()->info("training loop: {} of {} predicted points moved", moved, compared);
-    std::lock_guard<std::mutex> lock(m_mutex);
-    m_finishedFlag = true;
-  } catch (const Cancelled&) {
-    update([](TrainingStatus& s) { s.phase = "cancelled"; });
-  } catch (const std::exception& e) {
-    update([&](TrainingStatus& s) {
-      s.error = e.what();
-      s.phase = "failed";
-    });
   }
-  update([](TrainingStatus& s) { s.running = false; });
-  m_running = false;
 }
 
 }  // namespace sagrid::ui

@@ -17,6 +17,10 @@
 
 namespace sagrid::ui {
 
+// Curated objects count this many times among the generated ones when the classifier is
+// retrained (as the shipped classifier weighs its real objects: resources/models/category.json).
+inline constexpr double kCuratedCategoryWeight = 3.0;
+
 struct TrainingRequest {
   std::filesystem::path dataset;  // dataset layout with manifest.jsonl
   std::string category;
@@ -31,6 +35,10 @@ struct TrainingRequest {
   // With initDir: curated objects of other sources; each fine-tuned model replaces the init one
   // only where it is better there (core/training/guarded_update.h). Empty: unguarded.
   std::filesystem::path heldOut;
+  // Instead of point models: retrain the category classifier of initDir (else outDir) with the
+  // training set's objects and their curated categories (core/annotate/category_update.h), guarded
+  // by heldOut when given; written to outDir when adopted, else to outDir/refused/.
+  bool categoryClassifier = false;
 };
 
 struct TrainingStatus {
@@ -60,6 +68,8 @@ class TrainingWorker {
 
  private:
   void run(TrainingRequest request);
+  void runPointModels(const TrainingRequest& request);
+  void runCategoryClassifier(const TrainingRequest& request);
   void update(const std::function<void(TrainingStatus&)>& change);
 
   std::thread m_thread;

@@ -48,6 +48,20 @@ void drawTrainPanel(Session& session, TrainingWorker& worker,
       worker.start(std::move(request));
     }
     ImGui::EndDisabled();
+    // The categories the curator confirmed or switched train the classifier too.
+    if (ImGui::Button("Retrain category classifier", ImVec2(-1, 0))) {
+      TrainingRequest request;
+      request.dataset = session.trainingSetDir;
+      request.outDir = modelsOut;
+      request.initDir = initModels;
+      request.heldOut = heldOut;
+      request.categoryClassifier = true;
+      worker.start(std::move(request));
+    }
+    if (ImGui::IsItemHovered())
+      ImGui::SetTooltip("Stove / sink / none, learned again from the training set's curated "
+                        "categories and the classifier's own training data; with a held-out "
+                        "folder, kept only where it decides more of it right");
   } else {
     ImGui::ProgressBar(status.fraction, ImVec2(-70, 0));
     ImGui::SameLine();
