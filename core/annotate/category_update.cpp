@@ -2,6 +2,7 @@
 
 #include <cstdio>
 #include <fstream>
+#include <map>
 #include <nlohmann/json.hpp>
 
 #include "core/annotate/category_training.h"
@@ -64,11 +65,17 @@ void requireSeveralClasses(const std::vector<CategorySample>& heldOut) {
 CategoryVerdict judgeCategoryUpdate(const CategoryClassifier& candidate, const fs::path& currentFile,
                                     const std::vector<WeightedFolder>& heldOut,
                                     const FeatureOptions& features) {
+  // The held-out descriptors, once per input layout (with or without the top relief).
+  std::map<bool, std::vector<CategorySample>> samplesWithRelief;
   const auto shareRight = [&](const CategoryClassifier& c) {
-    const auto samples = collectWeightedSamples(heldOut, features, {}, c.topRelief());
-    requireSeveralClasses(samples);
+    auto found = samplesWithRelief.find(c.topRelief());
+    if (found == samplesWithRelief.end()) {
+      auto samples = collectWeightedSamples(heldOut, features, {}, c.topRelief());
+      requireSeveralClasses(samples);
+      found = samplesWithRelief.emplace(c.topRelief(), std::move(samples)).first;
+    }
     return balancedShareRight(evaluateCategories(
-        [&](const CategorySample& s) { return c.classify(s.descriptor); }, samples));
+        [&](const CategorySample& s) { return c.classify(s.descriptor); }, found->second));
   };
   CategoryVerdict verdict;
   verdict.after = shareRight(candidate);

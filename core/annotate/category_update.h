@@ -60,6 +60,10 @@ CategoryVerdict judgeCategoryUpdate(const CategoryClassifier& candidate,
 void recordCategoryVerdict(const CategoryVerdict& verdict, const std::filesystem::path& modelsDir,
                            const std::vector<std::string>& heldOut);
 
+// Curated objects count this many times among the generated ones when the classifier is
+// retrained (as the shipped classifier weighs its real objects: resources/models/category.json).
+inline constexpr double kCuratedCategoryWeight = 3.0;
+
 // The classifier `current` retrained with curated objects: on the folders it was trained on that
 // still exist here (its training record's "data") and `curated` (weighted `curatedWeight`, as the
 // shipped classifier weighs real objects), with its own settings (threshold, l2, iterations,

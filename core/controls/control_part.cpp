@@ -334,6 +334,25 @@ std::optional<Eigen::Vector3f> awayFromHolder(const Surface& s, const std::vecto
   return out.normalized();
 }
 
+// A part's vertices, their principal shape and the way it stands out of what holds it.
+struct PartShape {
+  std::vector<Eigen::Vector3f> vertices;
+  Principal shape;
+  std::vector<bool> inPart;             // per triangle of the mesh
+  std::optional<Eigen::Vector3f> held;  // awayFromHolder
+};
+
+PartShape partShapeOf(const Surface& s, const std::vector<int>& triangles) {
+  PartShape part;
+  for (int v : distinctVertices(s.mesh, triangles))
+    part.vertices.push_back(s.mesh.positions[static_cast<std::size_t>(v)]);
+  part.shape = principalOf(part.vertices);
+  part.inPart.assign(s.valid.size(), false);
+  for (int t : triangles) part.inPart[static_cast<std::size_t>(t)] = true;
+  part.held = awayFromHolder(s, part.inPart, part.shape);
+  return part;
+}
+
 // Where a button goes when pressed: into what holds it (against `out`). Where the key is flat and
 // what holds it lies level with it or over its edge, `out` runs along the key: then along the key's
 // thinnest direction, against the way it faces when drawn as one open sheet, else towards the
@@ -354,14 +373,12 @@ ControlPart describe(const Surface& s, std::vector<int> triangles, PartOrigin or
   part.origin = origin;
   std::sort(triangles.begin(), triangles.end());
   triangles.erase(std::unique(triangles.begin(), triangles.end()), triangles.end());
-  std::vector<Eigen::Vector3f> vertices;
-  for (int v : distinctVertices(s.mesh, triangles))
-    vertices.push_back(s.mesh.positions[static_cast<std::size_t>(v)]);
-  const Principal shape = principalOf(vertices);
+  const PartShape partShape = partShapeOf(s, triangles);
+  const std::vector<Eigen::Vector3f>& vertices = partShape.vertices;
+  const Principal& shape = partShape.shape;
   const Eigen::Vector3f centre = shape.mean;
-  std::vector<bool> inPart(s.valid.size(), false);
-  for (int t : triangles) inPart[static_cast<std::size_t>(t)] = true;
-  const std::optional<Eigen::Vector3f> held = awayFromHolder(s, inPart, shape);
+  const std::vector<bool>& inPart = partShape.inPart;
+  const std::optional<Eigen::Vector3f>& held = partShape.held;
   // Held by nothing apart: its thinnest direction.
   const Eigen::Vector3f out = held.value_or(Eigen::Vector3f(shape.directions.col(2).normalized()));
 
@@ -468,13 +485,9 @@ std::optional<PartOrigin> parsePartOrigin(const std::string& text) {
 
 Eigen::Vector3f pressDirection(const Mesh& mesh, const std::vector<int>& triangles) {
   const Surface s(mesh);
-  std::vector<Eigen::Vector3f> vertices;
-  for (int v : distinctVertices(mesh, triangles)) vertices.push_back(mesh.positions[static_cast<std::size_t>(v)]);
-  if (vertices.empty()) return Eigen::Vector3f::UnitZ();
-  std::vector<bool> inPart(s.valid.size(), false);
-  for (int t : triangles) inPart[static_cast<std::size_t>(t)] = true;
-  const Principal shape = principalOf(vertices);
-  return pressDirection(s, triangles, shape, awayFromHolder(s, inPart, shape));
+  const PartShape part = partShapeOf(s, triangles);
+  if (part.vertices.empty()) return Eigen::Vector3f::UnitZ();
+  return pressDirection(s, triangles, part.shape, part.held);
 }
 
 ControlPart describeControlPart(const Mesh& mesh, std::vector<int> triangles, PartOrigin origin) {

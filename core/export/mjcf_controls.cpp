@@ -16,8 +16,10 @@ namespace {
 
 constexpr double kMinGeomSize = 0.001;  // metres; MuJoCo refuses zero-sized geoms
 constexpr double kCollisionShrink = 0.9;  // a control's collision stays inside its visual
-constexpr double kSpoutMass = 0.001;
-constexpr double kSpoutInertia = 1e-8;
+// A body that carries a joint and a site but nothing to weigh (a spout's outlet, a button's
+// switch): the least mass and inertia MuJoCo accepts without complaint.
+constexpr double kMarkerMass = 0.001;
+constexpr double kMarkerInertia = 1e-8;
 
 std::string rgbaFor(const std::string& type) {
   if (type == "heatsource") return "1 0.4 0.1 0.6";
@@ -68,6 +70,25 @@ void writeCollisionGeom(std::ostringstream& xml, const ControlGeometry& control,
       << (part.motion == ControlMotion::Lever ? "capsule" : "cylinder") << "\" fromto=\""
       << formatVector(from) << " " << formatVector(to) << "\" size=\"" << formatNumber(radius)
       << "\" group=\"0\" rgba=\"0.5 0.5 0.5 1\"/>\n";
+}
+
+void writeMarkerInertial(std::ostringstream& xml) {
+  xml << "        <inertial pos=\"0 0 0\" mass=\"" << formatNumber(kMarkerMass)
+      << "\" diaginertia=\"" << formatNumber(kMarkerInertia) << " " << formatNumber(kMarkerInertia)
+      << " " << formatNumber(kMarkerInertia) << "\"/>\n";
+}
+
+void writeJoint(std::ostringstream& xml, const MjcfJoint& joint) {
+  xml << "        <joint name=\"" << escapeXml(joint.name) << "\" type=\"" << joint.type
+      << "\" pos=\"0 0 0\" axis=\"" << formatVector(joint.axis.cast<double>())
+      << "\" limited=\"true\" range=\"" << formatNumber(joint.low) << " "
+      << formatNumber(joint.high) << "\" damping=\"" << formatNumber(joint.damping)
+      << "\" armature=\"" << formatNumber(joint.armature) << "\"";
+  if (joint.frictionLoss > 0) xml << " frictionloss=\"" << formatNumber(joint.frictionLoss) << "\"";
+  if (joint.stiffness > 0)
+    xml << " stiffness=\"" << formatNumber(joint.stiffness) << "\" springref=\""
+        << formatNumber(joint.springRef) << "\"";
+  xml << "/>\n";
 }
 
 }  // namespace
@@ -148,18 +169,7 @@ void writeControlBody(std::ostringstream& xml, const ControlGeometry& control,
       << "        <inertial pos=\"" << formatVector(mass.centerOfMass) << "\" quat=\""
       << quat(mass.principalAxes) << "\" mass=\"" << formatNumber(mass.mass)
       << "\" diaginertia=\"" << formatVector(mass.principalMoments) << "\"/>\n";
-  for (const auto& joint : joints) {
-    xml << "        <joint name=\"" << escapeXml(joint.name) << "\" type=\"" << joint.type
-        << "\" pos=\"0 0 0\" axis=\"" << formatVector(joint.axis.cast<double>())
-        << "\" limited=\"true\" range=\"" << formatNumber(joint.low) << " "
-        << formatNumber(joint.high) << "\" damping=\"" << formatNumber(kControlDamping)
-        << "\" armature=\"" << formatNumber(kControlArmature) << "\"";
-    if (joint.frictionLoss > 0) xml << " frictionloss=\"" << formatNumber(joint.frictionLoss) << "\"";
-    if (joint.stiffness > 0)
-      xml << " stiffness=\"" << formatNumber(joint.stiffness) << "\" springref=\""
-          << formatNumber(joint.springRef) << "\"";
-    xml << "/>\n";
-  }
+  for (const auto& joint : joints) writeJoint(xml, joint);
   const std::string visual = "visual_" + body;
   if (!control.mesh.triangles.empty()) {
     xml << "        <geom name=\"" << escapeXml(visual) << "\" class=\"visual\" mesh=\""
@@ -178,17 +188,14 @@ void writeControlBody(std::ostringstream& xml, const ControlGeometry& control,
 
 void writeSwitchBody(std::ostringstream& xml, const ControlGeometry& control,
                      const std::string& body) {
-  const ControlPart& part = control.part;
   xml << "      <body name=\"" << escapeXml(body) << "_switch\" pos=\""
-      << formatVector(part.pivot.cast<double>()) << "\">\n"
-      << "        <inertial pos=\"0 0 0\" mass=\"" << formatNumber(kSwitchMass)
-      << "\" diaginertia=\"" << formatNumber(kSwitchInertia) << " " << formatNumber(kSwitchInertia)
-      << " " << formatNumber(kSwitchInertia) << "\"/>\n"
-      << "        <joint name=\"" << escapeXml(body) << "_joint\" type=\"hinge\" pos=\"0 0 0\" axis=\""
-      << formatVector(part.axis.cast<double>()) << "\" limited=\"true\" range=\"0 "
-      << formatNumber(kSwitchAngle) << "\" damping=\"0\" armature=\""
-      << formatNumber(kSwitchArmature) << "\"/>\n"
-      << "      </body>\n";
+      << formatVector(control.part.pivot.cast<double>()) << "\">\n";
+  writeMarkerInertial(xml);
+  MjcfJoint hinge{body + "_joint", "hinge", control.part.axis, 0.0, kSwitchAngle};
+  hinge.damping = 0;
+  hinge.armature = kSwitchArmature;
+  writeJoint(xml, hinge);
+  xml << "      </body>\n";
 }
 
 void writeSwitchEqualities(std::ostringstream& xml, const std::vector<std::string>& switchedBodies) {
@@ -207,15 +214,9 @@ void writeSpoutBody(std::ostringstream& xml, const MjcfSite& water) {
   // The outlet: the site hangs its stream below it (robocasa_sites.cpp).
   const Eigen::Vector3f outlet = water.position + Eigen::Vector3f(0, 0, kWaterHalfHeight);
   xml << "      <body name=\"" << escapeXml(body) << "\" pos=\""
-      << formatVector(outlet.cast<double>()) << "\">\n"
-      << "        <inertial pos=\"0 0 0\" mass=\"" << formatNumber(kSpoutMass)
-      << "\" diaginertia=\"" << formatNumber(kSpoutInertia) << " " << formatNumber(kSpoutInertia)
-      << " " << formatNumber(kSpoutInertia) << "\"/>\n"
-      << "        <joint name=\"" << escapeXml(body) << "_joint\" type=\"hinge\" pos=\"0 0 0\" "
-         "axis=\"0 0 1\" limited=\"true\" range=\""
-      << formatNumber(-kLockedRange) << " " << formatNumber(kLockedRange) << "\" damping=\""
-      << formatNumber(kControlDamping) << "\" armature=\"" << formatNumber(kControlArmature)
-      << "\"/>\n";
+      << formatVector(outlet.cast<double>()) << "\">\n";
+  writeMarkerInertial(xml);
+  writeJoint(xml, {body + "_joint", "hinge", Eigen::Vector3f::UnitZ(), -kLockedRange, kLockedRange});
   writeSite(xml, water, "        ", outlet);
   xml << "      </body>\n";
 }

@@ -20,11 +20,17 @@
 
 namespace sagrid::exportdetail {
 
+// Added to a control joint's inertia (kg m^2): a knob of a few grams is otherwise near singular
+// for MuJoCo ("inertia matrix too close to singular").
+inline constexpr double kControlArmature = 1e-4;
+
 struct MjcfJoint {
   std::string name;
   std::string type;  // "hinge" or "slide"
   Eigen::Vector3f axis;
   double low = 0, high = 0;  // radians or metres
+  double damping = kControlDamping;  // N m s/rad or N s/m
+  double armature = kControlArmature;
   double frictionLoss = 0;   // N or N m: what it takes to move it at all
   double stiffness = 0, springRef = 0;  // a spring (N/m) towards springRef; none at 0
 };
@@ -41,9 +47,6 @@ inline constexpr double kGravity = 9.81;            // m/s^2, MuJoCo's default, 
 // A tap handle's temperature turns +-45 degrees.
 inline constexpr double kTemperatureRange = 0.78539816;
 inline constexpr double kLockedRange = 1e-4;  // radians
-// Added to a control joint's inertia (kg m^2): a knob of a few grams is otherwise near singular
-// for MuJoCo ("inertia matrix too close to singular").
-inline constexpr double kControlArmature = 1e-4;
 
 // A stove's push button or touch key that drives a burner. RoboCasa lights a burner from the
 // angle of its `knob_<loc>_joint` (robocasa/models/fixtures/stove.py: Stove.update_state, between
@@ -53,8 +56,6 @@ inline constexpr double kControlArmature = 1e-4;
 // kSwitchAngle. A pressed button then lights its burner by RoboCasa's own rule, and RoboCasa
 // setting the knob's angle (Stove.set_knob_state, up to the joint's range) presses the button.
 inline constexpr double kSwitchAngle = 1.57079633;  // above RoboCasa's "high" (80 degrees)
-inline constexpr double kSwitchMass = 1e-3;         // kg, and inertia kg m^2: a body MuJoCo accepts
-inline constexpr double kSwitchInertia = 1e-8;
 // The switch's hinge has no damping, and an armature that weighs on the press times
 // (kSwitchAngle / kButtonTravel)^2 (about 1.5e5): 15 kg, so a 1 N press goes home in about a third
 // of a second, and the switch is some 3,000 times heavier than the key in the equality, so an

@@ -98,6 +98,12 @@ void TrainingWorker::runCategoryClassifier(const TrainingRequest& request) {
   if (!fs::is_regular_file(currentFile, ec))
     throw InvalidArgument("no category classifier in " + from.string() +
                           " to retrain (train one with `sagrid category train`)");
+  if (!request.heldOut.empty()) {
+    // The same refusals as a guarded point-model update: a held-out object that is also training
+    // data, one mesh labelled with two categories, a models folder that is not one set.
+    update([&](TrainingStatus& s) { s.phase = "checking the curated data and " + from.string(); });
+    checkGuardedUpdate({from, {}, {}, request.heldOut, {}, {}, {}}, {request.dataset});
+  }
   const CategoryClassifier current = CategoryClassifier::load(currentFile);
   const FeatureOptions features = ModelSet::load(from).featureOptions();
   std::vector<std::string> missing;
@@ -140,123 +146,121 @@ void TrainingWorker::runCategoryClassifier(const TrainingRequest& request) {
 }
 
 void TrainingWorker::runPointModels(const TrainingRequest& request) {
-  {
-    const auto types = trainingTypes(request.dataset, request.category);
-    if (types.empty()) {
-      throw InvalidArgument("the training set " + request.dataset.string() + " has no " +
-                            request.category + " object with points; add some first");
-    }
-    const double steps = double(types.size()) + 1.0;  // models, then the queue
-    if (!request.initDir.empty() && !request.heldOut.empty()) {
-      update([&](TrainingStatus& s) { s.phase = "checking the curated data and " + request.initDir.string(); });
-      checkGuardedUpdate({request.initDir, {}, {}, request.heldOut, {}, {}, {}}, {request.dataset});
-    }
-    for (std::size_t t = 0; t < types.size(); ++t) {
-      DatasetTrainingOptions options;
-      options.modelName = request.category + "." + types[t];
-      options.datasets.push_back({request.dataset, 1.0, "data", {}, {}});
-      // The same fine-tune as `sagrid train --init DIR` (replay weighted 1:1, fine-tune rate).
-      if (!request.initDir.empty() &&
-          fs::is_regular_file(request.initDir / (options.modelName + ".json"))) {
-        options.init = request.initDir;
-        options.training.learningRate = kFineTuneLearningRate;
-        if (request.replay) {
-          update([&](TrainingStatus& s) {
-            s.phase = "replay: the generated training data (generated if missing)";
-          });
-          for (const auto& r : defaultReplaySources(options.modelName))
-            options.datasets.push_back(r);
-        }
-      }
-      const bool guarded = !options.init.empty() && !request.heldOut.empty();
-      options.outDir = guarded ? request.outDir / (".candidate." + options.modelName) : request.outDir;
-      const GuardOptions guard{request.initDir, options.outDir, options.modelName, request.heldOut, {}, {}, {}};
-      options.command = options.init.empty() ? "sagrid gui (Train panel)"
-                                             : "sagrid gui (Train panel, fine-tune of " +
-                                                   request.initDir.string() + ")";
-      options.training.minutes = request.minutesPerModel;
-      options.training.epochs = request.epochs;
-      options.training.cancel = &m_cancel;
-      options.training.onProgress = [&](const model::TrainingProgress& p) {
-        update([&](TrainingStatus& s) {
-          s.phase = "training " + options.modelName + ", epoch " + std::to_string(p.epoch) + "/" +
-                    std::to_string(p.epochs);
-          s.losses.push_back(float(p.loss));
-          const double within = p.epochs > 0 ? double(p.epoch) / p.epochs : 0.0;
-          s.fraction = float((double(t) + within) / steps);
-        });
-      };
-      options.onFeatureProgress = [&](std::size_t done, std::size_t total, const std::string& id) {
-        update([&](TrainingStatus& s) {
-          s.phase = "features " + std::to_string(done) + "/" + std::to_string(total) + " " + id;
-        });
-      };
-      update([&](TrainingStatus& s) { s.losses.clear(); });
-      const auto result = trainFromDataset(options);
-      logger()->info("trained {} on {} objects ({:.0f} s)", result.card.name, result.objectsUsed,
-                     result.trainingSeconds);
-      if (guarded) {
-        update([&](TrainingStatus& s) { s.phase = "guard: " + options.modelName + " on held-out objects"; });
-        const GuardVerdict verdict = judgeUpdate(guard);
-        applyVerdict(verdict, guard, request.outDir);
-        fs::remove_all(options.outDir);
-        logger()->info("guard: {}: {}", options.modelName, verdict.reason);
-        update([&](TrainingStatus& s) { s.verdicts.push_back(options.modelName + ": " + verdict.reason); });
-      }
-    }
-
-    // Predict the queue again with the new models; reviewed objects keep what the curator decided.
-    const ModelSet models = ModelSet::load(request.outDir);
-    std::size_t objects = 0, moved = 0, compared = 0;
-    for (std::size_t i = 0; i < request.requeue.size(); ++i) {
-      if (m_cancel) throw Cancelled();
-      const QueueEntry& entry = request.requeue[i];
-      update([&](TrainingStatus& s) {
-        s.phase = "predicting " + entry.mesh.parent_path().filename().string();
-        s.fraction =
-            float((double(types.size()) + double(i) / double(request.requeue.size())) / steps);
-      });
-      if (entry.state != QueueState::Unreviewed) continue;
-      ObjectLabels before;
-      std::error_code ec;
-      if (fs::exists(entry.labels, ec)) before = readLabels(entry.labels);
-      if (!before.object.category.empty() && before.object.category != request.category) continue;
-      AnnotateOptions options;
-      options.category = request.category;
-      options.features = models.featureOptions();
-      AnnotationResult r = annotateMeshFile(
-          entry.mesh, before.object.id.empty() ? entry.mesh.stem().string() : before.object.id,
-          models, options, entry.labels.parent_path());
-      // A point "moved" when no new prediction of its type lies within 2% of the object's size.
-      const float tolerance = 0.02f * [&] {
-        Eigen::AlignedBox3f box;
-        for (const auto& p : r.labels.affordances) box.extend(p.position);
-        for (const auto& p : before.affordances) box.extend(p.position);
-        return box.isEmpty() ? 1.0f : std::max(box.diagonal().norm(), 1e-6f);
-      }();
-      for (const auto& old : before.affordances) {
-        if (old.status != AffordanceStatus::Predicted) continue;
-        ++compared;
-        bool stayed = false;
-        for (const auto& now : r.labels.affordances)
-          stayed |= now.type == old.type && (now.position - old.position).norm() <= tolerance;
-        if (!stayed) ++moved;
-      }
-      ObjectLabels updated = before.object.id.empty() ? r.labels : before;
-      updated.affordances = r.labels.affordances;
-      if (updated.object.category.empty()) updated.object.category = request.category;
-      writeLabels(entry.labels, updated);
-      ++objects;
-    }
-    update([&](TrainingStatus& s) {
-      s.fraction = 1.0f;
-      s.phase = "done";
-      s.finished = std::to_string(types.size()) + " model(s) trained; " + std::to_string(objects) +
-                   " unreviewed object(s) predicted again: " + std::to_string(moved) + " of " +
-                   std::to_string(compared) + " predicted points moved";
-    });
-    logger()->info("training loop: {} of {} predicted points moved", moved, compared);
+  const auto types = trainingTypes(request.dataset, request.category);
+  if (types.empty()) {
+    throw InvalidArgument("the training set " + request.dataset.string() + " has no " +
+                          request.category + " object with points; add some first");
   }
+  const double steps = double(types.size()) + 1.0;  // models, then the queue
+  if (!request.initDir.empty() && !request.heldOut.empty()) {
+    update([&](TrainingStatus& s) { s.phase = "checking the curated data and " + request.initDir.string(); });
+    checkGuardedUpdate({request.initDir, {}, {}, request.heldOut, {}, {}, {}}, {request.dataset});
+  }
+  for (std::size_t t = 0; t < types.size(); ++t) {
+    DatasetTrainingOptions options;
+    options.modelName = request.category + "." + types[t];
+    options.datasets.push_back({request.dataset, 1.0, "data", {}, {}});
+    // The same fine-tune as `sagrid train --init DIR` (replay weighted 1:1, fine-tune rate).
+    if (!request.initDir.empty() &&
+        fs::is_regular_file(request.initDir / (options.modelName + ".json"))) {
+      options.init = request.initDir;
+      options.training.learningRate = kFineTuneLearningRate;
+      if (request.replay) {
+        update([&](TrainingStatus& s) {
+          s.phase = "replay: the generated training data (generated if missing)";
+        });
+        for (const auto& r : defaultReplaySources(options.modelName))
+          options.datasets.push_back(r);
+      }
+    }
+    const bool guarded = !options.init.empty() && !request.heldOut.empty();
+    options.outDir = guarded ? request.outDir / (".candidate." + options.modelName) : request.outDir;
+    const GuardOptions guard{request.initDir, options.outDir, options.modelName, request.heldOut, {}, {}, {}};
+    options.command = options.init.empty() ? "sagrid gui (Train panel)"
+                                           : "sagrid gui (Train panel, fine-tune of " +
+                                                 request.initDir.string() + ")";
+    options.training.minutes = request.minutesPerModel;
+    options.training.epochs = request.epochs;
+    options.training.cancel = &m_cancel;
+    options.training.onProgress = [&](const model::TrainingProgress& p) {
+      update([&](TrainingStatus& s) {
+        s.phase = "training " + options.modelName + ", epoch " + std::to_string(p.epoch) + "/" +
+                  std::to_string(p.epochs);
+        s.losses.push_back(float(p.loss));
+        const double within = p.epochs > 0 ? double(p.epoch) / p.epochs : 0.0;
+        s.fraction = float((double(t) + within) / steps);
+      });
+    };
+    options.onFeatureProgress = [&](std::size_t done, std::size_t total, const std::string& id) {
+      update([&](TrainingStatus& s) {
+        s.phase = "features " + std::to_string(done) + "/" + std::to_string(total) + " " + id;
+      });
+    };
+    update([&](TrainingStatus& s) { s.losses.clear(); });
+    const auto result = trainFromDataset(options);
+    logger()->info("trained {} on {} objects ({:.0f} s)", result.card.name, result.objectsUsed,
+                   result.trainingSeconds);
+    if (guarded) {
+      update([&](TrainingStatus& s) { s.phase = "guard: " + options.modelName + " on held-out objects"; });
+      const GuardVerdict verdict = judgeUpdate(guard);
+      applyVerdict(verdict, guard, request.outDir);
+      fs::remove_all(options.outDir);
+      logger()->info("guard: {}: {}", options.modelName, verdict.reason);
+      update([&](TrainingStatus& s) { s.verdicts.push_back(options.modelName + ": " + verdict.reason); });
+    }
+  }
+
+  // Predict the queue again with the new models; reviewed objects keep what the curator decided.
+  const ModelSet models = ModelSet::load(request.outDir);
+  std::size_t objects = 0, moved = 0, compared = 0;
+  for (std::size_t i = 0; i < request.requeue.size(); ++i) {
+    if (m_cancel) throw Cancelled();
+    const QueueEntry& entry = request.requeue[i];
+    update([&](TrainingStatus& s) {
+      s.phase = "predicting " + entry.mesh.parent_path().filename().string();
+      s.fraction =
+          float((double(types.size()) + double(i) / double(request.requeue.size())) / steps);
+    });
+    if (entry.state != QueueState::Unreviewed) continue;
+    ObjectLabels before;
+    std::error_code ec;
+    if (fs::exists(entry.labels, ec)) before = readLabels(entry.labels);
+    if (!before.object.category.empty() && before.object.category != request.category) continue;
+    AnnotateOptions options;
+    options.category = request.category;
+    options.features = models.featureOptions();
+    AnnotationResult r = annotateMeshFile(
+        entry.mesh, before.object.id.empty() ? entry.mesh.stem().string() : before.object.id,
+        models, options, entry.labels.parent_path());
+    // A point "moved" when no new prediction of its type lies within 2% of the object's size.
+    const float tolerance = 0.02f * [&] {
+      Eigen::AlignedBox3f box;
+      for (const auto& p : r.labels.affordances) box.extend(p.position);
+      for (const auto& p : before.affordances) box.extend(p.position);
+      return box.isEmpty() ? 1.0f : std::max(box.diagonal().norm(), 1e-6f);
+    }();
+    for (const auto& old : before.affordances) {
+      if (old.status != AffordanceStatus::Predicted) continue;
+      ++compared;
+      bool stayed = false;
+      for (const auto& now : r.labels.affordances)
+        stayed |= now.type == old.type && (now.position - old.position).norm() <= tolerance;
+      if (!stayed) ++moved;
+    }
+    ObjectLabels updated = before.object.id.empty() ? r.labels : before;
+    updated.affordances = r.labels.affordances;
+    if (updated.object.category.empty()) updated.object.category = request.category;
+    writeLabels(entry.labels, updated);
+    ++objects;
+  }
+  update([&](TrainingStatus& s) {
+    s.fraction = 1.0f;
+    s.phase = "done";
+    s.finished = std::to_string(types.size()) + " model(s) trained; " + std::to_string(objects) +
+                 " unreviewed object(s) predicted again: " + std::to_string(moved) + " of " +
+                 std::to_string(compared) + " predicted points moved";
+  });
+  logger()->info("training loop: {} of {} predicted points moved", moved, compared);
 }
 
 }  // namespace sagrid::ui

@@ -17,10 +17,6 @@
 
 namespace sagrid::ui {
 
-// Curated objects count this many times among the generated ones when the classifier is
-// retrained (as the shipped classifier weighs its real objects: resources/models/category.json).
-inline constexpr double kCuratedCategoryWeight = 3.0;
-
 struct TrainingRequest {
   std::filesystem::path dataset;  // dataset layout with manifest.jsonl
   std::string category;

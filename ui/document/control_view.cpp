@@ -69,7 +69,7 @@ std::optional<ShownControl> shownControl(const AnnotationDocument& document, int
   FoundCache& cache = cacheFor(document);
   if (const auto it = cache.shown.find(index); it != cache.shown.end()) return it->second;
   const std::optional<ShownControl> shown = controlOf(document, index);
-  cacheFor(document).shown[index] = shown;
+  cache.shown.emplace(index, shown);  // controlOf keeps `cache` (same revision)
   return shown;
 }
 

@@ -10,6 +10,7 @@
 
 #include "core/annotate/category_classifier.h"
 #include "core/annotate/category_update.h"
+#include "core/annotate/model_set.h"
 #include "core/common/atomic_file.h"
 #include "core/common/error.h"
 #include "core/generate/dataset_generator.h"
@@ -36,40 +37,49 @@ TrainingStatus retrain(const fs::path& dir, const fs::path& heldOut) {
   return worker.status();
 }
 
-TEST(CategoryRetrainWorker, RetrainsOnItsOwnDataAndTheCuratedSetGuardedOnHeldOutObjects) {
-  const fs::path dir = test::freshTempDir();
+// Generated stand-ins: the classifier's own training folder, the curator's training set, and
+// held-out curated objects, in `dir`.
+void generateFolders(const fs::path& dir) {
   gen::generateDataset({{"stove", 2, 51}, {"sink", 2, 52}, {"none", 2, 53}}, gen::MeshFormat::Obj,
                        dir / "own");
   gen::generateDataset({{"stove", 2, 54}, {"sink", 1, 55}, {"none", 1, 56}}, gen::MeshFormat::Obj,
                        dir / "curated");
   gen::generateDataset({{"stove", 2, 57}, {"sink", 2, 58}, {"none", 2, 59}}, gen::MeshFormat::Obj,
                        dir / "held-out");
-  // The loaded models: the shipped ones, their classifier trained on "own" (weight 2) and on a
-  // folder this machine lacks.
-  fs::copy(fs::path(SAGRID_SOURCE_DIR) / "resources" / "models", dir / "loaded",
-           fs::copy_options::recursive);
-  const fs::path loadedFile = dir / "loaded" / kCategoryClassifierFile;
-  CategoryClassifier loaded = CategoryClassifier::load(loadedFile);
+}
+
+// The loaded models: the shipped ones, their classifier `loaded` saved with a training record of
+// "own" (weight 2), a folder this machine lacks, and `iterations` gradient steps.
+CategoryClassifier saveLoaded(const fs::path& dir, CategoryClassifier loaded, int iterations) {
   loaded.training["data"] = {(dir / "own").string() + "@2", (dir / "gone").string()};
-  loaded.training["iterations"] = 2000;
-  loaded.save(loadedFile);
-  const std::string before = readFileBytes(loadedFile);
+  loaded.training["iterations"] = iterations;
+  loaded.save(dir / "loaded" / kCategoryClassifierFile);
+  return loaded;
+}
+
+const fs::path kShipped = fs::path(SAGRID_SOURCE_DIR) / "resources" / "models";
+
+// A classifier retrained for one gradient step decides the held-out objects worse than the
+// shipped one: refused, written to refused/, the loaded one untouched.
+TEST(CategoryRetrainWorker, AWorseRetrainingIsRefusedAndTheLoadedClassifierStays) {
+  const fs::path dir = test::freshTempDir();
+  generateFolders(dir);
+  fs::copy(kShipped, dir / "loaded", fs::copy_options::recursive);
+  const CategoryClassifier loaded =
+      saveLoaded(dir, CategoryClassifier::load(kShipped / kCategoryClassifierFile), 1);
+  const std::string before = readFileBytes(dir / "loaded" / kCategoryClassifierFile);
 
   const TrainingStatus status = retrain(dir, dir / "held-out");
   ASSERT_TRUE(status.error.empty()) << status.error;
   ASSERT_EQ(status.verdicts.size(), 1u);
-  const bool adopted = status.verdicts[0].find(": adopted") != std::string::npos;
-  EXPECT_TRUE(adopted || status.verdicts[0].find("refused, current classifier kept") != std::string::npos)
+  EXPECT_NE(status.verdicts[0].find("refused, current classifier kept"), std::string::npos)
       << status.verdicts[0];
   EXPECT_NE(status.finished.find("1 of its training folders are not on this machine"), std::string::npos)
       << status.finished;
-  EXPECT_EQ(readFileBytes(loadedFile), before);  // the loaded classifier is never overwritten
-
-  const fs::path written = adopted ? dir / "out" / kCategoryClassifierFile
-                                   : dir / "out" / "refused" / kCategoryClassifierFile;
-  ASSERT_TRUE(fs::exists(written));
-  EXPECT_NE(fs::exists(dir / "out" / kCategoryClassifierFile), !adopted);
-  const CategoryClassifier candidate = CategoryClassifier::load(written);
+  EXPECT_EQ(readFileBytes(dir / "loaded" / kCategoryClassifierFile), before);
+  EXPECT_FALSE(fs::exists(dir / "out" / kCategoryClassifierFile));
+  const CategoryClassifier candidate =
+      CategoryClassifier::load(dir / "out" / "refused" / kCategoryClassifierFile);
   // Trained on what is here of its own data, then the curated set weighted as real objects.
   const std::vector<std::string> data = candidate.training.at("data");
   ASSERT_EQ(data.size(), 2u);
@@ -85,6 +95,32 @@ TEST(CategoryRetrainWorker, RetrainsOnItsOwnDataAndTheCuratedSetGuardedOnHeldOut
   std::string line;
   ASSERT_TRUE(std::getline(log, line));
   EXPECT_NE(line.find("\"model\":\"category\""), std::string::npos) << line;
+  EXPECT_NE(line.find("\"adopted\":false"), std::string::npos) << line;
+}
+
+// Loaded with a classifier of one gradient step, the curated retraining (2,000 steps) decides the
+// held-out objects better: adopted into the models folder written to.
+TEST(CategoryRetrainWorker, ABetterRetrainingIsAdopted) {
+  const fs::path dir = test::freshTempDir();
+  generateFolders(dir);
+  fs::copy(kShipped, dir / "loaded", fs::copy_options::recursive);
+  CategoryClassifier oneStep = CategoryClassifier::load(kShipped / kCategoryClassifierFile);
+  oneStep.training["data"] = {(dir / "own").string()};
+  oneStep.training["iterations"] = 1;
+  std::vector<std::string> missing;
+  oneStep = retrainCategoryClassifier(oneStep, dir / "curated", kCuratedCategoryWeight,
+                                      ModelSet::load(kShipped).featureOptions(), missing);
+  saveLoaded(dir, oneStep, 2000);
+  const std::string before = readFileBytes(dir / "loaded" / kCategoryClassifierFile);
+
+  const TrainingStatus status = retrain(dir, dir / "held-out");
+  ASSERT_TRUE(status.error.empty()) << status.error;
+  ASSERT_EQ(status.verdicts.size(), 1u);
+  EXPECT_NE(status.verdicts[0].find(": adopted"), std::string::npos) << status.verdicts[0];
+  EXPECT_EQ(readFileBytes(dir / "loaded" / kCategoryClassifierFile), before);
+  ASSERT_TRUE(fs::exists(dir / "out" / kCategoryClassifierFile));
+  EXPECT_FALSE(fs::exists(dir / "out" / "refused"));
+  EXPECT_EQ(CategoryClassifier::load(dir / "out" / kCategoryClassifierFile).training.at("iterations"), 2000);
 }
 
 // Held-out objects of one class cannot judge a classifier: the panel shows why; nothing written.
