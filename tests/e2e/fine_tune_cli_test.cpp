@@ -21,9 +21,8 @@ TEST(FineTuneCli, InitFromShippedModelsOnARealDevStyleFolder) {
   gen::generateDataset({{"stove", 1, 21}}, gen::MeshFormat::Obj, dir / "real");
   fs::remove(dir / "real" / "manifest.jsonl");  // object folders with labels.json only
   gen::generateDataset({{"stove", 1, 22}, {"sink", 1, 22}}, gen::MeshFormat::Obj, dir / "replay");
-  const auto r = test::runCommand(
-      "cd " + shellQuote(SAGRID_SOURCE_DIR) + " && " + shellQuote(test::sagridBinary().string()) +
-      " train --data " + shellQuote((dir / "real").string()) +
+  const auto r = test::runSagridInSource(
+      "train --data " + shellQuote((dir / "real").string()) +
       " --init resources/models --model stove.togglebutton --epochs 1 --replay " +
       shellQuote((dir / "replay").string()) + " --out " + shellQuote((dir / "out").string()));
   ASSERT_EQ(r.exitCode, 0) << r.output;

@@ -25,9 +25,8 @@ TEST(LearningCurveCli, FoldsReachObjectFoldersLinkedFromElsewhere) {
     if (e.is_directory())
       fs::create_directory_symlink(e.path(), dir / "linked" / e.path().filename());
   }
-  const auto r = test::runCommand(
-      "cd " + shellQuote(SAGRID_SOURCE_DIR) + " && " + shellQuote(test::sagridBinary().string()) +
-      " eval --learning-curve --data " + shellQuote((dir / "linked").string()) +
+  const auto r = test::runSagridInSource(
+      "eval --learning-curve --data " + shellQuote((dir / "linked").string()) +
       " --init resources/models --model stove.heatsource --ks 0,1 --folds 2 --epochs 1 --replay " +
       shellQuote((dir / "replay").string()) + " --out " + shellQuote((dir / "lc").string()));
   ASSERT_EQ(r.exitCode, 0) << r.output;
@@ -47,9 +46,8 @@ TEST(LearningCurveCli, AGuardedCurveJudgesEveryFineTuneOnSourcesItDidNotTrainOn)
   for (const auto& e : fs::directory_iterator(dir / "real"))
     if (e.is_directory())
       writeFileAtomic(e.path() / "provenance.json", "{\"repo\": \"owner/source" + std::to_string(n++) + "\"}");
-  const auto r = test::runCommand(
-      "cd " + shellQuote(SAGRID_SOURCE_DIR) + " && " + shellQuote(test::sagridBinary().string()) +
-      " eval --learning-curve --by-source --guard --data " + shellQuote((dir / "real").string()) +
+  const auto r = test::runSagridInSource(
+      "eval --learning-curve --by-source --guard --data " + shellQuote((dir / "real").string()) +
       " --init resources/models --model stove.heatsource --ks 0,1 --folds 3 --epochs 1 --replay " +
       shellQuote((dir / "replay").string()) + " --out " + shellQuote((dir / "lc").string()));
   ASSERT_EQ(r.exitCode, 0) << r.output;

@@ -53,4 +53,9 @@ CommandResult runSagrid(const std::string& arguments) {
   return runCommand(shellQuote(sagridBinary().string()) + " " + arguments);
 }
 
+CommandResult runSagridInSource(const std::string& arguments) {
+  return runCommand("cd " + shellQuote(SAGRID_SOURCE_DIR) + " && " +
+                    shellQuote(sagridBinary().string()) + " " + arguments);
+}
+
 }  // namespace sagrid::test

@@ -20,6 +20,9 @@ struct CommandResult {
 CommandResult runCommand(const std::string& commandLine);
 // Runs the sagrid binary with the given (already shell-quoted) arguments.
 CommandResult runSagrid(const std::string& arguments);
+// The same from the repository's root, so that arguments name shipped files as a user in a
+// checkout types them (`--init resources/models`).
+CommandResult runSagridInSource(const std::string& arguments);
 std::string shellQuote(const std::string& text);
 // A path quoted for a shell command line.
 inline std::string quotedPath(const std::filesystem::path& path) {
