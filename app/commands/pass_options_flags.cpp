@@ -34,6 +34,9 @@ const PassSwitch kPassSwitches[] = {
     {"--no-spout-outlets", &PassOptions::spoutOutlets,
      "Switch the spout-outlet pass off: a fluid-source point on a faucet's handle or body is not "
      "moved to the outlet under the spout's tip near it"},
+    {"--no-point-scorer", &PassOptions::learnedDecision,
+     "Switch the learned point decision off: where the models folder has a point scorer "
+     "(point_scorer.json), its choice among the candidates does not replace the passes' points"},
     {"--no-part-ownership", &PassOptions::partOwnership,
      "Switch the part-ownership pass off: points of two types may share a small part (a burner "
      "point on a knob), and knob and burner points on the grate or a panel are kept"},

@@ -164,6 +164,7 @@ AnnotationResult annotateMeshFile(const fs::path& meshFile, const std::string& i
   }
 
   t = Clock::now();
+  const PassOptions passes = withLearnedDecision(options, models);
   r.labels.object.id = id;
   r.labels.object.mesh =
       fs::proximate(fs::absolute(meshFile), fs::absolute(labelsDir)).generic_string();
@@ -184,7 +185,7 @@ AnnotationResult annotateMeshFile(const fs::path& meshFile, const std::string& i
       // No hard gate: the likeliest category's points, as suggestions.
       const auto closestModels = models.forCategory(r.closestCategory);
       const CategoryPoints suggested =
-          predictCategoryPoints(closestModels, r.closestCategory, {mesh, features, scene, featureOptions}, options,
+          predictCategoryPoints(closestModels, r.closestCategory, {mesh, features, scene, featureOptions}, passes,
                                 options.mode, options.counts, [](std::size_t) {});
       appendPredictedPoints(r.labels, suggested.predictions);
       markSuggestions(r.labels, r.closestCategory);
@@ -194,7 +195,7 @@ AnnotationResult annotateMeshFile(const fs::path& meshFile, const std::string& i
   }
   const auto categoryModels = models.forCategory(r.category);
   CategoryPoints points = predictCategoryPoints(
-      categoryModels, r.category, {mesh, features, scene, featureOptions}, options, options.mode,
+      categoryModels, r.category, {mesh, features, scene, featureOptions}, passes, options.mode,
       options.counts, [&](std::size_t m) {
         stage(0.7f + 0.3f * static_cast<float>(m) / static_cast<float>(categoryModels.size()),
               categoryModels[m]->card().name);

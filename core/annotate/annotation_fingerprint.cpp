@@ -4,6 +4,7 @@
 
 #include "core/annotate/category_classifier.h"
 #include "core/annotate/object_confidence.h"
+#include "core/annotate/point_scorer.h"
 #include "core/common/atomic_file.h"
 #include "core/common/sha256.h"
 #include "core/mesh/mesh_import.h"
@@ -14,7 +15,7 @@ namespace fs = std::filesystem;
 nlohmann::json modelShas(const ModelSet& models, const fs::path& modelsDir) {
   nlohmann::json shas = nlohmann::json::object();
   for (const auto& m : models.models()) shas[m.card().name] = m.card().weightsIdentity();
-  for (const char* file : {kCategoryClassifierFile, kConfidenceFile}) {
+  for (const char* file : {kCategoryClassifierFile, kConfidenceFile, kPointScorerFile}) {
     std::error_code ec;
     if (fs::is_regular_file(modelsDir / file, ec))
       shas[file] = sha256Hex(readFileBytes(modelsDir / file));
@@ -35,6 +36,7 @@ std::string annotateOptionsHash(const AnnotateOptions& options) {
       {"spout_controls", options.spoutControls},
       {"spout_outlets", options.spoutOutlets},
       {"part_ownership", options.partOwnership},
+      {"learned_decision", options.learnedDecision},
       {"suggestions", options.suggestions},
       {"passes_version", kPointPassesVersion},
       {"coarse_to_fine",

@@ -26,7 +26,19 @@ ModelSet ModelSet::load(const std::filesystem::path& directory) {
   const auto classifierFile = directory / kCategoryClassifierFile;
   if (std::filesystem::exists(classifierFile))
     set.setCategoryClassifier(CategoryClassifier::load(classifierFile), classifierFile);
+  if (auto scorer = readPointScorer(directory))
+    set.setPointScorer(std::move(*scorer), directory / kPointScorerFile);
   return set;
+}
+
+void ModelSet::setPointScorer(PointScorer scorer, const std::filesystem::path& file) {
+  for (const auto& [name, decision] : scorer.byModel)
+    if (std::none_of(m_models.begin(), m_models.end(),
+                     [&name = name](const auto& m) { return m.card().name == name; }))
+      throw ModelError(file.string() + ": the point scorer decides for model " + name +
+                       ", which this folder has no card of; train it again with `sagrid scorer "
+                       "train --models` this folder");
+  m_scorer = std::move(scorer);
 }
 
 void ModelSet::setCategoryClassifier(CategoryClassifier classifier,

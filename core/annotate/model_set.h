@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "core/annotate/category_classifier.h"
+#include "core/annotate/point_scorer.h"
 #include "core/features/feature_pipeline.h"
 #include "core/model/affordance_model.h"
 
@@ -62,6 +63,11 @@ class ModelSet {
   // knows a category no card has.
   void setCategoryClassifier(CategoryClassifier classifier, const std::filesystem::path& file);
 
+  // The learned point decision of the folder (point_scorer.json); nullptr when it has none.
+  const PointScorer* pointScorer() const { return m_scorer ? &*m_scorer : nullptr; }
+  // Throws ModelError naming `file` when the scorer decides for a model the folder has no card of.
+  void setPointScorer(PointScorer scorer, const std::filesystem::path& file);
+
   // Feature options matching the cards (backend, grid size); the cache folder is the caller's.
   FeatureOptions featureOptions() const;
 
@@ -78,6 +84,7 @@ class ModelSet {
   // retrievalSpace() is called at use and throws its clear error there.
   std::optional<RetrievalSpace> m_retrieval;
   std::optional<CategoryClassifier> m_classifier;
+  std::optional<PointScorer> m_scorer;
 };
 
 }  // namespace sagrid

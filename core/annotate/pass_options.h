@@ -8,6 +8,8 @@
 
 namespace sagrid {
 
+struct PointScorer;
+
 // The version of what the passes write: part of the annotation fingerprint's options hash, so a
 // resumed batch predicts again the objects annotated before a pass changed. Raise it with every
 // change to a pass's output (2: part ownership drops knob and burner points on feet; 3: and keeps
@@ -21,7 +23,8 @@ namespace sagrid {
 // moves to a part beside it; 15: a rejected object keeps its likeliest category's points as
 // suggestions; 16: every toggle button point records its control part, motion and burner; 17: the
 // touch-key pass removed: on curated real objects no pass was made on it helped no source and
-// hurt one).
+// hurt one). The learned point decision is not a pass: its file's digest is part of the models'
+// fingerprint).
 inline constexpr int kPointPassesVersion = 17;
 
 struct PassOptions {
@@ -56,6 +59,16 @@ struct PassOptions {
   // burner point on a knob goes), and knob points on the grate or the cabinet go when other knob
   // points lie on parts of their own.
   bool partOwnership = true;
+  // The learned point decision (core/annotate/point_scorer.h): after the passes, each model's
+  // points are the candidates its scorer chooses, where the models folder has one
+  // (point_scorer.json) and this is on. Off: the passes' points stand.
+  bool learnedDecision = true;
+  // The scorer itself, set from the models folder by withLearnedDecision (point_passes.h); null:
+  // none. Not owned.
+  const PointScorer* scorer = nullptr;
+  // Keep every model's point candidates (before the scorer chooses) in CategoryPoints: what
+  // `sagrid scorer` learns from.
+  bool keepCandidates = false;
 };
 
 }  // namespace sagrid

@@ -5,13 +5,16 @@
 #include "core/annotate/category_rules.h"
 #include "core/annotate/coarse_to_fine.h"
 #include "core/annotate/mirror_pairs_pass.h"
+#include "core/annotate/model_set.h"
 #include "core/annotate/part_ownership_pass.h"
+#include "core/annotate/point_scorer.h"
 #include "core/annotate/printed_marks_pass.h"
 #include "core/annotate/repeated_parts_pass.h"
 #include "core/annotate/spout_controls_pass.h"
 #include "core/annotate/spout_outlet_pass.h"
 #include "core/geometry/surface_scene.h"
 #include "core/mesh/mesh.h"
+#include "core/points/surface_projection.h"
 
 namespace sagrid {
 
@@ -45,6 +48,11 @@ ModelPrediction locateWithModel(const model::AffordanceModel& model, const Objec
 
 }  // namespace
 
+PassOptions withLearnedDecision(PassOptions passes, const ModelSet& models) {
+  passes.scorer = passes.learnedDecision ? models.pointScorer() : nullptr;
+  return passes;
+}
+
 CategoryPoints predictCategoryPoints(const std::vector<const model::AffordanceModel*>& models,
                                      const std::string& category, const ObjectForPasses& object,
                                      const PassOptions& passes, InstanceMode mode,
@@ -67,8 +75,9 @@ CategoryPoints predictCategoryPoints(const std::vector<const model::AffordanceMo
   }
   CategoryPoints out;
   if (passes.printedMarks) out.printed = printedMarksOf(mesh, category);
+  const bool candidates = passes.scorer || passes.keepCandidates;
   const std::vector<ConnectedPart> parts =
-      passes.repeatedParts || passes.partOwnership || passes.spoutControls
+      passes.repeatedParts || passes.partOwnership || passes.spoutControls || candidates
           ? normalizedParts(mesh, features.normalization)
           : std::vector<ConnectedPart>{};
   for (std::size_t m = 0; m < models.size(); ++m) {
@@ -102,6 +111,22 @@ CategoryPoints predictCategoryPoints(const std::vector<const model::AffordanceMo
         applyRepeatedParts(out.predictions[m], parts, features, scene, mesh.fileUp,
                            models[m]->card().extraction, *rules.burnerCaps,
                            pointsOfOtherTypes(out.predictions, m));
+  // The learned decision last: it chooses among the passes' points, the field's minima and the
+  // small parts.
+  if (candidates && mode == InstanceMode::Auto && counts.empty())
+    for (std::size_t m = 0; m < out.predictions.size(); ++m) {
+      ModelPrediction& p = out.predictions[m];
+      auto found = pointCandidates(p.field, p.points, parts, [&](const Eigen::Vector3f& at) {
+        const SurfacePoint s = projectToSurface(at, features.normalization, scene, mesh.fileUp);
+        return SurfaceContact{fileToZUpRotation(mesh.fileUp) * s.normal,
+                              s.moved * features.normalization.scale};
+      });
+      const ModelPointScorer* scorer =
+          passes.scorer ? passes.scorer->forModel(models[m]->card().name) : nullptr;
+      if (scorer && !found.empty())
+        setPoints(p, scoredPoints(*scorer, found), features, scene, mesh.fileUp);
+      if (passes.keepCandidates) out.candidates.push_back(std::move(found));
+    }
   return out;
 }
 

@@ -13,6 +13,7 @@
 
 #include "core/annotate/annotate.h"
 #include "core/features/printed_marks.h"
+#include "core/points/point_candidates.h"
 
 namespace sagrid {
 
@@ -30,7 +31,15 @@ struct ObjectForPasses {
 struct CategoryPoints {
   std::vector<ModelPrediction> predictions;  // one per model, in the models' order
   PrintedMarks printed;                      // what the texture pass found (empty when off)
+  // Per model, its point candidates after the passes (PassOptions::keepCandidates; else empty).
+  std::vector<std::vector<PointCandidate>> candidates;
 };
+
+class ModelSet;
+
+// `passes` with `models`' learned point decision (ModelSet::pointScorer) when
+// passes.learnedDecision is on; without it, or off, no scorer.
+PassOptions withLearnedDecision(PassOptions passes, const ModelSet& models);
 
 // Runs `models` (one category's, `category`) on `object`. `mode` is the instance mode; a type in
 // `counts` takes InstanceMode::Count with its count (k-means), and Count without one falls back

@@ -83,6 +83,7 @@ EvaluationReport evaluateModels(const ModelSet& models, const EvaluationOptions&
   std::map<std::string, std::pair<double, std::size_t>> errorBySource;  // sum, count
   double modelSeconds = 0;
   const auto categories = models.categories();
+  const PassOptions passes = withLearnedDecision(options, models);
   for (std::size_t e = 0; e < entries.size(); ++e) {
     const DatasetEntry& entry = entries[e];
     if (options.onProgress) options.onProgress(e, entries.size(), entry.id);
@@ -110,10 +111,10 @@ EvaluationReport evaluateModels(const ModelSet& models, const EvaluationOptions&
       // Every other extraction mode below reads the same field.
       const auto categoryModels = models.forCategory(category);
       const auto t = Clock::now();
-      const std::vector<ModelPrediction> autoPredictions =
+      const CategoryPoints categoryPoints =
           predictCategoryPoints(categoryModels, category, {mesh, grid, scene, objectFeatures},
-                                options, InstanceMode::Auto)
-              .predictions;
+                                passes, InstanceMode::Auto);
+      const std::vector<ModelPrediction>& autoPredictions = categoryPoints.predictions;
       modelSeconds += std::chrono::duration<double>(Clock::now() - t).count();
       auto surfaceOf = [](const ModelPrediction& p) {
         std::vector<Eigen::Vector3f> out;
@@ -140,6 +141,14 @@ EvaluationReport evaluateModels(const ModelSet& models, const EvaluationOptions&
         object["edits"][card.name] = {{"drags", edits.drags},
                                       {"deletions", edits.deletions},
                                       {"additions", edits.additions}};
+        if (options.keepCandidates && m < categoryPoints.candidates.size()) {
+          CandidateSet set{entry.id, source, card.name, object.contains("generator"), mpu,
+                           categoryPoints.candidates[m], {}, autoPoints, truth};
+          for (const auto& c : set.candidates)
+            set.candidateSurface.push_back(
+                projectToSurface(c.position, grid.normalization, scene, mesh.fileUp).position);
+          report.candidateSets.push_back(std::move(set));
+        }
         if (truth.empty()) continue;
         auto record = [&](Method method, const std::vector<Eigen::Vector3f>& predicted) {
           const double single = nearestDistance(predicted.front(), truth, mpu);

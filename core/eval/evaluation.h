@@ -16,6 +16,7 @@
 #include "core/annotate/model_set.h"
 #include "core/annotate/object_confidence.h"
 #include "core/annotate/pass_options.h"
+#include "core/eval/candidate_sets.h"
 #include "core/eval/curator_effort.h"
 #include "core/eval/metrics.h"
 #include "core/eval/reliability.h"
@@ -81,6 +82,8 @@ struct EvaluationReport {
   ReliabilityReport reliability;
   nlohmann::json perObject = nlohmann::json::array();
   std::map<std::string, FieldsWithTruth> fieldsByModel;  // with EvaluationOptions::keepFields
+  // Every model's point candidates on every object (PassOptions::keepCandidates).
+  std::vector<CandidateSet> candidateSets;
 };
 
 EvaluationReport evaluateModels(const ModelSet& models, const EvaluationOptions& options);

@@ -1,0 +1,141 @@
+// `sagrid scorer`: the learned point decision (core/annotate/point_scorer.h). `candidates` runs
+// the models over labelled data and saves every model's point candidates with the ground truth;
+// `cv` measures the decision leave one source out on them; `train` fits it and writes a models
+// folder with point_scorer.json. Parsing and progress display only.
+#include <CLI/CLI.hpp>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+
+#include "app/command_registry.h"
+#include "app/commands/pass_options_flags.h"
+#include "app/progress_bar.h"
+#include "core/common/atomic_file.h"
+#include "core/common/error.h"
+#include "core/common/resource_paths.h"
+#include "core/eval/evaluation.h"
+#include "core/eval/point_scorer_training.h"
+#include "core/model/model_files.h"
+
+namespace {
+namespace fs = std::filesystem;
+
+std::vector<sagrid::CandidateSet> readAll(const std::vector<std::string>& files) {
+  std::vector<sagrid::CandidateSet> all;
+  for (const auto& file : files) {
+    auto sets = sagrid::readCandidateSets(file);
+    all.insert(all.end(), std::make_move_iterator(sets.begin()), std::make_move_iterator(sets.end()));
+  }
+  return all;
+}
+
+void addTrainingOptions(CLI::App& cmd, sagrid::ScorerTrainingOptions& o) {
+  cmd.add_option("--real-weight", o.realWeight,
+                 "Weight of a curated real object's candidates against a generated object's "
+                 "(default 3)")
+      ->check(CLI::PositiveNumber);
+  cmd.add_option("--ridge", o.ridge, "Ridge on the classifier's weights (default 1)")
+      ->check(CLI::NonNegativeNumber);
+  cmd.add_flag("--choose-on-real", o.chooseOnReal,
+               "Fit the thresholds and radius on the curated real objects' edits only");
+  cmd.add_flag("--trees", o.trees, "Boosted trees instead of the logistic regression");
+  cmd.add_option("--rounds", o.boosting.rounds, "With --trees: boosting rounds (default 100)");
+  cmd.add_option("--depth", o.boosting.depth, "With --trees: tree depth (default 3)");
+}
+
+void setupScorer(CLI::App& root) {
+  auto* cmd = root.add_subcommand(
+      "scorer",
+      "The learned point decision: a classifier per model over point candidates (the passes' "
+      "points, the field's minima, the mesh's small parts) that chooses which are affordance "
+      "points and how many. `candidates` saves them from labelled data, `cv` measures the "
+      "decision leave one source out, `train` writes it into a models folder (point_scorer.json)");
+  cmd->require_subcommand(1);
+
+  struct CandidatesOptions {
+    std::vector<std::string> data;
+    std::string models, out, cache;
+    sagrid::PassOptions passes;
+  };
+  auto c = std::make_shared<CandidatesOptions>();
+  auto* candidates = cmd->add_subcommand(
+      "candidates", "Run the models over labelled data (as `sagrid eval`, passes included) and "
+                    "save every model's point candidates with the ground truth to --out (JSON)");
+  candidates->add_option("--data", c->data, "Labelled dataset (repeatable; its val/ split when "
+                                            "it has one)")->required();
+  candidates->add_option("--models", c->models, "Model folder (default resources/models)");
+  candidates->add_option("--out", c->out, "Candidate file to write")->required();
+  candidates->add_option("--cache", c->cache, "Feature cache (default DATA/.sagrid-cache)");
+  sagrid::app::addPassOptions(*candidates, c->passes);
+  candidates->callback([c] {
+    const fs::path modelsDir = c->models.empty() ? sagrid::defaultModelsDir() : fs::path(c->models);
+    const auto models = sagrid::ModelSet::load(modelsDir);
+    sagrid::EvaluationOptions options;
+    static_cast<sagrid::PassOptions&>(options) = c->passes;
+    options.keepCandidates = true;
+    options.dataDir = c->data.front();
+    options.moreData.assign(c->data.begin() + 1, c->data.end());
+    options.features = models.featureOptions();
+    options.features.cacheDir = c->cache;
+    std::unique_ptr<sagrid::app::ProgressBar> bar;
+    options.onProgress = [&](std::size_t done, std::size_t total, const std::string& id) {
+      if (!bar) bar = std::make_unique<sagrid::app::ProgressBar>("candidates", total);
+      bar->update(done, id);
+      if (done == total) bar.reset();
+    };
+    const auto report = sagrid::evaluateModels(models, options);
+    sagrid::writeCandidateSets(c->out, report.candidateSets);
+    std::fprintf(stderr, "candidates: %zu model sets of %zu objects -> %s\n",
+                 report.candidateSets.size(), report.objects, c->out.c_str());
+  });
+
+  struct LearnOptions {
+    std::vector<std::string> candidates;
+    std::string models, out;
+    sagrid::ScorerTrainingOptions training;
+  };
+  auto l = std::make_shared<LearnOptions>();
+  auto* cv = cmd->add_subcommand(
+      "cv", "Leave one source out over the curated real objects of the candidate files: per "
+            "source, the passes' points, a decision fitted on generated objects only and one "
+            "fitted with the curated objects of the other sources; writes OUT/scorer_cv.md, .json");
+  cv->add_option("--candidates", l->candidates, "Candidate files (repeatable)")->required();
+  cv->add_option("--out", l->out, "Report folder (default scorer-cv)");
+  addTrainingOptions(*cv, l->training);
+  cv->callback([l] {
+    const auto result = sagrid::crossValidatePointScorer(readAll(l->candidates), l->training);
+    const fs::path out = l->out.empty() ? fs::path("scorer-cv") : fs::path(l->out);
+    fs::create_directories(out);
+    const std::string md = sagrid::scorerCrossValidationMarkdown(result);
+    sagrid::writeFileAtomic(out / "scorer_cv.md", md);
+    sagrid::writeFileAtomic(out / "scorer_cv.json", sagrid::toJson(result).dump(2) + "\n");
+    std::cout << md;
+  });
+
+  auto* train = cmd->add_subcommand(
+      "train", "Fit the decision on every object of the candidate files and write a models "
+               "folder: --models' files plus point_scorer.json (annotate, eval and the GUI then "
+               "use it)");
+  train->add_option("--candidates", l->candidates, "Candidate files (repeatable)")->required();
+  train->add_option("--models", l->models, "Model folder to copy (default resources/models)");
+  train->add_option("--out", l->out, "Models folder to write")->required();
+  addTrainingOptions(*train, l->training);
+  train->callback([l] {
+    const auto sets = readAll(l->candidates);
+    std::vector<const sagrid::CandidateSet*> all;
+    for (const auto& s : sets) all.push_back(&s);
+    sagrid::PointScorer scorer = sagrid::trainPointScorer(all, l->training);
+    const fs::path from = l->models.empty() ? sagrid::defaultModelsDir() : fs::path(l->models);
+    std::error_code same;
+    if (!(fs::exists(l->out) && fs::equivalent(from, l->out, same)))
+      sagrid::model::copyModelFiles(from, l->out);
+    sagrid::writePointScorer(l->out, scorer);
+    std::fprintf(stderr, "scorer: %zu models, trained on %s -> %s\n", scorer.byModel.size(),
+                 scorer.trainedOn.c_str(), (fs::path(l->out) / sagrid::kPointScorerFile).c_str());
+  });
+}
+
+}  // namespace
+
+SAGRID_REGISTER_COMMAND("scorer", setupScorer);

@@ -1,0 +1,112 @@
+#include "core/annotate/point_scorer.h"
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include "core/common/atomic_file.h"
+#include "core/common/error.h"
+
+namespace sagrid {
+
+namespace {
+constexpr const char* kSchema = "sagrid.point_scorer/1";
+
+bool allFinite(const std::vector<float>& v) {
+  for (float x : v)
+    if (!std::isfinite(x)) return false;
+  return true;
+}
+}  // namespace
+
+const ModelPointScorer* PointScorer::forModel(const std::string& modelName) const {
+  const auto found = byModel.find(modelName);
+  return found == byModel.end() ? nullptr : &found->second;
+}
+
+std::vector<ExtractedPoint> scoredPoints(const ModelPointScorer& scorer,
+                                         const std::vector<PointCandidate>& candidates) {
+  std::vector<ExtractedPoint> out;
+  const auto p = candidateProbabilities(scorer.classifier, candidates);
+  for (std::size_t i : chooseCandidates(p, candidates, scorer.choice))
+    out.push_back({candidates[i].position, candidates[i].distance, p[i]});
+  return out;
+}
+
+nlohmann::json toJson(const PointScorer& scorer) {
+  nlohmann::json models = nlohmann::json::object();
+  for (const auto& [name, m] : scorer.byModel) {
+    models[name] = {{"mean", m.classifier.mean},
+                    {"scale", m.classifier.scale},
+                    {"weights", m.classifier.weights},
+                    {"bias", m.classifier.bias},
+                    {"keep_threshold", m.choice.keepThreshold},
+                    {"add_threshold", m.choice.addThreshold},
+                    {"nms_radius", m.choice.nmsRadius}};
+    if (m.classifier.trees) models[name]["trees"] = toJson(*m.classifier.trees);
+  }
+  return {{"schema", kSchema},
+          {"features", candidateFeatureNames()},
+          {"trained_on", scorer.trainedOn},
+          {"models", models}};
+}
+
+std::optional<PointScorer> readPointScorer(const std::filesystem::path& modelsDir) {
+  const auto file = modelsDir / kPointScorerFile;
+  if (!std::filesystem::exists(file)) return std::nullopt;
+  std::ifstream in(file);
+  std::stringstream text;
+  text << in.rdbuf();
+  PointScorer scorer;
+  try {
+    const auto j = nlohmann::json::parse(text.str());
+    if (j.value("schema", "") != kSchema)
+      throw FileError(file, "not a SAGrid point scorer (schema)");
+    if (j.at("features").get<std::vector<std::string>>() != candidateFeatureNames())
+      throw FileError(file, "reads other candidate features than this build computes: train it "
+                            "again (sagrid scorer train)");
+    scorer.trainedOn = j.value("trained_on", "");
+    const std::size_t d = candidateFeatureNames().size();
+    for (const auto& [name, m] : j.at("models").items()) {
+      ModelPointScorer s;
+      s.classifier.mean = m.at("mean").get<std::vector<float>>();
+      s.classifier.scale = m.at("scale").get<std::vector<float>>();
+      s.classifier.weights = m.at("weights").get<std::vector<float>>();
+      s.classifier.bias = m.at("bias").get<float>();
+      s.choice.keepThreshold = m.at("keep_threshold").get<float>();
+      s.choice.addThreshold = m.at("add_threshold").get<float>();
+      s.choice.nmsRadius = m.at("nms_radius").get<float>();
+      if (m.contains("trees")) {
+        try {
+          s.classifier.trees = boostedTreesFromJson(m.at("trees"));
+        } catch (const InvalidArgument& e) {
+          throw FileError(file, "model " + name + ": " + e.what());
+        }
+        if (s.classifier.trees->features != d)
+          throw FileError(file, "model " + name + ": its trees read " +
+                                    std::to_string(s.classifier.trees->features) + " features");
+      }
+      const auto& c = s.classifier;
+      if (c.mean.size() != d || c.scale.size() != d || c.weights.size() != d)
+        throw FileError(file, "model " + name + ": mean, scale and weights need " +
+                                  std::to_string(d) + " values each");
+      if (!allFinite(c.mean) || !allFinite(c.scale) || !allFinite(c.weights) ||
+          !std::isfinite(c.bias) || !std::isfinite(s.choice.keepThreshold) ||
+          !std::isfinite(s.choice.addThreshold) || !std::isfinite(s.choice.nmsRadius) ||
+          s.choice.nmsRadius < 0)
+        throw FileError(file, "model " + name + ": numbers must be finite (radius >= 0)");
+      for (float scale : c.scale)
+        if (scale <= 0) throw FileError(file, "model " + name + ": scales must be positive");
+      scorer.byModel[name] = s;
+    }
+  } catch (const nlohmann::json::exception& e) {
+    throw FileError(file, e.what());
+  }
+  return scorer;
+}
+
+void writePointScorer(const std::filesystem::path& modelsDir, const PointScorer& scorer) {
+  writeFileAtomic(modelsDir / kPointScorerFile, toJson(scorer).dump(2) + "\n");
+}
+
+}  // namespace sagrid

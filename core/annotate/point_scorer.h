@@ -1,0 +1,45 @@
+// The learned point decision (issue 40): per model, a classifier over the point candidates of
+// core/points/point_candidates.h (the passes' points, the field's minima, the mesh's small parts)
+// that decides which are affordance points and how many. It is a file of the models folder,
+// point_scorer.json, trained by `sagrid scorer train` on generated and curated real objects; where
+// it is present, annotate, eval and the GUI take its decision instead of the passes' points
+// (PassOptions::scorer). Without it, the passes' points stand.
+#pragma once
+
+#include <filesystem>
+#include <map>
+#include <optional>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "core/points/candidate_classifier.h"
+
+namespace sagrid {
+
+inline constexpr const char* kPointScorerFile = "point_scorer.json";
+
+struct ModelPointScorer {
+  CandidateClassifier classifier;
+  PointChoice choice;
+};
+
+struct PointScorer {
+  std::map<std::string, ModelPointScorer> byModel;  // model (card) name -> its decision
+  std::string trainedOn;                            // what it was trained on, for the record
+  // The decision for one model; nullptr where the scorer has none (its passes' points stand).
+  const ModelPointScorer* forModel(const std::string& modelName) const;
+};
+
+// The points of one model from its candidates: the chosen candidates, best first, with their
+// field distance and the classifier's probability as confidence.
+std::vector<ExtractedPoint> scoredPoints(const ModelPointScorer& scorer,
+                                         const std::vector<PointCandidate>& candidates);
+
+nlohmann::json toJson(const PointScorer& scorer);
+// Reads DIR/point_scorer.json; nullopt when absent. Throws FileError naming the file when it is
+// not a scorer, reads other candidate features than this build computes, or has bad numbers.
+std::optional<PointScorer> readPointScorer(const std::filesystem::path& modelsDir);
+void writePointScorer(const std::filesystem::path& modelsDir, const PointScorer& scorer);  // atomic
+
+}  // namespace sagrid

@@ -1,0 +1,38 @@
+// What the learned point decision learns from: per labelled object and model, the point candidates
+// (core/points/point_candidates.h) as `sagrid eval` saw them, with their surface points, the
+// passes' points and the ground truth, so that fitting and leave-one-source-out evaluation of the
+// decision (core/eval/point_scorer_training.h) run without the networks. Saved as JSON
+// (`sagrid scorer candidates`).
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+#include <nlohmann/json.hpp>
+
+#include "core/points/point_candidates.h"
+
+namespace sagrid {
+
+struct CandidateSet {
+  std::string object, source, model;
+  bool generated = false;     // a generated object (labels from the generator)
+  double metersPerUnit = 1;   // of the mesh file's units
+  std::vector<PointCandidate> candidates;
+  std::vector<Eigen::Vector3f> candidateSurface;  // per candidate, on the surface (file frame)
+  std::vector<Eigen::Vector3f> keptSurface;       // the passes' points, best first (file frame)
+  std::vector<Eigen::Vector3f> truth;             // ground truth (file frame)
+};
+
+// Per candidate of `set`, whether it is the nearest candidate to a ground-truth point within
+// `radiusMeters` of it (the radius within which a point needs no drag, kMatchRadiusMeters).
+std::vector<bool> candidateLabels(const CandidateSet& set, double radiusMeters);
+
+nlohmann::json toJson(const std::vector<CandidateSet>& sets);
+// Throws FileError naming `file` when it is not a candidate file of this build's features.
+std::vector<CandidateSet> readCandidateSets(const std::filesystem::path& file);
+void writeCandidateSets(const std::filesystem::path& file, const std::vector<CandidateSet>& sets);
+
+}  // namespace sagrid

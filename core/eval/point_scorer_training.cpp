@@ -1,0 +1,272 @@
+#include "core/eval/point_scorer_training.h"
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <map>
+#include <optional>
+#include <set>
+#include <sstream>
+
+#include "core/common/error.h"
+#include "core/eval/metrics.h"
+#include "core/eval/report_cell.h"
+
+namespace sagrid {
+
+namespace {
+
+using Chooser = std::function<std::vector<Eigen::Vector3f>(const CandidateSet&)>;
+
+float objectWeight(const CandidateSet& set, const ScorerTrainingOptions& options) {
+  return set.generated ? 1.0f : options.realWeight;
+}
+
+std::vector<Eigen::Vector3f> chosenSurface(const CandidateSet& set,
+                                           const std::vector<float>& probability,
+                                           const PointChoice& choice) {
+  std::vector<Eigen::Vector3f> out;
+  for (std::size_t i : chooseCandidates(probability, set.candidates, choice))
+    out.push_back(set.candidateSurface[i]);
+  return out;
+}
+
+// The scorer's points where it has a decision for the set's model and the set has candidates,
+// else the passes' points.
+Chooser scorerChooser(const PointScorer& scorer) {
+  return [&scorer](const CandidateSet& set) {
+    const ModelPointScorer* s = scorer.forModel(set.model);
+    return s && !set.candidates.empty()
+               ? chosenSurface(set, candidateProbabilities(s->classifier, set.candidates), s->choice)
+               : set.keptSurface;
+  };
+}
+
+PointEdits editsOf(const CandidateSet& set, const std::vector<Eigen::Vector3f>& chosen) {
+  return pointEdits(matchPoints(chosen, set.truth, set.metersPerUnit));
+}
+
+PointChoiceFigures figuresOf(const std::vector<const CandidateSet*>& sets, const Chooser& choose) {
+  PointChoiceFigures f;
+  std::map<std::string, PointEdits> byObject;
+  double errorSum = 0;
+  for (const CandidateSet* set : sets) {
+    const auto chosen = choose(*set);
+    const PointEdits e = editsOf(*set, chosen);
+    byObject[set->source + "/" + set->object] += e;
+    f.edits += e;
+    if (!set->truth.empty() && !chosen.empty()) {
+      errorSum += nearestDistance(chosen.front(), set->truth, set->metersPerUnit);
+      ++f.singleErrors;
+    }
+  }
+  CuratorEffortAccumulator effort;
+  for (const auto& [object, e] : byObject) effort.addObject(e);
+  f.effort = effort.result();
+  f.singleError = f.singleErrors ? errorSum / static_cast<double>(f.singleErrors) : NAN;
+  return f;
+}
+
+ModelPointScorer fitModel(const std::vector<const CandidateSet*>& sets,
+                          const ScorerTrainingOptions& options) {
+  std::vector<std::vector<float>> rows;
+  std::vector<bool> positive;
+  std::vector<float> weight;
+  for (const CandidateSet* set : sets) {
+    const auto labels = candidateLabels(*set, kMatchRadiusMeters);
+    for (std::size_t c = 0; c < set->candidates.size(); ++c) {
+      rows.push_back(set->candidates[c].features);
+      positive.push_back(labels[c]);
+      weight.push_back(objectWeight(*set, options));
+    }
+  }
+  ModelPointScorer best;
+  best.classifier = fitCandidateClassifier(rows, positive, weight, options.ridge);
+  if (options.trees) best.classifier.trees = fitBoostedTrees(rows, positive, weight, options.boosting);
+  std::vector<std::vector<float>> probabilities;
+  for (const CandidateSet* set : sets)
+    probabilities.push_back(candidateProbabilities(best.classifier, set->candidates));
+  const bool anyReal =
+      std::any_of(sets.begin(), sets.end(), [](const CandidateSet* s) { return !s->generated; });
+  double bestCost = INFINITY;
+  for (float radius : options.nmsRadii)
+    for (float keep : options.keepThresholds)
+      for (float add : options.addThresholds) {
+        const PointChoice choice{keep, add, radius};
+        double cost = 0;
+        for (std::size_t i = 0; i < sets.size(); ++i)
+          if (!sets[i]->candidates.empty() && !(options.chooseOnReal && sets[i]->generated && anyReal))
+            cost += objectWeight(*sets[i], options) *
+                    editsOf(*sets[i], chosenSurface(*sets[i], probabilities[i], choice)).total();
+        if (cost < bestCost) {
+          bestCost = cost;
+          best.choice = choice;
+        }
+      }
+  return best;
+}
+
+}  // namespace
+
+PointScorer trainPointScorer(const std::vector<const CandidateSet*>& sets,
+                             const ScorerTrainingOptions& options) {
+  std::map<std::string, std::vector<const CandidateSet*>> byModel;
+  for (const CandidateSet* set : sets) byModel[set->model].push_back(set);
+  PointScorer scorer;
+  for (const auto& [model, modelSets] : byModel) {
+    bool hasPoint = false, hasOther = false;
+    for (const CandidateSet* set : modelSets)
+      for (bool label : candidateLabels(*set, kMatchRadiusMeters)) (label ? hasPoint : hasOther) = true;
+    if (hasPoint && hasOther) scorer.byModel[model] = fitModel(modelSets, options);
+  }
+  if (scorer.byModel.empty())
+    throw InvalidArgument("point scorer: no model has candidates that are points and others");
+  std::set<std::string> sources;
+  std::size_t generated = 0;
+  for (const CandidateSet* set : sets)
+    if (set->generated)
+      ++generated;
+    else
+      sources.insert(set->source);
+  std::ostringstream on;
+  on << sets.size() << " candidate sets (" << generated << " generated) from " << sources.size()
+     << " real sources";
+  scorer.trainedOn = on.str();
+  return scorer;
+}
+
+ScorerCrossValidation crossValidatePointScorer(const std::vector<CandidateSet>& sets,
+                                               const ScorerTrainingOptions& options) {
+  std::vector<const CandidateSet*> generated;
+  std::map<std::string, std::vector<const CandidateSet*>> realBySource;
+  std::set<std::string> generatedObjects, realObjects;
+  for (const auto& set : sets) {
+    if (set.generated) {
+      generated.push_back(&set);
+      generatedObjects.insert(set.source + "/" + set.object);
+    } else {
+      realBySource[set.source].push_back(&set);
+      realObjects.insert(set.source + "/" + set.object);
+    }
+  }
+  if (realBySource.size() < 2)
+    throw InvalidArgument("point scorer cross-validation needs curated real objects of two "
+                          "sources or more, got " + std::to_string(realBySource.size()));
+  ScorerCrossValidation cv;
+  cv.generatedObjects = generatedObjects.size();
+  cv.realObjects = realObjects.size();
+  std::optional<PointScorer> generatedOnly;
+  if (!generated.empty()) generatedOnly = trainPointScorer(generated, options);
+  const Chooser passes = [](const CandidateSet& set) { return set.keptSurface; };
+  std::vector<const CandidateSet*> allReal;
+  std::size_t truthPoints = 0, reached = 0;
+  for (const auto& [source, held] : realBySource) {
+    std::vector<const CandidateSet*> training = generated;
+    for (const auto& [other, otherSets] : realBySource)
+      if (other != source) training.insert(training.end(), otherSets.begin(), otherSets.end());
+    const PointScorer withCurated = trainPointScorer(training, options);
+    ScorerSourceFold fold;
+    fold.source = source;
+    fold.passes = figuresOf(held, passes);
+    fold.generatedOnly = generatedOnly ? figuresOf(held, scorerChooser(*generatedOnly)) : fold.passes;
+    fold.withCurated = figuresOf(held, scorerChooser(withCurated));
+    fold.objects = fold.passes.effort.objects;
+    cv.folds.push_back(fold);
+    allReal.insert(allReal.end(), held.begin(), held.end());
+    for (const CandidateSet* set : held)
+      for (const auto& t : set->truth) {
+        ++truthPoints;
+        for (const auto& s : set->candidateSurface)
+          if ((s - t).norm() * set->metersPerUnit <= kMatchRadiusMeters) {
+            ++reached;
+            break;
+          }
+      }
+  }
+  // Totals over every held-out object: each fold's decision on its own objects.
+  auto total = [&](PointChoiceFigures ScorerSourceFold::*arm) {
+    PointChoiceFigures t;
+    CuratorEffortAccumulator effort;
+    double errorSum = 0;
+    for (const auto& fold : cv.folds) {
+      const PointChoiceFigures& f = fold.*arm;
+      t.edits += f.edits;
+      errorSum += f.singleError * static_cast<double>(f.singleErrors);
+      t.singleErrors += f.singleErrors;
+      // Objects' one-key shares and edits add up by object count.
+      t.effort.objects += f.effort.objects;
+      t.effort.editsPerObject += f.effort.editsPerObject * f.effort.objects;
+      t.effort.handPointsPerObject += f.effort.handPointsPerObject * f.effort.objects;
+      t.effort.oneKeyShare += f.effort.oneKeyShare * f.effort.objects;
+    }
+    const double n = std::max<std::size_t>(t.effort.objects, 1);
+    t.effort.editsPerObject /= n;
+    t.effort.handPointsPerObject /= n;
+    t.effort.oneKeyShare /= n;
+    t.singleError = t.singleErrors ? errorSum / static_cast<double>(t.singleErrors) : NAN;
+    return t;
+  };
+  cv.passes = total(&ScorerSourceFold::passes);
+  cv.generatedOnly = total(&ScorerSourceFold::generatedOnly);
+  cv.withCurated = total(&ScorerSourceFold::withCurated);
+  cv.candidateRecall = truthPoints ? static_cast<double>(reached) / truthPoints : NAN;
+  return cv;
+}
+
+namespace {
+double editRatio(const PointChoiceFigures& f) {
+  return f.edits.handPoints ? static_cast<double>(f.edits.total()) / f.edits.handPoints : NAN;
+}
+std::string cells(const PointChoiceFigures& f) {
+  return reportCell(editRatio(f), "%.2f") + " | " + reportCell(100 * f.effort.oneKeyShare, "%.0f %%") +
+         " | " + reportCell(100 * f.singleError, "%.1f");
+}
+nlohmann::json figuresJson(const PointChoiceFigures& f) {
+  return {{"objects", f.effort.objects},
+          {"edits", f.edits.total()},
+          {"hand_points", f.edits.handPoints},
+          {"edits_per_hand_point", editRatio(f)},
+          {"one_key_share", f.effort.oneKeyShare},
+          {"single_error_m", f.singleError}};
+}
+}  // namespace
+
+std::string scorerCrossValidationMarkdown(const ScorerCrossValidation& cv) {
+  std::ostringstream md;
+  md << "# Learned point decision, leave one source out\n\n"
+     << cv.realObjects << " curated real objects in " << cv.folds.size() << " sources; "
+     << cv.generatedObjects << " generated objects always in training. Each source's objects are "
+     << "decided by a scorer fitted without them. Edits: per ground-truth point (placing every "
+     << "point by hand = 1). Single-point error: the best point's distance to the nearest true "
+     << "point, cm. Candidates reach " << reportCell(100 * cv.candidateRecall, "%.0f %%")
+     << " of the true points within 5 cm (the most any choice can get right).\n\n"
+     << "| source | objects | passes: edits | one key | error | generated only: edits | one key "
+        "| error | + curated of other sources: edits | one key | error |\n"
+     << "|---|---|---|---|---|---|---|---|---|---|---|\n";
+  for (const auto& f : cv.folds)
+    md << "| " << f.source << " | " << f.objects << " | " << cells(f.passes) << " | "
+       << cells(f.generatedOnly) << " | " << cells(f.withCurated) << " |\n";
+  md << "| **all** | " << cv.passes.effort.objects << " | " << cells(cv.passes) << " | "
+     << cells(cv.generatedOnly) << " | " << cells(cv.withCurated) << " |\n";
+  return md.str();
+}
+
+nlohmann::json toJson(const ScorerCrossValidation& cv) {
+  nlohmann::json folds = nlohmann::json::array();
+  for (const auto& f : cv.folds)
+    folds.push_back({{"source", f.source},
+                     {"objects", f.objects},
+                     {"passes", figuresJson(f.passes)},
+                     {"generated_only", figuresJson(f.generatedOnly)},
+                     {"with_curated", figuresJson(f.withCurated)}});
+  return {{"real_objects", cv.realObjects},
+          {"generated_objects", cv.generatedObjects},
+          {"candidate_recall", cv.candidateRecall},
+          {"folds", folds},
+          {"all",
+           {{"passes", figuresJson(cv.passes)},
+            {"generated_only", figuresJson(cv.generatedOnly)},
+            {"with_curated", figuresJson(cv.withCurated)}}}};
+}
+
+}  // namespace sagrid

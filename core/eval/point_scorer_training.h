@@ -1,0 +1,70 @@
+// Fitting the learned point decision (core/annotate/point_scorer.h) on candidate sets
+// (core/eval/candidate_sets.h) from generated and curated real objects, and measuring it leave one
+// source out: for each source of curated real objects (a wild-pool repository, a Sweet Home 3D
+// library, real-dev), a decision fitted on every other source (and on the generated objects) is
+// measured on that source's objects, beside the passes' points and beside a decision fitted on
+// generated objects alone. Figures are the curator's edits, the share right with one key and the
+// single-point error (the best point's distance to the nearest ground truth), as `sagrid eval`
+// counts them.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "core/annotate/point_scorer.h"
+#include "core/eval/candidate_sets.h"
+#include "core/eval/curator_effort.h"
+
+namespace sagrid {
+
+struct ScorerTrainingOptions {
+  // A curated real object's candidates weigh this many generated objects' (as the category
+  // classifier weighs curated objects, kCuratedCategoryWeight).
+  float realWeight = 3;
+  double ridge = 1.0;
+  bool chooseOnReal = false;  // the choice minimises the real objects' edits only (when any)
+  bool trees = false;  // boosted trees instead of the logistic regression
+  BoostingOptions boosting;
+  // The choice (core/points/candidate_classifier.h), per model the one of these that minimises
+  // the training objects' weighted edits (the first on ties: keep the passes' points, add none).
+  std::vector<float> keepThresholds = {0.0f, 0.1f, 0.2f, 0.3f, 0.4f, 0.5f, 0.6f};
+  std::vector<float> addThresholds = {1.01f, 0.9f, 0.8f, 0.7f, 0.6f, 0.5f, 0.4f, 0.3f};
+  std::vector<float> nmsRadii = {0.03f, 0.05f, 0.08f, 0.12f};
+};
+
+// One decision per model with both points and non-points among `sets`' candidates (other models
+// get none: their passes' points stand). Throws InvalidArgument when no model has.
+PointScorer trainPointScorer(const std::vector<const CandidateSet*>& sets,
+                             const ScorerTrainingOptions& options);
+
+// The figures of one way of choosing points over some objects.
+struct PointChoiceFigures {
+  CuratorEffort effort;
+  PointEdits edits;          // summed over the objects
+  double singleError = 0;    // metres, mean over (object, model) pairs with ground truth
+  std::size_t singleErrors = 0;
+};
+
+struct ScorerSourceFold {
+  std::string source;
+  std::size_t objects = 0;
+  PointChoiceFigures passes, generatedOnly, withCurated;
+};
+
+struct ScorerCrossValidation {
+  std::vector<ScorerSourceFold> folds;  // one per source of curated real objects
+  PointChoiceFigures passes, generatedOnly, withCurated;  // over every fold's objects
+  double candidateRecall = 0;  // share of ground-truth points with a candidate within 5 cm
+  std::size_t generatedObjects = 0, realObjects = 0;
+};
+
+// Throws InvalidArgument when fewer than two sources of real objects are in `sets`.
+ScorerCrossValidation crossValidatePointScorer(const std::vector<CandidateSet>& sets,
+                                               const ScorerTrainingOptions& options);
+
+std::string scorerCrossValidationMarkdown(const ScorerCrossValidation& cv);
+nlohmann::json toJson(const ScorerCrossValidation& cv);
+
+}  // namespace sagrid

@@ -1,0 +1,164 @@
+#include "core/points/boosted_trees.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+#include "core/common/error.h"
+
+namespace sagrid {
+
+namespace {
+
+double sigmoid(double z) { return 1.0 / (1.0 + std::exp(-std::clamp(z, -40.0, 40.0))); }
+
+struct Grower {
+  const std::vector<std::vector<float>>& rows;
+  const std::vector<double>& g;  // weighted gradient per row
+  const std::vector<double>& h;  // weighted hessian per row
+  const BoostingOptions& options;
+  std::vector<TreeNode> nodes;
+
+  double leafValue(double G, double H) const { return -G / (H + options.lambda); }
+  double gain(double G, double H) const { return G * G / (H + options.lambda); }
+
+  int grow(std::vector<std::size_t>& idx, int depth) {
+    double G = 0, H = 0;
+    for (std::size_t i : idx) G += g[i], H += h[i];
+    const int self = static_cast<int>(nodes.size());
+    nodes.push_back({});
+    nodes[self].value = static_cast<float>(leafValue(G, H));
+    if (depth >= options.depth || idx.size() < 2) return self;
+    const double parent = gain(G, H);
+    double bestGain = 1e-9;
+    int bestFeature = -1;
+    float bestThreshold = 0;
+    std::vector<std::size_t> order = idx;
+    const std::size_t d = rows[idx.front()].size();
+    for (std::size_t f = 0; f < d; ++f) {
+      std::sort(order.begin(), order.end(),
+                [&](std::size_t a, std::size_t b) { return rows[a][f] < rows[b][f]; });
+      double GL = 0, HL = 0;
+      for (std::size_t k = 0; k + 1 < order.size(); ++k) {
+        GL += g[order[k]];
+        HL += h[order[k]];
+        const float here = rows[order[k]][f], next = rows[order[k + 1]][f];
+        if (here == next) continue;
+        const double HR = H - HL;
+        if (HL < options.minLeafHessian || HR < options.minLeafHessian) continue;
+        const double split = gain(GL, HL) + gain(G - GL, HR) - parent;
+        if (split > bestGain) {
+          bestGain = split;
+          bestFeature = static_cast<int>(f);
+          bestThreshold = 0.5f * (here + next);
+        }
+      }
+    }
+    if (bestFeature < 0) return self;
+    std::vector<std::size_t> left, right;
+    for (std::size_t i : idx) (rows[i][bestFeature] < bestThreshold ? left : right).push_back(i);
+    const int l = grow(left, depth + 1);
+    const int r = grow(right, depth + 1);
+    nodes[self].feature = bestFeature;
+    nodes[self].threshold = bestThreshold;
+    nodes[self].left = l;
+    nodes[self].right = r;
+    return self;
+  }
+};
+
+float treeValue(const std::vector<TreeNode>& tree, const std::vector<float>& x) {
+  int n = 0;
+  while (tree[n].feature >= 0) n = x[tree[n].feature] < tree[n].threshold ? tree[n].left : tree[n].right;
+  return tree[n].value;
+}
+
+}  // namespace
+
+float BoostedTrees::score(const std::vector<float>& x) const {
+  if (x.size() != features)
+    throw InvalidArgument("boosted trees: " + std::to_string(x.size()) + " features, the trees read " +
+                          std::to_string(features));
+  float s = base;
+  for (const auto& tree : trees) s += treeValue(tree, x);
+  return s;
+}
+
+BoostedTrees fitBoostedTrees(const std::vector<std::vector<float>>& rows,
+                             const std::vector<bool>& positive, const std::vector<float>& weight,
+                             const BoostingOptions& options) {
+  if (rows.empty()) throw InvalidArgument("boosted trees: no rows to fit");
+  if (positive.size() != rows.size() || weight.size() != rows.size())
+    throw InvalidArgument("boosted trees: labels or weights do not match the rows");
+  const std::size_t n = rows.size();
+  double wPos = 0, wNeg = 0;
+  for (std::size_t r = 0; r < n; ++r) {
+    if (rows[r].size() != rows.front().size())
+      throw InvalidArgument("boosted trees: rows with different feature counts");
+    (positive[r] ? wPos : wNeg) += weight[r];
+  }
+  if (wPos <= 0 || wNeg <= 0) throw InvalidArgument("boosted trees: both classes need weight");
+  // Weights scaled to sum n, so the leaf ridge and minimum mean the same whatever their scale.
+  std::vector<double> w(n);
+  for (std::size_t r = 0; r < n; ++r) w[r] = weight[r] * static_cast<double>(n) / (wPos + wNeg);
+  BoostedTrees model;
+  model.features = rows.front().size();
+  model.base = static_cast<float>(std::log(wPos / wNeg));
+  std::vector<double> score(n, model.base), g(n), h(n);
+  std::vector<std::size_t> all(n);
+  std::iota(all.begin(), all.end(), 0);
+  for (int round = 0; round < options.rounds; ++round) {
+    for (std::size_t r = 0; r < n; ++r) {
+      const double p = sigmoid(score[r]);
+      g[r] = w[r] * (p - (positive[r] ? 1.0 : 0.0));
+      h[r] = w[r] * std::max(p * (1 - p), 1e-6);
+    }
+    Grower grower{rows, g, h, options, {}};
+    std::vector<std::size_t> idx = all;
+    grower.grow(idx, 0);
+    for (auto& node : grower.nodes) node.value *= options.learningRate;
+    for (std::size_t r = 0; r < n; ++r) score[r] += treeValue(grower.nodes, rows[r]);
+    model.trees.push_back(std::move(grower.nodes));
+  }
+  return model;
+}
+
+nlohmann::json toJson(const BoostedTrees& model) {
+  nlohmann::json trees = nlohmann::json::array();
+  for (const auto& tree : model.trees) {
+    nlohmann::json nodes = nlohmann::json::array();
+    for (const auto& n : tree) nodes.push_back({n.feature, n.threshold, n.left, n.right, n.value});
+    trees.push_back(nodes);
+  }
+  return {{"base", model.base}, {"features", model.features}, {"trees", trees}};
+}
+
+BoostedTrees boostedTreesFromJson(const nlohmann::json& j) {
+  BoostedTrees model;
+  model.base = j.at("base").get<float>();
+  model.features = j.at("features").get<std::size_t>();
+  if (!std::isfinite(model.base)) throw InvalidArgument("boosted trees: base is not finite");
+  for (const auto& t : j.at("trees")) {
+    std::vector<TreeNode> tree;
+    for (const auto& n : t)
+      tree.push_back({n.at(0).get<int>(), n.at(1).get<float>(), n.at(2).get<int>(),
+                      n.at(3).get<int>(), n.at(4).get<float>()});
+    const int size = static_cast<int>(tree.size());
+    if (size == 0) throw InvalidArgument("boosted trees: an empty tree");
+    for (int i = 0; i < size; ++i) {
+      const TreeNode& n = tree[i];
+      if (!std::isfinite(n.threshold) || !std::isfinite(n.value))
+        throw InvalidArgument("boosted trees: a number is not finite");
+      if (n.feature >= static_cast<int>(model.features))
+        throw InvalidArgument("boosted trees: a node reads feature " + std::to_string(n.feature) +
+                              " of " + std::to_string(model.features));
+      // Children come after their parent, so every walk ends at a leaf.
+      if (n.feature >= 0 && (n.left <= i || n.right <= i || n.left >= size || n.right >= size))
+        throw InvalidArgument("boosted trees: a node points outside its tree");
+    }
+    model.trees.push_back(std::move(tree));
+  }
+  return model;
+}
+
+}  // namespace sagrid

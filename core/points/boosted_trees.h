@@ -1,0 +1,44 @@
+// Gradient-boosted regression trees for a binary decision (logistic loss, Newton steps per leaf,
+// as XGBoost): small, depth-limited trees over a few tens of features, fitted on thousands of
+// weighted rows. The score is a log-odds; probability = sigmoid(score).
+#pragma once
+
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+namespace sagrid {
+
+struct TreeNode {
+  int feature = -1;      // -1: a leaf
+  float threshold = 0;   // x[feature] < threshold goes left
+  int left = -1, right = -1;
+  float value = 0;       // a leaf's log-odds step
+};
+
+struct BoostedTrees {
+  float base = 0;  // log-odds before the trees
+  std::vector<std::vector<TreeNode>> trees;
+  std::size_t features = 0;
+  float score(const std::vector<float>& x) const;  // log-odds
+};
+
+struct BoostingOptions {
+  int rounds = 100;
+  int depth = 3;
+  float learningRate = 0.1f;
+  float lambda = 1.0f;        // ridge on leaf values
+  float minLeafHessian = 1.0f;  // a leaf holds at least this much weighted p(1-p)
+};
+
+// Throws InvalidArgument for no rows, rows of different lengths or a class without weight.
+BoostedTrees fitBoostedTrees(const std::vector<std::vector<float>>& rows,
+                             const std::vector<bool>& positive, const std::vector<float>& weight,
+                             const BoostingOptions& options = {});
+
+nlohmann::json toJson(const BoostedTrees& trees);
+// Throws InvalidArgument naming what is wrong (a node pointing outside its tree, a feature out of
+// range, a number not finite).
+BoostedTrees boostedTreesFromJson(const nlohmann::json& j);
+
+}  // namespace sagrid

@@ -1,0 +1,208 @@
+#include "core/points/point_candidates.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "core/grid/voxel_grid.h"
+#include "core/points/repeated_parts.h"
+
+namespace sagrid {
+
+namespace {
+
+enum Feature {
+  kDistance,
+  kDistanceAboveBest,
+  kDistanceRank,
+  kBasinDepth,
+  kKept,
+  kFieldMinimum,
+  kPartCentroid,
+  kHeight,
+  kRadial,
+  kEdge,
+  kCentreLine,
+  kOnPart,
+  kPartSize,
+  kPartFlatness,
+  kPartRoundness,
+  kPartCopies,
+  kPartRoundFlat,
+  kKeptCount,
+  kNearestKept,
+  kCrowding,
+  kBestKept,
+  kFacingUp,
+  kSurfaceDepth,
+  kFeatureCount
+};
+
+// Basin depths and distances to other points are capped where they stop telling anything apart.
+constexpr float kDepthCap = 0.2f, kNearCap = 0.3f, kCrowdRadius = 0.08f;
+
+// The smallest predicted distance among occupied voxels within `reach` voxels of a point; the
+// field's largest where none is occupied there.
+class FieldLookup {
+ public:
+  explicit FieldLookup(const PredictedField& field)
+      : m_resolution(field.resolution),
+        m_dense(static_cast<std::size_t>(field.resolution) * field.resolution * field.resolution,
+                std::numeric_limits<float>::infinity()) {
+    for (std::size_t v = 0; v < field.voxels.size(); ++v) {
+      m_dense[linear(field.voxels[v])] = field.distances[v];
+      m_largest = std::max(m_largest, field.distances[v]);
+    }
+  }
+  float near(const Eigen::Vector3f& point, int reach) const {
+    const VoxelIndex c = voxelContaining(point, m_resolution);
+    float best = std::numeric_limits<float>::infinity();
+    for (int di = -reach; di <= reach; ++di)
+      for (int dj = -reach; dj <= reach; ++dj)
+        for (int dk = -reach; dk <= reach; ++dk) {
+          const VoxelIndex v{c.i + di, c.j + dj, c.k + dk};
+          if (v.i < 0 || v.j < 0 || v.k < 0 || v.i >= m_resolution || v.j >= m_resolution ||
+              v.k >= m_resolution)
+            continue;
+          best = std::min(best, m_dense[linear(v)]);
+        }
+    return std::isfinite(best) ? best : m_largest;
+  }
+
+ private:
+  std::size_t linear(const VoxelIndex& v) const {
+    return (static_cast<std::size_t>(v.i) * m_resolution + v.j) * m_resolution + v.k;
+  }
+  int m_resolution;
+  std::vector<float> m_dense;
+  float m_largest = 0;
+};
+
+struct Seed {
+  Eigen::Vector3f position;
+  bool kept = false, minimum = false, part = false;
+  float basinDepth = 0;
+};
+
+// Adds a seed, or merges it into an earlier one closer than `merge`.
+void addSeed(std::vector<Seed>& seeds, const Seed& seed, float merge) {
+  for (Seed& s : seeds)
+    if ((s.position - seed.position).norm() < merge) {
+      s.kept |= seed.kept;
+      s.minimum |= seed.minimum;
+      s.part |= seed.part;
+      s.basinDepth = std::max(s.basinDepth, seed.basinDepth);
+      return;
+    }
+  seeds.push_back(seed);
+}
+
+float share(float value, float lo, float hi) {
+  return hi > lo ? std::clamp((value - lo) / (hi - lo), 0.0f, 1.0f) : 0.5f;
+}
+
+}  // namespace
+
+const std::vector<std::string>& candidateFeatureNames() {
+  static const std::vector<std::string> names = {
+      "distance",       "distance_above_best", "distance_rank",  "basin_depth",
+      "kept",           "field_minimum",       "part_centroid",  "height",
+      "radial",         "edge",                "centre_line",    "on_part",
+      "part_size",      "part_flatness",       "part_roundness", "part_copies",
+      "part_round_flat", "kept_count",         "nearest_kept",   "crowding",
+      "best_kept",      "facing_up",           "surface_depth"};
+  return names;
+}
+
+std::vector<PointCandidate> pointCandidates(const PredictedField& field,
+                                            const std::vector<ExtractedPoint>& kept,
+                                            const std::vector<ConnectedPart>& parts,
+                                            const SurfaceContactAt& contact,
+                                            std::size_t maxMinima) {
+  if (field.voxels.empty() || field.voxels.size() != field.distances.size()) return {};
+  const FieldLookup lookup(field);
+  const float voxel = 1.0f / static_cast<float>(field.resolution);
+  const float merge = 1.5f * voxel;
+
+  std::vector<Seed> seeds;
+  for (const ExtractedPoint& p : kept) addSeed(seeds, {p.position, true, false, false, 0}, merge);
+  const auto minima = fieldMinima(field);
+  for (std::size_t i = 0; i < minima.size() && i < maxMinima; ++i)
+    addSeed(seeds,
+            {voxelCenter(field.voxels[minima[i].voxel], field.resolution), false, true, false,
+             std::min(minima[i].persistence, kDepthCap)},
+            merge);
+  for (const ConnectedPart& part : parts)
+    if (part.triangles >= kMinInstanceTriangles && isSmallPart(part, kSmallPartDiagonal))
+      addSeed(seeds, {part.centroid, false, false, true, 0}, merge);
+
+  Eigen::AlignedBox3f box;
+  float best = std::numeric_limits<float>::infinity();
+  for (std::size_t v = 0; v < field.voxels.size(); ++v) {
+    box.extend(voxelCenter(field.voxels[v], field.resolution));
+    best = std::min(best, field.distances[v]);
+  }
+  const Eigen::Vector3f centre = box.center(), half = box.sizes() / 2;
+  const float objectDiagonal = std::max(box.diagonal().norm(), voxel);
+  const PartCopies copies(parts, kCopyTolerance);
+
+  std::vector<PointCandidate> out(seeds.size());
+  for (std::size_t s = 0; s < seeds.size(); ++s) {
+    out[s].position = seeds[s].position;
+    out[s].distance = lookup.near(seeds[s].position, 1);
+    out[s].kept = seeds[s].kept;
+  }
+  std::vector<float> sorted;
+  for (const auto& c : out) sorted.push_back(c.distance);
+  std::sort(sorted.begin(), sorted.end());
+  for (std::size_t s = 0; s < seeds.size(); ++s) {
+    const Seed& seed = seeds[s];
+    const Eigen::Vector3f& p = seed.position;
+    std::vector<float> f(kFeatureCount, 0.0f);
+    f[kDistance] = out[s].distance;
+    f[kDistanceAboveBest] = out[s].distance - best;
+    const auto rank = std::lower_bound(sorted.begin(), sorted.end(), out[s].distance) - sorted.begin();
+    f[kDistanceRank] = sorted.size() > 1 ? static_cast<float>(rank) / (sorted.size() - 1) : 0;
+    f[kBasinDepth] = seed.basinDepth / kDepthCap;
+    f[kKept] = seed.kept;
+    f[kFieldMinimum] = seed.minimum;
+    f[kPartCentroid] = seed.part;
+    f[kHeight] = share(p.z(), box.min().z(), box.max().z());
+    const Eigen::Vector2f offset = (p - centre).head<2>();
+    f[kRadial] = std::min(offset.norm() / std::max(half.head<2>().norm(), voxel), 1.0f);
+    const float ex = std::abs(offset.x()) / std::max(half.x(), voxel);
+    const float ey = std::abs(offset.y()) / std::max(half.y(), voxel);
+    f[kEdge] = std::min(std::max(ex, ey), 1.0f);
+    f[kCentreLine] = std::min(std::min(ex, ey), 1.0f);
+    if (const auto on = partAt(p, parts, PartContact{}.touchVoxels * voxel, kSmallPartDiagonal)) {
+      const ConnectedPart& part = parts[*on];
+      const float largest = std::max(part.spread.x(), 1e-6f);
+      f[kOnPart] = 1;
+      f[kPartSize] = part.box.diagonal().norm() / objectDiagonal;
+      f[kPartFlatness] = part.spread.z() / largest;
+      f[kPartRoundness] = part.spread.y() / largest;
+      f[kPartCopies] = std::min(std::log1p(static_cast<float>(copies.of(*on).size())) /
+                                    std::log(9.0f), 1.0f);
+      f[kPartRoundFlat] = isRoundFlatPart(part);
+    }
+    f[kKeptCount] = std::log1p(static_cast<float>(kept.size())) / std::log(9.0f);
+    float nearestKept = kNearCap;
+    int crowd = 0;
+    for (std::size_t o = 0; o < seeds.size(); ++o) {
+      if (o == s) continue;
+      const float d = (seeds[o].position - p).norm();
+      if (seeds[o].kept) nearestKept = std::min(nearestKept, d);
+      if (d < kCrowdRadius && out[o].distance < out[s].distance) ++crowd;
+    }
+    f[kNearestKept] = nearestKept / kNearCap;
+    f[kCrowding] = std::min(crowd / 5.0f, 1.0f);
+    f[kBestKept] = !kept.empty() && (kept.front().position - p).norm() < merge;
+    const SurfaceContact surface = contact(p);
+    f[kFacingUp] = surface.normal.z();
+    f[kSurfaceDepth] = std::min(surface.depth / kNearCap, 1.0f);
+    out[s].features = std::move(f);
+  }
+  return out;
+}
+
+}  // namespace sagrid

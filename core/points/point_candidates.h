@@ -1,0 +1,50 @@
+// Candidates for a learned point decision (issue 40): every place one model's points could be,
+// described by numbers a small classifier can weigh. Candidates come from three places: the
+// points the automatic count and its passes kept, the minima of the model's field (with the depth
+// of their basin), and the small parts of the mesh (a knob, a burner's cap, a handle: connected
+// parts, at their centroid). Each carries the field there and around it, where it stands in the
+// object, the part it lies on (size, roundness, flatness, how many copies the part has) and the
+// company it keeps. Normalized frame (z up); no torch, no surface.
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "core/geometry/connected_parts.h"
+#include "core/points/point_extraction.h"
+
+namespace sagrid {
+
+struct PointCandidate {
+  Eigen::Vector3f position = Eigen::Vector3f::Zero();  // normalized frame
+  float distance = 0;                                  // the field there (normalized units)
+  bool kept = false;  // one of the points the automatic count and its passes kept
+  std::vector<float> features;                         // candidateFeatureNames() order
+};
+
+// The names of PointCandidate::features, in order (the scorer file records them, so a model
+// trained on other features is refused).
+const std::vector<std::string>& candidateFeatureNames();
+
+// Where a candidate meets the surface: the surface normal there (z up) and how far the candidate
+// lies from it (normalized units; a part's centroid lies inside it).
+struct SurfaceContact {
+  Eigen::Vector3f normal = Eigen::Vector3f::UnitZ();
+  float depth = 0;
+};
+using SurfaceContactAt = std::function<SurfaceContact(const Eigen::Vector3f&)>;
+
+// Candidates of one model on one object: `kept` the points its automatic count and passes kept
+// (best first), `parts` from normalizedParts, `contact` the surface near a normalized point. Candidates closer than a voxel to an earlier one are one
+// candidate (kept points first, then minima best first, then parts), with the sources of both.
+// At most `maxMinima` field minima. Empty for an empty field.
+std::vector<PointCandidate> pointCandidates(const PredictedField& field,
+                                            const std::vector<ExtractedPoint>& kept,
+                                            const std::vector<ConnectedPart>& parts,
+                                            const SurfaceContactAt& contact,
+                                            std::size_t maxMinima = 24);
+
+}  // namespace sagrid

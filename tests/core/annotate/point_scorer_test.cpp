@@ -1,0 +1,138 @@
+// The learned point decision's file in a models folder: read back, refused with its reason, and
+// applied by annotate to the models it decides for only.
+#include "core/annotate/point_scorer.h"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+#include "core/annotate/annotate.h"
+#include "core/annotate/model_set.h"
+#include "core/common/error.h"
+#include "core/dataset/dataset.h"
+#include "core/features/feature_grid.h"
+#include "core/generate/dataset_generator.h"
+#include "support/test_paths.h"
+#include "support/untrained_models.h"
+
+namespace sagrid {
+namespace {
+namespace fs = std::filesystem;
+
+// A decision that finds no candidate good enough: the best one alone.
+ModelPointScorer oneBest() {
+  ModelPointScorer s;
+  const std::size_t d = candidateFeatureNames().size();
+  s.classifier.mean.assign(d, 0);
+  s.classifier.scale.assign(d, 1);
+  s.classifier.weights.assign(d, 0);
+  s.classifier.weights[0] = -1;  // nearer the field's zero is better
+  s.classifier.bias = -10;
+  s.choice = {0.5f, 0.5f, 0.08f};
+  return s;
+}
+
+// A decision that takes every candidate.
+ModelPointScorer everyCandidate() {
+  ModelPointScorer s = oneBest();
+  s.classifier.bias = 10;
+  s.choice.nmsRadius = 0;
+  return s;
+}
+
+std::string messageOf(const fs::path& dir) {
+  try {
+    readPointScorer(dir);
+  } catch (const FileError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(PointScorerFile, ReadsBackWhatWasWrittenAndNamesWhatIsWrong) {
+  const fs::path dir = test::freshTempDir();
+  EXPECT_FALSE(readPointScorer(dir).has_value());  // no file: the passes' points stand
+  PointScorer scorer;
+  scorer.byModel["stove.togglebutton"] = oneBest();
+  scorer.trainedOn = "test";
+  writePointScorer(dir, scorer);
+  const auto back = readPointScorer(dir);
+  ASSERT_TRUE(back.has_value());
+  EXPECT_EQ(toJson(*back).dump(), toJson(scorer).dump());
+
+  auto j = toJson(scorer);
+  auto rewrite = [&](const nlohmann::json& bad) { std::ofstream(dir / kPointScorerFile) << bad.dump(); };
+  j["features"][1] = "renamed";
+  rewrite(j);
+  EXPECT_NE(messageOf(dir).find("other candidate features"), std::string::npos);
+  j = toJson(scorer);
+  j["models"]["stove.togglebutton"]["weights"][2] = nullptr;
+  rewrite(j);
+  EXPECT_NE(messageOf(dir).find(kPointScorerFile), std::string::npos);
+  j = toJson(scorer);
+  j["models"]["stove.togglebutton"]["scale"][0] = 0;
+  rewrite(j);
+  EXPECT_NE(messageOf(dir).find("scales must be positive"), std::string::npos);
+  j = toJson(scorer);
+  j["schema"] = "something/1";
+  rewrite(j);
+  EXPECT_NE(messageOf(dir).find("not a SAGrid point scorer"), std::string::npos);
+}
+
+class AnnotateWithScorer : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir = test::freshTempDir();
+    gen::generateDataset({{"stove", 1, 11}}, gen::MeshFormat::Glb, dir / "data");
+    entries = readDataset(dir / "data");
+    ASSERT_EQ(entries.size(), 1u);
+    annotate.features.views = 12;
+    features = extractFeatures(entries[0].mesh, annotate.features);
+  }
+  ModelSet models() const {
+    std::vector<model::AffordanceModel> m;
+    m.push_back(test::untrainedModelFor("stove.heatsource", features));
+    m.push_back(test::untrainedModelFor("stove.togglebutton", features));
+    return ModelSet(std::move(m));
+  }
+  std::vector<Eigen::Vector3f> pointsOf(const AnnotationResult& r, const std::string& type) {
+    std::vector<Eigen::Vector3f> out;
+    for (const auto* a : r.labels.ofType(type)) out.push_back(a->position);
+    return out;
+  }
+  fs::path dir;
+  std::vector<DatasetEntry> entries;
+  FeatureGrid features;
+  AnnotateOptions annotate;
+};
+
+TEST_F(AnnotateWithScorer, ItDecidesForItsModelsOnlyAndIsSwitchedOff) {
+  const ModelSet plain = models();
+  ModelSet scored = models();
+  PointScorer scorer;
+  scorer.byModel["stove.togglebutton"] = oneBest();
+  scored.setPointScorer(scorer, dir / kPointScorerFile);
+  annotate.category = "stove";
+  annotate.mode = InstanceMode::Auto;
+  const auto passes = annotateMeshFile(entries[0].mesh, "s", plain, annotate, dir / "a");
+  const auto decided = annotateMeshFile(entries[0].mesh, "s", scored, annotate, dir / "b");
+  EXPECT_EQ(pointsOf(decided, "togglebutton").size(), 1u);
+  ModelSet every = models();
+  PointScorer all;
+  all.byModel["stove.togglebutton"] = everyCandidate();
+  every.setPointScorer(all, dir / kPointScorerFile);
+  EXPECT_GT(pointsOf(annotateMeshFile(entries[0].mesh, "s", every, annotate, dir / "d"), "togglebutton").size(),
+            pointsOf(passes, "togglebutton").size());
+  EXPECT_EQ(pointsOf(decided, "heatsource"), pointsOf(passes, "heatsource"));
+  annotate.learnedDecision = false;
+  const auto off = annotateMeshFile(entries[0].mesh, "s", scored, annotate, dir / "c");
+  EXPECT_EQ(pointsOf(off, "togglebutton"), pointsOf(passes, "togglebutton"));
+
+  PointScorer stranger;
+  stranger.byModel["sink.fluidsource"] = oneBest();
+  ModelSet other = models();
+  EXPECT_THROW(other.setPointScorer(stranger, dir / kPointScorerFile), ModelError);
+}
+
+}  // namespace
+}  // namespace sagrid

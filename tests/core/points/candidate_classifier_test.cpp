@@ -1,0 +1,96 @@
+// The learned point decision's classifiers (logistic regression, boosted trees) and its choice
+// among candidates: known labels on synthetic candidates.
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "core/common/error.h"
+#include "core/points/boosted_trees.h"
+#include "core/points/candidate_classifier.h"
+
+namespace sagrid {
+namespace {
+
+// Rows of two features in [0, 1]; positive where `rule` says.
+struct Rows {
+  std::vector<std::vector<float>> x;
+  std::vector<bool> y;
+  std::vector<float> w;
+};
+template <class Rule>
+Rows rowsBy(Rule rule, int n, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<float> u(0.0f, 1.0f);
+  Rows r;
+  for (int i = 0; i < n; ++i) {
+    const float a = u(rng), b = u(rng);
+    r.x.push_back({a, b});
+    r.y.push_back(rule(a, b));
+    r.w.push_back(1.0f);
+  }
+  return r;
+}
+
+template <class Score>
+double accuracy(const Rows& r, Score score) {
+  int right = 0;
+  for (std::size_t i = 0; i < r.x.size(); ++i) right += (score(r.x[i]) >= 0.5) == r.y[i];
+  return static_cast<double>(right) / r.x.size();
+}
+
+TEST(CandidateClassifier, TheLogisticRegressionLearnsALinearRule) {
+  auto rule = [](float a, float b) { return a + 2 * b > 1.4f; };
+  const Rows train = rowsBy(rule, 600, 1), test = rowsBy(rule, 400, 2);
+  const CandidateClassifier c = fitCandidateClassifier(train.x, train.y, train.w, 0.01);
+  EXPECT_GT(accuracy(test, [&](const auto& x) { return c.probability(x); }), 0.95);
+  EXPECT_THROW(c.probability({0.5f}), InvalidArgument);
+}
+
+TEST(CandidateClassifier, BoostedTreesLearnWhatNoLineSeparates) {
+  // A checkerboard of two cells per side: no linear rule beats chance.
+  auto rule = [](float a, float b) { return (a < 0.5f) != (b < 0.5f); };
+  const Rows train = rowsBy(rule, 800, 3), test = rowsBy(rule, 400, 4);
+  const BoostedTrees trees = fitBoostedTrees(train.x, train.y, train.w);
+  auto treeProbability = [&](const auto& x) { return 1.0 / (1.0 + std::exp(-trees.score(x))); };
+  EXPECT_GT(accuracy(test, treeProbability), 0.95);
+  const CandidateClassifier line = fitCandidateClassifier(train.x, train.y, train.w);
+  EXPECT_LT(accuracy(test, [&](const auto& x) { return line.probability(x); }), 0.7);
+  // Saved and read back: the same scores.
+  const BoostedTrees again = boostedTreesFromJson(toJson(trees));
+  for (const auto& x : test.x) EXPECT_EQ(again.score(x), trees.score(x));
+}
+
+TEST(CandidateClassifier, BadTreesAndBadRowsAreRefusedWithTheirReason) {
+  nlohmann::json j = {{"base", 0}, {"features", 2}, {"trees", {{{0, 0.5, 0, 2, 0}, {-1, 0, -1, -1, 1}, {-1, 0, -1, -1, 2}}}}};
+  EXPECT_THROW(boostedTreesFromJson(j), InvalidArgument);  // a node pointing at itself: a loop
+  j["trees"][0][0] = {5, 0.5, 1, 2, 0};
+  EXPECT_THROW(boostedTreesFromJson(j), InvalidArgument);  // feature 5 of 2
+  j["trees"][0][0] = {0, 0.5, 1, 2, 0};
+  EXPECT_NO_THROW(boostedTreesFromJson(j));
+  EXPECT_THROW(fitCandidateClassifier({{0.0f}, {1.0f}}, {true, true}, {1, 1}), InvalidArgument);
+  EXPECT_THROW(fitBoostedTrees({}, {}, {}), InvalidArgument);
+  EXPECT_THROW(fitCandidateClassifier({{0.0f}, {1.0f, 2.0f}}, {true, false}, {1, 1}),
+               InvalidArgument);
+}
+
+PointCandidate candidateAt(float x, bool kept) {
+  return {Eigen::Vector3f(x, 0, 0), 0.0f, kept, {x}};
+}
+
+TEST(CandidateClassifier, TheChoiceKeepsAndAddsByItsTwoThresholdsAndSuppressesNeighbours) {
+  const std::vector<PointCandidate> c = {candidateAt(0.0f, true), candidateAt(0.02f, true),
+                                         candidateAt(0.3f, false), candidateAt(0.31f, false),
+                                         candidateAt(0.6f, false)};
+  const std::vector<float> p = {0.35f, 0.3f, 0.9f, 0.8f, 0.45f};
+  // Kept points stay from 0.3 up and stand beside each other; others join from 0.5, the one
+  // beside a better one is suppressed; 0.45 is too little to join.
+  EXPECT_EQ(chooseCandidates(p, c, {0.3f, 0.5f, 0.05f}), (std::vector<std::size_t>{2, 0, 1}));
+  // The passes' points as they are: keep every kept point, add nothing.
+  EXPECT_EQ(chooseCandidates(p, c, {0.0f, 1.01f, 0.05f}), (std::vector<std::size_t>{0, 1}));
+  // Nothing reaches its threshold: the best alone.
+  EXPECT_EQ(chooseCandidates(p, c, {0.99f, 0.99f, 0.05f}), (std::vector<std::size_t>{2}));
+  EXPECT_TRUE(chooseCandidates({}, {}, {}).empty());
+}
+
+}  // namespace
+}  // namespace sagrid

@@ -1,0 +1,75 @@
+// Point candidates of the learned decision: where they come from and what they carry.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "core/points/point_candidates.h"
+#include "support/synthetic_fields.h"
+
+namespace sagrid {
+namespace {
+
+using test::onPlate;
+
+float feature(const PointCandidate& c, const std::string& name) {
+  const auto& names = candidateFeatureNames();
+  return c.features.at(std::find(names.begin(), names.end(), name) - names.begin());
+}
+
+const PointCandidate* candidateNear(const std::vector<PointCandidate>& candidates,
+                                    const Eigen::Vector3f& p) {
+  for (const auto& c : candidates)
+    if ((c.position - p).norm() < 1.5f / test::kPlateResolution) return &c;
+  return nullptr;
+}
+
+SurfaceContact facingUp(const Eigen::Vector3f&) { return {Eigen::Vector3f::UnitZ(), 0.0f}; }
+
+TEST(PointCandidates, KeptPointsFieldMinimaAndSmallPartsAreCandidates) {
+  // Two basins, the second shallower; the count kept the first; a small part stands elsewhere.
+  const Eigen::Vector3f a = onPlate(6, 10), b = onPlate(26, 10), knob = onPlate(16, 24);
+  const PredictedField field = test::plateFieldWithOffsets({a, b}, {0.0f, 0.05f});
+  ConnectedPart part;
+  part.triangles = 24;
+  part.centroid = knob;
+  part.box = Eigen::AlignedBox3f(knob - Eigen::Vector3f::Constant(0.02f),
+                                 knob + Eigen::Vector3f::Constant(0.02f));
+  part.spread = Eigen::Vector3f(0.01f, 0.01f, 0.004f);
+  const auto candidates =
+      pointCandidates(field, {test::pointOnField(field, a)}, {part}, facingUp);
+
+  const PointCandidate* atA = candidateNear(candidates, a);
+  const PointCandidate* atB = candidateNear(candidates, b);
+  const PointCandidate* atKnob = candidateNear(candidates, knob);
+  ASSERT_TRUE(atA && atB && atKnob);
+  EXPECT_TRUE(atA->kept);
+  EXPECT_FALSE(atB->kept);
+  EXPECT_EQ(feature(*atA, "kept"), 1.0f);
+  EXPECT_EQ(feature(*atA, "best_kept"), 1.0f);
+  EXPECT_EQ(feature(*atA, "field_minimum"), 1.0f);  // the kept point is the first minimum too
+  EXPECT_EQ(feature(*atB, "field_minimum"), 1.0f);
+  EXPECT_EQ(feature(*atKnob, "part_centroid"), 1.0f);
+  EXPECT_EQ(feature(*atKnob, "on_part"), 1.0f);
+  EXPECT_EQ(feature(*atA, "on_part"), 0.0f);
+  // The better basin has the smaller distance, rank 0; the other is above the best by its offset.
+  EXPECT_EQ(feature(*atA, "distance_rank"), 0.0f);
+  EXPECT_NEAR(feature(*atB, "distance_above_best"), 0.05f, 1.0f / test::kPlateResolution);
+  EXPECT_GT(feature(*atB, "basin_depth"), 0.0f);
+  for (const auto& c : candidates) {
+    ASSERT_EQ(c.features.size(), candidateFeatureNames().size());
+    EXPECT_EQ(feature(c, "facing_up"), 1.0f);
+    for (float f : c.features) EXPECT_TRUE(std::isfinite(f));
+  }
+  // No two candidates within a voxel of each other.
+  for (std::size_t i = 0; i < candidates.size(); ++i)
+    for (std::size_t j = i + 1; j < candidates.size(); ++j)
+      EXPECT_GE((candidates[i].position - candidates[j].position).norm(),
+                1.5f / test::kPlateResolution);
+}
+
+TEST(PointCandidates, AnEmptyFieldHasNone) {
+  EXPECT_TRUE(pointCandidates(PredictedField{}, {}, {}, facingUp).empty());
+}
+
+}  // namespace
+}  // namespace sagrid
