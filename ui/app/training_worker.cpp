@@ -133,6 +133,20 @@ void TrainingWorker::runCategoryClassifier(const TrainingRequest& request) {
   fs::create_directories(file.parent_path());
   candidate.save(file);
   logger()->info("{}; wrote {}", verdictLine, file.string());
+  // An adopted classifier decides the unreviewed objects' categories again (their points with
+  // them); a refused one changes nothing.
+  std::string requeued;
+  if (adopted && !request.requeue.empty() &&
+      fs::is_regular_file(request.outDir / kCategoryClassifierFile)) {
+    // The models out need the cards to predict with: those of the models in, where it has none.
+    for (const auto& entry : fs::directory_iterator(from))
+      if (entry.is_regular_file() && entry.path().filename() != kCategoryClassifierFile)
+        fs::copy_file(entry.path(), request.outDir / entry.path().filename(),
+                      fs::copy_options::skip_existing);
+    const RequeueCounts counts = predictQueueAgain(request, "", 0.95, 0.05);
+    requeued = "; " + std::to_string(counts.objects) + " unreviewed object(s) predicted again, " +
+               std::to_string(counts.recategorized) + " changed category";
+  }
   update([&](TrainingStatus& s) {
     s.fraction = 1.0f;
     s.phase = "done";
@@ -141,7 +155,7 @@ void TrainingWorker::runCategoryClassifier(const TrainingRequest& request) {
                  (missing.empty() ? std::string()
                                   : " (" + std::to_string(missing.size()) +
                                         " of its training folders are not on this machine)") +
-                 (adopted ? "; adopted" : "; refused: " + file.string());
+                 (adopted ? "; adopted" : "; refused: " + file.string()) + requeued;
   });
 }
 
@@ -210,24 +224,41 @@ void TrainingWorker::runPointModels(const TrainingRequest& request) {
     }
   }
 
+  const RequeueCounts counts = predictQueueAgain(request, request.category,
+                                                 double(types.size()) / steps, 1.0 / steps);
+  update([&](TrainingStatus& s) {
+    s.fraction = 1.0f;
+    s.phase = "done";
+    s.finished = std::to_string(types.size()) + " model(s) trained; " +
+                 std::to_string(counts.objects) + " unreviewed object(s) predicted again: " +
+                 std::to_string(counts.moved) + " of " + std::to_string(counts.compared) +
+                 " predicted points moved";
+  });
+  logger()->info("training loop: {} of {} predicted points moved", counts.moved, counts.compared);
+}
+
+TrainingWorker::RequeueCounts TrainingWorker::predictQueueAgain(const TrainingRequest& request,
+                                                                const std::string& category,
+                                                                double fractionFrom,
+                                                                double fractionSpan) {
   // Predict the queue again with the new models; reviewed objects keep what the curator decided.
   const ModelSet models = ModelSet::load(request.outDir);
-  std::size_t objects = 0, moved = 0, compared = 0;
+  RequeueCounts counts;
   for (std::size_t i = 0; i < request.requeue.size(); ++i) {
     if (m_cancel) throw Cancelled();
     const QueueEntry& entry = request.requeue[i];
     update([&](TrainingStatus& s) {
       s.phase = "predicting " + entry.mesh.parent_path().filename().string();
-      s.fraction =
-          float((double(types.size()) + double(i) / double(request.requeue.size())) / steps);
+      s.fraction = float(fractionFrom + fractionSpan * double(i) / double(request.requeue.size()));
     });
     if (entry.state != QueueState::Unreviewed) continue;
     ObjectLabels before;
     std::error_code ec;
     if (fs::exists(entry.labels, ec)) before = readLabels(entry.labels);
-    if (!before.object.category.empty() && before.object.category != request.category) continue;
+    if (!category.empty() && !before.object.category.empty() && before.object.category != category)
+      continue;
     AnnotateOptions options;
-    options.category = request.category;
+    options.category = category;  // empty: the classifier decides again
     options.features = models.featureOptions();
     AnnotationResult r = annotateMeshFile(
         entry.mesh, before.object.id.empty() ? entry.mesh.stem().string() : before.object.id,
@@ -241,26 +272,26 @@ void TrainingWorker::runPointModels(const TrainingRequest& request) {
     }();
     for (const auto& old : before.affordances) {
       if (old.status != AffordanceStatus::Predicted) continue;
-      ++compared;
+      ++counts.compared;
       bool stayed = false;
       for (const auto& now : r.labels.affordances)
         stayed |= now.type == old.type && (now.position - old.position).norm() <= tolerance;
-      if (!stayed) ++moved;
+      if (!stayed) ++counts.moved;
     }
     ObjectLabels updated = before.object.id.empty() ? r.labels : before;
     updated.affordances = r.labels.affordances;
-    if (updated.object.category.empty()) updated.object.category = request.category;
+    if (category.empty()) {
+      counts.recategorized += !before.object.category.empty() &&
+                              before.object.category != r.labels.object.category;
+      updated.object.category = r.labels.object.category;
+      updated.object.extra = r.labels.object.extra;  // the rejection and suggestion flags
+    } else if (updated.object.category.empty()) {
+      updated.object.category = category;
+    }
     writeLabels(entry.labels, updated);
-    ++objects;
+    ++counts.objects;
   }
-  update([&](TrainingStatus& s) {
-    s.fraction = 1.0f;
-    s.phase = "done";
-    s.finished = std::to_string(types.size()) + " model(s) trained; " + std::to_string(objects) +
-                 " unreviewed object(s) predicted again: " + std::to_string(moved) + " of " +
-                 std::to_string(compared) + " predicted points moved";
-  });
-  logger()->info("training loop: {} of {} predicted points moved", moved, compared);
+  return counts;
 }
 
 }  // namespace sagrid::ui

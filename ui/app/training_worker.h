@@ -66,6 +66,14 @@ class TrainingWorker {
   void run(TrainingRequest request);
   void runPointModels(const TrainingRequest& request);
   void runCategoryClassifier(const TrainingRequest& request);
+  struct RequeueCounts {
+    std::size_t objects = 0, moved = 0, compared = 0, recategorized = 0;
+  };
+  // Predicts the unreviewed objects of request.requeue again with the models in request.outDir:
+  // as `category` (objects of another category are left), or, empty, in the category the
+  // classifier decides. Progress from fractionFrom over fractionSpan.
+  RequeueCounts predictQueueAgain(const TrainingRequest& request, const std::string& category,
+                                  double fractionFrom, double fractionSpan);
   void update(const std::function<void(TrainingStatus&)>& change);
 
   std::thread m_thread;

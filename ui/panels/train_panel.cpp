@@ -55,6 +55,7 @@ void drawTrainPanel(Session& session, TrainingWorker& worker,
       request.outDir = modelsOut;
       request.initDir = initModels;
       request.heldOut = heldOut;
+      request.requeue = session.queue().entries();
       request.categoryClassifier = true;
       worker.start(std::move(request));
     }

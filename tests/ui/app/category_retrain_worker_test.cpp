@@ -14,6 +14,9 @@
 #include "core/common/atomic_file.h"
 #include "core/common/error.h"
 #include "core/generate/dataset_generator.h"
+#include "core/annotate/annotate.h"
+#include "core/dataset/dataset.h"
+#include "core/labels/labels.h"
 #include "support/test_paths.h"
 #include "ui/app/training_worker.h"
 
@@ -21,9 +24,11 @@ namespace sagrid::ui {
 namespace {
 namespace fs = std::filesystem;
 
-TrainingStatus retrain(const fs::path& dir, const fs::path& heldOut) {
+TrainingStatus retrain(const fs::path& dir, const fs::path& heldOut,
+                       std::vector<QueueEntry> requeue = {}) {
   TrainingWorker worker;
   TrainingRequest request;
+  request.requeue = std::move(requeue);
   request.dataset = dir / "curated";
   request.outDir = dir / "out";
   request.initDir = dir / "loaded";
@@ -98,8 +103,26 @@ TEST(CategoryRetrainWorker, AWorseRetrainingIsRefusedAndTheLoadedClassifierStays
   EXPECT_NE(line.find("\"adopted\":false"), std::string::npos) << line;
 }
 
+// The review queue: an unreviewed object labelled sink by the classifier before, and one the
+// curator accepted; their labels files.
+std::vector<QueueEntry> queueOf(const fs::path& dir) {
+  const fs::path mesh = readDataset(dir / "held-out").front().mesh;
+  std::vector<QueueEntry> queue;
+  for (QueueState state : {QueueState::Unreviewed, QueueState::Accepted}) {
+    const fs::path labels = dir / "queue" / toString(state) / "labels.json";
+    fs::create_directories(labels.parent_path());
+    ObjectLabels l;
+    l.object.id = toString(state);
+    l.object.category = "sink";
+    writeLabels(labels, l);
+    queue.push_back({mesh, labels, state, {}, {}});
+  }
+  return queue;
+}
+
 // Loaded with a classifier of one gradient step, the curated retraining (2,000 steps) decides the
-// held-out objects better: adopted into the models folder written to.
+// held-out objects better: adopted into the models folder written to, and the unreviewed objects
+// of the queue are predicted again by it (the reviewed ones stay as the curator left them).
 TEST(CategoryRetrainWorker, ABetterRetrainingIsAdopted) {
   const fs::path dir = test::freshTempDir();
   generateFolders(dir);
@@ -112,11 +135,23 @@ TEST(CategoryRetrainWorker, ABetterRetrainingIsAdopted) {
                                       ModelSet::load(kShipped).featureOptions(), missing);
   saveLoaded(dir, oneStep, 2000);
   const std::string before = readFileBytes(dir / "loaded" / kCategoryClassifierFile);
+  const auto queue = queueOf(dir);
+  ASSERT_TRUE(fs::exists(queue[0].mesh)) << queue[0].mesh;
+  const std::string accepted = readFileBytes(queue[1].labels);
 
-  const TrainingStatus status = retrain(dir, dir / "held-out");
+  const TrainingStatus status = retrain(dir, dir / "held-out", queue);
   ASSERT_TRUE(status.error.empty()) << status.error;
   ASSERT_EQ(status.verdicts.size(), 1u);
   EXPECT_NE(status.verdicts[0].find(": adopted"), std::string::npos) << status.verdicts[0];
+  EXPECT_NE(status.finished.find("1 unreviewed object(s) predicted again"), std::string::npos)
+      << status.finished;
+  const ObjectLabels again = readLabels(queue[0].labels);
+  const ModelSet adopted = ModelSet::load(dir / "out");
+  AnnotateOptions decide;
+  decide.features = adopted.featureOptions();
+  EXPECT_EQ(again.object.category,
+            annotateMeshFile(queue[0].mesh, "check", adopted, decide, dir / "check").labels.object.category);
+  EXPECT_EQ(readFileBytes(queue[1].labels), accepted);
   EXPECT_EQ(readFileBytes(dir / "loaded" / kCategoryClassifierFile), before);
   ASSERT_TRUE(fs::exists(dir / "out" / kCategoryClassifierFile));
   EXPECT_FALSE(fs::exists(dir / "out" / "refused"));
