@@ -94,6 +94,7 @@ void setupScorer(CLI::App& root) {
     std::vector<std::string> candidates;
     std::string models, out;
     sagrid::ScorerTrainingOptions training;
+    sagrid::ScorerCurveOptions curve;
   };
   auto l = std::make_shared<LearnOptions>();
   auto* cv = cmd->add_subcommand(
@@ -102,9 +103,17 @@ void setupScorer(CLI::App& root) {
             "fitted with the curated objects of the other sources; writes OUT/scorer_cv.md, .json");
   cv->add_option("--candidates", l->candidates, "Candidate files (repeatable)")->required();
   cv->add_option("--out", l->out, "Report folder (default scorer-cv)");
+  cv->add_option("--ks", l->curve.ks,
+                 "Learning curve: fit with k curated objects of the other sources too, e.g. "
+                 "--ks 0 5 10 20");
+  cv->add_option("--seed", l->curve.seed, "Seed of the learning curve's draws (default 1)");
+  cv->add_option("--tuned-on", l->curve.tunedOn,
+                 "A source a pass or rule was made on (repeatable): the report also gives the "
+                 "figures without these sources");
   addTrainingOptions(*cv, l->training);
   cv->callback([l] {
-    const auto result = sagrid::crossValidatePointScorer(readAll(l->candidates), l->training);
+    const auto result =
+        sagrid::crossValidatePointScorer(readAll(l->candidates), l->training, l->curve);
     const fs::path out = l->out.empty() ? fs::path("scorer-cv") : fs::path(l->out);
     fs::create_directories(out);
     const std::string md = sagrid::scorerCrossValidationMarkdown(result);

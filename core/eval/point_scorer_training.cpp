@@ -5,6 +5,7 @@
 #include <functional>
 #include <map>
 #include <optional>
+#include <random>
 #include <set>
 #include <sstream>
 
@@ -136,7 +137,8 @@ PointScorer trainPointScorer(const std::vector<const CandidateSet*>& sets,
 }
 
 ScorerCrossValidation crossValidatePointScorer(const std::vector<CandidateSet>& sets,
-                                               const ScorerTrainingOptions& options) {
+                                               const ScorerTrainingOptions& options,
+                                               const ScorerCurveOptions& curveOptions) {
   std::vector<const CandidateSet*> generated;
   std::map<std::string, std::vector<const CandidateSet*>> realBySource;
   std::set<std::string> generatedObjects, realObjects;
@@ -153,17 +155,23 @@ ScorerCrossValidation crossValidatePointScorer(const std::vector<CandidateSet>& 
     throw InvalidArgument("point scorer cross-validation needs curated real objects of two "
                           "sources or more, got " + std::to_string(realBySource.size()));
   ScorerCrossValidation cv;
+  cv.tunedOn = curveOptions.tunedOn;
+  cv.ks = curveOptions.ks;
   cv.generatedObjects = generatedObjects.size();
   cv.realObjects = realObjects.size();
   std::optional<PointScorer> generatedOnly;
   if (!generated.empty()) generatedOnly = trainPointScorer(generated, options);
   const Chooser passes = [](const CandidateSet& set) { return set.keptSurface; };
-  std::vector<const CandidateSet*> allReal;
   std::size_t truthPoints = 0, reached = 0;
+  unsigned foldIndex = 0;
   for (const auto& [source, held] : realBySource) {
     std::vector<const CandidateSet*> training = generated;
+    std::map<std::string, std::vector<const CandidateSet*>> otherObjects;
     for (const auto& [other, otherSets] : realBySource)
-      if (other != source) training.insert(training.end(), otherSets.begin(), otherSets.end());
+      if (other != source) {
+        training.insert(training.end(), otherSets.begin(), otherSets.end());
+        for (const CandidateSet* set : otherSets) otherObjects[other + "/" + set->object].push_back(set);
+      }
     const PointScorer withCurated = trainPointScorer(training, options);
     ScorerSourceFold fold;
     fold.source = source;
@@ -171,8 +179,25 @@ ScorerCrossValidation crossValidatePointScorer(const std::vector<CandidateSet>& 
     fold.generatedOnly = generatedOnly ? figuresOf(held, scorerChooser(*generatedOnly)) : fold.passes;
     fold.withCurated = figuresOf(held, scorerChooser(withCurated));
     fold.objects = fold.passes.effort.objects;
+    // The learning curve: k objects of the other sources, drawn once per fold.
+    std::vector<std::string> order;
+    for (const auto& [object, objectSets] : otherObjects) order.push_back(object);
+    std::mt19937 rng(curveOptions.seed + foldIndex++);
+    std::shuffle(order.begin(), order.end(), rng);
+    for (std::size_t k : curveOptions.ks) {
+      std::vector<const CandidateSet*> some = generated;
+      for (std::size_t i = 0; i < std::min(k, order.size()); ++i)
+        some.insert(some.end(), otherObjects[order[i]].begin(), otherObjects[order[i]].end());
+      bool fits = false;
+      try {
+        const PointScorer scorer = trainPointScorer(some, options);
+        fold.curve.push_back(figuresOf(held, scorerChooser(scorer)));
+        fits = true;
+      } catch (const InvalidArgument&) {
+      }
+      if (!fits) fold.curve.push_back(fold.passes);  // nothing to fit on: the passes stand
+    }
     cv.folds.push_back(fold);
-    allReal.insert(allReal.end(), held.begin(), held.end());
     for (const CandidateSet* set : held)
       for (const auto& t : set->truth) {
         ++truthPoints;
@@ -184,14 +209,15 @@ ScorerCrossValidation crossValidatePointScorer(const std::vector<CandidateSet>& 
       }
   }
   // Totals over every held-out object: each fold's decision on its own objects.
-  auto total = [&](PointChoiceFigures ScorerSourceFold::*arm) {
+  using Arm = std::function<const PointChoiceFigures&(const ScorerSourceFold&)>;
+  auto total = [&](const Arm& arm, bool unseenOnly) {
     PointChoiceFigures t;
-    CuratorEffortAccumulator effort;
     double errorSum = 0;
     for (const auto& fold : cv.folds) {
-      const PointChoiceFigures& f = fold.*arm;
+      if (unseenOnly && std::count(cv.tunedOn.begin(), cv.tunedOn.end(), fold.source)) continue;
+      const PointChoiceFigures& f = arm(fold);
       t.edits += f.edits;
-      errorSum += f.singleError * static_cast<double>(f.singleErrors);
+      if (f.singleErrors) errorSum += f.singleError * static_cast<double>(f.singleErrors);
       t.singleErrors += f.singleErrors;
       // Objects' one-key shares and edits add up by object count.
       t.effort.objects += f.effort.objects;
@@ -206,9 +232,16 @@ ScorerCrossValidation crossValidatePointScorer(const std::vector<CandidateSet>& 
     t.singleError = t.singleErrors ? errorSum / static_cast<double>(t.singleErrors) : NAN;
     return t;
   };
-  cv.passes = total(&ScorerSourceFold::passes);
-  cv.generatedOnly = total(&ScorerSourceFold::generatedOnly);
-  cv.withCurated = total(&ScorerSourceFold::withCurated);
+  for (bool unseen : {false, true}) {
+    (unseen ? cv.unseenPasses : cv.passes) = total([](const auto& f) -> const auto& { return f.passes; }, unseen);
+    (unseen ? cv.unseenGeneratedOnly : cv.generatedOnly) =
+        total([](const auto& f) -> const auto& { return f.generatedOnly; }, unseen);
+    (unseen ? cv.unseenWithCurated : cv.withCurated) =
+        total([](const auto& f) -> const auto& { return f.withCurated; }, unseen);
+    for (std::size_t k = 0; k < cv.ks.size(); ++k)
+      (unseen ? cv.unseenCurve : cv.curve)
+          .push_back(total([k](const auto& f) -> const auto& { return f.curve[k]; }, unseen));
+  }
   cv.candidateRecall = truthPoints ? static_cast<double>(reached) / truthPoints : NAN;
   return cv;
 }
@@ -248,6 +281,22 @@ std::string scorerCrossValidationMarkdown(const ScorerCrossValidation& cv) {
        << cells(f.generatedOnly) << " | " << cells(f.withCurated) << " |\n";
   md << "| **all** | " << cv.passes.effort.objects << " | " << cells(cv.passes) << " | "
      << cells(cv.generatedOnly) << " | " << cells(cv.withCurated) << " |\n";
+  if (!cv.tunedOn.empty())
+    md << "| **sources no pass was made on** | " << cv.unseenPasses.effort.objects << " | "
+       << cells(cv.unseenPasses) << " | " << cells(cv.unseenGeneratedOnly) << " | "
+       << cells(cv.unseenWithCurated) << " |\n";
+  if (!cv.ks.empty()) {
+    md << "\n## Learning curve: k curated objects of the other sources in training\n\n"
+       << "Generated objects always in training; k objects drawn once per fold (k = 0: generated "
+          "only).\n\n| k | edits | one key | error |"
+       << (cv.tunedOn.empty() ? "" : " unseen sources: edits | one key | error |") << "\n|---|---|---|---|"
+       << (cv.tunedOn.empty() ? "" : "---|---|---|") << "\n";
+    for (std::size_t k = 0; k < cv.ks.size(); ++k) {
+      md << "| " << cv.ks[k] << " | " << cells(cv.curve[k]) << " |";
+      if (!cv.tunedOn.empty()) md << ' ' << cells(cv.unseenCurve[k]) << " |";
+      md << "\n";
+    }
+  }
   return md.str();
 }
 
@@ -259,7 +308,18 @@ nlohmann::json toJson(const ScorerCrossValidation& cv) {
                      {"passes", figuresJson(f.passes)},
                      {"generated_only", figuresJson(f.generatedOnly)},
                      {"with_curated", figuresJson(f.withCurated)}});
+  nlohmann::json curve = nlohmann::json::array();
+  for (std::size_t k = 0; k < cv.ks.size(); ++k)
+    curve.push_back({{"k", cv.ks[k]},
+                     {"all", figuresJson(cv.curve[k])},
+                     {"unseen", figuresJson(cv.unseenCurve[k])}});
   return {{"real_objects", cv.realObjects},
+          {"tuned_on", cv.tunedOn},
+          {"learning_curve", curve},
+          {"unseen",
+           {{"passes", figuresJson(cv.unseenPasses)},
+            {"generated_only", figuresJson(cv.unseenGeneratedOnly)},
+            {"with_curated", figuresJson(cv.unseenWithCurated)}}},
           {"generated_objects", cv.generatedObjects},
           {"candidate_recall", cv.candidateRecall},
           {"folds", folds},

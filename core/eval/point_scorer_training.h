@@ -51,18 +51,34 @@ struct ScorerSourceFold {
   std::string source;
   std::size_t objects = 0;
   PointChoiceFigures passes, generatedOnly, withCurated;
+  // Per ScorerCurveOptions::ks: fitted on the generated objects and k curated objects drawn from
+  // the other sources.
+  std::vector<PointChoiceFigures> curve;
+};
+
+struct ScorerCurveOptions {
+  std::vector<std::size_t> ks;  // curated objects of the other sources in training (learning curve)
+  unsigned seed = 1;            // of the draws
+  // Sources a pass or rule was made on: the report gives the figures without them too.
+  std::vector<std::string> tunedOn;
 };
 
 struct ScorerCrossValidation {
   std::vector<ScorerSourceFold> folds;  // one per source of curated real objects
   PointChoiceFigures passes, generatedOnly, withCurated;  // over every fold's objects
+  // The same over the folds of sources not in ScorerCurveOptions::tunedOn.
+  PointChoiceFigures unseenPasses, unseenGeneratedOnly, unseenWithCurated;
+  std::vector<std::string> tunedOn;
+  std::vector<std::size_t> ks;
+  std::vector<PointChoiceFigures> curve, unseenCurve;  // per k, over the folds
   double candidateRecall = 0;  // share of ground-truth points with a candidate within 5 cm
   std::size_t generatedObjects = 0, realObjects = 0;
 };
 
 // Throws InvalidArgument when fewer than two sources of real objects are in `sets`.
 ScorerCrossValidation crossValidatePointScorer(const std::vector<CandidateSet>& sets,
-                                               const ScorerTrainingOptions& options);
+                                               const ScorerTrainingOptions& options,
+                                               const ScorerCurveOptions& curve = {});
 
 std::string scorerCrossValidationMarkdown(const ScorerCrossValidation& cv);
 nlohmann::json toJson(const ScorerCrossValidation& cv);
