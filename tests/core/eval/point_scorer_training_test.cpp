@@ -103,6 +103,27 @@ TEST(PointScorerTraining, FoldsLeaveOneSourceOutAndAreReproducible) {
   EXPECT_THROW(crossValidatePointScorer({sets.front()}, {}), InvalidArgument);
 }
 
+TEST(PointScorerTraining, TheLearningCurveDrawsFromTheOtherSourcesAndTotalsLeaveTunedSourcesOut) {
+  const auto sets = syntheticSets(0.35f);
+  ScorerCurveOptions curve;
+  curve.ks = {0, 1000};  // none, and more than there are: every object of the other sources
+  curve.tunedOn = {"repo-a"};
+  const ScorerCrossValidation cv = crossValidatePointScorer(sets, {}, curve);
+  ASSERT_EQ(cv.curve.size(), 2u);
+  for (const auto& fold : cv.folds) {
+    ASSERT_EQ(fold.curve.size(), 2u);
+    EXPECT_EQ(fold.curve[0].edits.total(), fold.generatedOnly.edits.total()) << fold.source;
+    EXPECT_EQ(fold.curve[1].edits.total(), fold.withCurated.edits.total()) << fold.source;
+  }
+  EXPECT_EQ(cv.unseenPasses.effort.objects, 12u);  // repo-b and library-c
+  EXPECT_EQ(cv.passes.effort.objects, 18u);
+  std::size_t unseenEdits = 0;
+  for (const auto& fold : cv.folds)
+    if (fold.source != "repo-a") unseenEdits += fold.withCurated.edits.total();
+  EXPECT_EQ(cv.unseenWithCurated.edits.total(), unseenEdits);
+  EXPECT_NE(scorerCrossValidationMarkdown(cv).find("sources no pass was made on"), std::string::npos);
+}
+
 TEST(PointScorerTraining, EachFoldIsDecidedByAScorerFittedWithoutItsSource) {
   // Knobs and distractors overlap, so a scorer fitted with a fold's objects would decide them
   // differently from one fitted without.
