@@ -5,6 +5,8 @@
 #pragma once
 
 #include <optional>
+#include <string>
+#include <vector>
 
 namespace sagrid {
 
@@ -70,5 +72,16 @@ struct PassOptions {
   // `sagrid scorer` learns from.
   bool keepCandidates = false;
 };
+
+// The passes by name ("printed_marks", "mirror_pairs", "anchored_pairs", "repeated_parts",
+// "spout_controls", "spout_outlets", "part_ownership") with their switch, for files that record
+// which passes ran (a point scorer's candidates).
+struct NamedPass {
+  const char* name;
+  bool PassOptions::*on;
+};
+const std::vector<NamedPass>& namedPasses();
+// The names of the passes switched off in `passes`, in namedPasses() order.
+std::vector<std::string> passesOff(const PassOptions& passes);
 
 }  // namespace sagrid

@@ -50,6 +50,10 @@ ModelPrediction locateWithModel(const model::AffordanceModel& model, const Objec
 
 PassOptions withLearnedDecision(PassOptions passes, const ModelSet& models) {
   passes.scorer = passes.learnedDecision ? models.pointScorer() : nullptr;
+  if (passes.scorer)
+    for (const auto& name : passes.scorer->passesOff)
+      for (const auto& pass : namedPasses())
+        if (name == pass.name) passes.*pass.on = false;
   return passes;
 }
 

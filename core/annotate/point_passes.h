@@ -38,7 +38,8 @@ struct CategoryPoints {
 class ModelSet;
 
 // `passes` with `models`' learned point decision (ModelSet::pointScorer) when
-// passes.learnedDecision is on; without it, or off, no scorer.
+// passes.learnedDecision is on, and the passes it learned without switched off; without it, or
+// off, no scorer and the passes as given.
 PassOptions withLearnedDecision(PassOptions passes, const ModelSet& models);
 
 // Runs `models` (one category's, `category`) on `object`. `mode` is the instance mode; a type in

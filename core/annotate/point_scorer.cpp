@@ -1,9 +1,11 @@
 #include "core/annotate/point_scorer.h"
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <sstream>
 
+#include "core/annotate/pass_options.h"
 #include "core/common/atomic_file.h"
 #include "core/common/error.h"
 
@@ -48,6 +50,7 @@ nlohmann::json toJson(const PointScorer& scorer) {
   return {{"schema", kSchema},
           {"features", candidateFeatureNames()},
           {"trained_on", scorer.trainedOn},
+          {"passes_off", scorer.passesOff},
           {"models", models}};
 }
 
@@ -66,6 +69,11 @@ std::optional<PointScorer> readPointScorer(const std::filesystem::path& modelsDi
       throw FileError(file, "reads other candidate features than this build computes: train it "
                             "again (sagrid scorer train)");
     scorer.trainedOn = j.value("trained_on", "");
+    scorer.passesOff = j.value("passes_off", std::vector<std::string>{});
+    for (const auto& name : scorer.passesOff)
+      if (std::none_of(namedPasses().begin(), namedPasses().end(),
+                       [&](const NamedPass& p) { return name == p.name; }))
+        throw FileError(file, "passes_off names an unknown pass: " + name);
     const std::size_t d = candidateFeatureNames().size();
     for (const auto& [name, m] : j.at("models").items()) {
       ModelPointScorer s;

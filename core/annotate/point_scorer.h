@@ -27,6 +27,9 @@ struct ModelPointScorer {
 struct PointScorer {
   std::map<std::string, ModelPointScorer> byModel;  // model (card) name -> its decision
   std::string trainedOn;                            // what it was trained on, for the record
+  // The passes that were off when its candidates were made: off wherever it decides
+  // (withLearnedDecision), so it chooses among candidates of the kind it learned from.
+  std::vector<std::string> passesOff;
   // The decision for one model; nullptr where the scorer has none (its passes' points stand).
   const ModelPointScorer* forModel(const std::string& modelName) const;
 };

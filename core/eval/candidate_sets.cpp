@@ -67,7 +67,8 @@ nlohmann::json toJson(const std::vector<CandidateSet>& sets) {
                    {"kept_candidates", kept},
                    {"surface", pointsJson(s.candidateSurface)},
                    {"kept", pointsJson(s.keptSurface)},
-                   {"truth", pointsJson(s.truth)}});
+                   {"truth", pointsJson(s.truth)},
+                   {"passes_off", s.passesOff}});
   }
   return {{"schema", kSchema}, {"features", candidateFeatureNames()}, {"sets", all}};
 }
@@ -111,6 +112,7 @@ std::vector<CandidateSet> readCandidateSets(const std::filesystem::path& file) {
       }
       set.keptSurface = pointsFrom(s.at("kept"));
       set.truth = pointsFrom(s.at("truth"));
+      set.passesOff = s.value("passes_off", std::vector<std::string>{});
       out.push_back(std::move(set));
     }
   } catch (const nlohmann::json::exception& e) {

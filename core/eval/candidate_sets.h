@@ -24,6 +24,7 @@ struct CandidateSet {
   std::vector<Eigen::Vector3f> candidateSurface;  // per candidate, on the surface (file frame)
   std::vector<Eigen::Vector3f> keptSurface;       // the passes' points, best first (file frame)
   std::vector<Eigen::Vector3f> truth;             // ground truth (file frame)
+  std::vector<std::string> passesOff;  // the passes switched off when they were made (passesOff)
 };
 
 // Per candidate of `set`, whether it is the nearest candidate to a ground-truth point within

@@ -114,6 +114,12 @@ PointScorer trainPointScorer(const std::vector<const CandidateSet*>& sets,
   std::map<std::string, std::vector<const CandidateSet*>> byModel;
   for (const CandidateSet* set : sets) byModel[set->model].push_back(set);
   PointScorer scorer;
+  if (!sets.empty()) scorer.passesOff = sets.front()->passesOff;
+  for (const CandidateSet* set : sets)
+    if (set->passesOff != scorer.passesOff)
+      throw InvalidArgument("point scorer: candidates made with different passes (" + set->object +
+                            " of " + set->source + " differs from " + sets.front()->object +
+                            "): make them all with the same eval flags");
   for (const auto& [model, modelSets] : byModel) {
     bool hasPoint = false, hasOther = false;
     for (const CandidateSet* set : modelSets)

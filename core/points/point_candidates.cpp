@@ -40,6 +40,9 @@ enum Feature {
 
 // Basin depths and distances to other points are capped where they stop telling anything apart.
 constexpr float kDepthCap = 0.2f, kNearCap = 0.3f, kCrowdRadius = 0.08f;
+// Parts up to this box diagonal give candidates: larger than the passes' small parts
+// (kSmallPartDiagonal), as a range's burner grate can be.
+constexpr float kCandidatePartDiagonal = 0.35f;
 
 // The smallest predicted distance among occupied voxels within `reach` voxels of a point; the
 // field's largest where none is occupied there.
@@ -132,9 +135,14 @@ std::vector<PointCandidate> pointCandidates(const PredictedField& field,
             {voxelCenter(field.voxels[minima[i].voxel], field.resolution), false, true, false,
              std::min(minima[i].persistence, kDepthCap)},
             merge);
+  // A part's centroid (a knob, a handle) and the middle of its top (a burner's grate or ring,
+  // whose centroid may lie in the air between its bars).
   for (const ConnectedPart& part : parts)
-    if (part.triangles >= kMinInstanceTriangles && isSmallPart(part, kSmallPartDiagonal))
+    if (part.triangles >= kMinInstanceTriangles && isSmallPart(part, kCandidatePartDiagonal)) {
       addSeed(seeds, {part.centroid, false, false, true, 0}, merge);
+      const Eigen::Vector3f top(part.box.center().x(), part.box.center().y(), part.box.max().z());
+      addSeed(seeds, {top, false, false, true, 0}, merge);
+    }
 
   Eigen::AlignedBox3f box;
   float best = std::numeric_limits<float>::infinity();

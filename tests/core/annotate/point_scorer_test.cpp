@@ -8,6 +8,7 @@
 
 #include "core/annotate/annotate.h"
 #include "core/annotate/model_set.h"
+#include "core/annotate/point_passes.h"
 #include "core/common/error.h"
 #include "core/dataset/dataset.h"
 #include "core/features/feature_grid.h"
@@ -74,6 +75,10 @@ TEST(PointScorerFile, ReadsBackWhatWasWrittenAndNamesWhatIsWrong) {
   rewrite(j);
   EXPECT_NE(messageOf(dir).find("scales must be positive"), std::string::npos);
   j = toJson(scorer);
+  j["passes_off"] = {"mirror_pairs", "no_such_pass"};
+  rewrite(j);
+  EXPECT_NE(messageOf(dir).find("unknown pass: no_such_pass"), std::string::npos);
+  j = toJson(scorer);
   j["schema"] = "something/1";
   rewrite(j);
   EXPECT_NE(messageOf(dir).find("not a SAGrid point scorer"), std::string::npos);
@@ -127,6 +132,23 @@ TEST_F(AnnotateWithScorer, ItDecidesForItsModelsOnlyAndIsSwitchedOff) {
   annotate.learnedDecision = false;
   const auto off = annotateMeshFile(entries[0].mesh, "s", scored, annotate, dir / "c");
   EXPECT_EQ(pointsOf(off, "togglebutton"), pointsOf(passes, "togglebutton"));
+
+  // A scorer that learned from candidates made without some passes switches them off where it
+  // decides; without the scorer, or switched off, the passes stay as given.
+  PointScorer bare = scorer;
+  bare.passesOff = {"repeated_parts", "part_ownership"};
+  ModelSet learnedBare = models();
+  learnedBare.setPointScorer(bare, dir / kPointScorerFile);
+  PassOptions given;
+  const PassOptions used = withLearnedDecision(given, learnedBare);
+  EXPECT_FALSE(used.repeatedParts);
+  EXPECT_FALSE(used.partOwnership);
+  EXPECT_TRUE(used.mirrorPairs);
+  EXPECT_EQ(used.scorer, learnedBare.pointScorer());
+  given.learnedDecision = false;
+  EXPECT_TRUE(withLearnedDecision(given, learnedBare).repeatedParts);
+  EXPECT_EQ(withLearnedDecision(given, learnedBare).scorer, nullptr);
+  EXPECT_TRUE(withLearnedDecision(PassOptions{}, plain).repeatedParts);
 
   PointScorer stranger;
   stranger.byModel["sink.fluidsource"] = oneBest();

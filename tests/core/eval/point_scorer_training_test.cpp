@@ -84,6 +84,11 @@ TEST(PointScorerTraining, TheScorerFindsTheKnownPointsOfObjectsItWasNotFittedOn)
     for (const auto& p : points) EXPECT_LT(p.position.x(), 0.7f) << s.object;  // a knob
   }
   EXPECT_EQ(scorer.forModel("sink.fluidsource"), nullptr);
+  // Candidates made with other passes cannot train one scorer.
+  CandidateSet other = sets.front();
+  other.passesOff = {"repeated_parts"};
+  training.push_back(&other);
+  EXPECT_THROW(trainPointScorer(training, {}), InvalidArgument);
 }
 
 TEST(PointScorerTraining, FoldsLeaveOneSourceOutAndAreReproducible) {
