@@ -128,7 +128,8 @@ CategoryPoints predictCategoryPoints(const std::vector<const model::AffordanceMo
       const ModelPointScorer* scorer =
           passes.scorer ? passes.scorer->forModel(models[m]->card().name) : nullptr;
       if (scorer && !found.empty())
-        setPoints(p, scoredPoints(*scorer, found), features, scene, mesh.fileUp);
+        setPoints(p, scoredPoints(*scorer, found, models[m]->card().extraction), features, scene,
+                  mesh.fileUp);
       if (passes.keepCandidates) out.candidates.push_back(std::move(found));
     }
   return out;

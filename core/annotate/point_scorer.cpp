@@ -27,11 +27,13 @@ const ModelPointScorer* PointScorer::forModel(const std::string& modelName) cons
 }
 
 std::vector<ExtractedPoint> scoredPoints(const ModelPointScorer& scorer,
-                                         const std::vector<PointCandidate>& candidates) {
+                                         const std::vector<PointCandidate>& candidates,
+                                         const ExtractionSettings& extraction) {
   std::vector<ExtractedPoint> out;
   const auto p = candidateProbabilities(scorer.classifier, candidates);
   for (std::size_t i : chooseCandidates(p, candidates, scorer.choice))
-    out.push_back({candidates[i].position, candidates[i].distance, p[i]});
+    out.push_back({candidates[i].position, candidates[i].distance,
+                   confidenceOf(candidates[i].distance, extraction)});
   return out;
 }
 
@@ -114,7 +116,8 @@ std::optional<PointScorer> readPointScorer(const std::filesystem::path& modelsDi
 }
 
 void writePointScorer(const std::filesystem::path& modelsDir, const PointScorer& scorer) {
-  writeFileAtomic(modelsDir / kPointScorerFile, toJson(scorer).dump(2) + "\n");
+  // One line: the trees are thousands of small arrays.
+  writeFileAtomic(modelsDir / kPointScorerFile, toJson(scorer).dump() + "\n");
 }
 
 }  // namespace sagrid

@@ -34,10 +34,12 @@ struct PointScorer {
   const ModelPointScorer* forModel(const std::string& modelName) const;
 };
 
-// The points of one model from its candidates: the chosen candidates, best first, with their
-// field distance and the classifier's probability as confidence.
+// The points of one model from its candidates: the chosen candidates, most probable first, with
+// their field distance and its confidence under `extraction` (as the count's points have: the
+// category's evidence gate and the object confidence read them).
 std::vector<ExtractedPoint> scoredPoints(const ModelPointScorer& scorer,
-                                         const std::vector<PointCandidate>& candidates);
+                                         const std::vector<PointCandidate>& candidates,
+                                         const ExtractionSettings& extraction);
 
 nlohmann::json toJson(const PointScorer& scorer);
 // Reads DIR/point_scorer.json; nullopt when absent. Throws FileError naming the file when it is

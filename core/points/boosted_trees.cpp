@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <numeric>
 
 #include "core/common/error.h"
@@ -67,6 +69,13 @@ struct Grower {
   }
 };
 
+// A float written with the 7 significant digits a float holds, not the 17 of its double.
+double compact(float value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.7g", value);
+  return std::strtod(text, nullptr);
+}
+
 float treeValue(const std::vector<TreeNode>& tree, const std::vector<float>& x) {
   int n = 0;
   while (tree[n].feature >= 0) n = x[tree[n].feature] < tree[n].threshold ? tree[n].left : tree[n].right;
@@ -127,7 +136,8 @@ nlohmann::json toJson(const BoostedTrees& model) {
   nlohmann::json trees = nlohmann::json::array();
   for (const auto& tree : model.trees) {
     nlohmann::json nodes = nlohmann::json::array();
-    for (const auto& n : tree) nodes.push_back({n.feature, n.threshold, n.left, n.right, n.value});
+    for (const auto& n : tree)
+      nodes.push_back({n.feature, compact(n.threshold), n.left, n.right, compact(n.value)});
     trees.push_back(nodes);
   }
   return {{"base", model.base}, {"features", model.features}, {"trees", trees}};

@@ -62,7 +62,7 @@ std::size_t editsOn(const PointScorer& scorer, const std::vector<CandidateSet>& 
   for (const auto& s : sets) {
     if (s.source != source) continue;
     std::vector<Eigen::Vector3f> chosen;
-    for (const auto& p : scoredPoints(*scorer.forModel(s.model), s.candidates))
+    for (const auto& p : scoredPoints(*scorer.forModel(s.model), s.candidates, {}))
       chosen.push_back(p.position);
     edits += pointEdits(matchPoints(chosen, s.truth, s.metersPerUnit)).total();
   }
@@ -79,7 +79,7 @@ TEST(PointScorerTraining, TheScorerFindsTheKnownPointsOfObjectsItWasNotFittedOn)
   ASSERT_NE(decision, nullptr);
   for (const auto& s : sets) {
     if (s.source != "library-c") continue;
-    const auto points = scoredPoints(*decision, s.candidates);
+    const auto points = scoredPoints(*decision, s.candidates, {});
     ASSERT_EQ(points.size(), 3u) << s.object;
     for (const auto& p : points) EXPECT_LT(p.position.x(), 0.7f) << s.object;  // a knob
   }
