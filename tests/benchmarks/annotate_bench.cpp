@@ -77,7 +77,9 @@ BENCHMARK(BM_FourModelsAndExtraction)
 // texture pass (printed zones and symbols; this mesh has no texture, so it costs the scan), bit
 // 32 = the mirror-pair pass of the automatic count, bit 64 = the repeated-parts pass (the mesh's
 // connected parts and the copies of each toggle button's part), bit 128 = the part-ownership pass
-// (the part under every point of every type).
+// (the part under every point of every type), bit 256 = the learned point decision of the models
+// folder (point_scorer.json; the shipped one switches the passes off where it decides, so 511 is
+// what annotate runs by default with the shipped models, 255 the passes as before).
 void BM_AnnotateDenseEndToEnd(benchmark::State& state) {
   Fixture& f = fixture();
   const fs::path mesh = sagrid::bench::denseCopy(2);
@@ -92,6 +94,7 @@ void BM_AnnotateDenseEndToEnd(benchmark::State& state) {
   options.mirrorPairs = (additions & 32) != 0;
   options.repeatedParts = (additions & 64) != 0;
   options.partOwnership = (additions & 128) != 0;
+  options.learnedDecision = (additions & 256) != 0;
   const fs::path out = sagrid::bench::benchDir() / "annotate-out";
   for (auto _ : state)
     benchmark::DoNotOptimize(
@@ -101,7 +104,8 @@ void BM_AnnotateDenseEndToEnd(benchmark::State& state) {
       (additions & 2 ? ", category classified" : ", category given") +
       (additions & 4 ? ", 8 symmetries" : ", 1 copy") + (additions & 8 ? ", coarse-to-fine" : "") +
       (additions & 16 ? ", texture pass" : "") + (additions & 32 ? ", mirror pairs" : "") +
-      (additions & 64 ? ", repeated parts" : "") + (additions & 128 ? ", part ownership" : ""));
+      (additions & 64 ? ", repeated parts" : "") + (additions & 128 ? ", part ownership" : "") +
+      (additions & 256 ? ", learned point decision" : ""));
 }
 BENCHMARK(BM_AnnotateDenseEndToEnd)
     ->Arg(0)
@@ -119,6 +123,7 @@ BENCHMARK(BM_AnnotateDenseEndToEnd)
     ->Arg(127)
     ->Arg(128)
     ->Arg(255)
+    ->Arg(511)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime()
     ->Iterations(2);
