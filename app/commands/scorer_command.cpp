@@ -37,11 +37,10 @@ void addTrainingOptions(CLI::App& cmd, sagrid::ScorerTrainingOptions& o) {
       ->check(CLI::PositiveNumber);
   cmd.add_option("--ridge", o.ridge, "Ridge on the classifier's weights (default 1)")
       ->check(CLI::NonNegativeNumber);
-  cmd.add_flag("--choose-on-real", o.chooseOnReal,
-               "Fit the thresholds and radius on the curated real objects' edits only");
-  cmd.add_flag("--trees", o.trees, "Boosted trees instead of the logistic regression");
-  cmd.add_option("--rounds", o.boosting.rounds, "With --trees: boosting rounds (default 100)");
-  cmd.add_option("--depth", o.boosting.depth, "With --trees: tree depth (default 3)");
+  cmd.add_flag_callback("--logistic", [&o] { o.trees = false; },
+                        "A ridge logistic regression instead of boosted trees");
+  cmd.add_option("--rounds", o.boosting.rounds, "Boosting rounds (default 100)");
+  cmd.add_option("--depth", o.boosting.depth, "Tree depth (default 3)");
 }
 
 void setupScorer(CLI::App& root) {

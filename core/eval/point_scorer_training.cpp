@@ -87,8 +87,6 @@ ModelPointScorer fitModel(const std::vector<const CandidateSet*>& sets,
   std::vector<std::vector<float>> probabilities;
   for (const CandidateSet* set : sets)
     probabilities.push_back(candidateProbabilities(best.classifier, set->candidates));
-  const bool anyReal =
-      std::any_of(sets.begin(), sets.end(), [](const CandidateSet* s) { return !s->generated; });
   double bestCost = INFINITY;
   for (float radius : options.nmsRadii)
     for (float keep : options.keepThresholds)
@@ -96,7 +94,7 @@ ModelPointScorer fitModel(const std::vector<const CandidateSet*>& sets,
         const PointChoice choice{keep, add, radius};
         double cost = 0;
         for (std::size_t i = 0; i < sets.size(); ++i)
-          if (!sets[i]->candidates.empty() && !(options.chooseOnReal && sets[i]->generated && anyReal))
+          if (!sets[i]->candidates.empty())
             cost += objectWeight(*sets[i], options) *
                     editsOf(*sets[i], chosenSurface(*sets[i], probabilities[i], choice)).total();
         if (cost < bestCost) {

@@ -74,15 +74,21 @@ TEST(PointScorerTraining, TheScorerFindsTheKnownPointsOfObjectsItWasNotFittedOn)
   std::vector<const CandidateSet*> training;
   for (const auto& s : sets)
     if (s.source != "library-c") training.push_back(&s);
-  const PointScorer scorer = trainPointScorer(training, {});
-  const ModelPointScorer* decision = scorer.forModel("stove.togglebutton");
-  ASSERT_NE(decision, nullptr);
-  for (const auto& s : sets) {
-    if (s.source != "library-c") continue;
-    const auto points = scoredPoints(*decision, s.candidates, {});
-    ASSERT_EQ(points.size(), 3u) << s.object;
-    for (const auto& p : points) EXPECT_LT(p.position.x(), 0.7f) << s.object;  // a knob
+  for (bool trees : {true, false}) {
+    ScorerTrainingOptions options;
+    options.trees = trees;
+    const PointScorer scorer = trainPointScorer(training, options);
+    const ModelPointScorer* decision = scorer.forModel("stove.togglebutton");
+    ASSERT_NE(decision, nullptr);
+    EXPECT_EQ(decision->classifier.trees.has_value(), trees);
+    for (const auto& s : sets) {
+      if (s.source != "library-c") continue;
+      const auto points = scoredPoints(*decision, s.candidates, {});
+      ASSERT_EQ(points.size(), 3u) << s.object << (trees ? " (trees)" : " (logistic)");
+      for (const auto& p : points) EXPECT_LT(p.position.x(), 0.7f) << s.object;  // a knob
+    }
   }
+  const PointScorer scorer = trainPointScorer(training, {});
   EXPECT_EQ(scorer.forModel("sink.fluidsource"), nullptr);
   // Candidates made with other passes cannot train one scorer.
   CandidateSet other = sets.front();
