@@ -203,7 +203,7 @@ AnnotationResult annotateMeshFile(const fs::path& meshFile, const std::string& i
   r.predictions = std::move(points.predictions);
   const PrintedMarks& printed = points.printed;
   appendPredictedPoints(r.labels, r.predictions);
-  const double evidence = affordanceEvidence(r.predictions);
+  const double evidence = r.evidence = points.evidence;
   const auto* classifier = models.categoryClassifier();
   if (decided && classifier &&
       applyEvidenceGate(*decided, classifier->evidence, [evidence](const std::string&) {

@@ -99,6 +99,7 @@ struct AnnotationResult {
   // under closestCategory, but that category's models found too little of it.
   bool rejectedByEvidence = false;
   std::vector<ModelPrediction> predictions;
+  double evidence = 0;  // the category's evidence (CategoryPoints::evidence)
   double objectConfidence = 0;  // P(right with one key), see AnnotateOptions::confidence
   double importSeconds = 0, featureSeconds = 0, modelSeconds = 0;
 };

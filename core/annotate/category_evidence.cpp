@@ -17,9 +17,9 @@ double affordanceEvidence(const std::vector<ModelPrediction>& predictions) {
 double affordanceEvidence(const std::filesystem::path& meshFile, const std::string& category,
                           const ModelSet& models, AnnotateOptions options) {
   options.category = category;
-  const auto r =
-      annotateMeshFile(meshFile, meshFile.stem().string(), models, options, meshFile.parent_path());
-  return affordanceEvidence(r.predictions);
+  return annotateMeshFile(meshFile, meshFile.stem().string(), models, options,
+                          meshFile.parent_path())
+      .evidence;
 }
 
 CategoryDecision applyEvidenceGate(const CategoryDecision& decision, const EvidenceGate& gate,

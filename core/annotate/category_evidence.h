@@ -21,7 +21,8 @@ namespace sagrid {
 double affordanceEvidence(const std::vector<ModelPrediction>& predictions);
 
 // The evidence of `category` on a mesh: annotateMeshFile with that category given and `options`
-// otherwise (its up axis, feature cache, passes). Throws as annotateMeshFile does.
+// otherwise (its up axis, feature cache, passes): AnnotationResult::evidence, the count's best
+// point before a learned decision chooses. Throws as annotateMeshFile does.
 double affordanceEvidence(const std::filesystem::path& meshFile, const std::string& category,
                           const ModelSet& models, AnnotateOptions options);
 

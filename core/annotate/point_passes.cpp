@@ -3,6 +3,7 @@
 #include <future>
 
 #include "core/annotate/category_rules.h"
+#include "core/annotate/category_evidence.h"
 #include "core/annotate/coarse_to_fine.h"
 #include "core/annotate/mirror_pairs_pass.h"
 #include "core/annotate/model_set.h"
@@ -115,6 +116,7 @@ CategoryPoints predictCategoryPoints(const std::vector<const model::AffordanceMo
         applyRepeatedParts(out.predictions[m], parts, features, scene, mesh.fileUp,
                            models[m]->card().extraction, *rules.burnerCaps,
                            pointsOfOtherTypes(out.predictions, m));
+  out.evidence = affordanceEvidence(out.predictions);
   // The learned decision last: it chooses among the passes' points, the field's minima and the
   // small parts.
   if (candidates && mode == InstanceMode::Auto && counts.empty())

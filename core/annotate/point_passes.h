@@ -33,6 +33,9 @@ struct CategoryPoints {
   PrintedMarks printed;                      // what the texture pass found (empty when off)
   // Per model, its point candidates after the passes (PassOptions::keepCandidates; else empty).
   std::vector<std::vector<PointCandidate>> candidates;
+  // The category's evidence (category_evidence.h): the best point confidence of the count and its
+  // passes, before a learned decision chooses; the evidence gate was fitted on it.
+  double evidence = 0;
 };
 
 class ModelSet;

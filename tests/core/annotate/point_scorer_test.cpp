@@ -122,6 +122,9 @@ TEST_F(AnnotateWithScorer, ItDecidesForItsModelsOnlyAndIsSwitchedOff) {
   const auto passes = annotateMeshFile(entries[0].mesh, "s", plain, annotate, dir / "a");
   const auto decided = annotateMeshFile(entries[0].mesh, "s", scored, annotate, dir / "b");
   EXPECT_EQ(pointsOf(decided, "togglebutton").size(), 1u);
+  // The category's evidence is the count's, whatever the scorer chooses (the gate was fitted on it).
+  EXPECT_DOUBLE_EQ(decided.evidence, passes.evidence);
+  EXPECT_GT(passes.evidence, 0.0);
   ModelSet every = models();
   PointScorer all;
   all.byModel["stove.togglebutton"] = everyCandidate();
