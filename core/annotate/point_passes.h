@@ -1,7 +1,8 @@
 // The sequence that turns an object's features into the points of every model of its category:
 // per model the field (averaged over symmetric copies), the instances, the coarse-to-fine crop,
 // then the automatic count's passes (mirror pairs, repeated parts, spout outlets), the printed
-// marks, and across the models the part-ownership pass. `annotate` and
+// marks, across the models the part-ownership pass, and last, where the models folder has a point
+// scorer (core/annotate/point_scorer.h), its choice among the point candidates. `annotate` and
 // `eval` both call it, so what eval measures is what annotate writes; PassOptions switches the
 // steps off one by one.
 #pragma once
