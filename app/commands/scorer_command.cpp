@@ -90,7 +90,7 @@ void setupScorer(CLI::App& root) {
   });
 
   struct LearnOptions {
-    std::vector<std::string> candidates;
+    std::vector<std::string> candidates, guard;
     std::string models, out;
     sagrid::ScorerTrainingOptions training;
     sagrid::ScorerCurveOptions curve;
@@ -128,6 +128,12 @@ void setupScorer(CLI::App& root) {
   train->add_option("--candidates", l->candidates, "Candidate files (repeatable)")->required();
   train->add_option("--models", l->models, "Model folder to copy (default resources/models)");
   train->add_option("--out", l->out, "Models folder to write")->required();
+  train->add_option("--guard", l->guard,
+                    "Candidate files of held-out curated objects (other sources than the "
+                    "training's; repeatable): the new scorer is adopted only if it needs fewer "
+                    "edits there than --models' scorer (without one: the points the held-out "
+                    "candidates were made with); refused, it goes to OUT/refused/ and OUT keeps "
+                    "the current one; figures per model in OUT/scorer_guard.json");
   addTrainingOptions(*train, l->training);
   train->callback([l] {
     const auto sets = readAll(l->candidates);
@@ -135,12 +141,29 @@ void setupScorer(CLI::App& root) {
     for (const auto& s : sets) all.push_back(&s);
     sagrid::PointScorer scorer = sagrid::trainPointScorer(all, l->training);
     const fs::path from = l->models.empty() ? sagrid::defaultModelsDir() : fs::path(l->models);
+    fs::path target = l->out;
+    nlohmann::json verdict;
+    if (!l->guard.empty()) {
+      const auto current = sagrid::readPointScorer(from);
+      const auto guard =
+          sagrid::guardPointScorer(current ? &*current : nullptr, scorer, readAll(l->guard), all);
+      for (const auto& v : guard.byModel)
+        std::fprintf(stderr, "guard: %s: %zu -> %zu edits on %zu held-out points\n",
+                     v.model.c_str(), v.currentEdits, v.newEdits, v.handPoints);
+      std::fprintf(stderr, "guard: %zu -> %zu edits: %s\n", guard.currentEdits, guard.newEdits,
+                   guard.adopted ? "adopted" : "refused, the current decision stays");
+      verdict = sagrid::toJson(guard);
+      if (!guard.adopted) target = fs::path(l->out) / "refused";
+    }
     std::error_code same;
     if (!(fs::exists(l->out) && fs::equivalent(from, l->out, same)))
       sagrid::model::copyModelFiles(from, l->out);
-    sagrid::writePointScorer(l->out, scorer);
+    fs::create_directories(target);
+    sagrid::writePointScorer(target, scorer);
+    if (!verdict.is_null())
+      sagrid::writeFileAtomic(fs::path(l->out) / "scorer_guard.json", verdict.dump(2) + "\n");
     std::fprintf(stderr, "scorer: %zu models, trained on %s -> %s\n", scorer.byModel.size(),
-                 scorer.trainedOn.c_str(), (fs::path(l->out) / sagrid::kPointScorerFile).c_str());
+                 scorer.trainedOn.c_str(), (target / sagrid::kPointScorerFile).c_str());
   });
 }
 

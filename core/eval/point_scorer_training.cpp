@@ -250,6 +250,54 @@ ScorerCrossValidation crossValidatePointScorer(const std::vector<CandidateSet>& 
   return cv;
 }
 
+ScorerGuard guardPointScorer(const PointScorer* current, const PointScorer& fresh,
+                             const std::vector<CandidateSet>& heldOut,
+                             const std::vector<const CandidateSet*>& training) {
+  if (heldOut.empty()) throw InvalidArgument("scorer guard: no held-out candidates");
+  std::set<std::string> trained;
+  for (const CandidateSet* set : training) trained.insert(set->source + "/" + set->object);
+  for (const auto& set : heldOut) {
+    if (trained.count(set.source + "/" + set.object))
+      throw InvalidArgument("scorer guard: held-out object " + set.object + " of " + set.source +
+                            " is also training data");
+    if (set.passesOff != fresh.passesOff || (current && current->passesOff != fresh.passesOff))
+      throw InvalidArgument("scorer guard: the held-out candidates (" + set.object +
+                            "), the new scorer and the current one were made with different "
+                            "passes: make them with the same eval flags");
+  }
+  const PointScorer none;
+  const PointScorer& was = current ? *current : none;
+  std::map<std::string, std::vector<const CandidateSet*>> byModel;
+  for (const auto& set : heldOut) byModel[set.model].push_back(&set);
+  ScorerGuard guard;
+  for (const auto& [model, sets] : byModel) {
+    ScorerVerdict v;
+    v.model = model;
+    const auto before = figuresOf(sets, scorerChooser(was));
+    v.currentEdits = before.edits.total();
+    v.newEdits = figuresOf(sets, scorerChooser(fresh)).edits.total();
+    v.handPoints = before.edits.handPoints;
+    guard.currentEdits += v.currentEdits;
+    guard.newEdits += v.newEdits;
+    guard.byModel.push_back(v);
+  }
+  guard.adopted = guard.newEdits < guard.currentEdits;
+  return guard;
+}
+
+nlohmann::json toJson(const ScorerGuard& guard) {
+  nlohmann::json models = nlohmann::json::array();
+  for (const auto& v : guard.byModel)
+    models.push_back({{"model", v.model},
+                      {"current_edits", v.currentEdits},
+                      {"new_edits", v.newEdits},
+                      {"hand_points", v.handPoints}});
+  return {{"current_edits", guard.currentEdits},
+          {"new_edits", guard.newEdits},
+          {"adopted", guard.adopted},
+          {"models", models}};
+}
+
 namespace {
 double editRatio(const PointChoiceFigures& f) {
   return f.edits.handPoints ? static_cast<double>(f.edits.total()) / f.edits.handPoints : NAN;

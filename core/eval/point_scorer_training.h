@@ -82,6 +82,27 @@ ScorerCrossValidation crossValidatePointScorer(const std::vector<CandidateSet>& 
                                                const ScorerTrainingOptions& options,
                                                const ScorerCurveOptions& curve = {});
 
+// A guarded scorer update: the new scorer is adopted only where it needs fewer edits on held-out
+// curated objects than the current one (the models folder's scorer; without one, the points the
+// held-out candidates were made with: the count and the passes that were on). One scorer switches
+// passes off for every model, so it is adopted whole or not at all; the figures are per model.
+struct ScorerVerdict {
+  std::string model;
+  std::size_t currentEdits = 0, newEdits = 0, handPoints = 0;
+};
+struct ScorerGuard {
+  std::vector<ScorerVerdict> byModel;
+  std::size_t currentEdits = 0, newEdits = 0;
+  bool adopted = false;
+};
+// `current` may be null (no scorer yet). Throws InvalidArgument when `heldOut` has no candidate
+// set, when a held-out object is also in `training` (same source and id), or when the held-out
+// candidates, the new scorer and the current one were made with different passes.
+ScorerGuard guardPointScorer(const PointScorer* current, const PointScorer& fresh,
+                             const std::vector<CandidateSet>& heldOut,
+                             const std::vector<const CandidateSet*>& training);
+nlohmann::json toJson(const ScorerGuard& guard);
+
 std::string scorerCrossValidationMarkdown(const ScorerCrossValidation& cv);
 nlohmann::json toJson(const ScorerCrossValidation& cv);
 

@@ -155,6 +155,48 @@ TEST(PointScorerTraining, EachFoldIsDecidedByAScorerFittedWithoutItsSource) {
   EXPECT_EQ(toJson(crossValidatePointScorer(sets, {})).dump(), toJson(cv).dump());
 }
 
+// A scorer that always takes one point: two edits per synthetic object.
+PointScorer onePointScorer() {
+  ModelPointScorer s;
+  const std::size_t d = candidateFeatureNames().size();
+  s.classifier.mean.assign(d, 0);
+  s.classifier.scale.assign(d, 1);
+  s.classifier.weights.assign(d, 0);
+  s.classifier.bias = -10;
+  PointScorer scorer;
+  scorer.byModel["stove.togglebutton"] = s;
+  return scorer;
+}
+
+TEST(PointScorerTraining, TheGuardAdoptsABetterScorerAndRefusesAWorseOne) {
+  const auto sets = syntheticSets();
+  std::vector<const CandidateSet*> training;
+  std::vector<CandidateSet> heldOut;
+  for (const auto& s : sets)
+    if (s.source == "library-c") heldOut.push_back(s);
+    else training.push_back(&s);
+  const PointScorer good = trainPointScorer(training, {});
+  const PointScorer poor = onePointScorer();
+  const ScorerGuard better = guardPointScorer(&poor, good, heldOut, training);
+  EXPECT_TRUE(better.adopted);
+  EXPECT_EQ(better.newEdits, 0u);
+  EXPECT_EQ(better.currentEdits, 12u);  // one knob of three: two additions per object
+  ASSERT_EQ(better.byModel.size(), 1u);
+  EXPECT_EQ(better.byModel[0].handPoints, 18u);
+  EXPECT_FALSE(guardPointScorer(&good, poor, heldOut, training).adopted);
+  // Without a current scorer, against the points the candidates were made with (12 edits).
+  EXPECT_TRUE(guardPointScorer(nullptr, good, heldOut, training).adopted);
+  EXPECT_FALSE(guardPointScorer(nullptr, poor, heldOut, training).adopted);
+  // A held-out object that is also training data, or candidates of other passes: refused.
+  std::vector<CandidateSet> leaked = heldOut;
+  leaked.push_back(*training.front());
+  EXPECT_THROW(guardPointScorer(&poor, good, leaked, training), InvalidArgument);
+  std::vector<CandidateSet> otherPasses = heldOut;
+  otherPasses.front().passesOff = {"mirror_pairs"};
+  EXPECT_THROW(guardPointScorer(&poor, good, otherPasses, training), InvalidArgument);
+  EXPECT_THROW(guardPointScorer(&poor, good, {}, training), InvalidArgument);
+}
+
 TEST(PointScorerTraining, CandidateFilesReadBackAndBadOnesAreNamed) {
   const auto sets = syntheticSets();
   const auto file = std::filesystem::temp_directory_path() / "sagrid-candidates-test.json";
