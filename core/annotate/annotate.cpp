@@ -5,6 +5,7 @@
 
 #include "core/annotate/burner_caps_rule.h"
 #include "core/annotate/category_evidence.h"
+#include "core/annotate/point_scorer.h"
 #include "core/annotate/point_passes.h"
 #include "core/annotate/suggested_points.h"
 #include "core/controls/control_annotation.h"
@@ -23,6 +24,19 @@ using Clock = std::chrono::steady_clock;
 namespace {
 double secondsSince(Clock::time_point t) {
   return std::chrono::duration<double>(Clock::now() - t).count();
+}
+
+// How the points were decided, for the curator and the record: the learned decision (what its
+// scorer was trained on, the passes it switched off) or the passes.
+void recordPointDecision(ObjectLabels& labels, const PassOptions& passes) {
+  auto& prediction = labels.extra["prediction"];
+  if (!passes.scorer) {
+    prediction["point_decision"] = "passes";
+    return;
+  }
+  prediction["point_decision"] = "learned";
+  prediction["point_scorer"] = {{"trained_on", passes.scorer->trainedOn},
+                                {"passes_off", passes.scorer->passesOff}};
 }
 
 // Not a stove or sink: no points; the closest category is kept for the curator. `evidence`: the
@@ -189,6 +203,7 @@ AnnotationResult annotateMeshFile(const fs::path& meshFile, const std::string& i
                                 options.mode, options.counts, [](std::size_t) {});
       appendPredictedPoints(r.labels, suggested.predictions);
       markSuggestions(r.labels, r.closestCategory);
+      recordPointDecision(r.labels, passes);
     }
     finish();
     return r;
@@ -217,6 +232,7 @@ AnnotationResult annotateMeshFile(const fs::path& meshFile, const std::string& i
     else r.labels.affordances.clear();
     r.predictions.clear();
     recordRejection(r, evidence);
+    if (options.suggestions) recordPointDecision(r.labels, passes);
     finish();
     return r;
   }
@@ -233,6 +249,7 @@ AnnotationResult annotateMeshFile(const fs::path& meshFile, const std::string& i
     r.labels.extra["prediction"]["category_by_burner_caps"] = true;
   if (r.categoryRetrieved && classifier && !classifier->evidence.empty())
     r.labels.extra["prediction"]["affordance_evidence"] = evidence;
+  recordPointDecision(r.labels, passes);
   finish();
   return r;
 }

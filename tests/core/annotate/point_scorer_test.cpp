@@ -125,6 +125,9 @@ TEST_F(AnnotateWithScorer, ItDecidesForItsModelsOnlyAndIsSwitchedOff) {
   // The category's evidence is the count's, whatever the scorer chooses (the gate was fitted on it).
   EXPECT_DOUBLE_EQ(decided.evidence, passes.evidence);
   EXPECT_GT(passes.evidence, 0.0);
+  // labels.json says how its points were decided.
+  EXPECT_EQ(decided.labels.extra.at("prediction").at("point_decision"), "learned");
+  EXPECT_EQ(passes.labels.extra.at("prediction").at("point_decision"), "passes");
   ModelSet every = models();
   PointScorer all;
   all.byModel["stove.togglebutton"] = everyCandidate();
