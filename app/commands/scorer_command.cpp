@@ -30,7 +30,10 @@ std::vector<sagrid::CandidateSet> readAll(const std::vector<std::string>& files)
   return all;
 }
 
-void addTrainingOptions(CLI::App& cmd, sagrid::ScorerTrainingOptions& o) {
+// The options `cv` and `train` share: the candidate files and how the decision is fitted.
+void addTrainingOptions(CLI::App& cmd, std::vector<std::string>& candidates,
+                        sagrid::ScorerTrainingOptions& o) {
+  cmd.add_option("--candidates", candidates, "Candidate files (repeatable)")->required();
   cmd.add_option("--real-weight", o.realWeight,
                  "Weight of a curated real object's candidates against a generated object's "
                  "(default 3)")
@@ -100,7 +103,6 @@ void setupScorer(CLI::App& root) {
       "cv", "Leave one source out over the curated real objects of the candidate files: per "
             "source, the passes' points, a decision fitted on generated objects only and one "
             "fitted with the curated objects of the other sources; writes OUT/scorer_cv.md, .json");
-  cv->add_option("--candidates", l->candidates, "Candidate files (repeatable)")->required();
   cv->add_option("--out", l->out, "Report folder (default scorer-cv)");
   cv->add_option("--ks", l->curve.ks,
                  "Learning curve: fit with k curated objects of the other sources too, e.g. "
@@ -109,7 +111,7 @@ void setupScorer(CLI::App& root) {
   cv->add_option("--tuned-on", l->curve.tunedOn,
                  "A source a pass or rule was made on (repeatable): the report also gives the "
                  "figures without these sources");
-  addTrainingOptions(*cv, l->training);
+  addTrainingOptions(*cv, l->candidates, l->training);
   cv->callback([l] {
     const auto result =
         sagrid::crossValidatePointScorer(readAll(l->candidates), l->training, l->curve);
@@ -125,7 +127,6 @@ void setupScorer(CLI::App& root) {
       "train", "Fit the decision on every object of the candidate files and write a models "
                "folder: --models' files plus point_scorer.json (annotate, eval and the GUI then "
                "use it)");
-  train->add_option("--candidates", l->candidates, "Candidate files (repeatable)")->required();
   train->add_option("--models", l->models, "Model folder to copy (default resources/models)");
   train->add_option("--out", l->out, "Models folder to write")->required();
   train->add_option("--guard", l->guard,
@@ -134,7 +135,7 @@ void setupScorer(CLI::App& root) {
                     "edits there than --models' scorer (without one: the points the held-out "
                     "candidates were made with); refused, it goes to OUT/refused/ and OUT keeps "
                     "the current one; figures per model in OUT/scorer_guard.json");
-  addTrainingOptions(*train, l->training);
+  addTrainingOptions(*train, l->candidates, l->training);
   train->callback([l] {
     const auto sets = readAll(l->candidates);
     std::vector<const sagrid::CandidateSet*> all;

@@ -40,14 +40,19 @@ std::vector<ExtractedPoint> scoredPoints(const ModelPointScorer& scorer,
 nlohmann::json toJson(const PointScorer& scorer) {
   nlohmann::json models = nlohmann::json::object();
   for (const auto& [name, m] : scorer.byModel) {
-    models[name] = {{"mean", m.classifier.mean},
-                    {"scale", m.classifier.scale},
-                    {"weights", m.classifier.weights},
-                    {"bias", m.classifier.bias},
-                    {"keep_threshold", m.choice.keepThreshold},
-                    {"add_threshold", m.choice.addThreshold},
-                    {"nms_radius", m.choice.nmsRadius}};
-    if (m.classifier.trees) models[name]["trees"] = toJson(*m.classifier.trees);
+    nlohmann::json& model = models[name];
+    model = {{"keep_threshold", m.choice.keepThreshold},
+             {"add_threshold", m.choice.addThreshold},
+             {"nms_radius", m.choice.nmsRadius}};
+    // Trees or the logistic regression, whichever decides.
+    if (m.classifier.trees) {
+      model["trees"] = toJson(*m.classifier.trees);
+      continue;
+    }
+    model["mean"] = m.classifier.mean;
+    model["scale"] = m.classifier.scale;
+    model["weights"] = m.classifier.weights;
+    model["bias"] = m.classifier.bias;
   }
   return {{"schema", kSchema},
           {"features", candidateFeatureNames()},
@@ -79,13 +84,12 @@ std::optional<PointScorer> readPointScorer(const std::filesystem::path& modelsDi
     const std::size_t d = candidateFeatureNames().size();
     for (const auto& [name, m] : j.at("models").items()) {
       ModelPointScorer s;
-      s.classifier.mean = m.at("mean").get<std::vector<float>>();
-      s.classifier.scale = m.at("scale").get<std::vector<float>>();
-      s.classifier.weights = m.at("weights").get<std::vector<float>>();
-      s.classifier.bias = m.at("bias").get<float>();
       s.choice.keepThreshold = m.at("keep_threshold").get<float>();
       s.choice.addThreshold = m.at("add_threshold").get<float>();
       s.choice.nmsRadius = m.at("nms_radius").get<float>();
+      if (!std::isfinite(s.choice.keepThreshold) || !std::isfinite(s.choice.addThreshold) ||
+          !std::isfinite(s.choice.nmsRadius) || s.choice.nmsRadius < 0)
+        throw FileError(file, "model " + name + ": numbers must be finite (radius >= 0)");
       if (m.contains("trees")) {
         try {
           s.classifier.trees = boostedTreesFromJson(m.at("trees"));
@@ -95,16 +99,20 @@ std::optional<PointScorer> readPointScorer(const std::filesystem::path& modelsDi
         if (s.classifier.trees->features != d)
           throw FileError(file, "model " + name + ": its trees read " +
                                     std::to_string(s.classifier.trees->features) + " features");
+        scorer.byModel[name] = s;
+        continue;
       }
+      s.classifier.mean = m.at("mean").get<std::vector<float>>();
+      s.classifier.scale = m.at("scale").get<std::vector<float>>();
+      s.classifier.weights = m.at("weights").get<std::vector<float>>();
+      s.classifier.bias = m.at("bias").get<float>();
       const auto& c = s.classifier;
       if (c.mean.size() != d || c.scale.size() != d || c.weights.size() != d)
         throw FileError(file, "model " + name + ": mean, scale and weights need " +
                                   std::to_string(d) + " values each");
       if (!allFinite(c.mean) || !allFinite(c.scale) || !allFinite(c.weights) ||
-          !std::isfinite(c.bias) || !std::isfinite(s.choice.keepThreshold) ||
-          !std::isfinite(s.choice.addThreshold) || !std::isfinite(s.choice.nmsRadius) ||
-          s.choice.nmsRadius < 0)
-        throw FileError(file, "model " + name + ": numbers must be finite (radius >= 0)");
+          !std::isfinite(c.bias))
+        throw FileError(file, "model " + name + ": numbers must be finite");
       for (float scale : c.scale)
         if (scale <= 0) throw FileError(file, "model " + name + ": scales must be positive");
       scorer.byModel[name] = s;

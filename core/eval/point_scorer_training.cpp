@@ -82,8 +82,10 @@ ModelPointScorer fitModel(const std::vector<const CandidateSet*>& sets,
     }
   }
   ModelPointScorer best;
-  best.classifier = fitCandidateClassifier(rows, positive, weight, options.ridge);
-  if (options.trees) best.classifier.trees = fitBoostedTrees(rows, positive, weight, options.boosting);
+  if (options.trees)
+    best.classifier.trees = fitBoostedTrees(rows, positive, weight, options.boosting);
+  else
+    best.classifier = fitCandidateClassifier(rows, positive, weight, options.ridge);
   std::vector<std::vector<float>> probabilities;
   for (const CandidateSet* set : sets)
     probabilities.push_back(candidateProbabilities(best.classifier, set->candidates));

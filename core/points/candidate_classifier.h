@@ -15,6 +15,7 @@
 
 namespace sagrid {
 
+// Boosted trees when `trees` is set, else the logistic regression (mean, scale, weights, bias).
 struct CandidateClassifier {
   std::vector<float> mean, scale;  // per feature: x' = (x - mean) / scale
   std::vector<float> weights;      // per standardized feature

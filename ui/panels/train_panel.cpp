@@ -36,28 +36,29 @@ void drawTrainPanel(Session& session, TrainingWorker& worker,
     const std::string label = category.empty()        ? "Train (set a category)"
                               : initModels.empty() ? "Train " + category + " models"
                                                    : "Fine-tune " + category + " models";
+    // What both kinds of training read: the training set, the models in and out, the held-out
+    // folder, and the queue to predict again.
+    auto request = [&] {
+      TrainingRequest r;
+      r.dataset = session.trainingSetDir;
+      r.outDir = modelsOut;
+      r.initDir = initModels;
+      r.heldOut = heldOut;
+      r.requeue = session.queue().entries();
+      return r;
+    };
     if (ImGui::Button(label.c_str(), ImVec2(-1, 0))) {
-      TrainingRequest request;
-      request.dataset = session.trainingSetDir;
-      request.category = category;
-      request.outDir = modelsOut;
-      request.minutesPerModel = minutes;
-      request.requeue = session.queue().entries();
-      request.initDir = initModels;
-      request.heldOut = heldOut;
-      worker.start(std::move(request));
+      TrainingRequest models = request();
+      models.category = category;
+      models.minutesPerModel = minutes;
+      worker.start(std::move(models));
     }
     ImGui::EndDisabled();
     // The categories the curator confirmed or switched train the classifier too.
     if (ImGui::Button("Retrain category classifier", ImVec2(-1, 0))) {
-      TrainingRequest request;
-      request.dataset = session.trainingSetDir;
-      request.outDir = modelsOut;
-      request.initDir = initModels;
-      request.heldOut = heldOut;
-      request.requeue = session.queue().entries();
-      request.categoryClassifier = true;
-      worker.start(std::move(request));
+      TrainingRequest classifier = request();
+      classifier.categoryClassifier = true;
+      worker.start(std::move(classifier));
     }
     if (ImGui::IsItemHovered())
       ImGui::SetTooltip("Stove / sink / none, learned again from the training set's curated "

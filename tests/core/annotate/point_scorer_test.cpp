@@ -13,6 +13,7 @@
 #include "core/dataset/dataset.h"
 #include "core/features/feature_grid.h"
 #include "core/generate/dataset_generator.h"
+#include "support/point_scorers.h"
 #include "support/test_paths.h"
 #include "support/untrained_models.h"
 
@@ -21,22 +22,11 @@ namespace {
 namespace fs = std::filesystem;
 
 // A decision that finds no candidate good enough: the best one alone.
-ModelPointScorer oneBest() {
-  ModelPointScorer s;
-  const std::size_t d = candidateFeatureNames().size();
-  s.classifier.mean.assign(d, 0);
-  s.classifier.scale.assign(d, 1);
-  s.classifier.weights.assign(d, 0);
-  s.classifier.weights[0] = -1;  // nearer the field's zero is better
-  s.classifier.bias = -10;
-  s.choice = {0.5f, 0.5f, 0.08f};
-  return s;
-}
+ModelPointScorer oneBest() { return test::fieldOnlyScorer(-10); }
 
 // A decision that takes every candidate.
 ModelPointScorer everyCandidate() {
-  ModelPointScorer s = oneBest();
-  s.classifier.bias = 10;
+  ModelPointScorer s = test::fieldOnlyScorer(10);
   s.choice.nmsRadius = 0;
   return s;
 }
@@ -55,11 +45,24 @@ TEST(PointScorerFile, ReadsBackWhatWasWrittenAndNamesWhatIsWrong) {
   EXPECT_FALSE(readPointScorer(dir).has_value());  // no file: the passes' points stand
   PointScorer scorer;
   scorer.byModel["stove.togglebutton"] = oneBest();
+  // A model decided by trees: only the trees are written and read.
+  const std::size_t d = candidateFeatureNames().size();
+  std::vector<std::vector<float>> rows;
+  for (int i = 0; i < 20; ++i) rows.push_back(std::vector<float>(d, static_cast<float>(i % 2)));
+  std::vector<bool> positive;
+  for (int i = 0; i < 20; ++i) positive.push_back(i % 2 == 1);
+  ModelPointScorer trees;
+  trees.classifier.trees = fitBoostedTrees(rows, positive, std::vector<float>(20, 1.0f));
+  scorer.byModel["stove.heatsource"] = trees;
   scorer.trainedOn = "test";
   writePointScorer(dir, scorer);
   const auto back = readPointScorer(dir);
   ASSERT_TRUE(back.has_value());
   EXPECT_EQ(toJson(*back).dump(), toJson(scorer).dump());
+  EXPECT_FALSE(toJson(scorer)["models"]["stove.heatsource"].contains("weights"));
+  ASSERT_TRUE(back->forModel("stove.heatsource")->classifier.trees.has_value());
+  EXPECT_GT(back->forModel("stove.heatsource")->classifier.probability(rows[1]), 0.5f);
+  EXPECT_LT(back->forModel("stove.heatsource")->classifier.probability(rows[0]), 0.5f);
 
   auto j = toJson(scorer);
   auto rewrite = [&](const nlohmann::json& bad) { std::ofstream(dir / kPointScorerFile) << bad.dump(); };

@@ -9,6 +9,7 @@
 #include "core/common/error.h"
 #include "core/eval/metrics.h"
 #include "core/eval/point_scorer_training.h"
+#include "support/point_scorers.h"
 
 namespace sagrid {
 namespace {
@@ -157,14 +158,8 @@ TEST(PointScorerTraining, EachFoldIsDecidedByAScorerFittedWithoutItsSource) {
 
 // A scorer that always takes one point: two edits per synthetic object.
 PointScorer onePointScorer() {
-  ModelPointScorer s;
-  const std::size_t d = candidateFeatureNames().size();
-  s.classifier.mean.assign(d, 0);
-  s.classifier.scale.assign(d, 1);
-  s.classifier.weights.assign(d, 0);
-  s.classifier.bias = -10;
   PointScorer scorer;
-  scorer.byModel["stove.togglebutton"] = s;
+  scorer.byModel["stove.togglebutton"] = test::fieldOnlyScorer(-10);
   return scorer;
 }
 
