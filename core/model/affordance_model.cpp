@@ -8,7 +8,10 @@
 #include <sstream>
 #include <thread>
 
+#include <spdlog/spdlog.h>
+
 #include "core/common/atomic_file.h"
+#include "core/common/blas_kernels.h"
 #include "core/common/error.h"
 #include "core/common/sha256.h"
 #include "core/common/thread_count.h"
@@ -19,6 +22,8 @@ namespace fs = std::filesystem;
 
 void configureTorchRuntime() {
   static const bool configured = [] {
+    if (const char* kernels = blasKernelsNamed())
+      spdlog::debug("BLAS kernels: {} (named at start-up; OPENBLAS_CORETYPE overrides)", kernels);
     torch::set_num_threads(defaultThreadCount());
     return true;
   }();

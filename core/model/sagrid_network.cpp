@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include <ATen/Parallel.h>
+
 #include "core/common/error.h"
 #include "core/model/sparse_neighbors.h"
 
@@ -37,12 +39,42 @@ torch::Tensor gatherTaps(const torch::Tensor& x, const torch::Tensor& rows) {
   return padded.index_select(0, rows.reshape({-1})).view({n, -1});
 }
 
+// y[v] = sum_t x[rows(v, t)] W_t with W = (taps * Cin, Cout) as tapMatrix lays it out. On the CPU
+// every voxel's product with every tap comes first (one GEMM: (N, Cin) by (Cin, taps * Cout)),
+// then each voxel adds its neighbours' rows of it, taps in order: the gathered (N, taps * Cin)
+// input is never formed, nor packed again by the GEMM. Elsewhere: the gather and one GEMM.
+torch::Tensor tapSum(const torch::Tensor& x, const torch::Tensor& rows, const torch::Tensor& w) {
+  const std::int64_t n = rows.size(0), taps = rows.size(1), cin = x.size(1), cout = w.size(1);
+  if (!x.is_cpu() || x.scalar_type() != torch::kFloat || rows.scalar_type() != torch::kLong)
+    return gatherTaps(x, rows).mm(w);
+  const torch::Tensor perTap =
+      x.contiguous().mm(w.view({taps, cin, cout}).permute({1, 0, 2}).reshape({cin, taps * cout}));
+  const torch::Tensor index = rows.contiguous();
+  torch::Tensor y = torch::zeros({n, cout}, x.options());
+  const float* z = perTap.data_ptr<float>();
+  const std::int64_t* r = index.data_ptr<std::int64_t>();
+  float* out = y.data_ptr<float>();
+  const std::int64_t present = x.size(0);
+  at::parallel_for(0, n, 1024, [&](std::int64_t begin, std::int64_t end) {
+    for (std::int64_t v = begin; v < end; ++v) {
+      float* sum = out + v * cout;
+      for (std::int64_t t = 0; t < taps; ++t) {
+        const std::int64_t u = r[v * taps + t];
+        if (u >= present) continue;  // an absent neighbour: the zero row
+        const float* term = z + (u * taps + t) * cout;
+        for (std::int64_t o = 0; o < cout; ++o) sum[o] += term[o];
+      }
+    }
+  });
+  return y;
+}
+
 class SparseConvolutionFunction : public torch::autograd::Function<SparseConvolutionFunction> {
  public:
   static torch::Tensor forward(torch::autograd::AutogradContext* ctx, const torch::Tensor& x,
                                const torch::Tensor& weight, const torch::Tensor& rows) {
     ctx->save_for_backward({x, weight, rows});
-    return gatherTaps(x, rows).mm(tapMatrix(weight));
+    return tapSum(x, rows, tapMatrix(weight));
   }
 
   static torch::autograd::tensor_list backward(torch::autograd::AutogradContext* ctx,
@@ -58,7 +90,7 @@ class SparseConvolutionFunction : public torch::autograd::Function<SparseConvolu
     if (ctx->needs_input_grad(0)) {
       // x[u] reaches y[v] through tap t exactly when v is u's neighbour through the mirrored tap.
       const torch::Tensor back = weight.permute({2, 3, 4, 0, 1}).reshape({taps * cout, cin});
-      gradX = gatherTaps(grad, rows.flip({1})).mm(back);
+      gradX = tapSum(grad, rows.flip({1}), back);
     }
     if (ctx->needs_input_grad(1)) {
       // Recomputing the gathered input is cheaper than keeping it alive between passes.

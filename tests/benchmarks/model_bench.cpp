@@ -5,6 +5,7 @@
 
 #include <random>
 
+#include "core/common/thread_count.h"
 #include "core/model/affordance_model_impl.h"
 #include "core/model/sagrid_network.h"
 
@@ -54,6 +55,26 @@ void BM_SparseForward(benchmark::State& state) {
       " GMAC");
 }
 BENCHMARK(BM_SparseForward)->DenseRange(0, 2)->Unit(benchmark::kMillisecond);
+
+// One 16 -> 16 channel 3^3 layer on the box surface, one thread (as annotate runs each pass):
+// 0 = the gathered input times the tap matrix (plain autograd, the reference), 1 = each tap's
+// products added per voxel (what the network runs).
+void BM_SparseConvolutionLayer(benchmark::State& state) {
+  configureTorchRuntime();
+  at::set_num_threads(1);
+  const auto object = boxSurface();
+  const auto shape = shapeFor("[3,1,16]");
+  const auto batch = makeNetworkBatch({&object}, shape, ExecutionMode::Sparse, torch::kCPU);
+  const torch::Tensor rows = batch.neighbors.at({3, 1});
+  torch::NoGradGuard noGrad;
+  const torch::Tensor x = torch::rand({rows.size(0), 16}), w = torch::randn({16, 16, 3, 3, 3});
+  for (auto _ : state)
+    benchmark::DoNotOptimize(sparseConvolution(x, w, rows, state.range(0) == 0).sum().item<float>());
+  state.SetLabel(std::string(state.range(0) == 0 ? "gather + GEMM" : "tap sums") + ", " +
+                 std::to_string(rows.size(0)) + " voxels");
+  at::set_num_threads(sagrid::defaultThreadCount());
+}
+BENCHMARK(BM_SparseConvolutionLayer)->DenseRange(0, 1)->Unit(benchmark::kMillisecond);
 
 void BM_SparseTrainStep(benchmark::State& state) {
   configureTorchRuntime();

@@ -99,7 +99,7 @@ TEST(SAGridNetwork, SparseOutputIgnoresUnoccupiedNeighboursFeatures) {
   EXPECT_NE(y0[1].item<float>(), y1[1].item<float>());
 }
 
-TEST(SAGridNetwork, SparseConvolutionBackwardEqualsAutogradReference) {
+TEST(SAGridNetwork, SparseConvolutionForwardAndBackwardEqualAutogradReference) {
   torch::manual_seed(8);
   for (int dilation : {1, 2}) {
     const auto object = randomObject(8, 5, 7, 9, 0.4);
@@ -107,16 +107,20 @@ TEST(SAGridNetwork, SparseConvolutionBackwardEqualsAutogradReference) {
     const auto batch = makeNetworkBatch({&object}, shape, ExecutionMode::Sparse, torch::kCPU);
     const torch::Tensor rows = batch.neighbors.at({3, dilation});
     const auto n = static_cast<std::int64_t>(object.voxels.size());
-    torch::Tensor grads[2][2];
+    torch::Tensor grads[2][2], outputs[2];
     const torch::Tensor x0 = torch::randn({n, 6}), w0 = torch::randn({4, 6, 3, 3, 3}),
                         g = torch::randn({n, 4});
     for (int reference = 0; reference < 2; ++reference) {
       torch::Tensor x = x0.clone().requires_grad_(true), w = w0.clone().requires_grad_(true);
-      const torch::Tensor y = sparseConvolution(x, w, rows, reference == 1);
+      const torch::Tensor y = outputs[reference] = sparseConvolution(x, w, rows, reference == 1);
       (y * g).sum().backward();
       grads[reference][0] = x.grad();
       grads[reference][1] = w.grad();
     }
+    // The forward pass (each tap's products added per voxel) against the gather and one GEMM.
+    EXPECT_LT((outputs[0] - outputs[1]).abs().max().item<float>(), 1e-4f)
+        << "dilation " << dilation;
+    EXPECT_GT(outputs[0].abs().max().item<float>(), 0.1f);
     EXPECT_LT((grads[0][0] - grads[1][0]).abs().max().item<float>(), 1e-4f)
         << "dilation " << dilation;
     EXPECT_LT((grads[0][1] - grads[1][1]).abs().max().item<float>(), 1e-3f)
