@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <nlohmann/json.hpp>
+#include <map>
 #include <set>
 #include <sstream>
 
@@ -14,8 +15,11 @@
 #include "core/common/error.h"
 #include "core/common/log.h"
 #include "core/dataset/labels_mesh.h"
+#include "core/eval/point_scorer_update.h"
+#include "core/generate/dataset_generator.h"
 #include "core/labels/labels.h"
 #include "core/training/dataset_training.h"
+#include "core/training/training_sources.h"
 
 namespace sagrid::ui {
 
@@ -76,6 +80,7 @@ void TrainingWorker::update(const std::function<void(TrainingStatus&)>& change) 
 void TrainingWorker::run(TrainingRequest request) {
   try {
     if (request.categoryClassifier) runCategoryClassifier(request);
+    else if (request.pointScorer) runPointScorer(request);
     else runPointModels(request);
     std::lock_guard<std::mutex> lock(m_mutex);
     m_finishedFlag = true;
@@ -135,18 +140,7 @@ void TrainingWorker::runCategoryClassifier(const TrainingRequest& request) {
   logger()->info("{}; wrote {}", verdictLine, file.string());
   // An adopted classifier decides the unreviewed objects' categories again (their points with
   // them); a refused one changes nothing.
-  std::string requeued;
-  if (adopted && !request.requeue.empty() &&
-      fs::is_regular_file(request.outDir / kCategoryClassifierFile)) {
-    // The models out need the cards to predict with: those of the models in, where it has none.
-    for (const auto& entry : fs::directory_iterator(from))
-      if (entry.is_regular_file() && entry.path().filename() != kCategoryClassifierFile)
-        fs::copy_file(entry.path(), request.outDir / entry.path().filename(),
-                      fs::copy_options::skip_existing);
-    const RequeueCounts counts = predictQueueAgain(request, "", 0.95, 0.05);
-    requeued = "; " + std::to_string(counts.objects) + " unreviewed object(s) predicted again, " +
-               std::to_string(counts.recategorized) + " changed category";
-  }
+  const std::string requeued = adopted ? predictQueueWithAdopted(request, from) : std::string();
   update([&](TrainingStatus& s) {
     s.fraction = 1.0f;
     s.phase = "done";
@@ -156,6 +150,78 @@ void TrainingWorker::runCategoryClassifier(const TrainingRequest& request) {
                                   : " (" + std::to_string(missing.size()) +
                                         " of its training folders are not on this machine)") +
                  (adopted ? "; adopted" : "; refused: " + file.string()) + requeued;
+  });
+}
+
+std::string TrainingWorker::predictQueueWithAdopted(const TrainingRequest& request,
+                                                    const fs::path& from) {
+  if (request.requeue.empty()) return {};
+  // The models out need the cards to predict with: those of the models in, where it has none.
+  std::error_code same;
+  if (!fs::equivalent(from, request.outDir, same))
+    for (const auto& entry : fs::directory_iterator(from))
+      if (entry.is_regular_file())
+        fs::copy_file(entry.path(), request.outDir / entry.path().filename(),
+                      fs::copy_options::skip_existing);
+  const RequeueCounts counts = predictQueueAgain(request, "", 0.95, 0.05);
+  return "; " + std::to_string(counts.objects) + " unreviewed object(s) predicted again, " +
+         std::to_string(counts.recategorized) + " changed category";
+}
+
+void TrainingWorker::runPointScorer(const TrainingRequest& request) {
+  const fs::path from = request.initDir.empty() ? request.outDir : request.initDir;
+  if (!request.heldOut.empty()) {
+    // The same refusals as a guarded point-model update.
+    update([&](TrainingStatus& s) { s.phase = "checking the curated data and " + from.string(); });
+    checkGuardedUpdate({from, {}, {}, request.heldOut, {}, {}, {}}, {request.dataset});
+  }
+  // Generated objects the networks were not trained on, beside the curated ones (as the shipped
+  // decision was trained: resources/models/README.md).
+  fs::path generated = request.generated;
+  if (generated.empty()) {
+    generated = defaultBenchDir();
+    if (!fs::exists(generated / "val" / "manifest.jsonl")) {
+      update([&](TrainingStatus& s) { s.phase = "generating the bench (once)"; });
+      gen::generateBenchPreset(generated, {});
+    }
+  }
+  ScorerUpdateRequest update{from, request.dataset, generated, request.heldOut, {}, {}, &m_cancel};
+  const std::map<std::string, std::pair<float, float>> span = {
+      {"curated", {0.0f, 0.3f}}, {"generated", {0.3f, 0.5f}}, {"held out", {0.8f, 0.15f}}};
+  update.onProgress = [&](const std::string& phase, std::size_t done, std::size_t total,
+                          const std::string& id) {
+    this->update([&](TrainingStatus& s) {
+      s.phase = "point candidates, " + phase + " " + std::to_string(done) + "/" +
+                std::to_string(total) + " " + id;
+      const auto& [at, width] = span.at(phase);
+      s.fraction = at + width * (total ? float(done) / float(total) : 0.0f);
+    });
+  };
+  const ScorerUpdate result = updatePointScorer(update);
+  const fs::path dir = result.adopted ? request.outDir : request.outDir / "refused";
+  fs::create_directories(dir);
+  writePointScorer(dir, result.scorer);
+  if (result.guard) {
+    writeFileAtomic(request.outDir / "scorer_guard.json", toJson(*result.guard).dump(2) + "\n");
+    for (const auto& v : result.guard->byModel)
+      this->update([&](TrainingStatus& s) {
+        s.verdicts.push_back(v.model + ": " + std::to_string(v.currentEdits) + " -> " +
+                             std::to_string(v.newEdits) + " edits on " +
+                             std::to_string(v.handPoints) + " held-out points");
+      });
+  }
+  this->update([&](TrainingStatus& s) { s.verdicts.push_back(result.verdict); });
+  logger()->info("point decision: {}; wrote {}", result.verdict, (dir / kPointScorerFile).string());
+  const std::string requeued =
+      result.adopted ? predictQueueWithAdopted(request, from) : std::string();
+  this->update([&](TrainingStatus& s) {
+    s.fraction = 1.0f;
+    s.phase = "done";
+    s.finished = "point decision retrained on " + std::to_string(result.curatedSets) +
+                 " curated and " + std::to_string(result.generatedSets) +
+                 " generated model sets" +
+                 (result.adopted ? "; adopted" : "; refused: " + (dir / kPointScorerFile).string()) +
+                 requeued;
   });
 }
 

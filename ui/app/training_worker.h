@@ -35,6 +35,12 @@ struct TrainingRequest {
   // training set's objects and their curated categories (core/annotate/category_update.h), guarded
   // by heldOut when given; written to outDir when adopted, else to outDir/refused/.
   bool categoryClassifier = false;
+  // Instead of point models: retrain the learned point decision of initDir (else outDir) on the
+  // training set's curated objects and `generated` objects (core/eval/point_scorer_update.h),
+  // guarded by heldOut when given; point_scorer.json written to outDir when adopted, else to
+  // outDir/refused/.
+  bool pointScorer = false;
+  std::filesystem::path generated;  // empty: the bench's val split (generated when missing)
 };
 
 struct TrainingStatus {
@@ -66,6 +72,11 @@ class TrainingWorker {
   void run(TrainingRequest request);
   void runPointModels(const TrainingRequest& request);
   void runCategoryClassifier(const TrainingRequest& request);
+  void runPointScorer(const TrainingRequest& request);
+  // After an adopted update of one file in request.outDir: the models folder made whole from
+  // `from` (files it lacks), and the queue's unreviewed objects predicted again with it. Returns
+  // the summary's clause.
+  std::string predictQueueWithAdopted(const TrainingRequest& request, const std::filesystem::path& from);
   struct RequeueCounts {
     std::size_t objects = 0, moved = 0, compared = 0, recategorized = 0;
   };

@@ -54,16 +54,27 @@ void drawTrainPanel(Session& session, TrainingWorker& worker,
       worker.start(std::move(models));
     }
     ImGui::EndDisabled();
+    // Retraining one of the learned decisions that are not networks: a full-width button that
+    // starts the request with `what` switched on, and its tooltip.
+    auto retrainButton = [&](const char* label, bool TrainingRequest::*what, const char* tooltip) {
+      if (ImGui::Button(label, ImVec2(-1, 0))) {
+        TrainingRequest r = request();
+        r.*what = true;
+        worker.start(std::move(r));
+      }
+      if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", tooltip);
+    };
     // The categories the curator confirmed or switched train the classifier too.
-    if (ImGui::Button("Retrain category classifier", ImVec2(-1, 0))) {
-      TrainingRequest classifier = request();
-      classifier.categoryClassifier = true;
-      worker.start(std::move(classifier));
-    }
-    if (ImGui::IsItemHovered())
-      ImGui::SetTooltip("Stove / sink / none, learned again from the training set's curated "
-                        "categories and the classifier's own training data; with a held-out "
-                        "folder, kept only where it decides more of it right");
+    retrainButton("Retrain category classifier", &TrainingRequest::categoryClassifier,
+                  "Stove / sink / none, learned again from the training set's curated categories "
+                  "and the classifier's own training data; with a held-out folder, kept only "
+                  "where it decides more of it right");
+    // The points the curator accepted, moved, added or deleted teach the point decision too.
+    retrainButton("Retrain point decision", &TrainingRequest::pointScorer,
+                  "Which of the fields' minima and the mesh's small parts are points, learned "
+                  "again from the training set's curated points and generated objects (the "
+                  "bench's val split, made once); with a held-out folder, kept only where it "
+                  "needs fewer edits there");
   } else {
     ImGui::ProgressBar(status.fraction, ImVec2(-70, 0));
     ImGui::SameLine();

@@ -4,9 +4,7 @@
 // never overwritten, the verdict shows in the panel and goes to guard.jsonl.
 #include <gtest/gtest.h>
 
-#include <chrono>
 #include <fstream>
-#include <thread>
 
 #include "core/annotate/category_classifier.h"
 #include "core/annotate/category_update.h"
@@ -19,6 +17,7 @@
 #include "core/labels/labels.h"
 #include "support/test_paths.h"
 #include "ui/app/training_worker.h"
+#include "training_worker_support.h"
 
 namespace sagrid::ui {
 namespace {
@@ -26,7 +25,6 @@ namespace fs = std::filesystem;
 
 TrainingStatus retrain(const fs::path& dir, const fs::path& heldOut,
                        std::vector<QueueEntry> requeue = {}) {
-  TrainingWorker worker;
   TrainingRequest request;
   request.requeue = std::move(requeue);
   request.dataset = dir / "curated";
@@ -34,12 +32,7 @@ TrainingStatus retrain(const fs::path& dir, const fs::path& heldOut,
   request.initDir = dir / "loaded";
   request.heldOut = heldOut;
   request.categoryClassifier = true;
-  worker.start(request);
-  for (int i = 0; i < 20 * 300 && worker.running(); ++i)
-    std::this_thread::sleep_for(std::chrono::milliseconds(50));
-  EXPECT_FALSE(worker.running()) << "retraining did not finish in 300 s";
-  EXPECT_EQ(worker.takeFinished(), worker.status().error.empty());
-  return worker.status();
+  return test::runToEnd(std::move(request), 300);
 }
 
 // Generated stand-ins: the classifier's own training folder, the curator's training set, and
@@ -106,18 +99,7 @@ TEST(CategoryRetrainWorker, AWorseRetrainingIsRefusedAndTheLoadedClassifierStays
 // The review queue: an unreviewed object labelled sink by the classifier before, and one the
 // curator accepted; their labels files.
 std::vector<QueueEntry> queueOf(const fs::path& dir) {
-  const fs::path mesh = readDataset(dir / "held-out").front().mesh;
-  std::vector<QueueEntry> queue;
-  for (QueueState state : {QueueState::Unreviewed, QueueState::Accepted}) {
-    const fs::path labels = dir / "queue" / toString(state) / "labels.json";
-    fs::create_directories(labels.parent_path());
-    ObjectLabels l;
-    l.object.id = toString(state);
-    l.object.category = "sink";
-    writeLabels(labels, l);
-    queue.push_back({mesh, labels, state, {}, {}});
-  }
-  return queue;
+  return test::reviewQueue(dir, readDataset(dir / "held-out").front().mesh, "sink");
 }
 
 // Loaded with a classifier of one gradient step, the curated retraining (2,000 steps) decides the

@@ -1,0 +1,70 @@
+#include "core/eval/point_scorer_update.h"
+
+#include "core/annotate/model_set.h"
+#include "core/common/error.h"
+#include "core/eval/evaluation.h"
+
+namespace sagrid {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// Every model's candidates on the objects of `dir`, made as `sagrid scorer candidates` makes them.
+std::vector<CandidateSet> candidatesOf(const ModelSet& models, const fs::path& dir,
+                                       const std::string& phase,
+                                       const ScorerUpdateRequest& request) {
+  EvaluationOptions options;
+  options.keepCandidates = true;
+  options.dataDir = dir;
+  options.features = models.featureOptions();
+  options.onProgress = [&](std::size_t done, std::size_t total, const std::string& id) {
+    if (request.cancel && request.cancel->load()) throw Cancelled();
+    if (request.onProgress) request.onProgress(phase, done, total, id);
+  };
+  return evaluateModels(models, options).candidateSets;
+}
+
+std::size_t withTruth(const std::vector<CandidateSet>& sets) {
+  std::size_t n = 0;
+  for (const auto& s : sets) n += !s.truth.empty();
+  return n;
+}
+
+}  // namespace
+
+ScorerUpdate updatePointScorer(const ScorerUpdateRequest& request) {
+  const ModelSet models = ModelSet::load(request.models);
+  const auto curated = candidatesOf(models, request.curated, "curated", request);
+  if (withTruth(curated) == 0)
+    throw InvalidArgument("the curated objects of " + request.curated.string() +
+                          " give the point decision nothing to learn: no object with points of "
+                          "a model in " + request.models.string());
+  std::vector<CandidateSet> generated;
+  if (!request.generated.empty())
+    generated = candidatesOf(models, request.generated, "generated", request);
+  std::vector<const CandidateSet*> training;
+  for (const auto& s : curated) training.push_back(&s);
+  for (const auto& s : generated) training.push_back(&s);
+
+  ScorerUpdate update;
+  update.curatedSets = curated.size();
+  update.generatedSets = generated.size();
+  update.scorer = trainPointScorer(training, request.training);
+  if (request.heldOut.empty()) {
+    update.verdict = "unguarded: the retrained point decision is kept, better or not";
+    return update;
+  }
+  const auto heldOut = candidatesOf(models, request.heldOut, "held out", request);
+  update.heldOutSets = heldOut.size();
+  const auto current = readPointScorer(request.models);
+  update.guard = guardPointScorer(current ? &*current : nullptr, update.scorer, heldOut, training);
+  update.adopted = update.guard->adopted;
+  update.verdict = std::to_string(update.guard->currentEdits) + " -> " +
+                   std::to_string(update.guard->newEdits) + " edits on the held-out objects (" +
+                   (current ? "the current point decision" : "the passes' points") + " -> the retrained one): " +
+                   (update.adopted ? "adopted" : "refused, the current decision stays");
+  return update;
+}
+
+}  // namespace sagrid

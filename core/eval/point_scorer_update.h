@@ -1,0 +1,45 @@
+// Retraining the learned point decision from curated objects, guarded (issue 40, item 1): the
+// candidates of the curated training objects, of generated objects the networks were not trained
+// on and of held-out curated objects are made by the models folder's networks with its scorer's
+// passes (as `sagrid scorer candidates`); a scorer fitted on the first two replaces the folder's
+// only where it needs fewer edits on the held-out ones (guardPointScorer). The GUI's Train panel
+// ("Retrain point decision") goes through here; `sagrid scorer candidates` + `scorer train
+// --guard` do the same in steps.
+#pragma once
+
+#include <atomic>
+#include <cstddef>
+#include <filesystem>
+#include <functional>
+#include <optional>
+#include <string>
+
+#include "core/eval/point_scorer_training.h"
+
+namespace sagrid {
+
+struct ScorerUpdateRequest {
+  std::filesystem::path models;     // networks and passes that make the candidates; its scorer is the current one
+  std::filesystem::path curated;    // the curated training objects (a dataset)
+  std::filesystem::path generated;  // generated objects (a dataset; its val/ split when it has one)
+  std::filesystem::path heldOut;    // curated objects of other sources: the guard's; empty: unguarded
+  ScorerTrainingOptions training;
+  // Per object while candidates are made: the phase ("curated", "generated", "held out"), done,
+  // total and the object.
+  std::function<void(const std::string&, std::size_t, std::size_t, const std::string&)> onProgress;
+  const std::atomic<bool>* cancel = nullptr;  // set: Cancelled is thrown between objects
+};
+
+struct ScorerUpdate {
+  PointScorer scorer;                // the freshly fitted one, adopted or not
+  std::optional<ScorerGuard> guard;  // with a held-out folder
+  bool adopted = true;               // unguarded: always
+  std::size_t curatedSets = 0, generatedSets = 0, heldOutSets = 0;
+  std::string verdict;               // one line: the edits before and after, and the decision
+};
+
+// Throws InvalidArgument when the curated objects give no candidate set with ground truth, or
+// as guardPointScorer does (a held-out object also in training); FileError for unreadable data.
+ScorerUpdate updatePointScorer(const ScorerUpdateRequest& request);
+
+}  // namespace sagrid

@@ -1,0 +1,98 @@
+// The Train panel's "Retrain point decision" (issue 40, item 1): the points curated in the GUI's
+// training set and generated objects retrain the learned point decision of the loaded models,
+// guarded on held-out curated objects; the loaded decision is never overwritten, the verdict per
+// model shows in the panel and goes to scorer_guard.json, and an adopted decision predicts the
+// queue's unreviewed objects again.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include "core/annotate/model_set.h"
+#include "core/annotate/point_scorer.h"
+#include "core/common/atomic_file.h"
+#include "core/dataset/dataset.h"
+#include "core/generate/dataset_generator.h"
+#include "core/labels/labels.h"
+#include "support/test_paths.h"
+#include "ui/app/training_worker.h"
+#include "training_worker_support.h"
+
+namespace sagrid::ui {
+namespace {
+namespace fs = std::filesystem;
+
+const fs::path kShipped = fs::path(SAGRID_SOURCE_DIR) / "resources" / "models";
+
+TrainingStatus retrainDecision(const fs::path& dir, const fs::path& curated,
+                               std::vector<QueueEntry> requeue = {}) {
+  TrainingRequest request;
+  request.requeue = std::move(requeue);
+  request.dataset = curated;
+  request.outDir = dir / "out";
+  request.initDir = dir / "loaded";
+  request.heldOut = dir / "held-out";
+  request.generated = dir / "generated";
+  request.pointScorer = true;
+  return test::runToEnd(std::move(request), 600);
+}
+
+// Generated stand-ins for the curator's training set, the generated objects and held-out curated
+// objects, and the loaded models (the shipped ones), in `dir`.
+void prepare(const fs::path& dir) {
+  gen::generateDataset({{"stove", 2, 61}, {"sink", 2, 62}}, gen::MeshFormat::Obj, dir / "generated");
+  gen::generateDataset({{"stove", 1, 64}, {"sink", 1, 65}}, gen::MeshFormat::Obj, dir / "curated");
+  gen::generateDataset({{"stove", 1, 67}, {"sink", 1, 68}}, gen::MeshFormat::Obj, dir / "held-out");
+  // A stove whose curator deleted every point.
+  gen::generateDataset({{"stove", 1, 69}}, gen::MeshFormat::Obj, dir / "no-points");
+  for (const auto& entry : readDataset(dir / "no-points")) {
+    ObjectLabels labels = readLabels(entry.labels);
+    labels.affordances.clear();
+    writeLabels(entry.labels, labels);
+  }
+  fs::copy(kShipped, dir / "loaded", fs::copy_options::recursive);
+}
+
+// The retrained decision is judged on the held-out objects: written to the models folder out
+// exactly when it needs fewer edits there (else to refused/), with one verdict per model and the
+// figures in scorer_guard.json; it switches off the passes the loaded one did; the loaded file is
+// untouched; adopted, the unreviewed object of the queue is predicted again, the accepted one not.
+TEST(PointScorerRetrainWorker, TheRetrainedDecisionGoesWhereTheHeldOutEditsSay) {
+  const fs::path dir = test::freshTempDir();
+  prepare(dir);
+  const std::string loaded = readFileBytes(dir / "loaded" / kPointScorerFile);
+  const auto queue =
+      test::reviewQueue(dir, readDataset(dir / "held-out").front().mesh, "stove");
+  const std::string accepted = readFileBytes(queue[1].labels);
+
+  const TrainingStatus status = retrainDecision(dir, dir / "curated", queue);
+  ASSERT_TRUE(status.error.empty()) << status.error;
+  const auto guard = nlohmann::json::parse(readFileBytes(dir / "out" / "scorer_guard.json"));
+  const bool adopted = guard.at("adopted").get<bool>();
+  EXPECT_EQ(adopted, guard.at("new_edits").get<int>() < guard.at("current_edits").get<int>())
+      << guard.dump();
+  ASSERT_EQ(status.verdicts.size(), guard.at("models").size() + 1);
+  EXPECT_NE(status.verdicts.back().find(adopted ? ": adopted" : ": refused"), std::string::npos)
+      << status.verdicts.back();
+  const fs::path written = adopted ? dir / "out" : dir / "out" / "refused";
+  const auto fresh = readPointScorer(written);
+  ASSERT_TRUE(fresh.has_value()) << written;
+  EXPECT_EQ(fresh->passesOff, readPointScorer(dir / "loaded")->passesOff);
+  EXPECT_EQ(fs::exists(dir / "out" / kPointScorerFile), adopted);
+  EXPECT_EQ(readFileBytes(dir / "loaded" / kPointScorerFile), loaded);
+  EXPECT_EQ(readFileBytes(queue[1].labels), accepted);
+  EXPECT_EQ(!readLabels(queue[0].labels).affordances.empty(), adopted);
+}
+
+// Curated objects with no point of any model give the decision nothing to learn: the panel says
+// so and nothing is written.
+TEST(PointScorerRetrainWorker, ATrainingSetWithoutPointsIsRefusedWithItsReason) {
+  const fs::path dir = test::freshTempDir();
+  prepare(dir);
+  const TrainingStatus status = retrainDecision(dir, dir / "no-points");
+  EXPECT_NE(status.error.find("nothing to learn"), std::string::npos) << status.error;
+  EXPECT_FALSE(fs::exists(dir / "out" / kPointScorerFile));
+  EXPECT_FALSE(fs::exists(dir / "out" / "refused"));
+}
+
+}  // namespace
+}  // namespace sagrid::ui
