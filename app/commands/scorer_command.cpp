@@ -16,6 +16,8 @@
 #include "core/common/resource_paths.h"
 #include "core/eval/evaluation.h"
 #include "core/eval/point_scorer_training.h"
+#include "core/eval/point_scorer_update.h"
+#include "core/training/training_sources.h"
 #include "core/model/model_files.h"
 
 namespace {
@@ -165,6 +167,54 @@ void setupScorer(CLI::App& root) {
       sagrid::writeFileAtomic(fs::path(l->out) / "scorer_guard.json", verdict.dump(2) + "\n");
     std::fprintf(stderr, "scorer: %zu models, trained on %s -> %s\n", scorer.byModel.size(),
                  scorer.trainedOn.c_str(), (target / sagrid::kPointScorerFile).c_str());
+  });
+
+  struct UpdateOptions {
+    std::string data, generated, heldOut, models, out;
+    sagrid::ScorerTrainingOptions training;
+  };
+  auto u = std::make_shared<UpdateOptions>();
+  auto* upd = cmd->add_subcommand(
+      "update", "Retrain the models folder's decision from curated objects in one step, as the "
+                "GUI's Train panel does: candidates of --data, of generated objects and of "
+                "--held-out made by --models; written to OUT when it needs fewer edits on the "
+                "held-out objects, else to OUT/refused/ (figures in OUT/scorer_guard.json)");
+  upd->add_option("--data", u->data, "Curated training objects (a dataset)")->required();
+  upd->add_option("--generated", u->generated,
+                  "Generated objects the networks were not trained on (default: the bench, its "
+                  "val split)");
+  upd->add_option("--held-out", u->heldOut,
+                  "Curated objects of other sources: the guard's (without: unguarded)");
+  upd->add_option("--models", u->models, "Models folder (default resources/models)");
+  upd->add_option("--out", u->out, "Models folder to write")->required();
+  upd->callback([u] {
+    sagrid::ScorerUpdateRequest request;
+    request.models = u->models.empty() ? sagrid::defaultModelsDir() : fs::path(u->models);
+    request.curated = u->data;
+    request.generated = u->generated.empty() ? sagrid::defaultBenchDir() : fs::path(u->generated);
+    request.heldOut = u->heldOut;
+    request.training = u->training;
+    std::unique_ptr<sagrid::app::ProgressBar> bar;
+    std::string current;
+    request.onProgress = [&](const std::string& phase, std::size_t done, std::size_t total,
+                             const std::string& id) {
+      if (phase != current) bar.reset(), current = phase;
+      if (!bar) bar = std::make_unique<sagrid::app::ProgressBar>("candidates, " + phase, total);
+      bar->update(done, id);
+    };
+    const sagrid::ScorerUpdate update = sagrid::updatePointScorer(request);
+    bar.reset();
+    std::error_code same;
+    if (!(fs::exists(u->out) && fs::equivalent(request.models, u->out, same)))
+      sagrid::model::copyModelFiles(request.models, u->out);
+    const fs::path file = sagrid::writeScorerUpdate(update, u->out);
+    if (update.guard)
+      for (const auto& v : update.guard->byModel)
+        std::fprintf(stderr, "guard: %s: %zu -> %zu edits on %zu held-out points\n",
+                     v.model.c_str(), v.currentEdits, v.newEdits, v.handPoints);
+    std::fprintf(stderr, "scorer update: %zu curated, %zu generated, %zu held-out model sets; %s -> %s\n",
+                 update.curatedSets, update.generatedSets, update.heldOutSets,
+                 update.verdict.c_str(), file.c_str());
   });
 }
 

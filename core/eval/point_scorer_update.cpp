@@ -1,6 +1,7 @@
 #include "core/eval/point_scorer_update.h"
 
 #include "core/annotate/model_set.h"
+#include "core/common/atomic_file.h"
 #include "core/common/error.h"
 #include "core/eval/evaluation.h"
 
@@ -65,6 +66,15 @@ ScorerUpdate updatePointScorer(const ScorerUpdateRequest& request) {
                    (current ? "the current point decision" : "the passes' points") + " -> the retrained one): " +
                    (update.adopted ? "adopted" : "refused, the current decision stays");
   return update;
+}
+
+fs::path writeScorerUpdate(const ScorerUpdate& update, const fs::path& out) {
+  const fs::path dir = update.adopted ? out : out / "refused";
+  fs::create_directories(dir);
+  writePointScorer(dir, update.scorer);
+  if (update.guard)
+    writeFileAtomic(out / "scorer_guard.json", toJson(*update.guard).dump(2) + "\n");
+  return dir / kPointScorerFile;
 }
 
 }  // namespace sagrid

@@ -42,4 +42,9 @@ struct ScorerUpdate {
 // as guardPointScorer does (a held-out object also in training); FileError for unreadable data.
 ScorerUpdate updatePointScorer(const ScorerUpdateRequest& request);
 
+// Writes `update` into the models folder `out`: point_scorer.json there when adopted, else in
+// out/refused/ (out keeps what it had); the guard's figures per model in out/scorer_guard.json.
+// Returns the scorer file written.
+std::filesystem::path writeScorerUpdate(const ScorerUpdate& update, const std::filesystem::path& out);
+
 }  // namespace sagrid

@@ -198,11 +198,8 @@ void TrainingWorker::runPointScorer(const TrainingRequest& request) {
     });
   };
   const ScorerUpdate result = updatePointScorer(update);
-  const fs::path dir = result.adopted ? request.outDir : request.outDir / "refused";
-  fs::create_directories(dir);
-  writePointScorer(dir, result.scorer);
+  const fs::path file = writeScorerUpdate(result, request.outDir);
   if (result.guard) {
-    writeFileAtomic(request.outDir / "scorer_guard.json", toJson(*result.guard).dump(2) + "\n");
     for (const auto& v : result.guard->byModel)
       this->update([&](TrainingStatus& s) {
         s.verdicts.push_back(v.model + ": " + std::to_string(v.currentEdits) + " -> " +
@@ -211,7 +208,7 @@ void TrainingWorker::runPointScorer(const TrainingRequest& request) {
       });
   }
   this->update([&](TrainingStatus& s) { s.verdicts.push_back(result.verdict); });
-  logger()->info("point decision: {}; wrote {}", result.verdict, (dir / kPointScorerFile).string());
+  logger()->info("point decision: {}; wrote {}", result.verdict, file.string());
   const std::string requeued =
       result.adopted ? predictQueueWithAdopted(request, from) : std::string();
   this->update([&](TrainingStatus& s) {
@@ -220,7 +217,7 @@ void TrainingWorker::runPointScorer(const TrainingRequest& request) {
     s.finished = "point decision retrained on " + std::to_string(result.curatedSets) +
                  " curated and " + std::to_string(result.generatedSets) +
                  " generated model sets" +
-                 (result.adopted ? "; adopted" : "; refused: " + (dir / kPointScorerFile).string()) +
+                 (result.adopted ? "; adopted" : "; refused: " + file.string()) +
                  requeued;
   });
 }

@@ -1,0 +1,44 @@
+// sagrid scorer update from the command line (issue 40, item 1): the models folder's point
+// decision retrained from curated objects in one step, as the GUI's Train panel does; a held-out
+// folder that is also training data is one clear error and nothing is written.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include "core/annotate/point_scorer.h"
+#include "core/generate/dataset_generator.h"
+#include "support/test_paths.h"
+
+namespace sagrid {
+namespace {
+namespace fs = std::filesystem;
+using test::quotedPath;
+using test::runSagrid;
+using ::testing::HasSubstr;
+
+TEST(ScorerUpdateCli, WritesTheModelsFolderWithTheVerdictAndRefusesHeldOutTrainingData) {
+  const fs::path dir = test::freshTempDir();
+  gen::generateDataset({{"stove", 1, 71}, {"sink", 1, 72}}, gen::MeshFormat::Obj, dir / "curated");
+  gen::generateDataset({{"stove", 1, 73}, {"sink", 1, 74}}, gen::MeshFormat::Obj, dir / "generated");
+  gen::generateDataset({{"stove", 1, 75}, {"sink", 1, 76}}, gen::MeshFormat::Obj, dir / "held-out");
+  const std::string common = " --data " + quotedPath(dir / "curated") + " --generated " +
+                             quotedPath(dir / "generated") + " --out " + quotedPath(dir / "out");
+
+  auto r = runSagrid("scorer update" + common + " --held-out " + quotedPath(dir / "curated"));
+  EXPECT_NE(r.exitCode, 0) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("stove_s71_00000"));
+  EXPECT_FALSE(fs::exists(dir / "out" / kPointScorerFile));
+
+  r = runSagrid("scorer update" + common + " --held-out " + quotedPath(dir / "held-out"));
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("4 curated, 4 generated, 4 held-out model sets"));
+  const bool adopted = r.output.find(": adopted ->") != std::string::npos;
+  EXPECT_TRUE(adopted || r.output.find("refused, the current decision stays") != std::string::npos)
+      << r.output;
+  // The folder written is a whole models folder: the networks copied, and a scorer either way.
+  EXPECT_TRUE(fs::exists(dir / "out" / "stove.heatsource.json"));
+  EXPECT_TRUE(fs::exists(dir / "out" / "scorer_guard.json"));
+  EXPECT_TRUE(readPointScorer(adopted ? dir / "out" : dir / "out" / "refused").has_value());
+}
+
+}  // namespace
+}  // namespace sagrid
