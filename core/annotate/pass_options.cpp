@@ -2,19 +2,35 @@
 
 namespace sagrid {
 
+namespace {
+
+template <bool PassOptions::*on>
+NamedPass switchedPass(const char* name) {
+  return {name, [](const PassOptions& p) { return !(p.*on); },
+          [](PassOptions& p) { p.*on = false; }};
+}
+
+}  // namespace
+
 const std::vector<NamedPass>& namedPasses() {
   static const std::vector<NamedPass> passes = {
-      {"printed_marks", &PassOptions::printedMarks},   {"mirror_pairs", &PassOptions::mirrorPairs},
-      {"anchored_pairs", &PassOptions::anchoredPairs}, {"repeated_parts", &PassOptions::repeatedParts},
-      {"spout_controls", &PassOptions::spoutControls}, {"spout_outlets", &PassOptions::spoutOutlets},
-      {"part_ownership", &PassOptions::partOwnership}};
+      switchedPass<&PassOptions::printedMarks>("printed_marks"),
+      switchedPass<&PassOptions::mirrorPairs>("mirror_pairs"),
+      switchedPass<&PassOptions::anchoredPairs>("anchored_pairs"),
+      switchedPass<&PassOptions::repeatedParts>("repeated_parts"),
+      switchedPass<&PassOptions::spoutControls>("spout_controls"),
+      switchedPass<&PassOptions::spoutOutlets>("spout_outlets"),
+      switchedPass<&PassOptions::partOwnership>("part_ownership"),
+      {"coarse_to_fine",
+       [](const PassOptions& p) { return p.coarseToFine.has_value() && !*p.coarseToFine; },
+       [](PassOptions& p) { p.coarseToFine = false; }}};
   return passes;
 }
 
 std::vector<std::string> passesOff(const PassOptions& passes) {
   std::vector<std::string> off;
   for (const auto& pass : namedPasses())
-    if (!(passes.*pass.on)) off.push_back(pass.name);
+    if (pass.isOff(passes)) off.push_back(pass.name);
   return off;
 }
 

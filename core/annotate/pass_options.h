@@ -74,11 +74,13 @@ struct PassOptions {
 };
 
 // The passes by name ("printed_marks", "mirror_pairs", "anchored_pairs", "repeated_parts",
-// "spout_controls", "spout_outlets", "part_ownership") with their switch, for files that record
+// "spout_controls", "spout_outlets", "part_ownership", and "coarse_to_fine": the crop pass, off
+// when switched off for every model) with how to tell and switch them off, for files that record
 // which passes ran (a point scorer's candidates).
 struct NamedPass {
   const char* name;
-  bool PassOptions::*on;
+  bool (*isOff)(const PassOptions&);
+  void (*switchOff)(PassOptions&);
 };
 const std::vector<NamedPass>& namedPasses();
 // The names of the passes switched off in `passes`, in namedPasses() order.

@@ -54,7 +54,7 @@ PassOptions withLearnedDecision(PassOptions passes, const ModelSet& models) {
   if (passes.scorer)
     for (const auto& name : passes.scorer->passesOff)
       for (const auto& pass : namedPasses())
-        if (name == pass.name) passes.*pass.on = false;
+        if (name == pass.name) pass.switchOff(passes);
   return passes;
 }
 

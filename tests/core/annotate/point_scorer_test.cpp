@@ -145,17 +145,23 @@ TEST_F(AnnotateWithScorer, ItDecidesForItsModelsOnlyAndIsSwitchedOff) {
   // A scorer that learned from candidates made without some passes switches them off where it
   // decides; without the scorer, or switched off, the passes stay as given.
   PointScorer bare = scorer;
-  bare.passesOff = {"repeated_parts", "part_ownership"};
+  bare.passesOff = {"repeated_parts", "part_ownership", "coarse_to_fine"};
   ModelSet learnedBare = models();
   learnedBare.setPointScorer(bare, dir / kPointScorerFile);
   PassOptions given;
   const PassOptions used = withLearnedDecision(given, learnedBare);
   EXPECT_FALSE(used.repeatedParts);
   EXPECT_FALSE(used.partOwnership);
+  EXPECT_EQ(used.coarseToFine, std::optional<bool>(false));  // the crop pass, for every model
   EXPECT_TRUE(used.mirrorPairs);
+  // What the pipeline ran with is what candidates record: the crop pass counts as off only when
+  // switched off for every model (unset, each card decides).
+  EXPECT_EQ(passesOff(used), bare.passesOff);
+  EXPECT_TRUE(passesOff(given).empty());
   EXPECT_EQ(used.scorer, learnedBare.pointScorer());
   given.learnedDecision = false;
   EXPECT_TRUE(withLearnedDecision(given, learnedBare).repeatedParts);
+  EXPECT_FALSE(withLearnedDecision(given, learnedBare).coarseToFine.has_value());
   EXPECT_EQ(withLearnedDecision(given, learnedBare).scorer, nullptr);
   EXPECT_TRUE(withLearnedDecision(PassOptions{}, plain).repeatedParts);
 
