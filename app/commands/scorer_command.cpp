@@ -104,7 +104,8 @@ void setupScorer(CLI::App& root) {
   auto* cv = cmd->add_subcommand(
       "cv", "Leave one source out over the curated real objects of the candidate files: per "
             "source, the passes' points, a decision fitted on generated objects only and one "
-            "fitted with the curated objects of the other sources; writes OUT/scorer_cv.md, .json");
+            "fitted with the curated objects of the other sources; writes OUT/scorer_cv.md, .json "
+            "and OUT/confidence.json (the object confidence fitted on the points so decided)");
   cv->add_option("--out", l->out, "Report folder (default scorer-cv)");
   cv->add_option("--ks", l->curve.ks,
                  "Learning curve: fit with k curated objects of the other sources too, e.g. "
@@ -122,6 +123,9 @@ void setupScorer(CLI::App& root) {
     const std::string md = sagrid::scorerCrossValidationMarkdown(result);
     sagrid::writeFileAtomic(out / "scorer_cv.md", md);
     sagrid::writeFileAtomic(out / "scorer_cv.json", sagrid::toJson(result).dump(2) + "\n");
+    // The object confidence fitted on the points decided leave one source out: a models folder
+    // takes it by copying OUT/confidence.json.
+    if (result.confidence) sagrid::writeConfidenceCalibration(out, *result.confidence);
     std::cout << md;
   });
 

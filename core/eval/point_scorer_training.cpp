@@ -47,6 +47,36 @@ PointEdits editsOf(const CandidateSet& set, const std::vector<Eigen::Vector3f>& 
   return pointEdits(matchPoints(chosen, set.truth, set.metersPerUnit));
 }
 
+// Per object of `sets`: the largest predicted distance among the points `scorer` chooses (the
+// passes' points where it has no decision), as annotate's object confidence reads it, and
+// whether the object needs no edit.
+void addObjectOutcomes(const std::vector<const CandidateSet*>& sets, const PointScorer& scorer,
+                       std::vector<double>& leastSure, std::vector<bool>& oneKey) {
+  std::map<std::string, std::pair<double, PointEdits>> byObject;
+  for (const CandidateSet* set : sets) {
+    const ModelPointScorer* s = scorer.forModel(set->model);
+    const bool decides = s && !set->candidates.empty();
+    std::vector<std::size_t> chosen;
+    if (decides)
+      chosen = chooseCandidates(candidateProbabilities(s->classifier, set->candidates),
+                                set->candidates, s->choice);
+    else
+      for (std::size_t i = 0; i < set->candidates.size(); ++i)
+        if (set->candidates[i].kept) chosen.push_back(i);
+    std::vector<Eigen::Vector3f> surface;
+    auto& [worst, edits] = byObject[set->source + "/" + set->object];
+    for (std::size_t i : chosen) {
+      surface.push_back(set->candidateSurface[i]);
+      worst = std::max(worst, static_cast<double>(set->candidates[i].distance));
+    }
+    edits += editsOf(*set, decides ? surface : set->keptSurface);
+  }
+  for (const auto& [object, outcome] : byObject) {
+    leastSure.push_back(outcome.first);
+    oneKey.push_back(outcome.second.total() == 0);
+  }
+}
+
 PointChoiceFigures figuresOf(const std::vector<const CandidateSet*>& sets, const Chooser& choose) {
   PointChoiceFigures f;
   std::map<std::string, PointEdits> byObject;
@@ -184,6 +214,7 @@ ScorerCrossValidation crossValidatePointScorer(const std::vector<CandidateSet>& 
     fold.passes = figuresOf(held, passes);
     fold.generatedOnly = generatedOnly ? figuresOf(held, scorerChooser(*generatedOnly)) : fold.passes;
     fold.withCurated = figuresOf(held, scorerChooser(withCurated));
+    addObjectOutcomes(held, withCurated, cv.leastSure, cv.oneKey);
     fold.objects = fold.passes.effort.objects;
     // The learning curve: k objects of the other sources, drawn once per fold.
     std::vector<std::string> order;
@@ -249,6 +280,10 @@ ScorerCrossValidation crossValidatePointScorer(const std::vector<CandidateSet>& 
           .push_back(total([k](const auto& f) -> const auto& { return f.curve[k]; }, unseen));
   }
   cv.candidateRecall = truthPoints ? static_cast<double>(reached) / truthPoints : NAN;
+  if (!cv.leastSure.empty()) {
+    cv.confidence = fitConfidence(cv.leastSure, cv.oneKey);
+    cv.confidence->fittedOn = "the curated objects' points decided leave one source out (sagrid scorer cv)";
+  }
   return cv;
 }
 
@@ -351,6 +386,22 @@ std::string scorerCrossValidationMarkdown(const ScorerCrossValidation& cv) {
       md << "\n";
     }
   }
+  if (cv.confidence) {
+    const ConfidenceCalibration& c = *cv.confidence;
+    md << "\n## Object confidence, out of sample\n\n"
+       << "Fitted on the " << c.objects << " curated objects' points as decided above (right with "
+       << "one key: " << reportCell(100 * c.oneKeyShare, "%.0f %%") << "): P = sigmoid("
+       << reportCell(c.intercept, "%.2f") << " + " << reportCell(c.slope, "%.2f")
+       << " x exp(-d / 0.02)), d the least sure point's predicted distance.\n\n"
+       << "| accept automatically above | objects | right among them |\n|---|---|---|\n";
+    std::vector<double> p;
+    for (double d : cv.leastSure) p.push_back(c.probability(d));
+    for (double threshold : {0.3, 0.5, 0.7, 0.9}) {
+      const AutoAcceptRow row = autoAcceptAt(p, cv.oneKey, threshold);
+      md << "| " << reportCell(threshold, "%.1f") << " | " << reportCell(100 * row.coverage, "%.0f %%")
+         << " | " << reportCell(100 * row.precision, "%.0f %%") << " |\n";
+    }
+  }
   return md.str();
 }
 
@@ -377,6 +428,8 @@ nlohmann::json toJson(const ScorerCrossValidation& cv) {
           {"generated_objects", cv.generatedObjects},
           {"candidate_recall", cv.candidateRecall},
           {"folds", folds},
+          {"objects", {{"least_sure_distance", cv.leastSure}, {"one_key", cv.oneKey}}},
+          {"confidence", cv.confidence ? toJson(*cv.confidence) : nlohmann::json()},
           {"all",
            {{"passes", figuresJson(cv.passes)},
             {"generated_only", figuresJson(cv.generatedOnly)},

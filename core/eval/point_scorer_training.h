@@ -8,11 +8,13 @@
 // counts them.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
+#include "core/annotate/object_confidence.h"
 #include "core/annotate/point_scorer.h"
 #include "core/eval/candidate_sets.h"
 #include "core/eval/curator_effort.h"
@@ -75,6 +77,14 @@ struct ScorerCrossValidation {
   std::vector<PointChoiceFigures> curve, unseenCurve;  // per k, over the folds
   double candidateRecall = 0;  // share of ground-truth points with a candidate within 5 cm
   std::size_t generatedObjects = 0, realObjects = 0;
+  // Per curated object, its points decided by the scorer fitted without its source: annotate's
+  // object-confidence signal (the least sure chosen point's predicted distance) and whether it is
+  // right with one key; and the object confidence fitted on them (core/annotate/
+  // object_confidence.h) — out of sample as far as the points go: no object's points were chosen
+  // by a scorer that saw it.
+  std::vector<double> leastSure;
+  std::vector<bool> oneKey;
+  std::optional<ConfidenceCalibration> confidence;
 };
 
 // Throws InvalidArgument when fewer than two sources of real objects are in `sets`.

@@ -8,6 +8,7 @@
 #include <iterator>
 #include <nlohmann/json.hpp>
 
+#include "core/annotate/point_scorer.h"
 #include "core/generate/dataset_generator.h"
 #include "core/labels/labels.h"
 #include "support/test_paths.h"
@@ -132,9 +133,11 @@ std::vector<Eigen::Vector3f> annotatedPoints(const fs::path& in, const std::stri
   return points;
 }
 
-// The shipped models with both sink cards' point_extraction.coarse_to_fine set to `on`.
+// The shipped models with both sink cards' point_extraction.coarse_to_fine set to `on`, without
+// the learned point decision (it switches the crop pass off where it decides).
 std::string modelsWithSecondPass(const fs::path& dir, bool on) {
   fs::copy(fs::path(SAGRID_SOURCE_DIR) / "resources" / "models", dir);
+  fs::remove(dir / kPointScorerFile);
   for (const char* name : {"sink.fluidsource.json", "sink.togglebutton.json"}) {
     nlohmann::json card = nlohmann::json::parse(std::ifstream(dir / name));
     card["point_extraction"]["coarse_to_fine"] = on;

@@ -154,6 +154,23 @@ TEST(PointScorerTraining, EachFoldIsDecidedByAScorerFittedWithoutItsSource) {
   }
   EXPECT_GT(differs, 0u);
   EXPECT_EQ(toJson(crossValidatePointScorer(sets, {})).dump(), toJson(cv).dump());
+
+  // The object confidence's signal and outcome, one per curated object as its fold decided it:
+  // as many right with one key as the folds count, and a calibration fitted on exactly them.
+  std::size_t objects = 0;
+  double oneKey = 0;
+  for (const auto& fold : cv.folds) {
+    objects += fold.withCurated.effort.objects;
+    oneKey += fold.withCurated.effort.oneKeyShare * fold.withCurated.effort.objects;
+  }
+  ASSERT_EQ(cv.leastSure.size(), objects);
+  ASSERT_EQ(cv.oneKey.size(), objects);
+  EXPECT_NEAR(static_cast<double>(std::count(cv.oneKey.begin(), cv.oneKey.end(), true)), oneKey, 1e-9);
+  for (double d : cv.leastSure) EXPECT_GT(d, 0.0);
+  ASSERT_TRUE(cv.confidence.has_value());
+  EXPECT_TRUE(cv.confidence->fitted);
+  EXPECT_EQ(cv.confidence->objects, objects);
+  EXPECT_NE(scorerCrossValidationMarkdown(cv).find("Object confidence, out of sample"), std::string::npos);
 }
 
 // A scorer that always takes one point: two edits per synthetic object.
