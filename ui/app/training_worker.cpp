@@ -140,7 +140,9 @@ void TrainingWorker::runCategoryClassifier(const TrainingRequest& request) {
   logger()->info("{}; wrote {}", verdictLine, file.string());
   // An adopted classifier decides the unreviewed objects' categories again (their points with
   // them); a refused one changes nothing.
-  const std::string requeued = adopted ? predictQueueWithAdopted(request, from) : std::string();
+  // The GUI predicts from the folder out after any run: made whole, whatever the verdict.
+  completeModelsFolder(from, request.outDir);
+  const std::string requeued = adopted ? predictQueueAgainClause(request) : std::string();
   update([&](TrainingStatus& s) {
     s.fraction = 1.0f;
     s.phase = "done";
@@ -153,16 +155,17 @@ void TrainingWorker::runCategoryClassifier(const TrainingRequest& request) {
   });
 }
 
-std::string TrainingWorker::predictQueueWithAdopted(const TrainingRequest& request,
-                                                    const fs::path& from) {
-  if (request.requeue.empty()) return {};
-  // The models out need the cards to predict with: those of the models in, where it has none.
+void completeModelsFolder(const fs::path& from, const fs::path& out) {
   std::error_code same;
-  if (!fs::equivalent(from, request.outDir, same))
-    for (const auto& entry : fs::directory_iterator(from))
-      if (entry.is_regular_file())
-        fs::copy_file(entry.path(), request.outDir / entry.path().filename(),
-                      fs::copy_options::skip_existing);
+  if (fs::equivalent(from, out, same)) return;
+  fs::create_directories(out);
+  for (const auto& entry : fs::directory_iterator(from))
+    if (entry.is_regular_file())
+      fs::copy_file(entry.path(), out / entry.path().filename(), fs::copy_options::skip_existing);
+}
+
+std::string TrainingWorker::predictQueueAgainClause(const TrainingRequest& request) {
+  if (request.requeue.empty()) return {};
   const RequeueCounts counts = predictQueueAgain(request, "", 0.95, 0.05);
   return "; " + std::to_string(counts.objects) + " unreviewed object(s) predicted again, " +
          std::to_string(counts.recategorized) + " changed category";
@@ -209,8 +212,8 @@ void TrainingWorker::runPointScorer(const TrainingRequest& request) {
   }
   this->update([&](TrainingStatus& s) { s.verdicts.push_back(result.verdict); });
   logger()->info("point decision: {}; wrote {}", result.verdict, file.string());
-  const std::string requeued =
-      result.adopted ? predictQueueWithAdopted(request, from) : std::string();
+  completeModelsFolder(from, request.outDir);
+  const std::string requeued = result.adopted ? predictQueueAgainClause(request) : std::string();
   this->update([&](TrainingStatus& s) {
     s.fraction = 1.0f;
     s.phase = "done";

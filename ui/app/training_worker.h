@@ -58,6 +58,10 @@ struct TrainingStatus {
 std::vector<std::string> trainingTypes(const std::filesystem::path& dataset,
                                        const std::string& category);
 
+// The models folder `out` made whole from `from`: every file it lacks is copied (the GUI predicts
+// from `out` after a run, whatever its verdict). Nothing when both are one folder.
+void completeModelsFolder(const std::filesystem::path& from, const std::filesystem::path& out);
+
 class TrainingWorker {
  public:
   ~TrainingWorker();
@@ -73,10 +77,9 @@ class TrainingWorker {
   void runPointModels(const TrainingRequest& request);
   void runCategoryClassifier(const TrainingRequest& request);
   void runPointScorer(const TrainingRequest& request);
-  // After an adopted update of one file in request.outDir: the models folder made whole from
-  // `from` (files it lacks), and the queue's unreviewed objects predicted again with it. Returns
-  // the summary's clause.
-  std::string predictQueueWithAdopted(const TrainingRequest& request, const std::filesystem::path& from);
+  // After an adopted update: the queue's unreviewed objects predicted again with the models in
+  // request.outDir; the summary's clause.
+  std::string predictQueueAgainClause(const TrainingRequest& request);
   struct RequeueCounts {
     std::size_t objects = 0, moved = 0, compared = 0, recategorized = 0;
   };

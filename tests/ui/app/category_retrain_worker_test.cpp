@@ -75,7 +75,9 @@ TEST(CategoryRetrainWorker, AWorseRetrainingIsRefusedAndTheLoadedClassifierStays
   EXPECT_NE(status.finished.find("1 of its training folders are not on this machine"), std::string::npos)
       << status.finished;
   EXPECT_EQ(readFileBytes(dir / "loaded" / kCategoryClassifierFile), before);
-  EXPECT_FALSE(fs::exists(dir / "out" / kCategoryClassifierFile));
+  // The folder the GUI predicts from afterwards holds the loaded classifier, not the refused one.
+  EXPECT_EQ(readFileBytes(dir / "out" / kCategoryClassifierFile), before);
+  EXPECT_NO_THROW(ModelSet::load(dir / "out"));
   const CategoryClassifier candidate =
       CategoryClassifier::load(dir / "out" / "refused" / kCategoryClassifierFile);
   // Trained on what is here of its own data, then the curated set weighted as real objects.

@@ -77,7 +77,12 @@ TEST(PointScorerRetrainWorker, TheRetrainedDecisionGoesWhereTheHeldOutEditsSay) 
   const auto fresh = readPointScorer(written);
   ASSERT_TRUE(fresh.has_value()) << written;
   EXPECT_EQ(fresh->passesOff, readPointScorer(dir / "loaded")->passesOff);
-  EXPECT_EQ(fs::exists(dir / "out" / kPointScorerFile), adopted);
+  // The GUI predicts from the folder out afterwards: a whole models folder either way, with the
+  // retrained decision where adopted and the loaded one where refused.
+  const ModelSet out = ModelSet::load(dir / "out");
+  ASSERT_NE(out.pointScorer(), nullptr);
+  EXPECT_EQ(readFileBytes(dir / "out" / kPointScorerFile),
+            adopted ? readFileBytes(written / kPointScorerFile) : loaded);
   EXPECT_EQ(readFileBytes(dir / "loaded" / kPointScorerFile), loaded);
   EXPECT_EQ(readFileBytes(queue[1].labels), accepted);
   EXPECT_EQ(!readLabels(queue[0].labels).affordances.empty(), adopted);
