@@ -188,33 +188,33 @@ void TrainingWorker::runPointScorer(const TrainingRequest& request) {
       gen::generateBenchPreset(generated, {});
     }
   }
-  ScorerUpdateRequest update{from, request.dataset, generated, request.heldOut, {}, {}, &m_cancel};
+  ScorerUpdateRequest scorerRequest{from, request.dataset, generated, request.heldOut, {}, {}, &m_cancel};
   const std::map<std::string, std::pair<float, float>> span = {
       {"curated", {0.0f, 0.3f}}, {"generated", {0.3f, 0.5f}}, {"held out", {0.8f, 0.15f}}};
-  update.onProgress = [&](const std::string& phase, std::size_t done, std::size_t total,
-                          const std::string& id) {
-    this->update([&](TrainingStatus& s) {
+  scorerRequest.onProgress = [&](const std::string& phase, std::size_t done, std::size_t total,
+                                 const std::string& id) {
+    update([&](TrainingStatus& s) {
       s.phase = "point candidates, " + phase + " " + std::to_string(done) + "/" +
                 std::to_string(total) + " " + id;
       const auto& [at, width] = span.at(phase);
       s.fraction = at + width * (total ? float(done) / float(total) : 0.0f);
     });
   };
-  const ScorerUpdate result = updatePointScorer(update);
+  const ScorerUpdate result = updatePointScorer(scorerRequest);
   const fs::path file = writeScorerUpdate(result, request.outDir);
   if (result.guard) {
     for (const auto& v : result.guard->byModel)
-      this->update([&](TrainingStatus& s) {
+      update([&](TrainingStatus& s) {
         s.verdicts.push_back(v.model + ": " + std::to_string(v.currentEdits) + " -> " +
                              std::to_string(v.newEdits) + " edits on " +
                              std::to_string(v.handPoints) + " held-out points");
       });
   }
-  this->update([&](TrainingStatus& s) { s.verdicts.push_back(result.verdict); });
+  update([&](TrainingStatus& s) { s.verdicts.push_back(result.verdict); });
   logger()->info("point decision: {}; wrote {}", result.verdict, file.string());
   completeModelsFolder(from, request.outDir);
   const std::string requeued = result.adopted ? predictQueueAgainClause(request) : std::string();
-  this->update([&](TrainingStatus& s) {
+  update([&](TrainingStatus& s) {
     s.fraction = 1.0f;
     s.phase = "done";
     s.finished = "point decision retrained on " + std::to_string(result.curatedSets) +
