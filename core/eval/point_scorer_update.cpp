@@ -35,6 +35,9 @@ std::size_t withTruth(const std::vector<CandidateSet>& sets) {
 }  // namespace
 
 ScorerUpdate updatePointScorer(const ScorerUpdateRequest& request) {
+  // Every folder before any candidate is made (minutes of work).
+  for (const fs::path& dir : {request.curated, request.generated, request.heldOut})
+    if (!dir.empty() && !fs::is_directory(dir)) throw FileError(dir, "dataset folder not found");
   const ModelSet models = ModelSet::load(request.models);
   const auto curated = candidatesOf(models, request.curated, "curated", request);
   if (withTruth(curated) == 0)

@@ -1,6 +1,7 @@
 // sagrid scorer update from the command line (issue 40, item 1): the models folder's point
-// decision retrained from curated objects in one step, as the GUI's Train panel does; a held-out
-// folder that is also training data is one clear error and nothing is written.
+// decision retrained from curated objects in one step, as the GUI's Train panel does; a missing
+// folder, or a held-out folder that is also training data, is one clear error and nothing is
+// written.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
@@ -23,7 +24,13 @@ TEST(ScorerUpdateCli, WritesTheModelsFolderWithTheVerdictAndRefusesHeldOutTraini
   const std::string common = " --data " + quotedPath(dir / "curated") + " --generated " +
                              quotedPath(dir / "generated") + " --out " + quotedPath(dir / "out");
 
-  auto r = runSagrid("scorer update" + common + " --held-out " + quotedPath(dir / "curated"));
+  // A folder that is not there is named before any candidate is made.
+  auto r = runSagrid("scorer update" + common + " --held-out " + quotedPath(dir / "gone"));
+  EXPECT_NE(r.exitCode, 0) << r.output;
+  EXPECT_THAT(r.output, HasSubstr((dir / "gone").string() + ": dataset folder not found"));
+  EXPECT_THAT(r.output, ::testing::Not(HasSubstr("candidates, curated")));
+
+  r = runSagrid("scorer update" + common + " --held-out " + quotedPath(dir / "curated"));
   EXPECT_NE(r.exitCode, 0) << r.output;
   EXPECT_THAT(r.output, HasSubstr("stove_s71_00000"));
   EXPECT_FALSE(fs::exists(dir / "out" / kPointScorerFile));
