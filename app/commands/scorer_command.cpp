@@ -17,7 +17,6 @@
 #include "core/eval/evaluation.h"
 #include "core/eval/point_scorer_training.h"
 #include "core/eval/point_scorer_update.h"
-#include "core/training/training_sources.h"
 #include "core/model/model_files.h"
 
 namespace {
@@ -30,6 +29,23 @@ std::vector<sagrid::CandidateSet> readAll(const std::vector<std::string>& files)
     all.insert(all.end(), std::make_move_iterator(sets.begin()), std::make_move_iterator(sets.end()));
   }
   return all;
+}
+
+// A models folder `out` with the fitted scorer where its verdict says (`from`'s files copied first
+// unless it is `from`), the figures per model and the verdict reported; returns the scorer file.
+fs::path writeModelsWithScorer(const fs::path& from, const fs::path& out,
+                               const sagrid::ScorerUpdate& update) {
+  std::error_code same;
+  if (!(fs::exists(out) && fs::equivalent(from, out, same))) sagrid::model::copyModelFiles(from, out);
+  const fs::path file = sagrid::writeScorerUpdate(update, out);
+  if (update.guard)
+    for (const auto& v : update.guard->byModel)
+      std::fprintf(stderr, "guard: %s: %zu -> %zu edits on %zu held-out points\n",
+                   v.model.c_str(), v.currentEdits, v.newEdits, v.handPoints);
+  std::fprintf(stderr, "scorer: %zu models, trained on %s; %s -> %s\n",
+               update.scorer.byModel.size(), update.scorer.trainedOn.c_str(),
+               update.verdict.c_str(), file.c_str());
+  return file;
 }
 
 // The options `cv` and `train` share: the candidate files and how the decision is fitted.
@@ -146,36 +162,15 @@ void setupScorer(CLI::App& root) {
     const auto sets = readAll(l->candidates);
     std::vector<const sagrid::CandidateSet*> all;
     for (const auto& s : sets) all.push_back(&s);
-    sagrid::PointScorer scorer = sagrid::trainPointScorer(all, l->training);
     const fs::path from = l->models.empty() ? sagrid::defaultModelsDir() : fs::path(l->models);
-    fs::path target = l->out;
-    nlohmann::json verdict;
-    if (!l->guard.empty()) {
-      const auto current = sagrid::readPointScorer(from);
-      const auto guard =
-          sagrid::guardPointScorer(current ? &*current : nullptr, scorer, readAll(l->guard), all);
-      for (const auto& v : guard.byModel)
-        std::fprintf(stderr, "guard: %s: %zu -> %zu edits on %zu held-out points\n",
-                     v.model.c_str(), v.currentEdits, v.newEdits, v.handPoints);
-      std::fprintf(stderr, "guard: %zu -> %zu edits: %s\n", guard.currentEdits, guard.newEdits,
-                   guard.adopted ? "adopted" : "refused, the current decision stays");
-      verdict = sagrid::toJson(guard);
-      if (!guard.adopted) target = fs::path(l->out) / "refused";
-    }
-    std::error_code same;
-    if (!(fs::exists(l->out) && fs::equivalent(from, l->out, same)))
-      sagrid::model::copyModelFiles(from, l->out);
-    fs::create_directories(target);
-    sagrid::writePointScorer(target, scorer);
-    if (!verdict.is_null())
-      sagrid::writeFileAtomic(fs::path(l->out) / "scorer_guard.json", verdict.dump(2) + "\n");
-    std::fprintf(stderr, "scorer: %zu models, trained on %s -> %s\n", scorer.byModel.size(),
-                 scorer.trainedOn.c_str(), (target / sagrid::kPointScorerFile).c_str());
+    writeModelsWithScorer(from, l->out,
+                          sagrid::judgeScorerUpdate(sagrid::trainPointScorer(all, l->training),
+                                                    sagrid::readPointScorer(from),
+                                                    readAll(l->guard), all));
   });
 
   struct UpdateOptions {
     std::string data, generated, heldOut, models, out;
-    sagrid::ScorerTrainingOptions training;
   };
   auto u = std::make_shared<UpdateOptions>();
   auto* upd = cmd->add_subcommand(
@@ -195,9 +190,8 @@ void setupScorer(CLI::App& root) {
     sagrid::ScorerUpdateRequest request;
     request.models = u->models.empty() ? sagrid::defaultModelsDir() : fs::path(u->models);
     request.curated = u->data;
-    request.generated = u->generated.empty() ? sagrid::defaultBenchDir() : fs::path(u->generated);
+    request.generated = u->generated;
     request.heldOut = u->heldOut;
-    request.training = u->training;
     std::unique_ptr<sagrid::app::ProgressBar> bar;
     std::string current;
     request.onProgress = [&](const std::string& phase, std::size_t done, std::size_t total,
@@ -208,17 +202,9 @@ void setupScorer(CLI::App& root) {
     };
     const sagrid::ScorerUpdate update = sagrid::updatePointScorer(request);
     bar.reset();
-    std::error_code same;
-    if (!(fs::exists(u->out) && fs::equivalent(request.models, u->out, same)))
-      sagrid::model::copyModelFiles(request.models, u->out);
-    const fs::path file = sagrid::writeScorerUpdate(update, u->out);
-    if (update.guard)
-      for (const auto& v : update.guard->byModel)
-        std::fprintf(stderr, "guard: %s: %zu -> %zu edits on %zu held-out points\n",
-                     v.model.c_str(), v.currentEdits, v.newEdits, v.handPoints);
-    std::fprintf(stderr, "scorer update: %zu curated, %zu generated, %zu held-out model sets; %s -> %s\n",
-                 update.curatedSets, update.generatedSets, update.heldOutSets,
-                 update.verdict.c_str(), file.c_str());
+    std::fprintf(stderr, "scorer update: %zu curated, %zu generated, %zu held-out model sets\n",
+                 update.curatedSets, update.generatedSets, update.heldOutSets);
+    writeModelsWithScorer(request.models, u->out, update);
   });
 }
 

@@ -4,6 +4,8 @@
 #include "core/common/atomic_file.h"
 #include "core/common/error.h"
 #include "core/eval/evaluation.h"
+#include "core/generate/dataset_generator.h"
+#include "core/training/training_sources.h"
 
 namespace sagrid {
 
@@ -34,40 +36,55 @@ std::size_t withTruth(const std::vector<CandidateSet>& sets) {
 
 }  // namespace
 
+ScorerUpdate judgeScorerUpdate(PointScorer fresh, const std::optional<PointScorer>& current,
+                               const std::vector<CandidateSet>& heldOut,
+                               const std::vector<const CandidateSet*>& training) {
+  ScorerUpdate update;
+  update.scorer = std::move(fresh);
+  update.heldOutSets = heldOut.size();
+  if (heldOut.empty()) {
+    update.verdict = "unguarded: the retrained point decision is kept, better or not";
+    return update;
+  }
+  update.guard = guardPointScorer(current ? &*current : nullptr, update.scorer, heldOut, training);
+  update.adopted = update.guard->adopted;
+  update.verdict = std::to_string(update.guard->currentEdits) + " -> " +
+                   std::to_string(update.guard->newEdits) + " edits on the held-out objects (" +
+                   (current ? "the current point decision" : "the passes' points") +
+                   " -> the retrained one): " +
+                   (update.adopted ? "adopted" : "refused, the current decision stays");
+  return update;
+}
+
 ScorerUpdate updatePointScorer(const ScorerUpdateRequest& request) {
   // Every folder before any candidate is made (minutes of work).
   for (const fs::path& dir : {request.curated, request.generated, request.heldOut})
     if (!dir.empty() && !fs::is_directory(dir)) throw FileError(dir, "dataset folder not found");
+  fs::path generatedDir = request.generated;
+  if (generatedDir.empty()) {
+    generatedDir = defaultBenchDir();
+    if (!fs::exists(generatedDir / "val" / "manifest.jsonl"))
+      gen::generateBenchPreset(generatedDir, [&](int done, int total) {
+        if (request.onProgress) request.onProgress("bench", done, total, "");
+      });
+  }
   const ModelSet models = ModelSet::load(request.models);
   const auto curated = candidatesOf(models, request.curated, "curated", request);
   if (withTruth(curated) == 0)
     throw InvalidArgument("the curated objects of " + request.curated.string() +
                           " give the point decision nothing to learn: no object with points of "
                           "a model in " + request.models.string());
-  std::vector<CandidateSet> generated;
-  if (!request.generated.empty())
-    generated = candidatesOf(models, request.generated, "generated", request);
+  const auto generated = candidatesOf(models, generatedDir, "generated", request);
   std::vector<const CandidateSet*> training;
   for (const auto& s : curated) training.push_back(&s);
   for (const auto& s : generated) training.push_back(&s);
-
-  ScorerUpdate update;
+  const auto heldOut = request.heldOut.empty()
+                           ? std::vector<CandidateSet>{}
+                           : candidatesOf(models, request.heldOut, "held out", request);
+  ScorerUpdate update = judgeScorerUpdate(trainPointScorer(training, request.training),
+                                          readPointScorer(request.models), heldOut, training);
   update.curatedSets = curated.size();
   update.generatedSets = generated.size();
-  update.scorer = trainPointScorer(training, request.training);
-  if (request.heldOut.empty()) {
-    update.verdict = "unguarded: the retrained point decision is kept, better or not";
-    return update;
-  }
-  const auto heldOut = candidatesOf(models, request.heldOut, "held out", request);
-  update.heldOutSets = heldOut.size();
-  const auto current = readPointScorer(request.models);
-  update.guard = guardPointScorer(current ? &*current : nullptr, update.scorer, heldOut, training);
-  update.adopted = update.guard->adopted;
-  update.verdict = std::to_string(update.guard->currentEdits) + " -> " +
-                   std::to_string(update.guard->newEdits) + " edits on the held-out objects (" +
-                   (current ? "the current point decision" : "the passes' points") + " -> the retrained one): " +
-                   (update.adopted ? "adopted" : "refused, the current decision stays");
   return update;
 }
 

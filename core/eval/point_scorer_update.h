@@ -21,11 +21,14 @@ namespace sagrid {
 struct ScorerUpdateRequest {
   std::filesystem::path models;     // networks and passes that make the candidates; its scorer is the current one
   std::filesystem::path curated;    // the curated training objects (a dataset)
-  std::filesystem::path generated;  // generated objects (a dataset; its val/ split when it has one)
+  // Generated objects (a dataset; its val/ split when it has one). Empty: the bench
+  // (defaultBenchDir(), its val split: objects the networks were not trained on), generated once
+  // when missing.
+  std::filesystem::path generated;
   std::filesystem::path heldOut;    // curated objects of other sources: the guard's; empty: unguarded
   ScorerTrainingOptions training;
-  // Per object while candidates are made: the phase ("curated", "generated", "held out"), done,
-  // total and the object.
+  // Per object while candidates are made: the phase ("curated", "generated", "held out"; "bench"
+  // while the bench is generated), done, total and the object.
   std::function<void(const std::string&, std::size_t, std::size_t, const std::string&)> onProgress;
   const std::atomic<bool>* cancel = nullptr;  // set: Cancelled is thrown between objects
 };
@@ -41,6 +44,13 @@ struct ScorerUpdate {
 // Throws InvalidArgument when the curated objects give no candidate set with ground truth, or
 // as guardPointScorer does (a held-out object also in training); FileError for unreadable data.
 ScorerUpdate updatePointScorer(const ScorerUpdateRequest& request);
+
+// `fresh` judged against `current` (none: the passes' points) on the held-out candidates
+// (guardPointScorer; none: unguarded, adopted), with the one-line verdict. `sagrid scorer train
+// --guard` and updatePointScorer both decide here.
+ScorerUpdate judgeScorerUpdate(PointScorer fresh, const std::optional<PointScorer>& current,
+                               const std::vector<CandidateSet>& heldOut,
+                               const std::vector<const CandidateSet*>& training);
 
 // Writes `update` into the models folder `out`: point_scorer.json there when adopted, else in
 // out/refused/ (out keeps what it had); the guard's figures per model in out/scorer_guard.json.

@@ -16,10 +16,8 @@
 #include "core/common/log.h"
 #include "core/dataset/labels_mesh.h"
 #include "core/eval/point_scorer_update.h"
-#include "core/generate/dataset_generator.h"
 #include "core/labels/labels.h"
 #include "core/training/dataset_training.h"
-#include "core/training/training_sources.h"
 
 namespace sagrid::ui {
 
@@ -178,24 +176,19 @@ void TrainingWorker::runPointScorer(const TrainingRequest& request) {
     update([&](TrainingStatus& s) { s.phase = "checking the curated data and " + from.string(); });
     checkGuardedUpdate({from, {}, {}, request.heldOut, {}, {}, {}}, {request.dataset});
   }
-  // Generated objects the networks were not trained on, beside the curated ones (as the shipped
-  // decision was trained: resources/models/README.md).
-  fs::path generated = request.generated;
-  if (generated.empty()) {
-    generated = defaultBenchDir();
-    if (!fs::exists(generated / "val" / "manifest.jsonl")) {
-      update([&](TrainingStatus& s) { s.phase = "generating the bench (once)"; });
-      gen::generateBenchPreset(generated, {});
-    }
-  }
-  ScorerUpdateRequest scorerRequest{from, request.dataset, generated, request.heldOut, {}, {}, &m_cancel};
-  const std::map<std::string, std::pair<float, float>> span = {
-      {"curated", {0.0f, 0.3f}}, {"generated", {0.3f, 0.5f}}, {"held out", {0.8f, 0.15f}}};
+  // Beside the curated objects, generated ones the networks were not trained on (request.generated;
+  // empty: the bench's val split, generated once when missing), as the shipped decision was trained.
+  ScorerUpdateRequest scorerRequest{from,  request.dataset, request.generated, request.heldOut,
+                                    {},    {},              &m_cancel};
+  const std::map<std::string, std::pair<float, float>> span = {{"bench", {0.0f, 0.0f}},
+                                                               {"curated", {0.0f, 0.3f}},
+                                                               {"generated", {0.3f, 0.5f}},
+                                                               {"held out", {0.8f, 0.15f}}};
   scorerRequest.onProgress = [&](const std::string& phase, std::size_t done, std::size_t total,
                                  const std::string& id) {
     update([&](TrainingStatus& s) {
-      s.phase = "point candidates, " + phase + " " + std::to_string(done) + "/" +
-                std::to_string(total) + " " + id;
+      s.phase = (phase == "bench" ? "generating the bench (once) " : "point candidates, " + phase + " ") +
+                std::to_string(done) + "/" + std::to_string(total) + " " + id;
       const auto& [at, width] = span.at(phase);
       s.fraction = at + width * (total ? float(done) / float(total) : 0.0f);
     });
