@@ -353,6 +353,17 @@ nlohmann::json figuresJson(const PointChoiceFigures& f) {
 }
 }  // namespace
 
+double signalAuc(const ScorerCrossValidation& cv) {
+  double pairs = 0, ordered = 0;
+  for (std::size_t a = 0; a < cv.leastSure.size(); ++a)
+    for (std::size_t b = 0; b < cv.leastSure.size(); ++b)
+      if (cv.oneKey[a] && !cv.oneKey[b]) {
+        ++pairs;
+        ordered += cv.leastSure[a] < cv.leastSure[b] ? 1.0 : cv.leastSure[a] == cv.leastSure[b] ? 0.5 : 0.0;
+      }
+  return pairs > 0 ? ordered / pairs : NAN;
+}
+
 std::string scorerCrossValidationMarkdown(const ScorerCrossValidation& cv) {
   std::ostringstream md;
   md << "# Learned point decision, leave one source out\n\n"
@@ -394,6 +405,8 @@ std::string scorerCrossValidationMarkdown(const ScorerCrossValidation& cv) {
        << reportCell(c.intercept, "%.2f") << " + " << reportCell(c.slope, "%.2f")
        << " x exp(-d / 0.02)), d the least sure point's predicted distance.\n\n"
        << "| accept automatically above | objects | right among them |\n|---|---|---|\n";
+    md << "How well the signal orders the objects: " << reportCell(signalAuc(cv), "%.2f")
+       << " (AUC: the share of (right, wrong) object pairs where the right one's point is surer).\n\n";
     std::vector<double> p;
     for (double d : cv.leastSure) p.push_back(c.probability(d));
     for (double threshold : {0.3, 0.5, 0.7, 0.9}) {
@@ -428,7 +441,8 @@ nlohmann::json toJson(const ScorerCrossValidation& cv) {
           {"generated_objects", cv.generatedObjects},
           {"candidate_recall", cv.candidateRecall},
           {"folds", folds},
-          {"objects", {{"least_sure_distance", cv.leastSure}, {"one_key", cv.oneKey}}},
+          {"objects",
+           {{"least_sure_distance", cv.leastSure}, {"one_key", cv.oneKey}, {"signal_auc", signalAuc(cv)}}},
           {"confidence", cv.confidence ? toJson(*cv.confidence) : nlohmann::json()},
           {"all",
            {{"passes", figuresJson(cv.passes)},

@@ -113,6 +113,11 @@ ScorerGuard guardPointScorer(const PointScorer* current, const PointScorer& fres
                              const std::vector<const CandidateSet*>& training);
 nlohmann::json toJson(const ScorerGuard& guard);
 
+// How well the object-confidence signal orders cv's objects: the share of (right, wrong) pairs in
+// which the right object's least sure point has the smaller predicted distance (ties count half);
+// NaN without both kinds.
+double signalAuc(const ScorerCrossValidation& cv);
+
 std::string scorerCrossValidationMarkdown(const ScorerCrossValidation& cv);
 nlohmann::json toJson(const ScorerCrossValidation& cv);
 

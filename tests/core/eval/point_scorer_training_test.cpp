@@ -171,6 +171,11 @@ TEST(PointScorerTraining, EachFoldIsDecidedByAScorerFittedWithoutItsSource) {
   EXPECT_TRUE(cv.confidence->fitted);
   EXPECT_EQ(cv.confidence->objects, objects);
   EXPECT_NE(scorerCrossValidationMarkdown(cv).find("Object confidence, out of sample"), std::string::npos);
+  // The AUC by hand: one right object surer than one wrong object, and a tie.
+  ScorerCrossValidation three;
+  three.leastSure = {0.01, 0.02, 0.02};
+  three.oneKey = {true, false, true};
+  EXPECT_DOUBLE_EQ(signalAuc(three), 0.75);
 }
 
 // A scorer that always takes one point: two edits per synthetic object.
