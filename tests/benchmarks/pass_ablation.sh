@@ -1,7 +1,9 @@
 #!/bin/bash
 # Each hand-set pass of core/annotate under the learned point decision, left out by source (issue
 # 40, item 3): candidates made with one pass on and every other pass (and the crop pass) off, then
-# `sagrid scorer cv` on them; the passes-off baseline is the shipped decision's candidates.
+# `sagrid scorer cv` on them; "none" (every pass off) is the shipped decision's candidates, and
+# "coarse-to-fine" has the crop pass as each card says. The summary counts, per source, whether
+# each configuration needs fewer, more or as many edits as "none".
 #   tests/benchmarks/pass_ablation.sh build/sagrid MODELS REAL SH BENCH OUT
 # MODELS: a models folder without point_scorer.json (the passes asked for are the passes run);
 # REAL: curated wild-pool stoves and sinks + real-dev in one folder; SH: the Sweet Home 3D corpus
@@ -13,9 +15,9 @@ PASSES="printed-marks mirror-pairs repeated-parts spout-controls spout-outlets p
 T="--tuned-on BlendSwap-CC-0 --tuned-on BlendSwap-CC-BY --tuned-on KatorLegaz --tuned-on Scopia --tuned-on default --tuned-on real-loso"
 mkdir -p "$OUT"
 cd "$OUT"
-for pass in none $PASSES; do
-  off="--no-coarse-to-fine"
-  for p in $PASSES; do [ "$p" != "$pass" ] && off="$off --no-$p"; done
+for pass in none coarse-to-fine $PASSES; do
+  off=""
+  for p in coarse-to-fine $PASSES; do [ "$p" != "$pass" ] && off="$off --no-$p"; done
   $S scorer candidates $off --models "$MODELS" --data "$REAL" --out "$pass-real.json" > "$pass-real.log" 2>&1
   $S scorer candidates $off --models "$MODELS" --data "$SH/real-train" --data "$SH/real-val" \
     --out "$pass-sh.json" > "$pass-sh.log" 2>&1
@@ -23,13 +25,20 @@ for pass in none $PASSES; do
   $S scorer cv $T --candidates "$pass-real.json" --candidates "$pass-sh.json" \
     --candidates "$pass-bench.json" --out "cv-$pass" > "cv-$pass.log" 2>&1
 done
-{
-  echo "| pass on | all: edits / one key / error | unseen: edits / one key / error |"
-  echo "|---|---|---|"
-  for pass in none $PASSES; do
-    all=$(grep -F '| **all** |' "cv-$pass/scorer_cv.md" | awk -F'|' '{print $10"/"$11"/"$12}')
-    unseen=$(grep -F '| **sources no pass was made on** |' "cv-$pass/scorer_cv.md" | awk -F'|' '{print $10"/"$11"/"$12}')
-    echo "| $pass | $all | $unseen |"
-  done
-} > summary.md
-cat summary.md
+python3 - $PASSES <<'PY' | tee summary.md
+import json, sys
+tuned = {'BlendSwap-CC-0', 'BlendSwap-CC-BY', 'KatorLegaz', 'Scopia', 'default', 'real-loso'}
+def cells(f):
+    return '%.2f / %.0f %% / %.1f cm' % (f['edits_per_hand_point'], 100 * f['one_key_share'], 100 * f['single_error_m'])
+base = json.load(open('cv-none/scorer_cv.json'))
+print('| on | unseen: edits / one key / error | all | unseen sources fewer / more / as many edits than none | tuned-on sources |')
+print('|---|---|---|---|---|')
+for name in ['none', 'coarse-to-fine'] + sys.argv[1:]:
+    cv = json.load(open('cv-%s/scorer_cv.json' % name))
+    counts = {True: [0, 0, 0], False: [0, 0, 0]}
+    for a, b in zip(base['folds'], cv['folds']):
+        ea, eb = a['with_curated']['edits'], b['with_curated']['edits']
+        counts[a['source'] in tuned][0 if eb < ea else 1 if eb > ea else 2] += 1
+    print('| %s | %s | %s | %s | %s |' % (name, cells(cv['unseen']['with_curated']), cells(cv['all']['with_curated']),
+          ' / '.join(map(str, counts[False])), ' / '.join(map(str, counts[True]))))
+PY
