@@ -49,7 +49,7 @@ void setupGenerate(CLI::App& root) {
          "appliances among them; wall-fixtures: "
          "the dressed sinks the shipped sink models also train on (OUT/wall-fixtures 300); "
          "glass-hobs: stoves, half of them bare glass hobs (OUT/glass-hobs 300; the shipped stove "
-         "models do not train on them, README: the texture pass)")
+         "models do not train on them, README: `generate --glass-hobs`)")
       ->check(CLI::IsMember(
           {"bench", "distractors", "distractors-appliances", "wall-fixtures", "glass-hobs"}));
   cmd->add_option(

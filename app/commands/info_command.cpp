@@ -9,10 +9,9 @@
 #include "app/command_registry.h"
 #include "app/commands/up_axis_option.h"
 #include "core/annotate/burner_caps_rule.h"
-#include "core/annotate/repeated_parts_pass.h"
+#include "core/annotate/point_passes.h"
 #include "core/controls/control_part.h"
 #include "core/controls/control_turn.h"
-#include "core/features/printed_marks.h"
 #include "core/geometry/material_parts.h"
 #include "core/geometry/surface_scene.h"
 #include "core/grid/mesh_summary.h"
@@ -24,26 +23,15 @@
 
 namespace {
 
-void listCircles(const char* kind, const std::vector<sagrid::PrintedCircle>& circles,
-                 sagrid::UpAxis fileUp) {
-  std::printf("%s: %zu\n", kind, circles.size());
-  for (const auto& c : circles) {
-    const Eigen::Vector3f p = sagrid::zUpToFile(c.centre, fileUp);
-    std::printf("  centre (%g, %g, %g)  radius %g  support %.2f\n", p.x(), p.y(), p.z(), c.radius,
-                c.support);
-  }
-}
-
-// The small parts (those the repeated-parts and part-ownership passes reason about), with the
-// copies of each as the repeated-parts pass finds them.
+// The small parts (those the point candidates are seeded from), with the congruent copies of each
+// (a candidate's part_copies feature).
 void listSmallParts(const std::vector<sagrid::ConnectedPart>& parts, const sagrid::Normalization& n,
                     sagrid::UpAxis fileUp) {
-  const sagrid::RepeatedPartSettings settings;
   std::vector<std::size_t> small;
   for (std::size_t p = 0; p < parts.size(); ++p)
-    if (sagrid::isSmallPart(parts[p], settings.contact.maxPartDiagonal)) small.push_back(p);
+    if (sagrid::isSmallPart(parts[p], sagrid::PartContact{}.maxPartDiagonal)) small.push_back(p);
   std::printf("small parts: %zu of %zu\n", small.size(), parts.size());
-  const sagrid::PartCopies copies(parts, settings.congruenceTolerance);
+  const sagrid::PartCopies copies(parts, sagrid::kCopyTolerance);
   for (std::size_t p : small) {
     const Eigen::Vector3f c = sagrid::zUpToFile(n.toMesh(parts[p].box.center()), fileUp);
     const Eigen::Vector3f size = parts[p].box.sizes() / n.scale;
@@ -124,7 +112,7 @@ void setupInfo(CLI::App& root) {
   struct Options {
     std::string mesh, up;
     int resolution = sagrid::kDefaultGridResolution;
-    bool json = false, marks = false, parts = false, materialParts = false;
+    bool json = false, parts = false, materialParts = false;
     std::string controls, turnedMesh, unitsFor;
     float turn = 0.6f;
   };
@@ -134,14 +122,11 @@ void setupInfo(CLI::App& root) {
   cmd->add_option("--resolution", o->resolution, "Grid resolution N for the occupancy count (N^3)")
       ->check(CLI::Range(1, 1024));
   cmd->add_flag("--json", o->json, "Print the report as one JSON object");
-  cmd->add_flag("--printed-marks", o->marks,
-                "Also list the circles printed on upward textured surfaces that the texture pass "
-                "reads (cooking zones, touch symbols), in the file's frame");
   cmd->add_flag(
       "--parts", o->parts,
-      "Also list the mesh's small parts (a knob, a cap, a handle: those the repeated-parts "
-      "and part-ownership passes reason about) and how many copies each has, and the round flat "
-      "families the burner-cap rule of the category reads");
+      "Also list the mesh's small parts (a knob, a cap, a handle: those the point candidates "
+      "are seeded from) and how many copies each has, and the round flat families the "
+      "burner-cap rule of the category reads");
   cmd->add_flag("--material-parts", o->materialParts,
                 "Also list, per material, the connected parts of its triangles with their box "
                 "centre in the file's frame and size: where zones, knobs and handles are drawn in "
@@ -176,16 +161,11 @@ void setupInfo(CLI::App& root) {
         std::printf("units guess: %s, %g m per unit (%s)\n", units->unit.c_str(),
                     units->metersPerUnit, units->reason.c_str());
     }
-    if (!o->marks && !o->parts && !o->materialParts && o->controls.empty()) return;
+    if (!o->parts && !o->materialParts && o->controls.empty()) return;
     const sagrid::ImportOptions import(summary.fileUp, /*detect=*/false);
     const sagrid::Mesh mesh = sagrid::importMesh(o->mesh, import);
     if (o->materialParts) listMaterialParts(mesh);
     if (!o->controls.empty()) listControls(mesh, o->controls, o->turn, o->turnedMesh);
-    if (o->marks) {
-      const sagrid::PrintedMarks marks = sagrid::findPrintedMarks(mesh);
-      listCircles("printed zones", marks.zones, mesh.fileUp);
-      listCircles("printed symbols", marks.symbols, mesh.fileUp);
-    }
     if (!o->parts) return;
     const auto normalization = sagrid::Normalization::fromMesh(mesh);
     listSmallParts(sagrid::normalizedParts(mesh, normalization), normalization, mesh.fileUp);

@@ -199,7 +199,7 @@ AnnotationResult annotateMeshFile(const fs::path& meshFile, const std::string& i
       // No hard gate: the likeliest category's points, as suggestions.
       const auto closestModels = models.forCategory(r.closestCategory);
       const CategoryPoints suggested =
-          predictCategoryPoints(closestModels, r.closestCategory, {mesh, features, scene, featureOptions}, passes,
+          predictCategoryPoints(closestModels, {mesh, features, scene, featureOptions}, passes,
                                 options.mode, options.counts, [](std::size_t) {});
       appendPredictedPoints(r.labels, suggested.predictions);
       markSuggestions(r.labels, r.closestCategory);
@@ -210,13 +210,12 @@ AnnotationResult annotateMeshFile(const fs::path& meshFile, const std::string& i
   }
   const auto categoryModels = models.forCategory(r.category);
   CategoryPoints points = predictCategoryPoints(
-      categoryModels, r.category, {mesh, features, scene, featureOptions}, passes, options.mode,
+      categoryModels, {mesh, features, scene, featureOptions}, passes, options.mode,
       options.counts, [&](std::size_t m) {
         stage(0.7f + 0.3f * static_cast<float>(m) / static_cast<float>(categoryModels.size()),
               categoryModels[m]->card().name);
       });
   r.predictions = std::move(points.predictions);
-  const PrintedMarks& printed = points.printed;
   appendPredictedPoints(r.labels, r.predictions);
   const double evidence = r.evidence = points.evidence;
   const auto* classifier = models.categoryClassifier();
@@ -242,9 +241,7 @@ AnnotationResult annotateMeshFile(const fs::path& meshFile, const std::string& i
                                   {"category_retrieved", r.categoryRetrieved},
                                   {"object_confidence", r.objectConfidence},
                                   {"object_confidence_calibrated", options.confidence.fitted},
-                                  {"symmetries", options.symmetries},
-                                  {"printed_zones", printed.zones.size()},
-                                  {"printed_symbols", printed.symbols.size()}};
+                                  {"symmetries", options.symmetries}};
   if (decided && decided->byBurnerCaps)
     r.labels.extra["prediction"]["category_by_burner_caps"] = true;
   if (r.categoryRetrieved && classifier && !classifier->evidence.empty())

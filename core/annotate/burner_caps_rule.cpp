@@ -4,7 +4,6 @@
 
 #include "core/geometry/connected_parts.h"
 #include "core/mesh/mesh.h"
-#include "core/points/repeated_parts.h"
 
 namespace sagrid {
 

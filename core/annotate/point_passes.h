@@ -1,10 +1,15 @@
 // The sequence that turns an object's features into the points of every model of its category:
 // per model the field (averaged over symmetric copies), the instances, the coarse-to-fine crop,
-// then the automatic count's passes (mirror pairs, repeated parts, spout outlets), the printed
-// marks, across the models the part-ownership pass, and last, where the models folder has a point
-// scorer (core/annotate/point_scorer.h), its choice among the point candidates. `annotate` and
-// `eval` both call it, so what eval measures is what annotate writes; PassOptions switches the
-// steps off one by one.
+// and last, where the models folder has a point scorer (core/annotate/point_scorer.h), its choice
+// among the point candidates (the field's minima, the count's points, the mesh's small parts).
+// `annotate` and `eval` both call it, so what eval measures is what annotate writes; PassOptions
+// switches the steps off one by one.
+//
+// The hand-set passes that ran between the count and the decision (mirror pairs, repeated parts
+// and burner caps, spout controls and outlets, part ownership, printed marks) were removed in
+// session 33: under the learned decision, each one on alone, left out by source, needed more
+// curator edits on the 13 wild-pool repositories no pass was made on than all of them off
+// (tests/benchmarks/pass_ablation.sh at commit 4e1928e).
 #pragma once
 
 #include <functional>
@@ -13,15 +18,14 @@
 #include <vector>
 
 #include "core/annotate/annotate.h"
-#include "core/features/printed_marks.h"
 #include "core/points/point_candidates.h"
 
 namespace sagrid {
 
 struct Mesh;
 
-// The object as the models and passes see it: the mesh (file frame, z-up copy used for the
-// passes), its features and surface, and the feature options the crop pass voxelizes with.
+// The object as the models see it: the mesh (file frame), its features and surface, and the
+// feature options the crop pass voxelizes with.
 struct ObjectForPasses {
   const Mesh& mesh;
   const FeatureGrid& features;
@@ -31,28 +35,31 @@ struct ObjectForPasses {
 
 struct CategoryPoints {
   std::vector<ModelPrediction> predictions;  // one per model, in the models' order
-  PrintedMarks printed;                      // what the texture pass found (empty when off)
-  // Per model, its point candidates after the passes (PassOptions::keepCandidates; else empty).
+  // Per model, its point candidates (PassOptions::keepCandidates; else empty).
   std::vector<std::vector<PointCandidate>> candidates;
-  // The category's evidence (category_evidence.h): the best point confidence of the count and its
-  // passes, before a learned decision chooses; the evidence gate was fitted on it.
+  // The category's evidence (category_evidence.h): the best point confidence of the count, before
+  // a learned decision chooses; the evidence gate was fitted on it.
   double evidence = 0;
 };
 
 class ModelSet;
+struct Normalization;
+
+// The connected parts of `mesh` (z-up mesh frame) in the normalized frame of `normalization`: the
+// parts the point candidates are seeded from.
+std::vector<ConnectedPart> normalizedParts(const Mesh& mesh, const Normalization& normalization);
 
 // `passes` with `models`' learned point decision (ModelSet::pointScorer) when
-// passes.learnedDecision is on, and the passes it learned without switched off; without it, or
-// off, no scorer and the passes as given.
+// passes.learnedDecision is on, and the passes it learned without (the crop) switched off; without
+// it, or off, no scorer and the passes as given.
 PassOptions withLearnedDecision(PassOptions passes, const ModelSet& models);
 
-// Runs `models` (one category's, `category`) on `object`. `mode` is the instance mode; a type in
-// `counts` takes InstanceMode::Count with its count (k-means), and Count without one falls back
-// to Auto. The automatic count's passes run on Auto models only (spout outlets also with a known
-// count), part ownership only when every model is Auto. `beforeModel(i)` is called before model
-// i runs (progress, cancellation), when given.
+// Runs `models` (one category's) on `object`. `mode` is the instance mode; a type in `counts`
+// takes InstanceMode::Count with its count (k-means), and Count without one falls back to Auto.
+// The learned decision chooses only where every model is Auto. `beforeModel(i)` is called before
+// model i runs (progress, cancellation), when given.
 CategoryPoints predictCategoryPoints(const std::vector<const model::AffordanceModel*>& models,
-                                     const std::string& category, const ObjectForPasses& object,
+                                     const ObjectForPasses& object,
                                      const PassOptions& passes, InstanceMode mode,
                                      const std::map<std::string, int>& counts = {},
                                      const std::function<void(std::size_t)>& beforeModel = {});

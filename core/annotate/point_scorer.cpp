@@ -76,11 +76,11 @@ std::optional<PointScorer> readPointScorer(const std::filesystem::path& modelsDi
       throw FileError(file, "reads other candidate features than this build computes: train it "
                             "again (sagrid scorer train)");
     scorer.trainedOn = j.value("trained_on", "");
-    scorer.passesOff = j.value("passes_off", std::vector<std::string>{});
-    for (const auto& name : scorer.passesOff)
-      if (std::none_of(namedPasses().begin(), namedPasses().end(),
-                       [&](const NamedPass& p) { return name == p.name; }))
-        throw FileError(file, "passes_off names an unknown pass: " + name);
+    try {
+      scorer.passesOff = recordedPassesOff(j.value("passes_off", std::vector<std::string>{}));
+    } catch (const InvalidArgument& e) {
+      throw FileError(file, e.what());
+    }
     const std::size_t d = candidateFeatureNames().size();
     for (const auto& [name, m] : j.at("models").items()) {
       ModelPointScorer s;

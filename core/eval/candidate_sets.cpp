@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "core/common/atomic_file.h"
+#include "core/annotate/pass_options.h"
 #include "core/common/error.h"
 #include "core/eval/metrics.h"
 
@@ -112,7 +113,11 @@ std::vector<CandidateSet> readCandidateSets(const std::filesystem::path& file) {
       }
       set.keptSurface = pointsFrom(s.at("kept"));
       set.truth = pointsFrom(s.at("truth"));
-      set.passesOff = s.value("passes_off", std::vector<std::string>{});
+      try {
+        set.passesOff = recordedPassesOff(s.value("passes_off", std::vector<std::string>{}));
+      } catch (const InvalidArgument& e) {
+        throw FileError(file, "object " + set.object + ": " + e.what());
+      }
       out.push_back(std::move(set));
     }
   } catch (const nlohmann::json::exception& e) {

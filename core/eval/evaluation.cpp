@@ -112,8 +112,8 @@ EvaluationReport evaluateModels(const ModelSet& models, const EvaluationOptions&
       const auto categoryModels = models.forCategory(category);
       const auto t = Clock::now();
       const CategoryPoints categoryPoints =
-          predictCategoryPoints(categoryModels, category, {mesh, grid, scene, objectFeatures},
-                                passes, InstanceMode::Auto);
+          predictCategoryPoints(categoryModels, {mesh, grid, scene, objectFeatures}, passes,
+                                InstanceMode::Auto);
       const std::vector<ModelPrediction>& autoPredictions = categoryPoints.predictions;
       modelSeconds += std::chrono::duration<double>(Clock::now() - t).count();
       auto surfaceOf = [](const ModelPrediction& p) {

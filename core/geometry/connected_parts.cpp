@@ -114,6 +114,12 @@ bool isSmallPart(const ConnectedPart& part, float maxDiagonal) {
   return !part.box.isEmpty() && part.box.diagonal().norm() <= maxDiagonal;
 }
 
+bool isRoundFlatPart(const ConnectedPart& part) {
+  const Eigen::Vector3f size = part.box.sizes();
+  const float wide = std::max(size.x(), size.y()), narrow = std::min(size.x(), size.y());
+  return wide > 0 && wide - narrow <= kRoundShare * wide && size.z() <= kFlatShare * narrow;
+}
+
 std::optional<std::size_t> partAt(const Eigen::Vector3f& point,
                                   const std::vector<ConnectedPart>& parts, float touch,
                                   float maxDiagonal) {

@@ -77,18 +77,22 @@ float nearestCentroidDistance(std::size_t p, const std::vector<std::size_t>& fam
 // a panel, the grate or the cabinet), in the normalized frame (largest extent 1).
 constexpr float kSmallPartDiagonal = 0.2f;
 
-// Which part a point lies on, for the passes that reason about parts (repeated parts, part
-// ownership): the small part whose box, grown by `touchVoxels` voxels, holds it.
+// Which part a point lies on (a point candidate's part, core/points/point_candidates.h): the small
+// part whose box, grown by `touchVoxels` voxels, holds it.
 struct PartContact {
   float touchVoxels = 1.5f;
-  // Only parts up to this box diagonal (normalized units) can be one instance; parts of fewer than
-  // 8 triangles never are in the repeated-parts pass (decals, the pieces of a triangle soup).
+  // Only parts up to this box diagonal (normalized units) can be one instance.
   float maxPartDiagonal = kSmallPartDiagonal;
 };
 
 // A part small enough to be one instance: box diagonal at most `maxDiagonal` (in the parts'
 // frame).
 bool isSmallPart(const ConnectedPart& part, float maxDiagonal);
+
+// A round flat part, as a burner's cap (z up): its horizontal extents within kRoundShare of the
+// larger, its height at most kFlatShare of the smaller.
+constexpr float kRoundShare = 0.15f, kFlatShare = 0.5f;
+bool isRoundFlatPart(const ConnectedPart& part);
 
 // The part a point lies on: of the parts up to `maxDiagonal` whose box grown by `touch` holds it,
 // the one whose box is nearest (of boxes that hold it, as a knob's box and the cabinet's behind

@@ -5,7 +5,7 @@
 #include <limits>
 
 #include "core/grid/voxel_grid.h"
-#include "core/points/repeated_parts.h"
+#include "core/geometry/connected_parts.h"
 
 namespace sagrid {
 

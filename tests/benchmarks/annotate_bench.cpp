@@ -2,8 +2,7 @@
 // extraction (automatic count, refinement) and surface projection, on one generated stove and
 // one generated sink — the "<= 300 ms per object for all four models" target of the model issue —
 // with and without symmetry averaging; and `annotate` end to end (import, features, category,
-// models, points) on a ~100k-triangle mesh with each in-the-wild addition switched on or off, and
-// the spout-outlet pass alone on the sink:
+// models, points) on a ~100k-triangle mesh with each in-the-wild addition switched on or off:
 //   build/tests/benchmarks/annotate_bench --benchmark_repetitions=3
 //     --benchmark_report_aggregates_only=true
 // SAGRID_BENCH_MODELS=DIR times another models folder instead of resources/models (a baseline
@@ -13,10 +12,8 @@
 #include <cstdlib>
 
 #include "core/annotate/annotate.h"
-#include "core/annotate/spout_outlet_pass.h"
 #include "core/dataset/dataset.h"
 #include "core/features/feature_grid.h"
-#include "core/features/printed_marks.h"
 #include "core/generate/dataset_generator.h"
 #include "core/geometry/surface_scene.h"
 #include "core/mesh/mesh_import.h"
@@ -75,13 +72,11 @@ BENCHMARK(BM_FourModelsAndExtraction)
 // geometry (else given), bit 2 = category decided by the models folder's classifier (else given),
 // bit 4 = symmetry averaging over 8 copies, bit 8 = coarse-to-fine second pass where the model's
 // card asks for it (as annotate runs; of the shipped models only sink.togglebutton's does, so on
-// this stove it costs nothing; before, bit 8 forced it on for every model), bit 16 = the
-// texture pass (printed zones and symbols; this mesh has no texture, so it costs the scan), bit
-// 32 = the mirror-pair pass of the automatic count, bit 64 = the repeated-parts pass (the mesh's
-// connected parts and the copies of each toggle button's part), bit 128 = the part-ownership pass
-// (the part under every point of every type), bit 256 = the learned point decision of the models
-// folder (point_scorer.json; the shipped one switches the passes off where it decides, so 511 is
-// what annotate runs by default with the shipped models, 255 the passes as before).
+// this stove it costs nothing), bit 16 = the learned point decision of the models folder
+// (point_scorer.json: the candidates and the scorer's choice; the shipped one switches the crop
+// off where it decides). 31 is what annotate runs by default with the shipped models. (Before
+// session 33, bits 16-128 were the hand-set passes, since removed, and 256 the decision: the
+// default was 511.)
 void BM_AnnotateDenseEndToEnd(benchmark::State& state) {
   Fixture& f = fixture();
   const fs::path mesh = sagrid::bench::denseCopy(2);
@@ -92,11 +87,7 @@ void BM_AnnotateDenseEndToEnd(benchmark::State& state) {
   if (!(additions & 2)) options.category = "stove";
   options.symmetries = additions & 4 ? 8 : 1;
   if (!(additions & 8)) options.coarseToFine = false;  // else as each model's card says
-  options.printedMarks = (additions & 16) != 0;
-  options.mirrorPairs = (additions & 32) != 0;
-  options.repeatedParts = (additions & 64) != 0;
-  options.partOwnership = (additions & 128) != 0;
-  options.learnedDecision = (additions & 256) != 0;
+  options.learnedDecision = (additions & 16) != 0;
   const fs::path out = sagrid::bench::benchDir() / "annotate-out";
   double importMs = 0, featureMs = 0, modelMs = 0;
   for (auto _ : state) {
@@ -114,9 +105,7 @@ void BM_AnnotateDenseEndToEnd(benchmark::State& state) {
       std::string(additions & 1 ? "up detected" : "up given") +
       (additions & 2 ? ", category classified" : ", category given") +
       (additions & 4 ? ", 8 symmetries" : ", 1 copy") + (additions & 8 ? ", coarse-to-fine as the cards say" : "") +
-      (additions & 16 ? ", texture pass" : "") + (additions & 32 ? ", mirror pairs" : "") +
-      (additions & 64 ? ", repeated parts" : "") + (additions & 128 ? ", part ownership" : "") +
-      (additions & 256 ? ", learned point decision" : ""));
+      (additions & 16 ? ", learned point decision" : ""));
 }
 BENCHMARK(BM_AnnotateDenseEndToEnd)
     ->Arg(0)
@@ -128,58 +117,8 @@ BENCHMARK(BM_AnnotateDenseEndToEnd)
     ->Arg(15)
     ->Arg(16)
     ->Arg(31)
-    ->Arg(32)
-    ->Arg(63)
-    ->Arg(64)
-    ->Arg(127)
-    ->Arg(128)
-    ->Arg(255)
-    ->Arg(511)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime()
     ->Iterations(2);
-
-// The texture pass alone on a generated glass hob whose zones and touch symbols are printed
-// (a 1024-pixel texture): raster, edges, Hough votes and verification. Second argument: 1 = oval
-// symbols searched too (the default), 0 = round ones only; run side by side, their difference is
-// the oval search.
-void BM_PrintedMarksGlassHob(benchmark::State& state) {
-  const sagrid::Mesh hob =
-      sagrid::gen::makeRawObject("stove", 51, static_cast<int>(state.range(0)), {0.0, 1.0}).mesh;
-  sagrid::PrintedMarkSettings settings;
-  if (state.range(1) == 0) settings.ovals.maxLength = 0;
-  std::size_t marks = 0;
-  for (auto _ : state) {
-    const sagrid::PrintedMarks found = sagrid::findPrintedMarks(hob, settings);
-    marks = found.zones.size() + found.symbols.size();
-    benchmark::DoNotOptimize(marks);
-  }
-  state.SetLabel(std::to_string(marks) + " marks");
-}
-BENCHMARK(BM_PrintedMarksGlassHob)->ArgsProduct({{0, 1, 2}, {0, 1}})->Unit(benchmark::kMillisecond);
-
-// The spout-outlet pass alone on the generated sink's fluid-source prediction: vertical rays
-// through each point's neighbourhood, the clearance and sky tests of every overhang, the move.
-// The pass runs on sinks only, so the end-to-end stove above does not include it.
-void BM_SpoutOutletPass(benchmark::State& state) {
-  Fixture& f = fixture();
-  const sagrid::model::AffordanceModel* spouts = nullptr;
-  for (const auto* m : f.models->forCategory("sink"))
-    if (m->card().type == "fluidsource") spouts = m;
-  if (!spouts) {
-    state.SkipWithError("no sink.fluidsource model");
-    return;
-  }
-  const sagrid::ModelPrediction predicted = sagrid::predictWithModel(
-      *spouts, f.features[1], *f.scenes[1], f.meshes[1].fileUp, sagrid::InstanceMode::Auto);
-  for (auto _ : state) {
-    sagrid::ModelPrediction p = predicted;
-    sagrid::applySpoutOutlets(p, f.features[1], *f.scenes[1], f.meshes[1].fileUp,
-                              spouts->card().extraction);
-    benchmark::DoNotOptimize(p.points.data());
-  }
-  state.SetLabel(std::to_string(predicted.points.size()) + " fluid-source points");
-}
-BENCHMARK(BM_SpoutOutletPass)->Unit(benchmark::kMillisecond);
 
 }  // namespace

@@ -81,6 +81,10 @@ TEST(PointScorerFile, ReadsBackWhatWasWrittenAndNamesWhatIsWrong) {
   j["passes_off"] = {"mirror_pairs", "no_such_pass"};
   rewrite(j);
   EXPECT_NE(messageOf(dir).find("unknown pass: no_such_pass"), std::string::npos);
+  // A file written before the hand-set passes were removed names them off: they never run now.
+  j["passes_off"] = {"printed_marks", "mirror_pairs", "part_ownership", "coarse_to_fine"};
+  rewrite(j);
+  EXPECT_EQ(readPointScorer(dir)->passesOff, std::vector<std::string>{"coarse_to_fine"});
   j = toJson(scorer);
   j["schema"] = "something/1";
   rewrite(j);
@@ -142,28 +146,24 @@ TEST_F(AnnotateWithScorer, ItDecidesForItsModelsOnlyAndIsSwitchedOff) {
   const auto off = annotateMeshFile(entries[0].mesh, "s", scored, annotate, dir / "c");
   EXPECT_EQ(pointsOf(off, "togglebutton"), pointsOf(passes, "togglebutton"));
 
-  // A scorer that learned from candidates made without some passes switches them off where it
+  // A scorer that learned from candidates made without the crop pass switches it off where it
   // decides; without the scorer, or switched off, the passes stay as given.
   PointScorer bare = scorer;
-  bare.passesOff = {"repeated_parts", "part_ownership", "coarse_to_fine"};
+  bare.passesOff = {"coarse_to_fine"};
   ModelSet learnedBare = models();
   learnedBare.setPointScorer(bare, dir / kPointScorerFile);
   PassOptions given;
   const PassOptions used = withLearnedDecision(given, learnedBare);
-  EXPECT_FALSE(used.repeatedParts);
-  EXPECT_FALSE(used.partOwnership);
   EXPECT_EQ(used.coarseToFine, std::optional<bool>(false));  // the crop pass, for every model
-  EXPECT_TRUE(used.mirrorPairs);
   // What the pipeline ran with is what candidates record: the crop pass counts as off only when
   // switched off for every model (unset, each card decides).
   EXPECT_EQ(passesOff(used), bare.passesOff);
   EXPECT_TRUE(passesOff(given).empty());
   EXPECT_EQ(used.scorer, learnedBare.pointScorer());
   given.learnedDecision = false;
-  EXPECT_TRUE(withLearnedDecision(given, learnedBare).repeatedParts);
   EXPECT_FALSE(withLearnedDecision(given, learnedBare).coarseToFine.has_value());
   EXPECT_EQ(withLearnedDecision(given, learnedBare).scorer, nullptr);
-  EXPECT_TRUE(withLearnedDecision(PassOptions{}, plain).repeatedParts);
+  EXPECT_FALSE(withLearnedDecision(PassOptions{}, plain).coarseToFine.has_value());
 
   PointScorer stranger;
   stranger.byModel["sink.fluidsource"] = oneBest();

@@ -93,7 +93,7 @@ TEST(PointScorerTraining, TheScorerFindsTheKnownPointsOfObjectsItWasNotFittedOn)
   EXPECT_EQ(scorer.forModel("sink.fluidsource"), nullptr);
   // Candidates made with other passes cannot train one scorer.
   CandidateSet other = sets.front();
-  other.passesOff = {"repeated_parts"};
+  other.passesOff = {"coarse_to_fine"};
   training.push_back(&other);
   EXPECT_THROW(trainPointScorer(training, {}), InvalidArgument);
 }
@@ -209,7 +209,7 @@ TEST(PointScorerTraining, TheGuardAdoptsABetterScorerAndRefusesAWorseOne) {
   leaked.push_back(*training.front());
   EXPECT_THROW(guardPointScorer(&poor, good, leaked, training), InvalidArgument);
   std::vector<CandidateSet> otherPasses = heldOut;
-  otherPasses.front().passesOff = {"mirror_pairs"};
+  otherPasses.front().passesOff = {"coarse_to_fine"};
   EXPECT_THROW(guardPointScorer(&poor, good, otherPasses, training), InvalidArgument);
   EXPECT_THROW(guardPointScorer(&poor, good, {}, training), InvalidArgument);
 }
