@@ -77,8 +77,19 @@ struct Options {
   std::string out, models, exclude, split, splitOut, up, cache;
   double threshold = -1, l2 = 1e-2, keep = 0.98, sureAbove = 0;
   int iterations = 20000;
-  bool retrieval = false, linear = false, topRelief = false, evidence = false;
+  bool retrieval = false, linear = false, topRelief = false, evidence = false, burnerCaps = false;
 };
+
+// `decision` after the burner-cap rule on the sample's mesh (in its labelled up axis, else `up`),
+// as annotate decides before its evidence gate.
+sagrid::CategoryDecision withSampleBurnerCaps(const sagrid::CategorySample& s,
+                                              const sagrid::CategoryDecision& decision,
+                                              std::optional<sagrid::UpAxis> up) {
+  return sagrid::withBurnerCaps(decision, [&] {
+    if (!s.up.empty()) up = sagrid::parseUpAxis(s.up);
+    return sagrid::hasBurnerCaps(sagrid::importMesh(s.mesh, sagrid::ImportOptions(up, /*detect=*/true)));
+  });
+}
 
 // The evidence of a category on a sample: its models run on the sample's mesh (in its labelled
 // up axis, else --up) as `annotate --category` would, features from --cache when given, else from
@@ -102,14 +113,8 @@ class SampleEvidence {
                                 const sagrid::CategoryDecision& d) const {
     const auto* classifier = m_models.categoryClassifier();
     if (!classifier) return d;
-    const auto decided = sagrid::withBurnerCaps(d, [&] {
-      auto up = m_options.features.up;
-      if (!s.up.empty()) up = sagrid::parseUpAxis(s.up);
-      return sagrid::hasBurnerCaps(
-          sagrid::importMesh(s.mesh, sagrid::ImportOptions(up, /*detect=*/true)));
-    });
     return sagrid::applyEvidenceGate(
-        decided, classifier->evidence,
+        withSampleBurnerCaps(s, d, m_options.features.up), classifier->evidence,
         [&](const std::string& category) { return (*this)(s, category); });
   }
 
@@ -131,6 +136,10 @@ void addEvidenceFlags(CLI::App* cmd, Options& o) {
                 "Follow the classifier with the models folder's evidence gate: an object filed "
                 "under a category whose models find no point of it (below the gate's threshold) is "
                 "rejected, as `annotate` does (runs the models on every accepted object)");
+  cmd->add_flag("--burner-caps", o.burnerCaps,
+                "Follow the classifier with the burner-cap rule alone (a sink decision on a mesh "
+                "with burner caps becomes a stove one), as `annotate` does before its evidence "
+                "gate; --evidence includes it");
   cmd->add_option("--cache", o.cache,
                   "Feature cache folder for the models' runs (default: each dataset's "
                   ".sagrid-cache, where the descriptors are cached)");
@@ -272,7 +281,8 @@ void setupCategory(CLI::App& root) {
           if (bar) bar->update(done++);
           if (classifier && !o->retrieval) {
             const auto d = classifier->classify(s.descriptor, threshold);
-            return o->evidence ? evidence.gate(s, d) : d;
+            if (o->evidence) return evidence.gate(s, d);
+            return o->burnerCaps ? withSampleBurnerCaps(s, d, features.up) : d;
           }
           sagrid::CategoryDecision r;
           const auto ranked = models.rankCategories(s.descriptor);
@@ -323,11 +333,15 @@ void setupCategory(CLI::App& root) {
     // Each fold's classifier, then the shipped evidence gate (fitted on objects of the category
     // only: it never saw a distractor).
     const auto onFold = [](int k, int folds) { std::fprintf(stderr, "fold %d/%d: training\n", k + 1, folds); };
-    const auto check = evidence ? sagrid::CategoryCheck(
-                                      [&](const sagrid::CategorySample& s, const sagrid::CategoryDecision& d) {
-                                        return evidence->gate(s, d);
-                                      })
-                                : sagrid::CategoryCheck{};
+    sagrid::CategoryCheck check;
+    if (evidence)
+      check = [&](const sagrid::CategorySample& s, const sagrid::CategoryDecision& d) {
+        return evidence->gate(s, d);
+      };
+    else if (o->burnerCaps)
+      check = [&](const sagrid::CategorySample& s, const sagrid::CategoryDecision& d) {
+        return withSampleBurnerCaps(s, d, features.up);
+      };
     const auto ev = o->bySource
                         ? sagrid::crossValidateCategoriesBySource(always, validated, trainingOptions(*o), onFold, check)
                         : sagrid::crossValidateCategories(always, validated, o->folds, trainingOptions(*o), onFold, check);

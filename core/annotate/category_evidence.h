@@ -2,9 +2,9 @@
 // (EvidenceGate in category_classifier.h). The classifier reads the object's shape as a whole and
 // files a blender or a coffee maker with a jug opening on top under "sink"; the sink models then
 // find no tap and no handle on it. An object's evidence for a category is the confidence of the
-// best point that category's models place on it (annotate with the category given, every pass
-// on); the gate's threshold for a category is fitted on objects of that category so that a
-// chosen share of them keeps it.
+// best point that category's models place on it (annotate with the category given: the count's
+// points, before a learned decision chooses); the gate's threshold for a category is fitted on
+// objects of that category so that a chosen share of them keeps it.
 #pragma once
 
 #include <filesystem>
