@@ -40,8 +40,9 @@ fs::path writeModelsWithScorer(const fs::path& from, const fs::path& out,
   const fs::path file = sagrid::writeScorerUpdate(update, out);
   if (update.guard)
     for (const auto& v : update.guard->byModel)
-      std::fprintf(stderr, "guard: %s: %zu -> %zu edits on %zu held-out points\n",
-                   v.model.c_str(), v.currentEdits, v.newEdits, v.handPoints);
+      std::fprintf(stderr, "guard: %s: %zu -> %zu edits on %zu held-out points: %s\n",
+                   v.model.c_str(), v.currentEdits, v.newEdits, v.handPoints,
+                   v.adopted ? "adopted" : "the decision before stays");
   std::fprintf(stderr, "scorer: %zu models, trained on %s; %s -> %s\n",
                update.scorer.byModel.size(), update.scorer.trainedOn.c_str(),
                update.verdict.c_str(), file.c_str());
@@ -153,10 +154,11 @@ void setupScorer(CLI::App& root) {
   train->add_option("--out", l->out, "Models folder to write")->required();
   train->add_option("--guard", l->guard,
                     "Candidate files of held-out curated objects (other sources than the "
-                    "training's; repeatable): the new scorer is adopted only if it needs fewer "
-                    "edits there than --models' scorer (without one: the points the held-out "
-                    "candidates were made with); refused, it goes to OUT/refused/ and OUT keeps "
-                    "the current one; figures per model in OUT/scorer_guard.json");
+                    "training's; repeatable): per model, the new decision is adopted only if it "
+                    "needs fewer edits on that model's held-out objects than --models' decision "
+                    "(without one: the points the held-out candidates were made with); the "
+                    "others keep theirs; refused anywhere, the new scorer also goes to "
+                    "OUT/refused/; figures per model in OUT/scorer_guard.json");
   addTrainingOptions(*train, l->candidates, l->training);
   train->callback([l] {
     const auto sets = readAll(l->candidates);
@@ -176,8 +178,10 @@ void setupScorer(CLI::App& root) {
   auto* upd = cmd->add_subcommand(
       "update", "Retrain the models folder's decision from curated objects in one step, as the "
                 "GUI's Train panel does: candidates of --data, of generated objects and of "
-                "--held-out made by --models; written to OUT when it needs fewer edits on the "
-                "held-out objects, else to OUT/refused/ (figures in OUT/scorer_guard.json)");
+                "--held-out made by --models; each model's new decision goes to OUT where it "
+                "needs fewer edits on that model's held-out objects, the others keep theirs, "
+                "and the new scorer goes to OUT/refused/ where any model refused it (figures in "
+                "OUT/scorer_guard.json)");
   upd->add_option("--data", u->data, "Curated training objects (a dataset)")->required();
   upd->add_option("--generated", u->generated,
                   "Generated objects the networks were not trained on (default: the bench, its "

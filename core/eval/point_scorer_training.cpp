@@ -314,12 +314,43 @@ ScorerGuard guardPointScorer(const PointScorer* current, const PointScorer& fres
     v.currentEdits = before.edits.total();
     v.newEdits = figuresOf(sets, scorerChooser(fresh)).edits.total();
     v.handPoints = before.edits.handPoints;
+    v.adopted = v.newEdits < v.currentEdits;
     guard.currentEdits += v.currentEdits;
     guard.newEdits += v.newEdits;
+    guard.adoptedEdits += v.adopted ? v.newEdits : v.currentEdits;
+    guard.adopted = guard.adopted || v.adopted;
     guard.byModel.push_back(v);
   }
-  guard.adopted = guard.newEdits < guard.currentEdits;
+  for (const auto& [model, decision] : fresh.byModel)
+    if (!byModel.count(model)) guard.byModel.push_back({model, 0, 0, 0, false});
   return guard;
+}
+
+bool ScorerGuard::adoptedWhole() const {
+  return std::all_of(byModel.begin(), byModel.end(),
+                     [](const ScorerVerdict& v) { return v.adopted; });
+}
+
+PointScorer adoptedScorer(const PointScorer* current, const PointScorer& fresh,
+                          const ScorerGuard& guard) {
+  PointScorer out = current ? *current : PointScorer{};
+  out.passesOff = fresh.passesOff;
+  out.trainedOn = fresh.trainedOn;
+  std::vector<std::string> taken;
+  for (const ScorerVerdict& v : guard.byModel) {
+    if (!v.adopted) continue;
+    taken.push_back(v.model);
+    const ModelPointScorer* decision = fresh.forModel(v.model);
+    if (decision) out.byModel[v.model] = *decision;
+    else out.byModel.erase(v.model);
+  }
+  if (!guard.adoptedWhole()) {
+    std::string models;
+    for (const auto& m : taken) models += (models.empty() ? "" : ", ") + m;
+    out.trainedOn += "; adopted for " + (models.empty() ? std::string("no model") : models) +
+                     ", the other models keep the decision before";
+  }
+  return out;
 }
 
 nlohmann::json toJson(const ScorerGuard& guard) {
@@ -328,10 +359,13 @@ nlohmann::json toJson(const ScorerGuard& guard) {
     models.push_back({{"model", v.model},
                       {"current_edits", v.currentEdits},
                       {"new_edits", v.newEdits},
-                      {"hand_points", v.handPoints}});
+                      {"hand_points", v.handPoints},
+                      {"adopted", v.adopted}});
   return {{"current_edits", guard.currentEdits},
           {"new_edits", guard.newEdits},
+          {"adopted_edits", guard.adoptedEdits},
           {"adopted", guard.adopted},
+          {"adopted_whole", guard.adoptedWhole()},
           {"models", models}};
 }
 

@@ -92,18 +92,23 @@ ScorerCrossValidation crossValidatePointScorer(const std::vector<CandidateSet>& 
                                                const ScorerTrainingOptions& options,
                                                const ScorerCurveOptions& curve = {});
 
-// A guarded scorer update: the new scorer is adopted only where it needs fewer edits on held-out
-// curated objects than the current one (the models folder's scorer; without one, the points the
-// held-out candidates were made with: the count and the passes that were on). One scorer switches
-// passes off for every model, so it is adopted whole or not at all; the figures are per model.
+// A guarded scorer update, per model: the new scorer's decision for a model is adopted only where
+// it needs fewer edits on that model's held-out curated objects than the current one (the models
+// folder's scorer; where it has none for the model, the points the held-out candidates were made
+// with: the count's). A model without held-out objects keeps its current decision (nothing
+// judged it). The passes the decisions switch off are the same for both (the guard checks), so
+// decisions of two scorers can stand side by side in one file (adoptedScorer).
 struct ScorerVerdict {
   std::string model;
   std::size_t currentEdits = 0, newEdits = 0, handPoints = 0;
+  bool adopted = false;  // newEdits < currentEdits (false without held-out points)
 };
 struct ScorerGuard {
-  std::vector<ScorerVerdict> byModel;
+  std::vector<ScorerVerdict> byModel;  // the held-out objects' models, then the new scorer's others
   std::size_t currentEdits = 0, newEdits = 0;
-  bool adopted = false;
+  std::size_t adoptedEdits = 0;  // with each model's adopted decision (new where adopted, else current)
+  bool adopted = false;          // for at least one model
+  bool adoptedWhole() const;     // for every model judged, and the new scorer has no other
 };
 // `current` may be null (no scorer yet). Throws InvalidArgument when `heldOut` has no candidate
 // set, when a held-out object is also in `training` (same source and id), or when the held-out
@@ -112,6 +117,12 @@ ScorerGuard guardPointScorer(const PointScorer* current, const PointScorer& fres
                              const std::vector<CandidateSet>& heldOut,
                              const std::vector<const CandidateSet*>& training);
 nlohmann::json toJson(const ScorerGuard& guard);
+
+// What `guard` adopts: `current`'s decisions (none when null) with, for every model it adopted,
+// `fresh`'s (where `fresh` has none for that model, none: the count's points win there). Its
+// passes off and record are `fresh`'s, the record naming the models adopted when not all were.
+PointScorer adoptedScorer(const PointScorer* current, const PointScorer& fresh,
+                          const ScorerGuard& guard);
 
 // How well the object-confidence signal orders cv's objects: the share of (right, wrong) pairs in
 // which the right object's least sure point has the smaller predicted distance (ties count half);

@@ -43,16 +43,26 @@ ScorerUpdate judgeScorerUpdate(PointScorer fresh, const std::optional<PointScore
   update.scorer = std::move(fresh);
   update.heldOutSets = heldOut.size();
   if (heldOut.empty()) {
+    update.adoptedScorer = update.scorer;
     update.verdict = "unguarded: the retrained point decision is kept, better or not";
     return update;
   }
-  update.guard = guardPointScorer(current ? &*current : nullptr, update.scorer, heldOut, training);
-  update.adopted = update.guard->adopted;
-  update.verdict = std::to_string(update.guard->currentEdits) + " -> " +
-                   std::to_string(update.guard->newEdits) + " edits on the held-out objects (" +
-                   (current ? "the current point decision" : "the passes' points") +
+  const PointScorer* was = current ? &*current : nullptr;
+  const ScorerGuard& guard = *(update.guard = guardPointScorer(was, update.scorer, heldOut, training));
+  update.adopted = guard.adopted;
+  update.adoptedScorer = adoptedScorer(was, update.scorer, guard);
+  std::string refused;
+  for (const auto& v : guard.byModel)
+    if (!v.adopted) refused += (refused.empty() ? "" : ", ") + v.model;
+  update.verdict = std::to_string(guard.currentEdits) + " -> " + std::to_string(guard.newEdits) +
+                   " edits on the held-out objects (" +
+                   (current ? "the current point decision" : "the count's points") +
                    " -> the retrained one): " +
-                   (update.adopted ? "adopted" : "refused, the current decision stays");
+                   (!guard.adopted         ? "refused, the current decision stays"
+                    : guard.adoptedWhole() ? "adopted"
+                                           : "adopted where better (" +
+                                                 std::to_string(guard.adoptedEdits) +
+                                                 " edits); kept the decision before for " + refused);
   return update;
 }
 
@@ -89,12 +99,15 @@ ScorerUpdate updatePointScorer(const ScorerUpdateRequest& request) {
 }
 
 fs::path writeScorerUpdate(const ScorerUpdate& update, const fs::path& out) {
-  const fs::path dir = update.adopted ? out : out / "refused";
-  fs::create_directories(dir);
-  writePointScorer(dir, update.scorer);
+  fs::create_directories(out);
+  if (update.adopted) writePointScorer(out, update.adoptedScorer);
+  if (!update.adopted || (update.guard && !update.guard->adoptedWhole())) {
+    fs::create_directories(out / "refused");
+    writePointScorer(out / "refused", update.scorer);
+  }
   if (update.guard)
     writeFileAtomic(out / "scorer_guard.json", toJson(*update.guard).dump(2) + "\n");
-  return dir / kPointScorerFile;
+  return (update.adopted ? out : out / "refused") / kPointScorerFile;
 }
 
 }  // namespace sagrid

@@ -35,8 +35,11 @@ struct ScorerUpdateRequest {
 
 struct ScorerUpdate {
   PointScorer scorer;                // the freshly fitted one, adopted or not
+  // What the models folder gets: the fresh decisions of the models the guard adopted beside the
+  // current ones of the others (adoptedScorer); unguarded, the fresh one.
+  PointScorer adoptedScorer;
   std::optional<ScorerGuard> guard;  // with a held-out folder
-  bool adopted = true;               // unguarded: always
+  bool adopted = true;               // for at least one model; unguarded: always
   std::size_t curatedSets = 0, generatedSets = 0, heldOutSets = 0;
   std::string verdict;               // one line: the edits before and after, and the decision
 };
@@ -52,9 +55,10 @@ ScorerUpdate judgeScorerUpdate(PointScorer fresh, const std::optional<PointScore
                                const std::vector<CandidateSet>& heldOut,
                                const std::vector<const CandidateSet*>& training);
 
-// Writes `update` into the models folder `out`: point_scorer.json there when adopted, else in
-// out/refused/ (out keeps what it had); the guard's figures per model in out/scorer_guard.json.
-// Returns the scorer file written.
+// Writes `update` into the models folder `out`: the adopted scorer as point_scorer.json there when
+// any model adopted, and the fresh one in out/refused/ when some model refused it (out keeps what
+// it had where nothing was adopted); the guard's figures per model in out/scorer_guard.json.
+// Returns the scorer file written into `out` (or, where nothing was adopted, out/refused's).
 std::filesystem::path writeScorerUpdate(const ScorerUpdate& update, const std::filesystem::path& out);
 
 }  // namespace sagrid

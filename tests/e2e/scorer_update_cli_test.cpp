@@ -38,13 +38,17 @@ TEST(ScorerUpdateCli, WritesTheModelsFolderWithTheVerdictAndRefusesHeldOutTraini
   r = runSagrid("scorer update" + common + " --held-out " + quotedPath(dir / "held-out"));
   ASSERT_EQ(r.exitCode, 0) << r.output;
   EXPECT_THAT(r.output, HasSubstr("4 curated, 4 generated, 4 held-out model sets"));
-  const bool adopted = r.output.find(": adopted ->") != std::string::npos;
+  const bool adopted = r.output.find("): adopted") != std::string::npos;
   EXPECT_TRUE(adopted || r.output.find("refused, the current decision stays") != std::string::npos)
       << r.output;
   // The folder written is a whole models folder: the networks copied, and a scorer either way.
   EXPECT_TRUE(fs::exists(dir / "out" / "stove.heatsource.json"));
   EXPECT_TRUE(fs::exists(dir / "out" / "scorer_guard.json"));
   EXPECT_TRUE(readPointScorer(adopted ? dir / "out" : dir / "out" / "refused").has_value());
+  // One line per model says whether its new decision was adopted.
+  EXPECT_THAT(r.output, ::testing::ContainsRegex("guard: stove\\.[a-z]+: [0-9]+ -> [0-9]+ edits on "
+                                                 "[0-9]+ held-out points: (adopted|the decision "
+                                                 "before stays)"));
 }
 
 }  // namespace

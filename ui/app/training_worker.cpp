@@ -200,7 +200,8 @@ void TrainingWorker::runPointScorer(const TrainingRequest& request) {
       update([&](TrainingStatus& s) {
         s.verdicts.push_back(v.model + ": " + std::to_string(v.currentEdits) + " -> " +
                              std::to_string(v.newEdits) + " edits on " +
-                             std::to_string(v.handPoints) + " held-out points");
+                             std::to_string(v.handPoints) + " held-out points: " +
+                             (v.adopted ? "adopted" : "the decision before stays"));
       });
   }
   update([&](TrainingStatus& s) { s.verdicts.push_back(result.verdict); });

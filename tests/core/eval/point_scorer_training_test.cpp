@@ -214,6 +214,60 @@ TEST(PointScorerTraining, TheGuardAdoptsABetterScorerAndRefusesAWorseOne) {
   EXPECT_THROW(guardPointScorer(&poor, good, {}, training), InvalidArgument);
 }
 
+// Two models judged apart: the new scorer is better on one and worse on the other; the adopted
+// scorer takes the new decision for the first and keeps the current one for the second.
+TEST(PointScorerTraining, TheGuardAdoptsEachModelsDecisionOnItsOwnHeldOutObjects) {
+  const auto sets = syntheticSets();
+  std::vector<const CandidateSet*> training;
+  std::vector<CandidateSet> heldOut;
+  for (const auto& s : sets)
+    if (s.source == "library-c") {
+      heldOut.push_back(s);
+      heldOut.push_back(s);
+      heldOut.back().model = "stove.heatsource";  // the same knobs, judged as a second model
+    } else {
+      training.push_back(&s);
+    }
+  const ModelPointScorer good = *trainPointScorer(training, {}).forModel("stove.togglebutton");
+  const ModelPointScorer poor = *onePointScorer().forModel("stove.togglebutton");
+  PointScorer current, fresh;
+  current.byModel = {{"stove.togglebutton", poor}, {"stove.heatsource", good}, {"sink.fluidsource", poor}};
+  fresh.byModel = {{"stove.togglebutton", good}, {"stove.heatsource", poor}, {"sink.togglebutton", good}};
+  fresh.trainedOn = "fresh";
+  const ScorerGuard guard = guardPointScorer(&current, fresh, heldOut, training);
+  ASSERT_EQ(guard.byModel.size(), 3u);  // the two judged, then the new scorer's unjudged one
+  EXPECT_EQ(guard.byModel[0].model, "stove.heatsource");
+  EXPECT_FALSE(guard.byModel[0].adopted);
+  EXPECT_EQ(guard.byModel[1].model, "stove.togglebutton");
+  EXPECT_TRUE(guard.byModel[1].adopted);
+  EXPECT_EQ(guard.byModel[2].model, "sink.togglebutton");
+  EXPECT_FALSE(guard.byModel[2].adopted);  // no held-out object judged it
+  EXPECT_TRUE(guard.adopted);
+  EXPECT_FALSE(guard.adoptedWhole());
+  EXPECT_EQ(guard.adoptedEdits, 0u);  // the good decision on both models' objects
+  EXPECT_EQ(guard.currentEdits, 12u);
+  EXPECT_EQ(guard.newEdits, 12u);     // as many as before summed: a whole-scorer guard refused it
+
+  const PointScorer adopted = adoptedScorer(&current, fresh, guard);
+  const auto same = [](const ModelPointScorer* a, const ModelPointScorer& b) {
+    PointScorer x, y;
+    x.byModel["m"] = *a;
+    y.byModel["m"] = b;
+    return toJson(x).dump() == toJson(y).dump();
+  };
+  ASSERT_NE(adopted.forModel("stove.togglebutton"), nullptr);
+  EXPECT_TRUE(same(adopted.forModel("stove.togglebutton"), good));
+  EXPECT_TRUE(same(adopted.forModel("stove.heatsource"), good));    // kept
+  EXPECT_TRUE(same(adopted.forModel("sink.fluidsource"), poor));    // not judged: kept
+  EXPECT_EQ(adopted.forModel("sink.togglebutton"), nullptr);        // not judged: not taken
+  EXPECT_NE(adopted.trainedOn.find("adopted for stove.togglebutton"), std::string::npos);
+  // Without a current scorer, the adopted one holds the adopted models' decisions only.
+  const ScorerGuard fromNone = guardPointScorer(nullptr, fresh, heldOut, training);
+  const PointScorer onlyAdopted = adoptedScorer(nullptr, fresh, fromNone);
+  EXPECT_NE(onlyAdopted.forModel("stove.togglebutton"), nullptr);
+  EXPECT_EQ(onlyAdopted.forModel("stove.heatsource"), nullptr);
+}
+
 TEST(PointScorerTraining, CandidateFilesReadBackAndBadOnesAreNamed) {
   const auto sets = syntheticSets();
   const auto file = std::filesystem::temp_directory_path() / "sagrid-candidates-test.json";

@@ -52,10 +52,12 @@ void prepare(const fs::path& dir) {
   fs::copy(kShipped, dir / "loaded", fs::copy_options::recursive);
 }
 
-// The retrained decision is judged on the held-out objects: written to the models folder out
-// exactly when it needs fewer edits there (else to refused/), with one verdict per model and the
-// figures in scorer_guard.json; it switches off the passes the loaded one did; the loaded file is
-// untouched; adopted, the unreviewed object of the queue is predicted again, the accepted one not.
+// The retrained decision is judged per model on the held-out objects: each model's new decision
+// goes into the models folder out exactly when it needs fewer edits on that model's objects, the
+// others keep the loaded one's (the whole new scorer goes to refused/ where any model refused it),
+// with one verdict per model and the figures in scorer_guard.json; it switches off the passes the
+// loaded one did; the loaded file is untouched; adopted, the unreviewed object of the queue is
+// predicted again, the accepted one not.
 TEST(PointScorerRetrainWorker, TheRetrainedDecisionGoesWhereTheHeldOutEditsSay) {
   const fs::path dir = test::freshTempDir();
   prepare(dir);
@@ -67,22 +69,39 @@ TEST(PointScorerRetrainWorker, TheRetrainedDecisionGoesWhereTheHeldOutEditsSay) 
   const TrainingStatus status = retrainDecision(dir, dir / "curated", queue);
   ASSERT_TRUE(status.error.empty()) << status.error;
   const auto guard = nlohmann::json::parse(readFileBytes(dir / "out" / "scorer_guard.json"));
+  bool anyAdopted = false, allAdopted = true;
+  for (const auto& m : guard.at("models")) {
+    const bool better = m.at("new_edits").get<int>() < m.at("current_edits").get<int>();
+    EXPECT_EQ(m.at("adopted").get<bool>(), better) << m.dump();
+    anyAdopted = anyAdopted || better;
+    allAdopted = allAdopted && better;
+  }
   const bool adopted = guard.at("adopted").get<bool>();
-  EXPECT_EQ(adopted, guard.at("new_edits").get<int>() < guard.at("current_edits").get<int>())
-      << guard.dump();
+  EXPECT_EQ(adopted, anyAdopted) << guard.dump();
   ASSERT_EQ(status.verdicts.size(), guard.at("models").size() + 1);
   EXPECT_NE(status.verdicts.back().find(adopted ? ": adopted" : ": refused"), std::string::npos)
       << status.verdicts.back();
-  const fs::path written = adopted ? dir / "out" : dir / "out" / "refused";
-  const auto fresh = readPointScorer(written);
-  ASSERT_TRUE(fresh.has_value()) << written;
-  EXPECT_EQ(fresh->passesOff, readPointScorer(dir / "loaded")->passesOff);
-  // The GUI predicts from the folder out afterwards: a whole models folder either way, with the
-  // retrained decision where adopted and the loaded one where refused.
+  EXPECT_EQ(fs::exists(dir / "out" / "refused" / kPointScorerFile), !allAdopted);
+  // The GUI predicts from the folder out afterwards: a whole models folder either way, each model
+  // with the retrained decision where adopted and the loaded one where refused.
   const ModelSet out = ModelSet::load(dir / "out");
   ASSERT_NE(out.pointScorer(), nullptr);
-  EXPECT_EQ(readFileBytes(dir / "out" / kPointScorerFile),
-            adopted ? readFileBytes(written / kPointScorerFile) : loaded);
+  const PointScorer before = *readPointScorer(dir / "loaded");
+  const PointScorer fresh = *readPointScorer(allAdopted ? dir / "out" : dir / "out" / "refused");
+  EXPECT_EQ(out.pointScorer()->passesOff, before.passesOff);
+  for (const auto& m : guard.at("models")) {
+    const std::string model = m.at("model");
+    const ModelPointScorer* want =
+        (m.at("adopted").get<bool>() ? fresh : before).forModel(model);
+    const ModelPointScorer* got = out.pointScorer()->forModel(model);
+    ASSERT_EQ(got == nullptr, want == nullptr) << model;
+    if (!got) continue;
+    PointScorer a, b;
+    a.byModel[model] = *got;
+    b.byModel[model] = *want;
+    EXPECT_EQ(toJson(a).dump(), toJson(b).dump()) << model;
+  }
+  if (!adopted) EXPECT_EQ(readFileBytes(dir / "out" / kPointScorerFile), loaded);
   EXPECT_EQ(readFileBytes(dir / "loaded" / kPointScorerFile), loaded);
   EXPECT_EQ(readFileBytes(queue[1].labels), accepted);
   EXPECT_EQ(!readLabels(queue[0].labels).affordances.empty(), adopted);
