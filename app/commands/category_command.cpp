@@ -76,7 +76,8 @@ struct Options {
   bool bySource = false;  // category cv: leave one source out
   std::string out, models, exclude, split, splitOut, up, cache;
   double threshold = -1, l2 = 1e-2, keep = 0.98, sureAbove = 0;
-  int iterations = 20000;
+  int iterations = 20000, treeRounds = 100, treeDepth = 3;
+  bool trees = false;
   bool retrieval = false, linear = false, topRelief = false, evidence = false, burnerCaps = false;
 };
 
@@ -154,6 +155,12 @@ void addTrainingFlags(CLI::App* cmd, Options& o) {
       ->check(CLI::IsMember({"y", "z"}));
   cmd->add_option("--iterations", o.iterations, "Gradient steps")->check(CLI::PositiveNumber);
   cmd->add_flag("--linear", o.linear, "Inputs only, without their squares");
+  cmd->add_flag("--trees", o.trees,
+                "Boosted trees per class (one against the rest) instead of the softmax");
+  cmd->add_option("--tree-rounds", o.treeRounds, "With --trees: boosting rounds per class")
+      ->check(CLI::PositiveNumber);
+  cmd->add_option("--tree-depth", o.treeDepth, "With --trees: depth of each tree")
+      ->check(CLI::Range(1, 8));
   cmd->add_flag("--top-relief", o.topRelief,
                 "Also read the relief of the object's top from its voxels (basins, burner spots, "
                 "flat lids), beside the descriptor");
@@ -165,6 +172,9 @@ sagrid::CategoryTrainingOptions trainingOptions(const Options& o) {
   options.l2 = o.l2;
   options.iterations = o.iterations;
   options.quadratic = !o.linear;
+  options.trees = o.trees;
+  options.boosting.rounds = o.treeRounds;
+  options.boosting.depth = o.treeDepth;
   if (o.threshold >= 0) options.threshold = o.threshold;
   return options;
 }
@@ -228,7 +238,10 @@ void setupCategory(CLI::App& root) {
     if (!o->up.empty()) command += " --up " + o->up;
     command += " --out " + out.string() + " --threshold " + std::to_string(options.threshold) +
                " --l2 " + std::to_string(o->l2) + " --iterations " + std::to_string(o->iterations) +
-               (o->linear ? " --linear" : "") + (o->topRelief ? " --top-relief" : "");
+               (o->linear ? " --linear" : "") + (o->topRelief ? " --top-relief" : "") +
+               (o->trees ? " --trees --tree-rounds " + std::to_string(o->treeRounds) +
+                               " --tree-depth " + std::to_string(o->treeDepth)
+                         : "");
     classifier.training["command"] = command;
     const auto ev = sagrid::evaluateCategories(
         [&](const sagrid::CategorySample& s) { return classifier.classify(s.descriptor); },
@@ -236,6 +249,9 @@ void setupCategory(CLI::App& root) {
     for (const auto& [cls, c] : ev.byClass)
       classifier.training["train_share_right"][cls] = c.total ? double(c.right) / c.total : 0.0;
     fs::path file = out / sagrid::kCategoryClassifierFile;
+    // The folder's evidence gate belongs to its point models, not to the classifier: a retrained
+    // classifier keeps it (as the GUI's retraining does); `category evidence` refits it.
+    if (fs::exists(file)) classifier.evidence = sagrid::CategoryClassifier::load(file).evidence;
     if (!o->guard.empty() && !guardAdopts(classifier, file, o->guard, features))
       file = out / "refused" / sagrid::kCategoryClassifierFile;
     fs::create_directories(file.parent_path());

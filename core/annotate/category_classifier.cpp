@@ -102,7 +102,7 @@ CategoryClassifier CategoryClassifier::train(const std::vector<CategorySample>& 
     c.m_scale[j] = static_cast<float>(std::max(sd, 1e-3));
     x.col(j) = ((x.col(j).array() - mean) / c.m_scale[j]).cwiseMax(-kClamp).cwiseMin(kClamp);
   }
-  c.m_quadratic = options.quadratic;
+  c.m_quadratic = options.quadratic && !options.trees;
   c.m_topRelief = options.topRelief;
   if (c.m_quadratic) {
     Eigen::MatrixXd expanded(n, 2 * d);
@@ -119,6 +119,26 @@ CategoryClassifier CategoryClassifier::train(const std::vector<CategorySample>& 
            (static_cast<double>(k) * counts[c.m_classes[cls]]);
   }
   w /= w.sum();
+  c.m_threshold = options.threshold;
+  nlohmann::json objects = nlohmann::json::object();
+  for (const auto& [cls, count] : counts) objects[cls] = count;
+  c.training["objects"] = objects;
+  c.training["top_relief"] = options.topRelief;
+  if (options.trees) {
+    std::vector<std::vector<float>> rows(n, std::vector<float>(inputs));
+    std::vector<float> weight(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      for (std::size_t j = 0; j < inputs; ++j) rows[i][j] = static_cast<float>(x(i, j));
+      weight[i] = static_cast<float>(w(i) * static_cast<double>(n));
+    }
+    for (std::size_t a = 0; a < k; ++a) {
+      std::vector<bool> positive(n);
+      for (std::size_t i = 0; i < n; ++i) positive[i] = y(i, a) > 0;
+      c.m_trees.push_back(fitBoostedTrees(rows, positive, weight, options.boosting));
+    }
+    c.training["trees"] = {{"rounds", options.boosting.rounds}, {"depth", options.boosting.depth}};
+    return c;
+  }
   // Step size from the curvature bound of the weighted softmax loss (0.5 lambda_max(X^T W X)),
   // found by power iteration: plain gradient descent then converges without tuning.
   Eigen::MatrixXd xtwx = x.transpose() * w.asDiagonal() * x;
@@ -151,14 +171,9 @@ CategoryClassifier CategoryClassifier::train(const std::vector<CategorySample>& 
     c.m_bias[a] = bias(a);
     for (std::size_t j = 0; j < inputs; ++j) c.m_weights[a][j] = weights(a, j);
   }
-  c.m_threshold = options.threshold;
-  nlohmann::json objects = nlohmann::json::object();
-  for (const auto& [cls, count] : counts) objects[cls] = count;
-  c.training["objects"] = objects;
   c.training["l2"] = options.l2;
   c.training["iterations"] = options.iterations;
   c.training["quadratic"] = options.quadratic;
-  c.training["top_relief"] = options.topRelief;
   return c;
 }
 
@@ -168,6 +183,15 @@ std::vector<double> CategoryClassifier::probabilities(const std::vector<float>& 
                           " for a category classifier trained on size " +
                           std::to_string(m_centre.size()));
   const std::vector<double> in = inputs(descriptor);
+  if (!m_trees.empty()) {
+    const std::vector<float> row(in.begin(), in.end());
+    std::vector<double> p(m_classes.size());
+    double sum = 0;
+    for (std::size_t a = 0; a < m_classes.size(); ++a)
+      sum += (p[a] = 1.0 / (1.0 + std::exp(-static_cast<double>(m_trees[a].score(row)))));
+    for (double& v : p) v /= sum;
+    return p;
+  }
   std::vector<double> logits(m_classes.size());
   for (std::size_t a = 0; a < m_classes.size(); ++a) {
     double z = m_bias[a];
@@ -226,8 +250,13 @@ void CategoryClassifier::save(const std::filesystem::path& file) const {
   j["top_relief"] = m_topRelief;
   j["centre"] = m_centre;
   j["scale"] = m_scale;
-  j["weights"] = m_weights;
-  j["bias"] = m_bias;
+  if (m_trees.empty()) {
+    j["weights"] = m_weights;
+    j["bias"] = m_bias;
+  } else {
+    j["trees"] = nlohmann::json::array();
+    for (const auto& t : m_trees) j["trees"].push_back(toJson(t));
+  }
   j["training"] = training;
   if (!evidence.empty()) {
     j["evidence"] = {{"thresholds", evidence.thresholds},
@@ -261,8 +290,18 @@ CategoryClassifier CategoryClassifier::load(const std::filesystem::path& file) {
     c.m_scale = j.at("scale").get<std::vector<float>>();
     c.m_quadratic = j.value("quadratic", false);
     c.m_topRelief = j.value("top_relief", false);
-    c.m_weights = j.at("weights").get<std::vector<std::vector<double>>>();
-    c.m_bias = j.at("bias").get<std::vector<double>>();
+    if (j.contains("trees")) {
+      for (const auto& t : j.at("trees")) {
+        try {
+          c.m_trees.push_back(boostedTreesFromJson(t));
+        } catch (const InvalidArgument& e) {
+          throw FileError(file, std::string("malformed category classifier: ") + e.what());
+        }
+      }
+    } else {
+      c.m_weights = j.at("weights").get<std::vector<std::vector<double>>>();
+      c.m_bias = j.at("bias").get<std::vector<double>>();
+    }
     c.training = j.value("training", nlohmann::json::object());
     if (j.contains("evidence")) {
       const auto& e = j.at("evidence");
@@ -276,8 +315,12 @@ CategoryClassifier CategoryClassifier::load(const std::filesystem::path& file) {
     throw FileError(file, std::string("malformed category classifier: ") + e.what());
   }
   const std::size_t d = c.m_centre.size(), k = c.m_classes.size();
-  bool ok = d > 0 && k >= 2 && c.m_scale.size() == d && c.m_weights.size() == k && c.m_bias.size() == k;
-  for (const auto& row : c.m_weights) ok = ok && row.size() == (c.m_quadratic ? 2 * d : d);
+  const std::size_t inputs = c.m_quadratic ? 2 * d : d;
+  bool ok = d > 0 && k >= 2 && c.m_scale.size() == d &&
+            (c.m_trees.empty() ? c.m_weights.size() == k && c.m_bias.size() == k
+                               : c.m_trees.size() == k);
+  for (const auto& row : c.m_weights) ok = ok && row.size() == inputs;
+  for (const auto& t : c.m_trees) ok = ok && t.features == inputs;
   for (float s : c.m_scale) ok = ok && s > 0;
   for (const auto& [category, t] : c.evidence.thresholds)
     if (!std::isfinite(t) || t < 0 || t > 1)
@@ -290,7 +333,7 @@ CategoryClassifier CategoryClassifier::load(const std::filesystem::path& file) {
                     "probability in (0, 1]");
   if (!ok)
     throw FileError(file, "malformed category classifier: classes, centre, scale, weights and bias "
-                          "do not agree in size");
+                          "(or trees) do not agree in size");
   return c;
 }
 

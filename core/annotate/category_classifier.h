@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "core/grid/top_relief.h"
+#include "core/points/boosted_trees.h"
 
 namespace sagrid {
 
@@ -82,6 +83,10 @@ struct CategoryTrainingOptions {
   // The samples' inputs end with the top relief (categoryInputs(grid, true)); recorded in the
   // file so that classification appends it too.
   bool topRelief = false;
+  // Boosted trees per class (one against the rest, on the standardized inputs without squares)
+  // instead of the softmax; a class's probability is its trees' sigmoid over the classes' sum.
+  bool trees = false;
+  BoostingOptions boosting;
 };
 
 struct FeatureGrid;
@@ -132,8 +137,9 @@ class CategoryClassifier {
   std::vector<double> inputs(const std::vector<float>& descriptor) const;
   bool m_quadratic = false;
   bool m_topRelief = false;
-  std::vector<std::vector<double>> m_weights;  // classes x inputs
+  std::vector<std::vector<double>> m_weights;  // classes x inputs (empty with trees)
   std::vector<double> m_bias;
+  std::vector<BoostedTrees> m_trees;  // one per class, or none (the softmax decides)
   double m_threshold = 0.5;
 };
 

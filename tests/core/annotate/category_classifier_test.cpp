@@ -98,6 +98,45 @@ TEST(CategoryClassifier, FileRoundTripsAndCorruptionIsNamed) {
   }
 }
 
+// Boosted trees per class instead of the softmax: the same blobs separated and rejected, the
+// probabilities a distribution, the file round-trips (trees, no weights) and a tree pointing
+// outside itself is named.
+TEST(CategoryClassifier, TreesSeparateSyntheticClassesAndRoundTrip) {
+  CategoryTrainingOptions options;
+  options.trees = true;
+  options.boosting.depth = 2;
+  const auto c = CategoryClassifier::train(blobs(30, 1), options);
+  int right = 0;
+  for (const auto& s : blobs(20, 2)) {
+    right += c.classify(s.descriptor).category == categoryClass(s.category);
+    const auto p = c.probabilities(s.descriptor);
+    EXPECT_NEAR(p[0] + p[1] + p[2], 1.0, 1e-9);
+  }
+  EXPECT_GE(right, 57);  // of 60
+  EXPECT_TRUE(c.classify({0.1f, 0.0f, 1.0f, 0.0f, 0.0f, 0.0f}).rejected);
+  const auto dir = test::freshTempDir();
+  const auto file = dir / kCategoryClassifierFile;
+  c.save(file);
+  const auto text = readFileBytes(file);
+  EXPECT_NE(text.find("\"trees\""), std::string::npos);
+  EXPECT_EQ(text.find("\"weights\""), std::string::npos);
+  const auto back = CategoryClassifier::load(file);
+  for (const auto& s : blobs(5, 4)) {
+    const auto p = c.probabilities(s.descriptor), q = back.probabilities(s.descriptor);
+    for (std::size_t i = 0; i < p.size(); ++i) EXPECT_NEAR(p[i], q[i], 1e-6);
+  }
+  auto j = nlohmann::json::parse(text);
+  j["trees"][0]["trees"][0][0][0] = 999;  // a feature the inputs do not have
+  j.erase("sha256");
+  writeFileAtomic(file, j.dump());
+  try {
+    CategoryClassifier::load(file);
+    FAIL() << "a broken tree was accepted";
+  } catch (const FileError& e) {
+    EXPECT_NE(std::string(e.what()).find(file.string()), std::string::npos) << e.what();
+  }
+}
+
 model::AffordanceModel cardOnly(const std::string& name, std::vector<float> mean) {
   std::vector<float> spread(mean.size(), 1.0f);
   return test::untrainedModelWithDescriptor(name, std::move(mean), std::move(spread));
