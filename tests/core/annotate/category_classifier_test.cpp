@@ -352,14 +352,13 @@ TEST(CategoryClassifier, ShippedClassifierRejectsGeneratedDistractorsSlow) {
             "stove");
 }
 
-// The shipped classifier and its evidence gate, as `annotate` without --category meets them, on
-// the bundled samples a user opens first: every one filed under its category (the folder name's
-// prefix), none rejected by either.
+// The shipped classifier (and the evidence gate where the file carries one; the shipped file
+// carries none since session 33), as `annotate` without --category meets them, on the bundled
+// samples a user opens first: every one filed under its category (the folder name's prefix).
 TEST(CategoryClassifier, ShippedModelsFileEveryBundledSampleUnderItsCategorySlow) {
   const auto resources = std::filesystem::path(SAGRID_SOURCE_DIR) / "resources";
   const ModelSet set = ModelSet::load(resources / "models");
   ASSERT_NE(set.categoryClassifier(), nullptr);
-  EXPECT_FALSE(set.categoryClassifier()->evidence.empty());
   int samples = 0;
   for (const auto& folder : std::filesystem::directory_iterator(resources / "samples")) {
     if (!folder.is_directory()) continue;
