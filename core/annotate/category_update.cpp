@@ -137,6 +137,11 @@ CategoryClassifier retrainCategoryClassifier(const CategoryClassifier& current,
   options.quadratic = record.value("quadratic", options.quadratic);
   options.threshold = current.threshold();
   options.topRelief = current.topRelief();
+  if (record.contains("trees")) {  // the same kind of classifier as the current one
+    options.trees = true;
+    options.boosting.rounds = record.at("trees").value("rounds", options.boosting.rounds);
+    options.boosting.depth = record.at("trees").value("depth", options.boosting.depth);
+  }
   const auto samples = collectWeightedSamples(folders, features, {}, options.topRelief, onProgress);
   if (samples.empty())
     throw InvalidArgument("no object to retrain the category classifier on: " + curated.string() +

@@ -63,8 +63,10 @@ TEST(CategoryRetrainWorker, AWorseRetrainingIsRefusedAndTheLoadedClassifierStays
   const fs::path dir = test::freshTempDir();
   generateFolders(dir);
   fs::copy(kShipped, dir / "loaded", fs::copy_options::recursive);
-  const CategoryClassifier loaded =
-      saveLoaded(dir, CategoryClassifier::load(kShipped / kCategoryClassifierFile), 1);
+  // A softmax classifier: its gradient steps make the retraining worse (the shipped one is trees).
+  CategoryClassifier softmax = CategoryClassifier::load(kShipped / kCategoryClassifierFile);
+  softmax.training.erase("trees");
+  const CategoryClassifier loaded = saveLoaded(dir, softmax, 1);
   const std::string before = readFileBytes(dir / "loaded" / kCategoryClassifierFile);
 
   const TrainingStatus status = retrain(dir, dir / "held-out");
@@ -111,12 +113,23 @@ TEST(CategoryRetrainWorker, ABetterRetrainingIsAdopted) {
   const fs::path dir = test::freshTempDir();
   generateFolders(dir);
   fs::copy(kShipped, dir / "loaded", fs::copy_options::recursive);
-  CategoryClassifier oneStep = CategoryClassifier::load(kShipped / kCategoryClassifierFile);
+  const CategoryClassifier shipped = CategoryClassifier::load(kShipped / kCategoryClassifierFile);
+  const auto features = ModelSet::load(kShipped).featureOptions();
+  std::vector<std::string> missing;
+  // A classifier of boosted trees (the shipped one) retrains as trees, with its rounds and depth.
+  ASSERT_TRUE(shipped.training.contains("trees"));
+  CategoryClassifier trees = shipped;
+  trees.training["data"] = {(dir / "own").string()};
+  EXPECT_EQ(retrainCategoryClassifier(trees, dir / "curated", kCuratedCategoryWeight, features, missing)
+                .training.at("trees"),
+            shipped.training.at("trees"));
+  // A softmax classifier of one gradient step.
+  CategoryClassifier oneStep = shipped;
+  oneStep.training.erase("trees");
   oneStep.training["data"] = {(dir / "own").string()};
   oneStep.training["iterations"] = 1;
-  std::vector<std::string> missing;
-  oneStep = retrainCategoryClassifier(oneStep, dir / "curated", kCuratedCategoryWeight,
-                                      ModelSet::load(kShipped).featureOptions(), missing);
+  oneStep = retrainCategoryClassifier(oneStep, dir / "curated", kCuratedCategoryWeight, features,
+                                      missing);
   saveLoaded(dir, oneStep, 2000);
   const std::string before = readFileBytes(dir / "loaded" / kCategoryClassifierFile);
   const auto queue = queueOf(dir);
