@@ -407,7 +407,7 @@ std::string scorerCrossValidationMarkdown(const ScorerCrossValidation& cv) {
      << "point by hand = 1). Single-point error: the best point's distance to the nearest true "
      << "point, cm. Candidates reach " << reportCell(100 * cv.candidateRecall, "%.0f %%")
      << " of the true points within 5 cm (the most any choice can get right).\n\n"
-     << "| source | objects | passes: edits | one key | error | generated only: edits | one key "
+     << "| source | objects | the count: edits | one key | error | generated only: edits | one key "
         "| error | + curated of other sources: edits | one key | error |\n"
      << "|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (const auto& f : cv.folds)
