@@ -116,6 +116,7 @@ void setupScorer(CLI::App& root) {
     std::string models, out;
     sagrid::ScorerTrainingOptions training;
     sagrid::ScorerCurveOptions curve;
+    std::string compareConfidence;
   };
   auto l = std::make_shared<LearnOptions>();
   auto* cv = cmd->add_subcommand(
@@ -131,8 +132,20 @@ void setupScorer(CLI::App& root) {
   cv->add_option("--tuned-on", l->curve.tunedOn,
                  "A source a pass or rule was made on (repeatable): the report also gives the "
                  "figures without these sources");
+  cv->add_option("--compare-confidence", l->compareConfidence,
+                 "A models folder whose confidence.json is checked beside the one fitted on the "
+                 "--tuned-on sources, on the other sources' objects (log loss, Brier)");
   addTrainingOptions(*cv, l->candidates, l->training);
   cv->callback([l] {
+    if (!l->compareConfidence.empty()) {
+      const auto other = sagrid::readConfidenceCalibration(l->compareConfidence);
+      if (!other.fitted)
+        throw sagrid::FileError(fs::path(l->compareConfidence) / "confidence.json",
+                                "no fitted object confidence to compare");
+      l->curve.otherConfidence = other;
+      l->curve.otherConfidenceName = (fs::path(l->compareConfidence) / "confidence.json").string() +
+                                     " (fitted on " + other.fittedOn + ")";
+    }
     const auto result =
         sagrid::crossValidatePointScorer(readAll(l->candidates), l->training, l->curve);
     const fs::path out = l->out.empty() ? fs::path("scorer-cv") : fs::path(l->out);

@@ -51,7 +51,7 @@ PointEdits editsOf(const CandidateSet& set, const std::vector<Eigen::Vector3f>& 
 // passes' points where it has no decision), as annotate's object confidence reads it, and
 // whether the object needs no edit.
 void addObjectOutcomes(const std::vector<const CandidateSet*>& sets, const PointScorer& scorer,
-                       std::vector<double>& leastSure, std::vector<bool>& oneKey) {
+                       ScorerCrossValidation& cv) {
   std::map<std::string, std::pair<double, PointEdits>> byObject;
   for (const CandidateSet* set : sets) {
     const ModelPointScorer* s = scorer.forModel(set->model);
@@ -72,9 +72,27 @@ void addObjectOutcomes(const std::vector<const CandidateSet*>& sets, const Point
     edits += editsOf(*set, decides ? surface : set->keptSurface);
   }
   for (const auto& [object, outcome] : byObject) {
-    leastSure.push_back(outcome.first);
-    oneKey.push_back(outcome.second.total() == 0);
+    cv.leastSure.push_back(outcome.first);
+    cv.oneKey.push_back(outcome.second.total() == 0);
+    cv.objectSources.push_back(object.substr(0, object.rfind('/')));
   }
+}
+
+ConfidenceCheck checkConfidence(const std::string& map, const ConfidenceCalibration& c,
+                                const std::vector<double>& leastSure,
+                                const std::vector<bool>& oneKey) {
+  ConfidenceCheck check{map};
+  for (std::size_t i = 0; i < leastSure.size(); ++i) {
+    const double p = std::clamp(c.probability(leastSure[i]), 1e-9, 1 - 1e-9);
+    check.logLoss -= oneKey[i] ? std::log(p) : std::log(1 - p);
+    check.brier += (p - oneKey[i]) * (p - oneKey[i]);
+    check.meanProbability += p;
+  }
+  const double n = static_cast<double>(std::max<std::size_t>(leastSure.size(), 1));
+  check.logLoss /= n;
+  check.brier /= n;
+  check.meanProbability /= n;
+  return check;
 }
 
 PointChoiceFigures figuresOf(const std::vector<const CandidateSet*>& sets, const Chooser& choose) {
@@ -214,7 +232,7 @@ ScorerCrossValidation crossValidatePointScorer(const std::vector<CandidateSet>& 
     fold.passes = figuresOf(held, passes);
     fold.generatedOnly = generatedOnly ? figuresOf(held, scorerChooser(*generatedOnly)) : fold.passes;
     fold.withCurated = figuresOf(held, scorerChooser(withCurated));
-    addObjectOutcomes(held, withCurated, cv.leastSure, cv.oneKey);
+    addObjectOutcomes(held, withCurated, cv);
     fold.objects = fold.passes.effort.objects;
     // The learning curve: k objects of the other sources, drawn once per fold.
     std::vector<std::string> order;
@@ -283,6 +301,27 @@ ScorerCrossValidation crossValidatePointScorer(const std::vector<CandidateSet>& 
   if (!cv.leastSure.empty()) {
     cv.confidence = fitConfidence(cv.leastSure, cv.oneKey);
     cv.confidence->fittedOn = "the curated objects' points decided leave one source out (sagrid scorer cv)";
+  }
+  // The confidence fitted on the tuned-on sources alone, and the other one given, on the rest.
+  std::vector<double> tunedSure, unseenSure;
+  std::vector<bool> tunedRight, unseenRight;
+  for (std::size_t i = 0; i < cv.leastSure.size(); ++i) {
+    const bool tuned = std::count(cv.tunedOn.begin(), cv.tunedOn.end(), cv.objectSources[i]) > 0;
+    (tuned ? tunedSure : unseenSure).push_back(cv.leastSure[i]);
+    (tuned ? tunedRight : unseenRight).push_back(cv.oneKey[i]);
+  }
+  if (!tunedSure.empty() && !unseenSure.empty()) {
+    cv.unseenObjects = unseenSure.size();
+    cv.unseenOneKeyShare =
+        static_cast<double>(std::count(unseenRight.begin(), unseenRight.end(), true)) /
+        static_cast<double>(unseenRight.size());
+    cv.unseenConfidence.push_back(checkConfidence(
+        "fitted on the tuned-on sources' objects", fitConfidence(tunedSure, tunedRight),
+        unseenSure, unseenRight));
+    if (curveOptions.otherConfidence)
+      cv.unseenConfidence.push_back(checkConfidence(curveOptions.otherConfidenceName,
+                                                    *curveOptions.otherConfidence, unseenSure,
+                                                    unseenRight));
   }
   return cv;
 }
@@ -449,6 +488,15 @@ std::string scorerCrossValidationMarkdown(const ScorerCrossValidation& cv) {
          << " | " << reportCell(100 * row.precision, "%.0f %%") << " |\n";
     }
   }
+  if (!cv.unseenConfidence.empty()) {
+    md << "\nOn the " << cv.unseenObjects << " objects of the sources not tuned on (right with one "
+       << "key: " << reportCell(100 * cv.unseenOneKeyShare, "%.0f %%")
+       << "), maps not fitted on them:\n\n| object confidence | log loss | Brier | mean P |\n"
+       << "|---|---|---|---|\n";
+    for (const auto& c : cv.unseenConfidence)
+      md << "| " << c.map << " | " << reportCell(c.logLoss, "%.3f") << " | "
+         << reportCell(c.brier, "%.3f") << " | " << reportCell(c.meanProbability, "%.2f") << " |\n";
+  }
   return md.str();
 }
 
@@ -460,6 +508,14 @@ nlohmann::json toJson(const ScorerCrossValidation& cv) {
                      {"passes", figuresJson(f.passes)},
                      {"generated_only", figuresJson(f.generatedOnly)},
                      {"with_curated", figuresJson(f.withCurated)}});
+  nlohmann::json unseenConfidence = nlohmann::json::array();
+  for (const auto& c : cv.unseenConfidence)
+    unseenConfidence.push_back({{"map", c.map},
+                                {"log_loss", c.logLoss},
+                                {"brier", c.brier},
+                                {"mean_probability", c.meanProbability},
+                                {"objects", cv.unseenObjects},
+                                {"one_key_share", cv.unseenOneKeyShare}});
   nlohmann::json curve = nlohmann::json::array();
   for (std::size_t k = 0; k < cv.ks.size(); ++k)
     curve.push_back({{"k", cv.ks[k]},
@@ -476,8 +532,12 @@ nlohmann::json toJson(const ScorerCrossValidation& cv) {
           {"candidate_recall", cv.candidateRecall},
           {"folds", folds},
           {"objects",
-           {{"least_sure_distance", cv.leastSure}, {"one_key", cv.oneKey}, {"signal_auc", signalAuc(cv)}}},
+           {{"least_sure_distance", cv.leastSure},
+            {"one_key", cv.oneKey},
+            {"source", cv.objectSources},
+            {"signal_auc", signalAuc(cv)}}},
           {"confidence", cv.confidence ? toJson(*cv.confidence) : nlohmann::json()},
+          {"unseen_confidence", unseenConfidence},
           {"all",
            {{"passes", figuresJson(cv.passes)},
             {"generated_only", figuresJson(cv.generatedOnly)},

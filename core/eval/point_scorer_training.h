@@ -63,8 +63,19 @@ struct ScorerSourceFold {
 struct ScorerCurveOptions {
   std::vector<std::size_t> ks;  // curated objects of the other sources in training (learning curve)
   unsigned seed = 1;            // of the draws
-  // Sources a pass or rule was made on: the report gives the figures without them too.
+  // Sources a pass or rule was made on: the report gives the figures without them too, and an
+  // object confidence fitted on their objects alone is checked on the others.
   std::vector<std::string> tunedOn;
+  // Another object confidence (e.g. a models folder's confidence.json) checked on the same
+  // objects, named in the report.
+  std::optional<ConfidenceCalibration> otherConfidence;
+  std::string otherConfidenceName;
+};
+
+// How well an object confidence predicts "right with one key" on objects it was not fitted on.
+struct ConfidenceCheck {
+  std::string map;  // which calibration
+  double logLoss = 0, brier = 0, meanProbability = 0;
 };
 
 struct ScorerCrossValidation {
@@ -84,7 +95,14 @@ struct ScorerCrossValidation {
   // by a scorer that saw it.
   std::vector<double> leastSure;
   std::vector<bool> oneKey;
+  std::vector<std::string> objectSources;  // each object's source, in the same order
   std::optional<ConfidenceCalibration> confidence;
+  // With tunedOn: on the objects of the other sources (unseenObjects of them, unseenOneKeyShare
+  // right with one key), the confidence fitted on the tuned-on sources' objects alone, then
+  // ScorerCurveOptions::otherConfidence; neither was fitted on them.
+  std::vector<ConfidenceCheck> unseenConfidence;
+  std::size_t unseenObjects = 0;
+  double unseenOneKeyShare = 0;
 };
 
 // Throws InvalidArgument when fewer than two sources of real objects are in `sets`.

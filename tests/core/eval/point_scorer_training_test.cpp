@@ -176,6 +176,32 @@ TEST(PointScorerTraining, EachFoldIsDecidedByAScorerFittedWithoutItsSource) {
   three.leastSure = {0.01, 0.02, 0.02};
   three.oneKey = {true, false, true};
   EXPECT_DOUBLE_EQ(signalAuc(three), 0.75);
+
+  // With tuned-on sources: the confidence fitted on their objects alone, and another one given,
+  // checked on the other sources' objects (log loss and Brier by hand for the given map).
+  ASSERT_EQ(cv.objectSources.size(), objects);
+  EXPECT_TRUE(cv.unseenConfidence.empty());  // no source marked tuned-on
+  ScorerCurveOptions tuned;
+  tuned.tunedOn = {"repo-a"};
+  ConfidenceCalibration half;
+  half.fitted = true;  // P = 0.5 everywhere: log loss ln 2, Brier 0.25
+  tuned.otherConfidence = half;
+  tuned.otherConfidenceName = "a coin";
+  const ScorerCrossValidation checked = crossValidatePointScorer(sets, {}, tuned);
+  ASSERT_EQ(checked.unseenConfidence.size(), 2u);
+  EXPECT_EQ(checked.unseenObjects, static_cast<std::size_t>(std::count(
+                                       checked.objectSources.begin(), checked.objectSources.end(),
+                                       std::string("repo-b")) +
+                                   std::count(checked.objectSources.begin(),
+                                              checked.objectSources.end(), std::string("library-c"))));
+  EXPECT_EQ(checked.unseenConfidence[1].map, "a coin");
+  EXPECT_NEAR(checked.unseenConfidence[1].logLoss, std::log(2.0), 1e-9);
+  EXPECT_NEAR(checked.unseenConfidence[1].brier, 0.25, 1e-9);
+  EXPECT_NEAR(checked.unseenConfidence[1].meanProbability, 0.5, 1e-9);
+  EXPECT_TRUE(std::isfinite(checked.unseenConfidence[0].logLoss));
+  EXPECT_NE(scorerCrossValidationMarkdown(checked).find("| a coin | 0.693 | 0.250 | 0.50 |"),
+            std::string::npos)
+      << scorerCrossValidationMarkdown(checked);
 }
 
 // A scorer that always takes one point: two edits per synthetic object.
