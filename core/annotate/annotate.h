@@ -45,8 +45,8 @@ struct ModelPrediction {
 PredictedField predictField(const model::AffordanceModel& model, const FeatureGrid& features,
                             int symmetries = 1);
 // Sets `prediction`'s points (normalized frame) to `points`: one at the position of a point it
-// had keeps that point's surface point, the others are projected onto the surface. The passes
-// after the count (mirror pairs, repeated parts) add and move points through it.
+// had keeps that point's surface point, the others are projected onto the surface. The learned
+// point decision sets its chosen points through it.
 void setPoints(ModelPrediction& prediction, std::vector<ExtractedPoint> points,
                const FeatureGrid& features, const SurfaceScene& scene, UpAxis fileUp);
 
