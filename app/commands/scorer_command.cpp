@@ -40,9 +40,7 @@ fs::path writeModelsWithScorer(const fs::path& from, const fs::path& out,
   const fs::path file = sagrid::writeScorerUpdate(update, out);
   if (update.guard)
     for (const auto& v : update.guard->byModel)
-      std::fprintf(stderr, "guard: %s: %zu -> %zu edits on %zu held-out points: %s\n",
-                   v.model.c_str(), v.currentEdits, v.newEdits, v.handPoints,
-                   v.adopted ? "adopted" : "the decision before stays");
+      std::fprintf(stderr, "guard: %s\n", sagrid::toString(v).c_str());
   std::fprintf(stderr, "scorer: %zu models, trained on %s; %s -> %s\n",
                update.scorer.byModel.size(), update.scorer.trainedOn.c_str(),
                update.verdict.c_str(), file.c_str());

@@ -27,11 +27,11 @@ double secondsSince(Clock::time_point t) {
 }
 
 // How the points were decided, for the curator and the record: the learned decision (what its
-// scorer was trained on, the passes it switched off) or the passes.
+// scorer was trained on, the passes it switched off) or the network's count.
 void recordPointDecision(ObjectLabels& labels, const PassOptions& passes) {
   auto& prediction = labels.extra["prediction"];
   if (!passes.scorer) {
-    prediction["point_decision"] = "passes";
+    prediction["point_decision"] = "count";
     return;
   }
   prediction["point_decision"] = "learned";

@@ -23,23 +23,34 @@ float objectWeight(const CandidateSet& set, const ScorerTrainingOptions& options
   return set.generated ? 1.0f : options.realWeight;
 }
 
-std::vector<Eigen::Vector3f> chosenSurface(const CandidateSet& set,
-                                           const std::vector<float>& probability,
-                                           const PointChoice& choice) {
+std::vector<Eigen::Vector3f> surfaceOf(const CandidateSet& set,
+                                       const std::vector<std::size_t>& chosen) {
   std::vector<Eigen::Vector3f> out;
-  for (std::size_t i : chooseCandidates(probability, set.candidates, choice))
-    out.push_back(set.candidateSurface[i]);
+  for (std::size_t i : chosen) out.push_back(set.candidateSurface[i]);
   return out;
 }
 
-// The scorer's points where it has a decision for the set's model and the set has candidates,
-// else the passes' points.
+std::vector<Eigen::Vector3f> chosenSurface(const CandidateSet& set,
+                                           const std::vector<float>& probability,
+                                           const PointChoice& choice) {
+  return surfaceOf(set, chooseCandidates(probability, set.candidates, choice));
+}
+
+// The candidates `scorer` chooses for `set`; nullopt where it has no decision for the set's model
+// or the set has no candidates (the count's points stand).
+std::optional<std::vector<std::size_t>> scorerChoice(const PointScorer& scorer,
+                                                     const CandidateSet& set) {
+  const ModelPointScorer* s = scorer.forModel(set.model);
+  if (!s || set.candidates.empty()) return std::nullopt;
+  return chooseCandidates(candidateProbabilities(s->classifier, set.candidates), set.candidates,
+                          s->choice);
+}
+
+// The scorer's points where it decides, else the count's.
 Chooser scorerChooser(const PointScorer& scorer) {
   return [&scorer](const CandidateSet& set) {
-    const ModelPointScorer* s = scorer.forModel(set.model);
-    return s && !set.candidates.empty()
-               ? chosenSurface(set, candidateProbabilities(s->classifier, set.candidates), s->choice)
-               : set.keptSurface;
+    const auto chosen = scorerChoice(scorer, set);
+    return chosen ? surfaceOf(set, *chosen) : set.keptSurface;
   };
 }
 
@@ -48,28 +59,18 @@ PointEdits editsOf(const CandidateSet& set, const std::vector<Eigen::Vector3f>& 
 }
 
 // Per object of `sets`: the largest predicted distance among the points `scorer` chooses (the
-// passes' points where it has no decision), as annotate's object confidence reads it, and
-// whether the object needs no edit.
+// count's points where it has no decision), as annotate's object confidence reads it, whether the
+// object needs no edit, and its source.
 void addObjectOutcomes(const std::vector<const CandidateSet*>& sets, const PointScorer& scorer,
                        ScorerCrossValidation& cv) {
   std::map<std::string, std::pair<double, PointEdits>> byObject;
   for (const CandidateSet* set : sets) {
-    const ModelPointScorer* s = scorer.forModel(set->model);
-    const bool decides = s && !set->candidates.empty();
-    std::vector<std::size_t> chosen;
-    if (decides)
-      chosen = chooseCandidates(candidateProbabilities(s->classifier, set->candidates),
-                                set->candidates, s->choice);
-    else
-      for (std::size_t i = 0; i < set->candidates.size(); ++i)
-        if (set->candidates[i].kept) chosen.push_back(i);
-    std::vector<Eigen::Vector3f> surface;
+    const auto chosen = scorerChoice(scorer, *set);
     auto& [worst, edits] = byObject[set->source + "/" + set->object];
-    for (std::size_t i : chosen) {
-      surface.push_back(set->candidateSurface[i]);
-      worst = std::max(worst, static_cast<double>(set->candidates[i].distance));
-    }
-    edits += editsOf(*set, decides ? surface : set->keptSurface);
+    for (std::size_t i = 0; i < set->candidates.size(); ++i)
+      if (chosen ? std::count(chosen->begin(), chosen->end(), i) > 0 : set->candidates[i].kept)
+        worst = std::max(worst, static_cast<double>(set->candidates[i].distance));
+    edits += editsOf(*set, chosen ? surfaceOf(*set, *chosen) : set->keptSurface);
   }
   for (const auto& [object, outcome] : byObject) {
     cv.leastSure.push_back(outcome.first);
@@ -215,7 +216,7 @@ ScorerCrossValidation crossValidatePointScorer(const std::vector<CandidateSet>& 
   cv.realObjects = realObjects.size();
   std::optional<PointScorer> generatedOnly;
   if (!generated.empty()) generatedOnly = trainPointScorer(generated, options);
-  const Chooser passes = [](const CandidateSet& set) { return set.keptSurface; };
+  const Chooser count = [](const CandidateSet& set) { return set.keptSurface; };
   std::size_t truthPoints = 0, reached = 0;
   unsigned foldIndex = 0;
   for (const auto& [source, held] : realBySource) {
@@ -229,11 +230,11 @@ ScorerCrossValidation crossValidatePointScorer(const std::vector<CandidateSet>& 
     const PointScorer withCurated = trainPointScorer(training, options);
     ScorerSourceFold fold;
     fold.source = source;
-    fold.passes = figuresOf(held, passes);
-    fold.generatedOnly = generatedOnly ? figuresOf(held, scorerChooser(*generatedOnly)) : fold.passes;
+    fold.count = figuresOf(held, count);
+    fold.generatedOnly = generatedOnly ? figuresOf(held, scorerChooser(*generatedOnly)) : fold.count;
     fold.withCurated = figuresOf(held, scorerChooser(withCurated));
     addObjectOutcomes(held, withCurated, cv);
-    fold.objects = fold.passes.effort.objects;
+    fold.objects = fold.count.effort.objects;
     // The learning curve: k objects of the other sources, drawn once per fold.
     std::vector<std::string> order;
     for (const auto& [object, objectSets] : otherObjects) order.push_back(object);
@@ -250,7 +251,7 @@ ScorerCrossValidation crossValidatePointScorer(const std::vector<CandidateSet>& 
         fits = true;
       } catch (const InvalidArgument&) {
       }
-      if (!fits) fold.curve.push_back(fold.passes);  // nothing to fit on: the passes stand
+      if (!fits) fold.curve.push_back(fold.count);  // nothing to fit on: the count stands
     }
     cv.folds.push_back(fold);
     for (const CandidateSet* set : held)
@@ -288,7 +289,7 @@ ScorerCrossValidation crossValidatePointScorer(const std::vector<CandidateSet>& 
     return t;
   };
   for (bool unseen : {false, true}) {
-    (unseen ? cv.unseenPasses : cv.passes) = total([](const auto& f) -> const auto& { return f.passes; }, unseen);
+    (unseen ? cv.unseenCount : cv.count) = total([](const auto& f) -> const auto& { return f.count; }, unseen);
     (unseen ? cv.unseenGeneratedOnly : cv.generatedOnly) =
         total([](const auto& f) -> const auto& { return f.generatedOnly; }, unseen);
     (unseen ? cv.unseenWithCurated : cv.withCurated) =
@@ -375,21 +376,31 @@ PointScorer adoptedScorer(const PointScorer* current, const PointScorer& fresh,
   PointScorer out = current ? *current : PointScorer{};
   out.passesOff = fresh.passesOff;
   out.trainedOn = fresh.trainedOn;
-  std::vector<std::string> taken;
   for (const ScorerVerdict& v : guard.byModel) {
     if (!v.adopted) continue;
-    taken.push_back(v.model);
     const ModelPointScorer* decision = fresh.forModel(v.model);
     if (decision) out.byModel[v.model] = *decision;
     else out.byModel.erase(v.model);
   }
   if (!guard.adoptedWhole()) {
-    std::string models;
-    for (const auto& m : taken) models += (models.empty() ? "" : ", ") + m;
+    const std::string models = modelsWhere(guard, true);
     out.trainedOn += "; adopted for " + (models.empty() ? std::string("no model") : models) +
                      ", the other models keep the decision before";
   }
   return out;
+}
+
+std::string modelsWhere(const ScorerGuard& guard, bool adopted) {
+  std::string models;
+  for (const ScorerVerdict& v : guard.byModel)
+    if (v.adopted == adopted) models += (models.empty() ? "" : ", ") + v.model;
+  return models;
+}
+
+std::string toString(const ScorerVerdict& v) {
+  return v.model + ": " + std::to_string(v.currentEdits) + " -> " + std::to_string(v.newEdits) +
+         " edits on " + std::to_string(v.handPoints) + " held-out points: " +
+         (v.adopted ? "adopted" : "the decision before stays");
 }
 
 nlohmann::json toJson(const ScorerGuard& guard) {
@@ -450,13 +461,13 @@ std::string scorerCrossValidationMarkdown(const ScorerCrossValidation& cv) {
         "| error | + curated of other sources: edits | one key | error |\n"
      << "|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (const auto& f : cv.folds)
-    md << "| " << f.source << " | " << f.objects << " | " << cells(f.passes) << " | "
+    md << "| " << f.source << " | " << f.objects << " | " << cells(f.count) << " | "
        << cells(f.generatedOnly) << " | " << cells(f.withCurated) << " |\n";
-  md << "| **all** | " << cv.passes.effort.objects << " | " << cells(cv.passes) << " | "
+  md << "| **all** | " << cv.count.effort.objects << " | " << cells(cv.count) << " | "
      << cells(cv.generatedOnly) << " | " << cells(cv.withCurated) << " |\n";
   if (!cv.tunedOn.empty())
-    md << "| **sources no pass was made on** | " << cv.unseenPasses.effort.objects << " | "
-       << cells(cv.unseenPasses) << " | " << cells(cv.unseenGeneratedOnly) << " | "
+    md << "| **sources no pass was made on** | " << cv.unseenCount.effort.objects << " | "
+       << cells(cv.unseenCount) << " | " << cells(cv.unseenGeneratedOnly) << " | "
        << cells(cv.unseenWithCurated) << " |\n";
   if (!cv.ks.empty()) {
     md << "\n## Learning curve: k curated objects of the other sources in training\n\n"
@@ -476,10 +487,10 @@ std::string scorerCrossValidationMarkdown(const ScorerCrossValidation& cv) {
        << "Fitted on the " << c.objects << " curated objects' points as decided above (right with "
        << "one key: " << reportCell(100 * c.oneKeyShare, "%.0f %%") << "): P = sigmoid("
        << reportCell(c.intercept, "%.2f") << " + " << reportCell(c.slope, "%.2f")
-       << " x exp(-d / 0.02)), d the least sure point's predicted distance.\n\n"
-       << "| accept automatically above | objects | right among them |\n|---|---|---|\n";
-    md << "How well the signal orders the objects: " << reportCell(signalAuc(cv), "%.2f")
-       << " (AUC: the share of (right, wrong) object pairs where the right one's point is surer).\n\n";
+       << " x exp(-d / 0.02)), d the least sure point's predicted distance. How well the signal "
+       << "orders the objects: " << reportCell(signalAuc(cv), "%.2f")
+       << " (AUC: the share of (right, wrong) object pairs where the right one's point is surer)."
+       << "\n\n| accept automatically above | objects | right among them |\n|---|---|---|\n";
     std::vector<double> p;
     for (double d : cv.leastSure) p.push_back(c.probability(d));
     for (double threshold : {0.3, 0.5, 0.7, 0.9}) {
@@ -505,17 +516,18 @@ nlohmann::json toJson(const ScorerCrossValidation& cv) {
   for (const auto& f : cv.folds)
     folds.push_back({{"source", f.source},
                      {"objects", f.objects},
-                     {"passes", figuresJson(f.passes)},
+                     {"count", figuresJson(f.count)},
                      {"generated_only", figuresJson(f.generatedOnly)},
                      {"with_curated", figuresJson(f.withCurated)}});
-  nlohmann::json unseenConfidence = nlohmann::json::array();
+  nlohmann::json maps = nlohmann::json::array();
   for (const auto& c : cv.unseenConfidence)
-    unseenConfidence.push_back({{"map", c.map},
-                                {"log_loss", c.logLoss},
-                                {"brier", c.brier},
-                                {"mean_probability", c.meanProbability},
-                                {"objects", cv.unseenObjects},
-                                {"one_key_share", cv.unseenOneKeyShare}});
+    maps.push_back({{"map", c.map},
+                    {"log_loss", c.logLoss},
+                    {"brier", c.brier},
+                    {"mean_probability", c.meanProbability}});
+  const nlohmann::json unseenConfidence = {{"objects", cv.unseenObjects},
+                                           {"one_key_share", cv.unseenOneKeyShare},
+                                           {"maps", maps}};
   nlohmann::json curve = nlohmann::json::array();
   for (std::size_t k = 0; k < cv.ks.size(); ++k)
     curve.push_back({{"k", cv.ks[k]},
@@ -525,7 +537,7 @@ nlohmann::json toJson(const ScorerCrossValidation& cv) {
           {"tuned_on", cv.tunedOn},
           {"learning_curve", curve},
           {"unseen",
-           {{"passes", figuresJson(cv.unseenPasses)},
+           {{"count", figuresJson(cv.unseenCount)},
             {"generated_only", figuresJson(cv.unseenGeneratedOnly)},
             {"with_curated", figuresJson(cv.unseenWithCurated)}}},
           {"generated_objects", cv.generatedObjects},
@@ -539,7 +551,7 @@ nlohmann::json toJson(const ScorerCrossValidation& cv) {
           {"confidence", cv.confidence ? toJson(*cv.confidence) : nlohmann::json()},
           {"unseen_confidence", unseenConfidence},
           {"all",
-           {{"passes", figuresJson(cv.passes)},
+           {{"count", figuresJson(cv.count)},
             {"generated_only", figuresJson(cv.generatedOnly)},
             {"with_curated", figuresJson(cv.withCurated)}}}};
 }

@@ -2,7 +2,7 @@
 // (core/eval/candidate_sets.h) from generated and curated real objects, and measuring it leave one
 // source out: for each source of curated real objects (a wild-pool repository, a Sweet Home 3D
 // library, real-dev), a decision fitted on every other source (and on the generated objects) is
-// measured on that source's objects, beside the passes' points and beside a decision fitted on
+// measured on that source's objects, beside the count's points and beside a decision fitted on
 // generated objects alone. Figures are the curator's edits, the share right with one key and the
 // single-point error (the best point's distance to the nearest ground truth), as `sagrid eval`
 // counts them.
@@ -32,14 +32,14 @@ struct ScorerTrainingOptions {
   bool trees = true;
   BoostingOptions boosting;
   // The choice (core/points/candidate_classifier.h), per model the one of these that minimises
-  // the training objects' weighted edits (the first on ties: keep the passes' points, add none).
+  // the training objects' weighted edits (the first on ties: keep the count's points, add none).
   std::vector<float> keepThresholds = {0.0f, 0.1f, 0.2f, 0.3f, 0.4f, 0.5f, 0.6f};
   std::vector<float> addThresholds = {1.01f, 0.9f, 0.8f, 0.7f, 0.6f, 0.5f, 0.4f, 0.3f};
   std::vector<float> nmsRadii = {0.03f, 0.05f, 0.08f, 0.12f};
 };
 
 // One decision per model with both points and non-points among `sets`' candidates (other models
-// get none: their passes' points stand). Throws InvalidArgument when no model has.
+// get none: their count's points stand). Throws InvalidArgument when no model has.
 PointScorer trainPointScorer(const std::vector<const CandidateSet*>& sets,
                              const ScorerTrainingOptions& options);
 
@@ -54,7 +54,7 @@ struct PointChoiceFigures {
 struct ScorerSourceFold {
   std::string source;
   std::size_t objects = 0;
-  PointChoiceFigures passes, generatedOnly, withCurated;
+  PointChoiceFigures count, generatedOnly, withCurated;
   // Per ScorerCurveOptions::ks: fitted on the generated objects and k curated objects drawn from
   // the other sources.
   std::vector<PointChoiceFigures> curve;
@@ -80,9 +80,9 @@ struct ConfidenceCheck {
 
 struct ScorerCrossValidation {
   std::vector<ScorerSourceFold> folds;  // one per source of curated real objects
-  PointChoiceFigures passes, generatedOnly, withCurated;  // over every fold's objects
+  PointChoiceFigures count, generatedOnly, withCurated;  // over every fold's objects
   // The same over the folds of sources not in ScorerCurveOptions::tunedOn.
-  PointChoiceFigures unseenPasses, unseenGeneratedOnly, unseenWithCurated;
+  PointChoiceFigures unseenCount, unseenGeneratedOnly, unseenWithCurated;
   std::vector<std::string> tunedOn;
   std::vector<std::size_t> ks;
   std::vector<PointChoiceFigures> curve, unseenCurve;  // per k, over the folds
@@ -141,6 +141,11 @@ nlohmann::json toJson(const ScorerGuard& guard);
 // passes off and record are `fresh`'s, the record naming the models adopted when not all were.
 PointScorer adoptedScorer(const PointScorer* current, const PointScorer& fresh,
                           const ScorerGuard& guard);
+// The models of `guard` whose new decision was (`adopted`) or was not adopted, comma-separated.
+std::string modelsWhere(const ScorerGuard& guard, bool adopted);
+// One verdict as the CLI and the GUI show it: "model: a -> b edits on n held-out points: adopted"
+// (or "the decision before stays").
+std::string toString(const ScorerVerdict& verdict);
 
 // How well the object-confidence signal orders cv's objects: the share of (right, wrong) pairs in
 // which the right object's least sure point has the smaller predicted distance (ties count half);

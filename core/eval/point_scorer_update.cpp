@@ -49,11 +49,7 @@ ScorerUpdate judgeScorerUpdate(PointScorer fresh, const std::optional<PointScore
   }
   const PointScorer* was = current ? &*current : nullptr;
   const ScorerGuard& guard = *(update.guard = guardPointScorer(was, update.scorer, heldOut, training));
-  update.adopted = guard.adopted;
   update.adoptedScorer = adoptedScorer(was, update.scorer, guard);
-  std::string refused;
-  for (const auto& v : guard.byModel)
-    if (!v.adopted) refused += (refused.empty() ? "" : ", ") + v.model;
   update.verdict = std::to_string(guard.currentEdits) + " -> " + std::to_string(guard.newEdits) +
                    " edits on the held-out objects (" +
                    (current ? "the current point decision" : "the count's points") +
@@ -62,7 +58,8 @@ ScorerUpdate judgeScorerUpdate(PointScorer fresh, const std::optional<PointScore
                     : guard.adoptedWhole() ? "adopted"
                                            : "adopted where better (" +
                                                  std::to_string(guard.adoptedEdits) +
-                                                 " edits); kept the decision before for " + refused);
+                                                 " edits); kept the decision before for " +
+                                                 modelsWhere(guard, false));
   return update;
 }
 
@@ -100,14 +97,14 @@ ScorerUpdate updatePointScorer(const ScorerUpdateRequest& request) {
 
 fs::path writeScorerUpdate(const ScorerUpdate& update, const fs::path& out) {
   fs::create_directories(out);
-  if (update.adopted) writePointScorer(out, update.adoptedScorer);
-  if (!update.adopted || (update.guard && !update.guard->adoptedWhole())) {
+  if (update.adopted()) writePointScorer(out, update.adoptedScorer);
+  if (!update.adopted() || (update.guard && !update.guard->adoptedWhole())) {
     fs::create_directories(out / "refused");
     writePointScorer(out / "refused", update.scorer);
   }
   if (update.guard)
     writeFileAtomic(out / "scorer_guard.json", toJson(*update.guard).dump(2) + "\n");
-  return (update.adopted ? out : out / "refused") / kPointScorerFile;
+  return (update.adopted() ? out : out / "refused") / kPointScorerFile;
 }
 
 }  // namespace sagrid

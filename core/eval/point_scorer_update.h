@@ -1,8 +1,9 @@
 // Retraining the learned point decision from curated objects, guarded (issue 40, item 1): the
 // candidates of the curated training objects, of generated objects the networks were not trained
-// on and of held-out curated objects are made by the models folder's networks with its scorer's
-// passes (as `sagrid scorer candidates`); a scorer fitted on the first two replaces the folder's
-// only where it needs fewer edits on the held-out ones (guardPointScorer). The GUI's Train panel
+// on and of held-out curated objects are made by the models folder's networks as its scorer runs
+// them (as `sagrid scorer candidates`); a scorer fitted on the first two replaces the folder's
+// decision of each model only where it needs fewer edits on that model's held-out objects
+// (guardPointScorer, adoptedScorer). The GUI's Train panel
 // ("Retrain point decision") goes through here; `sagrid scorer candidates` + `scorer train
 // --guard` do the same in steps.
 #pragma once
@@ -19,7 +20,7 @@
 namespace sagrid {
 
 struct ScorerUpdateRequest {
-  std::filesystem::path models;     // networks and passes that make the candidates; its scorer is the current one
+  std::filesystem::path models;     // networks that make the candidates; its scorer is the current one
   std::filesystem::path curated;    // the curated training objects (a dataset)
   // Generated objects (a dataset; its val/ split when it has one). Empty: the bench
   // (defaultBenchDir(), its val split: objects the networks were not trained on), generated once
@@ -39,16 +40,17 @@ struct ScorerUpdate {
   // current ones of the others (adoptedScorer); unguarded, the fresh one.
   PointScorer adoptedScorer;
   std::optional<ScorerGuard> guard;  // with a held-out folder
-  bool adopted = true;               // for at least one model; unguarded: always
   std::size_t curatedSets = 0, generatedSets = 0, heldOutSets = 0;
   std::string verdict;               // one line: the edits before and after, and the decision
+  // For at least one model; unguarded: always.
+  bool adopted() const { return !guard || guard->adopted; }
 };
 
 // Throws InvalidArgument when the curated objects give no candidate set with ground truth, or
 // as guardPointScorer does (a held-out object also in training); FileError for unreadable data.
 ScorerUpdate updatePointScorer(const ScorerUpdateRequest& request);
 
-// `fresh` judged against `current` (none: the passes' points) on the held-out candidates
+// `fresh` judged against `current` (none: the count's points) on the held-out candidates
 // (guardPointScorer; none: unguarded, adopted), with the one-line verdict. `sagrid scorer train
 // --guard` and updatePointScorer both decide here.
 ScorerUpdate judgeScorerUpdate(PointScorer fresh, const std::optional<PointScorer>& current,

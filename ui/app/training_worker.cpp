@@ -197,24 +197,19 @@ void TrainingWorker::runPointScorer(const TrainingRequest& request) {
   const fs::path file = writeScorerUpdate(result, request.outDir);
   if (result.guard) {
     for (const auto& v : result.guard->byModel)
-      update([&](TrainingStatus& s) {
-        s.verdicts.push_back(v.model + ": " + std::to_string(v.currentEdits) + " -> " +
-                             std::to_string(v.newEdits) + " edits on " +
-                             std::to_string(v.handPoints) + " held-out points: " +
-                             (v.adopted ? "adopted" : "the decision before stays"));
-      });
+      update([&](TrainingStatus& s) { s.verdicts.push_back(toString(v)); });
   }
   update([&](TrainingStatus& s) { s.verdicts.push_back(result.verdict); });
   logger()->info("point decision: {}; wrote {}", result.verdict, file.string());
   completeModelsFolder(from, request.outDir);
-  const std::string requeued = result.adopted ? predictQueueAgainClause(request) : std::string();
+  const std::string requeued = result.adopted() ? predictQueueAgainClause(request) : std::string();
   update([&](TrainingStatus& s) {
     s.fraction = 1.0f;
     s.phase = "done";
     s.finished = "point decision retrained on " + std::to_string(result.curatedSets) +
                  " curated and " + std::to_string(result.generatedSets) +
                  " generated model sets" +
-                 (result.adopted ? "; adopted" : "; refused: " + file.string()) +
+                 (result.adopted() ? "; adopted" : "; refused: " + file.string()) +
                  requeued;
   });
 }

@@ -73,8 +73,8 @@ void drawTrainPanel(Session& session, TrainingWorker& worker,
     retrainButton("Retrain point decision", &TrainingRequest::pointScorer,
                   "Which of the fields' minima and the mesh's small parts are points, learned "
                   "again from the training set's curated points and generated objects (the "
-                  "bench's val split, made once); with a held-out folder, kept only where it "
-                  "needs fewer edits there");
+                  "bench's val split, made once); with a held-out folder, each model's is kept "
+                  "only where it needs fewer edits on that model's held-out objects");
   } else {
     ImGui::ProgressBar(status.fraction, ImVec2(-70, 0));
     ImGui::SameLine();

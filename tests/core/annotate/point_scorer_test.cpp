@@ -134,7 +134,7 @@ TEST_F(AnnotateWithScorer, ItDecidesForItsModelsOnlyAndIsSwitchedOff) {
   EXPECT_GT(passes.evidence, 0.0);
   // labels.json says how its points were decided.
   EXPECT_EQ(decided.labels.extra.at("prediction").at("point_decision"), "learned");
-  EXPECT_EQ(passes.labels.extra.at("prediction").at("point_decision"), "passes");
+  EXPECT_EQ(passes.labels.extra.at("prediction").at("point_decision"), "count");
   ModelSet every = models();
   PointScorer all;
   all.byModel["stove.togglebutton"] = everyCandidate();

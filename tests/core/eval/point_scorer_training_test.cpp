@@ -108,7 +108,7 @@ TEST(PointScorerTraining, FoldsLeaveOneSourceOutAndAreReproducible) {
     EXPECT_EQ(fold.objects, 6u);
     // The passes kept one knob of three and a distractor: the distractor is dragged onto a knob
     // and the third knob added, 2 edits per object.
-    EXPECT_EQ(fold.passes.edits.total(), 12u) << fold.source;
+    EXPECT_EQ(fold.count.edits.total(), 12u) << fold.source;
     EXPECT_EQ(fold.withCurated.edits.total(), 0u) << fold.source;
     EXPECT_DOUBLE_EQ(fold.withCurated.effort.oneKeyShare, 1.0);
   }
@@ -127,8 +127,8 @@ TEST(PointScorerTraining, TheLearningCurveDrawsFromTheOtherSourcesAndTotalsLeave
     EXPECT_EQ(fold.curve[0].edits.total(), fold.generatedOnly.edits.total()) << fold.source;
     EXPECT_EQ(fold.curve[1].edits.total(), fold.withCurated.edits.total()) << fold.source;
   }
-  EXPECT_EQ(cv.unseenPasses.effort.objects, 12u);  // repo-b and library-c
-  EXPECT_EQ(cv.passes.effort.objects, 18u);
+  EXPECT_EQ(cv.unseenCount.effort.objects, 12u);  // repo-b and library-c
+  EXPECT_EQ(cv.count.effort.objects, 18u);
   std::size_t unseenEdits = 0;
   for (const auto& fold : cv.folds)
     if (fold.source != "repo-a") unseenEdits += fold.withCurated.edits.total();
