@@ -119,7 +119,7 @@ void setupScorer(CLI::App& root) {
   auto l = std::make_shared<LearnOptions>();
   auto* cv = cmd->add_subcommand(
       "cv", "Leave one source out over the curated real objects of the candidate files: per "
-            "source, the passes' points, a decision fitted on generated objects only and one "
+            "source, the count's points, a decision fitted on generated objects only and one "
             "fitted with the curated objects of the other sources; writes OUT/scorer_cv.md, .json "
             "and OUT/confidence.json (the object confidence fitted on the points so decided)");
   cv->add_option("--out", l->out, "Report folder (default scorer-cv)");

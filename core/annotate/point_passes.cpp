@@ -28,8 +28,8 @@ ModelRun modelRunOf(const std::string& type, InstanceMode mode,
   return {mode == InstanceMode::Count ? InstanceMode::Auto : mode, 1};
 }
 
-// A model's points before the passes that read other models' points: its field and instances,
-// then the coarse-to-fine crop.
+// A model's points before the learned decision: its field and instances, then the
+// coarse-to-fine crop.
 ModelPrediction locateWithModel(const model::AffordanceModel& model, const ObjectForPasses& object,
                                 const PassOptions& passes, ModelRun run) {
   ModelPrediction p = predictWithModel(model, object.features, object.scene, object.mesh.fileUp,

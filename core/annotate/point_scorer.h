@@ -1,9 +1,9 @@
 // The learned point decision (issue 40): per model, a classifier over the point candidates of
-// core/points/point_candidates.h (the passes' points, the field's minima, the mesh's small parts)
+// core/points/point_candidates.h (the count's points, the field's minima, the mesh's small parts)
 // that decides which are affordance points and how many. It is a file of the models folder,
 // point_scorer.json, trained by `sagrid scorer train` on generated and curated real objects; where
-// it is present, annotate, eval and the GUI take its decision instead of the passes' points
-// (PassOptions::scorer). Without it, the passes' points stand.
+// it is present, annotate, eval and the GUI take its decision instead of the count's points
+// (PassOptions::scorer). Without it, the count's points stand.
 #pragma once
 
 #include <filesystem>
@@ -30,7 +30,7 @@ struct PointScorer {
   // The passes that were off when its candidates were made: off wherever it decides
   // (withLearnedDecision), so it chooses among candidates of the kind it learned from.
   std::vector<std::string> passesOff;
-  // The decision for one model; nullptr where the scorer has none (its passes' points stand).
+  // The decision for one model; nullptr where the scorer has none (its count's points stand).
   const ModelPointScorer* forModel(const std::string& modelName) const;
 };
 

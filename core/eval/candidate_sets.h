@@ -1,6 +1,6 @@
 // What the learned point decision learns from: per labelled object and model, the point candidates
 // (core/points/point_candidates.h) as `sagrid eval` saw them, with their surface points, the
-// passes' points and the ground truth, so that fitting and leave-one-source-out evaluation of the
+// count's points and the ground truth, so that fitting and leave-one-source-out evaluation of the
 // decision (core/eval/point_scorer_training.h) run without the networks. Saved as JSON
 // (`sagrid scorer candidates`).
 #pragma once
@@ -22,7 +22,7 @@ struct CandidateSet {
   double metersPerUnit = 1;   // of the mesh file's units
   std::vector<PointCandidate> candidates;
   std::vector<Eigen::Vector3f> candidateSurface;  // per candidate, on the surface (file frame)
-  std::vector<Eigen::Vector3f> keptSurface;       // the passes' points, best first (file frame)
+  std::vector<Eigen::Vector3f> keptSurface;       // the count's points, best first (file frame)
   std::vector<Eigen::Vector3f> truth;             // ground truth (file frame)
   std::vector<std::string> passesOff;  // the passes switched off when they were made (passesOff)
 };

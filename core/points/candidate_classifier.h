@@ -1,8 +1,8 @@
 // Which of an object's point candidates (core/points/point_candidates.h) are affordances, and how
 // many: a probability per candidate (a logistic regression over the candidates' standardized
-// features, or boosted trees), then a greedy choice best first that edits the passes' points: a
+// features, or boosted trees), then a greedy choice best first that edits the count's points: a
 // kept point stays at or above one threshold, another candidate joins at or above a second, no
-// two within a suppression radius, at least one. With the thresholds at 0 and above 1 the passes'
+// two within a suppression radius, at least one. With the thresholds at 0 and above 1 the count's
 // points stand, so a choice fitted to minimise edits starts from them.
 #pragma once
 
