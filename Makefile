@@ -27,12 +27,17 @@ run: build
 # corpus' real-train split (Sweet Home 3D, with the bench replay), then their automatic-count
 # settings refitted for curator edits on the bench train split's symmetry-averaged fields (what
 # annotate sees), then the second stove.togglebutton network (trained on the bench train split plus
-# 300 more generated stoves, seed 7001) added to its card as an ensemble, then the object
-# confidence. The stove models are not fine-tuned: on the five real-train stoves it made the
+# 300 more generated stoves, seed 7001) added to its card as an ensemble, then the learned point
+# decision on these networks' candidates (curated wild-pool, Sweet Home 3D and real-dev objects and
+# the bench val split) and the object confidence fitted on its points left out by source. The stove models are not fine-tuned: on the five real-train stoves it made the
 # held-out real stoves worse (resources/models/README.md).
 SAGRID_CACHE ?= $(if $(XDG_CACHE_HOME),$(XDG_CACHE_HOME),$(HOME)/.cache)/sagrid
 BENCH_DIR ?= $(SAGRID_CACHE)/bench
 REAL_DIR ?= $(SAGRID_CACHE)/real
+# The curated real objects the point decision learns from besides the Sweet Home 3D corpus.
+WILD_POOL ?= ../shared/data/wild-pool
+WILD_DIR ?= $(SAGRID_CACHE)/wild
+REAL_DEV_DIR ?= ../shared/data/real-dev
 # The sink knobs' card switches annotate's second pass on (a crop around the points): on the bench
 # val split and the real sets it brings their automatic-count points closer at equal edits.
 REAL_FINE_TUNE = $(BUILD_DIR)/sagrid train --data $(REAL_DIR)/real-train --init resources/models \
@@ -53,8 +58,18 @@ models: build
 	  --out $(BUILD_DIR)/models-ensemble
 	@$(BUILD_DIR)/sagrid ensemble resources/models/stove.togglebutton.json \
 	  --add $(BUILD_DIR)/models-ensemble/stove.togglebutton.json
-	@$(BUILD_DIR)/sagrid eval --data $(BENCH_DIR) --cache $(BENCH_DIR)/.sagrid-cache \
-	  --fit-confidence resources/models --out $(BUILD_DIR)/models-confidence-eval
+	@test -d $(WILD_DIR)/wild-train || $(BUILD_DIR)/sagrid corpus wild --from $(WILD_POOL) --out $(WILD_DIR)
+	@rm -f resources/models/point_scorer.json resources/models/confidence.json
+	@$(BUILD_DIR)/sagrid scorer candidates --no-coarse-to-fine --data $(WILD_DIR)/wild-train \
+	  --data $(WILD_DIR)/wild-val --data $(REAL_DEV_DIR) --data $(REAL_DIR)/real-train \
+	  --data $(REAL_DIR)/real-val --out $(BUILD_DIR)/scorer-real.json
+	@$(BUILD_DIR)/sagrid scorer candidates --no-coarse-to-fine --data $(BENCH_DIR) \
+	  --out $(BUILD_DIR)/scorer-bench.json
+	@$(BUILD_DIR)/sagrid scorer train --candidates $(BUILD_DIR)/scorer-real.json \
+	  --candidates $(BUILD_DIR)/scorer-bench.json --out resources/models
+	@$(BUILD_DIR)/sagrid scorer cv --candidates $(BUILD_DIR)/scorer-real.json \
+	  --candidates $(BUILD_DIR)/scorer-bench.json --out $(BUILD_DIR)/scorer-cv
+	@cp $(BUILD_DIR)/scorer-cv/confidence.json resources/models/
 
 bench: build
 	@for b in $(BUILD_DIR)/tests/benchmarks/*_bench; do $$b --benchmark_repetitions=5 --benchmark_report_aggregates_only=true; done

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <map>
 #include <memory>
 
 #include "app/command_registry.h"
@@ -17,6 +18,7 @@
 #include "core/eval/evaluation.h"
 #include "core/eval/point_scorer_training.h"
 #include "core/eval/point_scorer_update.h"
+#include "core/model/model_card.h"
 #include "core/model/model_files.h"
 
 namespace {
@@ -45,6 +47,23 @@ fs::path writeModelsWithScorer(const fs::path& from, const fs::path& out,
                update.scorer.byModel.size(), update.scorer.trainedOn.c_str(),
                update.verdict.c_str(), file.c_str());
   return file;
+}
+
+// A decision learned from candidates of other networks than `models`' would decide on fields it
+// never saw: refused, naming the model and what to run.
+void refuseOtherWeights(const sagrid::PointScorer& scorer, const fs::path& models) {
+  std::map<std::string, std::string> cardWeights;
+  for (const auto& file : sagrid::model::listModelCards(models)) {
+    const auto card = sagrid::model::readModelCard(file);
+    cardWeights[card.name] = card.weightsIdentity();
+  }
+  const auto stale = sagrid::decisionsOfOtherWeights(scorer, cardWeights);
+  if (!stale.empty())
+    throw sagrid::InvalidArgument(
+        "the candidates of " + stale.front().model + " were made by other weights (" +
+        stale.front().learnedFrom.substr(0, 8) + ") than its card in " + models.string() + " (" +
+        stale.front().card.substr(0, 8) + "): make them again with `sagrid scorer candidates "
+        "--models " + models.string() + "`");
 }
 
 // The options `cv` and `train` share: the candidate files and how the decision is fitted.
@@ -176,8 +195,10 @@ void setupScorer(CLI::App& root) {
     std::vector<const sagrid::CandidateSet*> all;
     for (const auto& s : sets) all.push_back(&s);
     const fs::path from = l->models.empty() ? sagrid::defaultModelsDir() : fs::path(l->models);
+    sagrid::PointScorer fresh = sagrid::trainPointScorer(all, l->training);
+    refuseOtherWeights(fresh, from);
     writeModelsWithScorer(from, l->out,
-                          sagrid::judgeScorerUpdate(sagrid::trainPointScorer(all, l->training),
+                          sagrid::judgeScorerUpdate(std::move(fresh),
                                                     sagrid::readPointScorer(from),
                                                     readAll(l->guard), all));
   });

@@ -32,12 +32,20 @@ ModelSet ModelSet::load(const std::filesystem::path& directory) {
 }
 
 void ModelSet::setPointScorer(PointScorer scorer, const std::filesystem::path& file) {
+  std::map<std::string, std::string> cardWeights;
+  for (const auto& m : m_models) cardWeights[m.card().name] = m.card().weightsIdentity();
   for (const auto& [name, decision] : scorer.byModel)
-    if (std::none_of(m_models.begin(), m_models.end(),
-                     [&name = name](const auto& m) { return m.card().name == name; }))
+    if (!cardWeights.count(name))
       throw ModelError(file.string() + ": the point scorer decides for model " + name +
                        ", which this folder has no card of; train it again with `sagrid scorer "
                        "train --models` this folder");
+  for (const auto& stale : decisionsOfOtherWeights(scorer, cardWeights))
+    logger()->warn(
+        "{}: the point decision of {} learned from the candidates of other weights ({}) than "
+        "the card's ({}); it still decides, but may no longer fit: retrain it with `sagrid "
+        "scorer update --models {}`",
+        file.string(), stale.model, stale.learnedFrom.substr(0, 8), stale.card.substr(0, 8),
+        file.parent_path().string());
   m_scorer = std::move(scorer);
 }
 

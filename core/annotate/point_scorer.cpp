@@ -37,6 +37,18 @@ std::vector<ExtractedPoint> scoredPoints(const ModelPointScorer& scorer,
   return out;
 }
 
+std::vector<DecisionOfOtherWeights> decisionsOfOtherWeights(
+    const PointScorer& scorer, const std::map<std::string, std::string>& cardWeights) {
+  std::vector<DecisionOfOtherWeights> out;
+  for (const auto& [model, decision] : scorer.byModel) {
+    const auto card = cardWeights.find(model);
+    if (!decision.networkWeights.empty() && card != cardWeights.end() &&
+        decision.networkWeights != card->second)
+      out.push_back({model, decision.networkWeights, card->second});
+  }
+  return out;
+}
+
 nlohmann::json toJson(const PointScorer& scorer) {
   nlohmann::json models = nlohmann::json::object();
   for (const auto& [name, m] : scorer.byModel) {
@@ -44,6 +56,7 @@ nlohmann::json toJson(const PointScorer& scorer) {
     model = {{"keep_threshold", m.choice.keepThreshold},
              {"add_threshold", m.choice.addThreshold},
              {"nms_radius", m.choice.nmsRadius}};
+    if (!m.networkWeights.empty()) model["network_weights"] = m.networkWeights;
     // Trees or the logistic regression, whichever decides.
     if (m.classifier.trees) {
       model["trees"] = toJson(*m.classifier.trees);
@@ -87,6 +100,7 @@ std::optional<PointScorer> readPointScorer(const std::filesystem::path& modelsDi
       s.choice.keepThreshold = m.at("keep_threshold").get<float>();
       s.choice.addThreshold = m.at("add_threshold").get<float>();
       s.choice.nmsRadius = m.at("nms_radius").get<float>();
+      s.networkWeights = m.value("network_weights", "");
       if (!std::isfinite(s.choice.keepThreshold) || !std::isfinite(s.choice.addThreshold) ||
           !std::isfinite(s.choice.nmsRadius) || s.choice.nmsRadius < 0)
         throw FileError(file, "model " + name + ": numbers must be finite (radius >= 0)");

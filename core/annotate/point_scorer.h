@@ -22,6 +22,10 @@ inline constexpr const char* kPointScorerFile = "point_scorer.json";
 struct ModelPointScorer {
   CandidateClassifier classifier;
   PointChoice choice;
+  // The weights of the network whose candidates it learned from (ModelCard::weightsIdentity);
+  // empty when not recorded. A models folder whose card has other weights still uses the decision
+  // and says so (ModelSet::setPointScorer): its fields may no longer look like what it learned.
+  std::string networkWeights;
 };
 
 struct PointScorer {
@@ -40,6 +44,15 @@ struct PointScorer {
 std::vector<ExtractedPoint> scoredPoints(const ModelPointScorer& scorer,
                                          const std::vector<PointCandidate>& candidates,
                                          const ExtractionSettings& extraction);
+
+// A model whose decision learned from the candidates of other weights than its card's.
+struct DecisionOfOtherWeights {
+  std::string model, learnedFrom, card;  // the model; both weights identities
+};
+// The decisions of `scorer` that recorded weights other than `cardWeights`' (model name ->
+// ModelCard::weightsIdentity); decisions without a record or without a card are not among them.
+std::vector<DecisionOfOtherWeights> decisionsOfOtherWeights(
+    const PointScorer& scorer, const std::map<std::string, std::string>& cardWeights);
 
 nlohmann::json toJson(const PointScorer& scorer);
 // Reads DIR/point_scorer.json; nullopt when absent. Throws FileError naming the file when it is

@@ -69,7 +69,8 @@ nlohmann::json toJson(const std::vector<CandidateSet>& sets) {
                    {"surface", pointsJson(s.candidateSurface)},
                    {"kept", pointsJson(s.keptSurface)},
                    {"truth", pointsJson(s.truth)},
-                   {"passes_off", s.passesOff}});
+                   {"passes_off", s.passesOff},
+                   {"network_weights", s.networkWeights}});
   }
   return {{"schema", kSchema}, {"features", candidateFeatureNames()}, {"sets", all}};
 }
@@ -112,6 +113,7 @@ std::vector<CandidateSet> readCandidateSets(const std::filesystem::path& file) {
         set.candidates.push_back(std::move(candidate));
       }
       set.keptSurface = pointsFrom(s.at("kept"));
+      set.networkWeights = s.value("network_weights", "");
       set.truth = pointsFrom(s.at("truth"));
       try {
         set.passesOff = recordedPassesOff(s.value("passes_off", std::vector<std::string>{}));

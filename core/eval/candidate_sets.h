@@ -25,6 +25,9 @@ struct CandidateSet {
   std::vector<Eigen::Vector3f> keptSurface;       // the count's points, best first (file frame)
   std::vector<Eigen::Vector3f> truth;             // ground truth (file frame)
   std::vector<std::string> passesOff;  // the passes switched off when they were made (passesOff)
+  // The weights of the network that made them (ModelCard::weightsIdentity); empty in files
+  // written before it was recorded.
+  std::string networkWeights;
 };
 
 // Per candidate of `set`, whether it is the nearest candidate to a ground-truth point within

@@ -143,7 +143,8 @@ EvaluationReport evaluateModels(const ModelSet& models, const EvaluationOptions&
                                       {"additions", edits.additions}};
         if (options.keepCandidates && m < categoryPoints.candidates.size()) {
           CandidateSet set{entry.id, source, card.name, object.contains("generator"), mpu,
-                           categoryPoints.candidates[m], {}, autoPoints, truth, passesOff(passes)};
+                           categoryPoints.candidates[m], {}, autoPoints, truth, passesOff(passes),
+                           card.weightsIdentity()};
           for (const auto& c : set.candidates)
             set.candidateSurface.push_back(
                 projectToSurface(c.position, grid.normalization, scene, mesh.fileUp).position);

@@ -173,7 +173,15 @@ PointScorer trainPointScorer(const std::vector<const CandidateSet*>& sets,
     bool hasPoint = false, hasOther = false;
     for (const CandidateSet* set : modelSets)
       for (bool label : candidateLabels(*set, kMatchRadiusMeters)) (label ? hasPoint : hasOther) = true;
-    if (hasPoint && hasOther) scorer.byModel[model] = fitModel(modelSets, options);
+    if (!hasPoint || !hasOther) continue;
+    ModelPointScorer& decision = scorer.byModel[model] = fitModel(modelSets, options);
+    decision.networkWeights = modelSets.front()->networkWeights;
+    for (const CandidateSet* set : modelSets)
+      if (set->networkWeights != decision.networkWeights)
+        throw InvalidArgument("point scorer: the candidates of " + model + " were made by " +
+                              "different weights (" + set->object + " of " + set->source +
+                              " differs from " + modelSets.front()->object +
+                              "): make them all with one models folder");
   }
   if (scorer.byModel.empty())
     throw InvalidArgument("point scorer: no model has candidates that are points and others");

@@ -1,11 +1,16 @@
 // sagrid scorer update from the command line (issue 40, item 1): the models folder's point
 // decision retrained from curated objects in one step, as the GUI's Train panel does; a missing
 // folder, or a held-out folder that is also training data, is one clear error and nothing is
-// written.
+// written. `scorer train` refuses candidates of other networks than its models folder's.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <fstream>
+
+#include <nlohmann/json.hpp>
+
 #include "core/annotate/point_scorer.h"
+#include "core/model/model_card.h"
 #include "core/generate/dataset_generator.h"
 #include "support/test_paths.h"
 
@@ -45,10 +50,42 @@ TEST(ScorerUpdateCli, WritesTheModelsFolderWithTheVerdictAndRefusesHeldOutTraini
   EXPECT_TRUE(fs::exists(dir / "out" / "stove.heatsource.json"));
   EXPECT_TRUE(fs::exists(dir / "out" / "scorer_guard.json"));
   EXPECT_TRUE(readPointScorer(adopted ? dir / "out" : dir / "out" / "refused").has_value());
+  // The decision records the networks its candidates came from: the folder's own.
+  const auto written = readPointScorer(adopted ? dir / "out" : dir / "out" / "refused");
+  for (const auto& [model, decision] : written->byModel)
+    EXPECT_EQ(decision.networkWeights,
+              model::readModelCard(dir / "out" / (model + ".json")).weightsIdentity())
+        << model;
   // One line per model says whether its new decision was adopted.
   EXPECT_THAT(r.output, ::testing::ContainsRegex("guard: stove\\.[a-z]+: [0-9]+ -> [0-9]+ edits on "
                                                  "[0-9]+ held-out points: (adopted|the decision "
                                                  "before stays)"));
+}
+
+// Candidates made by other networks than the models folder's: `scorer train` refuses to write a
+// decision for them, naming the model and what to run.
+TEST(ScorerTrainCli, RefusesCandidatesOfOtherNetworksThanTheModelsFolders) {
+  const fs::path dir = test::freshTempDir();
+  gen::generateDataset({{"stove", 2, 81}}, gen::MeshFormat::Obj, dir / "data");
+  const fs::path candidates = dir / "candidates.json";
+  auto r = runSagrid("scorer candidates --data " + quotedPath(dir / "data") + " --out " +
+                     quotedPath(candidates));
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  nlohmann::json j;
+  std::ifstream(candidates) >> j;
+  for (auto& set : j["sets"]) set["network_weights"] = std::string(64, 'e');
+  std::ofstream(dir / "other.json") << j.dump();
+  r = runSagrid("scorer train --candidates " + quotedPath(dir / "other.json") + " --out " +
+                quotedPath(dir / "out"));
+  EXPECT_NE(r.exitCode, 0) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("made by other weights (eeeeeeee)"));
+  EXPECT_THAT(r.output, HasSubstr("sagrid scorer candidates --models"));
+  EXPECT_FALSE(fs::exists(dir / "out" / kPointScorerFile));
+  // The same candidates as made: trained and written.
+  r = runSagrid("scorer train --candidates " + quotedPath(candidates) + " --out " +
+                quotedPath(dir / "out"));
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_TRUE(readPointScorer(dir / "out").has_value());
 }
 
 }  // namespace

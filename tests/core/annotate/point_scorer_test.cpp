@@ -5,11 +5,15 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <sstream>
+
+#include <spdlog/sinks/ostream_sink.h>
 
 #include "core/annotate/annotate.h"
 #include "core/annotate/model_set.h"
 #include "core/annotate/point_passes.h"
 #include "core/common/error.h"
+#include "core/common/log.h"
 #include "core/dataset/dataset.h"
 #include "core/features/feature_grid.h"
 #include "core/generate/dataset_generator.h"
@@ -54,12 +58,15 @@ TEST(PointScorerFile, ReadsBackWhatWasWrittenAndNamesWhatIsWrong) {
   ModelPointScorer trees;
   trees.classifier.trees = fitBoostedTrees(rows, positive, std::vector<float>(20, 1.0f));
   scorer.byModel["stove.heatsource"] = trees;
+  scorer.byModel["stove.heatsource"].networkWeights = std::string(64, 'a');
   scorer.trainedOn = "test";
   writePointScorer(dir, scorer);
   const auto back = readPointScorer(dir);
   ASSERT_TRUE(back.has_value());
   EXPECT_EQ(toJson(*back).dump(), toJson(scorer).dump());
   EXPECT_FALSE(toJson(scorer)["models"]["stove.heatsource"].contains("weights"));
+  EXPECT_EQ(back->forModel("stove.heatsource")->networkWeights, std::string(64, 'a'));
+  EXPECT_EQ(back->forModel("stove.togglebutton")->networkWeights, "");  // not recorded
   ASSERT_TRUE(back->forModel("stove.heatsource")->classifier.trees.has_value());
   EXPECT_GT(back->forModel("stove.heatsource")->classifier.probability(rows[1]), 0.5f);
   EXPECT_LT(back->forModel("stove.heatsource")->classifier.probability(rows[0]), 0.5f);
@@ -113,6 +120,7 @@ class AnnotateWithScorer : public ::testing::Test {
     return out;
   }
   fs::path dir;
+  std::ostringstream logged;
   std::vector<DatasetEntry> entries;
   FeatureGrid features;
   AnnotateOptions annotate;
@@ -164,6 +172,32 @@ TEST_F(AnnotateWithScorer, ItDecidesForItsModelsOnlyAndIsSwitchedOff) {
   EXPECT_FALSE(withLearnedDecision(given, learnedBare).coarseToFine.has_value());
   EXPECT_EQ(withLearnedDecision(given, learnedBare).scorer, nullptr);
   EXPECT_FALSE(withLearnedDecision(PassOptions{}, plain).coarseToFine.has_value());
+
+  // A decision learned from the candidates of other weights of its network still decides, and
+  // loading it says so, naming the file and the model.
+  auto messages = std::make_shared<spdlog::sinks::ostream_sink_mt>(logged);
+  logger()->sinks().push_back(messages);
+  PointScorer stale = scorer;
+  stale.byModel["stove.togglebutton"].networkWeights = std::string(64, 'f');
+  ModelSet staleSet = models();
+  staleSet.setPointScorer(stale, dir / kPointScorerFile);
+  logger()->sinks().pop_back();
+  EXPECT_NE(logged.str().find("stove.togglebutton"), std::string::npos) << logged.str();
+  EXPECT_NE(logged.str().find("other weights"), std::string::npos) << logged.str();
+  EXPECT_NE(logged.str().find(kPointScorerFile), std::string::npos) << logged.str();
+  EXPECT_EQ(pointsOf(annotateMeshFile(entries[0].mesh, "s", staleSet, annotate, dir / "e"),
+                     "togglebutton").size(),
+            1u);
+  // Recorded and the card's own: nothing said.
+  logged.str("");
+  logger()->sinks().push_back(messages);
+  PointScorer current = scorer;
+  current.byModel["stove.togglebutton"].networkWeights =
+      staleSet.forCategory("stove")[1]->card().weightsIdentity();
+  ModelSet currentSet = models();
+  currentSet.setPointScorer(current, dir / kPointScorerFile);
+  logger()->sinks().pop_back();
+  EXPECT_EQ(logged.str(), "");
 
   PointScorer stranger;
   stranger.byModel["sink.fluidsource"] = oneBest();

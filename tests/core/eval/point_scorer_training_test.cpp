@@ -294,13 +294,32 @@ TEST(PointScorerTraining, TheGuardAdoptsEachModelsDecisionOnItsOwnHeldOutObjects
   EXPECT_EQ(onlyAdopted.forModel("stove.heatsource"), nullptr);
 }
 
+TEST(PointScorerTraining, TheDecisionRecordsTheNetworkItsCandidatesCameFromAndRefusesAMix) {
+  auto sets = syntheticSets();
+  for (auto& s : sets) s.networkWeights = std::string(64, 'b');
+  std::vector<const CandidateSet*> all;
+  for (const auto& s : sets) all.push_back(&s);
+  EXPECT_EQ(trainPointScorer(all, {}).forModel("stove.togglebutton")->networkWeights,
+            std::string(64, 'b'));
+  sets[4].networkWeights = std::string(64, 'c');
+  try {
+    trainPointScorer(all, {});
+    FAIL() << "candidates of two networks were learned from as one";
+  } catch (const InvalidArgument& e) {
+    EXPECT_NE(std::string(e.what()).find(sets[4].object), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("different weights"), std::string::npos) << e.what();
+  }
+}
+
 TEST(PointScorerTraining, CandidateFilesReadBackAndBadOnesAreNamed) {
-  const auto sets = syntheticSets();
+  auto sets = syntheticSets();
+  sets[0].networkWeights = std::string(64, 'd');
   const auto file = std::filesystem::temp_directory_path() / "sagrid-candidates-test.json";
   writeCandidateSets(file, sets);
   const auto back = readCandidateSets(file);
   ASSERT_EQ(back.size(), sets.size());
   EXPECT_EQ(toJson(back).dump(), toJson(sets).dump());
+  EXPECT_EQ(back[0].networkWeights, std::string(64, 'd'));
   auto j = toJson(sets);
   j["features"][0] = "something_else";
   std::ofstream(file) << j.dump();

@@ -1,7 +1,9 @@
 // The default models shipped in resources/models: each card's sha256 matches its weights, each
-// loads and predicts a plausible field on a freshly generated object of its category.
+// loads and predicts a plausible field on a freshly generated object of its category, and the
+// shipped point decision learned from the candidates of these very networks.
 #include <gtest/gtest.h>
 
+#include "core/annotate/point_scorer.h"
 #include "core/common/atomic_file.h"
 #include "core/common/sha256.h"
 #include "core/dataset/dataset.h"
@@ -38,6 +40,17 @@ TEST(ShippedModels, CardsMatchTheirWeightsAndStayUnder20MB) {
     }
   }
   EXPECT_LE(total, 20u * 1024 * 1024);
+}
+
+// A network retrained without its decision (make models, a fine-tune) fails here: retrain the
+// decision too (`sagrid scorer train`), so that the shipped folder never mixes versions.
+TEST(ShippedModels, ThePointDecisionLearnedFromTheShippedNetworks) {
+  const auto scorer = sagrid::readPointScorer(kModels);
+  ASSERT_TRUE(scorer.has_value());
+  ASSERT_FALSE(scorer->byModel.empty());
+  for (const auto& [name, decision] : scorer->byModel)
+    EXPECT_EQ(decision.networkWeights, readModelCard(kModels / (name + ".json")).weightsIdentity())
+        << name;
 }
 
 TEST(ShippedModels, EachLoadsAndPredictsOnAGeneratedObject) {
