@@ -467,6 +467,7 @@ const char* toString(PartOrigin origin) {
     case PartOrigin::Material: return "material";
     case PartOrigin::Grown: return "grown";
     case PartOrigin::Disc: return "disc";
+    case PartOrigin::Marked: return "marked";
   }
   return "connected";
 }
@@ -478,7 +479,8 @@ std::optional<ControlMotion> parseControlMotion(const std::string& text) {
 }
 
 std::optional<PartOrigin> parsePartOrigin(const std::string& text) {
-  for (PartOrigin o : {PartOrigin::Connected, PartOrigin::Material, PartOrigin::Grown, PartOrigin::Disc})
+  for (PartOrigin o : {PartOrigin::Connected, PartOrigin::Material, PartOrigin::Grown,
+                       PartOrigin::Disc, PartOrigin::Marked})
     if (text == toString(o)) return o;
   return std::nullopt;
 }

@@ -21,7 +21,9 @@ struct Mesh;
 class SurfaceScene;
 
 enum class ControlMotion { Knob, Lever, Button };
-enum class PartOrigin { Connected, Material, Grown, Disc };
+// Marked: the curator's triangles (the GUI's Grow, Shrink and brush), what `eval --parts` measures
+// the found parts against.
+enum class PartOrigin { Connected, Material, Grown, Disc, Marked };
 
 const char* toString(ControlMotion motion);
 const char* toString(PartOrigin origin);

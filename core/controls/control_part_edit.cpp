@@ -1,6 +1,7 @@
 #include "core/controls/control_part_edit.h"
 
 #include <algorithm>
+#include <set>
 
 #include "core/geometry/triangle_components.h"
 
@@ -57,6 +58,41 @@ std::vector<int> shrunkPart(const Mesh& mesh, const std::vector<int>& triangles)
     return true;
   });
   return inner.empty() ? trianglesWhere(m, [&](std::size_t t) { return bool(m.inPart[t]); }) : inner;
+}
+
+std::vector<int> brushedPart(const Mesh& mesh, const std::vector<int>& triangles, int hitTriangle,
+                             const Eigen::Vector3f& hit, float radius, bool add) {
+  std::set<int> part(triangles.begin(), triangles.end());
+  if (hitTriangle < 0 || static_cast<std::size_t>(hitTriangle) >= mesh.triangles.size())
+    return {part.begin(), part.end()};
+  const TriangleComponents welded = triangleComponents(mesh);
+  // Triangles by welded vertex, to walk over shared positions.
+  std::vector<std::vector<int>> around(welded.weldedPositions.size());
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
+    if (welded.ofTriangle[t] >= 0)
+      for (int v : welded.weldedCorners[t]) around[static_cast<std::size_t>(v)].push_back(static_cast<int>(t));
+  const auto inside = [&](int t) {
+    for (int v : welded.weldedCorners[static_cast<std::size_t>(t)])
+      if ((welded.weldedPositions[static_cast<std::size_t>(v)] - hit).norm() > radius) return false;
+    return true;
+  };
+  std::vector<bool> seen(mesh.triangles.size(), false);
+  std::vector<int> stack{hitTriangle};
+  seen[static_cast<std::size_t>(hitTriangle)] = true;
+  while (!stack.empty()) {
+    const int t = stack.back();
+    stack.pop_back();
+    if (add) part.insert(t);
+    else part.erase(t);
+    if (welded.ofTriangle[static_cast<std::size_t>(t)] < 0) continue;
+    for (int v : welded.weldedCorners[static_cast<std::size_t>(t)])
+      for (int n : around[static_cast<std::size_t>(v)])
+        if (!seen[static_cast<std::size_t>(n)] && inside(n)) {
+          seen[static_cast<std::size_t>(n)] = true;
+          stack.push_back(n);
+        }
+  }
+  return {part.begin(), part.end()};
 }
 
 }  // namespace sagrid

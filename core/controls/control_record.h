@@ -1,6 +1,6 @@
 // A toggle button's control as labels.json keeps it, in the point's "control" field (DESIGN.md):
 //   "control": {"motion": "knob"|"lever"|"button", "joint": "hinge"|"slide",
-//               "part": {"origin": "connected"|"material"|"grown"|"disc",
+//               "part": {"origin": "connected"|"material"|"grown"|"disc"|"marked",
 //                        "triangles": [[first, count], ...]},   runs of imported triangle indices
 //               "axis": [x, y, z], "pivot": [x, y, z], "radius": r,   the mesh file's frame and units
 //               "drives": k}   a stove knob: the k-th heat source point (0-based), -1 none

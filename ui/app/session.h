@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "core/curation/curation_log.h"
+#include "ui/app/control_edit.h"
 #include "ui/app/prediction_worker.h"
 #include "ui/app/recent_files.h"
 #include "ui/document/annotation_document.h"
@@ -122,6 +123,7 @@ class Session {
   void setCurrentType(const std::string& type) { m_currentType = type; }
   const RecentFiles& recent() const { return m_recent; }
   bool addModeArmed = false;  // next click on the surface adds a point
+  PartBrush partBrush;        // while armed, clicks brush the selected control's part
   bool showHelp = false;
   bool showFileBrowser = false;
   bool screenshotRequested = false;  // F12: the app saves the next frame to a PNG

@@ -6,6 +6,7 @@
 #include <GLFW/glfw3.h>
 
 #include "core/geometry/surface_scene.h"
+#include "ui/app/control_edit.h"
 #include "ui/app/session.h"
 #include "ui/document/point_commands.h"
 
@@ -126,7 +127,11 @@ void ViewportInput::release(const InputEvent&, Session& session) {
                                                        normalFile.normalized()));
   } else if (m_gesture == Gesture::Click && doc) {
     const bool add = (m_mods & GLFW_MOD_SHIFT) || session.addModeArmed;
-    if (add) {
+    if (session.partBrush.armed && !add && doc->selected() >= 0) {
+      // The brush keeps the selection: a click on the surface reshapes the selected part.
+      if (auto hit = surfaceUnder(session, m_x, m_y))
+        brushControlPart(session, *hit, (m_mods & GLFW_MOD_CONTROL) != 0);
+    } else if (add) {
       if (auto hit = surfaceUnder(session, m_x, m_y)) {
         AffordancePoint point;
         point.type = session.currentType();

@@ -8,6 +8,7 @@
 
 #include "core/controls/control_part_edit.h"
 #include "core/controls/control_record.h"
+#include "ui/app/control_edit.h"
 #include "ui/app/session.h"
 #include "ui/document/control_commands.h"
 #include "ui/document/control_view.h"
@@ -76,24 +77,33 @@ void drivesCombo(Session& session, int index, ShownControl shown) {
   ImGui::EndCombo();
 }
 
-// Grow or shrink the part by one ring of triangles (its motion found again from its new shape),
-// or put the pivot at the point itself.
+// The viewport's part brush: on or off, and its radius.
+void brushControls(Session& session) {
+  ImGui::Checkbox("Brush", &session.partBrush.armed);
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("While on, a click on the surface adds what lies within the radius and is "
+                      "connected to the clicked surface to the part; Ctrl+click takes it away");
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(120);
+  ImGui::SliderFloat("radius (cm)", &session.partBrush.radiusCm, 0.2f, 10.0f, "%.1f",
+                     ImGuiSliderFlags_Logarithmic);
+}
+
+// Grow or shrink the part by one ring of triangles, or brush it in the viewport (its motion found
+// again from its new shape); or put the pivot at the point itself.
 void partButtons(Session& session, int index, ShownControl shown) {
   const Mesh& mesh = session.document()->mesh();
-  const auto reshape = [&](std::vector<int> triangles, const char* what) {
-    if (triangles.empty() || triangles == shown.part.triangles) return;
-    const ControlPart described = describeControlPart(mesh, std::move(triangles), PartOrigin::Grown);
-    shown.part = described;
-    setControl(session, index, shown, what);
-  };
-  if (ImGui::Button("Grow")) reshape(grownPart(mesh, shown.part.triangles), "part grown");
+  if (ImGui::Button("Grow"))
+    reshapeControlPart(session, index, grownPart(mesh, shown.part.triangles), "part grown");
   ImGui::SameLine();
-  if (ImGui::Button("Shrink")) reshape(shrunkPart(mesh, shown.part.triangles), "part shrunk");
+  if (ImGui::Button("Shrink"))
+    reshapeControlPart(session, index, shrunkPart(mesh, shown.part.triangles), "part shrunk");
   ImGui::SameLine();
   if (ImGui::Button("Pivot at the point")) {
     shown.part.pivot = session.document()->pointInView(index);
     setControl(session, index, shown, "pivot at the point");
   }
+  brushControls(session);
 }
 
 }  // namespace
@@ -104,7 +114,8 @@ void drawControlEditor(Session& session, int index) {
   ImGui::Separator();
   ImGui::TextUnformatted("Control");
   if (!shown) {
-    ImGui::TextDisabled("No part moves here: a site only in the exports.");
+    ImGui::TextDisabled("No part moves here: a site only in the exports. Brush one on:");
+    brushControls(session);
     return;
   }
   ImGui::Text("%s, %zu triangles (%s)%s", toString(shown->part.motion),

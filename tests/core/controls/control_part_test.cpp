@@ -198,5 +198,48 @@ TEST(ControlPartEdit, GrowAddsTheNeighboursAndShrinkTakesThemBack) {
   EXPECT_TRUE(grownPart(mesh, {}).empty());
 }
 
+TEST(ControlPartEdit, TheBrushTakesTheConnectedSurfaceAroundTheClickAndNothingBehindIt) {
+  // A separate knob on a panel: a brush larger than the knob takes the knob and not the panel.
+  Mesh mesh = panel();
+  const auto knob = addPart(mesh, test::box({-0.02f, -0.02f, 0.0f}, {0.02f, 0.02f, 0.03f}), 1);
+  int top = -1;
+  for (int t : knob) {
+    const auto& tri = mesh.triangles[std::size_t(t)];
+    if (mesh.positions[std::size_t(tri[0])].z() > 0.029f && mesh.positions[std::size_t(tri[1])].z() > 0.029f &&
+        mesh.positions[std::size_t(tri[2])].z() > 0.029f)
+      top = t;
+  }
+  ASSERT_GE(top, 0);
+  EXPECT_EQ(brushedPart(mesh, {}, top, {0.0f, 0.0f, 0.03f}, 0.2f, true), knob);
+  // Taken away again, the part is empty; a click off the mesh changes nothing.
+  EXPECT_TRUE(brushedPart(mesh, knob, top, {0.0f, 0.0f, 0.03f}, 0.2f, false).empty());
+  EXPECT_EQ(brushedPart(mesh, knob, -1, {0.0f, 0.0f, 0.03f}, 0.2f, false), knob);
+
+  // A fused panel: the brush takes the triangles whose corners all lie within its radius, more
+  // with a larger one, and the clicked triangle even when it is larger than the brush.
+  const Mesh flat = bumpyPanel(0.0f);
+  const Eigen::Vector3f hit(0.005f, 0.001f, 0.0f);
+  int clicked = -1;
+  for (std::size_t t = 0; t < flat.triangles.size() && clicked < 0; ++t) {
+    const auto& tri = flat.triangles[t];
+    Eigen::Vector3f c = (flat.positions[std::size_t(tri[0])] + flat.positions[std::size_t(tri[1])] +
+                         flat.positions[std::size_t(tri[2])]) / 3.0f;
+    if ((c - hit).norm() < 0.01f) clicked = static_cast<int>(t);
+  }
+  ASSERT_GE(clicked, 0);
+  const auto small = brushedPart(flat, {}, clicked, hit, 0.001f, true);
+  EXPECT_EQ(small, std::vector<int>{clicked});
+  const auto middle = brushedPart(flat, {}, clicked, hit, 0.05f, true);
+  const auto large = brushedPart(flat, {}, clicked, hit, 0.1f, true);
+  EXPECT_GT(middle.size(), 4u);
+  EXPECT_GT(large.size(), middle.size());
+  for (int t : middle)
+    for (int v : flat.triangles[std::size_t(t)])
+      if (t != clicked) EXPECT_LE((flat.positions[std::size_t(v)] - hit).norm(), 0.05f);
+  // Brushing the middle away from the large one leaves a ring.
+  const auto ring = brushedPart(flat, large, clicked, hit, 0.05f, false);
+  EXPECT_EQ(ring.size(), large.size() - middle.size());
+}
+
 }  // namespace
 }  // namespace sagrid

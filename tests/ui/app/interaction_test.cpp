@@ -57,6 +57,43 @@ TEST(Interaction, ClickSelectsAcceptWithAAndDeleteWithDel) {
   EXPECT_EQ(s.document().selected(), -1);
 }
 
+// The part brush: with a toggle button selected and the brush on, a click on the surface gives it
+// the connected surface within the radius as its part (the curator's, "marked"), Ctrl+click takes
+// the brushed surface away; each one undoable step, saved at once; the selection stays.
+TEST(Interaction, TheBrushMarksTheSelectedControlsPartAndCtrlTakesItAway) {
+  const auto dir = sagrid::test::freshTempDir();
+  ScriptedApp s(dir);
+  s.click(s.pixelOf({-0.3f, -0.3f, 0.0f}));
+  ASSERT_EQ(s.document().selected(), 1);
+  Session& session = s.app->session();
+  session.partBrush.armed = true;
+  session.partBrush.radiusCm = 100;  // the whole block, and never the plate it stands on
+  const Eigen::Vector3f onBlock(0.25f, -0.25f, 0.2f);
+  s.click(s.pixelOf(onBlock));
+  EXPECT_EQ(s.document().selected(), 1);
+  auto partOf = [&](const ObjectLabels& labels) {
+    const nlohmann::json& extra = labels.affordances[1].extra;
+    return extra.contains("control") ? extra["control"].value("part", nlohmann::json())
+                                     : nlohmann::json();
+  };
+  nlohmann::json part = partOf(readLabels(dir / "labels.json"));
+  ASSERT_FALSE(part.is_null());
+  EXPECT_EQ(part.at("origin"), "marked");
+  // The block's 10 triangles (2 on top, 8 on the sides) are triangles 2..11, the plate's 0 and 1.
+  EXPECT_EQ(part.at("triangles"), nlohmann::json::parse("[[2, 10]]"));
+  // A small brush with Ctrl takes the clicked triangle away: 9 left.
+  session.partBrush.radiusCm = 2;
+  s.click(s.pixelOf(onBlock), GLFW_MOD_CONTROL);
+  part = partOf(readLabels(dir / "labels.json"));
+  std::size_t triangles = 0;
+  for (const auto& run : part.at("triangles")) triangles += run[1].get<std::size_t>();
+  EXPECT_EQ(triangles, 9u);
+  s.key(GLFW_KEY_Z, GLFW_MOD_CONTROL);
+  EXPECT_EQ(partOf(readLabels(dir / "labels.json")).at("triangles"), nlohmann::json::parse("[[2, 10]]"));
+  s.key(GLFW_KEY_Z, GLFW_MOD_CONTROL);
+  EXPECT_TRUE(partOf(readLabels(dir / "labels.json")).is_null());
+}
+
 // F with a point selected: a close-up centred on it, same viewing direction; F again (or with
 // nothing selected): the whole object.
 TEST(Interaction, FFramesTheSelectedPointThenTheObject) {

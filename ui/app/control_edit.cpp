@@ -1,0 +1,53 @@
+#include "ui/app/control_edit.h"
+
+#include <memory>
+
+#include "core/controls/control_part_edit.h"
+#include "core/controls/control_record.h"
+#include "core/geometry/surface_scene.h"
+#include "ui/app/session.h"
+#include "ui/document/control_commands.h"
+#include "ui/document/control_view.h"
+
+namespace sagrid::ui {
+
+namespace {
+
+// The control the point shows, or a new one without a part for a toggle button that has none.
+std::optional<ShownControl> controlToEdit(const AnnotationDocument& doc, int index) {
+  if (index < 0 || index >= static_cast<int>(doc.points().size())) return std::nullopt;
+  if (doc.points()[std::size_t(index)].type != "togglebutton") return std::nullopt;
+  if (auto shown = shownControl(doc, index)) return shown;
+  return ShownControl{};
+}
+
+}  // namespace
+
+bool reshapeControlPart(Session& session, int index, std::vector<int> triangles,
+                        const std::string& what) {
+  const AnnotationDocument* doc = session.document();
+  if (!doc) return false;
+  std::optional<ShownControl> shown = controlToEdit(*doc, index);
+  if (!shown || triangles.empty() || triangles == shown->part.triangles) return false;
+  const Mesh& mesh = doc->mesh();
+  ControlRecord record{describeControlPart(mesh, std::move(triangles), PartOrigin::Marked),
+                       shown->drives};
+  session.execute(
+      std::make_unique<SetControlCommand>(index, controlJson(record, mesh.fileUp), what));
+  return true;
+}
+
+bool brushControlPart(Session& session, const SurfaceHit& hit, bool remove) {
+  const AnnotationDocument* doc = session.document();
+  if (!doc) return false;
+  const int index = doc->selected();
+  const std::optional<ShownControl> shown = controlToEdit(*doc, index);
+  if (!shown) return false;
+  const float radius = session.partBrush.radiusCm * 0.01f / std::max(doc->metersPerUnit(), 1e-9f);
+  return reshapeControlPart(
+      session, index,
+      brushedPart(doc->mesh(), shown->part.triangles, hit.triangle, hit.position, radius, !remove),
+      remove ? "part brushed away" : "part brushed");
+}
+
+}  // namespace sagrid::ui
