@@ -20,6 +20,7 @@
 #include "core/common/atomic_file.h"
 #include "core/curation/curation_report.h"
 #include "core/eval/evaluation_comparison.h"
+#include "core/eval/part_agreement.h"
 #include "core/eval/unit_guess_score.h"
 #include "core/labels/labels.h"
 
@@ -42,6 +43,7 @@ void setupEval(CLI::App& root) {
                         countObjective = "count";
     std::vector<std::string> only, compare;
     std::string curation, units, truth;
+    bool parts = false;
     double minutes = 2;
     int epochs = 0;
     sagrid::PassOptions passes;
@@ -61,6 +63,10 @@ void setupEval(CLI::App& root) {
                   "Instead of models: report curator throughput from a GUI curation log "
                   "(actions and edits per object, the one-key share, the slowest objects, time as "
                   "logged and by a keystroke-level model); writes OUT/curation.md and .json");
+  cmd->add_flag("--parts", o->parts,
+               "Instead of models: the control parts annotate finds at the curated toggle points "
+               "against the parts the curator marked in the GUI (brush, Grow, Shrink) in --data's "
+               "labels: triangle IoU by area and axis angle per part; writes OUT/parts.md and .json");
   cmd->add_option("--models", o->models, "Model folder (default resources/models)");
   cmd->add_option("--out", o->out, "Report folder (default eval)");
   cmd->add_option("--compare", o->compare,
@@ -116,6 +122,19 @@ void setupEval(CLI::App& root) {
       return;
     }
     if (o->data.empty()) throw sagrid::InvalidArgument("eval: --data is required (or --curation LOG)");
+    if (o->parts) {
+      std::vector<sagrid::DatasetEntry> entries;
+      for (const auto& dir : o->data) {
+        auto some = sagrid::readDataset(dir);
+        entries.insert(entries.end(), some.begin(), some.end());
+      }
+      const sagrid::PartAgreementReport report = sagrid::measurePartAgreement(entries);
+      fs::create_directories(o->out);
+      sagrid::writeFileAtomic(fs::path(o->out) / "parts.md", sagrid::partAgreementMarkdown(report));
+      sagrid::writeFileAtomic(fs::path(o->out) / "parts.json", sagrid::toJson(report).dump(2) + "\n");
+      std::cout << sagrid::partAgreementMarkdown(report);
+      return;
+    }
     auto oneDataset = [&](const char* what) {
       if (o->data.size() != 1)
         throw sagrid::InvalidArgument(std::string(what) + " takes one --data, got " +

@@ -1,0 +1,135 @@
+#include "core/eval/part_agreement.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "core/common/error.h"
+#include "core/controls/control_part.h"
+#include "core/controls/control_record.h"
+#include "core/labels/labels.h"
+#include "core/mesh/mesh_import.h"
+
+namespace sagrid {
+
+namespace {
+
+std::vector<double> triangleAreas(const Mesh& mesh) {
+  std::vector<double> areas(mesh.triangles.size(), 0.0);
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+    const Eigen::Vector3i& tri = mesh.triangles[t];
+    if ((tri.array() < 0).any() || (tri.array() >= static_cast<int>(mesh.positions.size())).any())
+      continue;
+    const Eigen::Vector3f& a = mesh.positions[std::size_t(tri[0])];
+    areas[t] = 0.5 * (mesh.positions[std::size_t(tri[1])] - a)
+                         .cross(mesh.positions[std::size_t(tri[2])] - a)
+                         .norm();
+  }
+  return areas;
+}
+
+// Both sorted.
+double areaIou(const std::vector<int>& a, const std::vector<int>& b, const std::vector<double>& area) {
+  const auto areaOf = [&](int t) {
+    return t >= 0 && static_cast<std::size_t>(t) < area.size() ? area[std::size_t(t)] : 0.0;
+  };
+  std::vector<int> both, either;
+  std::set_intersection(a.begin(), a.end(), b.begin(), b.end(), std::back_inserter(both));
+  std::set_union(a.begin(), a.end(), b.begin(), b.end(), std::back_inserter(either));
+  double inter = 0, uni = 0;
+  for (int t : both) inter += areaOf(t);
+  for (int t : either) uni += areaOf(t);
+  return uni > 0 ? inter / uni : 0.0;
+}
+
+double lineAngleDegrees(const Eigen::Vector3f& a, const Eigen::Vector3f& b) {
+  const double c = std::min(1.0, std::abs(static_cast<double>(a.normalized().dot(b.normalized()))));
+  return std::acos(c) * 180.0 / M_PI;
+}
+
+}  // namespace
+
+PartAgreementReport measurePartAgreement(const std::vector<DatasetEntry>& entries) {
+  PartAgreementReport report;
+  for (const DatasetEntry& entry : entries) {
+    try {
+      const ObjectLabels labels = readLabels(entry.labels);
+      const UpAxis up = upAxisOrZ(labels.object.up);
+      std::vector<std::size_t> toggles;
+      std::vector<std::optional<ControlRecord>> records;
+      bool anyMarked = false;
+      for (std::size_t i = 0; i < labels.affordances.size(); ++i) {
+        if (labels.affordances[i].type != "togglebutton") continue;
+        toggles.push_back(i);
+        records.push_back(readControlRecord(labels.affordances[i], up, entry.labels));
+        anyMarked = anyMarked || (records.back() && records.back()->part.origin == PartOrigin::Marked);
+      }
+      if (!anyMarked) continue;
+      const Mesh mesh = importMesh(entry.mesh, ImportOptions(up));
+      std::vector<Eigen::Vector3f> points;
+      for (std::size_t i : toggles) points.push_back(fileToZUp(labels.affordances[i].position, up));
+      const ControlParts found = findControlParts(mesh, points);
+      const std::vector<double> area = triangleAreas(mesh);
+      ++report.objects;
+      for (std::size_t k = 0; k < toggles.size(); ++k) {
+        if (!records[k] || records[k]->part.origin != PartOrigin::Marked) continue;
+        const ControlPart& marked = records[k]->part;
+        PartAgreement a;
+        a.object = labels.object.id.empty() ? entry.id : labels.object.id;
+        a.point = static_cast<int>(toggles[k]) + 1;
+        a.motion = toString(marked.motion);
+        if (found.parts[k]) {
+          a.found = toString(found.parts[k]->origin);
+          a.iou = areaIou(found.parts[k]->triangles, marked.triangles, area);
+          a.axisDegrees = lineAngleDegrees(found.parts[k]->axis, marked.axis);
+        } else {
+          a.found = "site";
+        }
+        report.points.push_back(a);
+      }
+    } catch (const Error& e) {
+      report.skipped.push_back(entry.id + ": " + e.what());
+    }
+  }
+  const double n = static_cast<double>(std::max<std::size_t>(report.points.size(), 1));
+  for (const PartAgreement& a : report.points) {
+    report.meanIou += a.iou / n;
+    report.meanAxisDegrees += a.axisDegrees / n;
+    report.shareIouAtLeast08 += (a.iou >= 0.8 ? 1.0 : 0.0) / n;
+    report.shareAxisWithin10 += (a.axisDegrees <= 10.0 ? 1.0 : 0.0) / n;
+  }
+  return report;
+}
+
+std::string partAgreementMarkdown(const PartAgreementReport& r) {
+  std::ostringstream md;
+  md.setf(std::ios::fixed);
+  md.precision(2);
+  md << "# Found control parts against the curator's marked parts\n\n"
+     << r.points.size() << " marked parts on " << r.objects << " objects: mean triangle IoU (by area) "
+     << r.meanIou << ", " << 100 * r.shareIouAtLeast08 << " % at 0.8 or more; mean axis angle "
+     << r.meanAxisDegrees << " deg, " << 100 * r.shareAxisWithin10 << " % within 10 deg.\n\n"
+     << "| object | point | marked motion | found as | IoU | axis (deg) |\n|---|---:|---|---|---:|---:|\n";
+  for (const PartAgreement& a : r.points)
+    md << "| " << a.object << " | " << a.point << " | " << a.motion << " | " << a.found << " | "
+       << a.iou << " | " << a.axisDegrees << " |\n";
+  for (const std::string& s : r.skipped) md << "\nSkipped: " << s << "\n";
+  return md.str();
+}
+
+nlohmann::json toJson(const PartAgreementReport& r) {
+  nlohmann::json points = nlohmann::json::array();
+  for (const PartAgreement& a : r.points)
+    points.push_back({{"object", a.object}, {"point", a.point}, {"motion", a.motion},
+                      {"found", a.found}, {"iou", a.iou}, {"axis_degrees", a.axisDegrees}});
+  return {{"objects", r.objects},
+          {"marked_parts", r.points.size()},
+          {"mean_iou", r.meanIou},
+          {"share_iou_at_least_0_8", r.shareIouAtLeast08},
+          {"mean_axis_degrees", r.meanAxisDegrees},
+          {"share_axis_within_10_degrees", r.shareAxisWithin10},
+          {"points", points},
+          {"skipped", r.skipped}};
+}
+
+}  // namespace sagrid

@@ -1,0 +1,105 @@
+// The found control parts measured against parts a curator marked, on a panel with two separate
+// knobs whose found parts are known: a marked part equal to the found one agrees fully, a half
+// knob with a sideways axis does not; objects without marked parts are passed over.
+#include "core/eval/part_agreement.h"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+#include "core/controls/control_record.h"
+#include "core/labels/labels.h"
+#include "core/mesh/mesh_import.h"
+#include "support/analytic_meshes.h"
+#include "support/test_paths.h"
+
+namespace sagrid {
+namespace {
+namespace fs = std::filesystem;
+
+void writeObj(const fs::path& path, const Mesh& mesh) {
+  std::ofstream obj(path);
+  for (const auto& p : mesh.positions) obj << "v " << p.x() << " " << p.y() << " " << p.z() << "\n";
+  for (const auto& t : mesh.triangles) obj << "f " << t[0] + 1 << " " << t[1] + 1 << " " << t[2] + 1 << "\n";
+}
+
+// An object folder: a panel with knobs at x = -0.1 and +0.1 and a toggle point on each.
+fs::path writeKnobPanel(const fs::path& dir) {
+  Mesh mesh = test::box({-0.3f, -0.2f, -0.02f}, {0.3f, 0.2f, 0.0f});
+  test::append(mesh, test::box({-0.12f, -0.02f, 0.0f}, {-0.08f, 0.02f, 0.025f}));
+  test::append(mesh, test::box({0.08f, -0.02f, 0.0f}, {0.12f, 0.02f, 0.025f}));
+  fs::create_directories(dir);
+  writeObj(dir / "mesh.obj", mesh);
+  ObjectLabels labels;
+  labels.object.id = dir.filename().string();
+  labels.object.mesh = "mesh.obj";
+  labels.object.category = "stove";
+  labels.object.up = "z";
+  for (float x : {-0.1f, 0.1f}) {
+    AffordancePoint p;
+    p.type = "togglebutton";
+    p.position = {x, 0.0f, 0.025f};
+    labels.affordances.push_back(p);
+  }
+  writeLabels(dir / "labels.json", labels);
+  return dir;
+}
+
+// The imported triangles of the knob at `x` (every corner within it), those with a centroid at
+// y >= 0 only when `half`.
+std::vector<int> knobTriangles(const Mesh& mesh, float x, bool half) {
+  std::vector<int> out;
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+    bool inKnob = true;
+    float y = 0;
+    for (int v : mesh.triangles[t]) {
+      const Eigen::Vector3f& p = mesh.positions[std::size_t(v)];
+      inKnob = inKnob && std::abs(p.x() - x) < 0.021f && std::abs(p.y()) < 0.021f && p.z() > -0.001f;
+      y += p.y() / 3.0f;
+    }
+    if (inKnob && (!half || y >= 0.0f)) out.push_back(static_cast<int>(t));
+  }
+  return out;
+}
+
+TEST(PartAgreement, AMarkedPartEqualToTheFoundOneAgreesAndAHalfKnobDoesNot) {
+  const fs::path root = test::freshTempDir();
+  const fs::path dir = writeKnobPanel(root / "marked");
+  writeKnobPanel(root / "unmarked");
+  const Mesh mesh = importMesh(dir / "mesh.obj", ImportOptions(UpAxis::Z));
+  ObjectLabels labels = readLabels(dir / "labels.json");
+  ControlPart whole = describeControlPart(mesh, knobTriangles(mesh, -0.1f, false), PartOrigin::Marked);
+  ASSERT_EQ(whole.triangles.size(), 12u);
+  writeControlRecord(labels.affordances[0], {whole, {}}, UpAxis::Z);
+  ControlPart half = describeControlPart(mesh, knobTriangles(mesh, 0.1f, true), PartOrigin::Marked);
+  half.axis = Eigen::Vector3f::UnitX();  // the curator picked a sideways axis
+  writeControlRecord(labels.affordances[1], {half, {}}, UpAxis::Z);
+  writeLabels(dir / "labels.json", labels);
+
+  const PartAgreementReport r = measurePartAgreement(
+      {{"marked", "stove", dir / "mesh.obj", dir / "labels.json"},
+       {"unmarked", "stove", root / "unmarked" / "mesh.obj", root / "unmarked" / "labels.json"}});
+  EXPECT_EQ(r.objects, 1u);
+  ASSERT_EQ(r.points.size(), 2u);
+  EXPECT_EQ(r.points[0].point, 1);
+  EXPECT_NEAR(r.points[0].iou, 1.0, 1e-9);
+  EXPECT_LT(r.points[0].axisDegrees, 1.0);
+  EXPECT_GT(r.points[1].iou, 0.2);
+  EXPECT_LT(r.points[1].iou, 0.8);
+  EXPECT_NEAR(r.points[1].axisDegrees, 90.0, 1.0);
+  EXPECT_DOUBLE_EQ(r.shareIouAtLeast08, 0.5);
+  EXPECT_DOUBLE_EQ(r.shareAxisWithin10, 0.5);
+  EXPECT_NE(partAgreementMarkdown(r).find("| marked | 2 | knob |"), std::string::npos)
+      << partAgreementMarkdown(r);
+  EXPECT_EQ(toJson(r).at("marked_parts"), 2);
+
+  // An object that cannot be read is named, not thrown.
+  std::ofstream(root / "unmarked" / "labels.json") << "{ not json";
+  const auto broken = measurePartAgreement(
+      {{"unmarked", "stove", root / "unmarked" / "mesh.obj", root / "unmarked" / "labels.json"}});
+  ASSERT_EQ(broken.skipped.size(), 1u);
+  EXPECT_NE(broken.skipped[0].find("unmarked"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace sagrid
