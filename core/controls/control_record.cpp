@@ -59,6 +59,7 @@ nlohmann::json controlJson(const ControlRecord& record, UpAxis fileUp) {
       {"radius", jsonNumber(part.radius)},
   };
   if (record.drives) out["drives"] = *record.drives;
+  if (record.confirmed) out["confirmed"] = true;
   return out;
 }
 
@@ -76,7 +77,7 @@ std::optional<ControlRecord> readControlRecord(const AffordancePoint& point, UpA
   const auto partJson = record.find("part");
   if (partJson == record.end() || !partJson->is_object()) fail(path, "part", "must be an object");
   const auto origin = parsePartOrigin(readText(*partJson, "origin", path));
-  if (!origin) fail(path, "part.origin", "must be connected, material, grown or disc");
+  if (!origin) fail(path, "part.origin", "must be connected, material, grown, disc or marked");
   part.origin = *origin;
   const auto runs = partJson->find("triangles");
   if (runs == partJson->end() || !runs->is_array()) fail(path, "part.triangles", "must be a list of [first, count]");
@@ -108,6 +109,11 @@ std::optional<ControlRecord> readControlRecord(const AffordancePoint& point, UpA
         drives->get<long long>() > static_cast<long long>(kMaxAffordancesPerObject))
       fail(path, "drives", "must be a heat source's index or -1");
     out.drives = drives->get<int>();
+  }
+  const auto confirmed = record.find("confirmed");
+  if (confirmed != record.end()) {
+    if (!confirmed->is_boolean()) fail(path, "confirmed", "must be true or false");
+    out.confirmed = confirmed->get<bool>();
   }
   return out;
 }

@@ -3,9 +3,12 @@
 //               "part": {"origin": "connected"|"material"|"grown"|"disc"|"marked",
 //                        "triangles": [[first, count], ...]},   runs of imported triangle indices
 //               "axis": [x, y, z], "pivot": [x, y, z], "radius": r,   the mesh file's frame and units
-//               "drives": k}   a stove knob: the k-th heat source point (0-based), -1 none
+//               "drives": k,   a stove knob: the k-th heat source point (0-based), -1 none
+//               "confirmed": true}   set by the curator in the GUI (kept, reshaped or turned)
 // `joint` is written for readers (it follows from `motion`); `drives` is absent where nothing was
-// paired (sinks). Written by annotate, changed by the curator in the GUI, read by the exports.
+// paired (sinks), `confirmed` where annotate wrote the record. Written by annotate, changed by the
+// curator in the GUI, read by the exports; `sagrid eval --parts` measures found parts against the
+// confirmed ones.
 #pragma once
 
 #include <filesystem>
@@ -24,6 +27,7 @@ inline constexpr const char* kControlField = "control";
 struct ControlRecord {
   ControlPart part;  // the mesh's z-up frame and units
   std::optional<int> drives;
+  bool confirmed = false;  // the curator's: kept, reshaped or turned in the GUI
 };
 
 // `part` in the z-up frame of a mesh whose file is `fileUp`; the record is in the file's frame.

@@ -62,7 +62,7 @@ PartAgreementReport measurePartAgreement(const std::vector<DatasetEntry>& entrie
         if (labels.affordances[i].type != "togglebutton") continue;
         toggles.push_back(i);
         records.push_back(readControlRecord(labels.affordances[i], up, entry.labels));
-        anyMarked = anyMarked || (records.back() && records.back()->part.origin == PartOrigin::Marked);
+        anyMarked = anyMarked || (records.back() && records.back()->confirmed);
       }
       if (!anyMarked) continue;
       const Mesh mesh = importMesh(entry.mesh, ImportOptions(up));
@@ -72,7 +72,7 @@ PartAgreementReport measurePartAgreement(const std::vector<DatasetEntry>& entrie
       const std::vector<double> area = triangleAreas(mesh);
       ++report.objects;
       for (std::size_t k = 0; k < toggles.size(); ++k) {
-        if (!records[k] || records[k]->part.origin != PartOrigin::Marked) continue;
+        if (!records[k] || !records[k]->confirmed) continue;
         const ControlPart& marked = records[k]->part;
         PartAgreement a;
         a.object = labels.object.id.empty() ? entry.id : labels.object.id;
@@ -105,11 +105,11 @@ std::string partAgreementMarkdown(const PartAgreementReport& r) {
   std::ostringstream md;
   md.setf(std::ios::fixed);
   md.precision(2);
-  md << "# Found control parts against the curator's marked parts\n\n"
-     << r.points.size() << " marked parts on " << r.objects << " objects: mean triangle IoU (by area) "
+  md << "# Found control parts against the curator's\n\n"
+     << r.points.size() << " parts the curator confirmed or marked, on " << r.objects << " objects: mean triangle IoU (by area) "
      << r.meanIou << ", " << 100 * r.shareIouAtLeast08 << " % at 0.8 or more; mean axis angle "
      << r.meanAxisDegrees << " deg, " << 100 * r.shareAxisWithin10 << " % within 10 deg.\n\n"
-     << "| object | point | marked motion | found as | IoU | axis (deg) |\n|---|---:|---|---|---:|---:|\n";
+     << "| object | point | curator's motion | found as | IoU | axis (deg) |\n|---|---:|---|---|---:|---:|\n";
   for (const PartAgreement& a : r.points)
     md << "| " << a.object << " | " << a.point << " | " << a.motion << " | " << a.found << " | "
        << a.iou << " | " << a.axisDegrees << " |\n";

@@ -1,6 +1,7 @@
 // How well the control parts annotate finds agree with the parts a curator marked (issue 42): for
-// every toggle button point whose labels.json part is the curator's ("marked": the GUI's brush,
-// Grow or Shrink), the part findControlParts finds at the object's toggle points (as annotate and
+// every toggle button point whose labels.json control the curator confirmed in the GUI (kept as
+// found, or reshaped with the brush, Grow or Shrink; control_record.h), the part findControlParts
+// finds at the object's toggle points (as annotate and
 // the exports do, every toggle point of the object told apart) against the marked one: the
 // triangle IoU by area and the angle between their axes (as lines: a knob turned either way is
 // the same joint).
@@ -19,19 +20,19 @@ struct PartAgreement {
   std::string object;
   int point = 0;            // 1-based among the object's points, as the GUI numbers them
   std::string found;        // the found part's origin, or "site" when none was found
-  std::string motion;       // the marked part's motion
+  std::string motion;       // the curator's part's motion
   double iou = 0;           // by area; 0 when none was found
   double axisDegrees = 90;  // between the axes as lines; 90 when none was found
 };
 
 struct PartAgreementReport {
   std::vector<PartAgreement> points;
-  std::size_t objects = 0;  // with at least one marked part
+  std::size_t objects = 0;  // with at least one confirmed part
   double meanIou = 0, shareIouAtLeast08 = 0, meanAxisDegrees = 0, shareAxisWithin10 = 0;
   std::vector<std::string> skipped;  // objects that could not be read, with why
 };
 
-// Objects without marked parts are passed over; one that cannot be read is named in `skipped`.
+// Objects without confirmed parts are passed over; one that cannot be read is named in `skipped`.
 PartAgreementReport measurePartAgreement(const std::vector<DatasetEntry>& entries);
 
 std::string partAgreementMarkdown(const PartAgreementReport& report);

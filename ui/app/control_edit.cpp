@@ -7,7 +7,6 @@
 #include "core/geometry/surface_scene.h"
 #include "ui/app/session.h"
 #include "ui/document/control_commands.h"
-#include "ui/document/control_view.h"
 
 namespace sagrid::ui {
 
@@ -23,17 +22,20 @@ std::optional<ShownControl> controlToEdit(const AnnotationDocument& doc, int ind
 
 }  // namespace
 
+void setControlRecord(Session& session, int index, const ShownControl& shown, const std::string& what) {
+  ControlRecord record{shown.part, shown.drives, /*confirmed=*/true};
+  session.execute(std::make_unique<SetControlCommand>(
+      index, controlJson(record, session.document()->mesh().fileUp), what));
+}
+
 bool reshapeControlPart(Session& session, int index, std::vector<int> triangles,
                         const std::string& what) {
   const AnnotationDocument* doc = session.document();
   if (!doc) return false;
   std::optional<ShownControl> shown = controlToEdit(*doc, index);
   if (!shown || triangles.empty() || triangles == shown->part.triangles) return false;
-  const Mesh& mesh = doc->mesh();
-  ControlRecord record{describeControlPart(mesh, std::move(triangles), PartOrigin::Marked),
-                       shown->drives};
-  session.execute(
-      std::make_unique<SetControlCommand>(index, controlJson(record, mesh.fileUp), what));
+  shown->part = describeControlPart(doc->mesh(), std::move(triangles), PartOrigin::Marked);
+  setControlRecord(session, index, *shown, what);
   return true;
 }
 

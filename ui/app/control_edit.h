@@ -1,11 +1,14 @@
-// The curator's reshaping of a toggle button's control part (issue 42): the Points panel's Grow
-// and Shrink and the viewport's part brush. Each change is one undoable SetControlCommand whose
-// part is the curator's ("marked"), its motion, axis and pivot found again from the new shape; the
-// burner it drives stays.
+// The curator's changes to a toggle button's control (issue 42): the Points panel's motion, axis,
+// pivot, burner, Keep, Grow and Shrink, and the viewport's part brush. Each change is one undoable
+// SetControlCommand of a record the curator confirmed; a reshaped part is the curator's
+// ("marked"), its motion, axis and pivot found again from the new shape, the burner it drives
+// kept.
 #pragma once
 
 #include <string>
 #include <vector>
+
+#include "ui/document/control_view.h"
 
 namespace sagrid {
 struct SurfaceHit;
@@ -22,6 +25,9 @@ struct PartBrush {
   bool armed = false;
   float radiusCm = 1.5f;
 };
+
+// Writes `shown` as point `index`'s record, confirmed by the curator; `what` names the step.
+void setControlRecord(Session& session, int index, const ShownControl& shown, const std::string& what);
 
 // Gives point `index` (a toggle button) the part of `triangles` (mesh indices); nothing when they
 // are empty or the part's already. Returns whether a command ran.

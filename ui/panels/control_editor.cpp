@@ -18,19 +18,13 @@ namespace sagrid::ui {
 
 namespace {
 
-void setControl(Session& session, int index, const ShownControl& shown, const std::string& what) {
-  ControlRecord record{shown.part, shown.drives};
-  session.execute(std::make_unique<SetControlCommand>(
-      index, controlJson(record, session.document()->mesh().fileUp), what));
-}
-
 void motionCombo(Session& session, int index, ShownControl shown) {
   ImGui::SetNextItemWidth(110);
   if (!ImGui::BeginCombo("##motion", toString(shown.part.motion))) return;
   for (ControlMotion m : {ControlMotion::Knob, ControlMotion::Lever, ControlMotion::Button}) {
     if (ImGui::Selectable(toString(m), m == shown.part.motion) && m != shown.part.motion) {
       shown.part.motion = m;
-      setControl(session, index, shown, std::string("moves as a ") + toString(m));
+      setControlRecord(session, index, shown, std::string("moves as a ") + toString(m));
     }
   }
   ImGui::EndCombo();
@@ -39,7 +33,7 @@ void motionCombo(Session& session, int index, ShownControl shown) {
 void axisButtons(Session& session, int index, ShownControl shown) {
   if (ImGui::Button("Flip axis")) {
     shown.part.axis = -shown.part.axis;
-    setControl(session, index, shown, "axis flipped");
+    setControlRecord(session, index, shown, "axis flipped");
   }
   ImGui::SameLine();
   const char* names[] = {"x", "y", "z"};
@@ -47,7 +41,7 @@ void axisButtons(Session& session, int index, ShownControl shown) {
     ImGui::SameLine();
     if (ImGui::SmallButton(names[a])) {
       shown.part.axis = Eigen::Vector3f::Unit(a);
-      setControl(session, index, shown, std::string("axis along ") + names[a]);
+      setControlRecord(session, index, shown, std::string("axis along ") + names[a]);
     }
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Axis along the view's %s (z up)", names[a]);
   }
@@ -71,7 +65,7 @@ void drivesCombo(Session& session, int index, ShownControl shown) {
     if (k >= 0) std::snprintf(label, sizeof label, "burner: point %d", burners[std::size_t(k)] + 1);
     if (ImGui::Selectable(label, k == current) && k != current) {
       shown.drives = k;
-      setControl(session, index, shown, label);
+      setControlRecord(session, index, shown, label);
     }
   }
   ImGui::EndCombo();
@@ -101,7 +95,7 @@ void partButtons(Session& session, int index, ShownControl shown) {
   ImGui::SameLine();
   if (ImGui::Button("Pivot at the point")) {
     shown.part.pivot = session.document()->pointInView(index);
-    setControl(session, index, shown, "pivot at the point");
+    setControlRecord(session, index, shown, "pivot at the point");
   }
   brushControls(session);
 }
@@ -128,7 +122,7 @@ void drawControlEditor(Session& session, int index) {
   partButtons(session, index, *shown);
   drivesCombo(session, index, *shown);
   if (!shown->recorded && ImGui::Button("Keep this part"))
-    setControl(session, index, *shown, "part kept");
+    setControlRecord(session, index, *shown, "part kept");
   if (shown->recorded) {
     if (ImGui::Button("Find the part again"))
       session.execute(std::make_unique<SetControlCommand>(index, nlohmann::json(), "found again"));

@@ -37,7 +37,17 @@ TEST(ControlRecord, RoundTripsInAYUpFile) {
   EXPECT_TRUE(back->part.pivot.isApprox(lever().part.pivot, 1e-6f));
   EXPECT_TRUE(back->part.axis.isApprox(lever().part.axis, 1e-6f));
   EXPECT_EQ(back->drives, 2);
+  EXPECT_FALSE(back->confirmed);
+  EXPECT_FALSE(json.contains("confirmed"));  // annotate's records do not say it
   EXPECT_FALSE(readControlRecord(AffordancePoint(), UpAxis::Z, "labels.json"));
+  // The curator's record says so and reads back so, a marked part with it.
+  ControlRecord curators = lever();
+  curators.confirmed = true;
+  curators.part.origin = PartOrigin::Marked;
+  writeControlRecord(point, curators, UpAxis::Y);
+  EXPECT_EQ(point.extra[kControlField]["confirmed"], true);
+  EXPECT_TRUE(readControlRecord(point, UpAxis::Y, "labels.json")->confirmed);
+  EXPECT_EQ(readControlRecord(point, UpAxis::Y, "labels.json")->part.origin, PartOrigin::Marked);
 }
 
 TEST(ControlRecord, MalformedRecordsNameTheFileAndField) {
@@ -48,6 +58,7 @@ TEST(ControlRecord, MalformedRecordsNameTheFileAndField) {
       {"axis", R"({"motion": "knob", "part": {"origin": "grown", "triangles": []}, "axis": [0,0,0], "pivot": [0,0,0]})"},
       {"pivot", R"({"motion": "knob", "part": {"origin": "grown", "triangles": []}, "axis": [0,0,1], "pivot": [0,"x",0]})"},
       {"drives", R"({"motion": "knob", "part": {"origin": "grown", "triangles": []}, "axis": [0,0,1], "pivot": [0,0,0], "drives": -4})"},
+      {"confirmed", R"({"motion": "knob", "part": {"origin": "marked", "triangles": []}, "axis": [0,0,1], "pivot": [0,0,0], "confirmed": "yes"})"},
   };
   for (const auto& [field, text] : cases) {
     SCOPED_TRACE(field);

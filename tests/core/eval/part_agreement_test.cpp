@@ -1,6 +1,6 @@
-// The found control parts measured against parts a curator marked, on a panel with two separate
-// knobs whose found parts are known: a marked part equal to the found one agrees fully, a half
-// knob with a sideways axis does not; objects without marked parts are passed over.
+// The found control parts measured against parts a curator confirmed or marked, on a panel with
+// two separate knobs whose found parts are known: a marked part equal to the found one agrees
+// fully, a half knob with a sideways axis does not; records annotate wrote are no truth.
 #include "core/eval/part_agreement.h"
 
 #include <gtest/gtest.h>
@@ -70,10 +70,14 @@ TEST(PartAgreement, AMarkedPartEqualToTheFoundOneAgreesAndAHalfKnobDoesNot) {
   ObjectLabels labels = readLabels(dir / "labels.json");
   ControlPart whole = describeControlPart(mesh, knobTriangles(mesh, -0.1f, false), PartOrigin::Marked);
   ASSERT_EQ(whole.triangles.size(), 12u);
-  writeControlRecord(labels.affordances[0], {whole, {}}, UpAxis::Z);
+  writeControlRecord(labels.affordances[0], {whole, {}, true}, UpAxis::Z);
   ControlPart half = describeControlPart(mesh, knobTriangles(mesh, 0.1f, true), PartOrigin::Marked);
   half.axis = Eigen::Vector3f::UnitX();  // the curator picked a sideways axis
-  writeControlRecord(labels.affordances[1], {half, {}}, UpAxis::Z);
+  writeControlRecord(labels.affordances[1], {half, {}, true}, UpAxis::Z);
+  // A record annotate wrote (not confirmed) is no truth: the unmarked object has one.
+  ObjectLabels other = readLabels(root / "unmarked" / "labels.json");
+  writeControlRecord(other.affordances[0], {whole, {}, false}, UpAxis::Z);
+  writeLabels(root / "unmarked" / "labels.json", other);
   writeLabels(dir / "labels.json", labels);
 
   const PartAgreementReport r = measurePartAgreement(

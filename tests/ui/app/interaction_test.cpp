@@ -79,6 +79,7 @@ TEST(Interaction, TheBrushMarksTheSelectedControlsPartAndCtrlTakesItAway) {
   nlohmann::json part = partOf(readLabels(dir / "labels.json"));
   ASSERT_FALSE(part.is_null());
   EXPECT_EQ(part.at("origin"), "marked");
+  EXPECT_EQ(readLabels(dir / "labels.json").affordances[1].extra["control"]["confirmed"], true);
   // The block's 10 triangles (2 on top, 8 on the sides) are triangles 2..11, the plate's 0 and 1.
   EXPECT_EQ(part.at("triangles"), nlohmann::json::parse("[[2, 10]]"));
   // A small brush with Ctrl takes the clicked triangle away: 9 left.
