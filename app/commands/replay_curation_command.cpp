@@ -1,10 +1,15 @@
 // `sagrid replay-curation PATHS --truth DIR --curation-log LOG`: a curator who knows the right
 // labels (DIR/<id>/labels.json) reviews the objects of PATHS in the GUI's session, from the
 // predictions in their labels.json, and the session's curation log records every action; then
-// `sagrid eval --curation LOG` reports the throughput. Parsing only; the work is in ui/app.
+// `sagrid eval --curation LOG` reports the throughput. With `--part-marks FILE` instead of
+// --truth: the control parts a curator marked (ui/app/part_marks_replay.h) are made again in the
+// labels.json of PATHS. Parsing only; the work is in ui/app.
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
+
+#include <nlohmann/json.hpp>
 
 #include "app/command_registry.h"
 #include "core/common/error.h"
@@ -12,11 +17,37 @@
 #include "core/labels/labels.h"
 #include "ui/app/curation_replay.h"
 #include "ui/app/model_predictor.h"
+#include "ui/app/part_marks_replay.h"
 #include "ui/app/session.h"
 #include "ui/document/review_queue.h"
 
 namespace {
 namespace fs = std::filesystem;
+
+struct ReplayOptions {
+  std::vector<std::string> paths;
+  std::string truth, log, models, predictions, partMarks;
+  bool noRepredict = false;
+};
+
+void replayPartMarks(const ReplayOptions& o) {
+  std::ifstream in(o.partMarks);
+  if (!in) throw sagrid::FileError(o.partMarks, "cannot be read");
+  nlohmann::json marks;
+  try {
+    in >> marks;
+  } catch (const nlohmann::json::exception& e) {
+    throw sagrid::FileError(o.partMarks, std::string("not JSON: ") + e.what());
+  }
+  sagrid::ui::Session session;
+  session.autoPredict = false;
+  if (!o.log.empty()) session.setCurationLog(o.log, /*replayed=*/true);
+  session.openPaths(std::vector<fs::path>(o.paths.begin(), o.paths.end()));
+  const auto summary = sagrid::ui::replayPartMarks(session, marks, o.partMarks);
+  for (const auto& e : session.pendingErrors()) std::fprintf(stderr, "replay-curation: %s\n", e.c_str());
+  for (const auto& p : summary.problems) std::fprintf(stderr, "replay-curation: %s\n", p.c_str());
+  std::printf("replay-curation: %zu parts marked on %zu objects\n", summary.parts, summary.objects);
+}
 
 void setupReplayCuration(CLI::App& root) {
   auto* cmd = root.add_subcommand(
@@ -25,15 +56,14 @@ void setupReplayCuration(CLI::App& root) {
       "session as a curator who knows the right labels in --truth would: switch the category, set "
       "the units, drag, delete and add points, accept; every action goes to the curation log. "
       "Changes the labels.json files of PATHS: run it on a copy.");
-  struct Options {
-    std::vector<std::string> paths;
-    std::string truth, log, models, predictions;
-    bool noRepredict = false;
-  };
-  auto o = std::make_shared<Options>();
+  auto o = std::make_shared<ReplayOptions>();
   cmd->add_option("paths", o->paths, "Folders or mesh files, as for sagrid gui")->required();
-  cmd->add_option("--truth", o->truth, "Folder of right labels, <id>/labels.json")->required();
-  cmd->add_option("--curation-log", o->log, "Curation log to append to")->required();
+  cmd->add_option("--truth", o->truth, "Folder of right labels, <id>/labels.json");
+  cmd->add_option("--part-marks", o->partMarks,
+                  "Instead of --truth: a file of control parts a curator marked (per object "
+                  "folder and toggle point: kept as found, or brush strokes, and the axis), made "
+                  "again through the Points panel's Keep and the viewport's brush");
+  cmd->add_option("--curation-log", o->log, "Curation log to append to (required with --truth)");
   cmd->add_option("--predictions", o->predictions,
                   "An `annotate --out` folder: its labels are first written beside the meshes they "
                   "describe (inside the first of PATHS), as the objects' starting point");
@@ -41,6 +71,12 @@ void setupReplayCuration(CLI::App& root) {
   cmd->add_flag("--no-repredict", o->noRepredict,
                 "A category switch only drops the old points (the GUI before it predicted again)");
   cmd->callback([o] {
+    if (!o->partMarks.empty()) {
+      replayPartMarks(*o);
+      return;
+    }
+    if (o->truth.empty() || o->log.empty())
+      throw sagrid::InvalidArgument("replay-curation needs --truth DIR and --curation-log LOG, or --part-marks FILE");
     if (!fs::is_directory(o->truth)) throw sagrid::FileError(o->truth, "labels folder not found");
     if (!o->predictions.empty()) {
       const std::size_t seeded =

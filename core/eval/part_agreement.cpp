@@ -39,6 +39,7 @@ double areaIou(const std::vector<int>& a, const std::vector<int>& b, const std::
   double inter = 0, uni = 0;
   for (int t : both) inter += areaOf(t);
   for (int t : either) uni += areaOf(t);
+  if (a.empty() && b.empty()) return 1.0;  // two discs: no triangle either way
   return uni > 0 ? inter / uni : 0.0;
 }
 

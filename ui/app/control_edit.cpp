@@ -39,17 +39,20 @@ bool reshapeControlPart(Session& session, int index, std::vector<int> triangles,
   return true;
 }
 
-bool brushControlPart(Session& session, const SurfaceHit& hit, bool remove) {
+bool brushControlPart(Session& session, const SurfaceHit& hit, BrushMode mode) {
   const AnnotationDocument* doc = session.document();
   if (!doc) return false;
   const int index = doc->selected();
   const std::optional<ShownControl> shown = controlToEdit(*doc, index);
   if (!shown) return false;
   const float radius = session.partBrush.radiusCm * 0.01f / std::max(doc->metersPerUnit(), 1e-9f);
+  const std::vector<int> start =
+      mode == BrushMode::Replace ? std::vector<int>{} : shown->part.triangles;
   return reshapeControlPart(
       session, index,
-      brushedPart(doc->mesh(), shown->part.triangles, hit.triangle, hit.position, radius, !remove),
-      remove ? "part brushed away" : "part brushed");
+      brushedPart(doc->mesh(), start, hit.triangle, hit.position, radius, mode != BrushMode::Away),
+      mode == BrushMode::Away ? "part brushed away"
+      : mode == BrushMode::Replace ? "part brushed anew" : "part brushed");
 }
 
 }  // namespace sagrid::ui

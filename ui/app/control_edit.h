@@ -19,8 +19,8 @@ namespace sagrid::ui {
 class Session;
 
 // The brush of the viewport: while armed, a click on the surface adds the connected surface
-// within the radius to the selected toggle button's part, Ctrl+click takes it away
-// (core/controls/control_part_edit.h: brushedPart).
+// within the radius to the selected toggle button's part, Ctrl+click takes it away, Alt+click
+// starts the part anew with it (core/controls/control_part_edit.h: brushedPart).
 struct PartBrush {
   bool armed = false;
   float radiusCm = 1.5f;
@@ -34,8 +34,11 @@ void setControlRecord(Session& session, int index, const ShownControl& shown, co
 bool reshapeControlPart(Session& session, int index, std::vector<int> triangles,
                         const std::string& what);
 
+// A click adds the brushed surface, Ctrl+click takes it away, Alt+click makes it the whole part.
+enum class BrushMode { Add, Away, Replace };
+
 // The brush at `hit` (on the open document's surface) on the selected point's part. False when
 // no toggle button is selected or nothing changed.
-bool brushControlPart(Session& session, const SurfaceHit& hit, bool remove);
+bool brushControlPart(Session& session, const SurfaceHit& hit, BrushMode mode);
 
 }  // namespace sagrid::ui

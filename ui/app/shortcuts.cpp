@@ -16,7 +16,7 @@ const std::vector<ShortcutHelp>& shortcutHelp() {
       {"Arrows (Shift: pan)", "orbit"},
       {"Click", "select a point (empty space: deselect)"},
       {"Shift+click, Insert then click", "add a point of the current type"},
-      {"Click, Ctrl+click (Brush on)", "brush the selected control's part on, away"},
+      {"Click, Ctrl+, Alt+click (Brush on)", "brush the selected control's part on, away, anew"},
       {"A", "accept the selected point; none selected: accept all and go to the next object"},
       {"C", "take the suggested category of a rejected object, with its points"},
       {"Del / Backspace", "delete the selected point"},

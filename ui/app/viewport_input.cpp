@@ -130,7 +130,10 @@ void ViewportInput::release(const InputEvent&, Session& session) {
     if (session.partBrush.armed && !add && doc->selected() >= 0) {
       // The brush keeps the selection: a click on the surface reshapes the selected part.
       if (auto hit = surfaceUnder(session, m_x, m_y))
-        brushControlPart(session, *hit, (m_mods & GLFW_MOD_CONTROL) != 0);
+        brushControlPart(session, *hit,
+                         (m_mods & GLFW_MOD_CONTROL) ? BrushMode::Away
+                         : (m_mods & GLFW_MOD_ALT)   ? BrushMode::Replace
+                                                     : BrushMode::Add);
     } else if (add) {
       if (auto hit = surfaceUnder(session, m_x, m_y)) {
         AffordancePoint point;

@@ -76,7 +76,8 @@ void brushControls(Session& session) {
   ImGui::Checkbox("Brush", &session.partBrush.armed);
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip("While on, a click on the surface adds what lies within the radius and is "
-                      "connected to the clicked surface to the part; Ctrl+click takes it away");
+                      "connected to the clicked surface to the part; Ctrl+click takes it away, "
+                      "Alt+click starts the part anew with it");
   ImGui::SameLine();
   ImGui::SetNextItemWidth(120);
   ImGui::SliderFloat("radius (cm)", &session.partBrush.radiusCm, 0.2f, 10.0f, "%.1f",

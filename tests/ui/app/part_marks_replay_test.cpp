@@ -1,0 +1,102 @@
+// Hand-marked control parts replayed through the GUI session: a kept part and a brushed one end
+// confirmed in labels.json on disk with the axis the marks give; marks that cannot apply are named;
+// a malformed marks file is one error naming it.
+#include "ui/app/part_marks_replay.h"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+#include "core/common/error.h"
+#include "core/controls/control_record.h"
+#include "support/test_paths.h"
+#include "ui/app/session.h"
+
+namespace sagrid::ui {
+namespace {
+namespace fs = std::filesystem;
+
+// A 1 m plate with a separate 30 x 30 x 20 cm block on it; toggle buttons on the block's top and
+// on the plate's corner, a heat source in between.
+void writeObject(const fs::path& dir) {
+  fs::create_directories(dir);
+  std::ofstream obj(dir / "mesh.obj");
+  obj << "v -0.5 -0.5 0\nv 0.5 -0.5 0\nv 0.5 0.5 0\nv -0.5 0.5 0\nf 1 2 3\nf 1 3 4\n"
+         "v 0.1 -0.4 0.2\nv 0.4 -0.4 0.2\nv 0.4 -0.1 0.2\nv 0.1 -0.1 0.2\n"
+         "v 0.1 -0.4 0\nv 0.4 -0.4 0\nv 0.4 -0.1 0\nv 0.1 -0.1 0\n"
+         "f 5 6 7\nf 5 7 8\nf 9 10 6\nf 9 6 5\nf 10 11 7\nf 10 7 6\nf 11 12 8\nf 11 8 7\nf 12 9 5\nf 12 5 8\n";
+  obj.close();
+  ObjectLabels labels;
+  labels.object.id = dir.filename().string();
+  labels.object.mesh = "mesh.obj";
+  labels.object.category = "stove";
+  labels.object.up = "z";
+  AffordancePoint knob, corner, heat;
+  knob.type = corner.type = "togglebutton";
+  knob.position = {0.25f, -0.25f, 0.2f};
+  corner.position = {-0.45f, 0.45f, 0.0f};
+  heat.type = "heatsource";
+  labels.affordances = {knob, heat, corner};
+  writeLabels(dir / "labels.json", labels);
+}
+
+std::optional<ControlRecord> recordOf(const fs::path& dir, int index) {
+  const ObjectLabels labels = readLabels(dir / "labels.json");
+  return readControlRecord(labels.affordances[std::size_t(index)], UpAxis::Z, dir / "labels.json");
+}
+
+TEST(PartMarksReplay, KeptAndBrushedPartsEndConfirmedOnDiskWithTheirAxes) {
+  const fs::path dir = test::freshTempDir();
+  writeObject(dir / "queue" / "a");
+  writeObject(dir / "queue" / "b");
+  writeObject(dir / "queue" / "c");  // not in the marks: untouched
+  const auto marks = nlohmann::json::parse(R"({"objects": {
+    "a": [{"point": 1, "keep": true, "axis": "x"}],
+    "b": [{"point": 1, "strokes": [{"at": [0.25, -0.25, 0.2], "radius_cm": 1, "mode": "replace"}]},
+          {"point": 2, "keep": true}, {"point": 3, "strokes": [{"at": [-0.45, 0.45, 0], "radius_cm": 1}]}]}})");
+  Session session;
+  session.autoPredict = false;
+  session.setCurationLog(dir / "curation.jsonl");
+  session.openPaths({dir / "queue"});
+  const PartMarksSummary summary = replayPartMarks(session, marks, "marks.json");
+  EXPECT_EQ(summary.objects, 2u);
+  // Point 2 of b is a heat source: named, not marked.
+  ASSERT_EQ(summary.problems.size(), 1u);
+  EXPECT_NE(summary.problems[0].find("b point 2"), std::string::npos) << summary.problems[0];
+
+  const auto kept = recordOf(dir / "queue" / "a", 0);
+  ASSERT_TRUE(kept);
+  EXPECT_TRUE(kept->confirmed);
+  EXPECT_FALSE(kept->part.triangles.empty());  // as found, not marked
+  EXPECT_NE(kept->part.origin, PartOrigin::Marked);
+  EXPECT_TRUE(kept->part.axis.isApprox(Eigen::Vector3f::UnitX()));
+  const auto brushed = recordOf(dir / "queue" / "b", 0);
+  ASSERT_TRUE(brushed);
+  EXPECT_TRUE(brushed->confirmed);
+  EXPECT_EQ(brushed->part.origin, PartOrigin::Marked);
+  EXPECT_EQ(brushed->part.triangles.size(), 1u);  // a 1 cm brush: the clicked triangle alone
+  // A toggle button without a part gets one brushed on: the plate's corner triangle.
+  const auto corner = recordOf(dir / "queue" / "b", 2);
+  ASSERT_TRUE(corner);
+  EXPECT_EQ(corner->part.triangles.size(), 1u);
+  EXPECT_FALSE(recordOf(dir / "queue" / "c", 0));
+
+  // A stroke of an unknown mode: one error naming the marks file.
+  writeObject(dir / "again" / "a");
+  Session other;
+  other.autoPredict = false;
+  other.openPaths({dir / "again"});
+  const auto bad = nlohmann::json::parse(
+      R"({"objects": {"a": [{"point": 1, "strokes": [{"at": [0.25, -0.25, 0.2], "mode": "smear"}]}]}})");
+  try {
+    replayPartMarks(other, bad, "marks.json");
+    FAIL() << "an unknown mode was replayed";
+  } catch (const FileError& e) {
+    EXPECT_NE(std::string(e.what()).find("marks.json"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("smear"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(replayPartMarks(other, nlohmann::json::parse("[1]"), "marks.json"), FileError);
+}
+
+}  // namespace
+}  // namespace sagrid::ui

@@ -1,0 +1,95 @@
+#include "ui/app/part_marks_replay.h"
+
+#include "core/common/error.h"
+#include "core/geometry/surface_scene.h"
+#include "ui/app/control_edit.h"
+#include "ui/app/session.h"
+#include "ui/document/control_view.h"
+
+namespace sagrid::ui {
+
+namespace {
+
+Eigen::Vector3f vectorAt(const nlohmann::json& j, const std::string& source) {
+  if (!j.is_array() || j.size() != 3 || !j[0].is_number() || !j[1].is_number() || !j[2].is_number())
+    throw FileError(source, "a stroke's \"at\" must be [x, y, z]");
+  return {j[0].get<float>(), j[1].get<float>(), j[2].get<float>()};
+}
+
+// One stroke of the brush at the surface point nearest `at` (file frame).
+bool stroke(Session& session, const nlohmann::json& s, const std::string& source) {
+  AnnotationDocument& doc = *session.document();
+  const ClosestPoint near = doc.surface().closestPoint(doc.toView(vectorAt(s.at("at"), source)));
+  if (near.triangle < 0) return false;
+  SurfaceHit hit;
+  hit.triangle = near.triangle;
+  hit.position = near.position;
+  hit.normal = near.normal;
+  session.partBrush.radiusCm = s.value("radius_cm", session.partBrush.radiusCm);
+  const std::string mode = s.value("mode", "add");
+  if (mode != "add" && mode != "away" && mode != "replace")
+    throw FileError(source, "a stroke's mode must be add, away or replace, not " + mode);
+  return brushControlPart(session, hit, mode == "away" ? BrushMode::Away
+                                        : mode == "replace" ? BrushMode::Replace
+                                                            : BrushMode::Add);
+}
+
+void setAxis(Session& session, int index, const std::string& axis, const std::string& source) {
+  std::optional<ShownControl> shown = shownControl(*session.document(), index);
+  if (!shown) return;
+  if (axis == "flip") shown->part.axis = -shown->part.axis;
+  else if (axis == "x" || axis == "y" || axis == "z")
+    shown->part.axis = Eigen::Vector3f::Unit(axis[0] - 'x');
+  else throw FileError(source, "an axis must be flip, x, y or z, not " + axis);
+  setControlRecord(session, index, *shown, "axis " + axis);
+}
+
+}  // namespace
+
+PartMarksSummary replayPartMarks(Session& session, const nlohmann::json& marks,
+                                 const std::string& source) {
+  if (!marks.is_object() || !marks.contains("objects") || !marks["objects"].is_object())
+    throw FileError(source, "not a part marks file: {\"objects\": {...}}");
+  PartMarksSummary summary;
+  session.autoPredict = false;
+  for (std::size_t i = 0; i < session.queue().size(); ++i) {
+    session.openEntry(static_cast<int>(i));
+    AnnotationDocument* doc = session.document();
+    if (!doc) continue;
+    const std::string id = doc->meshPath().parent_path().filename().string();
+    const auto object = marks["objects"].find(id);
+    if (object == marks["objects"].end()) continue;
+    ++summary.objects;
+    try {
+      for (const auto& mark : *object) {
+        const int point = mark.at("point").get<int>();
+        const int index = point - 1;
+        const std::string name = id + " point " + std::to_string(point);
+        if (index < 0 || index >= static_cast<int>(doc->points().size()) ||
+            doc->points()[std::size_t(index)].type != "togglebutton") {
+          summary.problems.push_back(name + ": not a toggle button");
+          continue;
+        }
+        doc->select(index);
+        if (mark.value("keep", false)) {
+          const std::optional<ShownControl> shown = shownControl(*doc, index);
+          if (!shown) {
+            summary.problems.push_back(name + ": no part was found to keep");
+            continue;
+          }
+          setControlRecord(session, index, *shown, "part kept");
+        }
+        for (const auto& s : mark.value("strokes", nlohmann::json::array()))
+          if (!stroke(session, s, source)) summary.problems.push_back(name + ": a stroke changed nothing");
+        if (mark.contains("axis")) setAxis(session, index, mark.at("axis").get<std::string>(), source);
+        ++summary.parts;
+      }
+    } catch (const nlohmann::json::exception& e) {
+      throw FileError(source, "object " + id + ": " + e.what());
+    }
+    session.document()->select(-1);
+  }
+  return summary;
+}
+
+}  // namespace sagrid::ui

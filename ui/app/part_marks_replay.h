@@ -1,0 +1,36 @@
+// Control parts a curator marked, replayed through the GUI's own session (issue 42): for each
+// object of the session's queue that the marks name (by its folder, as datasets lay objects out),
+// each listed toggle button point is selected and its control confirmed as found ("keep") or
+// reshaped by brush strokes, as the Points panel's Keep button and the viewport's brush do, then
+// its axis set if given. The marks are written as a person would make them, looking at each part
+// in the GUI; kept in the repository, they make the hand-marked parts reproducible.
+//
+// Marks file (JSON):
+//   {"objects": {"<object folder>": [
+//      {"point": 3, "keep": true},
+//      {"point": 4, "strokes": [{"at": [x, y, z], "radius_cm": 2.5, "mode": "replace"}, ...],
+//       "axis": "flip" | "x" | "y" | "z"}]}}
+// `at` in the mesh file's frame and units (the nearest surface point is clicked); `mode` replace
+// (the brushed surface alone, Alt+click), add (click, the default) or away (Ctrl+click).
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+namespace sagrid::ui {
+
+class Session;
+
+struct PartMarksSummary {
+  std::size_t objects = 0, parts = 0;
+  std::vector<std::string> problems;  // marks that could not be applied, each naming its point
+};
+
+// Throws FileError naming `source` for marks that are not of the form above.
+PartMarksSummary replayPartMarks(Session& session, const nlohmann::json& marks,
+                                 const std::string& source);
+
+}  // namespace sagrid::ui
