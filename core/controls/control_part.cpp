@@ -38,6 +38,10 @@ constexpr float kLeverElongation = 2.2f;
 constexpr float kLiftMinimum = 0.3f;
 // A lever's ends: the vertices within this share of its length from each end.
 constexpr float kLeverEndShare = 0.15f;
+// What a part's vertices touch: the surface within this share of the part's diagonal; and how
+// much the touched normals must agree (the length of their sum per touch) to tell a panel.
+inline constexpr float kContactShare = 0.1f;
+inline constexpr float kContactAgreement = 0.5f;
 // A lever's held end this many times wider than its free end is a hub it turns with.
 constexpr float kHubShare = 2.0f;
 // A part whose faces' normals sum to more than this share of its area is an open sheet facing
@@ -334,6 +338,37 @@ std::optional<Eigen::Vector3f> awayFromHolder(const Surface& s, const std::vecto
   return out.normalized();
 }
 
+// The normal of the panel a part stands on: the surface apart from the part that its vertices
+// touch (within kContactShare of the part's size), each touched triangle's normal turned towards
+// the part and counted once per vertex touching it. None where nothing touches it or the touched
+// normals cancel (a part held all round).
+std::optional<Eigen::Vector3f> standingNormal(const Surface& s, const std::vector<bool>& inPart,
+                                              const std::vector<Eigen::Vector3f>& vertices,
+                                              const Eigen::Vector3f& centre) {
+  if (vertices.empty()) return std::nullopt;
+  Eigen::AlignedBox3f box;
+  for (const auto& v : vertices) box.extend(v);
+  const float touch = std::max(kContactShare * box.diagonal().norm(), 1e-6f * s.diagonal);
+  Eigen::AlignedBox3f near = box;
+  near.min().array() -= touch, near.max().array() += touch;
+  Eigen::Vector3f sum = Eigen::Vector3f::Zero();
+  float count = 0;
+  for (std::size_t t = 0; t < s.valid.size(); ++t) {
+    if (!s.valid[t] || inPart[t]) continue;
+    Eigen::AlignedBox3f triangle;
+    for (int c = 0; c < 3; ++c) triangle.extend(s.corner(t, c));
+    if (!near.intersects(triangle)) continue;
+    Eigen::Vector3f normal = (s.corner(t, 1) - s.corner(t, 0)).cross(s.corner(t, 2) - s.corner(t, 0));
+    if (normal.norm() <= 0) continue;
+    normal.normalize();
+    if (normal.dot(centre - s.centroids[t]) < 0) normal = -normal;
+    for (const auto& v : vertices)
+      if ((s.closestOn(t, v) - v).norm() <= touch) sum += normal, ++count;
+  }
+  if (count == 0 || sum.norm() < kContactAgreement * count) return std::nullopt;
+  return sum.normalized();
+}
+
 // A part's vertices, their principal shape and the way it stands out of what holds it.
 struct PartShape {
   std::vector<Eigen::Vector3f> vertices;
@@ -436,14 +471,17 @@ ControlPart describe(const Surface& s, std::vector<int> triangles, PartOrigin or
     part.motion = ControlMotion::Button;
     part.axis = pressDirection(s, triangles, shape, held);
   } else {
+    // A knob turns about its axis of symmetry out of the panel it stands on; where the panel
+    // cannot be told, out of the nearest surface apart from it.
     part.motion = ControlMotion::Knob;
-    Eigen::Vector3f axis = out;
+    const Eigen::Vector3f standing = standingNormal(s, inPart, vertices, centre).value_or(out);
+    Eigen::Vector3f axis = standing;
     float best = 0.8f;  // the symmetry axis where the shape has one near `out`
     for (int i = 0; i < 3; ++i) {
-      const float c = std::abs(shape.directions.col(i).dot(out));
+      const float c = std::abs(shape.directions.col(i).dot(standing));
       if (c > best) best = c, axis = shape.directions.col(i);
     }
-    part.axis = axis.dot(out) < 0 ? -axis : axis;
+    part.axis = axis.dot(standing) < 0 ? -axis : axis;
     part.axis.normalize();
   }
   part.triangles = std::move(triangles);

@@ -53,6 +53,19 @@ TEST(ControlParts, KnobsOnAPanelTurnAboutTheirAxisOutOfThePanel) {
   }
 }
 
+// A tall knob near a wall: the wall is nearer its middle than the panel under it, but the knob
+// stands on the panel and turns about the panel's normal.
+TEST(ControlParts, AKnobTurnsAboutTheNormalOfThePanelItStandsOnNotTheNearestWall) {
+  Mesh mesh = panel();
+  const auto knob = addPart(mesh, test::box({-0.02f, -0.02f, 0.0f}, {0.02f, 0.02f, 0.06f}), 1);
+  addPart(mesh, test::box({0.029f, -0.1f, 0.0f}, {0.04f, 0.1f, 0.15f}), 0);
+  const ControlParts found = findControlParts(mesh, {{0.0f, 0.0f, 0.06f}});
+  ASSERT_TRUE(found.parts[0]);
+  EXPECT_EQ(found.parts[0]->triangles, knob);
+  EXPECT_EQ(found.parts[0]->motion, ControlMotion::Knob);
+  EXPECT_GT(found.parts[0]->axis.dot(Eigen::Vector3f::UnitZ()), 0.99f);
+}
+
 TEST(ControlParts, WithoutMaterialsTheConnectedComponentIsThePart) {
   Mesh mesh = panel();
   const auto knob = addPart(mesh, test::box({-0.02f, -0.02f, 0.0f}, {0.02f, 0.02f, 0.03f}), 0);
