@@ -6,6 +6,7 @@
 #include "core/controls/control_record.h"
 #include "core/geometry/surface_scene.h"
 #include "ui/app/session.h"
+#include "ui/document/command.h"
 #include "ui/document/control_commands.h"
 
 namespace sagrid::ui {
@@ -26,6 +27,35 @@ void setControlRecord(Session& session, int index, const ShownControl& shown, co
   ControlRecord record{shown.part, shown.drives, /*confirmed=*/true};
   session.execute(std::make_unique<SetControlCommand>(
       index, controlJson(record, session.document()->mesh().fileUp), what));
+}
+
+std::size_t confirmEveryControl(Session& session, int axisOf) {
+  const AnnotationDocument* doc = session.document();
+  if (!doc) return 0;
+  std::optional<ShownControl> model;
+  if (axisOf >= 0) {
+    model = shownControl(*doc, axisOf);
+    if (!model) return 0;
+  }
+  std::vector<std::unique_ptr<Command>> steps;
+  for (int i = 0; i < static_cast<int>(doc->points().size()); ++i) {
+    std::optional<ShownControl> shown = shownControl(*doc, i);
+    if (!shown) continue;
+    if (model) {
+      if (shown->part.motion != model->part.motion) continue;
+      shown->part.axis = model->part.axis;
+    }
+    ControlRecord record{shown->part, shown->drives, /*confirmed=*/true};
+    steps.push_back(std::make_unique<SetControlCommand>(
+        i, controlJson(record, doc->mesh().fileUp), "control of point " + std::to_string(i + 1)));
+  }
+  const std::size_t written = steps.size();
+  if (written > 0)
+    session.execute(std::make_unique<CommandGroup>(
+        model ? "this axis for every " + std::string(toString(model->part.motion))
+              : "every control kept",
+        std::move(steps)));
+  return written;
 }
 
 bool reshapeControlPart(Session& session, int index, std::vector<int> triangles,

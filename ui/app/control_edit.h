@@ -29,6 +29,12 @@ struct PartBrush {
 // Writes `shown` as point `index`'s record, confirmed by the curator; `what` names the step.
 void setControlRecord(Session& session, int index, const ShownControl& shown, const std::string& what);
 
+// One undo step for every toggle button of the open object: each shown control confirmed as it
+// is ("Keep all"), or, with `axisOf` a toggle button's index, each control moving as that one
+// does (knob, lever or button) given its axis too ("This axis for all": a row of knobs shares
+// its panel). Returns how many records were written.
+std::size_t confirmEveryControl(Session& session, int axisOf = -1);
+
 // Gives point `index` (a toggle button) the part of `triangles` (mesh indices); nothing when they
 // are empty or the part's already. Returns whether a command ran.
 bool reshapeControlPart(Session& session, int index, std::vector<int> triangles,

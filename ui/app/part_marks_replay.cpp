@@ -53,7 +53,8 @@ PartMarksSummary replayPartMarks(Session& session, const nlohmann::json& marks,
   PartMarksSummary summary;
   session.autoPredict = false;
   for (std::size_t i = 0; i < session.queue().size(); ++i) {
-    session.openEntry(static_cast<int>(i));
+    if (session.queue().current() != static_cast<int>(i) || !session.document())
+      session.openEntry(static_cast<int>(i));
     AnnotationDocument* doc = session.document();
     if (!doc) continue;
     const std::string id = doc->meshPath().parent_path().filename().string();
@@ -62,6 +63,10 @@ PartMarksSummary replayPartMarks(Session& session, const nlohmann::json& marks,
     ++summary.objects;
     try {
       for (const auto& mark : *object) {
+        if (mark.value("keep_all", false)) {
+          summary.parts += confirmEveryControl(session);
+          continue;
+        }
         const int point = mark.at("point").get<int>();
         const int index = point - 1;
         const std::string name = id + " point " + std::to_string(point);
@@ -82,6 +87,10 @@ PartMarksSummary replayPartMarks(Session& session, const nlohmann::json& marks,
         for (const auto& s : mark.value("strokes", nlohmann::json::array()))
           if (!stroke(session, s, source)) summary.problems.push_back(name + ": a stroke changed nothing");
         if (mark.contains("axis")) setAxis(session, index, mark.at("axis").get<std::string>(), source);
+        if (mark.value("for_all", false)) {
+          summary.parts += confirmEveryControl(session, index);
+          continue;
+        }
         ++summary.parts;
       }
     } catch (const nlohmann::json::exception& e) {

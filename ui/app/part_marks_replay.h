@@ -2,14 +2,17 @@
 // object of the session's queue that the marks name (by its folder, as datasets lay objects out),
 // each listed toggle button point is selected and its control confirmed as found ("keep") or
 // reshaped by brush strokes, as the Points panel's Keep button and the viewport's brush do, then
-// its axis set if given. The marks are written as a person would make them, looking at each part
+// its axis set if given; or every control is kept, or given one's axis, in one step. The marks are written as a person would make them, looking at each part
 // in the GUI; kept in the repository, they make the hand-marked parts reproducible.
 //
 // Marks file (JSON):
 //   {"objects": {"<object folder>": [
 //      {"point": 3, "keep": true},
 //      {"point": 4, "strokes": [{"at": [x, y, z], "radius_cm": 2.5, "mode": "replace"}, ...],
-//       "axis": "flip" | "x" | "y" | "z"}]}}
+//       "axis": "flip" | "x" | "y" | "z"},
+//      {"keep_all": true},                               every control kept as shown (Keep all)
+//      {"point": 5, "axis": "z", "for_all": true}]}}     its axis, then This axis for all
+// (a knob row shares its panel: every control moving as point 5 does gets its axis).
 // `at` in the mesh file's frame and units (the nearest surface point is clicked); `mode` replace
 // (the brushed surface alone, Alt+click), add (click, the default) or away (Ctrl+click).
 #pragma once

@@ -122,8 +122,17 @@ void drawControlEditor(Session& session, int index) {
   axisButtons(session, index, *shown);
   partButtons(session, index, *shown);
   drivesCombo(session, index, *shown);
-  if (!shown->recorded && ImGui::Button("Keep this part"))
-    setControlRecord(session, index, *shown, "part kept");
+  if (!shown->recorded) {
+    if (ImGui::Button("Keep this part")) setControlRecord(session, index, *shown, "part kept");
+    ImGui::SameLine();
+  }
+  if (ImGui::Button("Keep all")) confirmEveryControl(session);
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("Every toggle button's part and motion kept as shown (one step)");
+  ImGui::SameLine();
+  if (ImGui::Button("This axis for all")) confirmEveryControl(session, index);
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("Every control that moves as this one does gets its axis (one step)");
   if (shown->recorded) {
     if (ImGui::Button("Find the part again"))
       session.execute(std::make_unique<SetControlCommand>(index, nlohmann::json(), "found again"));

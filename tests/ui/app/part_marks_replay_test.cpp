@@ -10,6 +10,7 @@
 #include "core/common/error.h"
 #include "core/controls/control_record.h"
 #include "support/test_paths.h"
+#include "ui/app/control_edit.h"
 #include "ui/app/session.h"
 
 namespace sagrid::ui {
@@ -96,6 +97,36 @@ TEST(PartMarksReplay, KeptAndBrushedPartsEndConfirmedOnDiskWithTheirAxes) {
     EXPECT_NE(std::string(e.what()).find("smear"), std::string::npos) << e.what();
   }
   EXPECT_THROW(replayPartMarks(other, nlohmann::json::parse("[1]"), "marks.json"), FileError);
+}
+
+// Keep all and This axis for all: every control of the object (that moves as the given one does)
+// in one undo step, as the Points panel's buttons do.
+TEST(PartMarksReplay, KeepAllAndOneAxisForAllAreOneStepEach) {
+  const fs::path dir = test::freshTempDir();
+  writeObject(dir / "queue" / "a");
+  Session session;
+  session.autoPredict = false;
+  session.openPaths({dir / "queue"});
+  const auto marks = nlohmann::json::parse(R"({"objects": {"a": [{"keep_all": true}]}})");
+  const PartMarksSummary kept = replayPartMarks(session, marks, "marks.json");
+  EXPECT_TRUE(kept.problems.empty());
+  const auto first = recordOf(dir / "queue" / "a", 0);
+  ASSERT_TRUE(first);
+  EXPECT_TRUE(first->confirmed);
+  const std::size_t steps = session.document()->historySize();
+  EXPECT_EQ(kept.parts, 2u);  // both toggle buttons show a control
+  // Those moving as point 1 does (not the corner's disc), in one more step.
+  const std::size_t alike = confirmEveryControl(session, 0);
+  EXPECT_GE(alike, 1u);
+  EXPECT_LE(alike, kept.parts);
+  EXPECT_EQ(session.document()->historySize(), steps + 1);
+  session.undo();
+  session.undo();
+  EXPECT_FALSE(recordOf(dir / "queue" / "a", 0));  // Keep all undone in one step
+  const auto axis = nlohmann::json::parse(
+      R"({"objects": {"a": [{"point": 1, "axis": "y", "for_all": true}]}})");
+  replayPartMarks(session, axis, "marks.json");
+  EXPECT_TRUE(recordOf(dir / "queue" / "a", 0)->part.axis.isApprox(Eigen::Vector3f::UnitY()));
 }
 
 }  // namespace
