@@ -65,9 +65,10 @@ void setupEval(CLI::App& root) {
                   "logged and by a keystroke-level model); writes OUT/curation.md and .json");
   cmd->add_flag("--parts", o->parts,
                "Instead of models: the control parts annotate finds at the curated toggle points "
-               "against the parts the curator confirmed in the GUI (kept, or marked with the "
-               "brush, Grow, Shrink) in --data's labels: triangle IoU by area and axis angle per "
-               "part; writes OUT/parts.md and .json");
+               "against the controls the curator confirmed in the GUI (kept, reshaped with the "
+               "brush, Grow or Shrink, or given an axis, motion, pivot or burner) in --data's "
+               "labels: triangle IoU by area and axis angle per part; writes OUT/parts.md and "
+               ".json");
   cmd->add_option("--models", o->models, "Model folder (default resources/models)");
   cmd->add_option("--out", o->out, "Report folder (default eval)");
   cmd->add_option("--compare", o->compare,

@@ -72,6 +72,9 @@ void setupReplayCuration(CLI::App& root) {
                 "A category switch only drops the old points (the GUI before it predicted again)");
   cmd->callback([o] {
     if (!o->partMarks.empty()) {
+      if (!o->truth.empty() || !o->predictions.empty())
+        throw sagrid::InvalidArgument("replay-curation: --part-marks replays marks alone; give "
+                                      "--truth and --predictions in a run of their own");
       replayPartMarks(*o);
       return;
     }

@@ -49,21 +49,21 @@ fs::path writeModelsWithScorer(const fs::path& from, const fs::path& out,
   return file;
 }
 
-// A decision learned from candidates of other networks than `models`' would decide on fields it
-// never saw: refused, naming the model and what to run.
-void refuseOtherWeights(const sagrid::PointScorer& scorer, const fs::path& models) {
-  std::map<std::string, std::string> cardWeights;
-  for (const auto& file : sagrid::model::listModelCards(models)) {
-    const auto card = sagrid::model::readModelCard(file);
-    cardWeights[card.name] = card.weightsIdentity();
-  }
-  const auto stale = sagrid::decisionsOfOtherWeights(scorer, cardWeights);
-  if (!stale.empty())
+// A decision learned from (or judged on) candidates of other networks than `models`' would decide
+// on fields it never saw: refused before training, naming the object, the model and what to run.
+// Candidate files written before the weights were recorded pass.
+void refuseOtherWeights(const std::vector<sagrid::CandidateSet>& sets, const fs::path& models) {
+  const std::map<std::string, std::string> cardWeights = sagrid::model::cardWeights(models);
+  for (const auto& set : sets) {
+    const auto card = cardWeights.find(set.model);
+    if (set.networkWeights.empty() || card == cardWeights.end() || set.networkWeights == card->second)
+      continue;
     throw sagrid::InvalidArgument(
-        "the candidates of " + stale.front().model + " were made by other weights (" +
-        stale.front().learnedFrom.substr(0, 8) + ") than its card in " + models.string() + " (" +
-        stale.front().card.substr(0, 8) + "): make them again with `sagrid scorer candidates "
-        "--models " + models.string() + "`");
+        "the candidates of " + set.model + " on " + set.object + " were made by other weights (" +
+        set.networkWeights.substr(0, 8) + ") than its card in " + models.string() + " (" +
+        card->second.substr(0, 8) + "): make them again with `sagrid scorer candidates --models " +
+        models.string() + "`");
+  }
 }
 
 // The options `cv` and `train` share: the candidate files and how the decision is fitted.
@@ -195,12 +195,13 @@ void setupScorer(CLI::App& root) {
     std::vector<const sagrid::CandidateSet*> all;
     for (const auto& s : sets) all.push_back(&s);
     const fs::path from = l->models.empty() ? sagrid::defaultModelsDir() : fs::path(l->models);
-    sagrid::PointScorer fresh = sagrid::trainPointScorer(all, l->training);
-    refuseOtherWeights(fresh, from);
+    const auto guardSets = readAll(l->guard);
+    refuseOtherWeights(sets, from);
+    refuseOtherWeights(guardSets, from);
     writeModelsWithScorer(from, l->out,
-                          sagrid::judgeScorerUpdate(std::move(fresh),
+                          sagrid::judgeScorerUpdate(sagrid::trainPointScorer(all, l->training),
                                                     sagrid::readPointScorer(from),
-                                                    readAll(l->guard), all));
+                                                    guardSets, all));
   });
 
   struct UpdateOptions {

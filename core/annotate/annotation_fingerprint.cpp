@@ -14,7 +14,7 @@ namespace fs = std::filesystem;
 
 nlohmann::json modelShas(const ModelSet& models, const fs::path& modelsDir) {
   nlohmann::json shas = nlohmann::json::object();
-  for (const auto& m : models.models()) shas[m.card().name] = m.card().weightsIdentity();
+  for (const auto& [name, weights] : models.weightsByModel()) shas[name] = weights;
   for (const char* file : {kCategoryClassifierFile, kConfidenceFile, kPointScorerFile}) {
     std::error_code ec;
     if (fs::is_regular_file(modelsDir / file, ec))

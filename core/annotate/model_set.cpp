@@ -31,9 +31,14 @@ ModelSet ModelSet::load(const std::filesystem::path& directory) {
   return set;
 }
 
+std::map<std::string, std::string> ModelSet::weightsByModel() const {
+  std::map<std::string, std::string> out;
+  for (const auto& m : m_models) out[m.card().name] = m.card().weightsIdentity();
+  return out;
+}
+
 void ModelSet::setPointScorer(PointScorer scorer, const std::filesystem::path& file) {
-  std::map<std::string, std::string> cardWeights;
-  for (const auto& m : m_models) cardWeights[m.card().name] = m.card().weightsIdentity();
+  const std::map<std::string, std::string> cardWeights = weightsByModel();
   for (const auto& [name, decision] : scorer.byModel)
     if (!cardWeights.count(name))
       throw ModelError(file.string() + ": the point scorer decides for model " + name +
@@ -43,7 +48,7 @@ void ModelSet::setPointScorer(PointScorer scorer, const std::filesystem::path& f
     logger()->warn(
         "{}: the point decision of {} learned from the candidates of other weights ({}) than "
         "the card's ({}); it still decides, but may no longer fit: retrain it with `sagrid "
-        "scorer update --models {}`",
+        "scorer update --models {} --data CURATED --out DIR` (or the Train panel)",
         file.string(), stale.model, stale.learnedFrom.substr(0, 8), stale.card.substr(0, 8),
         file.parent_path().string());
   m_scorer = std::move(scorer);

@@ -10,6 +10,7 @@
 #pragma once
 
 #include <filesystem>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -38,6 +39,8 @@ class ModelSet {
   // Models of a category in card-name order; throws InvalidArgument when there are none.
   std::vector<const model::AffordanceModel*> forCategory(const std::string& category) const;
   const std::vector<model::AffordanceModel>& models() const { return m_models; }
+  // Model name -> its card's weights identity (ModelCard::weightsIdentity).
+  std::map<std::string, std::string> weightsByModel() const;
 
   // Categories ranked by similarity of `descriptor` to their training means, best first.
   std::vector<CategoryScore> rankCategories(const std::vector<float>& descriptor) const;

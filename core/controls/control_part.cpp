@@ -40,8 +40,8 @@ constexpr float kLiftMinimum = 0.3f;
 constexpr float kLeverEndShare = 0.15f;
 // What a part's vertices touch: the surface within this share of the part's diagonal; and how
 // much the touched normals must agree (the length of their sum per touch) to tell a panel.
-inline constexpr float kContactShare = 0.1f;
-inline constexpr float kContactAgreement = 0.5f;
+constexpr float kContactShare = 0.1f;
+constexpr float kContactAgreement = 0.5f;
 // A lever's held end this many times wider than its free end is a hub it turns with.
 constexpr float kHubShare = 2.0f;
 // A part whose faces' normals sum to more than this share of its area is an open sheet facing
@@ -476,7 +476,7 @@ ControlPart describe(const Surface& s, std::vector<int> triangles, PartOrigin or
     part.motion = ControlMotion::Knob;
     const Eigen::Vector3f standing = standingNormal(s, inPart, vertices, centre).value_or(out);
     Eigen::Vector3f axis = standing;
-    float best = 0.8f;  // the symmetry axis where the shape has one near `out`
+    float best = 0.8f;  // the symmetry axis where the shape has one near `standing`
     for (int i = 0; i < 3; ++i) {
       const float c = std::abs(shape.directions.col(i).dot(standing));
       if (c > best) best = c, axis = shape.directions.col(i);

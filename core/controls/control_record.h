@@ -6,7 +6,7 @@
 //               "drives": k,   a stove knob: the k-th heat source point (0-based), -1 none
 //               "confirmed": true}   set by the curator in the GUI (kept, reshaped or turned)
 // `joint` is written for readers (it follows from `motion`); `drives` is absent where nothing was
-// paired (sinks), `confirmed` where annotate wrote the record. Written by annotate, changed by the
+// paired (sinks), `confirmed` absent where annotate wrote the record. Written by annotate, changed by the
 // curator in the GUI, read by the exports; `sagrid eval --parts` measures found parts against the
 // confirmed ones.
 #pragma once

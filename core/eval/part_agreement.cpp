@@ -1,6 +1,7 @@
 #include "core/eval/part_agreement.h"
 
 #include <algorithm>
+#include <iterator>
 #include <cmath>
 #include <sstream>
 
@@ -14,24 +15,10 @@ namespace sagrid {
 
 namespace {
 
-std::vector<double> triangleAreas(const Mesh& mesh) {
-  std::vector<double> areas(mesh.triangles.size(), 0.0);
-  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
-    const Eigen::Vector3i& tri = mesh.triangles[t];
-    if ((tri.array() < 0).any() || (tri.array() >= static_cast<int>(mesh.positions.size())).any())
-      continue;
-    const Eigen::Vector3f& a = mesh.positions[std::size_t(tri[0])];
-    areas[t] = 0.5 * (mesh.positions[std::size_t(tri[1])] - a)
-                         .cross(mesh.positions[std::size_t(tri[2])] - a)
-                         .norm();
-  }
-  return areas;
-}
-
 // Both sorted.
-double areaIou(const std::vector<int>& a, const std::vector<int>& b, const std::vector<double>& area) {
+double areaIou(const std::vector<int>& a, const std::vector<int>& b, const std::vector<float>& area) {
   const auto areaOf = [&](int t) {
-    return t >= 0 && static_cast<std::size_t>(t) < area.size() ? area[std::size_t(t)] : 0.0;
+    return t >= 0 && static_cast<std::size_t>(t) < area.size() ? double(area[std::size_t(t)]) : 0.0;
   };
   std::vector<int> both, either;
   std::set_intersection(a.begin(), a.end(), b.begin(), b.end(), std::back_inserter(both));
@@ -58,19 +45,19 @@ PartAgreementReport measurePartAgreement(const std::vector<DatasetEntry>& entrie
       const UpAxis up = upAxisOrZ(labels.object.up);
       std::vector<std::size_t> toggles;
       std::vector<std::optional<ControlRecord>> records;
-      bool anyMarked = false;
+      bool anyConfirmed = false;
       for (std::size_t i = 0; i < labels.affordances.size(); ++i) {
         if (labels.affordances[i].type != "togglebutton") continue;
         toggles.push_back(i);
         records.push_back(readControlRecord(labels.affordances[i], up, entry.labels));
-        anyMarked = anyMarked || (records.back() && records.back()->confirmed);
+        anyConfirmed = anyConfirmed || (records.back() && records.back()->confirmed);
       }
-      if (!anyMarked) continue;
+      if (!anyConfirmed) continue;
       const Mesh mesh = importMesh(entry.mesh, ImportOptions(up));
       std::vector<Eigen::Vector3f> points;
       for (std::size_t i : toggles) points.push_back(fileToZUp(labels.affordances[i].position, up));
       const ControlParts found = findControlParts(mesh, points);
-      const std::vector<double> area = triangleAreas(mesh);
+      const std::vector<float> area = triangleAreas(mesh);
       ++report.objects;
       for (std::size_t k = 0; k < toggles.size(); ++k) {
         if (!records[k] || !records[k]->confirmed) continue;
@@ -124,7 +111,7 @@ nlohmann::json toJson(const PartAgreementReport& r) {
     points.push_back({{"object", a.object}, {"point", a.point}, {"motion", a.motion},
                       {"found", a.found}, {"iou", a.iou}, {"axis_degrees", a.axisDegrees}});
   return {{"objects", r.objects},
-          {"marked_parts", r.points.size()},
+          {"confirmed_parts", r.points.size()},
           {"mean_iou", r.meanIou},
           {"share_iou_at_least_0_8", r.shareIouAtLeast08},
           {"mean_axis_degrees", r.meanAxisDegrees},

@@ -1,6 +1,7 @@
 // How well the control parts annotate finds agree with the parts a curator marked (issue 42): for
 // every toggle button point whose labels.json control the curator confirmed in the GUI (kept as
-// found, or reshaped with the brush, Grow or Shrink; control_record.h), the part findControlParts
+// found, reshaped with the brush, Grow or Shrink, or given an axis, motion, pivot or burner;
+// control_record.h), the part findControlParts
 // finds at the object's toggle points (as annotate and
 // the exports do, every toggle point of the object told apart) against the marked one: the
 // triangle IoU by area and the angle between their axes (as lines: a knob turned either way is

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 
 #include "core/common/error.h"
 #include "core/controls/control_record.h"
@@ -88,18 +89,8 @@ ControlSplit splitControls(const ObjectLabels& labels, const Mesh& mesh, double 
   if (!allRecorded) found = findControlParts(mesh, positions);
   const float scale = static_cast<float>(metersPerUnit);
 
-  float totalArea = 0;
-  std::vector<float> areas(mesh.triangles.size(), 0.0f);
-  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
-    const Eigen::Vector3i& tri = mesh.triangles[t];
-    if ((tri.array() < 0).any() || (tri.array() >= static_cast<int>(mesh.positions.size())).any())
-      continue;
-    const auto& a = mesh.positions[static_cast<std::size_t>(tri[0])];
-    areas[t] = 0.5f * (mesh.positions[static_cast<std::size_t>(tri[1])] - a)
-                          .cross(mesh.positions[static_cast<std::size_t>(tri[2])] - a)
-                          .norm();
-    totalArea += areas[t];
-  }
+  const std::vector<float> areas = triangleAreas(mesh);
+  const float totalArea = std::accumulate(areas.begin(), areas.end(), 0.0f);
 
   for (std::size_t k = 0; k < toggles.size(); ++k) {
     const std::size_t index = toggles[k];

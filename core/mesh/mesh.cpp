@@ -54,6 +54,20 @@ Eigen::Vector3f Mesh::albedo(int tri, float u, float v) const {
   return color;
 }
 
+std::vector<float> triangleAreas(const Mesh& mesh) {
+  std::vector<float> areas(mesh.triangles.size(), 0.0f);
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+    const Eigen::Vector3i& tri = mesh.triangles[t];
+    if ((tri.array() < 0).any() || (tri.array() >= static_cast<int>(mesh.positions.size())).any())
+      continue;
+    const Eigen::Vector3f& a = mesh.positions[static_cast<std::size_t>(tri[0])];
+    areas[t] = 0.5f * (mesh.positions[static_cast<std::size_t>(tri[1])] - a)
+                          .cross(mesh.positions[static_cast<std::size_t>(tri[2])] - a)
+                          .norm();
+  }
+  return areas;
+}
+
 void Mesh::computeVertexNormals() {
   normals.assign(positions.size(), Eigen::Vector3f::Zero());
   for (const auto& t : triangles) {

@@ -71,6 +71,9 @@ struct Mesh {
   void append(const Mesh& part);
 };
 
+// The area of each triangle (0 for one with a corner the mesh lacks).
+std::vector<float> triangleAreas(const Mesh& mesh);
+
 // Converts between the file's frame and SAGrid's z-up frame with a proper rotation (det +1) that
 // takes the file's up axis to +z. A y-up file (glTF) maps (x, y, z)_file -> (x, -z, y)_zup, a
 // rotation of +90 degrees about x; -y: -90 about x; +x: -90 about y; -x: +90 about y; -z: 180

@@ -304,4 +304,13 @@ std::vector<fs::path> listModelCards(const fs::path& directory) {
   return cards;
 }
 
+std::map<std::string, std::string> cardWeights(const fs::path& directory) {
+  std::map<std::string, std::string> out;
+  for (const auto& file : listModelCards(directory)) {
+    const ModelCard card = readModelCard(file);
+    out[card.name] = card.weightsIdentity();
+  }
+  return out;
+}
+
 }  // namespace sagrid::model

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <filesystem>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
@@ -90,5 +91,8 @@ void writeModelCard(const std::filesystem::path& cardFile, const ModelCard& card
 // FileError when the directory is missing, a card is invalid or two cards name the same model,
 // ModelError when it holds no cards.
 std::vector<std::filesystem::path> listModelCards(const std::filesystem::path& directory);
+
+// Model name -> ModelCard::weightsIdentity() of every card in a directory (as listModelCards).
+std::map<std::string, std::string> cardWeights(const std::filesystem::path& directory);
 
 }  // namespace sagrid::model

@@ -1,5 +1,6 @@
 #include "ui/app/control_edit.h"
 
+#include <algorithm>
 #include <memory>
 
 #include "core/controls/control_part_edit.h"
@@ -67,6 +68,11 @@ bool reshapeControlPart(Session& session, int index, std::vector<int> triangles,
   shown->part = describeControlPart(doc->mesh(), std::move(triangles), PartOrigin::Marked);
   setControlRecord(session, index, *shown, what);
   return true;
+}
+
+bool brushApplies(const Session& session) {
+  const AnnotationDocument* doc = session.document();
+  return doc && controlToEdit(*doc, doc->selected()).has_value();
 }
 
 bool brushControlPart(Session& session, const SurfaceHit& hit, BrushMode mode) {

@@ -43,6 +43,9 @@ bool reshapeControlPart(Session& session, int index, std::vector<int> triangles,
 // A click adds the brushed surface, Ctrl+click takes it away, Alt+click makes it the whole part.
 enum class BrushMode { Add, Away, Replace };
 
+// Whether a click of the armed brush reshapes something: a toggle button is selected.
+bool brushApplies(const Session& session);
+
 // The brush at `hit` (on the open document's surface) on the selected point's part. False when
 // no toggle button is selected or nothing changed.
 bool brushControlPart(Session& session, const SurfaceHit& hit, BrushMode mode);

@@ -1,5 +1,8 @@
 #include "ui/app/part_marks_replay.h"
 
+#include <cmath>
+#include <set>
+
 #include "core/common/error.h"
 #include "core/geometry/surface_scene.h"
 #include "ui/app/control_edit.h"
@@ -16,32 +19,37 @@ Eigen::Vector3f vectorAt(const nlohmann::json& j, const std::string& source) {
   return {j[0].get<float>(), j[1].get<float>(), j[2].get<float>()};
 }
 
-// One stroke of the brush at the surface point nearest `at` (file frame).
-bool stroke(Session& session, const nlohmann::json& s, const std::string& source) {
+// One stroke of the brush at the surface point nearest `at` (file frame); `where` names the
+// object and point for errors.
+bool stroke(Session& session, const nlohmann::json& s, const std::string& source, const std::string& where) {
   AnnotationDocument& doc = *session.document();
-  const ClosestPoint near = doc.surface().closestPoint(doc.toView(vectorAt(s.at("at"), source)));
+  const ClosestPoint near = doc.surface().closestPoint(doc.toView(vectorAt(s.at("at"), source + ": " + where)));
   if (near.triangle < 0) return false;
   SurfaceHit hit;
   hit.triangle = near.triangle;
   hit.position = near.position;
   hit.normal = near.normal;
-  session.partBrush.radiusCm = s.value("radius_cm", session.partBrush.radiusCm);
+  const double radius = s.value("radius_cm", static_cast<double>(PartBrush{}.radiusCm));
+  if (!std::isfinite(radius) || radius <= 0)
+    throw FileError(source, where + ": a stroke's radius_cm must be a number above 0");
+  session.partBrush.radiusCm = static_cast<float>(radius);
   const std::string mode = s.value("mode", "add");
   if (mode != "add" && mode != "away" && mode != "replace")
-    throw FileError(source, "a stroke's mode must be add, away or replace, not " + mode);
+    throw FileError(source, where + ": a stroke's mode must be add, away or replace, not " + mode);
   return brushControlPart(session, hit, mode == "away" ? BrushMode::Away
                                         : mode == "replace" ? BrushMode::Replace
                                                             : BrushMode::Add);
 }
 
-void setAxis(Session& session, int index, const std::string& axis, const std::string& source) {
+bool setAxis(Session& session, int index, const std::string& axis, const std::string& source) {
   std::optional<ShownControl> shown = shownControl(*session.document(), index);
-  if (!shown) return;
+  if (!shown) return false;
   if (axis == "flip") shown->part.axis = -shown->part.axis;
   else if (axis == "x" || axis == "y" || axis == "z")
     shown->part.axis = Eigen::Vector3f::Unit(axis[0] - 'x');
   else throw FileError(source, "an axis must be flip, x, y or z, not " + axis);
   setControlRecord(session, index, *shown, "axis " + axis);
+  return true;
 }
 
 }  // namespace
@@ -52,6 +60,8 @@ PartMarksSummary replayPartMarks(Session& session, const nlohmann::json& marks,
     throw FileError(source, "not a part marks file: {\"objects\": {...}}");
   PartMarksSummary summary;
   session.autoPredict = false;
+  std::set<std::string> unseen;
+  for (const auto& [id, marksOfObject] : marks["objects"].items()) unseen.insert(id);
   for (std::size_t i = 0; i < session.queue().size(); ++i) {
     if (session.queue().current() != static_cast<int>(i) || !session.document())
       session.openEntry(static_cast<int>(i));
@@ -60,6 +70,7 @@ PartMarksSummary replayPartMarks(Session& session, const nlohmann::json& marks,
     const std::string id = doc->meshPath().parent_path().filename().string();
     const auto object = marks["objects"].find(id);
     if (object == marks["objects"].end()) continue;
+    unseen.erase(id);
     ++summary.objects;
     try {
       for (const auto& mark : *object) {
@@ -67,6 +78,8 @@ PartMarksSummary replayPartMarks(Session& session, const nlohmann::json& marks,
           summary.parts += confirmEveryControl(session);
           continue;
         }
+        if (!mark.contains("point") || !mark.at("point").is_number_integer())
+          throw FileError(source, "object " + id + ": a mark needs \"point\", a whole number");
         const int point = mark.at("point").get<int>();
         const int index = point - 1;
         const std::string name = id + " point " + std::to_string(point);
@@ -85,10 +98,17 @@ PartMarksSummary replayPartMarks(Session& session, const nlohmann::json& marks,
           setControlRecord(session, index, *shown, "part kept");
         }
         for (const auto& s : mark.value("strokes", nlohmann::json::array()))
-          if (!stroke(session, s, source)) summary.problems.push_back(name + ": a stroke changed nothing");
-        if (mark.contains("axis")) setAxis(session, index, mark.at("axis").get<std::string>(), source);
+          if (!stroke(session, s, source, name))
+            summary.problems.push_back(name + ": a stroke changed nothing (or would empty the part)");
+        if (mark.contains("axis") &&
+            !setAxis(session, index, mark.at("axis").get<std::string>(), source)) {
+          summary.problems.push_back(name + ": no part to give the axis");
+          continue;
+        }
         if (mark.value("for_all", false)) {
-          summary.parts += confirmEveryControl(session, index);
+          const std::size_t written = confirmEveryControl(session, index);
+          if (written == 0) summary.problems.push_back(name + ": no control to give its axis to");
+          summary.parts += written;
           continue;
         }
         ++summary.parts;
@@ -98,6 +118,8 @@ PartMarksSummary replayPartMarks(Session& session, const nlohmann::json& marks,
     }
     session.document()->select(-1);
   }
+  for (const std::string& id : unseen)
+    summary.problems.push_back(id + ": no such object among those opened");
   return summary;
 }
 

@@ -13,8 +13,10 @@
 //      {"keep_all": true},                               every control kept as shown (Keep all)
 //      {"point": 5, "axis": "z", "for_all": true}]}}     its axis, then This axis for all
 // (a knob row shares its panel: every control moving as point 5 does gets its axis).
-// `at` in the mesh file's frame and units (the nearest surface point is clicked); `mode` replace
-// (the brushed surface alone, Alt+click), add (click, the default) or away (Ctrl+click).
+// `at` in the mesh file's frame and units (the nearest surface point is clicked); `radius_cm` the
+// brush's (default 1.5); `mode` replace (the brushed surface alone, Alt+click), add (click, the
+// default) or away (Ctrl+click). The axis letters are the GUI's view axes (z up, as its axis
+// buttons), not the file's: in a y-up file "z" is the file's y.
 #pragma once
 
 #include <cstddef>
@@ -29,7 +31,8 @@ class Session;
 
 struct PartMarksSummary {
   std::size_t objects = 0, parts = 0;
-  std::vector<std::string> problems;  // marks that could not be applied, each naming its point
+  // Marks that could not be applied, each naming its object and point; objects not opened.
+  std::vector<std::string> problems;
 };
 
 // Throws FileError naming `source` for marks that are not of the form above.

@@ -127,7 +127,7 @@ void ViewportInput::release(const InputEvent&, Session& session) {
                                                        normalFile.normalized()));
   } else if (m_gesture == Gesture::Click && doc) {
     const bool add = (m_mods & GLFW_MOD_SHIFT) || session.addModeArmed;
-    if (session.partBrush.armed && !add && doc->selected() >= 0) {
+    if (session.partBrush.armed && !add && brushApplies(session)) {
       // The brush keeps the selection: a click on the surface reshapes the selected part.
       if (auto hit = surfaceUnder(session, m_x, m_y))
         brushControlPart(session, *hit,

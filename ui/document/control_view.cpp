@@ -50,7 +50,7 @@ std::optional<ShownControl> controlOf(const AnnotationDocument& document, int in
   if (point.type != "togglebutton") return std::nullopt;
   try {
     if (auto record = readControlRecord(point, document.mesh().fileUp, document.labelsPath()))
-      return ShownControl{record->part, true, record->drives, {}};
+      return ShownControl{record->part, true, record->confirmed, record->drives, {}};
   } catch (const Error&) {
     // A malformed record: shown as found, and the exports will say what is wrong with it.
   }
@@ -58,7 +58,7 @@ std::optional<ShownControl> controlOf(const AnnotationDocument& document, int in
   for (std::size_t k = 0; k < cache.toggles.size(); ++k) {
     if (cache.toggles[k] != index) continue;
     if (!cache.found.parts[k]) return std::nullopt;
-    return ShownControl{*cache.found.parts[k], false, std::nullopt, cache.found.warnings[k]};
+    return ShownControl{*cache.found.parts[k], false, false, std::nullopt, cache.found.warnings[k]};
   }
   return std::nullopt;
 }

@@ -15,6 +15,7 @@ class AnnotationDocument;
 struct ShownControl {
   ControlPart part;            // z-up mesh frame
   bool recorded = false;       // from labels.json; else found now
+  bool confirmed = false;      // the record is the curator's (control_record.h)
   std::optional<int> drives;   // the record's burner (an index among the heat sources)
   std::string warning;         // why a found one is a disc or missing
 };

@@ -115,14 +115,14 @@ void drawControlEditor(Session& session, int index) {
   }
   ImGui::Text("%s, %zu triangles (%s)%s", toString(shown->part.motion),
               shown->part.triangles.size(), toString(shown->part.origin),
-              shown->recorded ? "" : ", found now");
+              shown->confirmed ? ", confirmed" : shown->recorded ? "" : ", found now");
   if (!shown->warning.empty()) ImGui::TextWrapped("%s", shown->warning.c_str());
   motionCombo(session, index, *shown);
   ImGui::SameLine();
   axisButtons(session, index, *shown);
   partButtons(session, index, *shown);
   drivesCombo(session, index, *shown);
-  if (!shown->recorded) {
+  if (!shown->confirmed) {
     if (ImGui::Button("Keep this part")) setControlRecord(session, index, *shown, "part kept");
     ImGui::SameLine();
   }

@@ -95,7 +95,7 @@ TEST(PartAgreement, AMarkedPartEqualToTheFoundOneAgreesAndAHalfKnobDoesNot) {
   EXPECT_DOUBLE_EQ(r.shareAxisWithin10, 0.5);
   EXPECT_NE(partAgreementMarkdown(r).find("| marked | 2 | knob |"), std::string::npos)
       << partAgreementMarkdown(r);
-  EXPECT_EQ(toJson(r).at("marked_parts"), 2);
+  EXPECT_EQ(toJson(r).at("confirmed_parts"), 2);
 
   // An object that cannot be read is named, not thrown.
   std::ofstream(root / "unmarked" / "labels.json") << "{ not json";

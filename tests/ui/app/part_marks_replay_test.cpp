@@ -54,16 +54,18 @@ TEST(PartMarksReplay, KeptAndBrushedPartsEndConfirmedOnDiskWithTheirAxes) {
   const auto marks = nlohmann::json::parse(R"({"objects": {
     "a": [{"point": 1, "keep": true, "axis": "x"}],
     "b": [{"point": 1, "strokes": [{"at": [0.25, -0.25, 0.2], "radius_cm": 1, "mode": "replace"}]},
-          {"point": 2, "keep": true}, {"point": 3, "strokes": [{"at": [-0.45, 0.45, 0], "radius_cm": 1}]}]}})");
+          {"point": 2, "keep": true}, {"point": 3, "strokes": [{"at": [-0.45, 0.45, 0], "radius_cm": 1}]}],
+    "nowhere": [{"point": 1, "keep": true}]}})");
   Session session;
   session.autoPredict = false;
   session.setCurationLog(dir / "curation.jsonl");
   session.openPaths({dir / "queue"});
   const PartMarksSummary summary = replayPartMarks(session, marks, "marks.json");
   EXPECT_EQ(summary.objects, 2u);
-  // Point 2 of b is a heat source: named, not marked.
-  ASSERT_EQ(summary.problems.size(), 1u);
+  // Point 2 of b is a heat source, "nowhere" was not opened: both named, nothing marked.
+  ASSERT_EQ(summary.problems.size(), 2u);
   EXPECT_NE(summary.problems[0].find("b point 2"), std::string::npos) << summary.problems[0];
+  EXPECT_NE(summary.problems[1].find("nowhere: no such object"), std::string::npos) << summary.problems[1];
 
   const auto kept = recordOf(dir / "queue" / "a", 0);
   ASSERT_TRUE(kept);
@@ -97,6 +99,20 @@ TEST(PartMarksReplay, KeptAndBrushedPartsEndConfirmedOnDiskWithTheirAxes) {
     EXPECT_NE(std::string(e.what()).find("smear"), std::string::npos) << e.what();
   }
   EXPECT_THROW(replayPartMarks(other, nlohmann::json::parse("[1]"), "marks.json"), FileError);
+  // A radius that is no radius, a point that is no whole number: named with the object.
+  const std::vector<std::pair<const char*, const char*>> malformed{
+      {R"({"objects": {"a": [{"point": 1, "strokes": [{"at": [0.25, -0.25, 0.2], "radius_cm": -1}]}]}})",
+       "a point 1: a stroke's radius_cm"},
+      {R"({"objects": {"a": [{"point": 1.5, "keep": true}]}})", "object a: a mark needs \"point\""}};
+  for (const auto& [text, message] : malformed) {
+    try {
+      replayPartMarks(other, nlohmann::json::parse(text), "marks.json");
+      ADD_FAILURE() << "accepted: " << text;
+    } catch (const FileError& e) {
+      EXPECT_NE(std::string(e.what()).find(message), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find("marks.json"), std::string::npos) << e.what();
+    }
+  }
 }
 
 // Keep all and This axis for all: every control of the object (that moves as the given one does)
