@@ -74,9 +74,14 @@ void ViewportInput::press(const InputEvent& e, Session& session) {
   m_pressX = m_x, m_pressY = m_y;
   m_moved = false;
   if (e.button == GLFW_MOUSE_BUTTON_LEFT) {
-    const int marker = (e.mods & GLFW_MOD_SHIFT) || session.addModeArmed
-                           ? -1
-                           : pickMarker(session, m_x, m_y, kPickRadius);
+    int marker = (e.mods & GLFW_MOD_SHIFT) || session.addModeArmed
+                     ? -1
+                     : pickMarker(session, m_x, m_y, kPickRadius);
+    // With the brush on, the selected point's own marker sits on the part being brushed: a click
+    // there brushes the surface under it instead of grabbing the point.
+    if (session.partBrush.armed && marker >= 0 && marker == session.document()->selected() &&
+        brushApplies(session))
+      marker = -1;
     if (marker >= 0) {
       session.document()->select(marker);
       m_gesture = Gesture::PointDrag;

@@ -2,7 +2,8 @@
 // drag, or Shift+arrows), zoom (wheel, +/-), click a marker to select it, drag a marker along the
 // mesh surface (a ray cast every frame snaps it to the surface; the release becomes one
 // MovePointCommand), add a point by Shift+click on the surface or a click while "add" is armed,
-// brush the selected control's part by a click while the brush is armed (Ctrl: away, Alt: anew).
+// brush the selected control's part by a click while the brush is armed (Ctrl: away, Alt: anew;
+// a click on the selected point's own marker brushes the surface under it).
 #pragma once
 
 #include <optional>

@@ -82,6 +82,18 @@ TEST(Interaction, TheBrushMarksTheSelectedControlsPartAndCtrlTakesItAway) {
   EXPECT_EQ(readLabels(dir / "labels.json").affordances[1].extra["control"]["confirmed"], true);
   // The block's 10 triangles (2 on top, 8 on the sides) are triangles 2..11, the plate's 0 and 1.
   EXPECT_EQ(part.at("triangles"), nlohmann::json::parse("[[2, 10]]"));
+  // A click on the selected point's own marker brushes the surface under it (the plate here, not
+  // connected to the block: added as a part of its own), and does not move the point.
+  const Eigen::Vector3f before = s.document().points()[1].position;
+  session.partBrush.radiusCm = 1;
+  s.click(s.pixelOf({-0.3f, -0.3f, 0.0f}));
+  EXPECT_EQ(s.document().selected(), 1);
+  EXPECT_TRUE(s.document().points()[1].position.isApprox(before));
+  nlohmann::json withPlate = partOf(readLabels(dir / "labels.json"));
+  std::size_t count = 0;
+  for (const auto& run : withPlate.at("triangles")) count += run[1].get<std::size_t>();
+  EXPECT_EQ(count, 11u);  // the block's 10 and the plate triangle under the marker
+  s.key(GLFW_KEY_Z, GLFW_MOD_CONTROL);
   // A small brush with Ctrl takes the clicked triangle away: 9 left.
   session.partBrush.radiusCm = 2;
   s.click(s.pixelOf(onBlock), GLFW_MOD_CONTROL);
