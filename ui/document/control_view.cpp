@@ -3,6 +3,7 @@
 #include <map>
 
 #include "core/common/error.h"
+#include "core/controls/control_pairing.h"
 #include "core/controls/control_record.h"
 #include "ui/document/annotation_document.h"
 
@@ -18,6 +19,9 @@ struct FoundCache {
   std::filesystem::path labels;  // with the address: a new document at a freed one's address
   std::vector<int> toggles;  // point indices
   ControlParts found;
+  // Per toggle point, the heat source its knob would light by the layout (as annotate pairs
+  // them); empty where the object has no heat source.
+  std::vector<int> drives;
   bool searched = false;     // `found` computed (only when a point has no record)
   std::map<int, std::optional<ShownControl>> shown;
 };
@@ -26,7 +30,7 @@ FoundCache& cacheFor(const AnnotationDocument& document) {
   static FoundCache cache;
   if (cache.document != &document || cache.revision != document.revision() ||
       cache.labels != document.labelsPath())
-    cache = FoundCache{&document, document.revision(), document.labelsPath(), {}, {}, false, {}};
+    cache = FoundCache{&document, document.revision(), document.labelsPath(), {}, {}, {}, false, {}};
   return cache;
 }
 
@@ -35,12 +39,17 @@ const FoundCache& foundFor(const AnnotationDocument& document) {
   if (cache.searched) return cache;
   cache.searched = true;
   std::vector<Eigen::Vector3f> points;
+  std::vector<Eigen::Vector2f> knobXy, burnerXy;
   for (int i = 0; i < static_cast<int>(document.points().size()); ++i) {
-    if (document.points()[std::size_t(i)].type != "togglebutton") continue;
+    const std::string& type = document.points()[std::size_t(i)].type;
+    if (type == "heatsource") burnerXy.push_back(document.pointInView(i).head<2>());
+    if (type != "togglebutton") continue;
     cache.toggles.push_back(i);
     points.push_back(document.pointInView(i));
+    knobXy.push_back(points.back().head<2>());
   }
   cache.found = findControlParts(document.mesh(), points);
+  if (!burnerXy.empty()) cache.drives = pairKnobsWithBurners(knobXy, burnerXy);
   return cache;
 }
 
@@ -58,7 +67,9 @@ std::optional<ShownControl> controlOf(const AnnotationDocument& document, int in
   for (std::size_t k = 0; k < cache.toggles.size(); ++k) {
     if (cache.toggles[k] != index) continue;
     if (!cache.found.parts[k]) return std::nullopt;
-    return ShownControl{*cache.found.parts[k], false, false, std::nullopt, cache.found.warnings[k]};
+    const std::optional<int> drives =
+        cache.drives.empty() ? std::nullopt : std::optional<int>(cache.drives[k]);
+    return ShownControl{*cache.found.parts[k], false, false, drives, cache.found.warnings[k]};
   }
   return std::nullopt;
 }

@@ -16,7 +16,9 @@ struct ShownControl {
   ControlPart part;            // z-up mesh frame
   bool recorded = false;       // from labels.json; else found now
   bool confirmed = false;      // the record is the curator's (control_record.h)
-  std::optional<int> drives;   // the record's burner (an index among the heat sources)
+  // The record's burner (an index among the heat sources); for a part found now, the one the
+  // layout pairs it with, as annotate and the exports would.
+  std::optional<int> drives;
   std::string warning;         // why a found one is a disc or missing
 };
 

@@ -28,6 +28,8 @@ TEST(ControlCommands, AFoundKnobIsKeptFlippedAndUndone) {
   ASSERT_TRUE(found);
   EXPECT_FALSE(found->recorded);
   EXPECT_EQ(found->part.triangles.size(), 12u);
+  // Found now, it shows the burner the layout pairs it with (the only one), as the exports would.
+  EXPECT_EQ(found->drives, std::optional<int>(0));
   EXPECT_FALSE(shownControl(doc, 0));  // a heat source has no control
 
   ControlRecord kept{found->part, 0};
