@@ -7,13 +7,13 @@
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 
 #include <nlohmann/json.hpp>
 
 #include "app/command_registry.h"
 #include "core/common/error.h"
 #include "core/curation/prediction_seed.h"
+#include "core/io/json_file.h"
 #include "core/labels/labels.h"
 #include "ui/app/curation_replay.h"
 #include "ui/app/model_predictor.h"
@@ -30,22 +30,26 @@ struct ReplayOptions {
   bool noRepredict = false;
 };
 
-void replayPartMarks(const ReplayOptions& o) {
-  std::ifstream in(o.partMarks);
-  if (!in) throw sagrid::FileError(o.partMarks, "cannot be read");
-  nlohmann::json marks;
-  try {
-    in >> marks;
-  } catch (const nlohmann::json::exception& e) {
-    throw sagrid::FileError(o.partMarks, std::string("not JSON: ") + e.what());
-  }
-  sagrid::ui::Session session;
+// The GUI's session on PATHS as the replay drives it: no prediction on opening, its curation log
+// (when given) marked replayed.
+void openReplaySession(sagrid::ui::Session& session, const ReplayOptions& o) {
   session.autoPredict = false;
+  session.logErrors = true;
   if (!o.log.empty()) session.setCurationLog(o.log, /*replayed=*/true);
   session.openPaths(std::vector<fs::path>(o.paths.begin(), o.paths.end()));
+}
+
+void printLines(const std::vector<std::string>& lines) {
+  for (const auto& line : lines) std::fprintf(stderr, "replay-curation: %s\n", line.c_str());
+}
+
+void replayPartMarks(const ReplayOptions& o) {
+  const nlohmann::json marks = sagrid::readJsonFile(o.partMarks);
+  sagrid::ui::Session session;
+  openReplaySession(session, o);
   const auto summary = sagrid::ui::replayPartMarks(session, marks, o.partMarks);
-  for (const auto& e : session.pendingErrors()) std::fprintf(stderr, "replay-curation: %s\n", e.c_str());
-  for (const auto& p : summary.problems) std::fprintf(stderr, "replay-curation: %s\n", p.c_str());
+  printLines(session.pendingErrors());
+  printLines(summary.problems);
   std::printf("replay-curation: %zu parts marked on %zu objects\n", summary.parts, summary.objects);
 }
 
@@ -90,10 +94,7 @@ void setupReplayCuration(CLI::App& root) {
     sagrid::ui::ModelPredictor predictor(o->models.empty() ? sagrid::ui::ModelPredictor::defaultModelsDir()
                                                            : fs::path(o->models));
     session.setPredictorLookup([&predictor](const sagrid::ui::AnnotationDocument& doc) { return predictor.jobFor(doc); });
-    session.autoPredict = false;
-    session.logErrors = true;
-    session.setCurationLog(o->log, /*replayed=*/true);
-    session.openPaths(std::vector<fs::path>(o->paths.begin(), o->paths.end()));
+    openReplaySession(session, *o);
     const fs::path truthDir = o->truth;
     const auto summary = sagrid::ui::replayCuration(
         session,
@@ -102,7 +103,7 @@ void setupReplayCuration(CLI::App& root) {
           return fs::is_regular_file(file) ? std::optional<sagrid::ObjectLabels>(sagrid::readLabels(file)) : std::nullopt;
         },
         !o->noRepredict);
-    for (const auto& e : session.pendingErrors()) std::fprintf(stderr, "replay-curation: %s\n", e.c_str());
+    printLines(session.pendingErrors());
     std::printf("replay-curation: %zu objects reviewed, %zu without right labels (skipped), %zu failed; log %s\n",
                 summary.objects, summary.withoutTruth, summary.failed, o->log.c_str());
   });

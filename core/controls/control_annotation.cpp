@@ -13,19 +13,16 @@ std::vector<std::string> annotateControls(ObjectLabels& labels, const Mesh& mesh
 
 std::vector<std::string> annotateControls(ObjectLabels& labels, const Mesh& mesh,
                                           const SurfaceScene& scene) {
-  std::vector<std::size_t> toggles, burners;
+  std::vector<std::size_t> toggles;
   std::vector<Eigen::Vector3f> points;
-  std::vector<Eigen::Vector2f> knobXy, burnerXy;
   for (std::size_t i = 0; i < labels.affordances.size(); ++i) {
     const AffordancePoint& p = labels.affordances[i];
-    const Eigen::Vector3f zUp = fileToZUp(p.position, mesh.fileUp);
-    if (p.type == "togglebutton") toggles.push_back(i), points.push_back(zUp), knobXy.push_back(zUp.head<2>());
-    if (p.type == "heatsource") burners.push_back(i), burnerXy.push_back(zUp.head<2>());
+    if (p.type == "togglebutton") toggles.push_back(i), points.push_back(fileToZUp(p.position, mesh.fileUp));
   }
   std::vector<std::string> warnings;
   if (toggles.empty()) return warnings;
   const ControlParts found = findControlParts(mesh, scene, points);
-  const std::vector<int> drives = pairKnobsWithBurners(knobXy, burnerXy);
+  const std::vector<int> drives = pairToggleButtonsWithHeatSources(labels.affordances, mesh.fileUp);
   for (std::size_t k = 0; k < toggles.size(); ++k) {
     AffordancePoint& point = labels.affordances[toggles[k]];
     if (!found.warnings[k].empty())
@@ -37,7 +34,7 @@ std::vector<std::string> annotateControls(ObjectLabels& labels, const Mesh& mesh
       continue;
     }
     ControlRecord record{*found.parts[k], {}};
-    if (!burners.empty()) record.drives = drives[k];
+    if (!drives.empty()) record.drives = drives[k];
     writeControlRecord(point, record, mesh.fileUp);
   }
   return warnings;

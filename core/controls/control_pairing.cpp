@@ -45,4 +45,15 @@ std::vector<int> pairKnobsWithBurners(const std::vector<Eigen::Vector2f>& knobs,
   return drives;
 }
 
+std::vector<int> pairToggleButtonsWithHeatSources(const std::vector<AffordancePoint>& points,
+                                                  UpAxis fileUp) {
+  std::vector<Eigen::Vector2f> knobs, burners;
+  for (const AffordancePoint& p : points) {
+    const Eigen::Vector2f xy = fileToZUp(p.position, fileUp).head<2>();
+    if (p.type == "togglebutton") knobs.push_back(xy);
+    if (p.type == "heatsource") burners.push_back(xy);
+  }
+  return burners.empty() ? std::vector<int>{} : pairKnobsWithBurners(knobs, burners);
+}
+
 }  // namespace sagrid

@@ -1,6 +1,8 @@
 #include "core/eval/part_agreement.h"
 
 #include <algorithm>
+#include <array>
+#include <map>
 #include <iterator>
 #include <cmath>
 #include <sstream>
@@ -8,6 +10,7 @@
 #include "core/common/error.h"
 #include "core/controls/control_part.h"
 #include "core/controls/control_record.h"
+#include "core/dataset/object_source.h"
 #include "core/labels/labels.h"
 #include "core/mesh/mesh_import.h"
 
@@ -59,11 +62,14 @@ PartAgreementReport measurePartAgreement(const std::vector<DatasetEntry>& entrie
       const ControlParts found = findControlParts(mesh, points);
       const std::vector<float> area = triangleAreas(mesh);
       ++report.objects;
+      const std::string source =
+          objectSource(labels, entry.mesh, entry.mesh.parent_path().parent_path().filename().string());
       for (std::size_t k = 0; k < toggles.size(); ++k) {
         if (!records[k] || !records[k]->confirmed) continue;
         const ControlPart& marked = records[k]->part;
         PartAgreement a;
         a.object = labels.object.id.empty() ? entry.id : labels.object.id;
+        a.source = source;
         a.point = static_cast<int>(toggles[k]) + 1;
         a.motion = toString(marked.motion);
         if (found.parts[k]) {
@@ -96,11 +102,22 @@ std::string partAgreementMarkdown(const PartAgreementReport& r) {
   md << "# Found control parts against the curator's\n\n"
      << r.points.size() << " parts the curator confirmed or marked, on " << r.objects << " objects: mean triangle IoU (by area) "
      << r.meanIou << ", " << 100 * r.shareIouAtLeast08 << " % at 0.8 or more; mean axis angle "
-     << r.meanAxisDegrees << " deg, " << 100 * r.shareAxisWithin10 << " % within 10 deg.\n\n"
-     << "| object | point | curator's motion | found as | IoU | axis (deg) |\n|---|---:|---|---|---:|---:|\n";
+     << r.meanAxisDegrees << " deg, " << 100 * r.shareAxisWithin10 << " % within 10 deg.\n\n";
+  // Per source: parts, mean IoU, axis within 10 degrees.
+  std::map<std::string, std::array<double, 3>> bySource;
+  for (const PartAgreement& a : r.points) {
+    auto& row = bySource[a.source];
+    row[0] += 1, row[1] += a.iou, row[2] += a.axisDegrees <= 10.0 ? 1 : 0;
+  }
+  md << "| source | parts | mean IoU | axis within 10 deg |\n|---|---:|---:|---:|\n";
+  for (const auto& [source, row] : bySource)
+    md << "| " << source << " | " << static_cast<int>(row[0]) << " | " << row[1] / row[0] << " | "
+       << 100 * row[2] / row[0] << " % |\n";
+  md << "\n| object | source | point | curator's motion | found as | IoU | axis (deg) |\n"
+     << "|---|---|---:|---|---|---:|---:|\n";
   for (const PartAgreement& a : r.points)
-    md << "| " << a.object << " | " << a.point << " | " << a.motion << " | " << a.found << " | "
-       << a.iou << " | " << a.axisDegrees << " |\n";
+    md << "| " << a.object << " | " << a.source << " | " << a.point << " | " << a.motion << " | "
+       << a.found << " | " << a.iou << " | " << a.axisDegrees << " |\n";
   for (const std::string& s : r.skipped) md << "\nSkipped: " << s << "\n";
   return md.str();
 }
@@ -109,7 +126,7 @@ nlohmann::json toJson(const PartAgreementReport& r) {
   nlohmann::json points = nlohmann::json::array();
   for (const PartAgreement& a : r.points)
     points.push_back({{"object", a.object}, {"point", a.point}, {"motion", a.motion},
-                      {"found", a.found}, {"iou", a.iou}, {"axis_degrees", a.axisDegrees}});
+                      {"source", a.source}, {"found", a.found}, {"iou", a.iou}, {"axis_degrees", a.axisDegrees}});
   return {{"objects", r.objects},
           {"confirmed_parts", r.points.size()},
           {"mean_iou", r.meanIou},

@@ -5,7 +5,8 @@
 // finds at the object's toggle points (as annotate and
 // the exports do, every toggle point of the object told apart) against the marked one: the
 // triangle IoU by area and the angle between their axes (as lines: a knob turned either way is
-// the same joint).
+// the same joint). Reported per source too, so that a rule judged on some sources is seen on the
+// others.
 #pragma once
 
 #include <string>
@@ -19,6 +20,7 @@ namespace sagrid {
 
 struct PartAgreement {
   std::string object;
+  std::string source;       // its source (a wild-pool repository, a Sweet Home 3D library, ...)
   int point = 0;            // 1-based among the object's points, as the GUI numbers them
   std::string found;        // the found part's origin, or "site" when none was found
   std::string motion;       // the curator's part's motion

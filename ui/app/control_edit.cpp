@@ -22,39 +22,42 @@ std::optional<ShownControl> controlToEdit(const AnnotationDocument& doc, int ind
   return ShownControl{};
 }
 
+// The command that writes `shown` as point `index`'s record, confirmed by the curator.
+std::unique_ptr<SetControlCommand> confirmCommand(const AnnotationDocument& doc, int index,
+                                                  const ShownControl& shown, const std::string& what) {
+  const ControlRecord record{shown.part, shown.drives, /*confirmed=*/true};
+  return std::make_unique<SetControlCommand>(index, controlJson(record, doc.mesh().fileUp), what);
+}
+
 }  // namespace
 
 void setControlRecord(Session& session, int index, const ShownControl& shown, const std::string& what) {
-  ControlRecord record{shown.part, shown.drives, /*confirmed=*/true};
-  session.execute(std::make_unique<SetControlCommand>(
-      index, controlJson(record, session.document()->mesh().fileUp), what));
+  session.execute(confirmCommand(*session.document(), index, shown, what));
 }
 
 std::size_t confirmEveryControl(Session& session, int axisOf) {
   const AnnotationDocument* doc = session.document();
   if (!doc) return 0;
-  std::optional<ShownControl> model;
+  std::optional<ShownControl> axisSource;
   if (axisOf >= 0) {
-    model = shownControl(*doc, axisOf);
-    if (!model) return 0;
+    axisSource = shownControl(*doc, axisOf);
+    if (!axisSource) return 0;
   }
   std::vector<std::unique_ptr<Command>> steps;
   for (int i = 0; i < static_cast<int>(doc->points().size()); ++i) {
     std::optional<ShownControl> shown = shownControl(*doc, i);
     if (!shown) continue;
-    if (model) {
-      if (shown->part.motion != model->part.motion) continue;
-      shown->part.axis = model->part.axis;
+    if (axisSource) {
+      if (shown->part.motion != axisSource->part.motion) continue;
+      shown->part.axis = axisSource->part.axis;
     }
-    ControlRecord record{shown->part, shown->drives, /*confirmed=*/true};
-    steps.push_back(std::make_unique<SetControlCommand>(
-        i, controlJson(record, doc->mesh().fileUp), "control of point " + std::to_string(i + 1)));
+    steps.push_back(confirmCommand(*doc, i, *shown, "control of point " + std::to_string(i + 1)));
   }
   const std::size_t written = steps.size();
   if (written > 0)
     session.execute(std::make_unique<CommandGroup>(
-        model ? "this axis for every " + std::string(toString(model->part.motion))
-              : "every control kept",
+        axisSource ? "this axis for every " + std::string(toString(axisSource->part.motion))
+                   : "every control kept",
         std::move(steps)));
   return written;
 }

@@ -39,17 +39,13 @@ const FoundCache& foundFor(const AnnotationDocument& document) {
   if (cache.searched) return cache;
   cache.searched = true;
   std::vector<Eigen::Vector3f> points;
-  std::vector<Eigen::Vector2f> knobXy, burnerXy;
   for (int i = 0; i < static_cast<int>(document.points().size()); ++i) {
-    const std::string& type = document.points()[std::size_t(i)].type;
-    if (type == "heatsource") burnerXy.push_back(document.pointInView(i).head<2>());
-    if (type != "togglebutton") continue;
+    if (document.points()[std::size_t(i)].type != "togglebutton") continue;
     cache.toggles.push_back(i);
     points.push_back(document.pointInView(i));
-    knobXy.push_back(points.back().head<2>());
   }
   cache.found = findControlParts(document.mesh(), points);
-  if (!burnerXy.empty()) cache.drives = pairKnobsWithBurners(knobXy, burnerXy);
+  cache.drives = pairToggleButtonsWithHeatSources(document.points(), document.mesh().fileUp);
   return cache;
 }
 

@@ -93,7 +93,13 @@ TEST(PartAgreement, AMarkedPartEqualToTheFoundOneAgreesAndAHalfKnobDoesNot) {
   EXPECT_NEAR(r.points[1].axisDegrees, 90.0, 1.0);
   EXPECT_DOUBLE_EQ(r.shareIouAtLeast08, 0.5);
   EXPECT_DOUBLE_EQ(r.shareAxisWithin10, 0.5);
-  EXPECT_NE(partAgreementMarkdown(r).find("| marked | 2 | knob |"), std::string::npos)
+  // Its source (no provenance here: the dataset folder) gets a row of its own.
+  EXPECT_EQ(r.points[0].source, root.filename().string());
+  EXPECT_NE(partAgreementMarkdown(r).find("\n| " + root.filename().string() + " | 2 | "),
+            std::string::npos)
+      << partAgreementMarkdown(r);
+  EXPECT_NE(partAgreementMarkdown(r).find("| marked | " + root.filename().string() + " | 2 | knob |"),
+            std::string::npos)
       << partAgreementMarkdown(r);
   EXPECT_EQ(toJson(r).at("confirmed_parts"), 2);
 
