@@ -165,6 +165,7 @@ std::size_t nearestPoint(const Eigen::Vector3f& x, const std::vector<Eigen::Vect
 }
 
 struct PointContext {
+  const SurfaceScene& scene;
   std::size_t index;
   const std::vector<Eigen::Vector3f>& points;
   const std::vector<int>& seeds;  // each point's nearest triangle
@@ -206,6 +207,21 @@ Labelling labellingOf(const Surface& s, const TriangleComponents& c,
   return l;
 }
 
+// Whether `p` lies inside `component`: along the six axis directions from `p`, the surface first
+// met is the component's all ways but at most one (a knob open at its base, standing on a panel or
+// on what is not in the file).
+bool surroundedBy(const SurfaceScene& scene, const TriangleComponents& c, int component,
+                  const Eigen::Vector3f& p, float diagonal) {
+  int elsewhere = 0;
+  for (int axis = 0; axis < 3; ++axis)
+    for (const float sign : {1.0f, -1.0f}) {
+      const auto hit = scene.intersect(p, sign * Eigen::Vector3f::Unit(axis), 1e-6f * diagonal);
+      if (!hit || hit->triangle < 0 || c.ofTriangle[static_cast<std::size_t>(hit->triangle)] != component)
+        ++elsewhere;
+    }
+  return elsewhere <= 1;
+}
+
 // The point's part from one labelling of the triangles: the component it lies on with the small
 // components inside its box, each nearer this point than any other; none when that component is
 // too large or another point lies on it too.
@@ -224,7 +240,12 @@ std::optional<std::vector<int>> componentPart(const Surface& s, const Labelling&
            nearestPoint(stats[k].centroid(), ctx.points) == ctx.index;
   };
   const auto seedIndex = static_cast<std::size_t>(seed);
-  if (!small(seedIndex)) return std::nullopt;
+  // A point inside a closed component (a large knob's centre) names that component, however large,
+  // as long as it is no body (at most kMaxControlAreaShare of the area) and no other point's.
+  const bool enclosing = !foreign[seedIndex] &&
+                         stats[seedIndex].area <= kMaxControlAreaShare * s.totalArea &&
+                         surroundedBy(ctx.scene, l.components, seed, ctx.points[ctx.index], s.diagonal);
+  if (!small(seedIndex) && !enclosing) return std::nullopt;
   // What belongs with it lies within its box grown a little: a pointer, a cap, a ring; not a bar
   // or a rail it is mounted on.
   Eigen::AlignedBox3f reach = stats[seedIndex].box;
@@ -571,7 +592,7 @@ ControlParts findControlParts(const Mesh& mesh, const SurfaceScene& scene,
     float spacing = surface.diagonal;
     for (std::size_t j = 0; j < points.size(); ++j)
       if (j != i) spacing = std::min(spacing, (points[j] - points[i]).norm());
-    const PointContext ctx{i, points, seeds, spacing};
+    const PointContext ctx{scene, i, points, seeds, spacing};
     if (byMaterial) {
       if (auto tris = componentPart(surface, *byMaterial, ctx)) {
         result.parts[i] = describe(surface, std::move(*tris), PartOrigin::Material);

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <numeric>
 
 #include "core/mesh/mesh.h"
@@ -178,6 +179,30 @@ TEST(ControlParts, AFusedBumpIsGrownAndAPrintedKeyGetsADisc) {
   EXPECT_TRUE(flat.parts[0]->triangles.empty());
   EXPECT_GT(flat.parts[0]->radius, 0.0f);
   EXPECT_NE(flat.warnings[0].find("printed"), std::string::npos);
+}
+
+TEST(ControlParts, APointInsideALargeKnobOpenAtItsBaseNamesIt) {
+  // A knob 12 x 12 x 10 cm (larger than a small part of this panel may be), open at its base; its
+  // point labelled at its centre, inside it. A point on the panel beside it gets no such part.
+  Mesh mesh = panel();
+  Mesh knob = test::box({-0.06f, -0.06f, 0.0f}, {0.06f, 0.06f, 0.1f});
+  knob.triangles.erase(std::remove_if(knob.triangles.begin(), knob.triangles.end(),
+                                      [&](const Eigen::Vector3i& t) {
+                                        for (int c = 0; c < 3; ++c)
+                                          if (knob.positions[static_cast<std::size_t>(t[c])].z() > 0.0f)
+                                            return false;
+                                        return true;
+                                      }),
+                       knob.triangles.end());
+  const auto triangles = addPart(mesh, knob, 1);
+  const ControlParts inside = findControlParts(mesh, {{0.0f, 0.0f, 0.05f}, {0.2f, 0.1f, 0.0f}});
+  ASSERT_TRUE(inside.parts[0]);
+  EXPECT_EQ(inside.parts[0]->triangles, triangles);
+  EXPECT_NE(inside.parts[0]->origin, PartOrigin::Grown);
+  // On its top, outside it, the knob is too large to be taken whole.
+  const ControlParts onTop = findControlParts(mesh, {{0.0f, 0.0f, 0.1f}, {0.2f, 0.1f, 0.0f}});
+  ASSERT_TRUE(onTop.parts[0]);
+  EXPECT_NE(onTop.parts[0]->triangles, triangles);
 }
 
 TEST(ControlParts, NoPointsAndNoSurfaceAreNotErrors) {
