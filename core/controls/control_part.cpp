@@ -492,18 +492,10 @@ ControlPart describe(const Surface& s, std::vector<int> triangles, PartOrigin or
     part.motion = ControlMotion::Button;
     part.axis = pressDirection(s, triangles, shape, held);
   } else {
-    // A knob turns about its axis of symmetry out of the panel it stands on; where the panel
-    // cannot be told, out of the nearest surface apart from it.
+    // A knob turns about the normal of the panel it stands on; where the panel cannot be told,
+    // out of the nearest surface apart from it.
     part.motion = ControlMotion::Knob;
-    const Eigen::Vector3f standing = standingNormal(s, inPart, vertices, centre).value_or(out);
-    Eigen::Vector3f axis = standing;
-    float best = 0.8f;  // the symmetry axis where the shape has one near `standing`
-    for (int i = 0; i < 3; ++i) {
-      const float c = std::abs(shape.directions.col(i).dot(standing));
-      if (c > best) best = c, axis = shape.directions.col(i);
-    }
-    part.axis = axis.dot(standing) < 0 ? -axis : axis;
-    part.axis.normalize();
+    part.axis = standingNormal(s, inPart, vertices, centre).value_or(out).normalized();
   }
   part.triangles = std::move(triangles);
   return part;
