@@ -42,6 +42,8 @@ constexpr float kLeverEndShare = 0.15f;
 // much the touched normals must agree (the length of their sum per touch) to tell a panel.
 constexpr float kContactShare = 0.1f;
 constexpr float kContactAgreement = 0.5f;
+// Touched normals within this many degrees of each other face as one panel.
+constexpr float kPanelConeDegrees = 10.0f;
 // A lever's held end this many times wider than its free end is a hub it turns with.
 constexpr float kHubShare = 2.0f;
 // A part whose faces' normals sum to more than this share of its area is an open sheet facing
@@ -359,10 +361,12 @@ std::optional<Eigen::Vector3f> awayFromHolder(const Surface& s, const std::vecto
   return out.normalized();
 }
 
-// The normal of the panel a part stands on: the surface apart from the part that its vertices
+// The normal of the panel a part stands on: of the surface apart from the part that its vertices
 // touch (within kContactShare of the part's size), each touched triangle's normal turned towards
-// the part and counted once per vertex touching it. None where nothing touches it or the touched
-// normals cancel (a part held all round).
+// the part and counted once per vertex touching it, the way most of the contact faces (the mean of
+// the normals within kPanelCone of the one with most such contact: the panel, not the sides of a
+// ring or bezel around the part). None where nothing touches it or the touched normals cancel (a
+// part held all round).
 std::optional<Eigen::Vector3f> standingNormal(const Surface& s, const std::vector<bool>& inPart,
                                               const std::vector<Eigen::Vector3f>& vertices,
                                               const Eigen::Vector3f& centre) {
@@ -374,6 +378,7 @@ std::optional<Eigen::Vector3f> standingNormal(const Surface& s, const std::vecto
   near.min().array() -= touch, near.max().array() += touch;
   Eigen::Vector3f sum = Eigen::Vector3f::Zero();
   float count = 0;
+  std::vector<std::pair<Eigen::Vector3f, float>> touched;  // a triangle's normal, vertices touching it
   for (std::size_t t = 0; t < s.valid.size(); ++t) {
     if (!s.valid[t] || inPart[t]) continue;
     Eigen::AlignedBox3f triangle;
@@ -383,11 +388,25 @@ std::optional<Eigen::Vector3f> standingNormal(const Surface& s, const std::vecto
     if (normal.norm() <= 0) continue;
     normal.normalize();
     if (normal.dot(centre - s.centroids[t]) < 0) normal = -normal;
+    float touches = 0;
     for (const auto& v : vertices)
-      if ((s.closestOn(t, v) - v).norm() <= touch) sum += normal, ++count;
+      if ((s.closestOn(t, v) - v).norm() <= touch) ++touches;
+    if (touches == 0) continue;
+    sum += touches * normal, count += touches;
+    touched.emplace_back(normal, touches);
   }
   if (count == 0 || sum.norm() < kContactAgreement * count) return std::nullopt;
-  return sum.normalized();
+  const float cone = std::cos(kPanelConeDegrees * static_cast<float>(M_PI) / 180.0f);
+  float most = 0;
+  Eigen::Vector3f panel = sum;
+  for (const auto& [normal, touches] : touched) {
+    float contact = 0;
+    Eigen::Vector3f alike = Eigen::Vector3f::Zero();
+    for (const auto& [other, otherTouches] : touched)
+      if (normal.dot(other) >= cone) contact += otherTouches, alike += otherTouches * other;
+    if (contact > most) most = contact, panel = alike;
+  }
+  return panel.normalized();
 }
 
 // A part's vertices, their principal shape and the way it stands out of what holds it.

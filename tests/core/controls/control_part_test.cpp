@@ -205,6 +205,18 @@ TEST(ControlParts, APointInsideALargeKnobOpenAtItsBaseNamesIt) {
   EXPECT_NE(onTop.parts[0]->triangles, triangles);
 }
 
+TEST(ControlParts, AKnobBesideABlockTurnsAboutThePanelNotTheBlock) {
+  // A knob on a panel with a block against one of its sides (a bezel, a rail): the panel it
+  // stands on is where most of its contact faces, so it turns about up, not a slant of the two.
+  Mesh mesh = panel();
+  addPart(mesh, test::box({-0.02f, -0.02f, 0.0f}, {0.02f, 0.02f, 0.03f}), 1);
+  addPart(mesh, test::box({0.02f, -0.04f, 0.0f}, {0.06f, 0.04f, 0.02f}), 0);
+  const ControlParts found = findControlParts(mesh, {{0.0f, 0.0f, 0.03f}});
+  ASSERT_TRUE(found.parts[0]);
+  EXPECT_EQ(found.parts[0]->motion, ControlMotion::Knob);
+  EXPECT_GT(found.parts[0]->axis.z(), 0.999f);
+}
+
 TEST(ControlParts, NoPointsAndNoSurfaceAreNotErrors) {
   EXPECT_TRUE(findControlParts(panel(), {}).parts.empty());
   const ControlParts none = findControlParts(Mesh(), {{0, 0, 0}});
