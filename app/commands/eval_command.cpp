@@ -195,6 +195,7 @@ void setupEval(CLI::App& root) {
     if (!o->fitConfidence.empty()) {
       auto fit = sagrid::fitConfidence(report.confidenceSignal, report.oneKey);
       fit.fittedOn = dataText;
+      fit.networkWeights = models.weightsByModel();
       fs::create_directories(o->fitConfidence);
       sagrid::writeConfidenceCalibration(o->fitConfidence, fit);
       std::fprintf(stderr, "confidence: fitted on %zu objects (%.0f %% right with one key) -> %s\n",

@@ -9,6 +9,8 @@
 #include "core/annotate/annotate.h"
 #include "core/common/atomic_file.h"
 #include "core/common/error.h"
+#include "core/common/log.h"
+#include "core/model/model_card.h"
 
 namespace sagrid {
 namespace {
@@ -96,6 +98,7 @@ nlohmann::json toJson(const ConfidenceCalibration& c) {
           {"objects", c.objects},
           {"one_key_share", c.oneKeyShare},
           {"fitted_on", c.fittedOn},
+          {"network_weights", c.networkWeights},
           {"measured_confidence", c.measuredConfidence},
           {"measured_right", c.measuredRight}};
 }
@@ -116,6 +119,8 @@ ConfidenceCalibration readConfidenceCalibration(const std::filesystem::path& mod
     c.objects = j.value("objects", std::size_t{0});
     c.oneKeyShare = j.value("one_key_share", 0.0);
     c.fittedOn = j.value("fitted_on", "");
+    if (j.contains("network_weights"))
+      c.networkWeights = j.at("network_weights").get<std::map<std::string, std::string>>();
     c.measuredConfidence = j.value("measured_confidence", std::vector<double>{});
     c.measuredRight = j.value("measured_right", std::vector<bool>{});
     if (c.measuredConfidence.size() != c.measuredRight.size())
@@ -126,7 +131,27 @@ ConfidenceCalibration readConfidenceCalibration(const std::filesystem::path& mod
   } catch (const nlohmann::json::exception& e) {
     throw FileError(file, e.what());
   }
-  return c;
+  if (c.networkWeights.empty() || model::listModelCards(modelsDir).empty()) return c;
+  const std::vector<std::string> stale = modelsOfOtherWeights(c, model::cardWeights(modelsDir));
+  if (stale.empty()) return c;
+  std::string models;
+  for (const auto& m : stale) models += (models.empty() ? "" : ", ") + m;
+  logger()->warn(
+      "{}: the object confidence was fitted on the predictions of other networks than this "
+      "folder's cards ({}); it is not used (uncalibrated) until it is fitted again (`sagrid scorer "
+      "update` or `sagrid eval --fit-confidence`)",
+      file.string(), models);
+  return ConfidenceCalibration{};
+}
+
+std::vector<std::string> modelsOfOtherWeights(const ConfidenceCalibration& c,
+                                              const std::map<std::string, std::string>& cardWeights) {
+  std::vector<std::string> stale;
+  for (const auto& [model, weights] : c.networkWeights) {
+    const auto card = cardWeights.find(model);
+    if (card == cardWeights.end() || card->second != weights) stale.push_back(model);
+  }
+  return stale;
 }
 
 void writeConfidenceCalibration(const std::filesystem::path& modelsDir,

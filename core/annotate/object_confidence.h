@@ -9,6 +9,7 @@
 #pragma once
 
 #include <filesystem>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -42,6 +43,9 @@ struct ConfidenceCalibration {
   std::size_t objects = 0;          // objects it was fitted on
   double oneKeyShare = 0;           // among them
   std::string fittedOn;             // dataset path(s)
+  // The networks whose predictions it was fitted on: model name -> weights identity (the cards'
+  // weightsIdentity()); empty for a calibration from before it was recorded.
+  std::map<std::string, std::string> networkWeights;
   // The fitted objects' confidences and outcomes, so the GUI can show the precision measured at
   // any "accept automatically above X" (optimistic: measured on the data it was fitted on).
   std::vector<double> measuredConfidence;
@@ -57,8 +61,16 @@ ConfidenceCalibration fitConfidence(const std::vector<double>& leastSureDistance
 
 nlohmann::json toJson(const ConfidenceCalibration& c);
 // Reads DIR/confidence.json; an unfitted calibration when the file is absent. Throws FileError
-// naming the file when it exists but is not a valid calibration.
+// naming the file when it exists but is not a valid calibration. Where it records networks other
+// than the folder's cards (a folder mixing versions: the networks retrained, the calibration not),
+// its figures say nothing of these networks: a warning naming the file and the models, and the
+// calibration is not used (unfitted, flagged uncalibrated).
 ConfidenceCalibration readConfidenceCalibration(const std::filesystem::path& modelsDir);
+
+// The models whose weights in `cardWeights` (model name -> weights identity) differ from those
+// `c` was fitted on; empty where it records none.
+std::vector<std::string> modelsOfOtherWeights(const ConfidenceCalibration& c,
+                                              const std::map<std::string, std::string>& cardWeights);
 void writeConfidenceCalibration(const std::filesystem::path& modelsDir,
                                 const ConfidenceCalibration& c);  // atomic
 

@@ -310,6 +310,8 @@ ScorerCrossValidation crossValidatePointScorer(const std::vector<CandidateSet>& 
   if (!cv.leastSure.empty()) {
     cv.confidence = fitConfidence(cv.leastSure, cv.oneKey);
     cv.confidence->fittedOn = "the curated objects' points decided leave one source out (sagrid scorer cv)";
+    for (const CandidateSet& set : sets)
+      if (!set.networkWeights.empty()) cv.confidence->networkWeights.emplace(set.model, set.networkWeights);
   }
   // The confidence fitted on the tuned-on sources alone, and the other one given, on the rest.
   std::vector<double> tunedSure, unseenSure;

@@ -7,6 +7,7 @@
 
 #include "core/annotate/annotate.h"
 #include "core/common/error.h"
+#include "core/model/model_card.h"
 #include "support/test_paths.h"
 
 namespace sagrid {
@@ -75,6 +76,37 @@ TEST(ObjectConfidence, FileRoundTripsAndBadFilesAreNamed) {
   } catch (const FileError& e) {
     EXPECT_NE(std::string(e.what()).find(kConfidenceFile), std::string::npos) << e.what();
   }
+}
+
+TEST(ObjectConfidence, ACalibrationOfOtherNetworksThanTheCardsIsNotUsed) {
+  // A models folder whose networks were retrained but whose confidence.json was not: its figures
+  // say nothing of these networks, so it reads as uncalibrated; of the same networks, as fitted.
+  const auto dir = test::freshTempDir();
+  const auto card = std::filesystem::path(SAGRID_SOURCE_DIR) / "resources" / "models" /
+                    "sink.fluidsource.json";
+  std::filesystem::copy_file(card, dir / card.filename());
+  const std::string weights = model::readModelCard(dir / card.filename()).weightsIdentity();
+  ConfidenceCalibration c;
+  c.fitted = true;
+  c.intercept = 1.25;
+  c.slope = -0.5;
+  c.networkWeights = {{"sink.fluidsource", weights}};
+  writeConfidenceCalibration(dir, c);
+  const ConfidenceCalibration same = readConfidenceCalibration(dir);
+  EXPECT_TRUE(same.fitted);
+  EXPECT_EQ(same.networkWeights, c.networkWeights);
+  c.networkWeights = {{"sink.fluidsource", std::string(64, 'a')}};
+  writeConfidenceCalibration(dir, c);
+  EXPECT_FALSE(readConfidenceCalibration(dir).fitted);
+  EXPECT_EQ(modelsOfOtherWeights(c, {{"sink.fluidsource", weights}}),
+            std::vector<std::string>{"sink.fluidsource"});
+  c.networkWeights = {{"stove.heatsource", weights}};  // a model the folder has no card of
+  writeConfidenceCalibration(dir, c);
+  EXPECT_FALSE(readConfidenceCalibration(dir).fitted);
+  // Network weights that are not names to identities: one error naming the file.
+  std::ofstream(dir / kConfidenceFile)
+      << R"({"schema": "sagrid.confidence/1", "intercept": 1, "slope": 1, "network_weights": [1]})";
+  EXPECT_THROW(readConfidenceCalibration(dir), FileError);
 }
 
 }  // namespace

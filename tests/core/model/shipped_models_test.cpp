@@ -3,6 +3,7 @@
 // shipped point decision learned from the candidates of these very networks.
 #include <gtest/gtest.h>
 
+#include "core/annotate/object_confidence.h"
 #include "core/annotate/point_scorer.h"
 #include "core/common/atomic_file.h"
 #include "core/common/sha256.h"
@@ -51,6 +52,12 @@ TEST(ShippedModels, ThePointDecisionLearnedFromTheShippedNetworks) {
   for (const auto& [name, decision] : scorer->byModel)
     EXPECT_EQ(decision.networkWeights, readModelCard(kModels / (name + ".json")).weightsIdentity())
         << name;
+}
+
+TEST(ShippedModels, TheObjectConfidenceWasFittedOnTheShippedNetworks) {
+  const ConfidenceCalibration confidence = readConfidenceCalibration(kModels);
+  EXPECT_TRUE(confidence.fitted);
+  EXPECT_EQ(confidence.networkWeights, cardWeights(kModels));
 }
 
 TEST(ShippedModels, EachLoadsAndPredictsOnAGeneratedObject) {
