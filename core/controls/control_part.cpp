@@ -44,6 +44,8 @@ constexpr float kContactShare = 0.1f;
 constexpr float kContactAgreement = 0.5f;
 // Touched normals within this many degrees of each other face as one panel.
 constexpr float kPanelConeDegrees = 10.0f;
+// The most cells a side of the grid a part's vertices are binned in for the contact search.
+constexpr float kGridCells = 32.0f;
 // A lever's held end this many times wider than its free end is a hub it turns with.
 constexpr float kHubShare = 2.0f;
 // A part whose faces' normals sum to more than this share of its area is an open sheet facing
@@ -361,6 +363,44 @@ std::optional<Eigen::Vector3f> awayFromHolder(const Surface& s, const std::vecto
   return out.normalized();
 }
 
+// Points binned in a grid over their box with cells at least `cell` across (at most kGridCells a
+// side), so that what lies near a small box is found without looking at every point.
+class VertexGrid {
+ public:
+  VertexGrid(const std::vector<Eigen::Vector3f>& points, const Eigen::AlignedBox3f& box, float cell)
+      : m_origin(box.min()) {
+    const Eigen::Vector3f extent = box.sizes();
+    m_cell = std::max({cell, extent.maxCoeff() / kGridCells, 1e-12f});
+    for (int a = 0; a < 3; ++a) m_dims[a] = std::max(1, static_cast<int>(std::ceil(extent[a] / m_cell)));
+    m_cells.resize(static_cast<std::size_t>(m_dims.prod()));
+    for (std::size_t i = 0; i < points.size(); ++i)
+      m_cells[static_cast<std::size_t>(index(cellOf(points[i])))].push_back(static_cast<int>(i));
+  }
+  // Calls f(i) for every point whose cell overlaps `query` (each once).
+  template <typename F>
+  void forEachWithin(const Eigen::AlignedBox3f& query, F f) const {
+    const Eigen::Vector3i lo = cellOf(query.min()), hi = cellOf(query.max());
+    for (int z = lo.z(); z <= hi.z(); ++z)
+      for (int y = lo.y(); y <= hi.y(); ++y)
+        for (int x = lo.x(); x <= hi.x(); ++x)
+          for (int i : m_cells[static_cast<std::size_t>(index({x, y, z}))]) f(i);
+  }
+
+ private:
+  Eigen::Vector3i cellOf(const Eigen::Vector3f& p) const {
+    Eigen::Vector3i c;
+    for (int a = 0; a < 3; ++a)
+      c[a] = std::clamp(static_cast<int>(std::floor((p[a] - m_origin[a]) / m_cell)), 0, m_dims[a] - 1);
+    return c;
+  }
+  int index(const Eigen::Vector3i& c) const { return (c.z() * m_dims.y() + c.y()) * m_dims.x() + c.x(); }
+
+  Eigen::Vector3f m_origin;
+  float m_cell = 1;
+  Eigen::Vector3i m_dims = Eigen::Vector3i::Ones();
+  std::vector<std::vector<int>> m_cells;
+};
+
 // The normal of the panel a part stands on: of the surface apart from the part that its vertices
 // touch (within kContactShare of the part's size), each touched triangle's normal turned towards
 // the part and counted once per vertex touching it, the way most of the contact faces (the mean of
@@ -376,6 +416,7 @@ std::optional<Eigen::Vector3f> standingNormal(const Surface& s, const std::vecto
   const float touch = std::max(kContactShare * box.diagonal().norm(), 1e-6f * s.diagonal);
   Eigen::AlignedBox3f near = box;
   near.min().array() -= touch, near.max().array() += touch;
+  const VertexGrid grid(vertices, box, touch);
   Eigen::Vector3f sum = Eigen::Vector3f::Zero();
   float count = 0;
   std::vector<std::pair<Eigen::Vector3f, float>> touched;  // a triangle's normal, vertices touching it
@@ -389,8 +430,11 @@ std::optional<Eigen::Vector3f> standingNormal(const Surface& s, const std::vecto
     normal.normalize();
     if (normal.dot(centre - s.centroids[t]) < 0) normal = -normal;
     float touches = 0;
-    for (const auto& v : vertices)
-      if ((s.closestOn(t, v) - v).norm() <= touch) ++touches;
+    triangle.min().array() -= touch, triangle.max().array() += touch;
+    grid.forEachWithin(triangle, [&](int v) {
+      const Eigen::Vector3f& p = vertices[static_cast<std::size_t>(v)];
+      if ((s.closestOn(t, p) - p).norm() <= touch) ++touches;
+    });
     if (touches == 0) continue;
     sum += touches * normal, count += touches;
     touched.emplace_back(normal, touches);

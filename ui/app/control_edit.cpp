@@ -89,7 +89,8 @@ bool brushControlPart(Session& session, const SurfaceHit& hit, BrushMode mode) {
       mode == BrushMode::Replace ? std::vector<int>{} : shown->part.triangles;
   return reshapeControlPart(
       session, index,
-      brushedPart(doc->mesh(), start, hit.triangle, hit.position, radius, mode != BrushMode::Away),
+      brushedPart(doc->partEditSurface(), start, hit.triangle, hit.position, radius,
+                  mode != BrushMode::Away),
       mode == BrushMode::Away ? "part brushed away"
       : mode == BrushMode::Replace ? "part brushed anew" : "part brushed");
 }

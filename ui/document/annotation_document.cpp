@@ -5,6 +5,7 @@
 
 #include "core/annotate/suggested_points.h"
 #include "core/annotate/units_record.h"
+#include "core/controls/control_part_edit.h"
 #include "core/common/log.h"
 #include "core/geometry/surface_scene.h"
 #include "core/grid/voxelize.h"
@@ -29,6 +30,11 @@ AnnotationDocument::~AnnotationDocument() = default;
 const SurfaceScene& AnnotationDocument::surface() const {
   if (!m_surface) m_surface = std::make_unique<SurfaceScene>(*m_mesh);
   return *m_surface;
+}
+
+const PartEditSurface& AnnotationDocument::partEditSurface() const {
+  if (!m_partEditSurface) m_partEditSurface = std::make_unique<PartEditSurface>(*m_mesh);
+  return *m_partEditSurface;
 }
 
 std::string AnnotationDocument::displayName() const {
@@ -119,6 +125,7 @@ void AnnotationDocument::setMeshUpAxis(UpAxis up) {
   turned->fileUpConfidence = 1.0f;
   m_mesh = std::move(turned);  // a new identity: renderers upload it again
   m_surface.reset();
+  m_partEditSurface.reset();
   m_normalization = Normalization::fromMesh(*m_mesh);
   m_occupied.clear();
   m_occupiedReady = false;

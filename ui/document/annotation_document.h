@@ -20,6 +20,7 @@
 
 namespace sagrid {
 class SurfaceScene;
+struct PartEditSurface;
 }
 
 namespace sagrid::ui {
@@ -34,6 +35,8 @@ class AnnotationDocument {
   const Mesh& mesh() const { return *m_mesh; }
   std::shared_ptr<const Mesh> sharedMesh() const { return m_mesh; }
   const SurfaceScene& surface() const;  // built on first use
+  // The mesh welded for the part edits (Grow, Shrink, the brush); built on first use.
+  const PartEditSurface& partEditSurface() const;
   const ObjectLabels& labels() const { return m_labels; }
   const std::vector<AffordancePoint>& points() const { return m_labels.affordances; }
   const std::filesystem::path& labelsPath() const { return m_labelsPath; }
@@ -109,6 +112,7 @@ class AnnotationDocument {
 
   std::shared_ptr<const Mesh> m_mesh;
   mutable std::unique_ptr<SurfaceScene> m_surface;
+  mutable std::unique_ptr<PartEditSurface> m_partEditSurface;
   ObjectLabels m_labels;
   std::filesystem::path m_labelsPath;
   std::filesystem::path m_meshPath;

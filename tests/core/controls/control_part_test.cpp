@@ -284,11 +284,20 @@ TEST(ControlPartEdit, TheBrushTakesTheConnectedSurfaceAroundTheClickAndNothingBe
   EXPECT_GT(middle.size(), 4u);
   EXPECT_GT(large.size(), middle.size());
   for (int t : middle)
-    for (int v : flat.triangles[std::size_t(t)])
-      if (t != clicked) EXPECT_LE((flat.positions[std::size_t(v)] - hit).norm(), 0.05f);
+    for (int v : flat.triangles[std::size_t(t)]) {
+      if (t != clicked) {
+        EXPECT_LE((flat.positions[std::size_t(v)] - hit).norm(), 0.05f);
+      }
+    }
   // Brushing the middle away from the large one leaves a ring.
   const auto ring = brushedPart(flat, large, clicked, hit, 0.05f, false);
   EXPECT_EQ(ring.size(), large.size() - middle.size());
+  // One welded surface kept for many edits (as the GUI keeps one per mesh) edits as the mesh does.
+  const PartEditSurface surface(flat);
+  EXPECT_EQ(brushedPart(surface, {}, clicked, hit, 0.05f, true), middle);
+  EXPECT_EQ(brushedPart(surface, large, clicked, hit, 0.05f, false), ring);
+  EXPECT_EQ(grownPart(surface, middle), grownPart(flat, middle));
+  EXPECT_EQ(shrunkPart(surface, large), shrunkPart(flat, large));
 }
 
 }  // namespace
