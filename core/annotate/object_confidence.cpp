@@ -4,6 +4,7 @@
 #include <cmath>
 #include <fstream>
 #include <limits>
+#include <set>
 #include <sstream>
 
 #include "core/annotate/annotate.h"
@@ -131,8 +132,14 @@ ConfidenceCalibration readConfidenceCalibration(const std::filesystem::path& mod
   } catch (const nlohmann::json::exception& e) {
     throw FileError(file, e.what());
   }
-  if (c.networkWeights.empty() || model::listModelCards(modelsDir).empty()) return c;
-  const std::vector<std::string> stale = modelsOfOtherWeights(c, model::cardWeights(modelsDir));
+  if (c.networkWeights.empty()) return c;
+  std::map<std::string, std::string> cardWeights;
+  try {
+    cardWeights = model::cardWeights(modelsDir);
+  } catch (const Error&) {
+    return c;  // no cards beside it (a calibration written on its own) or none readable: nothing to compare
+  }
+  const std::vector<std::string> stale = modelsOfOtherWeights(c, cardWeights);
   if (stale.empty()) return c;
   std::string models;
   for (const auto& m : stale) models += (models.empty() ? "" : ", ") + m;
@@ -146,12 +153,15 @@ ConfidenceCalibration readConfidenceCalibration(const std::filesystem::path& mod
 
 std::vector<std::string> modelsOfOtherWeights(const ConfidenceCalibration& c,
                                               const std::map<std::string, std::string>& cardWeights) {
-  std::vector<std::string> stale;
+  if (c.networkWeights.empty()) return {};
+  std::set<std::string> stale;
   for (const auto& [model, weights] : c.networkWeights) {
     const auto card = cardWeights.find(model);
-    if (card == cardWeights.end() || card->second != weights) stale.push_back(model);
+    if (card == cardWeights.end() || card->second != weights) stale.insert(model);
   }
-  return stale;
+  for (const auto& [model, weights] : cardWeights)
+    if (!c.networkWeights.count(model)) stale.insert(model);
+  return {stale.begin(), stale.end()};
 }
 
 void writeConfidenceCalibration(const std::filesystem::path& modelsDir,

@@ -61,14 +61,16 @@ ConfidenceCalibration fitConfidence(const std::vector<double>& leastSureDistance
 
 nlohmann::json toJson(const ConfidenceCalibration& c);
 // Reads DIR/confidence.json; an unfitted calibration when the file is absent. Throws FileError
-// naming the file when it exists but is not a valid calibration. Where it records networks other
-// than the folder's cards (a folder mixing versions: the networks retrained, the calibration not),
-// its figures say nothing of these networks: a warning naming the file and the models, and the
-// calibration is not used (unfitted, flagged uncalibrated).
+// naming the file when it exists but is not a valid calibration. Where it records networks and the
+// folder's cards differ from them (a folder mixing versions: networks retrained, added or removed,
+// the calibration not), its figures say nothing of these networks: a warning naming the file and
+// the models, and the calibration is not used (unfitted, flagged uncalibrated). A folder without
+// readable cards is not compared.
 ConfidenceCalibration readConfidenceCalibration(const std::filesystem::path& modelsDir);
 
-// The models whose weights in `cardWeights` (model name -> weights identity) differ from those
-// `c` was fitted on; empty where it records none.
+// The models where `cardWeights` (model name -> weights identity) and the networks `c` was fitted
+// on differ: other weights, a model it was fitted on without a card, a card it was not fitted on.
+// Empty where `c` records no networks.
 std::vector<std::string> modelsOfOtherWeights(const ConfidenceCalibration& c,
                                               const std::map<std::string, std::string>& cardWeights);
 void writeConfidenceCalibration(const std::filesystem::path& modelsDir,

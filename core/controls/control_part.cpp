@@ -1,9 +1,11 @@
 #include "core/controls/control_part.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <map>
 
 #include "core/geometry/closest_point_on_triangle.h"
 #include "core/geometry/connected_parts.h"
@@ -44,8 +46,10 @@ constexpr float kContactShare = 0.1f;
 constexpr float kContactAgreement = 0.5f;
 // Touched normals within this many degrees of each other face as one panel.
 constexpr float kPanelConeDegrees = 10.0f;
-// The most cells a side of the grid a part's vertices are binned in for the contact search.
-constexpr float kGridCells = 32.0f;
+// A knob without a panel turns about its principal direction within this (cosine) of the way out.
+constexpr float kAxisOfShape = 0.8f;
+// Touched normals alike to this (per component of the unit normal) are counted as one.
+constexpr float kNormalBin = 0.01f;
 // A lever's held end this many times wider than its free end is a hub it turns with.
 constexpr float kHubShare = 2.0f;
 // A part whose faces' normals sum to more than this share of its area is an open sheet facing
@@ -211,11 +215,13 @@ Labelling labellingOf(const Surface& s, const TriangleComponents& c,
   return l;
 }
 
-// Whether `p` lies inside `component`: along the six axis directions from `p`, the surface first
-// met is the component's all ways but at most one (a knob open at its base, standing on a panel or
-// on what is not in the file).
+// Whether `p` lies well inside `component`: clear of every surface (by kTouchShare of the
+// object's diagonal: not a point on a face), and along the six axis directions from it the surface
+// first met is the component's all ways but at most one (a knob open at its base, standing on a
+// panel or on what is not in the file).
 bool surroundedBy(const SurfaceScene& scene, const TriangleComponents& c, int component,
                   const Eigen::Vector3f& p, float diagonal) {
+  if (!(scene.closestPoint(p).distance > kTouchShare * diagonal)) return false;
   int elsewhere = 0;
   for (int axis = 0; axis < 3; ++axis)
     for (const float sign : {1.0f, -1.0f}) {
@@ -228,7 +234,7 @@ bool surroundedBy(const SurfaceScene& scene, const TriangleComponents& c, int co
 
 // The point's part from one labelling of the triangles: the component it lies on with the small
 // components inside its box, each nearer this point than any other; none when that component is
-// too large or another point lies on it too.
+// too large (unless the point lies well inside it) or another point lies on it too.
 std::optional<std::vector<int>> componentPart(const Surface& s, const Labelling& l,
                                               const PointContext& ctx) {
   const std::vector<ComponentStats>& stats = l.stats;
@@ -246,10 +252,11 @@ std::optional<std::vector<int>> componentPart(const Surface& s, const Labelling&
   const auto seedIndex = static_cast<std::size_t>(seed);
   // A point inside a closed component (a large knob's centre) names that component, however large,
   // as long as it is no body (at most kMaxControlAreaShare of the area) and no other point's.
-  const bool enclosing = !foreign[seedIndex] &&
-                         stats[seedIndex].area <= kMaxControlAreaShare * s.totalArea &&
-                         surroundedBy(ctx.scene, l.components, seed, ctx.points[ctx.index], s.diagonal);
-  if (!small(seedIndex) && !enclosing) return std::nullopt;
+  const auto enclosing = [&] {
+    return !foreign[seedIndex] && stats[seedIndex].area <= kMaxControlAreaShare * s.totalArea &&
+           surroundedBy(ctx.scene, l.components, seed, ctx.points[ctx.index], s.diagonal);
+  };
+  if (!small(seedIndex) && !enclosing()) return std::nullopt;
   // What belongs with it lies within its box grown a little: a pointer, a cap, a ring; not a bar
   // or a rail it is mounted on.
   Eigen::AlignedBox3f reach = stats[seedIndex].box;
@@ -363,14 +370,15 @@ std::optional<Eigen::Vector3f> awayFromHolder(const Surface& s, const std::vecto
   return out.normalized();
 }
 
-// Points binned in a grid over their box with cells at least `cell` across (at most kGridCells a
-// side), so that what lies near a small box is found without looking at every point.
+// Points binned in a grid over their box with cells `cell` across, so that what lies near a small
+// box is found without looking at every point. The caller keeps the cells few (the contact search:
+// a tenth of the part's diagonal, at most about ten a side).
 class VertexGrid {
  public:
   VertexGrid(const std::vector<Eigen::Vector3f>& points, const Eigen::AlignedBox3f& box, float cell)
       : m_origin(box.min()) {
     const Eigen::Vector3f extent = box.sizes();
-    m_cell = std::max({cell, extent.maxCoeff() / kGridCells, 1e-12f});
+    m_cell = std::max(cell, 1e-12f);
     for (int a = 0; a < 3; ++a) m_dims[a] = std::max(1, static_cast<int>(std::ceil(extent[a] / m_cell)));
     m_cells.resize(static_cast<std::size_t>(m_dims.prod()));
     for (std::size_t i = 0; i < points.size(); ++i)
@@ -404,7 +412,7 @@ class VertexGrid {
 // The normal of the panel a part stands on: of the surface apart from the part that its vertices
 // touch (within kContactShare of the part's size), each touched triangle's normal turned towards
 // the part and counted once per vertex touching it, the way most of the contact faces (the mean of
-// the normals within kPanelCone of the one with most such contact: the panel, not the sides of a
+// the normals within kPanelConeDegrees of the one with most such contact: the panel, not the sides of a
 // ring or bezel around the part). None where nothing touches it or the touched normals cancel (a
 // part held all round).
 std::optional<Eigen::Vector3f> standingNormal(const Surface& s, const std::vector<bool>& inPart,
@@ -413,13 +421,15 @@ std::optional<Eigen::Vector3f> standingNormal(const Surface& s, const std::vecto
   if (vertices.empty()) return std::nullopt;
   Eigen::AlignedBox3f box;
   for (const auto& v : vertices) box.extend(v);
+  if (!box.min().allFinite() || !box.max().allFinite()) return std::nullopt;
   const float touch = std::max(kContactShare * box.diagonal().norm(), 1e-6f * s.diagonal);
   Eigen::AlignedBox3f near = box;
   near.min().array() -= touch, near.max().array() += touch;
   const VertexGrid grid(vertices, box, touch);
   Eigen::Vector3f sum = Eigen::Vector3f::Zero();
   float count = 0;
-  std::vector<std::pair<Eigen::Vector3f, float>> touched;  // a triangle's normal, vertices touching it
+  std::vector<std::pair<Eigen::Vector3f, float>> touched;  // a normal, vertices touching triangles so facing
+  std::map<std::array<int, 3>, std::size_t> bins;         // a binned normal -> its entry in `touched`
   for (std::size_t t = 0; t < s.valid.size(); ++t) {
     if (!s.valid[t] || inPart[t]) continue;
     Eigen::AlignedBox3f triangle;
@@ -437,8 +447,18 @@ std::optional<Eigen::Vector3f> standingNormal(const Surface& s, const std::vecto
     });
     if (touches == 0) continue;
     sum += touches * normal, count += touches;
-    touched.emplace_back(normal, touches);
+    // Triangles facing alike (a flat panel's, to kNormalBin) count as one normal: the search below
+    // is quadratic in the normals kept.
+    const Eigen::Vector3i bin = (normal / kNormalBin).array().round().cast<int>();
+    const auto [at, added] = bins.emplace(std::array<int, 3>{bin.x(), bin.y(), bin.z()}, touched.size());
+    if (added) {
+      touched.emplace_back(touches * normal, touches);
+    } else {
+      touched[at->second].first += touches * normal;
+      touched[at->second].second += touches;
+    }
   }
+  for (auto& [normal, touches] : touched) normal.normalize();
   if (count == 0 || sum.norm() < kContactAgreement * count) return std::nullopt;
   const float cone = std::cos(kPanelConeDegrees * static_cast<float>(M_PI) / 180.0f);
   float most = 0;
@@ -555,10 +575,21 @@ ControlPart describe(const Surface& s, std::vector<int> triangles, PartOrigin or
     part.motion = ControlMotion::Button;
     part.axis = pressDirection(s, triangles, shape, held);
   } else {
-    // A knob turns about the normal of the panel it stands on; where the panel cannot be told,
-    // out of the nearest surface apart from it.
+    // A knob turns about the normal of the panel it stands on; where the panel cannot be told (it
+    // touches nothing, or is held all round), about its own principal direction nearest the way
+    // out of the nearest surface apart from it, else that way.
     part.motion = ControlMotion::Knob;
-    part.axis = standingNormal(s, inPart, vertices, centre).value_or(out).normalized();
+    if (const auto panel = standingNormal(s, inPart, vertices, centre)) {
+      part.axis = *panel;
+    } else {
+      part.axis = out.normalized();
+      float best = kAxisOfShape;
+      for (int i = 0; i < 3; ++i) {
+        const Eigen::Vector3f d = shape.directions.col(i).normalized();
+        const float c = std::abs(d.dot(out));
+        if (c > best) best = c, part.axis = d.dot(out) < 0 ? Eigen::Vector3f(-d) : d;
+      }
+    }
   }
   part.triangles = std::move(triangles);
   return part;

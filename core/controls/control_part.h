@@ -1,12 +1,13 @@
 // The part of the mesh a toggle button point switches with, and how it moves: a rotary knob
-// turns about its axis of rotational symmetry, a lever about its pivot at the held end, a push
-// button or touch key slides along its normal. One mechanism for every file: the part is the
+// turns about the normal of the panel it stands on, a lever about its pivot at the held end, a
+// push button or touch key slides along its normal. One mechanism for every file: the part is the
 // small component of the point's material it lies on (with the small components inside its box:
 // a knob's pointer, its cap), else the same over connected triangles whatever their material,
 // else the surface grown around the point up to where it stops standing out of the panel; a point
 // on nothing that stands out (a key printed on glass) gets a thin disc. A component is small when
 // no other point lies on it, it is nearer this point than any other and holds little of the
-// object.
+// object; one the point lies well inside (a large knob labelled at its centre) is taken however
+// large, if no other point lies on it and it holds at most kMaxControlAreaShare of the surface.
 // Everything in the mesh's z-up frame and units.
 #pragma once
 

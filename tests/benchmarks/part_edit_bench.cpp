@@ -33,7 +33,8 @@ const Click& clickOn(int i) {
   click.mesh = sagrid::importMesh(sagrid::bench::denseCopy(i));
   const auto labels =
       sagrid::readLabels(sagrid::bench::realDevMesh(i).parent_path() / "labels.json");
-  Eigen::Vector3f point = labels.affordances.front().position;
+  Eigen::Vector3f point = labels.affordances.empty() ? Eigen::Vector3f(click.mesh.bounds().center())
+                                                     : labels.affordances.front().position;
   for (const auto& a : labels.affordances)
     if (a.type == "togglebutton") {
       point = a.position;

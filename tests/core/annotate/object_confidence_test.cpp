@@ -103,6 +103,14 @@ TEST(ObjectConfidence, ACalibrationOfOtherNetworksThanTheCardsIsNotUsed) {
   c.networkWeights = {{"stove.heatsource", weights}};  // a model the folder has no card of
   writeConfidenceCalibration(dir, c);
   EXPECT_FALSE(readConfidenceCalibration(dir).fitted);
+  // A card it was not fitted on (a model added to the folder) changes the predictions too.
+  c.networkWeights = {{"sink.fluidsource", weights}};
+  EXPECT_EQ(modelsOfOtherWeights(c, {{"sink.fluidsource", weights}, {"stove.heatsource", weights}}),
+            std::vector<std::string>{"stove.heatsource"});
+  // Written on its own (scorer cv's OUT, eval --fit-confidence DIR): no cards, nothing to compare.
+  const auto alone = test::freshTempDir("confidence-alone");
+  writeConfidenceCalibration(alone, c);
+  EXPECT_TRUE(readConfidenceCalibration(alone).fitted);
   // Network weights that are not names to identities: one error naming the file.
   std::ofstream(dir / kConfidenceFile)
       << R"({"schema": "sagrid.confidence/1", "intercept": 1, "slope": 1, "network_weights": [1]})";
