@@ -71,7 +71,8 @@ struct Surface {
 
   explicit Surface(const Mesh& m) : mesh(m) {
     const std::size_t n = m.triangles.size();
-    centroids.resize(n), areas.assign(n, 0.0f), valid.assign(n, false);
+    areas = triangleAreas(m);  // 0 where a corner is missing
+    centroids.resize(n), valid.assign(n, false);
     for (std::size_t t = 0; t < n; ++t) {
       const Eigen::Vector3i& tri = m.triangles[t];
       bool ok = true;
@@ -79,11 +80,7 @@ struct Surface {
         ok = ok && tri[c] >= 0 && static_cast<std::size_t>(tri[c]) < m.positions.size();
       if (!ok) continue;
       valid[t] = true;
-      const auto& a = corner(t, 0);
-      const auto& b = corner(t, 1);
-      const auto& c = corner(t, 2);
-      centroids[t] = (a + b + c) / 3.0f;
-      areas[t] = 0.5f * (b - a).cross(c - a).norm();
+      centroids[t] = (corner(t, 0) + corner(t, 1) + corner(t, 2)) / 3.0f;
       totalArea += areas[t];
     }
     const Eigen::AlignedBox3f box = m.bounds();

@@ -2,9 +2,9 @@
 
 #include <algorithm>
 #include <array>
-#include <map>
-#include <iterator>
 #include <cmath>
+#include <iterator>
+#include <map>
 #include <sstream>
 
 #include "core/common/error.h"

@@ -2,8 +2,9 @@
 // object of the session's queue that the marks name (by its folder, as datasets lay objects out),
 // each listed toggle button point is selected and its control confirmed as found ("keep") or
 // reshaped by brush strokes, as the Points panel's Keep button and the viewport's brush do, then
-// its axis set if given; or every control is kept, or given one's axis, in one step. The marks are written as a person would make them, looking at each part
-// in the GUI; kept in the repository, they make the hand-marked parts reproducible.
+// its axis set if given; or every control is kept, or given one's axis, in one step. The marks
+// are written as a person would make them, looking at each part in the GUI; kept in the
+// repository, they make the hand-marked parts reproducible.
 //
 // Marks file (JSON):
 //   {"objects": {"<object folder>": [

@@ -5,8 +5,8 @@
 
 #include "core/annotate/suggested_points.h"
 #include "core/annotate/units_record.h"
-#include "core/controls/control_part_edit.h"
 #include "core/common/log.h"
+#include "core/controls/control_part_edit.h"
 #include "core/geometry/surface_scene.h"
 #include "core/grid/voxelize.h"
 #include "ui/document/point_commands.h"

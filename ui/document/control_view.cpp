@@ -29,8 +29,12 @@ struct FoundCache {
 FoundCache& cacheFor(const AnnotationDocument& document) {
   static FoundCache cache;
   if (cache.document != &document || cache.revision != document.revision() ||
-      cache.labels != document.labelsPath())
-    cache = FoundCache{&document, document.revision(), document.labelsPath(), {}, {}, {}, false, {}};
+      cache.labels != document.labelsPath()) {
+    cache = FoundCache{};
+    cache.document = &document;
+    cache.revision = document.revision();
+    cache.labels = document.labelsPath();
+  }
   return cache;
 }
 

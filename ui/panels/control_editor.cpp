@@ -87,12 +87,16 @@ void brushControls(Session& session) {
 // Grow or shrink the part by one ring of triangles, or brush it in the viewport (its motion found
 // again from its new shape); or put the pivot at the point itself.
 void partButtons(Session& session, int index, ShownControl shown) {
-  const PartEditSurface& surface = session.document()->partEditSurface();
+  // The welded surface is asked for only on a click: drawing the panel welds nothing.
   if (ImGui::Button("Grow"))
-    reshapeControlPart(session, index, grownPart(surface, shown.part.triangles), "part grown");
+    reshapeControlPart(session, index,
+                       grownPart(session.document()->partEditSurface(), shown.part.triangles),
+                       "part grown");
   ImGui::SameLine();
   if (ImGui::Button("Shrink"))
-    reshapeControlPart(session, index, shrunkPart(surface, shown.part.triangles), "part shrunk");
+    reshapeControlPart(session, index,
+                       shrunkPart(session.document()->partEditSurface(), shown.part.triangles),
+                       "part shrunk");
   ImGui::SameLine();
   if (ImGui::Button("Pivot at the point")) {
     shown.part.pivot = session.document()->pointInView(index);
