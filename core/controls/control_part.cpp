@@ -1,6 +1,8 @@
 #include "core/controls/control_part.h"
 
 #include <algorithm>
+#include <cstdlib>
+#include <cstdio>
 #include <array>
 #include <cmath>
 #include <functional>
@@ -406,19 +408,24 @@ class VertexGrid {
   std::vector<std::vector<int>> m_cells;
 };
 
-// The normal of the panel a part stands on: of the surface apart from the part that its vertices
-// touch (within kContactShare of the part's size), each touched triangle's normal turned towards
-// the part and counted once per vertex touching it, the way most of the contact faces (the mean of
-// the normals within kPanelConeDegrees of the one with most such contact: the panel, not the sides of a
-// ring or bezel around the part). None where nothing touches it or the touched normals cancel (a
-// part held all round).
-std::optional<Eigen::Vector3f> standingNormal(const Surface& s, const std::vector<bool>& inPart,
-                                              const std::vector<Eigen::Vector3f>& vertices,
-                                              const Eigen::Vector3f& centre) {
-  if (vertices.empty()) return std::nullopt;
+// How a part touches the surface apart from it (within kContactShare of the part's size).
+struct PartContact {
+  // The normal of the panel it stands on: each touched triangle's normal turned towards the part
+  // and counted once per vertex touching it, the way most of the contact faces (the mean of the
+  // normals within kPanelConeDegrees of the one with most such contact: the panel, not the sides
+  // of a ring or bezel around the part). None where nothing touches it or the touched normals
+  // cancel (a part held all round).
+  std::optional<Eigen::Vector3f> panel;
+  float touchingShare = 0;  // of the part's vertices, those touching it
+};
+
+PartContact contactOf(const Surface& s, const std::vector<bool>& inPart,
+                      const std::vector<Eigen::Vector3f>& vertices, const Eigen::Vector3f& centre) {
+  PartContact contact;
+  if (vertices.empty()) return contact;
   Eigen::AlignedBox3f box;
   for (const auto& v : vertices) box.extend(v);
-  if (!box.min().allFinite() || !box.max().allFinite()) return std::nullopt;
+  if (!box.min().allFinite() || !box.max().allFinite()) return contact;
   const float touch = std::max(kContactShare * box.diagonal().norm(), 1e-6f * s.diagonal);
   Eigen::AlignedBox3f near = box;
   near.min().array() -= touch, near.max().array() += touch;
@@ -427,6 +434,7 @@ std::optional<Eigen::Vector3f> standingNormal(const Surface& s, const std::vecto
   float count = 0;
   std::vector<std::pair<Eigen::Vector3f, float>> touched;  // a normal, vertices touching triangles so facing
   std::map<std::array<int, 3>, std::size_t> bins;         // a binned normal -> its entry in `touched`
+  std::vector<bool> touching(vertices.size(), false);
   for (std::size_t t = 0; t < s.valid.size(); ++t) {
     if (!s.valid[t] || inPart[t]) continue;
     Eigen::AlignedBox3f triangle;
@@ -440,7 +448,7 @@ std::optional<Eigen::Vector3f> standingNormal(const Surface& s, const std::vecto
     triangle.min().array() -= touch, triangle.max().array() += touch;
     grid.forEachWithin(triangle, [&](int v) {
       const Eigen::Vector3f& p = vertices[static_cast<std::size_t>(v)];
-      if ((s.closestOn(t, p) - p).norm() <= touch) ++touches;
+      if ((s.closestOn(t, p) - p).norm() <= touch) ++touches, touching[static_cast<std::size_t>(v)] = true;
     });
     if (touches == 0) continue;
     sum += touches * normal, count += touches;
@@ -456,18 +464,21 @@ std::optional<Eigen::Vector3f> standingNormal(const Surface& s, const std::vecto
     }
   }
   for (auto& [normal, touches] : touched) normal.normalize();
-  if (count == 0 || sum.norm() < kContactAgreement * count) return std::nullopt;
+  contact.touchingShare = static_cast<float>(std::count(touching.begin(), touching.end(), true)) /
+                          static_cast<float>(vertices.size());
+  if (count == 0 || sum.norm() < kContactAgreement * count) return contact;
   const float cone = std::cos(kPanelConeDegrees * static_cast<float>(M_PI) / 180.0f);
   float most = 0;
   Eigen::Vector3f panel = sum;
   for (const auto& [normal, touches] : touched) {
-    float contact = 0;
+    float alikeTouches = 0;
     Eigen::Vector3f alike = Eigen::Vector3f::Zero();
     for (const auto& [other, otherTouches] : touched)
-      if (normal.dot(other) >= cone) contact += otherTouches, alike += otherTouches * other;
-    if (contact > most) most = contact, panel = alike;
+      if (normal.dot(other) >= cone) alikeTouches += otherTouches, alike += otherTouches * other;
+    if (alikeTouches > most) most = alikeTouches, panel = alike;
   }
-  return panel.normalized();
+  contact.panel = panel.normalized();
+  return contact;
 }
 
 // A part's vertices, their principal shape and the way it stands out of what holds it.
@@ -516,15 +527,21 @@ ControlPart describe(const Surface& s, std::vector<int> triangles, PartOrigin or
   const std::vector<bool>& inPart = partShape.inPart;
   const std::optional<Eigen::Vector3f>& held = partShape.held;
   // Held by nothing apart: its thinnest direction.
+  // The way it stands out of what holds it: away from the nearest surface apart from it, else
+  // (held by nothing apart) its thinnest direction. Its shape is judged across the normal of the
+  // panel it stands on where one is found (the nearest point of what holds it can lie on a bezel
+  // or an edge beside the part: a round knob then looks long across that way).
   const Eigen::Vector3f out = held.value_or(Eigen::Vector3f(shape.directions.col(2).normalized()));
+  const std::optional<Eigen::Vector3f> panel = contactOf(s, inPart, vertices, centre).panel;
+  const Eigen::Vector3f standing = panel ? (panel->dot(out) < 0 ? Eigen::Vector3f(-*panel) : *panel) : out;
 
-  // Height along `out` and the shape across it.
+  // Height along `standing` and the shape across it.
   float low = std::numeric_limits<float>::infinity(), high = -low;
   std::vector<Eigen::Vector3f> across;
   for (const auto& v : vertices) {
-    const float h = (v - centre).dot(out);
+    const float h = (v - centre).dot(standing);
     low = std::min(low, h), high = std::max(high, h);
-    across.push_back(v - h * out);
+    across.push_back(v - h * standing);
   }
   const Principal flat = principalOf(across);
   float radius = 0;
@@ -576,7 +593,7 @@ ControlPart describe(const Surface& s, std::vector<int> triangles, PartOrigin or
     // touches nothing, or is held all round), about its own principal direction nearest the way
     // out of the nearest surface apart from it, else that way.
     part.motion = ControlMotion::Knob;
-    if (const auto panel = standingNormal(s, inPart, vertices, centre)) {
+    if (panel) {
       part.axis = *panel;
     } else {
       part.axis = out.normalized();

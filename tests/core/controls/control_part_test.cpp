@@ -218,6 +218,22 @@ TEST(ControlParts, AKnobBesideABlockTurnsAboutThePanelNotTheBlock) {
   EXPECT_GT(found.parts[0]->axis.z(), 0.999f);
 }
 
+TEST(ControlParts, AKnobIsJudgedRoundOrLongAcrossThePanelItStandsOn) {
+  // A flat square knob cap with its grip bar in another material standing through its middle: the
+  // surface nearest the cap's centre is the bar's side, and across that way the cap looks four
+  // times longer than high (a lever). Across the panel it stands on it is round: a knob turning
+  // about the panel's normal.
+  Mesh mesh = panel();
+  mesh.materials.resize(3);
+  const auto cap = addPart(mesh, test::box({-0.02f, -0.02f, 0.0f}, {0.02f, 0.02f, 0.01f}), 1);
+  addPart(mesh, test::box({-0.001f, -0.02f, 0.0f}, {0.001f, 0.02f, 0.025f}), 2);
+  const ControlParts found = findControlParts(mesh, {{0.012f, 0.012f, 0.01f}});
+  ASSERT_TRUE(found.parts[0]);
+  EXPECT_EQ(found.parts[0]->triangles, cap);
+  EXPECT_EQ(found.parts[0]->motion, ControlMotion::Knob);
+  EXPECT_GT(std::abs(found.parts[0]->axis.z()), 0.999f);
+}
+
 TEST(ControlParts, NoPointsAndNoSurfaceAreNotErrors) {
   EXPECT_TRUE(findControlParts(panel(), {}).parts.empty());
   const ControlParts none = findControlParts(Mesh(), {{0, 0, 0}});
