@@ -67,8 +67,9 @@ void setupEval(CLI::App& root) {
                "Instead of models: the control parts annotate finds at the curated toggle points "
                "against the controls the curator confirmed in the GUI (kept, reshaped with the "
                "brush, Grow or Shrink, or given an axis, motion, pivot or burner) in --data's "
-               "labels: triangle IoU by area and axis angle per part; writes OUT/parts.md and "
-               ".json");
+               "labels: triangle IoU by area and axis angle per part, and for a knob the angle "
+               "between the mark and the knob's own axis of rotational symmetry; writes "
+               "OUT/parts.md and .json");
   cmd->add_option("--models", o->models, "Model folder (default resources/models)");
   cmd->add_option("--out", o->out, "Report folder (default eval)");
   cmd->add_option("--compare", o->compare,

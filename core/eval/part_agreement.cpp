@@ -10,6 +10,7 @@
 #include "core/common/error.h"
 #include "core/controls/control_part.h"
 #include "core/controls/control_record.h"
+#include "core/controls/control_symmetry.h"
 #include "core/dataset/object_source.h"
 #include "core/labels/labels.h"
 #include "core/mesh/mesh_import.h"
@@ -72,6 +73,12 @@ PartAgreementReport measurePartAgreement(const std::vector<DatasetEntry>& entrie
         a.source = source;
         a.point = static_cast<int>(toggles[k]) + 1;
         a.motion = toString(marked.motion);
+        if (marked.motion == ControlMotion::Knob) {
+          if (const auto own = revolutionAxis(mesh, marked.triangles)) {
+            a.markOffOwnAxisDegrees = lineAngleDegrees(own->axis, marked.axis);
+            a.ownAxisMisfit = own->misfit;
+          }
+        }
         if (found.parts[k]) {
           a.found = toString(found.parts[k]->origin);
           a.iou = areaIou(found.parts[k]->triangles, marked.triangles, area);
@@ -113,20 +120,35 @@ std::string partAgreementMarkdown(const PartAgreementReport& r) {
   for (const auto& [source, row] : bySource)
     md << "| " << source << " | " << static_cast<int>(row[0]) << " | " << row[1] / row[0] << " | "
        << 100 * row[2] / row[0] << " % |\n";
-  md << "\n| object | source | point | curator's motion | found as | IoU | axis (deg) |\n"
-     << "|---|---|---:|---|---|---:|---:|\n";
+  md << "\n| object | source | point | curator's motion | found as | IoU | axis (deg) | mark vs "
+        "the knob's own axis (deg) | own-axis misfit |\n"
+     << "|---|---|---:|---|---|---:|---:|---:|---:|\n";
+  const auto optional = [](const std::optional<double>& v, int digits) {
+    if (!v) return std::string("-");
+    std::ostringstream o;
+    o.setf(std::ios::fixed);
+    o.precision(digits);
+    o << *v;
+    return o.str();
+  };
   for (const PartAgreement& a : r.points)
     md << "| " << a.object << " | " << a.source << " | " << a.point << " | " << a.motion << " | "
-       << a.found << " | " << a.iou << " | " << a.axisDegrees << " |\n";
+       << a.found << " | " << a.iou << " | " << a.axisDegrees << " | "
+       << optional(a.markOffOwnAxisDegrees, 2) << " | " << optional(a.ownAxisMisfit, 3) << " |\n";
   for (const std::string& s : r.skipped) md << "\nSkipped: " << s << "\n";
   return md.str();
 }
 
 nlohmann::json toJson(const PartAgreementReport& r) {
   nlohmann::json points = nlohmann::json::array();
-  for (const PartAgreement& a : r.points)
-    points.push_back({{"object", a.object}, {"point", a.point}, {"motion", a.motion},
-                      {"source", a.source}, {"found", a.found}, {"iou", a.iou}, {"axis_degrees", a.axisDegrees}});
+  for (const PartAgreement& a : r.points) {
+    nlohmann::json p = {{"object", a.object}, {"point", a.point}, {"motion", a.motion},
+                        {"source", a.source}, {"found", a.found}, {"iou", a.iou},
+                        {"axis_degrees", a.axisDegrees}};
+    if (a.markOffOwnAxisDegrees) p["mark_off_own_axis_degrees"] = *a.markOffOwnAxisDegrees;
+    if (a.ownAxisMisfit) p["own_axis_misfit"] = *a.ownAxisMisfit;
+    points.push_back(p);
+  }
   return {{"objects", r.objects},
           {"confirmed_parts", r.points.size()},
           {"mean_iou", r.meanIou},

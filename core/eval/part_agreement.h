@@ -6,9 +6,11 @@
 // the exports do, every toggle point of the object told apart) against the marked one: the
 // triangle IoU by area and the angle between their axes (as lines: a knob turned either way is
 // the same joint). Reported per source too, so that a rule judged on some sources is seen on the
-// others.
+// others. For a marked knob also how far the curator's axis lies from the knob's own axis of
+// rotational symmetry: a mark picked among the view's axes for a knob on a sloped panel shows.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -26,6 +28,11 @@ struct PartAgreement {
   std::string motion;       // the curator's part's motion
   double iou = 0;           // by area; 0 when none was found
   double axisDegrees = 90;  // between the axes as lines; 90 when none was found
+  // A knob's check on its mark (core/controls/control_symmetry.h): the angle between the
+  // curator's axis and the marked part's own axis of rotational symmetry, and how nearly the part
+  // is a body of revolution about that own axis (its misfit). Unset for levers and buttons.
+  std::optional<double> markOffOwnAxisDegrees;
+  std::optional<double> ownAxisMisfit;
 };
 
 struct PartAgreementReport {

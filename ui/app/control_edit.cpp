@@ -5,6 +5,7 @@
 
 #include "core/controls/control_part_edit.h"
 #include "core/controls/control_record.h"
+#include "core/controls/control_symmetry.h"
 #include "core/geometry/surface_scene.h"
 #include "ui/app/session.h"
 #include "ui/document/command.h"
@@ -60,6 +61,18 @@ std::size_t confirmEveryControl(Session& session, int axisOf) {
                    : "every control kept",
         std::move(steps)));
   return written;
+}
+
+bool setOwnAxis(Session& session, int index) {
+  const AnnotationDocument* doc = session.document();
+  if (!doc) return false;
+  std::optional<ShownControl> shown = shownControl(*doc, index);
+  if (!shown) return false;
+  const auto own = revolutionAxis(doc->mesh(), shown->part.triangles);
+  if (!own) return false;
+  shown->part.axis = own->axis.dot(shown->part.axis) < 0 ? Eigen::Vector3f(-own->axis) : own->axis;
+  setControlRecord(session, index, *shown, "its own axis");
+  return true;
 }
 
 bool reshapeControlPart(Session& session, int index, std::vector<int> triangles,

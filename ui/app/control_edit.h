@@ -35,6 +35,11 @@ void setControlRecord(Session& session, int index, const ShownControl& shown, co
 // its panel). Returns how many records were written.
 std::size_t confirmEveryControl(Session& session, int axisOf = -1);
 
+// Point `index`'s axis set to its part's axis of rotational symmetry (core/controls/
+// control_symmetry.h: a knob leaning with a sloped panel), pointing the way the shown axis did;
+// one undoable step. False when the point has no part with area.
+bool setOwnAxis(Session& session, int index);
+
 // Gives point `index` (a toggle button) the part of `triangles` (mesh indices); nothing when they
 // are empty or the part's already. Returns whether a command ran.
 bool reshapeControlPart(Session& session, int index, std::vector<int> triangles,

@@ -42,12 +42,13 @@ bool stroke(Session& session, const nlohmann::json& s, const std::string& source
 }
 
 bool setAxis(Session& session, int index, const std::string& axis, const std::string& source) {
+  if (axis == "own") return setOwnAxis(session, index);
   std::optional<ShownControl> shown = shownControl(*session.document(), index);
   if (!shown) return false;
   if (axis == "flip") shown->part.axis = -shown->part.axis;
   else if (axis == "x" || axis == "y" || axis == "z")
     shown->part.axis = Eigen::Vector3f::Unit(axis[0] - 'x');
-  else throw FileError(source, "an axis must be flip, x, y or z, not " + axis);
+  else throw FileError(source, "an axis must be flip, x, y, z or own, not " + axis);
   setControlRecord(session, index, *shown, "axis " + axis);
   return true;
 }

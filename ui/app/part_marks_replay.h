@@ -10,14 +10,15 @@
 //   {"objects": {"<object folder>": [
 //      {"point": 3, "keep": true},
 //      {"point": 4, "strokes": [{"at": [x, y, z], "radius_cm": 2.5, "mode": "replace"}, ...],
-//       "axis": "flip" | "x" | "y" | "z"},
+//       "axis": "flip" | "x" | "y" | "z" | "own"},
 //      {"keep_all": true},                               every control kept as shown (Keep all)
 //      {"point": 5, "axis": "z", "for_all": true}]}}     its axis, then This axis for all
 // (a knob row shares its panel: every control moving as point 5 does gets its axis).
 // `at` in the mesh file's frame and units (the nearest surface point is clicked); `radius_cm` the
 // brush's (default 1.5); `mode` replace (the brushed surface alone, Alt+click), add (click, the
 // default) or away (Ctrl+click). The axis letters are the GUI's view axes (z up, as its axis
-// buttons), not the file's: in a y-up file "z" is the file's y.
+// buttons), not the file's: in a y-up file "z" is the file's y. "own" is the part's own axis of
+// rotational symmetry (the panel's "own" button; core/controls/control_symmetry.h).
 #pragma once
 
 #include <cstddef>

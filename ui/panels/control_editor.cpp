@@ -45,6 +45,12 @@ void axisButtons(Session& session, int index, ShownControl shown) {
     }
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Axis along the view's %s (z up)", names[a]);
   }
+  if (shown.part.triangles.empty()) return;  // a disc: nothing to find its own axis on
+  ImGui::SameLine();
+  if (ImGui::SmallButton("own")) setOwnAxis(session, index);
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("Axis of the part's own rotational symmetry (a knob leaning with a sloped "
+                      "panel turns about it, not about a view axis)");
 }
 
 // The burner a stove knob lights: one of the heat source points, or none.

@@ -102,6 +102,13 @@ TEST(PartAgreement, AMarkedPartEqualToTheFoundOneAgreesAndAHalfKnobDoesNot) {
             std::string::npos)
       << partAgreementMarkdown(r);
   EXPECT_EQ(toJson(r).at("confirmed_parts"), 2);
+  // Each marked knob is checked against its own axis of rotational symmetry: the whole square
+  // knob's is straight up, as marked; the half knob was given a sideways axis.
+  ASSERT_TRUE(r.points[0].markOffOwnAxisDegrees && r.points[0].ownAxisMisfit);
+  EXPECT_LT(*r.points[0].markOffOwnAxisDegrees, 5.0) << partAgreementMarkdown(r);
+  ASSERT_TRUE(r.points[1].markOffOwnAxisDegrees);
+  EXPECT_GT(*r.points[1].markOffOwnAxisDegrees, 45.0) << partAgreementMarkdown(r);
+  EXPECT_TRUE(toJson(r).at("points")[0].contains("mark_off_own_axis_degrees"));
 
   // An object that cannot be read is named, not thrown.
   std::ofstream(root / "unmarked" / "labels.json") << "{ not json";

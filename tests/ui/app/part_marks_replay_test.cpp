@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <fstream>
 
 #include "core/common/error.h"
@@ -17,6 +18,17 @@ namespace sagrid::ui {
 namespace {
 namespace fs = std::filesystem;
 
+// labels.json of a z-up stove whose mesh is mesh.obj, with `points`.
+void writeStoveLabels(const fs::path& dir, std::vector<AffordancePoint> points) {
+  ObjectLabels labels;
+  labels.object.id = dir.filename().string();
+  labels.object.mesh = "mesh.obj";
+  labels.object.category = "stove";
+  labels.object.up = "z";
+  labels.affordances = std::move(points);
+  writeLabels(dir / "labels.json", labels);
+}
+
 // A 1 m plate with a separate 30 x 30 x 20 cm block on it; toggle buttons on the block's top and
 // on the plate's corner, a heat source in between.
 void writeObject(const fs::path& dir) {
@@ -27,18 +39,12 @@ void writeObject(const fs::path& dir) {
          "v 0.1 -0.4 0\nv 0.4 -0.4 0\nv 0.4 -0.1 0\nv 0.1 -0.1 0\n"
          "f 5 6 7\nf 5 7 8\nf 9 10 6\nf 9 6 5\nf 10 11 7\nf 10 7 6\nf 11 12 8\nf 11 8 7\nf 12 9 5\nf 12 5 8\n";
   obj.close();
-  ObjectLabels labels;
-  labels.object.id = dir.filename().string();
-  labels.object.mesh = "mesh.obj";
-  labels.object.category = "stove";
-  labels.object.up = "z";
   AffordancePoint knob, corner, heat;
   knob.type = corner.type = "togglebutton";
   knob.position = {0.25f, -0.25f, 0.2f};
   corner.position = {-0.45f, 0.45f, 0.0f};
   heat.type = "heatsource";
-  labels.affordances = {knob, heat, corner};
-  writeLabels(dir / "labels.json", labels);
+  writeStoveLabels(dir, {knob, heat, corner});
 }
 
 std::optional<ControlRecord> recordOf(const fs::path& dir, int index) {
@@ -143,6 +149,62 @@ TEST(PartMarksReplay, KeepAllAndOneAxisForAllAreOneStepEach) {
       R"({"objects": {"a": [{"point": 1, "axis": "y", "for_all": true}]}})");
   replayPartMarks(session, axis, "marks.json");
   EXPECT_TRUE(recordOf(dir / "queue" / "a", 0)->part.axis.isApprox(Eigen::Vector3f::UnitY()));
+}
+
+// A 1 m plate with a round knob (4 cm across, 2 cm tall, 32 sides) leaning 20 degrees about x,
+// as on a sloped control panel; one toggle button on its top.
+void writeLeaningKnob(const fs::path& dir) {
+  fs::create_directories(dir);
+  std::ofstream obj(dir / "mesh.obj");
+  obj << "v -0.5 -0.5 0\nv 0.5 -0.5 0\nv 0.5 0.5 0\nv -0.5 0.5 0\nf 1 2 3\nf 1 3 4\n";
+  const double lean = 20.0 * M_PI / 180.0;
+  const auto vertex = [&](double x, double y, double z) {  // turned about x, standing on the plate
+    obj << "v " << x << " " << y * std::cos(lean) - z * std::sin(lean) << " "
+        << y * std::sin(lean) + z * std::cos(lean) + 0.01 << "\n";
+  };
+  const int n = 32;
+  for (int k = 0; k < 2; ++k)
+    for (int i = 0; i < n; ++i)
+      vertex(0.02 * std::cos(2 * M_PI * i / n), 0.02 * std::sin(2 * M_PI * i / n), 0.02 * k);
+  vertex(0, 0, 0);
+  vertex(0, 0, 0.02);
+  for (int i = 0; i < n; ++i) {  // OBJ indices after the plate's 4
+    const int a = 5 + i, b = 5 + (i + 1) % n, c = 5 + n + (i + 1) % n, d = 5 + n + i;
+    obj << "f " << a << " " << b << " " << c << "\nf " << a << " " << c << " " << d << "\n"
+        << "f " << 5 + 2 * n << " " << b << " " << a << "\nf " << 6 + 2 * n << " " << d << " " << c << "\n";
+  }
+  obj.close();
+  AffordancePoint knob;
+  knob.type = "togglebutton";
+  knob.position = {0.0f, static_cast<float>(-0.02 * std::sin(lean)),
+                   static_cast<float>(0.02 * std::cos(lean) + 0.01)};
+  writeStoveLabels(dir, {knob});
+}
+
+// "own": the knob's axis of rotational symmetry, leaning with it, in one undoable step.
+TEST(PartMarksReplay, AKnobGetsItsOwnLeaningAxisInOneStep) {
+  const fs::path dir = test::freshTempDir();
+  writeLeaningKnob(dir / "queue" / "a");
+  Session session;
+  session.autoPredict = false;
+  session.openPaths({dir / "queue"});
+  const auto marks = nlohmann::json::parse(R"({"objects": {"a": [{"point": 1, "axis": "z"}]}})");
+  replayPartMarks(session, marks, "marks.json");
+  ASSERT_TRUE(recordOf(dir / "queue" / "a", 0));
+  const std::size_t steps = session.document()->historySize();
+  ASSERT_TRUE(setOwnAxis(session, 0));
+  EXPECT_EQ(session.document()->historySize(), steps + 1);
+  const Eigen::Vector3f leaning(0.0f, -std::sin(20.0f * static_cast<float>(M_PI) / 180.0f),
+                                std::cos(20.0f * static_cast<float>(M_PI) / 180.0f));
+  const auto own = recordOf(dir / "queue" / "a", 0);
+  ASSERT_TRUE(own);
+  EXPECT_GT(own->part.axis.dot(leaning), std::cos(2.0f * static_cast<float>(M_PI) / 180.0f));
+  session.undo();
+  EXPECT_TRUE(recordOf(dir / "queue" / "a", 0)->part.axis.isApprox(Eigen::Vector3f::UnitZ()));
+  // The same from a marks file.
+  replayPartMarks(session, nlohmann::json::parse(R"({"objects": {"a": [{"point": 1, "axis": "own"}]}})"),
+                  "marks.json");
+  EXPECT_GT(recordOf(dir / "queue" / "a", 0)->part.axis.dot(leaning), 0.999f);
 }
 
 }  // namespace

@@ -1,0 +1,198 @@
+#include "core/controls/control_symmetry.h"
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <unordered_map>
+
+#include "core/mesh/mesh.h"
+
+namespace sagrid {
+
+namespace {
+
+// Samples spread over the part's surface by area (about this many; each triangle at least one).
+constexpr int kSurfaceSamples = 3000;
+// Samples turned per angle when a direction is scored (every n-th of the surface samples).
+constexpr int kTurnedSamples = 300;
+// Angles the surface is turned by (degrees): unrelated to the 4-, 6- and 8-fold symmetries of
+// low-poly knobs, so that a prism about its axis does not pass for a body of revolution by luck.
+constexpr float kTurnDegrees[] = {41.0f, 97.0f, 223.0f};
+// Directions tried on the half sphere before refining around the best one.
+constexpr int kCoarseDirections = 400;
+// Refinement: cones of these half-angles (degrees) around the best direction so far.
+constexpr float kRefineDegrees[] = {6.0f, 3.0f, 1.5f, 0.75f};
+constexpr int kRefineDirections = 16;
+// A turned sample lands on the surface when a sample lies within this many sample spacings.
+constexpr float kOnSurfaceSpacings = 1.5f;
+// Weight of the turned samples' mean distance beside the share off the surface.
+constexpr float kTieBreak = 0.1f;
+
+struct Samples {
+  std::vector<Eigen::Vector3f> points;
+  Eigen::Vector3f centre = Eigen::Vector3f::Zero();
+  float spacing = 0;  // typical distance between neighbouring samples
+};
+
+// Points over the triangles' surface, as many per triangle as its share of the area asks (at
+// least one), placed on a fixed stratified pattern.
+std::optional<Samples> sampleSurface(const Mesh& mesh, const std::vector<int>& triangles) {
+  std::vector<int> valid;
+  std::vector<float> areas;
+  double total = 0;
+  Eigen::Vector3d weighted = Eigen::Vector3d::Zero();
+  for (int t : triangles) {
+    if (t < 0 || static_cast<std::size_t>(t) >= mesh.triangles.size()) continue;
+    const Eigen::Vector3i& f = mesh.triangles[static_cast<std::size_t>(t)];
+    bool inRange = true;
+    for (int c = 0; c < 3; ++c)
+      inRange = inRange && f[c] >= 0 && static_cast<std::size_t>(f[c]) < mesh.positions.size();
+    if (!inRange) continue;
+    const Eigen::Vector3f& a = mesh.positions[static_cast<std::size_t>(f[0])];
+    const Eigen::Vector3f& b = mesh.positions[static_cast<std::size_t>(f[1])];
+    const Eigen::Vector3f& c = mesh.positions[static_cast<std::size_t>(f[2])];
+    if (!a.allFinite() || !b.allFinite() || !c.allFinite()) return std::nullopt;
+    const float area = 0.5f * (b - a).cross(c - a).norm();
+    if (!(area > 0)) continue;
+    valid.push_back(t);
+    areas.push_back(area);
+    total += area;
+    weighted += area * ((a + b + c) / 3.0f).cast<double>();
+  }
+  if (valid.empty() || !(total > 0)) return std::nullopt;
+  Samples s;
+  s.centre = (weighted / total).cast<float>();
+  for (std::size_t i = 0; i < valid.size(); ++i) {
+    const Eigen::Vector3i& f = mesh.triangles[static_cast<std::size_t>(valid[i])];
+    const Eigen::Vector3f& a = mesh.positions[static_cast<std::size_t>(f[0])];
+    const Eigen::Vector3f& b = mesh.positions[static_cast<std::size_t>(f[1])];
+    const Eigen::Vector3f& c = mesh.positions[static_cast<std::size_t>(f[2])];
+    const int k = std::max(1, static_cast<int>(std::lround(kSurfaceSamples * areas[i] / total)));
+    for (int j = 0; j < k; ++j) {
+      float u = (static_cast<float>(j) + 0.5f) / static_cast<float>(k);
+      float v = std::fmod(0.3f + 0.6180339887f * static_cast<float>(j), 1.0f);
+      if (u + v > 1.0f) u = 1.0f - u, v = 1.0f - v;
+      s.points.push_back(a + u * (b - a) + v * (c - a));
+    }
+  }
+  s.spacing = static_cast<float>(std::sqrt(total / static_cast<double>(s.points.size())));
+  return s;
+}
+
+// The samples hashed in cubes `cell` across: what lies within `cell` of a point is among the 27
+// cubes around it.
+class SampleGrid {
+ public:
+  SampleGrid(const std::vector<Eigen::Vector3f>& points, float cell) : m_points(points), m_cell(cell) {
+    for (std::size_t i = 0; i < points.size(); ++i) m_cells[key(cellOf(points[i]))].push_back(i);
+  }
+  // The distance to the nearest sample as a share of `cell`, 1 where none lies within it.
+  float distance(const Eigen::Vector3f& p) const {
+    const Eigen::Vector3i c = cellOf(p);
+    float best = m_cell * m_cell;
+    for (int dz = -1; dz <= 1; ++dz)
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) {
+          const auto it = m_cells.find(key(c + Eigen::Vector3i(dx, dy, dz)));
+          if (it == m_cells.end()) continue;
+          for (std::size_t i : it->second) best = std::min(best, (m_points[i] - p).squaredNorm());
+        }
+    return std::sqrt(best) / m_cell;
+  }
+
+ private:
+  Eigen::Vector3i cellOf(const Eigen::Vector3f& p) const {
+    return (p / m_cell).array().floor().cast<int>();
+  }
+  static long long key(const Eigen::Vector3i& c) {
+    return (static_cast<long long>(c.x()) * 73856093LL) ^ (static_cast<long long>(c.y()) * 19349663LL) ^
+           (static_cast<long long>(c.z()) * 83492791LL);
+  }
+  const std::vector<Eigen::Vector3f>& m_points;
+  float m_cell;
+  std::unordered_map<long long, std::vector<std::size_t>> m_cells;
+};
+
+struct Turned {
+  float offShare = 0;  // of the turned samples, those further than the cell from every sample
+  float distance = 0;  // their mean distance to the nearest sample, in cells, at most 1
+};
+
+// The samples turned about `axis` through the centre, against the surface.
+Turned turnedAbout(const Samples& s, const SampleGrid& grid, const Eigen::Vector3f& axis) {
+  const Eigen::Vector3f a = axis.normalized();
+  const std::size_t stride = std::max<std::size_t>(1, s.points.size() / kTurnedSamples);
+  double off = 0, distance = 0;
+  std::size_t n = 0;
+  for (float degrees : kTurnDegrees) {
+    const Eigen::AngleAxisf turn(degrees * static_cast<float>(M_PI) / 180.0f, a);
+    for (std::size_t i = 0; i < s.points.size(); i += stride, ++n) {
+      const float d = grid.distance(s.centre + turn * (s.points[i] - s.centre));
+      off += d >= 1.0f, distance += d;
+    }
+  }
+  const double count = static_cast<double>(std::max<std::size_t>(n, 1));
+  return {static_cast<float>(off / count), static_cast<float>(distance / count)};
+}
+
+// Directions on the half sphere around +z, spread evenly (a Fibonacci spiral).
+std::vector<Eigen::Vector3f> halfSphere(int count) {
+  std::vector<Eigen::Vector3f> out;
+  const float golden = static_cast<float>(M_PI) * (3.0f - std::sqrt(5.0f));
+  for (int i = 0; i < count; ++i) {
+    const float z = 1.0f - (static_cast<float>(i) + 0.5f) / static_cast<float>(count);
+    const float r = std::sqrt(std::max(0.0f, 1.0f - z * z));
+    const float phi = golden * static_cast<float>(i);
+    out.emplace_back(r * std::cos(phi), r * std::sin(phi), z);
+  }
+  return out;
+}
+
+// `count` directions on the cone of half-angle `degrees` around `axis`.
+std::vector<Eigen::Vector3f> coneAround(const Eigen::Vector3f& axis, float degrees, int count) {
+  const Eigen::Vector3f a = axis.normalized();
+  Eigen::Vector3f u = a.unitOrthogonal(), v = a.cross(u);
+  const float t = degrees * static_cast<float>(M_PI) / 180.0f;
+  std::vector<Eigen::Vector3f> out;
+  for (int i = 0; i < count; ++i) {
+    const float phi = 2.0f * static_cast<float>(M_PI) * static_cast<float>(i) / static_cast<float>(count);
+    out.push_back((std::cos(t) * a + std::sin(t) * (std::cos(phi) * u + std::sin(phi) * v)).normalized());
+  }
+  return out;
+}
+
+}  // namespace
+
+std::optional<float> revolutionMisfit(const Mesh& mesh, const std::vector<int>& triangles,
+                                      const Eigen::Vector3f& axis) {
+  if (!axis.allFinite() || axis.norm() <= 0) return std::nullopt;
+  const auto samples = sampleSurface(mesh, triangles);
+  if (!samples) return std::nullopt;
+  const SampleGrid grid(samples->points, kOnSurfaceSpacings * samples->spacing);
+  return turnedAbout(*samples, grid, axis).offShare;
+}
+
+std::optional<RevolutionAxis> revolutionAxis(const Mesh& mesh, const std::vector<int>& triangles) {
+  const auto samples = sampleSurface(mesh, triangles);
+  if (!samples) return std::nullopt;
+  const SampleGrid grid(samples->points, kOnSurfaceSpacings * samples->spacing);
+  RevolutionAxis best;
+  best.centre = samples->centre;
+  // Directions are ranked by the share landing off the surface, ties (every direction near a
+  // body's axis lands all of it on) by how near the turned samples land.
+  float bestScore = std::numeric_limits<float>::infinity();
+  const auto consider = [&](const Eigen::Vector3f& direction) {
+    const Turned t = turnedAbout(*samples, grid, direction);
+    const float score = t.offShare + kTieBreak * t.distance;
+    if (score < bestScore) bestScore = score, best.misfit = t.offShare, best.axis = direction.normalized();
+  };
+  for (const auto& d : halfSphere(kCoarseDirections)) consider(d);
+  for (float degrees : kRefineDegrees) {
+    const Eigen::Vector3f around = best.axis;
+    for (const auto& d : coneAround(around, degrees, kRefineDirections)) consider(d);
+  }
+  return best;
+}
+
+}  // namespace sagrid
