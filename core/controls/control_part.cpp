@@ -1,14 +1,13 @@
 #include "core/controls/control_part.h"
 
 #include <algorithm>
-#include <cstdlib>
-#include <cstdio>
 #include <array>
 #include <cmath>
 #include <functional>
 #include <limits>
 #include <map>
 
+#include "core/controls/control_symmetry.h"
 #include "core/geometry/closest_point_on_triangle.h"
 #include "core/geometry/connected_parts.h"
 #include "core/geometry/principal_axes.h"
@@ -36,6 +35,9 @@ constexpr float kStandOutShare = 0.15f;
 constexpr float kFlatShare = 0.08f;
 // A part whose height along its axis is under this share of its radius is pressed, not turned.
 constexpr float kButtonShare = 0.3f;
+// A knob takes its own axis of rotational symmetry where this much more of its surface (as a
+// share) lands back on itself turned about that axis than about the panel's normal.
+constexpr float kOwnAxisMargin = 0.1f;
 // A part this many times longer than wide across its axis is a lever.
 constexpr float kLeverElongation = 2.2f;
 // Below this, the direction out of a lever's holder lies along the lever: it lifts upwards.
@@ -604,6 +606,13 @@ ControlPart describe(const Surface& s, std::vector<int> triangles, PartOrigin or
         if (c > best) best = c, part.axis = d.dot(out) < 0 ? Eigen::Vector3f(-d) : d;
       }
     }
+    // It turns about its own axis of rotational symmetry where it clearly has one: turned about
+    // it, clearly more of its surface lands back on itself than about the axis above, and it is
+    // no longer along it than across (an arm or a stem is nearly symmetric about its length).
+    const auto own = revolutionAxis(s.mesh, triangles, part.axis);
+    if (own && own->referenceMisfit && *own->referenceMisfit - own->misfit >= kOwnAxisMargin &&
+        own->length <= 2.0f * own->radius)
+      part.axis = own->axis.dot(part.axis) < 0 ? Eigen::Vector3f(-own->axis) : own->axis;
   }
   part.triangles = std::move(triangles);
   return part;

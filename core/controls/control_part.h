@@ -1,5 +1,6 @@
 // The part of the mesh a toggle button point switches with, and how it moves: a rotary knob
-// turns about the normal of the panel it stands on, a lever about its pivot at the held end, a
+// turns about the normal of the panel it stands on, or about its own axis of rotational symmetry
+// where it clearly has one (control_symmetry.h), a lever about its pivot at the held end, a
 // push button or touch key slides along its normal. One mechanism for every file: the part is the
 // small component of the point's material it lies on (with the small components inside its box:
 // a knob's pointer, its cap), else the same over connected triangles whatever their material,

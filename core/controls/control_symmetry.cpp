@@ -13,16 +13,16 @@ namespace sagrid {
 namespace {
 
 // Samples spread over the part's surface by area (about this many; each triangle at least one).
-constexpr int kSurfaceSamples = 3000;
+constexpr int kSurfaceSamples = 1200;
 // Samples turned per angle when a direction is scored (every n-th of the surface samples).
-constexpr int kTurnedSamples = 300;
+constexpr int kTurnedSamples = 100;
 // Angles the surface is turned by (degrees): unrelated to the 4-, 6- and 8-fold symmetries of
 // low-poly knobs, so that a prism about its axis does not pass for a body of revolution by luck.
 constexpr float kTurnDegrees[] = {41.0f, 97.0f, 223.0f};
 // Directions tried on the half sphere before refining around the best one.
-constexpr int kCoarseDirections = 400;
+constexpr int kCoarseDirections = 160;
 // Refinement: cones of these half-angles (degrees) around the best direction so far.
-constexpr float kRefineDegrees[] = {6.0f, 3.0f, 1.5f, 0.75f};
+constexpr float kRefineDegrees[] = {8.0f, 4.0f, 2.0f, 1.0f, 0.5f};
 constexpr int kRefineDirections = 16;
 // A turned sample lands on the surface when a sample lies within this many sample spacings.
 constexpr float kOnSurfaceSpacings = 1.5f;
@@ -164,16 +164,9 @@ std::vector<Eigen::Vector3f> coneAround(const Eigen::Vector3f& axis, float degre
 
 }  // namespace
 
-std::optional<float> revolutionMisfit(const Mesh& mesh, const std::vector<int>& triangles,
-                                      const Eigen::Vector3f& axis) {
-  if (!axis.allFinite() || axis.norm() <= 0) return std::nullopt;
-  const auto samples = sampleSurface(mesh, triangles);
-  if (!samples) return std::nullopt;
-  const SampleGrid grid(samples->points, kOnSurfaceSpacings * samples->spacing);
-  return turnedAbout(*samples, grid, axis).offShare;
-}
-
-std::optional<RevolutionAxis> revolutionAxis(const Mesh& mesh, const std::vector<int>& triangles) {
+std::optional<RevolutionAxis> revolutionAxis(const Mesh& mesh, const std::vector<int>& triangles,
+                                             const std::optional<Eigen::Vector3f>& reference) {
+  if (reference && (!reference->allFinite() || reference->norm() <= 0)) return std::nullopt;
   const auto samples = sampleSurface(mesh, triangles);
   if (!samples) return std::nullopt;
   const SampleGrid grid(samples->points, kOnSurfaceSpacings * samples->spacing);
@@ -192,6 +185,14 @@ std::optional<RevolutionAxis> revolutionAxis(const Mesh& mesh, const std::vector
     const Eigen::Vector3f around = best.axis;
     for (const auto& d : coneAround(around, degrees, kRefineDirections)) consider(d);
   }
+  if (reference) best.referenceMisfit = turnedAbout(*samples, grid, *reference).offShare;
+  float low = std::numeric_limits<float>::infinity(), high = -low;
+  for (const auto& p : samples->points) {
+    const float h = (p - best.centre).dot(best.axis);
+    low = std::min(low, h), high = std::max(high, h);
+    best.radius = std::max(best.radius, (p - best.centre - h * best.axis).norm());
+  }
+  best.length = high - low;
   return best;
 }
 

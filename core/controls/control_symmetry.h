@@ -22,16 +22,17 @@ struct RevolutionAxis {
   // (0: a body of revolution; a square prism about its axis reads several times more than a
   // cylinder of the same size).
   float misfit = 0;
+  // The same about the reference direction the caller gave, sampled alike.
+  std::optional<float> referenceMisfit;
+  float length = 0;  // the part's extent along the axis
+  float radius = 0;  // its largest distance from the axis
 };
 
 // The part of `triangles` (indices into `mesh`; out-of-range ones ignored) that is most nearly a
-// body of revolution about which axis; nullopt for a part without area or with non-finite
-// positions. Deterministic.
-std::optional<RevolutionAxis> revolutionAxis(const Mesh& mesh, const std::vector<int>& triangles);
-
-// The misfit of `triangles` turned about `axis` through their centroid (as RevolutionAxis::misfit);
-// nullopt as above or for a zero axis.
-std::optional<float> revolutionMisfit(const Mesh& mesh, const std::vector<int>& triangles,
-                                      const Eigen::Vector3f& axis);
+// body of revolution about which axis, and with `reference` how nearly it is one about that
+// direction too; nullopt for a part without area, with non-finite positions or for a zero
+// reference. Deterministic.
+std::optional<RevolutionAxis> revolutionAxis(const Mesh& mesh, const std::vector<int>& triangles,
+                                             const std::optional<Eigen::Vector3f>& reference = std::nullopt);
 
 }  // namespace sagrid

@@ -48,6 +48,30 @@ Mesh box(const Eigen::Vector3f& lo, const Eigen::Vector3f& hi) {
   return mesh;
 }
 
+Mesh cylinder(float radius, float height, int segments, const Eigen::Matrix3f& turn,
+              const Eigen::Vector3f& offset) {
+  Mesh m;
+  for (int k = 0; k < 2; ++k) {
+    for (int i = 0; i < segments; ++i) {
+      const float phi = 2.0f * static_cast<float>(M_PI) * static_cast<float>(i) / static_cast<float>(segments);
+      m.positions.push_back(turn * Eigen::Vector3f(radius * std::cos(phi), radius * std::sin(phi),
+                                                   static_cast<float>(k) * height) + offset);
+    }
+  }
+  const int centre = static_cast<int>(m.positions.size());
+  m.positions.push_back(offset);
+  m.positions.push_back(turn * Eigen::Vector3f(0, 0, height) + offset);
+  for (int i = 0; i < segments; ++i) {
+    const int j = (i + 1) % segments;
+    m.triangles.emplace_back(i, j, segments + j);
+    m.triangles.emplace_back(i, segments + j, segments + i);
+    m.triangles.emplace_back(centre, j, i);
+    m.triangles.emplace_back(centre + 1, segments + i, segments + j);
+  }
+  m.computeVertexNormals();
+  return m;
+}
+
 Mesh quadZ(const Eigen::Vector2f& lo, const Eigen::Vector2f& hi, float z) {
   Mesh mesh;
   mesh.positions = {

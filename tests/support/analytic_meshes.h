@@ -1,4 +1,4 @@
-// Small meshes with known geometry for tests: UV spheres, axis-aligned boxes and quads, with
+// Small meshes with known geometry for tests: UV spheres, axis-aligned boxes and quads, cylinders, with
 // exact normals and a plain colour.
 #pragma once
 
@@ -12,6 +12,11 @@ namespace sagrid::test {
 Mesh uvSphere(const Eigen::Vector3f& centre, float radius, int rings = 48);
 // Axis-aligned box from lo to hi, 12 outward-facing triangles.
 Mesh box(const Eigen::Vector3f& lo, const Eigen::Vector3f& hi);
+// Closed cylinder of `radius` and `height` about z from the origin up, `segments` around (a round
+// knob), every vertex turned by `turn` and then moved by `offset`.
+Mesh cylinder(float radius, float height, int segments,
+              const Eigen::Matrix3f& turn = Eigen::Matrix3f::Identity(),
+              const Eigen::Vector3f& offset = Eigen::Vector3f::Zero());
 // Axis-aligned quad at height z over [lo, hi] in x and y, facing +z, with UVs over [0,1]^2.
 Mesh quadZ(const Eigen::Vector2f& lo, const Eigen::Vector2f& hi, float z);
 // Appends b to a (indices offset); materials and colours of b are kept when present.

@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 #include <numeric>
@@ -232,6 +233,21 @@ TEST(ControlParts, AKnobIsJudgedRoundOrLongAcrossThePanelItStandsOn) {
   EXPECT_EQ(found.parts[0]->triangles, cap);
   EXPECT_EQ(found.parts[0]->motion, ControlMotion::Knob);
   EXPECT_GT(std::abs(found.parts[0]->axis.z()), 0.999f);
+}
+
+TEST(ControlParts, ARoundKnobLeaningOffItsPanelTurnsAboutItsOwnAxis) {
+  // A round knob mounted askew, 25 degrees off the panel's normal (as on a sloped fascia over a
+  // flat top): it turns about its own axis of rotational symmetry, not the panel's normal.
+  Mesh mesh = panel();
+  const Eigen::Matrix3f lean =
+      Eigen::AngleAxisf(25.0f * static_cast<float>(M_PI) / 180.0f, Eigen::Vector3f::UnitY()).toRotationMatrix();
+  addPart(mesh, test::cylinder(0.02f, 0.015f, 48, lean, {0.0f, 0.0f, 0.0085f}), 1);
+  const Eigen::Vector3f own = lean * Eigen::Vector3f::UnitZ();
+  const ControlParts found = findControlParts(mesh, {Eigen::Vector3f(0.0f, 0.0f, 0.0085f) + 0.015f * own});
+  ASSERT_TRUE(found.parts[0]);
+  EXPECT_EQ(found.parts[0]->motion, ControlMotion::Knob);
+  EXPECT_GT(std::abs(found.parts[0]->axis.dot(own)), std::cos(3.0f * static_cast<float>(M_PI) / 180.0f))
+      << found.parts[0]->axis.transpose();
 }
 
 TEST(ControlParts, NoPointsAndNoSurfaceAreNotErrors) {
