@@ -51,8 +51,9 @@ struct ControlParts {
   std::vector<std::string> warnings;  // per point: why it was left a site or got a disc; or empty
 };
 
-// A part is refused (site only) when it would hold more than this share of the object's surface.
-inline constexpr float kMaxControlAreaShare = 0.25f;
+// A part is refused (site only) when it would take most of the object: more than this share of
+// its surface (a faucet's lever handle alone can hold a third of it).
+inline constexpr float kMaxControlAreaShare = 0.5f;
 
 // The part of each point of `points` (toggle button points, mesh frame). Points are told apart:
 // a part never holds what lies nearer another point.

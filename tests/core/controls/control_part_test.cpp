@@ -250,6 +250,19 @@ TEST(ControlParts, ARoundKnobLeaningOffItsPanelTurnsAboutItsOwnAxis) {
       << found.parts[0]->axis.transpose();
 }
 
+TEST(ControlParts, ALargeHandleOnASmallBodyIsStillItsPart) {
+  // A faucet's lever handle holding more than a quarter of the object's surface (here 46 %): a
+  // part, not refused; only a part that would take most of the object is.
+  Mesh mesh = test::box({0.0f, 0.0f, 0.0f}, {0.06f, 0.06f, 0.06f});
+  mesh.materials.resize(2);
+  mesh.triangleMaterials.assign(mesh.triangles.size(), 0);
+  const auto handle = addPart(mesh, test::box({0.03f, 0.015f, 0.06f}, {0.17f, 0.045f, 0.09f}), 1);
+  const ControlParts found = findControlParts(mesh, {{0.1f, 0.03f, 0.075f}});
+  ASSERT_TRUE(found.parts[0]) << found.warnings[0];
+  EXPECT_EQ(found.parts[0]->triangles, handle);
+  EXPECT_EQ(found.parts[0]->motion, ControlMotion::Lever);
+}
+
 TEST(ControlParts, NoPointsAndNoSurfaceAreNotErrors) {
   EXPECT_TRUE(findControlParts(panel(), {}).parts.empty());
   const ControlParts none = findControlParts(Mesh(), {{0, 0, 0}});
