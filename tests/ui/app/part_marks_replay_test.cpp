@@ -47,6 +47,12 @@ void writeObject(const fs::path& dir) {
   writeStoveLabels(dir, {knob, heat, corner});
 }
 
+// The session without predictions, its queue the object folders in `queue`.
+void openQueue(Session& session, const fs::path& queue) {
+  session.autoPredict = false;
+  session.openPaths({queue});
+}
+
 std::optional<ControlRecord> recordOf(const fs::path& dir, int index) {
   const ObjectLabels labels = readLabels(dir / "labels.json");
   return readControlRecord(labels.affordances[std::size_t(index)], UpAxis::Z, dir / "labels.json");
@@ -127,8 +133,7 @@ TEST(PartMarksReplay, KeepAllAndOneAxisForAllAreOneStepEach) {
   const fs::path dir = test::freshTempDir();
   writeObject(dir / "queue" / "a");
   Session session;
-  session.autoPredict = false;
-  session.openPaths({dir / "queue"});
+  openQueue(session, dir / "queue");
   const auto marks = nlohmann::json::parse(R"({"objects": {"a": [{"keep_all": true}]}})");
   const PartMarksSummary kept = replayPartMarks(session, marks, "marks.json");
   EXPECT_TRUE(kept.problems.empty());
@@ -186,8 +191,7 @@ TEST(PartMarksReplay, AKnobGetsItsOwnLeaningAxisInOneStep) {
   const fs::path dir = test::freshTempDir();
   writeLeaningKnob(dir / "queue" / "a");
   Session session;
-  session.autoPredict = false;
-  session.openPaths({dir / "queue"});
+  openQueue(session, dir / "queue");
   const auto marks = nlohmann::json::parse(R"({"objects": {"a": [{"point": 1, "axis": "z"}]}})");
   replayPartMarks(session, marks, "marks.json");
   ASSERT_TRUE(recordOf(dir / "queue" / "a", 0));
