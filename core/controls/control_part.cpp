@@ -38,6 +38,8 @@ constexpr float kButtonShare = 0.3f;
 // A knob takes its own axis of rotational symmetry where this much more of its surface (as a
 // share) lands back on itself turned about that axis than about the panel's normal.
 constexpr float kOwnAxisMargin = 0.1f;
+// ... and where it lies at least this far from the panel's normal.
+constexpr float kOwnAxisApartDegrees = 30.0f;
 // A part this many times longer than wide across its axis is a lever.
 constexpr float kLeverElongation = 2.2f;
 // Below this, the direction out of a lever's holder lies along the lever: it lifts upwards.
@@ -410,24 +412,19 @@ class VertexGrid {
   std::vector<std::vector<int>> m_cells;
 };
 
-// How a part touches the surface apart from it (within kContactShare of the part's size).
-struct PartContact {
-  // The normal of the panel it stands on: each touched triangle's normal turned towards the part
-  // and counted once per vertex touching it, the way most of the contact faces (the mean of the
-  // normals within kPanelConeDegrees of the one with most such contact: the panel, not the sides
-  // of a ring or bezel around the part). None where nothing touches it or the touched normals
-  // cancel (a part held all round).
-  std::optional<Eigen::Vector3f> panel;
-  float touchingShare = 0;  // of the part's vertices, those touching it
-};
-
-PartContact contactOf(const Surface& s, const std::vector<bool>& inPart,
-                      const std::vector<Eigen::Vector3f>& vertices, const Eigen::Vector3f& centre) {
-  PartContact contact;
-  if (vertices.empty()) return contact;
+// The normal of the panel a part stands on: of the surface apart from the part that its vertices
+// touch (within kContactShare of the part's size), each touched triangle's normal turned towards
+// the part and counted once per vertex touching it, the way most of the contact faces (the mean of
+// the normals within kPanelConeDegrees of the one with most such contact: the panel, not the sides of a
+// ring or bezel around the part). None where nothing touches it or the touched normals cancel (a
+// part held all round).
+std::optional<Eigen::Vector3f> standingNormal(const Surface& s, const std::vector<bool>& inPart,
+                                              const std::vector<Eigen::Vector3f>& vertices,
+                                              const Eigen::Vector3f& centre) {
+  if (vertices.empty()) return std::nullopt;
   Eigen::AlignedBox3f box;
   for (const auto& v : vertices) box.extend(v);
-  if (!box.min().allFinite() || !box.max().allFinite()) return contact;
+  if (!box.min().allFinite() || !box.max().allFinite()) return std::nullopt;
   const float touch = std::max(kContactShare * box.diagonal().norm(), 1e-6f * s.diagonal);
   Eigen::AlignedBox3f near = box;
   near.min().array() -= touch, near.max().array() += touch;
@@ -436,7 +433,6 @@ PartContact contactOf(const Surface& s, const std::vector<bool>& inPart,
   float count = 0;
   std::vector<std::pair<Eigen::Vector3f, float>> touched;  // a normal, vertices touching triangles so facing
   std::map<std::array<int, 3>, std::size_t> bins;         // a binned normal -> its entry in `touched`
-  std::vector<bool> touching(vertices.size(), false);
   for (std::size_t t = 0; t < s.valid.size(); ++t) {
     if (!s.valid[t] || inPart[t]) continue;
     Eigen::AlignedBox3f triangle;
@@ -450,7 +446,7 @@ PartContact contactOf(const Surface& s, const std::vector<bool>& inPart,
     triangle.min().array() -= touch, triangle.max().array() += touch;
     grid.forEachWithin(triangle, [&](int v) {
       const Eigen::Vector3f& p = vertices[static_cast<std::size_t>(v)];
-      if ((s.closestOn(t, p) - p).norm() <= touch) ++touches, touching[static_cast<std::size_t>(v)] = true;
+      if ((s.closestOn(t, p) - p).norm() <= touch) ++touches;
     });
     if (touches == 0) continue;
     sum += touches * normal, count += touches;
@@ -466,21 +462,18 @@ PartContact contactOf(const Surface& s, const std::vector<bool>& inPart,
     }
   }
   for (auto& [normal, touches] : touched) normal.normalize();
-  contact.touchingShare = static_cast<float>(std::count(touching.begin(), touching.end(), true)) /
-                          static_cast<float>(vertices.size());
-  if (count == 0 || sum.norm() < kContactAgreement * count) return contact;
+  if (count == 0 || sum.norm() < kContactAgreement * count) return std::nullopt;
   const float cone = std::cos(kPanelConeDegrees * static_cast<float>(M_PI) / 180.0f);
   float most = 0;
   Eigen::Vector3f panel = sum;
   for (const auto& [normal, touches] : touched) {
-    float alikeTouches = 0;
+    float contact = 0;
     Eigen::Vector3f alike = Eigen::Vector3f::Zero();
     for (const auto& [other, otherTouches] : touched)
-      if (normal.dot(other) >= cone) alikeTouches += otherTouches, alike += otherTouches * other;
-    if (alikeTouches > most) most = alikeTouches, panel = alike;
+      if (normal.dot(other) >= cone) contact += otherTouches, alike += otherTouches * other;
+    if (contact > most) most = contact, panel = alike;
   }
-  contact.panel = panel.normalized();
-  return contact;
+  return panel.normalized();
 }
 
 // A part's vertices, their principal shape and the way it stands out of what holds it.
@@ -528,13 +521,12 @@ ControlPart describe(const Surface& s, std::vector<int> triangles, PartOrigin or
   const Eigen::Vector3f centre = shape.mean;
   const std::vector<bool>& inPart = partShape.inPart;
   const std::optional<Eigen::Vector3f>& held = partShape.held;
-  // Held by nothing apart: its thinnest direction.
   // The way it stands out of what holds it: away from the nearest surface apart from it, else
   // (held by nothing apart) its thinnest direction. Its shape is judged across the normal of the
   // panel it stands on where one is found (the nearest point of what holds it can lie on a bezel
   // or an edge beside the part: a round knob then looks long across that way).
   const Eigen::Vector3f out = held.value_or(Eigen::Vector3f(shape.directions.col(2).normalized()));
-  const std::optional<Eigen::Vector3f> panel = contactOf(s, inPart, vertices, centre).panel;
+  const std::optional<Eigen::Vector3f> panel = standingNormal(s, inPart, vertices, centre);
   const Eigen::Vector3f standing = panel ? (panel->dot(out) < 0 ? Eigen::Vector3f(-*panel) : *panel) : out;
 
   // Height along `standing` and the shape across it.
@@ -606,13 +598,17 @@ ControlPart describe(const Surface& s, std::vector<int> triangles, PartOrigin or
         if (c > best) best = c, part.axis = d.dot(out) < 0 ? Eigen::Vector3f(-d) : d;
       }
     }
-    // It turns about its own axis of rotational symmetry where it clearly has one: turned about
-    // it, clearly more of its surface lands back on itself than about the axis above, and it is
-    // no longer along it than across (an arm or a stem is nearly symmetric about its length).
+    // It turns about its own axis of rotational symmetry where that clearly says the axis above
+    // is another (the panel misread): turned about it clearly more of its surface lands back on
+    // itself, it lies far from the axis above (a few degrees' nudge by the fit of a part that is
+    // no body of revolution, a square tap handle, is not worth more than the panel's plane), and
+    // the part is no longer along it than across (an arm or a stem is nearly symmetric about its
+    // length).
     const auto own = revolutionAxis(s.mesh, triangles, part.axis);
     if (own && own->referenceMisfit && *own->referenceMisfit - own->misfit >= kOwnAxisMargin &&
+        std::abs(own->axis.dot(part.axis)) <= std::cos(kOwnAxisApartDegrees * static_cast<float>(M_PI) / 180.0f) &&
         own->length <= 2.0f * own->radius)
-      part.axis = own->axis.dot(part.axis) < 0 ? Eigen::Vector3f(-own->axis) : own->axis;
+      part.axis = own->along(part.axis);
   }
   part.triangles = std::move(triangles);
   return part;

@@ -26,20 +26,21 @@ constexpr float kRefineDegrees[] = {8.0f, 4.0f, 2.0f, 1.0f, 0.5f};
 constexpr int kRefineDirections = 16;
 // A turned sample lands on the surface when a sample lies within this many sample spacings.
 constexpr float kOnSurfaceSpacings = 1.5f;
-// Weight of the turned samples' mean distance beside the share off the surface.
-constexpr float kTieBreak = 0.1f;
 
 struct Samples {
-  std::vector<Eigen::Vector3f> points;
+  std::vector<Eigen::Vector3f> points;   // kSurfaceSamples of them, spread evenly by area
+  std::vector<Eigen::Vector3f> corners;  // the corners of the triangles with area
   Eigen::Vector3f centre = Eigen::Vector3f::Zero();
   float spacing = 0;  // typical distance between neighbouring samples
 };
 
-// Points over the triangles' surface, as many per triangle as its share of the area asks (at
-// least one), placed on a fixed stratified pattern.
+// kSurfaceSamples points spread over the triangles' surface evenly by area (stratified along the
+// triangles' running area, placed inside each on a fixed low-discrepancy sequence), so that the
+// cost does not grow with the triangle count and a finely tessellated region is not sampled more
+// densely than a coarse one.
 std::optional<Samples> sampleSurface(const Mesh& mesh, const std::vector<int>& triangles) {
-  std::vector<int> valid;
-  std::vector<float> areas;
+  Samples s;
+  std::vector<double> running;  // area up to and including each triangle of `corners` / 3
   double total = 0;
   Eigen::Vector3d weighted = Eigen::Vector3d::Zero();
   for (int t : triangles) {
@@ -53,30 +54,30 @@ std::optional<Samples> sampleSurface(const Mesh& mesh, const std::vector<int>& t
     const Eigen::Vector3f& b = mesh.positions[static_cast<std::size_t>(f[1])];
     const Eigen::Vector3f& c = mesh.positions[static_cast<std::size_t>(f[2])];
     if (!a.allFinite() || !b.allFinite() || !c.allFinite()) return std::nullopt;
-    const float area = 0.5f * (b - a).cross(c - a).norm();
+    const double area = 0.5 * static_cast<double>((b - a).cross(c - a).norm());
     if (!(area > 0)) continue;
-    valid.push_back(t);
-    areas.push_back(area);
-    total += area;
+    s.corners.insert(s.corners.end(), {a, b, c});
+    running.push_back(total += area);
     weighted += area * ((a + b + c) / 3.0f).cast<double>();
   }
-  if (valid.empty() || !(total > 0)) return std::nullopt;
-  Samples s;
+  if (running.empty() || !(total > 0)) return std::nullopt;
   s.centre = (weighted / total).cast<float>();
-  for (std::size_t i = 0; i < valid.size(); ++i) {
-    const Eigen::Vector3i& f = mesh.triangles[static_cast<std::size_t>(valid[i])];
-    const Eigen::Vector3f& a = mesh.positions[static_cast<std::size_t>(f[0])];
-    const Eigen::Vector3f& b = mesh.positions[static_cast<std::size_t>(f[1])];
-    const Eigen::Vector3f& c = mesh.positions[static_cast<std::size_t>(f[2])];
-    const int k = std::max(1, static_cast<int>(std::lround(kSurfaceSamples * areas[i] / total)));
-    for (int j = 0; j < k; ++j) {
-      float u = (static_cast<float>(j) + 0.5f) / static_cast<float>(k);
-      float v = std::fmod(0.3f + 0.6180339887f * static_cast<float>(j), 1.0f);
-      if (u + v > 1.0f) u = 1.0f - u, v = 1.0f - v;
-      s.points.push_back(a + u * (b - a) + v * (c - a));
-    }
+  for (int i = 0; i < kSurfaceSamples; ++i) {
+    const double at = (static_cast<double>(i) + 0.5) / kSurfaceSamples * total;
+    const std::size_t t = std::min<std::size_t>(
+        static_cast<std::size_t>(std::upper_bound(running.begin(), running.end(), at) - running.begin()),
+        running.size() - 1);
+    // The plastic-number sequence, mapped uniformly onto the triangle.
+    const double r1 = std::fmod(0.5 + 0.7548776662466927 * i, 1.0);
+    const double r2 = std::fmod(0.5 + 0.5698402909980532 * i, 1.0);
+    const float root = static_cast<float>(std::sqrt(r1));
+    const Eigen::Vector3f& a = s.corners[3 * t];
+    const Eigen::Vector3f& b = s.corners[3 * t + 1];
+    const Eigen::Vector3f& c = s.corners[3 * t + 2];
+    s.points.push_back((1.0f - root) * a + root * (1.0f - static_cast<float>(r2)) * b +
+                       root * static_cast<float>(r2) * c);
   }
-  s.spacing = static_cast<float>(std::sqrt(total / static_cast<double>(s.points.size())));
+  s.spacing = static_cast<float>(std::sqrt(total / kSurfaceSamples));
   return s;
 }
 
@@ -174,11 +175,12 @@ std::optional<RevolutionAxis> revolutionAxis(const Mesh& mesh, const std::vector
   best.centre = samples->centre;
   // Directions are ranked by the share landing off the surface, ties (every direction near a
   // body's axis lands all of it on) by how near the turned samples land.
-  float bestScore = std::numeric_limits<float>::infinity();
+  float bestDistance = std::numeric_limits<float>::infinity();
+  best.misfit = std::numeric_limits<float>::infinity();
   const auto consider = [&](const Eigen::Vector3f& direction) {
     const Turned t = turnedAbout(*samples, grid, direction);
-    const float score = t.offShare + kTieBreak * t.distance;
-    if (score < bestScore) bestScore = score, best.misfit = t.offShare, best.axis = direction.normalized();
+    if (t.offShare < best.misfit || (t.offShare == best.misfit && t.distance < bestDistance))
+      best.misfit = t.offShare, bestDistance = t.distance, best.axis = direction.normalized();
   };
   for (const auto& d : halfSphere(kCoarseDirections)) consider(d);
   for (float degrees : kRefineDegrees) {
@@ -187,7 +189,7 @@ std::optional<RevolutionAxis> revolutionAxis(const Mesh& mesh, const std::vector
   }
   if (reference) best.referenceMisfit = turnedAbout(*samples, grid, *reference).offShare;
   float low = std::numeric_limits<float>::infinity(), high = -low;
-  for (const auto& p : samples->points) {
+  for (const auto& p : samples->corners) {
     const float h = (p - best.centre).dot(best.axis);
     low = std::min(low, h), high = std::max(high, h);
     best.radius = std::max(best.radius, (p - best.centre - h * best.axis).norm());

@@ -67,10 +67,12 @@ bool setOwnAxis(Session& session, int index) {
   const AnnotationDocument* doc = session.document();
   if (!doc) return false;
   std::optional<ShownControl> shown = shownControl(*doc, index);
-  if (!shown) return false;
+  if (!shown || shown->part.motion != ControlMotion::Knob) return false;
   const auto own = revolutionAxis(doc->mesh(), shown->part.triangles);
   if (!own) return false;
-  shown->part.axis = own->axis.dot(shown->part.axis) < 0 ? Eigen::Vector3f(-own->axis) : own->axis;
+  const Eigen::Vector3f axis = own->along(shown->part.axis);
+  if (shown->confirmed && axis.isApprox(shown->part.axis)) return true;  // no empty undo step
+  shown->part.axis = axis;
   setControlRecord(session, index, *shown, "its own axis");
   return true;
 }

@@ -35,9 +35,11 @@ void setControlRecord(Session& session, int index, const ShownControl& shown, co
 // its panel). Returns how many records were written.
 std::size_t confirmEveryControl(Session& session, int axisOf = -1);
 
-// Point `index`'s axis set to its part's axis of rotational symmetry (core/controls/
+// Point `index`'s knob axis set to its part's axis of rotational symmetry (core/controls/
 // control_symmetry.h: a knob leaning with a sloped panel), pointing the way the shown axis did;
-// one undoable step. False when the point has no part with area.
+// one undoable step (none where the curator's record turns about it already). False (nothing
+// done) when the point's control is no knob (a lever arm is nearly symmetric about its length) or
+// has no part with area.
 bool setOwnAxis(Session& session, int index);
 
 // Gives point `index` (a toggle button) the part of `triangles` (mesh indices); nothing when they

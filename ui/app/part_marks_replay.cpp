@@ -41,16 +41,21 @@ bool stroke(Session& session, const nlohmann::json& s, const std::string& source
                                                             : BrushMode::Add);
 }
 
-bool setAxis(Session& session, int index, const std::string& axis, const std::string& source) {
-  if (axis == "own") return setOwnAxis(session, index);
+// Gives point `index` the mark's axis; what kept it from applying, or empty.
+std::string setAxis(Session& session, int index, const std::string& axis, const std::string& source) {
   std::optional<ShownControl> shown = shownControl(*session.document(), index);
-  if (!shown) return false;
+  if (axis != "own" && axis != "flip" && axis != "x" && axis != "y" && axis != "z")
+    throw FileError(source, "an axis must be flip, x, y, z or own, not " + axis);
+  if (!shown) return "no part to give the axis";
+  if (axis == "own") {
+    if (shown->part.motion != ControlMotion::Knob)
+      return std::string("\"own\" is a knob's axis, and this control is a ") + toString(shown->part.motion);
+    return setOwnAxis(session, index) ? "" : "no surface to find its own axis on";
+  }
   if (axis == "flip") shown->part.axis = -shown->part.axis;
-  else if (axis == "x" || axis == "y" || axis == "z")
-    shown->part.axis = Eigen::Vector3f::Unit(axis[0] - 'x');
-  else throw FileError(source, "an axis must be flip, x, y, z or own, not " + axis);
+  else shown->part.axis = Eigen::Vector3f::Unit(axis[0] - 'x');
   setControlRecord(session, index, *shown, "axis " + axis);
-  return true;
+  return "";
 }
 
 }  // namespace
@@ -101,10 +106,12 @@ PartMarksSummary replayPartMarks(Session& session, const nlohmann::json& marks,
         for (const auto& s : mark.value("strokes", nlohmann::json::array()))
           if (!stroke(session, s, source, name))
             summary.problems.push_back(name + ": a stroke changed nothing (or would empty the part)");
-        if (mark.contains("axis") &&
-            !setAxis(session, index, mark.at("axis").get<std::string>(), source)) {
-          summary.problems.push_back(name + ": no part to give the axis");
-          continue;
+        if (mark.contains("axis")) {
+          const std::string problem = setAxis(session, index, mark.at("axis").get<std::string>(), source);
+          if (!problem.empty()) {
+            summary.problems.push_back(name + ": " + problem);
+            continue;
+          }
         }
         if (mark.value("for_all", false)) {
           const std::size_t written = confirmEveryControl(session, index);

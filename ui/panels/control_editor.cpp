@@ -45,7 +45,8 @@ void axisButtons(Session& session, int index, ShownControl shown) {
     }
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Axis along the view's %s (z up)", names[a]);
   }
-  if (shown.part.triangles.empty()) return;  // a disc: nothing to find its own axis on
+  // A knob's own axis (a lever arm is nearly symmetric about its length; a disc has no surface).
+  if (shown.part.motion != ControlMotion::Knob || shown.part.triangles.empty()) return;
   ImGui::SameLine();
   if (ImGui::SmallButton("own")) setOwnAxis(session, index);
   if (ImGui::IsItemHovered())

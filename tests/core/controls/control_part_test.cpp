@@ -235,19 +235,29 @@ TEST(ControlParts, AKnobIsJudgedRoundOrLongAcrossThePanelItStandsOn) {
   EXPECT_GT(std::abs(found.parts[0]->axis.z()), 0.999f);
 }
 
-TEST(ControlParts, ARoundKnobLeaningOffItsPanelTurnsAboutItsOwnAxis) {
-  // A round knob mounted askew, 25 degrees off the panel's normal (as on a sloped fascia over a
-  // flat top): it turns about its own axis of rotational symmetry, not the panel's normal.
+TEST(ControlParts, ARoundHandleOnItsSideTurnsAboutItsOwnAxisNotThePanels) {
+  // A round valve handle, 4 cm across and 3 cm deep, lying on its side on the panel (as on a
+  // pipe): it touches the panel, whose normal is up, but it is a body of revolution about x.
   Mesh mesh = panel();
-  const Eigen::Matrix3f lean =
-      Eigen::AngleAxisf(25.0f * static_cast<float>(M_PI) / 180.0f, Eigen::Vector3f::UnitY()).toRotationMatrix();
-  addPart(mesh, test::cylinder(0.02f, 0.015f, 48, lean, {0.0f, 0.0f, 0.0085f}), 1);
-  const Eigen::Vector3f own = lean * Eigen::Vector3f::UnitZ();
-  const ControlParts found = findControlParts(mesh, {Eigen::Vector3f(0.0f, 0.0f, 0.0085f) + 0.015f * own});
+  const Eigen::Matrix3f onItsSide =
+      Eigen::AngleAxisf(static_cast<float>(M_PI) / 2.0f, Eigen::Vector3f::UnitY()).toRotationMatrix();
+  addPart(mesh, test::cylinder(0.02f, 0.03f, 48, onItsSide, {-0.015f, 0.0f, 0.02f}), 1);
+  const ControlParts found = findControlParts(mesh, {{0.015f, 0.0f, 0.02f}});
   ASSERT_TRUE(found.parts[0]);
   EXPECT_EQ(found.parts[0]->motion, ControlMotion::Knob);
-  EXPECT_GT(std::abs(found.parts[0]->axis.dot(own)), std::cos(3.0f * static_cast<float>(M_PI) / 180.0f))
+  EXPECT_GT(std::abs(found.parts[0]->axis.x()), std::cos(3.0f * static_cast<float>(M_PI) / 180.0f))
       << found.parts[0]->axis.transpose();
+  // Leaning only 15 degrees off the panel's normal, the panel's normal stands: a fit's nudge of a
+  // few degrees is not worth more than the plane the knob stands on.
+  Mesh leaning = panel();
+  const Eigen::Matrix3f lean =
+      Eigen::AngleAxisf(15.0f * static_cast<float>(M_PI) / 180.0f, Eigen::Vector3f::UnitY()).toRotationMatrix();
+  addPart(leaning, test::cylinder(0.02f, 0.015f, 48, lean, {0.0f, 0.0f, 0.0055f}), 1);
+  const ControlParts nudged = findControlParts(leaning, {Eigen::Vector3f(0.0f, 0.0f, 0.0055f) + 0.015f * (lean * Eigen::Vector3f::UnitZ())});
+  ASSERT_TRUE(nudged.parts[0]);
+  EXPECT_EQ(nudged.parts[0]->motion, ControlMotion::Knob);
+  EXPECT_LT(std::abs(nudged.parts[0]->axis.dot(lean * Eigen::Vector3f::UnitZ())), 0.99f)
+      << nudged.parts[0]->axis.transpose();
 }
 
 TEST(ControlParts, ALargeHandleOnASmallBodyIsStillItsPart) {
@@ -261,6 +271,15 @@ TEST(ControlParts, ALargeHandleOnASmallBodyIsStillItsPart) {
   ASSERT_TRUE(found.parts[0]) << found.warnings[0];
   EXPECT_EQ(found.parts[0]->triangles, handle);
   EXPECT_EQ(found.parts[0]->motion, ControlMotion::Lever);
+  // A handle three times as long would hold most of the object's surface: refused.
+  Mesh body = test::box({0.0f, 0.0f, 0.0f}, {0.06f, 0.06f, 0.06f});
+  body.materials.resize(2);
+  body.triangleMaterials.assign(body.triangles.size(), 0);
+  addPart(body, test::box({0.03f, 0.015f, 0.06f}, {0.45f, 0.045f, 0.09f}), 1);
+  const ControlParts most = findControlParts(body, {{0.2f, 0.03f, 0.075f}});
+  EXPECT_TRUE(!most.parts[0] || most.parts[0]->triangles.empty() ||
+              most.parts[0]->origin == PartOrigin::Disc)
+      << toString(most.parts[0]->origin);
 }
 
 TEST(ControlParts, NoPointsAndNoSurfaceAreNotErrors) {

@@ -49,7 +49,10 @@ TEST(RevolutionAxis, ASquarePrismIsNoBodyOfRevolution) {
   const auto square = revolutionAxis(block, all(block));
   const auto circle = revolutionAxis(round, all(round));
   ASSERT_TRUE(square && circle);
-  EXPECT_GT(square->misfit, 3.0f * circle->misfit);
+  // The cylinder lands back on itself about its axis; about its best axis a tenth and more of
+  // the square prism turned lands off it (0.17 here).
+  EXPECT_LT(circle->misfit, 0.02f);
+  EXPECT_GT(square->misfit, 0.1f);
 }
 
 TEST(RevolutionAxis, NoAreaNonFiniteOrMissingTrianglesGiveNoAxis) {

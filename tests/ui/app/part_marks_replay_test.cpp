@@ -157,13 +157,14 @@ TEST(PartMarksReplay, KeepAllAndOneAxisForAllAreOneStepEach) {
 }
 
 // A 1 m plate with a round knob (4 cm across, 2 cm tall, 32 sides) leaning 20 degrees about x,
-// as on a sloped control panel; one toggle button on its top.
+// as on a sloped control panel, held 3 mm above the plate at its lowest; one toggle button on its
+// top.
 void writeLeaningKnob(const fs::path& dir) {
   fs::create_directories(dir);
   std::ofstream obj(dir / "mesh.obj");
   obj << "v -0.5 -0.5 0\nv 0.5 -0.5 0\nv 0.5 0.5 0\nv -0.5 0.5 0\nf 1 2 3\nf 1 3 4\n";
   const double lean = 20.0 * M_PI / 180.0;
-  const auto vertex = [&](double x, double y, double z) {  // turned about x, standing on the plate
+  const auto vertex = [&](double x, double y, double z) {  // turned about x, raised 1 cm
     obj << "v " << x << " " << y * std::cos(lean) - z * std::sin(lean) << " "
         << y * std::sin(lean) + z * std::cos(lean) + 0.01 << "\n";
   };
@@ -209,6 +210,20 @@ TEST(PartMarksReplay, AKnobGetsItsOwnLeaningAxisInOneStep) {
   replayPartMarks(session, nlohmann::json::parse(R"({"objects": {"a": [{"point": 1, "axis": "own"}]}})"),
                   "marks.json");
   EXPECT_GT(recordOf(dir / "queue" / "a", 0)->part.axis.dot(leaning), 0.999f);
+  // Not a knob's: "own" names the control it cannot apply to, and changes nothing.
+  const std::size_t before = session.document()->historySize();
+  const PartMarksSummary lever = replayPartMarks(
+      session, nlohmann::json::parse(R"({"objects": {"a": [{"point": 1, "axis": "x"}]}})"), "marks.json");
+  EXPECT_TRUE(lever.problems.empty());
+  ShownControl asLever = *shownControl(*session.document(), 0);
+  asLever.part.motion = ControlMotion::Lever;
+  setControlRecord(session, 0, asLever, "moves as a lever");
+  EXPECT_FALSE(setOwnAxis(session, 0));
+  const PartMarksSummary refused = replayPartMarks(
+      session, nlohmann::json::parse(R"({"objects": {"a": [{"point": 1, "axis": "own"}]}})"), "marks.json");
+  ASSERT_EQ(refused.problems.size(), 1u);
+  EXPECT_NE(refused.problems[0].find("is a knob's axis"), std::string::npos) << refused.problems[0];
+  EXPECT_EQ(session.document()->historySize(), before + 2);  // the x axis and the lever only
 }
 
 }  // namespace
