@@ -23,11 +23,11 @@ void writeObj(const fs::path& path, const Mesh& mesh) {
   for (const auto& t : mesh.triangles) obj << "f " << t[0] + 1 << " " << t[1] + 1 << " " << t[2] + 1 << "\n";
 }
 
-// An object folder: a panel with knobs at x = -0.1 and +0.1 and a toggle point on each.
-fs::path writeKnobPanel(const fs::path& dir) {
+// An object folder: a 60 x 40 cm panel with `knobs` on it (mesh.obj) and a toggle point at each
+// of `points` (labels.json, a z-up stove).
+fs::path writeKnobObject(const fs::path& dir, const Mesh& knobs, const std::vector<Eigen::Vector3f>& points) {
   Mesh mesh = test::box({-0.3f, -0.2f, -0.02f}, {0.3f, 0.2f, 0.0f});
-  test::append(mesh, test::box({-0.12f, -0.02f, 0.0f}, {-0.08f, 0.02f, 0.025f}));
-  test::append(mesh, test::box({0.08f, -0.02f, 0.0f}, {0.12f, 0.02f, 0.025f}));
+  test::append(mesh, knobs);
   fs::create_directories(dir);
   writeObj(dir / "mesh.obj", mesh);
   ObjectLabels labels;
@@ -35,14 +35,21 @@ fs::path writeKnobPanel(const fs::path& dir) {
   labels.object.mesh = "mesh.obj";
   labels.object.category = "stove";
   labels.object.up = "z";
-  for (float x : {-0.1f, 0.1f}) {
+  for (const auto& at : points) {
     AffordancePoint p;
     p.type = "togglebutton";
-    p.position = {x, 0.0f, 0.025f};
+    p.position = at;
     labels.affordances.push_back(p);
   }
   writeLabels(dir / "labels.json", labels);
   return dir;
+}
+
+// Square knobs at x = -0.1 and +0.1 and a toggle point on each.
+fs::path writeKnobPanel(const fs::path& dir) {
+  Mesh knobs = test::box({-0.12f, -0.02f, 0.0f}, {-0.08f, 0.02f, 0.025f});
+  test::append(knobs, test::box({0.08f, -0.02f, 0.0f}, {0.12f, 0.02f, 0.025f}));
+  return writeKnobObject(dir, knobs, {{-0.1f, 0.0f, 0.025f}, {0.1f, 0.0f, 0.025f}});
 }
 
 // The imported triangles of the knob at `x` (every corner within it), those with a centroid at
@@ -122,20 +129,9 @@ TEST(PartAgreement, AMarkedPartEqualToTheFoundOneAgreesAndAHalfKnobDoesNot) {
 // A round knob on a panel, its record confirmed with `axis`: how far the mark lies from the knob's
 // own axis (up) shows.
 TEST(PartAgreement, AKnobMarkedOffItsOwnAxisShows) {
-  const fs::path dir = test::freshTempDir() / "round";
-  Mesh mesh = test::box({-0.3f, -0.2f, -0.02f}, {0.3f, 0.2f, 0.0f});
-  test::append(mesh, test::cylinder(0.02f, 0.02f, 48));
-  fs::create_directories(dir);
-  writeObj(dir / "mesh.obj", mesh);
-  ObjectLabels labels;
-  labels.object.id = "round";
-  labels.object.mesh = "mesh.obj";
-  labels.object.category = "stove";
-  labels.object.up = "z";
-  AffordancePoint p;
-  p.type = "togglebutton";
-  p.position = {0.0f, 0.0f, 0.02f};
-  labels.affordances.push_back(p);
+  const fs::path dir =
+      writeKnobObject(test::freshTempDir() / "round", test::cylinder(0.02f, 0.02f, 48), {{0.0f, 0.0f, 0.02f}});
+  ObjectLabels labels = readLabels(dir / "labels.json");
   const Mesh imported = importMesh(dir / "mesh.obj", ImportOptions(UpAxis::Z));
   for (const auto& [axis, degrees] : {std::pair{Eigen::Vector3f::UnitZ().eval(), 0.0},
                                       std::pair{Eigen::Vector3f::UnitX().eval(), 90.0}}) {
