@@ -10,6 +10,7 @@
 #include "core/controls/control_symmetry.h"
 #include "core/geometry/closest_point_on_triangle.h"
 #include "core/geometry/connected_parts.h"
+#include "core/geometry/point_grid.h"
 #include "core/geometry/principal_axes.h"
 #include "core/geometry/surface_scene.h"
 #include "core/geometry/triangle_components.h"
@@ -373,45 +374,6 @@ std::optional<Eigen::Vector3f> awayFromHolder(const Surface& s, const std::vecto
   return out.normalized();
 }
 
-// Points binned in a grid over their box with cells `cell` across, so that what lies near a small
-// box is found without looking at every point. The caller keeps the cells few (the contact search:
-// a tenth of the part's diagonal, at most about ten a side).
-class VertexGrid {
- public:
-  VertexGrid(const std::vector<Eigen::Vector3f>& points, const Eigen::AlignedBox3f& box, float cell)
-      : m_origin(box.min()) {
-    const Eigen::Vector3f extent = box.sizes();
-    m_cell = std::max(cell, 1e-12f);
-    for (int a = 0; a < 3; ++a) m_dims[a] = std::max(1, static_cast<int>(std::ceil(extent[a] / m_cell)));
-    m_cells.resize(static_cast<std::size_t>(m_dims.prod()));
-    for (std::size_t i = 0; i < points.size(); ++i)
-      m_cells[static_cast<std::size_t>(index(cellOf(points[i])))].push_back(static_cast<int>(i));
-  }
-  // Calls f(i) for every point whose cell overlaps `query` (each once).
-  template <typename F>
-  void forEachWithin(const Eigen::AlignedBox3f& query, F f) const {
-    const Eigen::Vector3i lo = cellOf(query.min()), hi = cellOf(query.max());
-    for (int z = lo.z(); z <= hi.z(); ++z)
-      for (int y = lo.y(); y <= hi.y(); ++y)
-        for (int x = lo.x(); x <= hi.x(); ++x)
-          for (int i : m_cells[static_cast<std::size_t>(index({x, y, z}))]) f(i);
-  }
-
- private:
-  Eigen::Vector3i cellOf(const Eigen::Vector3f& p) const {
-    Eigen::Vector3i c;
-    for (int a = 0; a < 3; ++a)
-      c[a] = std::clamp(static_cast<int>(std::floor((p[a] - m_origin[a]) / m_cell)), 0, m_dims[a] - 1);
-    return c;
-  }
-  int index(const Eigen::Vector3i& c) const { return (c.z() * m_dims.y() + c.y()) * m_dims.x() + c.x(); }
-
-  Eigen::Vector3f m_origin;
-  float m_cell = 1;
-  Eigen::Vector3i m_dims = Eigen::Vector3i::Ones();
-  std::vector<std::vector<int>> m_cells;
-};
-
 // The normal of the panel a part stands on: of the surface apart from the part that its vertices
 // touch (within kContactShare of the part's size), each touched triangle's normal turned towards
 // the part and counted once per vertex touching it, the way most of the contact faces (the mean of
@@ -428,7 +390,7 @@ std::optional<Eigen::Vector3f> standingNormal(const Surface& s, const std::vecto
   const float touch = std::max(kContactShare * box.diagonal().norm(), 1e-6f * s.diagonal);
   Eigen::AlignedBox3f near = box;
   near.min().array() -= touch, near.max().array() += touch;
-  const VertexGrid grid(vertices, box, touch);
+  const PointGrid grid(vertices, box, touch);
   Eigen::Vector3f sum = Eigen::Vector3f::Zero();
   float count = 0;
   std::vector<std::pair<Eigen::Vector3f, float>> touched;  // a normal, vertices touching triangles so facing
@@ -527,7 +489,7 @@ ControlPart describe(const Surface& s, std::vector<int> triangles, PartOrigin or
   // or an edge beside the part: a round knob then looks long across that way).
   const Eigen::Vector3f out = held.value_or(Eigen::Vector3f(shape.directions.col(2).normalized()));
   const std::optional<Eigen::Vector3f> panel = standingNormal(s, inPart, vertices, centre);
-  const Eigen::Vector3f standing = panel ? (panel->dot(out) < 0 ? Eigen::Vector3f(-*panel) : *panel) : out;
+  const Eigen::Vector3f standing = panel ? facingWay(*panel, out) : out;
 
   // Height along `standing` and the shape across it.
   float low = std::numeric_limits<float>::infinity(), high = -low;
@@ -595,7 +557,7 @@ ControlPart describe(const Surface& s, std::vector<int> triangles, PartOrigin or
       for (int i = 0; i < 3; ++i) {
         const Eigen::Vector3f d = shape.directions.col(i).normalized();
         const float c = std::abs(d.dot(out));
-        if (c > best) best = c, part.axis = d.dot(out) < 0 ? Eigen::Vector3f(-d) : d;
+        if (c > best) best = c, part.axis = facingWay(d, out);
       }
     }
     // It turns about its own axis of rotational symmetry where that clearly says the axis above
@@ -608,7 +570,7 @@ ControlPart describe(const Surface& s, std::vector<int> triangles, PartOrigin or
     if (own && own->referenceMisfit && *own->referenceMisfit - own->misfit >= kOwnAxisMargin &&
         std::abs(own->axis.dot(part.axis)) <= std::cos(kOwnAxisApartDegrees * static_cast<float>(M_PI) / 180.0f) &&
         own->length <= 2.0f * own->radius)
-      part.axis = own->along(part.axis);
+      part.axis = facingWay(own->axis, part.axis);
   }
   part.triangles = std::move(triangles);
   return part;

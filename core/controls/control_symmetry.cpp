@@ -4,8 +4,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <unordered_map>
 
+#include "core/geometry/point_grid.h"
 #include "core/mesh/mesh.h"
 
 namespace sagrid {
@@ -81,47 +81,14 @@ std::optional<Samples> sampleSurface(const Mesh& mesh, const std::vector<int>& t
   return s;
 }
 
-// The samples hashed in cubes `cell` across: what lies within `cell` of a point is among the 27
-// cubes around it.
-class SampleGrid {
- public:
-  SampleGrid(const std::vector<Eigen::Vector3f>& points, float cell) : m_points(points), m_cell(cell) {
-    for (std::size_t i = 0; i < points.size(); ++i) m_cells[key(cellOf(points[i]))].push_back(i);
-  }
-  // The distance to the nearest sample as a share of `cell`, 1 where none lies within it.
-  float distance(const Eigen::Vector3f& p) const {
-    const Eigen::Vector3i c = cellOf(p);
-    float best = m_cell * m_cell;
-    for (int dz = -1; dz <= 1; ++dz)
-      for (int dy = -1; dy <= 1; ++dy)
-        for (int dx = -1; dx <= 1; ++dx) {
-          const auto it = m_cells.find(key(c + Eigen::Vector3i(dx, dy, dz)));
-          if (it == m_cells.end()) continue;
-          for (std::size_t i : it->second) best = std::min(best, (m_points[i] - p).squaredNorm());
-        }
-    return std::sqrt(best) / m_cell;
-  }
-
- private:
-  Eigen::Vector3i cellOf(const Eigen::Vector3f& p) const {
-    return (p / m_cell).array().floor().cast<int>();
-  }
-  static long long key(const Eigen::Vector3i& c) {
-    return (static_cast<long long>(c.x()) * 73856093LL) ^ (static_cast<long long>(c.y()) * 19349663LL) ^
-           (static_cast<long long>(c.z()) * 83492791LL);
-  }
-  const std::vector<Eigen::Vector3f>& m_points;
-  float m_cell;
-  std::unordered_map<long long, std::vector<std::size_t>> m_cells;
-};
-
 struct Turned {
-  float offShare = 0;  // of the turned samples, those further than the cell from every sample
-  float distance = 0;  // their mean distance to the nearest sample, in cells, at most 1
+  float offShare = 0;  // of the turned samples, those further than the reach from every sample
+  float distance = 0;  // their mean distance to the nearest sample, in reaches, at most 1
 };
 
-// The samples turned about `axis` through the centre, against the surface.
-Turned turnedAbout(const Samples& s, const SampleGrid& grid, const Eigen::Vector3f& axis) {
+// How far the samples, turned about `axis` through the centre, land from the surface (`grid` over
+// the samples; `reach` the on-surface distance).
+Turned turnedAbout(const Samples& s, const PointGrid& grid, float reach, const Eigen::Vector3f& axis) {
   const Eigen::Vector3f a = axis.normalized();
   const std::size_t stride = std::max<std::size_t>(1, s.points.size() / kTurnedSamples);
   double off = 0, distance = 0;
@@ -129,7 +96,7 @@ Turned turnedAbout(const Samples& s, const SampleGrid& grid, const Eigen::Vector
   for (float degrees : kTurnDegrees) {
     const Eigen::AngleAxisf turn(degrees * static_cast<float>(M_PI) / 180.0f, a);
     for (std::size_t i = 0; i < s.points.size(); i += stride, ++n) {
-      const float d = grid.distance(s.centre + turn * (s.points[i] - s.centre));
+      const float d = grid.distanceWithin(s.centre + turn * (s.points[i] - s.centre), reach) / reach;
       off += d >= 1.0f, distance += d;
     }
   }
@@ -170,7 +137,10 @@ std::optional<RevolutionAxis> revolutionAxis(const Mesh& mesh, const std::vector
   if (reference && (!reference->allFinite() || reference->norm() <= 0)) return std::nullopt;
   const auto samples = sampleSurface(mesh, triangles);
   if (!samples) return std::nullopt;
-  const SampleGrid grid(samples->points, kOnSurfaceSpacings * samples->spacing);
+  const float reach = kOnSurfaceSpacings * samples->spacing;
+  Eigen::AlignedBox3f box;
+  for (const auto& p : samples->points) box.extend(p);
+  const PointGrid grid(samples->points, box, reach);
   RevolutionAxis best;
   best.centre = samples->centre;
   // Directions are ranked by the share landing off the surface, ties (every direction near a
@@ -178,7 +148,7 @@ std::optional<RevolutionAxis> revolutionAxis(const Mesh& mesh, const std::vector
   float bestDistance = std::numeric_limits<float>::infinity();
   best.misfit = std::numeric_limits<float>::infinity();
   const auto consider = [&](const Eigen::Vector3f& direction) {
-    const Turned t = turnedAbout(*samples, grid, direction);
+    const Turned t = turnedAbout(*samples, grid, reach, direction);
     if (t.offShare < best.misfit || (t.offShare == best.misfit && t.distance < bestDistance))
       best.misfit = t.offShare, bestDistance = t.distance, best.axis = direction.normalized();
   };
@@ -187,7 +157,7 @@ std::optional<RevolutionAxis> revolutionAxis(const Mesh& mesh, const std::vector
     const Eigen::Vector3f around = best.axis;
     for (const auto& d : coneAround(around, degrees, kRefineDirections)) consider(d);
   }
-  if (reference) best.referenceMisfit = turnedAbout(*samples, grid, *reference).offShare;
+  if (reference) best.referenceMisfit = turnedAbout(*samples, grid, reach, *reference).offShare;
   float low = std::numeric_limits<float>::infinity(), high = -low;
   for (const auto& p : samples->corners) {
     const float h = (p - best.centre).dot(best.axis);

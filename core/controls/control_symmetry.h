@@ -28,11 +28,6 @@ struct RevolutionAxis {
   std::optional<float> referenceMisfit;
   float length = 0;  // the part's extent along the axis (over its triangles' corners)
   float radius = 0;  // their largest distance from the axis
-
-  // The axis pointing the way `way` does (a hinge axis keeps its sense when replaced).
-  Eigen::Vector3f along(const Eigen::Vector3f& way) const {
-    return axis.dot(way) < 0 ? Eigen::Vector3f(-axis) : axis;
-  }
 };
 
 // The axis about which the part of `triangles` (indices into `mesh`; out-of-range ones ignored) is

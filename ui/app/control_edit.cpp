@@ -6,6 +6,7 @@
 #include "core/controls/control_part_edit.h"
 #include "core/controls/control_record.h"
 #include "core/controls/control_symmetry.h"
+#include "core/geometry/point_grid.h"
 #include "core/geometry/surface_scene.h"
 #include "ui/app/session.h"
 #include "ui/document/command.h"
@@ -70,7 +71,7 @@ bool setOwnAxis(Session& session, int index) {
   if (!shown || shown->part.motion != ControlMotion::Knob) return false;
   const auto own = revolutionAxis(doc->mesh(), shown->part.triangles);
   if (!own) return false;
-  const Eigen::Vector3f axis = own->along(shown->part.axis);
+  const Eigen::Vector3f axis = facingWay(own->axis, shown->part.axis);
   if (shown->confirmed && axis.isApprox(shown->part.axis)) return true;  // no empty undo step
   shown->part.axis = axis;
   setControlRecord(session, index, *shown, "its own axis");
