@@ -64,6 +64,17 @@ std::size_t confirmEveryControl(Session& session, int axisOf) {
   return written;
 }
 
+bool setControlMotion(Session& session, int index, ControlMotion motion) {
+  const AnnotationDocument* doc = session.document();
+  if (!doc) return false;
+  std::optional<ShownControl> shown = shownControl(*doc, index);
+  if (!shown) return false;
+  if (shown->part.motion == motion) return true;
+  shown->part.motion = motion;
+  setControlRecord(session, index, *shown, std::string("moves as a ") + toString(motion));
+  return true;
+}
+
 bool setOwnAxis(Session& session, int index) {
   const AnnotationDocument* doc = session.document();
   if (!doc) return false;

@@ -35,6 +35,11 @@ void setControlRecord(Session& session, int index, const ShownControl& shown, co
 // its panel). Returns how many records were written.
 std::size_t confirmEveryControl(Session& session, int axisOf = -1);
 
+// Point `index`'s control moving as `motion` (the Points panel's motion list), its part and axis
+// kept; one undoable step where it moved otherwise. False (nothing done) when the point has no
+// control.
+bool setControlMotion(Session& session, int index, ControlMotion motion);
+
 // Point `index`'s knob axis set to its part's axis of rotational symmetry (core/controls/
 // control_symmetry.h: a knob leaning with a sloped panel), pointing the way the shown axis did;
 // one undoable step (none where the curator's record turns about it already). False (nothing

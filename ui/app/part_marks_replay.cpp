@@ -106,6 +106,16 @@ PartMarksSummary replayPartMarks(Session& session, const nlohmann::json& marks,
         for (const auto& s : mark.value("strokes", nlohmann::json::array()))
           if (!stroke(session, s, source, name))
             summary.problems.push_back(name + ": a stroke changed nothing (or would empty the part)");
+        if (mark.contains("motion")) {
+          const auto motion = parseControlMotion(mark.at("motion").get<std::string>());
+          if (!motion)
+            throw FileError(source, name + ": a motion must be knob, lever or button, not " +
+                                        mark.at("motion").get<std::string>());
+          if (!setControlMotion(session, index, *motion)) {
+            summary.problems.push_back(name + ": no part to give the motion");
+            continue;
+          }
+        }
         if (mark.contains("axis")) {
           const std::string problem = setAxis(session, index, mark.at("axis").get<std::string>(), source);
           if (!problem.empty()) {

@@ -10,10 +10,11 @@
 //   {"objects": {"<object folder>": [
 //      {"point": 3, "keep": true},
 //      {"point": 4, "strokes": [{"at": [x, y, z], "radius_cm": 2.5, "mode": "replace"}, ...],
-//       "axis": "flip" | "x" | "y" | "z" | "own"},
+//       "motion": "knob" | "lever" | "button", "axis": "flip" | "x" | "y" | "z" | "own"},
 //      {"keep_all": true},                               every control kept as shown (Keep all)
 //      {"point": 5, "axis": "z", "for_all": true}]}}     its axis, then This axis for all
 // (a knob row shares its panel: every control moving as point 5 does gets its axis).
+// A mark's steps run in that order: keep, strokes, motion (the Points panel's motion list), axis.
 // `at` in the mesh file's frame and units (the nearest surface point is clicked); `radius_cm` the
 // brush's (default 1.5); `mode` replace (the brushed surface alone, Alt+click), add (click, the
 // default) or away (Ctrl+click). The axis letters are the GUI's view axes (z up, as its axis

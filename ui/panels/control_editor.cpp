@@ -18,15 +18,11 @@ namespace sagrid::ui {
 
 namespace {
 
-void motionCombo(Session& session, int index, ShownControl shown) {
+void motionCombo(Session& session, int index, const ShownControl& shown) {
   ImGui::SetNextItemWidth(110);
   if (!ImGui::BeginCombo("##motion", toString(shown.part.motion))) return;
-  for (ControlMotion m : {ControlMotion::Knob, ControlMotion::Lever, ControlMotion::Button}) {
-    if (ImGui::Selectable(toString(m), m == shown.part.motion) && m != shown.part.motion) {
-      shown.part.motion = m;
-      setControlRecord(session, index, shown, std::string("moves as a ") + toString(m));
-    }
-  }
+  for (ControlMotion m : {ControlMotion::Knob, ControlMotion::Lever, ControlMotion::Button})
+    if (ImGui::Selectable(toString(m), m == shown.part.motion)) setControlMotion(session, index, m);
   ImGui::EndCombo();
 }
 

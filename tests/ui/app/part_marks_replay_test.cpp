@@ -187,7 +187,8 @@ void writeLeaningKnob(const fs::path& dir) {
   writeStoveLabels(dir, {knob});
 }
 
-// "own": the knob's axis of rotational symmetry, leaning with it, in one undoable step.
+// "own": the knob's axis of rotational symmetry, leaning with it, in one undoable step; refused
+// for a lever until the mark makes it a knob.
 TEST(PartMarksReplay, AKnobGetsItsOwnLeaningAxisInOneStep) {
   const fs::path dir = test::freshTempDir();
   writeLeaningKnob(dir / "queue" / "a");
@@ -224,6 +225,20 @@ TEST(PartMarksReplay, AKnobGetsItsOwnLeaningAxisInOneStep) {
   ASSERT_EQ(refused.problems.size(), 1u);
   EXPECT_NE(refused.problems[0].find("is a knob's axis"), std::string::npos) << refused.problems[0];
   EXPECT_EQ(session.document()->historySize(), before + 2);  // the x axis and the lever only
+  // Marked a knob first (the Points panel's motion list), it takes its own axis: two steps.
+  const PartMarksSummary asKnob = replayPartMarks(
+      session, nlohmann::json::parse(R"({"objects": {"a": [{"point": 1, "motion": "knob", "axis": "own"}]}})"),
+      "marks.json");
+  EXPECT_TRUE(asKnob.problems.empty());
+  const auto knob = recordOf(dir / "queue" / "a", 0);
+  ASSERT_TRUE(knob);
+  EXPECT_EQ(knob->part.motion, ControlMotion::Knob);
+  EXPECT_GT(std::abs(knob->part.axis.dot(leaning)), 0.999f);  // facing the way the x axis did
+  EXPECT_EQ(session.document()->historySize(), before + 4);
+  EXPECT_THROW(replayPartMarks(session,
+                               nlohmann::json::parse(R"({"objects": {"a": [{"point": 1, "motion": "slider"}]}})"),
+                               "marks.json"),
+               FileError);
 }
 
 }  // namespace
