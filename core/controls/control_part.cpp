@@ -59,6 +59,11 @@ constexpr float kAxisOfShape = 0.8f;
 constexpr float kNormalBin = 0.01f;
 // A lever's held end this many times wider than its free end is a hub it turns with.
 constexpr float kHubShare = 2.0f;
+// A lever's free end stands further from what holds it than its held end by at least this share of
+// its length; a long part whose ends lie nearer alike is held along its length (a grip).
+constexpr float kHeldEndShare = 0.1f;
+// A grip turns about its holder's axis where that runs within this many degrees of square to it.
+constexpr float kGripAcrossDegrees = 30.0f;
 // A part whose faces' normals sum to more than this share of its area is an open sheet facing
 // one way (a flat key), not a closed or two-sided part.
 constexpr float kSheetFacing = 0.5f;
@@ -374,27 +379,28 @@ std::optional<Eigen::Vector3f> awayFromHolder(const Surface& s, const std::vecto
   return out.normalized();
 }
 
-// The normal of the panel a part stands on: of the surface apart from the part that its vertices
-// touch (within kContactShare of the part's size), each touched triangle's normal turned towards
-// the part and counted once per vertex touching it, the way most of the contact faces (the mean of
-// the normals within kPanelConeDegrees of the one with most such contact: the panel, not the sides of a
-// ring or bezel around the part). None where nothing touches it or the touched normals cancel (a
-// part held all round).
-std::optional<Eigen::Vector3f> standingNormal(const Surface& s, const std::vector<bool>& inPart,
-                                              const std::vector<Eigen::Vector3f>& vertices,
-                                              const Eigen::Vector3f& centre) {
-  if (vertices.empty()) return std::nullopt;
+// What a part touches: the triangles of the surface apart from it within kContactShare of the
+// part's size of its vertices, each one's normal turned towards the part's `centre` and counted
+// once per vertex touching it; triangles facing alike (to kNormalBin) merged into one entry.
+struct Contact {
+  std::vector<std::pair<Eigen::Vector3f, float>> normals;  // a unit normal, the vertices touching so
+  Eigen::Vector3f sum = Eigen::Vector3f::Zero();           // the normals times their touches
+  float touches = 0;
+  std::vector<int> triangles;                              // those touched
+};
+
+Contact contactOf(const Surface& s, const std::vector<bool>& inPart,
+                  const std::vector<Eigen::Vector3f>& vertices, const Eigen::Vector3f& centre) {
+  Contact contact;
+  if (vertices.empty()) return contact;
   Eigen::AlignedBox3f box;
   for (const auto& v : vertices) box.extend(v);
-  if (!box.min().allFinite() || !box.max().allFinite()) return std::nullopt;
+  if (!box.min().allFinite() || !box.max().allFinite()) return contact;
   const float touch = std::max(kContactShare * box.diagonal().norm(), 1e-6f * s.diagonal);
   Eigen::AlignedBox3f near = box;
   near.min().array() -= touch, near.max().array() += touch;
   const PointGrid grid(vertices, box, touch);
-  Eigen::Vector3f sum = Eigen::Vector3f::Zero();
-  float count = 0;
-  std::vector<std::pair<Eigen::Vector3f, float>> touched;  // a normal, vertices touching triangles so facing
-  std::map<std::array<int, 3>, std::size_t> bins;         // a binned normal -> its entry in `touched`
+  std::map<std::array<int, 3>, std::size_t> bins;  // a binned normal -> its entry in `normals`
   for (std::size_t t = 0; t < s.valid.size(); ++t) {
     if (!s.valid[t] || inPart[t]) continue;
     Eigen::AlignedBox3f triangle;
@@ -411,29 +417,40 @@ std::optional<Eigen::Vector3f> standingNormal(const Surface& s, const std::vecto
       if ((s.closestOn(t, p) - p).norm() <= touch) ++touches;
     });
     if (touches == 0) continue;
-    sum += touches * normal, count += touches;
-    // Triangles facing alike (a flat panel's, to kNormalBin) count as one normal: the search below
-    // is quadratic in the normals kept.
+    contact.triangles.push_back(static_cast<int>(t));
+    contact.sum += touches * normal, contact.touches += touches;
+    // Triangles facing alike (a flat panel's) count as one normal: the panel search is quadratic
+    // in the normals kept.
     const Eigen::Vector3i bin = (normal / kNormalBin).array().round().cast<int>();
-    const auto [at, added] = bins.emplace(std::array<int, 3>{bin.x(), bin.y(), bin.z()}, touched.size());
+    const auto [at, added] =
+        bins.emplace(std::array<int, 3>{bin.x(), bin.y(), bin.z()}, contact.normals.size());
     if (added) {
-      touched.emplace_back(touches * normal, touches);
+      contact.normals.emplace_back(touches * normal, touches);
     } else {
-      touched[at->second].first += touches * normal;
-      touched[at->second].second += touches;
+      contact.normals[at->second].first += touches * normal;
+      contact.normals[at->second].second += touches;
     }
   }
-  for (auto& [normal, touches] : touched) normal.normalize();
-  if (count == 0 || sum.norm() < kContactAgreement * count) return std::nullopt;
+  for (auto& [normal, touches] : contact.normals) normal.normalize();
+  return contact;
+}
+
+// The normal of the panel a part stands on, from what it touches (contactOf): the way most of the
+// contact faces (the mean of the normals within kPanelConeDegrees of the one with most such
+// contact: the panel, not the sides of a ring or bezel around the part). None where nothing
+// touches it or the touched normals cancel (a part held all round).
+std::optional<Eigen::Vector3f> standingNormal(const Contact& contact) {
+  if (contact.touches == 0 || contact.sum.norm() < kContactAgreement * contact.touches)
+    return std::nullopt;
   const float cone = std::cos(kPanelConeDegrees * static_cast<float>(M_PI) / 180.0f);
   float most = 0;
-  Eigen::Vector3f panel = sum;
-  for (const auto& [normal, touches] : touched) {
-    float contact = 0;
+  Eigen::Vector3f panel = contact.sum;
+  for (const auto& [normal, touches] : contact.normals) {
+    float count = 0;
     Eigen::Vector3f alike = Eigen::Vector3f::Zero();
-    for (const auto& [other, otherTouches] : touched)
-      if (normal.dot(other) >= cone) contact += otherTouches, alike += otherTouches * other;
-    if (contact > most) most = contact, panel = alike;
+    for (const auto& [other, otherTouches] : contact.normals)
+      if (normal.dot(other) >= cone) count += otherTouches, alike += otherTouches * other;
+    if (count > most) most = count, panel = alike;
   }
   return panel.normalized();
 }
@@ -472,6 +489,96 @@ Eigen::Vector3f pressDirection(const Surface& s, const std::vector<int>& triangl
   return inward.dot(thin) >= 0 ? thin : Eigen::Vector3f(-thin);
 }
 
+// A long part (its vertices about `centre`, long `along`) as a lever turning about its held end,
+// the end nearer the rest of the surface: its motion, pivot and axis written into `part`. False
+// (nothing written) where it `touches` what holds it (contactOf) and its two ends lie alike near
+// the rest (their gaps differ by less than kHeldEndShare of its length): no end holds it, it is
+// held along its length (a grip). A part touching nothing (a low-poly bar whose only vertices are
+// its ends) is not judged a grip.
+bool leverOnItsEnd(const Surface& s, ControlPart& part, const std::vector<Eigen::Vector3f>& vertices,
+                   const Eigen::Vector3f& centre, const std::vector<bool>& inPart,
+                   Eigen::Vector3f along, const Eigen::Vector3f& out, bool touches) {
+  float first = std::numeric_limits<float>::infinity(), last = -first;
+  for (const auto& v : vertices) {
+    const float t = (v - centre).dot(along);
+    first = std::min(first, t), last = std::max(last, t);
+  }
+  const auto endGap = [&](float end) {
+    const Eigen::Vector3f slab = endSlab(vertices, centre, along, end, last - first).centroid;
+    Eigen::Vector3f nearest = slab;
+    if (nearestTriangle(s, slab, [&](std::size_t t) { return !inPart[t]; }, &nearest) < 0)
+      return 0.0f;
+    return (nearest - slab).norm();
+  };
+  const float firstGap = endGap(first), lastGap = endGap(last);
+  if (touches && std::abs(firstGap - lastGap) < kHeldEndShare * (last - first)) return false;
+  part.motion = ControlMotion::Lever;
+  if (lastGap < firstGap) along = -along, std::swap(first, last), first = -first, last = -last;
+  part.pivot = centre + first * along;
+  // A lever on a hub (a cartridge's cap, much wider than the lever's free end) turns with the hub
+  // about the hub's axis, out of what holds it.
+  const EndSlab held = endSlab(vertices, centre, along, first, last - first);
+  const EndSlab free = endSlab(vertices, centre, along, last, last - first);
+  if (held.width > kHubShare * std::max(free.width, 1e-12f)) {
+    part.pivot = held.centroid;
+    part.axis = out;
+    return true;
+  }
+  // It lifts away from what holds it: about the axis across it and that direction (up where it
+  // points straight out of its holder).
+  Eigen::Vector3f lift = out - out.dot(along) * along;
+  if (lift.norm() < kLiftMinimum) lift = Eigen::Vector3f::UnitZ() - along.z() * along;
+  const Eigen::Vector3f axis = along.cross(lift);
+  part.axis = axis.norm() > 1e-6f ? axis.normalized() : perpendicular(along);
+  return true;
+}
+
+// The axis a grip long `along` turns about: that of what holds it, the surface it touches
+// (`contact`), about which that surface is most nearly a body of revolution (a knob's face under a
+// bar, a stem under a cross or through a bar), where it runs across the grip (within
+// kGripAcrossDegrees of square to `along`); none where nothing touches it or the holder's axis
+// runs along the grip. Facing `out`.
+std::optional<Eigen::Vector3f> gripAxis(const Surface& s, const Contact& contact,
+                                        const Eigen::Vector3f& along, const Eigen::Vector3f& out) {
+  const auto holder = revolutionAxis(s.mesh, contact.triangles);
+  if (!holder) return std::nullopt;
+  if (std::abs(holder->axis.dot(along)) > std::sin(kGripAcrossDegrees * static_cast<float>(M_PI) / 180.0f))
+    return std::nullopt;
+  return facingWay(holder->axis, out);
+}
+
+// The axis a knob turns about: the normal of the panel it stands on; where the panel cannot be
+// told (it touches nothing, or is held all round), its own principal direction nearest the way out
+// of the nearest surface apart from it (`out`), else that way. Then, where `ownAxis` (a grip, long
+// across its axis, is no body of revolution), its own axis of rotational
+// symmetry where that clearly says the axis above is another (the panel misread): turned about it
+// clearly more of its surface lands back on itself, it lies far from the axis above (a few
+// degrees' nudge by the fit of a part that is no body of revolution, a square tap handle, is not
+// worth more than the panel's plane), and the part is no longer along it than across (an arm or a
+// stem is nearly symmetric about its length).
+Eigen::Vector3f knobAxis(const Surface& s, const std::vector<int>& triangles, const Principal& shape,
+                         const std::optional<Eigen::Vector3f>& panel, const Eigen::Vector3f& out,
+                         bool ownAxis) {
+  Eigen::Vector3f axis = out.normalized();
+  if (panel) {
+    axis = *panel;
+  } else {
+    float best = kAxisOfShape;
+    for (int i = 0; i < 3; ++i) {
+      const Eigen::Vector3f d = shape.directions.col(i).normalized();
+      const float c = std::abs(d.dot(out));
+      if (c > best) best = c, axis = facingWay(d, out);
+    }
+  }
+  if (!ownAxis) return axis;
+  const auto own = revolutionAxis(s.mesh, triangles, axis);
+  if (own && own->referenceMisfit && *own->referenceMisfit - own->misfit >= kOwnAxisMargin &&
+      std::abs(own->axis.dot(axis)) <= std::cos(kOwnAxisApartDegrees * static_cast<float>(M_PI) / 180.0f) &&
+      own->length <= 2.0f * own->radius)
+    axis = facingWay(own->axis, axis);
+  return axis;
+}
+
 ControlPart describe(const Surface& s, std::vector<int> triangles, PartOrigin origin) {
   ControlPart part;
   part.origin = origin;
@@ -488,7 +595,8 @@ ControlPart describe(const Surface& s, std::vector<int> triangles, PartOrigin or
   // panel it stands on where one is found (the nearest point of what holds it can lie on a bezel
   // or an edge beside the part: a round knob then looks long across that way).
   const Eigen::Vector3f out = held.value_or(Eigen::Vector3f(shape.directions.col(2).normalized()));
-  const std::optional<Eigen::Vector3f> panel = standingNormal(s, inPart, vertices, centre);
+  const Contact contact = contactOf(s, inPart, vertices, centre);
+  const std::optional<Eigen::Vector3f> panel = standingNormal(contact);
   const Eigen::Vector3f standing = panel ? facingWay(*panel, out) : out;
 
   // Height along `standing` and the shape across it.
@@ -508,69 +616,22 @@ ControlPart describe(const Surface& s, std::vector<int> triangles, PartOrigin or
   const bool long3d = shape.spread[0] > kLeverElongation * std::max(shape.spread[1], 1e-12f);
   const bool longAcross = flat.spread[0] > kLeverElongation * std::max(flat.spread[1], 1e-12f);
   if (long3d || longAcross) {
-    part.motion = ControlMotion::Lever;
-    Eigen::Vector3f along = long3d ? shape.directions.col(0) : flat.directions.col(0);
-    // The held end is the one nearer the rest of the surface; the free end points away from it.
-    float first = std::numeric_limits<float>::infinity(), last = -first;
-    for (const auto& v : vertices) {
-      const float t = (v - centre).dot(along);
-      first = std::min(first, t), last = std::max(last, t);
-    }
-    const auto endGap = [&](float end) {
-      const Eigen::Vector3f slab = endSlab(vertices, centre, along, end, last - first).centroid;
-      Eigen::Vector3f nearest = slab;
-      if (nearestTriangle(s, slab, [&](std::size_t t) { return !inPart[t]; }, &nearest) < 0)
-        return 0.0f;
-      return (nearest - slab).norm();
-    };
-    if (endGap(last) < endGap(first)) along = -along, std::swap(first, last), first = -first, last = -last;
-    part.pivot = centre + first * along;
-    // A lever on a hub (a cartridge's cap, much wider than the lever's free end) turns with the
-    // hub about the hub's axis, out of what holds it.
-    const EndSlab held = endSlab(vertices, centre, along, first, last - first);
-    const EndSlab free = endSlab(vertices, centre, along, last, last - first);
-    if (held.width > kHubShare * std::max(free.width, 1e-12f)) {
-      part.pivot = held.centroid;
-      part.axis = out;
+    const Eigen::Vector3f along = (long3d ? shape.directions.col(0) : flat.directions.col(0)).normalized();
+    if (leverOnItsEnd(s, part, vertices, centre, inPart, along, out, !contact.triangles.empty())) {
       part.triangles = std::move(triangles);
       return part;
     }
-    // It lifts away from what holds it: about the axis across it and that direction (up where it
-    // points straight out of its holder).
-    Eigen::Vector3f lift = out - out.dot(along) * along;
-    if (lift.norm() < kLiftMinimum) lift = Eigen::Vector3f::UnitZ() - along.z() * along;
-    const Eigen::Vector3f axis = along.cross(lift);
-    part.axis = axis.norm() > 1e-6f ? axis.normalized() : perpendicular(along);
+    // Held alike at both ends there is no end to pivot about: a grip (a bar across a knob's face,
+    // a cross on a stem, a bar through one) turns as a knob, with what holds it.
+    part.motion = ControlMotion::Knob;
+    const auto grip = gripAxis(s, contact, along, out);
+    part.axis = grip ? *grip : knobAxis(s, triangles, shape, panel, out, true);
   } else if (high - low < kButtonShare * radius) {
     part.motion = ControlMotion::Button;
     part.axis = pressDirection(s, triangles, shape, held);
   } else {
-    // A knob turns about the normal of the panel it stands on; where the panel cannot be told (it
-    // touches nothing, or is held all round), about its own principal direction nearest the way
-    // out of the nearest surface apart from it, else that way.
     part.motion = ControlMotion::Knob;
-    if (panel) {
-      part.axis = *panel;
-    } else {
-      part.axis = out.normalized();
-      float best = kAxisOfShape;
-      for (int i = 0; i < 3; ++i) {
-        const Eigen::Vector3f d = shape.directions.col(i).normalized();
-        const float c = std::abs(d.dot(out));
-        if (c > best) best = c, part.axis = facingWay(d, out);
-      }
-    }
-    // It turns about its own axis of rotational symmetry where that clearly says the axis above
-    // is another (the panel misread): turned about it clearly more of its surface lands back on
-    // itself, it lies far from the axis above (a few degrees' nudge by the fit of a part that is
-    // no body of revolution, a square tap handle, is not worth more than the panel's plane), and
-    // the part is no longer along it than across (an arm or a stem is nearly symmetric about its
-    // length).
-    const auto own = revolutionAxis(s.mesh, triangles, part.axis);
-    if (own && own->referenceMisfit && *own->referenceMisfit - own->misfit >= kOwnAxisMargin &&
-        std::abs(own->axis.dot(part.axis)) <= std::cos(kOwnAxisApartDegrees * static_cast<float>(M_PI) / 180.0f) &&
-        own->length <= 2.0f * own->radius)
-      part.axis = facingWay(own->axis, part.axis);
+    part.axis = knobAxis(s, triangles, shape, panel, out, true);
   }
   part.triangles = std::move(triangles);
   return part;

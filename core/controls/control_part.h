@@ -1,6 +1,8 @@
 // The part of the mesh a toggle button point switches with, and how it moves: a rotary knob
 // turns about the normal of the panel it stands on, or about its own axis of rotational symmetry
-// where it clearly has one (control_symmetry.h), a lever about its pivot at the held end, a
+// where it clearly has one (control_symmetry.h), a lever about its pivot at the held end; a long
+// grip held alike at both ends (a bar across a knob's face, a cross on a stem) has no held end and
+// turns as a knob with what holds it, about that holder's axis of rotational symmetry; a
 // push button or touch key slides along its normal. One mechanism for every file: the part is the
 // small component of the point's material it lies on (with the small components inside its box:
 // a knob's pointer, its cap), else the same over connected triangles whatever their material,

@@ -235,6 +235,32 @@ TEST(ControlParts, AKnobIsJudgedRoundOrLongAcrossThePanelItStandsOn) {
   EXPECT_GT(std::abs(found.parts[0]->axis.z()), 0.999f);
 }
 
+TEST(ControlParts, AGripBarAcrossAKnobTurnsWithTheKnobNotAsALever) {
+  // A knob's grip bar in its own material, 6 cm long, laid across the middle of the knob's round
+  // face (a disc 7 cm across on the panel): it is long, but held alike at both ends, so no end of
+  // it is a pivot; it turns with the disc that holds it, about the disc's axis (the panel's
+  // normal), not lifting about a level axis as a lever would.
+  Mesh mesh = panel();
+  mesh.materials.resize(3);
+  addPart(mesh, test::cylinder(0.035f, 0.012f, 24), 2);
+  const auto bar = addPart(mesh, test::box({-0.03f, -0.006f, 0.012f}, {0.03f, 0.006f, 0.03f}), 1);
+  const ControlParts found = findControlParts(mesh, {{0.0f, 0.0f, 0.03f}});
+  ASSERT_TRUE(found.parts[0]);
+  EXPECT_EQ(found.parts[0]->triangles, bar);
+  EXPECT_EQ(found.parts[0]->motion, ControlMotion::Knob);
+  EXPECT_GT(std::abs(found.parts[0]->axis.z()), std::cos(2.0f * static_cast<float>(M_PI) / 180.0f))
+      << found.parts[0]->axis.transpose();
+  EXPECT_NEAR(found.parts[0]->pivot.x(), 0.0f, 1e-3f);  // its middle, not an end
+  // The same bar held at one end only (reaching out over the panel from a post) stays a lever.
+  Mesh held = panel();
+  held.materials.resize(3);
+  addPart(held, test::box({-0.035f, -0.01f, 0.0f}, {-0.025f, 0.01f, 0.012f}), 2);
+  addPart(held, test::box({-0.03f, -0.006f, 0.012f}, {0.03f, 0.006f, 0.03f}), 1);
+  const ControlParts lever = findControlParts(held, {{0.0f, 0.0f, 0.03f}});
+  ASSERT_TRUE(lever.parts[0]);
+  EXPECT_EQ(lever.parts[0]->motion, ControlMotion::Lever);
+}
+
 TEST(ControlParts, ARoundHandleOnItsSideTurnsAboutItsOwnAxisNotThePanels) {
   // A round valve handle, 4 cm across and 3 cm deep, lying on its side on the panel (as on a
   // pipe): it touches the panel, whose normal is up, but it is a body of revolution about x.
