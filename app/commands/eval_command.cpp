@@ -21,6 +21,7 @@
 #include "core/curation/curation_report.h"
 #include "core/eval/evaluation_comparison.h"
 #include "core/eval/part_agreement.h"
+#include "core/eval/part_truth.h"
 #include "core/eval/unit_guess_score.h"
 #include "core/labels/labels.h"
 
@@ -42,7 +43,7 @@ void setupEval(CLI::App& root) {
     std::string models, out = "eval", cache, sweep, mode = "sparse", fitConfidence, fitCounts,
                         countObjective = "count";
     std::vector<std::string> only, compare;
-    std::string curation, units, truth;
+    std::string curation, units, truth, partTruth, savePartTruth;
     bool parts = false;
     double minutes = 2;
     int epochs = 0;
@@ -70,6 +71,13 @@ void setupEval(CLI::App& root) {
                "labels: triangle IoU by area and axis angle per part, and for a knob the angle "
                "between the mark and the knob's own axis of rotational symmetry; writes "
                "OUT/parts.md and .json");
+  cmd->add_option("--part-truth", o->partTruth,
+                  "With --parts: measure against the curator's parts kept in this file (per object "
+                  "folder and point, with the mesh's sha256; resources/datasets/*/part_truth.json) "
+                  "instead of the controls confirmed in --data's labels");
+  cmd->add_option("--save-part-truth", o->savePartTruth,
+                  "With --parts: also keep the controls confirmed in --data's labels in this file, "
+                  "as --part-truth reads it");
   cmd->add_option("--models", o->models, "Model folder (default resources/models)");
   cmd->add_option("--out", o->out, "Report folder (default eval)");
   cmd->add_option("--compare", o->compare,
@@ -100,6 +108,8 @@ void setupEval(CLI::App& root) {
       ->check(CLI::IsMember({"sparse", "dense"}));
   const auto learningCurve = sagrid::app::addLearningCurveOptions(*cmd);
   cmd->callback([o, learningCurve, cmd] {
+    if ((!o->partTruth.empty() || !o->savePartTruth.empty()) && !o->parts)
+      throw sagrid::InvalidArgument("eval: --part-truth and --save-part-truth go with --parts");
     if (!o->curation.empty()) {
       const sagrid::CurationReport report = sagrid::curationReport(sagrid::readCurationLog(o->curation));
       fs::create_directories(o->out);
@@ -131,7 +141,13 @@ void setupEval(CLI::App& root) {
         auto some = sagrid::readDataset(dir);
         entries.insert(entries.end(), some.begin(), some.end());
       }
-      const sagrid::PartAgreementReport report = sagrid::measurePartAgreement(entries);
+      if (!o->savePartTruth.empty())
+        sagrid::writeFileAtomic(o->savePartTruth,
+                                sagrid::toJson(sagrid::partTruthOf(entries)).dump(1) + "\n");
+      std::optional<sagrid::PartTruth> truth;
+      if (!o->partTruth.empty()) truth = sagrid::readPartTruth(o->partTruth);
+      const sagrid::PartAgreementReport report =
+          sagrid::measurePartAgreement(entries, truth ? &*truth : nullptr);
       fs::create_directories(o->out);
       sagrid::writeFileAtomic(fs::path(o->out) / "parts.md", sagrid::partAgreementMarkdown(report));
       sagrid::writeFileAtomic(fs::path(o->out) / "parts.json", sagrid::toJson(report).dump(2) + "\n");

@@ -12,6 +12,7 @@
 #include "core/controls/control_record.h"
 #include "core/controls/control_symmetry.h"
 #include "core/dataset/object_source.h"
+#include "core/eval/part_truth.h"
 #include "core/labels/labels.h"
 #include "core/mesh/mesh_import.h"
 
@@ -41,19 +42,38 @@ double lineAngleDegrees(const Eigen::Vector3f& a, const Eigen::Vector3f& b) {
 
 }  // namespace
 
-PartAgreementReport measurePartAgreement(const std::vector<DatasetEntry>& entries) {
+PartAgreementReport measurePartAgreement(const std::vector<DatasetEntry>& entries,
+                                         const PartTruth* truth) {
   PartAgreementReport report;
   for (const DatasetEntry& entry : entries) {
     try {
-      const ObjectLabels labels = readLabels(entry.labels);
+      ObjectLabels labels = readLabels(entry.labels);
       const UpAxis up = upAxisOrZ(labels.object.up);
+      std::filesystem::path recordsFile = entry.labels;
+      if (truth) {
+        const auto marked = truth->objects.find(entry.id);
+        if (marked == truth->objects.end()) continue;
+        const std::string sha = meshFileSha256(entry.mesh);
+        if (sha != marked->second.meshSha256)
+          throw FileError(entry.mesh, "changed since its parts were marked (sha256 " + sha.substr(0, 12) +
+                                          ", marked on " + marked->second.meshSha256.substr(0, 12) + ")");
+        for (auto& point : labels.affordances) point.extra.erase(kControlField);
+        for (const auto& [point, control] : marked->second.controls) {
+          const auto index = static_cast<std::size_t>(point - 1);
+          if (index >= labels.affordances.size() || labels.affordances[index].type != "togglebutton")
+            throw FileError(truth->file, entry.id + ": point " + std::to_string(point) +
+                                             " is no toggle button of " + entry.labels.string());
+          labels.affordances[index].extra[kControlField] = control;
+        }
+        recordsFile = truth->file;
+      }
       std::vector<std::size_t> toggles;
       std::vector<std::optional<ControlRecord>> records;
       bool anyConfirmed = false;
       for (std::size_t i = 0; i < labels.affordances.size(); ++i) {
         if (labels.affordances[i].type != "togglebutton") continue;
         toggles.push_back(i);
-        records.push_back(readControlRecord(labels.affordances[i], up, entry.labels));
+        records.push_back(readControlRecord(labels.affordances[i], up, recordsFile));
         anyConfirmed = anyConfirmed || (records.back() && records.back()->confirmed);
       }
       if (!anyConfirmed) continue;

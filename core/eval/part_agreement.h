@@ -42,8 +42,13 @@ struct PartAgreementReport {
   std::vector<std::string> skipped;  // objects that could not be read, with why
 };
 
+struct PartTruth;
+
 // Objects without confirmed parts are passed over; one that cannot be read is named in `skipped`.
-PartAgreementReport measurePartAgreement(const std::vector<DatasetEntry>& entries);
+// With `truth` (part_truth.h) the curator's parts are the truth's, not the labels' records: objects
+// it lacks are passed over, one whose mesh changed since it was marked is named in `skipped`.
+PartAgreementReport measurePartAgreement(const std::vector<DatasetEntry>& entries,
+                                         const PartTruth* truth = nullptr);
 
 std::string partAgreementMarkdown(const PartAgreementReport& report);
 nlohmann::json toJson(const PartAgreementReport& report);

@@ -6,6 +6,8 @@
 #include "core/common/error.h"
 #include "core/common/sha256.h"
 #include "core/dataset/dataset.h"
+#include "core/eval/part_agreement.h"
+#include "core/eval/part_truth.h"
 #include "core/labels/labels.h"
 #include "support/import_errors.h"
 #include "support/test_paths.h"
@@ -129,6 +131,22 @@ TEST(WildPoolCorpus, TheShippedLabelsCoverThePoolExactly) {
   EXPECT_EQ(summary.countsByCategory.at("sink"), 18);
   EXPECT_EQ(summary.countsByCategory.at("none"), 51);
   EXPECT_EQ(readDataset(options.out / "wild-train").size() + readDataset(options.out / "wild-val").size(), 81u);
+
+  // The hand-marked control parts kept with the labels (part_truth.h) name pool objects whose
+  // meshes they were marked on, at toggle buttons: every marked part is measured, none skipped.
+  std::vector<DatasetEntry> entries = readDataset(options.out / "wild-train");
+  for (auto& e : readDataset(options.out / "wild-val")) entries.push_back(e);
+  for (const char* file : {"part_truth.json", "part_truth_first_marks.json"}) {
+    SCOPED_TRACE(file);
+    const PartTruth truth = readPartTruth(options.labelsDir / file);
+    std::size_t marked = 0;
+    for (const auto& [id, object] : truth.objects) marked += object.controls.size();
+    const PartAgreementReport report = measurePartAgreement(entries, &truth);
+    EXPECT_TRUE(report.skipped.empty()) << report.skipped.front();
+    EXPECT_EQ(report.objects, truth.objects.size());
+    EXPECT_EQ(report.points.size(), marked);
+    EXPECT_EQ(marked, 39u);  // as the dataset README states
+  }
 }
 
 }  // namespace

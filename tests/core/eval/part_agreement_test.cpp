@@ -7,7 +7,9 @@
 
 #include <fstream>
 
+#include "core/common/error.h"
 #include "core/controls/control_record.h"
+#include "core/eval/part_truth.h"
 #include "core/labels/labels.h"
 #include "core/mesh/mesh_import.h"
 #include "support/analytic_meshes.h"
@@ -124,6 +126,57 @@ TEST(PartAgreement, AMarkedPartEqualToTheFoundOneAgreesAndAHalfKnobDoesNot) {
       {{"unmarked", "stove", root / "unmarked" / "mesh.obj", root / "unmarked" / "labels.json"}});
   ASSERT_EQ(broken.skipped.size(), 1u);
   EXPECT_NE(broken.skipped[0].find("unmarked"), std::string::npos);
+}
+
+// The curator's parts kept in a file: measured against them, a copy of the object whose labels
+// carry no record reads as the marked original does; a changed mesh is named, not measured; a
+// malformed file is one error naming it.
+TEST(PartTruth, KeptPartsMeasureAnyCopyAndAChangedMeshIsNamed) {
+  const fs::path root = test::freshTempDir();
+  const fs::path marked = writeKnobPanel(root / "marked" / "panel");
+  const fs::path copy = writeKnobPanel(root / "copy" / "panel");
+  const Mesh mesh = importMesh(marked / "mesh.obj", ImportOptions(UpAxis::Z));
+  ObjectLabels labels = readLabels(marked / "labels.json");
+  ControlPart half = describeControlPart(mesh, knobTriangles(mesh, 0.1f, true), PartOrigin::Marked);
+  half.axis = Eigen::Vector3f::UnitX();
+  writeControlRecord(labels.affordances[1], {half, {}, true}, UpAxis::Z);
+  writeLabels(marked / "labels.json", labels);
+  const DatasetEntry original{"panel", "stove", marked / "mesh.obj", marked / "labels.json"};
+  const DatasetEntry unmarked{"panel", "stove", copy / "mesh.obj", copy / "labels.json"};
+
+  const fs::path file = root / "part_truth.json";
+  std::ofstream(file) << toJson(partTruthOf({original, unmarked})).dump(1);
+  const PartTruth truth = readPartTruth(file);
+  ASSERT_EQ(truth.objects.size(), 1u);  // the copy's labels confirm nothing
+  EXPECT_EQ(truth.objects.at("panel").controls.size(), 1u);
+  EXPECT_EQ(truth.objects.at("panel").controls.count(2), 1u);
+
+  EXPECT_TRUE(measurePartAgreement({unmarked}).points.empty());
+  const PartAgreementReport fromLabels = measurePartAgreement({original});
+  const PartAgreementReport fromTruth = measurePartAgreement({unmarked}, &truth);
+  ASSERT_EQ(fromTruth.points.size(), 1u);
+  EXPECT_EQ(fromTruth.points[0].point, 2);
+  EXPECT_DOUBLE_EQ(fromTruth.points[0].iou, fromLabels.points[0].iou);
+  EXPECT_NEAR(fromTruth.points[0].axisDegrees, 90.0, 1.0);
+  // The truth, not the labels: a record confirmed in the copy's labels is not measured.
+  ObjectLabels copied = readLabels(copy / "labels.json");
+  writeControlRecord(copied.affordances[0], {half, {}, true}, UpAxis::Z);
+  writeLabels(copy / "labels.json", copied);
+  EXPECT_EQ(measurePartAgreement({unmarked}, &truth).points.size(), 1u);
+
+  // A changed mesh: named in skipped, with the object's file.
+  std::ofstream(copy / "mesh.obj", std::ios::app) << "v 9 9 9\n";
+  const PartAgreementReport changed = measurePartAgreement({unmarked}, &truth);
+  EXPECT_TRUE(changed.points.empty());
+  ASSERT_EQ(changed.skipped.size(), 1u);
+  EXPECT_NE(changed.skipped[0].find("changed since its parts were marked"), std::string::npos)
+      << changed.skipped[0];
+
+  for (const char* bad : {"{ not json", R"({"objects": []})", R"({"objects": {"a": {"points": {}}}})",
+                          R"({"objects": {"a": {"mesh_sha256": "x", "points": {"zero": {}}}}})"}) {
+    std::ofstream(root / "bad.json") << bad;
+    EXPECT_THROW(readPartTruth(root / "bad.json"), FileError) << bad;
+  }
 }
 
 // A round knob on a panel, its record confirmed with `axis`: how far the mark lies from the knob's

@@ -1,0 +1,81 @@
+#include "core/eval/part_truth.h"
+
+#include "core/common/atomic_file.h"
+#include "core/common/error.h"
+#include "core/common/sha256.h"
+#include "core/controls/control_record.h"
+#include "core/labels/labels.h"
+#include "core/mesh/mesh_import.h"
+
+namespace sagrid {
+
+std::string meshFileSha256(const std::filesystem::path& mesh) {
+  return sha256Hex(readFileBytes(mesh));
+}
+
+PartTruth partTruthOf(const std::vector<DatasetEntry>& entries) {
+  PartTruth truth;
+  for (const DatasetEntry& entry : entries) {
+    const ObjectLabels labels = readLabels(entry.labels);
+    const UpAxis up = upAxisOrZ(labels.object.up);
+    MarkedObject object;
+    for (std::size_t i = 0; i < labels.affordances.size(); ++i) {
+      const AffordancePoint& point = labels.affordances[i];
+      if (point.type != "togglebutton") continue;
+      const auto record = readControlRecord(point, up, entry.labels);  // validates it
+      if (record && record->confirmed)
+        object.controls[static_cast<int>(i) + 1] = point.extra.at(kControlField);
+    }
+    if (object.controls.empty()) continue;
+    object.meshSha256 = meshFileSha256(entry.mesh);
+    truth.objects[entry.id] = std::move(object);
+  }
+  return truth;
+}
+
+nlohmann::json toJson(const PartTruth& truth) {
+  nlohmann::json objects = nlohmann::json::object();
+  for (const auto& [id, object] : truth.objects) {
+    nlohmann::json points = nlohmann::json::object();
+    for (const auto& [point, control] : object.controls) points[std::to_string(point)] = control;
+    objects[id] = {{"mesh_sha256", object.meshSha256}, {"points", points}};
+  }
+  return {{"objects", objects}};
+}
+
+PartTruth readPartTruth(const std::filesystem::path& file) {
+  nlohmann::json j;
+  try {
+    j = nlohmann::json::parse(readFileBytes(file, kMaxJsonFileBytes));
+  } catch (const nlohmann::json::exception& e) {
+    throw FileError(file, std::string("not JSON: ") + e.what());
+  }
+  if (!j.is_object() || !j.contains("objects") || !j["objects"].is_object())
+    throw FileError(file, "not a part truth file: {\"objects\": {...}}");
+  PartTruth truth;
+  truth.file = file;
+  for (const auto& [id, object] : j["objects"].items()) {
+    if (!object.is_object() || !object.contains("mesh_sha256") || !object["mesh_sha256"].is_string() ||
+        !object.contains("points") || !object["points"].is_object())
+      throw FileError(file, "object " + id + ": needs \"mesh_sha256\" and \"points\"");
+    MarkedObject marked;
+    marked.meshSha256 = object["mesh_sha256"].get<std::string>();
+    for (const auto& [point, control] : object["points"].items()) {
+      int index = 0;
+      try {
+        std::size_t used = 0;
+        index = std::stoi(point, &used);
+        if (used != point.size()) index = 0;
+      } catch (const std::exception&) {
+        index = 0;
+      }
+      if (index < 1) throw FileError(file, "object " + id + ": point \"" + point + "\" is no number from 1");
+      if (!control.is_object()) throw FileError(file, "object " + id + " point " + point + ": a control is an object");
+      marked.controls[index] = control;
+    }
+    truth.objects[id] = std::move(marked);
+  }
+  return truth;
+}
+
+}  // namespace sagrid
