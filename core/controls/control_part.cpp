@@ -73,6 +73,8 @@ constexpr float kAlongThin = 0.5f;
 // A disc cut around a printed key: this share of the grown radius.
 constexpr float kDiscShare = 0.5f;
 
+constexpr float radians(float degrees) { return degrees * static_cast<float>(M_PI) / 180.0f; }
+
 struct Surface {
   const Mesh& mesh;
   std::vector<Eigen::Vector3f> centroids;
@@ -442,7 +444,7 @@ Contact contactOf(const Surface& s, const std::vector<bool>& inPart,
 std::optional<Eigen::Vector3f> standingNormal(const Contact& contact) {
   if (contact.touches == 0 || contact.sum.norm() < kContactAgreement * contact.touches)
     return std::nullopt;
-  const float cone = std::cos(kPanelConeDegrees * static_cast<float>(M_PI) / 180.0f);
+  const float cone = std::cos(radians(kPanelConeDegrees));
   float most = 0;
   Eigen::Vector3f panel = contact.sum;
   for (const auto& [normal, touches] : contact.normals) {
@@ -536,29 +538,29 @@ bool leverOnItsEnd(const Surface& s, ControlPart& part, const std::vector<Eigen:
 // The axis a grip long `along` turns about: that of what holds it, the surface it touches
 // (`contact`), about which that surface is most nearly a body of revolution (a knob's face under a
 // bar, a stem under a cross or through a bar), where it runs across the grip (within
-// kGripAcrossDegrees of square to `along`); none where nothing touches it or the holder's axis
-// runs along the grip. Facing `out`.
+// kGripAcrossDegrees of square to `along`), taken square to it (the grip turns across its
+// length; the fit of a holder touched only in patches leans a little); none where nothing touches
+// it or the holder's axis runs along the grip. Facing `out`. The holder's fit is not checked: a
+// grip laid on a flat panel turns about the panel's normal, the axis a flat patch fits best.
 std::optional<Eigen::Vector3f> gripAxis(const Surface& s, const Contact& contact,
                                         const Eigen::Vector3f& along, const Eigen::Vector3f& out) {
   const auto holder = revolutionAxis(s.mesh, contact.triangles);
   if (!holder) return std::nullopt;
-  if (std::abs(holder->axis.dot(along)) > std::sin(kGripAcrossDegrees * static_cast<float>(M_PI) / 180.0f))
+  if (std::abs(holder->axis.dot(along)) > std::sin(radians(kGripAcrossDegrees)))
     return std::nullopt;
-  return facingWay(holder->axis, out);
+  return facingWay((holder->axis - holder->axis.dot(along) * along).normalized(), out);
 }
 
 // The axis a knob turns about: the normal of the panel it stands on; where the panel cannot be
 // told (it touches nothing, or is held all round), its own principal direction nearest the way out
-// of the nearest surface apart from it (`out`), else that way. Then, where `ownAxis` (a grip, long
-// across its axis, is no body of revolution), its own axis of rotational
+// of the nearest surface apart from it (`out`), else that way. Then its own axis of rotational
 // symmetry where that clearly says the axis above is another (the panel misread): turned about it
 // clearly more of its surface lands back on itself, it lies far from the axis above (a few
 // degrees' nudge by the fit of a part that is no body of revolution, a square tap handle, is not
 // worth more than the panel's plane), and the part is no longer along it than across (an arm or a
 // stem is nearly symmetric about its length).
 Eigen::Vector3f knobAxis(const Surface& s, const std::vector<int>& triangles, const Principal& shape,
-                         const std::optional<Eigen::Vector3f>& panel, const Eigen::Vector3f& out,
-                         bool ownAxis) {
+                         const std::optional<Eigen::Vector3f>& panel, const Eigen::Vector3f& out) {
   Eigen::Vector3f axis = out.normalized();
   if (panel) {
     axis = *panel;
@@ -570,10 +572,9 @@ Eigen::Vector3f knobAxis(const Surface& s, const std::vector<int>& triangles, co
       if (c > best) best = c, axis = facingWay(d, out);
     }
   }
-  if (!ownAxis) return axis;
   const auto own = revolutionAxis(s.mesh, triangles, axis);
   if (own && own->referenceMisfit && *own->referenceMisfit - own->misfit >= kOwnAxisMargin &&
-      std::abs(own->axis.dot(axis)) <= std::cos(kOwnAxisApartDegrees * static_cast<float>(M_PI) / 180.0f) &&
+      std::abs(own->axis.dot(axis)) <= std::cos(radians(kOwnAxisApartDegrees)) &&
       own->length <= 2.0f * own->radius)
     axis = facingWay(own->axis, axis);
   return axis;
@@ -625,13 +626,13 @@ ControlPart describe(const Surface& s, std::vector<int> triangles, PartOrigin or
     // a cross on a stem, a bar through one) turns as a knob, with what holds it.
     part.motion = ControlMotion::Knob;
     const auto grip = gripAxis(s, contact, along, out);
-    part.axis = grip ? *grip : knobAxis(s, triangles, shape, panel, out, true);
+    part.axis = grip ? *grip : knobAxis(s, triangles, shape, panel, out);
   } else if (high - low < kButtonShare * radius) {
     part.motion = ControlMotion::Button;
     part.axis = pressDirection(s, triangles, shape, held);
   } else {
     part.motion = ControlMotion::Knob;
-    part.axis = knobAxis(s, triangles, shape, panel, out, true);
+    part.axis = knobAxis(s, triangles, shape, panel, out);
   }
   part.triangles = std::move(triangles);
   return part;
@@ -688,6 +689,16 @@ ControlPart describeControlPart(const Mesh& mesh, std::vector<int> triangles, Pa
                                  }),
                   triangles.end());
   return describe(surface, std::move(triangles), origin);
+}
+
+Eigen::Vector3f partCentre(const Mesh& mesh, const std::vector<int>& triangles) {
+  std::vector<int> valid;
+  for (int t : triangles)
+    if (t >= 0 && static_cast<std::size_t>(t) < mesh.triangles.size()) valid.push_back(t);
+  Eigen::Vector3f sum = Eigen::Vector3f::Zero();
+  const std::vector<int> vertices = distinctVertices(mesh, valid);
+  for (int v : vertices) sum += mesh.positions[static_cast<std::size_t>(v)];
+  return vertices.empty() ? sum : Eigen::Vector3f(sum / static_cast<float>(vertices.size()));
 }
 
 ControlParts findControlParts(const Mesh& mesh, const std::vector<Eigen::Vector3f>& points) {

@@ -74,4 +74,8 @@ Eigen::Vector3f pressDirection(const Mesh& mesh, const std::vector<int>& triangl
 // from where the rest of the mesh holds it.
 ControlPart describeControlPart(const Mesh& mesh, std::vector<int> triangles, PartOrigin origin);
 
+// The point a knob or button of `triangles` turns or slides about: the mean of the part's distinct
+// vertices (as describeControlPart places it); the origin for no valid triangle.
+Eigen::Vector3f partCentre(const Mesh& mesh, const std::vector<int>& triangles);
+
 }  // namespace sagrid

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <iterator>
 #include <map>
+#include <set>
 #include <sstream>
 
 #include "core/common/error.h"
@@ -45,14 +46,18 @@ double lineAngleDegrees(const Eigen::Vector3f& a, const Eigen::Vector3f& b) {
 PartAgreementReport measurePartAgreement(const std::vector<DatasetEntry>& entries,
                                          const PartTruth* truth) {
   PartAgreementReport report;
+  std::set<std::string> unmatched;  // objects of the truth not among the entries
+  if (truth)
+    for (const auto& [id, object] : truth->objects) unmatched.insert(id);
   for (const DatasetEntry& entry : entries) {
+    if (truth && !truth->objects.count(entry.id)) continue;
+    unmatched.erase(entry.id);
     try {
       ObjectLabels labels = readLabels(entry.labels);
       const UpAxis up = upAxisOrZ(labels.object.up);
       std::filesystem::path recordsFile = entry.labels;
       if (truth) {
         const auto marked = truth->objects.find(entry.id);
-        if (marked == truth->objects.end()) continue;
         const std::string sha = meshFileSha256(entry.mesh);
         if (sha != marked->second.meshSha256)
           throw FileError(entry.mesh, "changed since its parts were marked (sha256 " + sha.substr(0, 12) +
@@ -61,8 +66,8 @@ PartAgreementReport measurePartAgreement(const std::vector<DatasetEntry>& entrie
         for (const auto& [point, control] : marked->second.controls) {
           const auto index = static_cast<std::size_t>(point - 1);
           if (index >= labels.affordances.size() || labels.affordances[index].type != "togglebutton")
-            throw FileError(truth->file, entry.id + ": point " + std::to_string(point) +
-                                             " is no toggle button of " + entry.labels.string());
+            throw FileError(truth->file, "point " + std::to_string(point) + " is no toggle button of " +
+                                             entry.labels.string());
           labels.affordances[index].extra[kControlField] = control;
         }
         recordsFile = truth->file;
@@ -112,6 +117,8 @@ PartAgreementReport measurePartAgreement(const std::vector<DatasetEntry>& entrie
       report.skipped.push_back(entry.id + ": " + e.what());
     }
   }
+  for (const std::string& id : unmatched)
+    report.skipped.push_back(id + ": marked in " + truth->file.string() + ", not among the data");
   const double n = static_cast<double>(std::max<std::size_t>(report.points.size(), 1));
   for (const PartAgreement& a : report.points) {
     report.meanIou += a.iou / n;

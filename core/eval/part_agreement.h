@@ -46,7 +46,8 @@ struct PartTruth;
 
 // Objects without confirmed parts are passed over; one that cannot be read is named in `skipped`.
 // With `truth` (part_truth.h) the curator's parts are the truth's, not the labels' records: objects
-// it lacks are passed over, one whose mesh changed since it was marked is named in `skipped`.
+// it lacks are passed over; one whose mesh changed since it was marked, one whose marked point is no
+// toggle button and each of its objects not among `entries` are named in `skipped`.
 PartAgreementReport measurePartAgreement(const std::vector<DatasetEntry>& entries,
                                          const PartTruth* truth = nullptr);
 

@@ -1,5 +1,7 @@
 #include "core/eval/part_truth.h"
 
+#include <algorithm>
+
 #include "core/common/atomic_file.h"
 #include "core/common/error.h"
 #include "core/common/sha256.h"
@@ -27,6 +29,8 @@ PartTruth partTruthOf(const std::vector<DatasetEntry>& entries) {
         object.controls[static_cast<int>(i) + 1] = point.extra.at(kControlField);
     }
     if (object.controls.empty()) continue;
+    if (truth.objects.count(entry.id))
+      throw FileError(entry.labels, "object folder " + entry.id + " is among the data twice");
     object.meshSha256 = meshFileSha256(entry.mesh);
     truth.objects[entry.id] = std::move(object);
   }
@@ -61,18 +65,14 @@ PartTruth readPartTruth(const std::filesystem::path& file) {
     MarkedObject marked;
     marked.meshSha256 = object["mesh_sha256"].get<std::string>();
     for (const auto& [point, control] : object["points"].items()) {
-      int index = 0;
-      try {
-        std::size_t used = 0;
-        index = std::stoi(point, &used);
-        if (used != point.size()) index = 0;
-      } catch (const std::exception&) {
-        index = 0;
-      }
-      if (index < 1) throw FileError(file, "object " + id + ": point \"" + point + "\" is no number from 1");
+      // A point is a whole number from 1, written plainly (no sign, space or leading zero).
+      const bool plain = !point.empty() && point.size() <= 6 && point[0] != '0' &&
+                         std::all_of(point.begin(), point.end(), [](char c) { return c >= '0' && c <= '9'; });
+      if (!plain) throw FileError(file, "object " + id + ": point \"" + point + "\" is no number from 1");
       if (!control.is_object()) throw FileError(file, "object " + id + " point " + point + ": a control is an object");
-      marked.controls[index] = control;
+      marked.controls[std::stoi(point)] = control;
     }
+    if (marked.controls.empty()) throw FileError(file, "object " + id + ": no points");
     truth.objects[id] = std::move(marked);
   }
   return truth;

@@ -32,12 +32,14 @@ struct PartTruth {
 };
 
 // The controls the curator confirmed in `entries`' labels, keyed by object folder; objects
-// without any are left out. Throws FileError naming a labels file or mesh that cannot be read.
+// without any are left out. Throws FileError naming a labels file or mesh that cannot be read, or
+// an object folder that comes twice.
 PartTruth partTruthOf(const std::vector<DatasetEntry>& entries);
 
 nlohmann::json toJson(const PartTruth& truth);
 
-// Throws FileError naming `file` for a file not of the form above.
+// Throws FileError naming `file` for a file not of the form above (a point written other than as
+// a plain whole number from 1, an object without points).
 PartTruth readPartTruth(const std::filesystem::path& file);
 
 // The sha256 of the mesh file at `mesh` (its bytes, as labels' object.sha256).

@@ -71,6 +71,10 @@ bool setControlMotion(Session& session, int index, ControlMotion motion) {
   if (!shown) return false;
   if (shown->part.motion == motion) return true;
   shown->part.motion = motion;
+  // A knob turns and a button slides about the part's middle; a lever's held end stays the
+  // curator's to set (Pivot at the point).
+  if (motion != ControlMotion::Lever && !shown->part.triangles.empty())
+    shown->part.pivot = partCentre(doc->mesh(), shown->part.triangles);
   setControlRecord(session, index, *shown, std::string("moves as a ") + toString(motion));
   return true;
 }

@@ -36,8 +36,8 @@ void setControlRecord(Session& session, int index, const ShownControl& shown, co
 std::size_t confirmEveryControl(Session& session, int axisOf = -1);
 
 // Point `index`'s control moving as `motion` (the Points panel's motion list), its part and axis
-// kept; one undoable step where it moved otherwise. False (nothing done) when the point has no
-// control.
+// kept, a knob's or button's pivot moved to the part's middle; one undoable step where it moved
+// otherwise. False (nothing done) when the point has no control.
 bool setControlMotion(Session& session, int index, ControlMotion motion);
 
 // Point `index`'s knob axis set to its part's axis of rotational symmetry (core/controls/

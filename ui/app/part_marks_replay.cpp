@@ -115,6 +115,9 @@ PartMarksSummary replayPartMarks(Session& session, const nlohmann::json& marks,
             summary.problems.push_back(name + ": no part to give the motion");
             continue;
           }
+          // Already moving so, the mark still confirms it.
+          if (const auto shown = shownControl(*doc, index); shown && !shown->confirmed)
+            setControlRecord(session, index, *shown, "part kept");
         }
         if (mark.contains("axis")) {
           const std::string problem = setAxis(session, index, mark.at("axis").get<std::string>(), source);

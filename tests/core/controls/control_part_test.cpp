@@ -235,7 +235,7 @@ TEST(ControlParts, AKnobIsJudgedRoundOrLongAcrossThePanelItStandsOn) {
   EXPECT_GT(std::abs(found.parts[0]->axis.z()), 0.999f);
 }
 
-TEST(ControlParts, AGripBarAcrossAKnobTurnsWithTheKnobNotAsALever) {
+TEST(ControlParts, AGripTurnsWithWhatHoldsItNotAsALever) {
   // A knob's grip bar in its own material, 6 cm long, laid across the middle of the knob's round
   // face (a disc 7 cm across on the panel): it is long, but held alike at both ends, so no end of
   // it is a pivot; it turns with the disc that holds it, about the disc's axis (the panel's
@@ -251,6 +251,19 @@ TEST(ControlParts, AGripBarAcrossAKnobTurnsWithTheKnobNotAsALever) {
   EXPECT_GT(std::abs(found.parts[0]->axis.z()), std::cos(2.0f * static_cast<float>(M_PI) / 180.0f))
       << found.parts[0]->axis.transpose();
   EXPECT_NEAR(found.parts[0]->pivot.x(), 0.0f, 1e-3f);  // its middle, not an end
+  // A bar through a round pipe lying along x on the panel turns about the pipe's axis, which is
+  // neither the panel's normal nor any of the bar's own directions: what holds it decides.
+  Mesh piped = panel();
+  piped.materials.resize(3);
+  const Eigen::Matrix3f alongX =
+      Eigen::AngleAxisf(static_cast<float>(M_PI) / 2.0f, Eigen::Vector3f::UnitY()).toRotationMatrix();
+  addPart(piped, test::cylinder(0.02f, 0.2f, 48, alongX, {-0.1f, 0.0f, 0.02f}), 2);
+  addPart(piped, test::box({-0.005f, -0.024f, 0.017f}, {0.005f, 0.024f, 0.023f}), 1);
+  const ControlParts throughPipe = findControlParts(piped, {{0.0f, 0.024f, 0.02f}});
+  ASSERT_TRUE(throughPipe.parts[0]);
+  EXPECT_EQ(throughPipe.parts[0]->motion, ControlMotion::Knob);
+  EXPECT_GT(std::abs(throughPipe.parts[0]->axis.x()), std::cos(5.0f * static_cast<float>(M_PI) / 180.0f))
+      << throughPipe.parts[0]->axis.transpose();
   // The same bar held at one end only (reaching out over the panel from a post) stays a lever.
   Mesh held = panel();
   held.materials.resize(3);

@@ -172,8 +172,18 @@ TEST(PartTruth, KeptPartsMeasureAnyCopyAndAChangedMeshIsNamed) {
   EXPECT_NE(changed.skipped[0].find("changed since its parts were marked"), std::string::npos)
       << changed.skipped[0];
 
+  // An object of the truth not among the data is named, as is one marked twice.
+  const PartAgreementReport elsewhere = measurePartAgreement({}, &truth);
+  ASSERT_EQ(elsewhere.skipped.size(), 1u);
+  EXPECT_NE(elsewhere.skipped[0].find("panel: marked in"), std::string::npos) << elsewhere.skipped[0];
+  EXPECT_THROW(partTruthOf({original, original}), FileError);
+
   for (const char* bad : {"{ not json", R"({"objects": []})", R"({"objects": {"a": {"points": {}}}})",
-                          R"({"objects": {"a": {"mesh_sha256": "x", "points": {"zero": {}}}}})"}) {
+                          R"({"objects": {"a": {"mesh_sha256": "x", "points": {}}}})",
+                          R"({"objects": {"a": {"mesh_sha256": "x", "points": {"zero": {}}}}})",
+                          R"({"objects": {"a": {"mesh_sha256": "x", "points": {"02": {}}}}})",
+                          R"({"objects": {"a": {"mesh_sha256": "x", "points": {"+2": {}}}}})",
+                          R"({"objects": {"a": {"mesh_sha256": "x", "points": {"2": []}}}})"}) {
     std::ofstream(root / "bad.json") << bad;
     EXPECT_THROW(readPartTruth(root / "bad.json"), FileError) << bad;
   }

@@ -218,6 +218,7 @@ TEST(PartMarksReplay, AKnobGetsItsOwnLeaningAxisInOneStep) {
   EXPECT_TRUE(lever.problems.empty());
   ShownControl asLever = *shownControl(*session.document(), 0);
   asLever.part.motion = ControlMotion::Lever;
+  asLever.part.pivot += Eigen::Vector3f(0.01f, 0.0f, 0.0f);  // a lever's held end
   setControlRecord(session, 0, asLever, "moves as a lever");
   EXPECT_FALSE(setOwnAxis(session, 0));
   const PartMarksSummary refused = replayPartMarks(
@@ -235,10 +236,30 @@ TEST(PartMarksReplay, AKnobGetsItsOwnLeaningAxisInOneStep) {
   EXPECT_EQ(knob->part.motion, ControlMotion::Knob);
   EXPECT_GT(std::abs(knob->part.axis.dot(leaning)), 0.999f);  // facing the way the x axis did
   EXPECT_EQ(session.document()->historySize(), before + 4);
+  // A knob turns about its middle, not the lever's held end.
+  EXPECT_TRUE(knob->part.pivot.isApprox(partCentre(session.document()->mesh(), knob->part.triangles), 1e-4f))
+      << knob->part.pivot.transpose();
   EXPECT_THROW(replayPartMarks(session,
                                nlohmann::json::parse(R"({"objects": {"a": [{"point": 1, "motion": "slider"}]}})"),
                                "marks.json"),
                FileError);
+}
+
+// A mark that only names the motion the found control already has still confirms it, as Keep does.
+TEST(PartMarksReplay, AMotionMarkConfirmsAControlThatAlreadyMovesSo) {
+  const fs::path dir = test::freshTempDir();
+  writeLeaningKnob(dir / "queue" / "a");
+  Session session;
+  openQueue(session, dir / "queue");
+  EXPECT_FALSE(recordOf(dir / "queue" / "a", 0));
+  const PartMarksSummary summary = replayPartMarks(
+      session, nlohmann::json::parse(R"({"objects": {"a": [{"point": 1, "motion": "knob"}]}})"), "marks.json");
+  EXPECT_TRUE(summary.problems.empty());
+  EXPECT_EQ(summary.parts, 1u);
+  const auto record = recordOf(dir / "queue" / "a", 0);
+  ASSERT_TRUE(record);
+  EXPECT_TRUE(record->confirmed);
+  EXPECT_EQ(record->part.motion, ControlMotion::Knob);
 }
 
 }  // namespace
