@@ -62,6 +62,8 @@ constexpr float kHubShare = 2.0f;
 // A lever's free end stands further from what holds it than its held end by at least this share of
 // its length; a long part whose ends lie nearer alike is held along its length (a grip).
 constexpr float kHeldEndShare = 0.1f;
+// A low-poly part's faces are sampled at most this many times for what they touch.
+constexpr double kMaxFaceSamples = 20000;
 // A grip turns about its holder's axis where that runs within this many degrees of square to it.
 constexpr float kGripAcrossDegrees = 30.0f;
 // A part whose faces' normals sum to more than this share of its area is an open sheet facing
@@ -381,6 +383,14 @@ std::optional<Eigen::Vector3f> awayFromHolder(const Surface& s, const std::vecto
   return out.normalized();
 }
 
+// How near a part's points (`points`, its vertices) another surface counts as touching it: a
+// share of the part's size.
+float touchDistance(const Surface& s, const std::vector<Eigen::Vector3f>& points) {
+  Eigen::AlignedBox3f box;
+  for (const auto& p : points) box.extend(p);
+  return std::max(kContactShare * box.diagonal().norm(), 1e-6f * s.diagonal);
+}
+
 // What a part touches: the triangles of the surface apart from it within kContactShare of the
 // part's size of its vertices, each one's normal turned towards the part's `centre` and counted
 // once per vertex touching it; triangles facing alike (to kNormalBin) merged into one entry.
@@ -398,7 +408,7 @@ Contact contactOf(const Surface& s, const std::vector<bool>& inPart,
   Eigen::AlignedBox3f box;
   for (const auto& v : vertices) box.extend(v);
   if (!box.min().allFinite() || !box.max().allFinite()) return contact;
-  const float touch = std::max(kContactShare * box.diagonal().norm(), 1e-6f * s.diagonal);
+  const float touch = touchDistance(s, vertices);
   Eigen::AlignedBox3f near = box;
   near.min().array() -= touch, near.max().array() += touch;
   const PointGrid grid(vertices, box, touch);
@@ -435,6 +445,37 @@ Contact contactOf(const Surface& s, const std::vector<bool>& inPart,
   }
   for (auto& [normal, touches] : contact.normals) normal.normalize();
   return contact;
+}
+
+// Points over the faces of `triangles` about `spacing` apart (a barycentric grid on each), at most
+// kMaxFaceSamples in all (the spacing widened to fit): what a low-poly part touches between its
+// corners.
+std::vector<Eigen::Vector3f> faceSamples(const Surface& s, const std::vector<int>& triangles, float spacing) {
+  const auto divisions = [&](std::size_t t, float step) {
+    float longest = 0;
+    for (int c = 0; c < 3; ++c) longest = std::max(longest, (s.corner(t, (c + 1) % 3) - s.corner(t, c)).norm());
+    return std::max(1, static_cast<int>(std::ceil(longest / std::max(step, 1e-12f))));
+  };
+  const auto count = [&](float step) {
+    double n = 0;
+    for (int t : triangles) {
+      const double d = std::min(divisions(static_cast<std::size_t>(t), step), 1 << 12);
+      n += (d + 1) * (d + 2) / 2;
+    }
+    return n;
+  };
+  for (double n = count(spacing); n > kMaxFaceSamples; n = count(spacing))
+    spacing *= static_cast<float>(std::sqrt(n / kMaxFaceSamples)) * 1.01f;
+  std::vector<Eigen::Vector3f> samples;
+  for (int t : triangles) {
+    const auto u = static_cast<std::size_t>(t);
+    const int n = divisions(u, spacing);
+    const Eigen::Vector3f a = s.corner(u, 0), ab = s.corner(u, 1) - a, ac = s.corner(u, 2) - a;
+    for (int i = 0; i <= n; ++i)
+      for (int j = 0; i + j <= n; ++j)
+        samples.push_back(a + (static_cast<float>(i) / n) * ab + (static_cast<float>(j) / n) * ac);
+  }
+  return samples;
 }
 
 // The normal of the panel a part stands on, from what it touches (contactOf): the way most of the
@@ -618,14 +659,18 @@ ControlPart describe(const Surface& s, std::vector<int> triangles, PartOrigin or
   const bool longAcross = flat.spread[0] > kLeverElongation * std::max(flat.spread[1], 1e-12f);
   if (long3d || longAcross) {
     const Eigen::Vector3f along = (long3d ? shape.directions.col(0) : flat.directions.col(0)).normalized();
-    if (leverOnItsEnd(s, part, vertices, centre, inPart, along, out, !contact.triangles.empty())) {
+    // A low-poly part may touch what holds it only between its corners (a bar through a stem).
+    const Contact holding = contact.triangles.empty()
+                             ? contactOf(s, inPart, faceSamples(s, triangles, 0.5f * touchDistance(s, vertices)), centre)
+                             : contact;
+    if (leverOnItsEnd(s, part, vertices, centre, inPart, along, out, !holding.triangles.empty())) {
       part.triangles = std::move(triangles);
       return part;
     }
     // Held alike at both ends there is no end to pivot about: a grip (a bar across a knob's face,
     // a cross on a stem, a bar through one) turns as a knob, with what holds it.
     part.motion = ControlMotion::Knob;
-    const auto grip = gripAxis(s, contact, along, out);
+    const auto grip = gripAxis(s, holding, along, out);
     part.axis = grip ? *grip : knobAxis(s, triangles, shape, panel, out);
   } else if (high - low < kButtonShare * radius) {
     part.motion = ControlMotion::Button;

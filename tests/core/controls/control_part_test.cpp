@@ -252,18 +252,20 @@ TEST(ControlParts, AGripTurnsWithWhatHoldsItNotAsALever) {
       << found.parts[0]->axis.transpose();
   EXPECT_NEAR(found.parts[0]->pivot.x(), 0.0f, 1e-3f);  // its middle, not an end
   // A bar through a round pipe lying along x on the panel turns about the pipe's axis, which is
-  // neither the panel's normal nor any of the bar's own directions: what holds it decides.
+  // neither the panel's normal nor any of the bar's own directions: what holds it decides. Its
+  // corners stand clear of the pipe (a low-poly bar): it touches the pipe between them.
   Mesh piped = panel();
   piped.materials.resize(3);
   const Eigen::Matrix3f alongX =
       Eigen::AngleAxisf(static_cast<float>(M_PI) / 2.0f, Eigen::Vector3f::UnitY()).toRotationMatrix();
   addPart(piped, test::cylinder(0.02f, 0.2f, 48, alongX, {-0.1f, 0.0f, 0.02f}), 2);
-  addPart(piped, test::box({-0.005f, -0.024f, 0.017f}, {0.005f, 0.024f, 0.023f}), 1);
-  const ControlParts throughPipe = findControlParts(piped, {{0.0f, 0.024f, 0.02f}});
+  addPart(piped, test::box({-0.005f, -0.03f, 0.017f}, {0.005f, 0.03f, 0.023f}), 1);
+  const ControlParts throughPipe = findControlParts(piped, {{0.0f, 0.028f, 0.023f}});
   ASSERT_TRUE(throughPipe.parts[0]);
   EXPECT_EQ(throughPipe.parts[0]->motion, ControlMotion::Knob);
   EXPECT_GT(std::abs(throughPipe.parts[0]->axis.x()), std::cos(5.0f * static_cast<float>(M_PI) / 180.0f))
       << throughPipe.parts[0]->axis.transpose();
+  EXPECT_NEAR(throughPipe.parts[0]->pivot.y(), 0.0f, 1e-3f);  // the pipe's, not an end
   // The same bar held at one end only (reaching out over the panel from a post) stays a lever.
   Mesh held = panel();
   held.materials.resize(3);
