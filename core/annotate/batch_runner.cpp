@@ -94,14 +94,20 @@ void requireWritableFolder(const fs::path& out) {
   if (ec || !fs::is_directory(out))
     throw FileError(out, "cannot create the output folder: " +
                              (ec ? ec.message() : std::string("a file of that name exists")));
-  const fs::path probe = out / (".sagrid-write-probe-" + std::to_string(::getpid()));
+  const std::string probePrefix = ".sagrid-write-probe-";
+  const fs::path probe = out / (probePrefix + std::to_string(::getpid()));
   try {
     writeFileAtomic(probe, "probe\n");
   } catch (const Error& e) {
     throw FileError(out, std::string("the output folder cannot be written (") + e.what() +
                              "); nothing was written");
   }
-  fs::remove(probe, ec);
+  // This run's probe, and any a run killed between writing and removing its own left behind (a
+  // run beside this one in a Slurm array loses nothing: its probe has done its work once written).
+  std::error_code removing;
+  for (fs::directory_iterator it(out, ec), end; !ec && it != end; it.increment(ec))
+    if (it->path().filename().string().rfind(probePrefix, 0) == 0) fs::remove(it->path(), removing);
+  fs::remove(probe, removing);
 }
 
 BatchSummary runBatch(const std::vector<MeshFile>& files, const BatchOptions& options,

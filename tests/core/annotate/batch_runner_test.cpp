@@ -125,5 +125,18 @@ TEST(BatchRunner, AnOutputFolderThatCannotBeCreatedIsNamed) {
   }
 }
 
+// A run killed between writing its write probe and removing it leaves the probe; the next run
+// takes it away with its own, so a rerun leaves the folder as an uninterrupted run does.
+TEST(BatchRunner, AWriteProbeAKilledRunLeftIsRemovedByTheNext) {
+  const fs::path out = test::freshTempDir() / "out";
+  fs::create_directories(out);
+  std::ofstream(out / ".sagrid-write-probe-999999") << "probe\n";
+  std::ofstream(out / "labels-kept.json") << "{}";
+  requireWritableFolder(out);
+  std::vector<std::string> left;
+  for (const auto& entry : fs::directory_iterator(out)) left.push_back(entry.path().filename().string());
+  EXPECT_THAT(left, ::testing::ElementsAre("labels-kept.json"));
+}
+
 }  // namespace
 }  // namespace sagrid
