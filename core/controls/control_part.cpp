@@ -454,12 +454,14 @@ std::vector<Eigen::Vector3f> faceSamples(const Surface& s, const std::vector<int
   const auto divisions = [&](std::size_t t, float step) {
     float longest = 0;
     for (int c = 0; c < 3; ++c) longest = std::max(longest, (s.corner(t, (c + 1) % 3) - s.corner(t, c)).norm());
-    return std::max(1, static_cast<int>(std::ceil(longest / std::max(step, 1e-12f))));
+    const float d = std::ceil(longest / std::max(step, 1e-12f));
+    return std::isfinite(d) ? std::clamp(static_cast<int>(std::min(d, 4096.0f)), 1, 4096) : 1;
   };
   const auto count = [&](float step) {
     double n = 0;
     for (int t : triangles) {
-      const double d = std::min(divisions(static_cast<std::size_t>(t), step), 1 << 12);
+      if (!s.valid[static_cast<std::size_t>(t)]) continue;
+      const double d = divisions(static_cast<std::size_t>(t), step);
       n += (d + 1) * (d + 2) / 2;
     }
     return n;
@@ -469,6 +471,7 @@ std::vector<Eigen::Vector3f> faceSamples(const Surface& s, const std::vector<int
   std::vector<Eigen::Vector3f> samples;
   for (int t : triangles) {
     const auto u = static_cast<std::size_t>(t);
+    if (!s.valid[u]) continue;
     const int n = divisions(u, spacing);
     const Eigen::Vector3f a = s.corner(u, 0), ab = s.corner(u, 1) - a, ac = s.corner(u, 2) - a;
     for (int i = 0; i <= n; ++i)

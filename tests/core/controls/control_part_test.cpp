@@ -9,6 +9,7 @@
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numeric>
 
 #include "core/mesh/mesh.h"
@@ -274,6 +275,19 @@ TEST(ControlParts, AGripTurnsWithWhatHoldsItNotAsALever) {
   const ControlParts lever = findControlParts(held, {{0.0f, 0.0f, 0.03f}});
   ASSERT_TRUE(lever.parts[0]);
   EXPECT_EQ(lever.parts[0]->motion, ControlMotion::Lever);
+}
+
+TEST(ControlParts, ALongPartWithANonFiniteCornerTouchingNothingIsNoError) {
+  // A bar floating over the panel (so its faces are looked at between its corners), one corner
+  // not a number: a part or a site, never a crash.
+  Mesh mesh = panel();
+  mesh.materials.resize(2);
+  const auto bar = addPart(mesh, test::box({-0.03f, -0.005f, 0.05f}, {0.03f, 0.005f, 0.06f}), 1);
+  mesh.positions[static_cast<std::size_t>(mesh.triangles[static_cast<std::size_t>(bar[0])][0])].x() =
+      std::numeric_limits<float>::quiet_NaN();
+  const ControlParts found = findControlParts(mesh, {{0.0f, 0.0f, 0.06f}});
+  ASSERT_EQ(found.parts.size(), 1u);
+  if (found.parts[0]) EXPECT_FALSE(found.parts[0]->triangles.empty());
 }
 
 TEST(ControlParts, ARoundHandleOnItsSideTurnsAboutItsOwnAxisNotThePanels) {
