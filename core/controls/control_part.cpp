@@ -457,10 +457,13 @@ std::vector<Eigen::Vector3f> faceSamples(const Surface& s, const std::vector<int
     const float d = std::ceil(longest / std::max(step, 1e-12f));
     return std::isfinite(d) ? std::clamp(static_cast<int>(std::min(d, 4096.0f)), 1, 4096) : 1;
   };
+  const auto usable = [&](std::size_t t) {
+    return s.valid[t] && s.corner(t, 0).allFinite() && s.corner(t, 1).allFinite() && s.corner(t, 2).allFinite();
+  };
   const auto count = [&](float step) {
     double n = 0;
     for (int t : triangles) {
-      if (!s.valid[static_cast<std::size_t>(t)]) continue;
+      if (!usable(static_cast<std::size_t>(t))) continue;
       const double d = divisions(static_cast<std::size_t>(t), step);
       n += (d + 1) * (d + 2) / 2;
     }
@@ -471,7 +474,7 @@ std::vector<Eigen::Vector3f> faceSamples(const Surface& s, const std::vector<int
   std::vector<Eigen::Vector3f> samples;
   for (int t : triangles) {
     const auto u = static_cast<std::size_t>(t);
-    if (!s.valid[u]) continue;
+    if (!usable(u)) continue;
     const int n = divisions(u, spacing);
     const Eigen::Vector3f a = s.corner(u, 0), ab = s.corner(u, 1) - a, ac = s.corner(u, 2) - a;
     for (int i = 0; i <= n; ++i)
