@@ -453,12 +453,14 @@ Contact contactOf(const Surface& s, const std::vector<bool>& inPart,
 std::vector<Eigen::Vector3f> faceSamples(const Surface& s, const std::vector<int>& triangles, float spacing) {
   const auto divisions = [&](std::size_t t, float step) {
     float longest = 0;
-    for (int c = 0; c < 3; ++c) longest = std::max(longest, (s.corner(t, (c + 1) % 3) - s.corner(t, c)).norm());
+    for (int c = 0; c < 3; ++c)
+      longest = std::max(longest, (s.corner(t, (c + 1) % 3) - s.corner(t, c)).norm());
     const float d = std::ceil(longest / std::max(step, 1e-12f));
     return std::isfinite(d) ? std::clamp(static_cast<int>(std::min(d, 4096.0f)), 1, 4096) : 1;
   };
   const auto usable = [&](std::size_t t) {
-    return s.valid[t] && s.corner(t, 0).allFinite() && s.corner(t, 1).allFinite() && s.corner(t, 2).allFinite();
+    return s.valid[t] && s.corner(t, 0).allFinite() && s.corner(t, 1).allFinite() &&
+           s.corner(t, 2).allFinite();
   };
   const auto count = [&](float step) {
     double n = 0;
@@ -666,9 +668,10 @@ ControlPart describe(const Surface& s, std::vector<int> triangles, PartOrigin or
   if (long3d || longAcross) {
     const Eigen::Vector3f along = (long3d ? shape.directions.col(0) : flat.directions.col(0)).normalized();
     // A low-poly part may touch what holds it only between its corners (a bar through a stem).
-    const Contact holding = contact.triangles.empty()
-                             ? contactOf(s, inPart, faceSamples(s, triangles, 0.5f * touchDistance(s, vertices)), centre)
-                             : contact;
+    const Contact holding =
+        contact.triangles.empty()
+            ? contactOf(s, inPart, faceSamples(s, triangles, 0.5f * touchDistance(s, vertices)), centre)
+            : contact;
     if (leverOnItsEnd(s, part, vertices, centre, inPart, along, out, !holding.triangles.empty())) {
       part.triangles = std::move(triangles);
       return part;

@@ -69,7 +69,8 @@ PartTruth readPartTruth(const std::filesystem::path& file) {
       const bool plain = !point.empty() && point.size() <= 6 && point[0] != '0' &&
                          std::all_of(point.begin(), point.end(), [](char c) { return c >= '0' && c <= '9'; });
       if (!plain) throw FileError(file, "object " + id + ": point \"" + point + "\" is no number from 1");
-      if (!control.is_object()) throw FileError(file, "object " + id + " point " + point + ": a control is an object");
+      if (!control.is_object())
+        throw FileError(file, "object " + id + " point " + point + ": a control is an object");
       marked.controls[std::stoi(point)] = control;
     }
     if (marked.controls.empty()) throw FileError(file, "object " + id + ": no points");
