@@ -95,6 +95,7 @@ void Session::openEntry(int index) {
   }
   logger()->info("opened {} ({} of {})", m_document->displayName(), i + 1, m_queue.size());
   logAction(CurationAction::Open, entry.mesh.filename().string());
+  carryCuratedUnits();
   chooseNewPointType();
   applyDefaultFieldSettings();
   frameObject();
@@ -132,6 +133,10 @@ void Session::applyCommand(std::unique_ptr<Command> command, bool logged) {
     reportError(e.what());
   }
   if (logged) logAction(action, what);
+  if (logged && action == CurationAction::Units && m_document) {
+    const std::string source = sourceOfOpenObject();
+    if (!source.empty()) m_curatedUnits[source] = sagrid::metersPerUnit(m_document->labels());
+  }
   updateQueueState();
 }
 

@@ -6,6 +6,7 @@
 
 #include <filesystem>
 #include <functional>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -73,6 +74,13 @@ class Session {
   // step); nothing when the object has no suggestions.
   void confirmSuggestedCategory();
   void saveNow();
+  // The open object's units set by the curator (one undoable step): `metersPerUnit` metres per
+  // file unit, a finite number above 0, else one error naming it and nothing changed. Units the
+  // curator sets are remembered per source (core/dataset/object_source.h: a repository, a
+  // library): another object of that source whose units are only guessed opens with them, as a
+  // guess that says so (a kit's files share their units, which the size guess cannot tell from
+  // metres).
+  bool setUnits(double metersPerUnit);
 
   // Curation log (issue 41): every curator action of this session, appended as JSON lines to
   // `path` (the GUI: curation.jsonl beside the dataset). Empty: no log.
@@ -143,6 +151,11 @@ class Session {
   void applyDefaultFieldSettings();
   void logAction(CurationAction action, const std::string& detail = "");
   void applyCommand(std::unique_ptr<Command> command, bool logged);
+  // The open object's source, empty where its labels and folder name none.
+  std::string sourceOfOpenObject() const;
+  // On opening: units the curator set for the object's source this session, where its own are
+  // only guessed (session_units.cpp).
+  void carryCuratedUnits();
 
   ReviewQueue m_queue;
   std::unique_ptr<AnnotationDocument> m_document;
@@ -158,6 +171,7 @@ class Session {
   MassEstimate m_massEstimate;
   std::optional<CurationLogWriter> m_curationLog;
   double m_lastLookSeconds = -1e9;
+  std::map<std::string, double> m_curatedUnits;  // per source: the units the curator last set
 };
 
 }  // namespace sagrid::ui

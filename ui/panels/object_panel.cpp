@@ -42,7 +42,8 @@ void drawMass(Session& session, const AnnotationDocument& doc) {
 }
 
 // Units: the file's numbers in metres unless the labels say otherwise. A guessed unit (annotate,
-// from plausible sizes of the category) is flagged until the curator picks one (undoable).
+// from plausible sizes of the category, or carried from the curator's units for another object of
+// the source) is flagged until the curator picks or types one (undoable).
 void drawUnits(Session& session, const AnnotationDocument& doc) {
   struct Choice {
     const char* name;
@@ -70,6 +71,16 @@ void drawUnits(Session& session, const AnnotationDocument& doc) {
     }
     ImGui::EndCombo();
   }
+  // Any other scale (a kit's 0.69 m per unit, decimetres): typed, applied on Enter.
+  double typed = current;
+  ImGui::SetNextItemWidth(-1);
+  if (ImGui::InputDouble("##metres_per_unit", &typed, 0.0, 0.0, "%.6g m per unit",
+                         ImGuiInputTextFlags_EnterReturnsTrue) &&
+      typed != current)
+    session.setUnits(typed);
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("Metres per file unit, for a scale the list lacks; Enter sets it (undoable).\n"
+                      "Objects of the same source whose units are only guessed then open with it.");
 }
 
 }  // namespace

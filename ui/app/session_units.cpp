@@ -1,0 +1,56 @@
+// The Session's units (issue 41): the curator's value for the open object, and the units a
+// curator set carried to the other objects of the same source.
+#include <cmath>
+#include <cstdio>
+#include <memory>
+
+#include "core/annotate/units_record.h"
+#include "core/dataset/object_source.h"
+#include "ui/app/session.h"
+#include "ui/document/units_commands.h"
+
+namespace sagrid::ui {
+
+namespace {
+// The unit's name where it is one the units list offers.
+std::string unitName(double metersPerUnit) {
+  for (const auto& [name, meters] : {std::pair{"m", 1.0}, {"cm", 0.01}, {"mm", 0.001}, {"in", 0.0254}})
+    if (std::abs(metersPerUnit - meters) <= 1e-6 * meters) return name;
+  return "custom";
+}
+}  // namespace
+
+bool Session::setUnits(double metersPerUnit) {
+  if (!m_document) return false;
+  if (!std::isfinite(metersPerUnit) || !(metersPerUnit > 0) || metersPerUnit > 1e6) {
+    char text[160];
+    std::snprintf(text, sizeof text, "units: %g metres per unit is not a size (a number above 0 is)",
+                  metersPerUnit);
+    reportError(text);
+    return false;
+  }
+  execute(std::make_unique<SetUnitsCommand>(metersPerUnit));
+  return true;
+}
+
+std::string Session::sourceOfOpenObject() const {
+  return m_document ? objectSource(m_document->labels(), m_document->meshPath(), "") : std::string();
+}
+
+void Session::carryCuratedUnits() {
+  if (!m_document) return;
+  const std::string source = sourceOfOpenObject();
+  const auto carried = m_curatedUnits.find(source);
+  if (source.empty() || carried == m_curatedUnits.end()) return;
+  const std::optional<UnitGuess> guess = recordedUnitGuess(m_document->labels().object);
+  if (m_document->unitsKnown() && !guess) return;  // the file's or a curator's units
+  if (guess && std::abs(guess->metersPerUnit - carried->second) <= 1e-9 * carried->second) return;
+  UnitGuess fromSource;
+  fromSource.metersPerUnit = carried->second;
+  fromSource.unit = unitName(carried->second);
+  fromSource.reason = "as the curator set them for another object of " + source + " this session" +
+                      (guess ? " (the size guess said " + guess->unit + ")" : std::string());
+  m_document->setUnitGuess(fromSource);
+}
+
+}  // namespace sagrid::ui
