@@ -89,6 +89,10 @@ void setupRender(CLI::App& root) {
   cmd->add_flag(
       "--no-panels", [o](std::int64_t) { o->render.showPanels = false; }, "Draw only the 3D view");
   cmd->add_flag("--wireframe", o->render.wireframe, "Wireframe overlay");
+  cmd->add_option("--turn", o->render.controlTurn,
+                  "Draw every toggle button's control turned by this many radians (buttons "
+                  "pressed), as the exports move them and View > Controls turned (T) shows")
+      ->check(CLI::Range(-6.3, 6.3));
   cmd->add_option("--models", o->models,
                   "Run SAGrid with the models in this folder first (predicted points and field)");
   auto* yaw = cmd->add_option("--yaw", o->yaw, "Camera azimuth in degrees about +z");

@@ -6,6 +6,12 @@
 
 namespace sagrid {
 
+Eigen::Vector3f movedWithControl(const ControlPart& part, const Eigen::Vector3f& p, float angle, float press) {
+  const Eigen::Vector3f axis = part.axis.normalized();
+  if (!isHinge(part.motion)) return p + press * axis;
+  return part.pivot + Eigen::AngleAxisf(angle, axis) * (p - part.pivot);
+}
+
 Mesh turnControls(const Mesh& mesh, const std::vector<ControlPart>& parts, float angle,
                   float press) {
   std::vector<bool> body(mesh.triangles.size(), true);
@@ -19,16 +25,10 @@ Mesh turnControls(const Mesh& mesh, const std::vector<ControlPart>& parts, float
     for (int t : part.triangles)
       if (t >= 0 && static_cast<std::size_t>(t) < keep.size()) keep[static_cast<std::size_t>(t)] = true;
     Mesh moved = triangleSubset(mesh, keep);
-    const Eigen::Vector3f axis = part.axis.normalized();
-    const Eigen::Matrix3f turn = Eigen::AngleAxisf(angle, axis).toRotationMatrix();
+    const Eigen::Matrix3f turn = Eigen::AngleAxisf(angle, part.axis.normalized()).toRotationMatrix();
     for (std::size_t v = 0; v < moved.positions.size(); ++v) {
-      Eigen::Vector3f& p = moved.positions[v];
-      if (isHinge(part.motion)) {
-        p = part.pivot + turn * (p - part.pivot);
-        if (v < moved.normals.size()) moved.normals[v] = turn * moved.normals[v];
-      } else {
-        p += press * axis;
-      }
+      moved.positions[v] = movedWithControl(part, moved.positions[v], angle, press);
+      if (isHinge(part.motion) && v < moved.normals.size()) moved.normals[v] = turn * moved.normals[v];
     }
     out.append(moved);  // its materials (and textures) come along, as copies
   }

@@ -11,6 +11,10 @@
 
 namespace sagrid {
 
+// Where `p` (a point of `part`) goes: turned by `angle` about the part's axis through its pivot (a
+// hinge), else pressed `press` along its axis.
+Eigen::Vector3f movedWithControl(const ControlPart& part, const Eigen::Vector3f& p, float angle, float press);
+
 // `parts` in the mesh's frame and units; discs (no triangles) move nothing.
 Mesh turnControls(const Mesh& mesh, const std::vector<ControlPart>& parts, float angle,
                   float press);

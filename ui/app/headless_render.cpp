@@ -57,6 +57,7 @@ void renderScreenshot(const RenderOptions& options) {
   view.field.visible = options.showField;
   view.showPanels = options.showPanels;
   view.wireframe = options.wireframe;
+  view.controlTurn = options.controlTurn;
   // Two frames let ImGui settle its window sizes (auto-fit happens on the second frame).
   app.frame({});
   app.frame({});

@@ -24,6 +24,9 @@ struct RenderOptions {
   std::optional<float> yawDegrees, pitchDegrees;
   // Frame point N (1-based, as the Points panel numbers them) in a close-up, as F does in the GUI.
   std::optional<int> closeUpPoint;
+  // Every toggle button's control moved as the exports move it, knobs and levers by this many
+  // radians (View > Controls turned in the GUI); 0: as modelled.
+  float controlTurn = 0.0f;
 };
 
 // Throws sagrid::Error when the context, the mesh or the output cannot be used.

@@ -25,6 +25,7 @@ const std::vector<ShortcutHelp>& shortcutHelp() {
       {"S", "skip object"},
       {"F", "close-up of the selected point; again (or none selected): the whole object"},
       {"W", "wireframe"},
+      {"T", "controls turned as the exports turn them (a knob's part seen moving) / as modelled"},
       {"V", "distance field on/off"},
       {"Ctrl+Z", "undo"},
       {"Ctrl+Shift+Z, Ctrl+Y", "redo"},
@@ -96,6 +97,9 @@ bool handleShortcuts(const std::vector<InputEvent>& events, Session& session,
         break;
       case GLFW_KEY_W:
         session.view().wireframe = !session.view().wireframe;
+        break;
+      case GLFW_KEY_T:
+        session.view().controlTurn = session.view().controlTurn != 0.0f ? 0.0f : kPreviewTurn;
         break;
       case GLFW_KEY_V:
         session.view().field.visible = !session.view().field.visible;

@@ -1,10 +1,12 @@
 #include "ui/document/control_view.h"
 
+#include <algorithm>
 #include <map>
 
 #include "core/common/error.h"
 #include "core/controls/control_pairing.h"
 #include "core/controls/control_record.h"
+#include "core/controls/control_turn.h"
 #include "ui/document/annotation_document.h"
 
 namespace sagrid::ui {
@@ -82,6 +84,20 @@ std::optional<ShownControl> shownControl(const AnnotationDocument& document, int
   const std::optional<ShownControl> shown = controlOf(document, index);
   cache.shown.emplace(index, shown);  // controlOf keeps `cache` (same revision)
   return shown;
+}
+
+Mesh meshWithControlsTurned(const AnnotationDocument& document, float angle) {
+  std::vector<ControlPart> parts;
+  const auto& points = document.points();
+  for (int i = 0; i < static_cast<int>(points.size()); ++i)
+    if (points[static_cast<std::size_t>(i)].type == "togglebutton")
+      if (const auto shown = shownControl(document, i)) parts.push_back(shown->part);
+  if (parts.empty() || angle == 0.0f) return document.mesh();
+  return turnControls(document.mesh(), parts, angle, pressAtTurn(document, angle));
+}
+
+float pressAtTurn(const AnnotationDocument& document, float angle) {
+  return angle * 0.005f / 0.6f / std::max(document.metersPerUnit(), 1e-9f);
 }
 
 }  // namespace sagrid::ui

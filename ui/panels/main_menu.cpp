@@ -49,6 +49,8 @@ bool drawMainMenu(Session& session, FileBrowser& browser) {
     ViewSettings& v = session.view();
     ImGui::MenuItem("Mesh", nullptr, &v.showMesh);
     ImGui::MenuItem("Wireframe", "W", &v.wireframe);
+    bool turned = v.controlTurn != 0.0f;
+    if (ImGui::MenuItem("Controls turned", "T", &turned)) v.controlTurn = turned ? kPreviewTurn : 0.0f;
     ImGui::MenuItem("Distance field", "V", &v.field.visible);
     ImGui::MenuItem("Points", nullptr, &v.showPoints);
     ImGui::MenuItem("Point labels", nullptr, &v.showPointLabels);

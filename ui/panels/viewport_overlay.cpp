@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "core/controls/control_turn.h"
 #include "ui/app/session.h"
 #include "ui/document/control_view.h"
 #include "ui/panels/panels.h"
@@ -63,11 +64,17 @@ void selectedControl(const Session& session, ImDrawList* draw) {
   };
   constexpr std::size_t kMaxDrawn = 20000;  // a highlight, not a second renderer
   const ImU32 fill = IM_COL32(90, 230, 110, 70);
+  // Where the mesh is drawn with its controls turned (T), the highlight moves with the part.
+  const float turn = session.view().controlTurn;
+  const float press = pressAtTurn(*doc, turn);
+  const auto at = [&](int v) {
+    const Eigen::Vector3f& p = mesh.positions[static_cast<std::size_t>(v)];
+    return turn == 0.0f ? p : movedWithControl(shown->part, p, turn, press);
+  };
   for (std::size_t i = 0; i < shown->part.triangles.size() && i < kMaxDrawn; ++i) {
     const auto& t = mesh.triangles[static_cast<std::size_t>(shown->part.triangles[i])];
     ImVec2 a, b, c;
-    if (toScreen(mesh.positions[std::size_t(t[0])], a) && toScreen(mesh.positions[std::size_t(t[1])], b) &&
-        toScreen(mesh.positions[std::size_t(t[2])], c))
+    if (toScreen(at(t[0]), a) && toScreen(at(t[1]), b) && toScreen(at(t[2]), c))
       draw->AddTriangleFilled(a, b, c, fill);
   }
   // The axis through the pivot, left out around the point's marker so the marker stays visible.

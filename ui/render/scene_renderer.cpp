@@ -2,6 +2,7 @@
 
 #include "core/mesh/mesh.h"
 #include "ui/document/annotation_document.h"
+#include "ui/document/control_view.h"
 #include "ui/gl/gl.h"
 #include "ui/render/type_colors.h"
 
@@ -31,8 +32,15 @@ void SceneRenderer::sync(const AnnotationDocument* document, const std::optional
     m_grid.build(document->mesh().bounds());
     m_revision = 0;
     m_fieldsRevision = 0;
+    m_turn = 0.0f;
   }
   const bool pointsChanged = document->revision() != m_revision;
+  // The controls turned (View > Turn controls): uploaded again when the angle or the document's
+  // controls change, never per frame.
+  if (settings.controlTurn != m_turn || (m_turn != 0.0f && pointsChanged)) {
+    m_turn = settings.controlTurn;
+    m_mesh.upload(m_turn == 0.0f ? document->mesh() : meshWithControlsTurned(*document, m_turn));
+  }
   const bool fieldsChanged = document->fieldsRevision() != m_fieldsRevision;
   // Predicted fields win; without them the fields follow the labels (recomputed per edit).
   if (fieldsChanged || (pointsChanged && document->predictedFields().empty())) {

@@ -45,6 +45,7 @@ class SceneRenderer {
   const AnnotationDocument* m_document = nullptr;
   const void* m_meshIdentity = nullptr;
   std::uint64_t m_revision = 0, m_fieldsRevision = 0;
+  float m_turn = 0.0f;  // the angle the uploaded mesh's controls are turned by
   std::optional<DragPreview> m_drag;
   float m_markerPixels = 0;
   std::uint32_t m_typeMask = ~0u;

@@ -16,6 +16,10 @@ struct FieldSettings {
   std::uint32_t typeMask = ~0u;  // bit per field index
 };
 
+// The angle View > Controls turned (T) shows: RoboCasa lights a burner from 0.35 rad; the
+// exports' tests turn 0.6.
+inline constexpr float kPreviewTurn = 0.6f;
+
 struct ViewSettings {
   bool showMesh = true;
   bool wireframe = false;
@@ -25,6 +29,9 @@ struct ViewSettings {
   bool showPointLabels = true;
   bool showPanels = true;
   float markerPixels = 9.0f;  // marker radius on screen
+  // The mesh drawn with every toggle button's control moved as the exports move it (knobs and
+  // levers turned by this many radians, buttons pressed); 0: as modelled.
+  float controlTurn = 0.0f;
   FieldSettings field;
 };
 
