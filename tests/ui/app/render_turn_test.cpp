@@ -3,9 +3,8 @@
 // toggle buttons move nothing draws as modelled.
 #include <gtest/gtest.h>
 
-#include <fstream>
-
-#include "core/labels/labels.h"
+#include "support/analytic_meshes.h"
+#include "support/labelled_objects.h"
 #include "support/test_paths.h"
 #include "ui/app/headless_render.h"
 #include "ui/gl/image.h"
@@ -29,23 +28,10 @@ double differingShare(const RgbaImage& a, const RgbaImage& b) {
 
 // A 1 m plate with a 16 x 16 x 8 cm block knob on it at (0.2, 0.2), its toggle point at `toggle`.
 fs::path writeObject(const fs::path& dir, const Eigen::Vector3f& toggle) {
-  fs::create_directories(dir);
-  std::ofstream obj(dir / "mesh.obj");
-  obj << "v -0.5 -0.5 0\nv 0.5 -0.5 0\nv 0.5 0.5 0\nv -0.5 0.5 0\nf 1 2 3\nf 1 3 4\n"
-         "v 0.12 0.12 0.08\nv 0.28 0.12 0.08\nv 0.28 0.28 0.08\nv 0.12 0.28 0.08\n"
-         "v 0.12 0.12 0\nv 0.28 0.12 0\nv 0.28 0.28 0\nv 0.12 0.28 0\n"
-         "f 5 6 7\nf 5 7 8\nf 9 10 6\nf 9 6 5\nf 10 11 7\nf 10 7 6\nf 11 12 8\nf 11 8 7\nf 12 9 5\nf 12 5 8\n";
-  obj.close();
-  ObjectLabels labels;
-  labels.object.id = "scene";
-  labels.object.mesh = "mesh.obj";
-  labels.object.category = "stove";
-  labels.object.up = "z";
-  AffordancePoint point;
-  point.type = "togglebutton";
-  point.position = toggle;
-  labels.affordances.push_back(point);
-  writeLabels(dir / "labels.json", labels);
+  Mesh mesh = sagrid::test::box({-0.5f, -0.5f, -0.01f}, {0.5f, 0.5f, 0.0f});
+  sagrid::test::append(mesh, sagrid::test::box({0.12f, 0.12f, 0.0f}, {0.28f, 0.28f, 0.08f}));
+  sagrid::test::writeLabelledObject(dir, mesh, {sagrid::test::affordance("togglebutton", toggle)}, "scene",
+                                    "stove");
   return dir / "mesh.obj";
 }
 
