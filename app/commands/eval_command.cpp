@@ -43,7 +43,8 @@ void setupEval(CLI::App& root) {
     std::string models, out = "eval", cache, sweep, mode = "sparse", fitConfidence, fitCounts,
                         countObjective = "count";
     std::vector<std::string> only, compare;
-    std::string curation, units, truth, partTruth, savePartTruth;
+    std::string curation, units, truth, savePartTruth;
+    std::vector<std::string> partTruth;
     bool parts = false;
     double minutes = 2;
     int epochs = 0;
@@ -74,7 +75,7 @@ void setupEval(CLI::App& root) {
   cmd->add_option("--part-truth", o->partTruth,
                   "With --parts: measure against the curator's parts kept in this file (per object "
                   "folder and point, with the mesh's sha256; resources/datasets/*/part_truth.json) "
-                  "instead of the controls confirmed in --data's labels");
+                  "instead of the controls confirmed in --data's labels; repeat for several");
   cmd->add_option("--save-part-truth", o->savePartTruth,
                   "With --parts: also keep the controls confirmed in --data's labels in this file, "
                   "as --part-truth reads it");
@@ -142,10 +143,10 @@ void setupEval(CLI::App& root) {
         entries.insert(entries.end(), some.begin(), some.end());
       }
       if (!o->savePartTruth.empty())
-        sagrid::writeFileAtomic(o->savePartTruth,
-                                sagrid::toJson(sagrid::partTruthOf(entries)).dump(1) + "\n");
+        sagrid::writeFileAtomic(o->savePartTruth, sagrid::partTruthText(sagrid::partTruthOf(entries)));
       std::optional<sagrid::PartTruth> truth;
-      if (!o->partTruth.empty()) truth = sagrid::readPartTruth(o->partTruth);
+      if (!o->partTruth.empty())
+        truth = sagrid::readPartTruths({o->partTruth.begin(), o->partTruth.end()});
       const sagrid::PartAgreementReport report =
           sagrid::measurePartAgreement(entries, truth ? &*truth : nullptr);
       fs::create_directories(o->out);

@@ -100,8 +100,9 @@ void listControls(const sagrid::Mesh& mesh, const std::string& labelsPath, float
   std::vector<sagrid::ControlPart> parts;
   for (const auto& part : controls.parts)
     if (part) parts.push_back(*part);
-  const float press = turn * 0.005f / 0.6f;  // 0.6 rad presses a button 5 mm (mesh units)
-  sagrid::exportMesh(sagrid::turnControls(mesh, parts, turn, press), turnedMesh);
+  sagrid::exportMesh(
+      sagrid::turnControls(mesh, parts, turn, sagrid::pressAtTurn(turn, sagrid::metersPerUnit(labels))),
+      turnedMesh);
   std::printf("controls turned by %g rad: %s\n", turn, turnedMesh.c_str());
 }
 

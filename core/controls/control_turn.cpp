@@ -1,15 +1,20 @@
 #include "core/controls/control_turn.h"
 
-#include <Eigen/Geometry>
+#include <algorithm>
 
 #include "core/mesh/triangle_subset.h"
 
 namespace sagrid {
 
-Eigen::Vector3f movedWithControl(const ControlPart& part, const Eigen::Vector3f& p, float angle, float press) {
+Eigen::Affine3f controlMotion(const ControlPart& part, float angle, float press) {
   const Eigen::Vector3f axis = part.axis.normalized();
-  if (!isHinge(part.motion)) return p + press * axis;
-  return part.pivot + Eigen::AngleAxisf(angle, axis) * (p - part.pivot);
+  Eigen::Affine3f motion = Eigen::Affine3f::Identity();
+  if (!isHinge(part.motion)) return motion.translate(press * axis);
+  return motion.translate(part.pivot).rotate(Eigen::AngleAxisf(angle, axis)).translate(-part.pivot);
+}
+
+float pressAtTurn(float angle, double metersPerUnit) {
+  return static_cast<float>(angle * 0.005 / 0.6 / std::max(metersPerUnit, 1e-9));
 }
 
 Mesh turnControls(const Mesh& mesh, const std::vector<ControlPart>& parts, float angle,
@@ -25,11 +30,9 @@ Mesh turnControls(const Mesh& mesh, const std::vector<ControlPart>& parts, float
     for (int t : part.triangles)
       if (t >= 0 && static_cast<std::size_t>(t) < keep.size()) keep[static_cast<std::size_t>(t)] = true;
     Mesh moved = triangleSubset(mesh, keep);
-    const Eigen::Matrix3f turn = Eigen::AngleAxisf(angle, part.axis.normalized()).toRotationMatrix();
-    for (std::size_t v = 0; v < moved.positions.size(); ++v) {
-      moved.positions[v] = movedWithControl(part, moved.positions[v], angle, press);
-      if (isHinge(part.motion) && v < moved.normals.size()) moved.normals[v] = turn * moved.normals[v];
-    }
+    const Eigen::Affine3f motion = controlMotion(part, angle, press);
+    for (auto& p : moved.positions) p = motion * p;
+    for (auto& n : moved.normals) n = motion.linear() * n;
     out.append(moved);  // its materials (and textures) come along, as copies
   }
   return out;

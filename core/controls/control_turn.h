@@ -6,14 +6,20 @@
 
 #include <vector>
 
+#include <Eigen/Geometry>
+
 #include "core/controls/control_part.h"
 #include "core/mesh/mesh.h"
 
 namespace sagrid {
 
-// Where `p` (a point of `part`) goes: turned by `angle` about the part's axis through its pivot (a
-// hinge), else pressed `press` along its axis.
-Eigen::Vector3f movedWithControl(const ControlPart& part, const Eigen::Vector3f& p, float angle, float press);
+// The rigid motion of `part`: turned by `angle` about its axis through its pivot (a hinge), else
+// pressed `press` along its axis.
+Eigen::Affine3f controlMotion(const ControlPart& part, float angle, float press);
+
+// How far a button is pressed (mesh units) while hinges turn by `angle`: 5 mm per 0.6 rad, in a
+// mesh of `metersPerUnit`.
+float pressAtTurn(float angle, double metersPerUnit);
 
 // `parts` in the mesh's frame and units; discs (no triangles) move nothing.
 Mesh turnControls(const Mesh& mesh, const std::vector<ControlPart>& parts, float angle,

@@ -37,14 +37,21 @@ PartTruth partTruthOf(const std::vector<DatasetEntry>& entries) {
   return truth;
 }
 
-nlohmann::json toJson(const PartTruth& truth) {
-  nlohmann::json objects = nlohmann::json::object();
+std::string partTruthText(const PartTruth& truth) {
+  std::string text = "{\"objects\": {";
+  const char* objectSeparator = "\n";
   for (const auto& [id, object] : truth.objects) {
-    nlohmann::json points = nlohmann::json::object();
-    for (const auto& [point, control] : object.controls) points[std::to_string(point)] = control;
-    objects[id] = {{"mesh_sha256", object.meshSha256}, {"points", points}};
+    text += objectSeparator + nlohmann::json(id).dump() + ": {\"mesh_sha256\": " +
+            nlohmann::json(object.meshSha256).dump() + ", \"points\": {";
+    const char* pointSeparator = "\n  ";
+    for (const auto& [point, control] : object.controls) {
+      text += pointSeparator + nlohmann::json(std::to_string(point)).dump() + ": " + control.dump();
+      pointSeparator = ",\n  ";
+    }
+    text += "}}";
+    objectSeparator = ",\n";
   }
-  return {{"objects", objects}};
+  return text + "\n}}\n";
 }
 
 PartTruth readPartTruth(const std::filesystem::path& file) {
@@ -77,6 +84,18 @@ PartTruth readPartTruth(const std::filesystem::path& file) {
     truth.objects[id] = std::move(marked);
   }
   return truth;
+}
+
+PartTruth readPartTruths(const std::vector<std::filesystem::path>& files) {
+  PartTruth all;
+  for (const auto& file : files) {
+    PartTruth one = readPartTruth(file);
+    for (auto& [id, object] : one.objects)
+      if (!all.objects.emplace(id, std::move(object)).second)
+        throw FileError(file, "object " + id + " is marked in " + all.file.string() + " too");
+    all.file = all.file.empty() ? file : std::filesystem::path(all.file.string() + ", " + file.string());
+  }
+  return all;
 }
 
 }  // namespace sagrid

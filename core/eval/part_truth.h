@@ -36,11 +36,15 @@ struct PartTruth {
 // an object folder that comes twice.
 PartTruth partTruthOf(const std::vector<DatasetEntry>& entries);
 
-nlohmann::json toJson(const PartTruth& truth);
+// The file's text: one line per marked point, so a changed mark reads as one changed line.
+std::string partTruthText(const PartTruth& truth);
 
 // Throws FileError naming `file` for a file not of the form above (a point written other than as
 // a plain whole number from 1, an object without points).
 PartTruth readPartTruth(const std::filesystem::path& file);
+// Several files as one (the wild pool's and Sweet Home 3D's marks together); an object folder in
+// two of them is a FileError naming the second.
+PartTruth readPartTruths(const std::vector<std::filesystem::path>& files);
 
 // The sha256 of the mesh file at `mesh` (its bytes, as labels' object.sha256).
 std::string meshFileSha256(const std::filesystem::path& mesh);

@@ -1,6 +1,5 @@
 #include "core/mesh/unit_guess.h"
 
-#include <array>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -8,12 +7,6 @@
 namespace sagrid {
 
 namespace {
-struct Unit {
-  const char* name;
-  double meters;
-};
-// In the order a tie is broken: how often in-the-wild files use each.
-constexpr std::array<Unit, 4> kUnits{{{"m", 1.0}, {"cm", 0.01}, {"mm", 0.001}, {"in", 0.0254}}};
 
 // How far, in log10, `meters` lies outside the range (0 inside).
 double outside(double meters, const PlausibleSize& range) {
@@ -22,6 +15,17 @@ double outside(double meters, const PlausibleSize& range) {
   return 0.0;
 }
 }  // namespace
+
+const std::vector<NamedUnit>& namedUnits() {
+  static const std::vector<NamedUnit> kUnits{{"m", 1.0}, {"cm", 0.01}, {"mm", 0.001}, {"in", 0.0254}};
+  return kUnits;
+}
+
+std::string unitName(double metersPerUnit) {
+  for (const NamedUnit& unit : namedUnits())
+    if (std::abs(metersPerUnit - unit.metersPerUnit) <= 1e-6 * unit.metersPerUnit) return unit.name;
+  return "custom";
+}
 
 PlausibleSize plausibleSize(const std::string& category) {
   if (category == "stove") return {0.3, 1.5};  // a two-zone hob to a six-burner range
@@ -39,12 +43,12 @@ UnitGuess guessMetersPerUnit(double largestExtent, const std::string& category) 
   const PlausibleSize range = plausibleSize(category);
   double best = std::numeric_limits<double>::infinity();
   int fitting = 0;
-  for (const Unit& unit : kUnits) {
-    const double off = outside(largestExtent * unit.meters, range);
+  for (const NamedUnit& unit : namedUnits()) {
+    const double off = outside(largestExtent * unit.metersPerUnit, range);
     if (off == 0) ++fitting;
     if (off < best) {
       best = off;
-      guess.metersPerUnit = unit.meters;
+      guess.metersPerUnit = unit.metersPerUnit;
       guess.unit = unit.name;
     }
   }

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 namespace sagrid {
 
@@ -21,6 +22,17 @@ struct PlausibleSize {
   double minMeters = 0;  // largest extent
   double maxMeters = 0;
 };
+
+// A unit the guess and the GUI's units list name.
+struct NamedUnit {
+  const char* name;
+  double metersPerUnit;
+};
+// m, cm, mm, in: in the order a tie between fitting units is broken (how often in-the-wild files
+// use each).
+const std::vector<NamedUnit>& namedUnits();
+// The name of `metersPerUnit` among namedUnits() (within a millionth), else "custom".
+std::string unitName(double metersPerUnit);
 
 // The range of largest extents the guess accepts for "stove", "sink" or anything else ("none").
 PlausibleSize plausibleSize(const std::string& category);

@@ -6,19 +6,11 @@
 
 #include "core/annotate/units_record.h"
 #include "core/dataset/object_source.h"
+#include "core/mesh/unit_guess.h"
 #include "ui/app/session.h"
 #include "ui/document/units_commands.h"
 
 namespace sagrid::ui {
-
-namespace {
-// The unit's name where it is one the units list offers.
-std::string unitName(double metersPerUnit) {
-  for (const auto& [name, meters] : {std::pair{"m", 1.0}, {"cm", 0.01}, {"mm", 0.001}, {"in", 0.0254}})
-    if (std::abs(metersPerUnit - meters) <= 1e-6 * meters) return name;
-  return "custom";
-}
-}  // namespace
 
 bool Session::setUnits(double metersPerUnit) {
   if (!m_document) return false;

@@ -94,6 +94,7 @@ void AnnotationDocument::changed() {
   if (m_selected >= static_cast<int>(m_labels.affordances.size())) m_selected = -1;
   m_metersPerUnit = static_cast<float>(sagrid::metersPerUnit(m_labels));  // a units edit
   ++m_revision;
+  ++m_labelsRevision;
   save();
 }
 
@@ -111,6 +112,7 @@ void AnnotationDocument::setReviewState(ReviewState state) {
   m_labels.reviewState = state;
   m_labels.reviewUpdated = currentUtcTimestamp();
   ++m_revision;
+  ++m_labelsRevision;
   save();
 }
 
@@ -136,6 +138,7 @@ void AnnotationDocument::setMeshUpAxis(UpAxis up) {
 void AnnotationDocument::setCategory(const std::string& category) {
   m_labels.object.category = category;
   ++m_revision;
+  ++m_labelsRevision;
   save();
 }
 

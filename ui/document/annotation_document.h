@@ -95,6 +95,9 @@ class AnnotationDocument {
 
   // Changes whenever labels or selection change; renderers compare it to re-upload only then.
   std::uint64_t revision() const { return m_revision; }
+  // Changes with the labels (points, controls, category, units, review), not with the selection:
+  // what is derived from the labels alone (found control parts, the turned mesh) keys on it.
+  std::uint64_t labelsRevision() const { return m_labelsRevision; }
 
   // Distance fields shown in the viewport: predicted ones replace the fields of the labels.
   void setPredictedFields(std::vector<DistanceField> fields);
@@ -121,6 +124,7 @@ class AnnotationDocument {
   bool m_removedPoint = false;
   int m_selected = -1;
   std::uint64_t m_revision = 1;
+  std::uint64_t m_labelsRevision = 1;
   float m_metersPerUnit = 1.0f;
   bool m_autosave = true;
 

@@ -1,6 +1,5 @@
 #include "ui/document/control_view.h"
 
-#include <algorithm>
 #include <map>
 
 #include "core/common/error.h"
@@ -13,8 +12,8 @@ namespace sagrid::ui {
 
 namespace {
 
-// The parts found for one revision of one document, and what was shown of each point (records
-// parsed once per revision, not once per frame).
+// The parts found for one labels revision of one document, and what was shown of each point
+// (records parsed once per change of the labels, not once per frame or per selection).
 struct FoundCache {
   const AnnotationDocument* document = nullptr;
   std::uint64_t revision = 0;
@@ -30,11 +29,11 @@ struct FoundCache {
 
 FoundCache& cacheFor(const AnnotationDocument& document) {
   static FoundCache cache;
-  if (cache.document != &document || cache.revision != document.revision() ||
+  if (cache.document != &document || cache.revision != document.labelsRevision() ||
       cache.labels != document.labelsPath()) {
     cache = FoundCache{};
     cache.document = &document;
-    cache.revision = document.revision();
+    cache.revision = document.labelsRevision();
     cache.labels = document.labelsPath();
   }
   return cache;
@@ -93,11 +92,7 @@ Mesh meshWithControlsTurned(const AnnotationDocument& document, float angle) {
     if (points[static_cast<std::size_t>(i)].type == "togglebutton")
       if (const auto shown = shownControl(document, i)) parts.push_back(shown->part);
   if (parts.empty() || angle == 0.0f) return document.mesh();
-  return turnControls(document.mesh(), parts, angle, pressAtTurn(document, angle));
-}
-
-float pressAtTurn(const AnnotationDocument& document, float angle) {
-  return angle * 0.005f / 0.6f / std::max(document.metersPerUnit(), 1e-9f);
+  return turnControls(document.mesh(), parts, angle, pressAtTurn(angle, sagrid::metersPerUnit(document.labels())));
 }
 
 }  // namespace sagrid::ui

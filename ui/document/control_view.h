@@ -28,10 +28,8 @@ struct ShownControl {
 std::optional<ShownControl> shownControl(const AnnotationDocument& document, int index);
 
 // The document's mesh with the shown control of every toggle button moved as the exports move it
-// (core/controls/control_turn.h): knobs and levers turned by `angle` radians, buttons pressed 5 mm
-// per 0.6 rad. The mesh itself where no control moves.
+// (core/controls/control_turn.h): knobs and levers turned by `angle` radians, buttons pressed
+// (pressAtTurn). The mesh itself where no control moves.
 Mesh meshWithControlsTurned(const AnnotationDocument& document, float angle);
-// How far (mesh units) a button is pressed at `angle`: 5 mm per 0.6 rad.
-float pressAtTurn(const AnnotationDocument& document, float angle);
 
 }  // namespace sagrid::ui

@@ -45,18 +45,11 @@ void drawMass(Session& session, const AnnotationDocument& doc) {
 // from plausible sizes of the category, or carried from the curator's units for another object of
 // the source) is flagged until the curator picks or types one (undoable).
 void drawUnits(Session& session, const AnnotationDocument& doc) {
-  struct Choice {
-    const char* name;
-    double meters;
-  };
-  static const Choice kChoices[] = {{"m", 1.0}, {"cm", 0.01}, {"mm", 0.001}, {"in", 0.0254}};
   const std::optional<UnitGuess> guess = recordedUnitGuess(doc.labels().object);
   const double current = doc.metersPerUnit();
-  const char* shown = "custom";
-  for (const Choice& c : kChoices)
-    if (std::abs(current - c.meters) <= 1e-6 * c.meters) shown = c.name;
+  const std::string shown = unitName(current);
   char label[96];
-  std::snprintf(label, sizeof label, "units: %s%s", shown,
+  std::snprintf(label, sizeof label, "units: %s%s", shown.c_str(),
                 guess ? " (guessed)" : doc.unitsKnown() ? "" : " (unknown: m assumed)");
   if (guess) ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(0.95f, 0.75f, 0.35f, 1.0f));
   ImGui::SetNextItemWidth(-1);
@@ -64,10 +57,10 @@ void drawUnits(Session& session, const AnnotationDocument& doc) {
   if (guess) ImGui::PopStyleColor();
   if (guess && ImGui::IsItemHovered()) ImGui::SetTooltip("%s", guess->reason.c_str());
   if (open) {
-    for (const Choice& c : kChoices) {
+    for (const NamedUnit& unit : namedUnits()) {
       // Picking the guessed unit confirms it: the guess flag goes, the value stays.
-      if (ImGui::Selectable(c.name, shown == c.name && !guess))
-        session.execute(std::make_unique<SetUnitsCommand>(c.meters));
+      if (ImGui::Selectable(unit.name, shown == unit.name && !guess))
+        session.execute(std::make_unique<SetUnitsCommand>(unit.metersPerUnit));
     }
     ImGui::EndCombo();
   }

@@ -66,11 +66,9 @@ void selectedControl(const Session& session, ImDrawList* draw) {
   const ImU32 fill = IM_COL32(90, 230, 110, 70);
   // Where the mesh is drawn with its controls turned (T), the highlight moves with the part.
   const float turn = session.view().controlTurn;
-  const float press = pressAtTurn(*doc, turn);
-  const auto at = [&](int v) {
-    const Eigen::Vector3f& p = mesh.positions[static_cast<std::size_t>(v)];
-    return turn == 0.0f ? p : movedWithControl(shown->part, p, turn, press);
-  };
+  const Eigen::Affine3f motion =
+      controlMotion(shown->part, turn, pressAtTurn(turn, sagrid::metersPerUnit(doc->labels())));
+  const auto at = [&](int v) -> Eigen::Vector3f { return motion * mesh.positions[static_cast<std::size_t>(v)]; };
   for (std::size_t i = 0; i < shown->part.triangles.size() && i < kMaxDrawn; ++i) {
     const auto& t = mesh.triangles[static_cast<std::size_t>(shown->part.triangles[i])];
     ImVec2 a, b, c;

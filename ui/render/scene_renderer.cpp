@@ -35,10 +35,12 @@ void SceneRenderer::sync(const AnnotationDocument* document, const std::optional
     m_turn = 0.0f;
   }
   const bool pointsChanged = document->revision() != m_revision;
-  // The controls turned (View > Turn controls): uploaded again when the angle or the document's
-  // controls change, never per frame.
-  if (settings.controlTurn != m_turn || (m_turn != 0.0f && pointsChanged)) {
+  // The controls turned (View > Controls turned): uploaded again when the angle or the labels
+  // change, not per frame or per selection.
+  if (settings.controlTurn != m_turn ||
+      (m_turn != 0.0f && document->labelsRevision() != m_turnedLabelsRevision)) {
     m_turn = settings.controlTurn;
+    m_turnedLabelsRevision = document->labelsRevision();
     m_mesh.upload(m_turn == 0.0f ? document->mesh() : meshWithControlsTurned(*document, m_turn));
   }
   const bool fieldsChanged = document->fieldsRevision() != m_fieldsRevision;

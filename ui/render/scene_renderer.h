@@ -46,6 +46,7 @@ class SceneRenderer {
   const void* m_meshIdentity = nullptr;
   std::uint64_t m_revision = 0, m_fieldsRevision = 0;
   float m_turn = 0.0f;  // the angle the uploaded mesh's controls are turned by
+  std::uint64_t m_turnedLabelsRevision = 0;  // the labels it was turned for
   std::optional<DragPreview> m_drag;
   float m_markerPixels = 0;
   std::uint32_t m_typeMask = ~0u;

@@ -145,7 +145,7 @@ TEST(PartTruth, KeptPartsMeasureAnyCopyAndAChangedMeshIsNamed) {
   const DatasetEntry unmarked{"panel", "stove", copy / "mesh.obj", copy / "labels.json"};
 
   const fs::path file = root / "part_truth.json";
-  std::ofstream(file) << toJson(partTruthOf({original, unmarked})).dump(1);
+  std::ofstream(file) << partTruthText(partTruthOf({original, unmarked}));
   const PartTruth truth = readPartTruth(file);
   ASSERT_EQ(truth.objects.size(), 1u);  // the copy's labels confirm nothing
   EXPECT_EQ(truth.objects.at("panel").controls.size(), 1u);
@@ -177,6 +177,10 @@ TEST(PartTruth, KeptPartsMeasureAnyCopyAndAChangedMeshIsNamed) {
   ASSERT_EQ(elsewhere.skipped.size(), 1u);
   EXPECT_NE(elsewhere.skipped[0].find("panel: marked in"), std::string::npos) << elsewhere.skipped[0];
   EXPECT_THROW(partTruthOf({original, original}), FileError);
+  // Two files as one; the same object in both is an error naming the second.
+  std::ofstream(root / "empty.json") << R"({"objects": {}})";
+  EXPECT_EQ(readPartTruths({root / "empty.json", file}).objects.size(), 1u);
+  EXPECT_THROW(readPartTruths({file, file}), FileError);
 
   for (const char* bad : {"{ not json", R"({"objects": []})", R"({"objects": {"a": {"points": {}}}})",
                           R"({"objects": {"a": {"mesh_sha256": "x", "points": {}}}})",
