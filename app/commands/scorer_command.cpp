@@ -78,6 +78,9 @@ void addTrainingOptions(CLI::App& cmd, std::vector<std::string>& candidates,
       ->check(CLI::NonNegativeNumber);
   cmd.add_flag_callback("--logistic", [&o] { o.trees = false; },
                         "A ridge logistic regression instead of boosted trees");
+  cmd.add_flag_callback("--no-context", [&o] { o.context = false; },
+                        "Trees without the second look in the company of the object's other "
+                        "candidates (repeated parts, rows)");
   cmd.add_option("--rounds", o.boosting.rounds, "Boosting rounds (default 100)");
   cmd.add_option("--depth", o.boosting.depth, "Tree depth (default 3)");
 }

@@ -6,6 +6,7 @@
 #include "core/annotate/coarse_to_fine.h"
 #include "core/annotate/model_set.h"
 #include "core/annotate/point_scorer.h"
+#include "core/geometry/material_parts.h"
 #include "core/geometry/surface_scene.h"
 #include "core/mesh/mesh.h"
 #include "core/points/surface_projection.h"
@@ -43,7 +44,7 @@ ModelPrediction locateWithModel(const model::AffordanceModel& model, const Objec
 }  // namespace
 
 std::vector<ConnectedPart> normalizedParts(const Mesh& mesh, const Normalization& normalization) {
-  auto parts = connectedParts(mesh);
+  auto parts = connectedAndMaterialParts(mesh);
   for (auto& part : parts) {
     part.area *= normalization.scale * normalization.scale;
     part.spread *= normalization.scale;

@@ -45,8 +45,9 @@ struct CategoryPoints {
 class ModelSet;
 struct Normalization;
 
-// The connected parts of `mesh` (z-up mesh frame) in the normalized frame of `normalization`: the
-// parts the point candidates are seeded from.
+// The parts of `mesh` (z-up mesh frame; connected parts and those a material of their own
+// separates, connectedAndMaterialParts) in the normalized frame of `normalization`: the parts the
+// point candidates are seeded from.
 std::vector<ConnectedPart> normalizedParts(const Mesh& mesh, const Normalization& normalization);
 
 // `passes` with `models`' learned point decision (ModelSet::pointScorer) when

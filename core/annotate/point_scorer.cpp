@@ -60,6 +60,7 @@ nlohmann::json toJson(const PointScorer& scorer) {
     // Trees or the logistic regression, whichever decides.
     if (m.classifier.trees) {
       model["trees"] = toJson(*m.classifier.trees);
+      if (m.classifier.contextTrees) model["context_trees"] = toJson(*m.classifier.contextTrees);
       continue;
     }
     model["mean"] = m.classifier.mean;
@@ -69,6 +70,7 @@ nlohmann::json toJson(const PointScorer& scorer) {
   }
   return {{"schema", kSchema},
           {"features", candidateFeatureNames()},
+          {"context_features", contextFeatureNames()},
           {"trained_on", scorer.trainedOn},
           {"passes_off", scorer.passesOff},
           {"models", models}};
@@ -87,6 +89,10 @@ std::optional<PointScorer> readPointScorer(const std::filesystem::path& modelsDi
       throw FileError(file, "not a SAGrid point scorer (schema)");
     if (j.at("features").get<std::vector<std::string>>() != candidateFeatureNames())
       throw FileError(file, "reads other candidate features than this build computes: train it "
+                            "again (sagrid scorer train)");
+    if (j.contains("context_features") &&
+        j.at("context_features").get<std::vector<std::string>>() != contextFeatureNames())
+      throw FileError(file, "reads other context features than this build computes: train it "
                             "again (sagrid scorer train)");
     scorer.trainedOn = j.value("trained_on", "");
     try {
@@ -113,6 +119,18 @@ std::optional<PointScorer> readPointScorer(const std::filesystem::path& modelsDi
         if (s.classifier.trees->features != d)
           throw FileError(file, "model " + name + ": its trees read " +
                                     std::to_string(s.classifier.trees->features) + " features");
+        if (m.contains("context_trees")) {
+          try {
+            s.classifier.contextTrees = boostedTreesFromJson(m.at("context_trees"));
+          } catch (const InvalidArgument& e) {
+            throw FileError(file, "model " + name + ": context_trees: " + e.what());
+          }
+          if (s.classifier.contextTrees->features != d + kContextFeatureCount)
+            throw FileError(file, "model " + name + ": its context trees read " +
+                                      std::to_string(s.classifier.contextTrees->features) +
+                                      " features, not " +
+                                      std::to_string(d + kContextFeatureCount));
+        }
         scorer.byModel[name] = s;
         continue;
       }

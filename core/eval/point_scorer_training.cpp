@@ -117,24 +117,84 @@ PointChoiceFigures figuresOf(const std::vector<const CandidateSet*>& sets, const
   return f;
 }
 
-ModelPointScorer fitModel(const std::vector<const CandidateSet*>& sets,
-                          const ScorerTrainingOptions& options) {
+// The training rows of `sets`' candidates (their features, or what `rowsOf` makes of a set), with
+// labels and weights.
+struct TrainingRows {
   std::vector<std::vector<float>> rows;
   std::vector<bool> positive;
   std::vector<float> weight;
-  for (const CandidateSet* set : sets) {
-    const auto labels = candidateLabels(*set, kMatchRadiusMeters);
-    for (std::size_t c = 0; c < set->candidates.size(); ++c) {
-      rows.push_back(set->candidates[c].features);
-      positive.push_back(labels[c]);
-      weight.push_back(objectWeight(*set, options));
+};
+TrainingRows trainingRows(
+    const std::vector<const CandidateSet*>& sets, const ScorerTrainingOptions& options,
+    const std::function<std::vector<std::vector<float>>(std::size_t)>& rowsOf) {
+  TrainingRows t;
+  for (std::size_t i = 0; i < sets.size(); ++i) {
+    const auto labels = candidateLabels(*sets[i], kMatchRadiusMeters);
+    auto rows = rowsOf(i);
+    for (std::size_t c = 0; c < rows.size(); ++c) {
+      t.rows.push_back(std::move(rows[c]));
+      t.positive.push_back(labels[c]);
+      t.weight.push_back(objectWeight(*sets[i], options));
     }
   }
+  return t;
+}
+
+// The second look's trees (CandidateClassifier::contextTrees): trained on context features under
+// first-look probabilities of trees that did not see the object (kContextFolds folds of the
+// objects, dealt in name order), so the second look learns how far a first look on unseen objects
+// is to be trusted.
+constexpr std::size_t kContextFolds = 4;
+BoostedTrees fitContextTrees(const std::vector<const CandidateSet*>& sets,
+                             const ScorerTrainingOptions& options) {
+  std::set<std::string> names;
+  for (const CandidateSet* set : sets) names.insert(set->source + "/" + set->object);
+  const std::vector<std::string> objects(names.begin(), names.end());
+  std::vector<std::size_t> fold(sets.size());
+  for (std::size_t i = 0; i < sets.size(); ++i)
+    fold[i] = static_cast<std::size_t>(
+                  std::lower_bound(objects.begin(), objects.end(),
+                                   sets[i]->source + "/" + sets[i]->object) -
+                  objects.begin()) %
+              kContextFolds;
+  std::vector<std::vector<float>> firstLook(sets.size());
+  for (std::size_t f = 0; f < kContextFolds; ++f) {
+    std::vector<const CandidateSet*> others;
+    for (std::size_t i = 0; i < sets.size(); ++i)
+      if (fold[i] != f) others.push_back(sets[i]);
+    const auto t = trainingRows(others, options, [&](std::size_t i) {
+      std::vector<std::vector<float>> rows;
+      for (const auto& c : others[i]->candidates) rows.push_back(c.features);
+      return rows;
+    });
+    if (std::find(t.positive.begin(), t.positive.end(), true) == t.positive.end()) continue;
+    CandidateClassifier look;
+    look.trees = fitBoostedTrees(t.rows, t.positive, t.weight, options.boosting);
+    for (std::size_t i = 0; i < sets.size(); ++i)
+      if (fold[i] == f) firstLook[i] = candidateProbabilities(look, sets[i]->candidates);
+  }
+  const auto t = trainingRows(sets, options, [&](std::size_t i) {
+    if (firstLook[i].size() != sets[i]->candidates.size())
+      firstLook[i].assign(sets[i]->candidates.size(), 0.0f);
+    return withContext(sets[i]->candidates, firstLook[i]);
+  });
+  return fitBoostedTrees(t.rows, t.positive, t.weight, options.boosting);
+}
+
+ModelPointScorer fitModel(const std::vector<const CandidateSet*>& sets,
+                          const ScorerTrainingOptions& options) {
+  const auto t = trainingRows(sets, options, [&](std::size_t i) {
+    std::vector<std::vector<float>> rows;
+    for (const auto& c : sets[i]->candidates) rows.push_back(c.features);
+    return rows;
+  });
   ModelPointScorer best;
-  if (options.trees)
-    best.classifier.trees = fitBoostedTrees(rows, positive, weight, options.boosting);
-  else
-    best.classifier = fitCandidateClassifier(rows, positive, weight, options.ridge);
+  if (options.trees) {
+    best.classifier.trees = fitBoostedTrees(t.rows, t.positive, t.weight, options.boosting);
+    if (options.context) best.classifier.contextTrees = fitContextTrees(sets, options);
+  } else {
+    best.classifier = fitCandidateClassifier(t.rows, t.positive, t.weight, options.ridge);
+  }
   std::vector<std::vector<float>> probabilities;
   for (const CandidateSet* set : sets)
     probabilities.push_back(candidateProbabilities(best.classifier, set->candidates));

@@ -30,6 +30,9 @@ struct ScorerTrainingOptions {
   // objects, trees over the bare count's candidates needed 0.72 edits per hand point, the logistic
   // regression 0.82.
   bool trees = true;
+  // With trees: a second look in the company of the object's other candidates
+  // (CandidateClassifier::contextTrees).
+  bool context = true;
   BoostingOptions boosting;
   // The choice (core/points/candidate_classifier.h), per model the one of these that minimises
   // the training objects' weighted edits (the first on ties: keep the count's points, add none).

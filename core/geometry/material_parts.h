@@ -20,4 +20,10 @@ struct MaterialPart {
 // Every material's connected parts, materials in order, each material's parts largest first.
 std::vector<MaterialPart> materialParts(const Mesh& mesh);
 
+// The mesh's parts as a segmentation finer than connectivity: every connected part, then every
+// material's connected part that is not one of them (the same triangle count and box), so a knob
+// or burner zone fused into the body but drawn in a material of its own is a part too. Connected
+// parts' order; a mesh of one material has only its connected parts.
+std::vector<ConnectedPart> connectedAndMaterialParts(const Mesh& mesh);
+
 }  // namespace sagrid

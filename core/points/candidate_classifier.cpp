@@ -29,7 +29,86 @@ std::vector<float> candidateProbabilities(const CandidateClassifier& classifier,
                                           const std::vector<PointCandidate>& candidates) {
   std::vector<float> p;
   for (const auto& c : candidates) p.push_back(classifier.probability(c.features));
+  if (!classifier.contextTrees) return p;
+  const auto rows = withContext(candidates, p);
+  // Both looks decide together (their geometric mean): the second alone chose better sets of
+  // points but a worse first point (resources/models/README.md).
+  for (std::size_t c = 0; c < rows.size(); ++c)
+    p[c] = std::sqrt(p[c] * static_cast<float>(sigmoid(classifier.contextTrees->score(rows[c]))));
   return p;
+}
+
+const std::vector<std::string>& contextFeatureNames() {
+  static const std::vector<std::string> names = {
+      "first_look", "against_best", "rank", "height_from_best", "shape_from_best", "like_others"};
+  return names;
+}
+
+namespace {
+// How a candidate's part and place differ from another's: height, facing and part shape (size,
+// flatness, roundness, on a part at all, separated by material), each a share.
+struct Difference {
+  float height = 0, shape = 0;
+};
+Difference differenceOf(const std::vector<float>& a, const std::vector<float>& b) {
+  static const auto index = [](const char* name) {
+    const auto& names = candidateFeatureNames();
+    return static_cast<std::size_t>(std::find(names.begin(), names.end(), name) - names.begin());
+  };
+  static const std::size_t height = index("height"), facing = index("facing_up");
+  static const std::vector<std::size_t> shape = {index("on_part"), index("part_size"),
+                                                 index("part_flatness"), index("part_roundness"),
+                                                 index("part_by_material")};
+  Difference d;
+  d.height = std::abs(a[height] - b[height]) + std::abs(a[facing] - b[facing]) / 2;
+  for (std::size_t f : shape) d.shape += std::abs(a[f] - b[f]);
+  return d;
+}
+// The other candidates a candidate is compared with: the most probable few.
+constexpr std::size_t kCompany = 4;
+// Differences at which a look-alike counts 1/e as much (height and facing, part shape).
+constexpr float kAlikeHeight = 0.1f, kAlikeShape = 0.2f;
+}  // namespace
+
+std::vector<std::vector<float>> contextFeatures(const std::vector<PointCandidate>& candidates,
+                                                const std::vector<float>& p) {
+  const std::size_t n = candidates.size();
+  std::vector<std::vector<float>> out(n, std::vector<float>(kContextFeatureCount, 0.0f));
+  if (n == 0) return out;
+  std::vector<std::size_t> order(n);
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return p[a] > p[b]; });
+  std::vector<float> rank(n);
+  for (std::size_t r = 0; r < n; ++r)
+    rank[order[r]] = n > 1 ? static_cast<float>(r) / static_cast<float>(n - 1) : 0.0f;
+  const std::size_t best = order.front();
+  for (std::size_t c = 0; c < n; ++c) {
+    const auto& f = candidates[c].features;
+    std::vector<float>& x = out[c];
+    x[0] = p[c];
+    x[1] = p[c] / std::max(p[best], 1e-6f);
+    x[2] = rank[c];
+    const Difference fromBest = differenceOf(f, candidates[best].features);
+    x[3] = fromBest.height;
+    x[4] = fromBest.shape;
+    float alike = 0;
+    for (std::size_t r = 0; r < std::min(kCompany, n); ++r) {
+      const std::size_t o = order[r];
+      if (o == c) continue;
+      const Difference d = differenceOf(f, candidates[o].features);
+      alike = std::max(alike, p[o] * std::exp(-d.height / kAlikeHeight - d.shape / kAlikeShape));
+    }
+    x[5] = alike;
+  }
+  return out;
+}
+
+std::vector<std::vector<float>> withContext(const std::vector<PointCandidate>& candidates,
+                                            const std::vector<float>& p) {
+  auto rows = contextFeatures(candidates, p);
+  for (std::size_t c = 0; c < rows.size(); ++c)
+    rows[c].insert(rows[c].begin(), candidates[c].features.begin(), candidates[c].features.end());
+  return rows;
 }
 
 std::vector<std::size_t> chooseCandidates(const std::vector<float>& p,

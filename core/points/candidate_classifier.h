@@ -8,6 +8,7 @@
 
 #include <cstddef>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "core/points/boosted_trees.h"
@@ -21,10 +22,28 @@ struct CandidateClassifier {
   std::vector<float> weights;      // per standardized feature
   float bias = 0;
   std::optional<BoostedTrees> trees;  // when set, the probability is theirs
-  // The probability that a candidate with these features is an affordance point. Throws
-  // InvalidArgument when the feature count differs from the classifier's.
+  // A second look in the company of the object's other candidates (boosted trees over a
+  // candidate's features followed by its contextFeatures under the first look's probabilities):
+  // where set, candidateProbabilities gives the geometric mean of both looks.
+  std::optional<BoostedTrees> contextTrees;
+  // The probability that a candidate with these features is an affordance point (the first
+  // look). Throws InvalidArgument when the feature count differs from the classifier's.
   float probability(const std::vector<float>& features) const;
 };
+
+// What a candidate's company says, given every candidate's first-look probability `p` on one
+// object: its probability, against the object's best and its rank; how far it lies from the
+// object's most probable candidate in height, facing and the shape of its part; and how much it
+// looks like the other likely candidates (a burner among burners, a knob in a row). Repeated
+// parts and rows become numbers the second look weighs. kContextFeatureCount per candidate,
+// contextFeatureNames() order.
+constexpr std::size_t kContextFeatureCount = 6;
+const std::vector<std::string>& contextFeatureNames();
+std::vector<std::vector<float>> contextFeatures(const std::vector<PointCandidate>& candidates,
+                                                const std::vector<float>& p);
+// A candidate's features followed by its context features.
+std::vector<std::vector<float>> withContext(const std::vector<PointCandidate>& candidates,
+                                            const std::vector<float>& p);
 
 struct PointChoice {
   float keepThreshold = 0.5f;  // a kept point (PointCandidate::kept) at or above this stays

@@ -35,6 +35,7 @@ enum Feature {
   kBestKept,
   kFacingUp,
   kSurfaceDepth,
+  kPartByMaterial,
   kFeatureCount
 };
 
@@ -113,7 +114,7 @@ const std::vector<std::string>& candidateFeatureNames() {
       "radial",         "edge",                "centre_line",    "on_part",
       "part_size",      "part_flatness",       "part_roundness", "part_copies",
       "part_round_flat", "kept_count",         "nearest_kept",   "crowding",
-      "best_kept",      "facing_up",           "surface_depth"};
+      "best_kept",      "facing_up",           "surface_depth",  "part_by_material"};
   return names;
 }
 
@@ -192,6 +193,7 @@ std::vector<PointCandidate> pointCandidates(const PredictedField& field,
       f[kPartCopies] = std::min(std::log1p(static_cast<float>(copies.of(*on).size())) /
                                     std::log(9.0f), 1.0f);
       f[kPartRoundFlat] = isRoundFlatPart(part);
+      f[kPartByMaterial] = part.byMaterial;
     }
     f[kKeptCount] = std::log1p(static_cast<float>(kept.size())) / std::log(9.0f);
     float nearestKept = kNearCap;

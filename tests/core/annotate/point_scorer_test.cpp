@@ -57,6 +57,13 @@ TEST(PointScorerFile, ReadsBackWhatWasWrittenAndNamesWhatIsWrong) {
   for (int i = 0; i < 20; ++i) positive.push_back(i % 2 == 1);
   ModelPointScorer trees;
   trees.classifier.trees = fitBoostedTrees(rows, positive, std::vector<float>(20, 1.0f));
+  // With a second look: trees over the features and the context features.
+  std::vector<std::vector<float>> contextRows;
+  for (const auto& row : rows) {
+    contextRows.push_back(row);
+    contextRows.back().resize(d + kContextFeatureCount, static_cast<float>(contextRows.size() % 2));
+  }
+  trees.classifier.contextTrees = fitBoostedTrees(contextRows, positive, std::vector<float>(20, 1.0f));
   scorer.byModel["stove.heatsource"] = trees;
   scorer.byModel["stove.heatsource"].networkWeights = std::string(64, 'a');
   scorer.trainedOn = "test";
@@ -70,12 +77,26 @@ TEST(PointScorerFile, ReadsBackWhatWasWrittenAndNamesWhatIsWrong) {
   ASSERT_TRUE(back->forModel("stove.heatsource")->classifier.trees.has_value());
   EXPECT_GT(back->forModel("stove.heatsource")->classifier.probability(rows[1]), 0.5f);
   EXPECT_LT(back->forModel("stove.heatsource")->classifier.probability(rows[0]), 0.5f);
+  ASSERT_TRUE(back->forModel("stove.heatsource")->classifier.contextTrees.has_value());
+  EXPECT_EQ(toJson(*back->forModel("stove.heatsource")->classifier.contextTrees).dump(),
+            toJson(*trees.classifier.contextTrees).dump());
 
   auto j = toJson(scorer);
   auto rewrite = [&](const nlohmann::json& bad) { std::ofstream(dir / kPointScorerFile) << bad.dump(); };
   j["features"][1] = "renamed";
   rewrite(j);
   EXPECT_NE(messageOf(dir).find("other candidate features"), std::string::npos);
+  // Context trees of another build's context features: refused, naming the file and the count.
+  j = toJson(scorer);
+  j["models"]["stove.heatsource"]["context_trees"] = toJson(*trees.classifier.trees);
+  rewrite(j);
+  EXPECT_NE(messageOf(dir).find("its context trees read " + std::to_string(d) + " features"),
+            std::string::npos);
+  EXPECT_NE(messageOf(dir).find(kPointScorerFile), std::string::npos);
+  j = toJson(scorer);
+  j["context_features"][0] = "renamed";
+  rewrite(j);
+  EXPECT_NE(messageOf(dir).find("other context features"), std::string::npos);
   j = toJson(scorer);
   j["models"]["stove.togglebutton"]["weights"][2] = nullptr;
   rewrite(j);

@@ -98,6 +98,61 @@ TEST(PointScorerTraining, TheScorerFindsTheKnownPointsOfObjectsItWasNotFittedOn)
   EXPECT_THROW(trainPointScorer(training, {}), InvalidArgument);
 }
 
+// One model's candidates on one object where only the company tells the points: three knobs
+// share one part shape and height that differ from object to object; the field marks one knob
+// alone (the others' field is no lower than five distractors' of random shapes and heights).
+CandidateSet knobsAlikeObject(const std::string& source, int index, std::mt19937& rng) {
+  std::uniform_real_distribution<float> u(0.0f, 1.0f);
+  const auto& names = candidateFeatureNames();
+  const auto at = [&](const char* name) {
+    return static_cast<std::size_t>(std::find(names.begin(), names.end(), name) - names.begin());
+  };
+  const std::vector<std::size_t> shape = {at("part_size"), at("part_flatness"), at("part_roundness")};
+  const std::vector<float> knobShape = {u(rng), u(rng), u(rng)};
+  const float knobHeight = u(rng);
+  CandidateSet set;
+  set.object = source + "-" + std::to_string(index);
+  set.source = source;
+  set.model = "stove.togglebutton";
+  for (int c = 0; c < 8; ++c) {
+    const bool knob = c < 3;
+    PointCandidate candidate;
+    candidate.position = Eigen::Vector3f(0.3f * c, 0.0f, 0.0f);
+    candidate.features.assign(names.size(), 0.5f);
+    candidate.features[0] = c == 0 ? 0.1f * u(rng) : 0.3f + 0.7f * u(rng);
+    candidate.features[at("on_part")] = 1;
+    for (std::size_t k = 0; k < shape.size(); ++k)
+      candidate.features[shape[k]] = knob ? knobShape[k] : u(rng);
+    candidate.features[at("height")] = knob ? knobHeight : u(rng);
+    candidate.distance = candidate.features[0];
+    set.candidates.push_back(candidate);
+    set.candidateSurface.push_back(candidate.position);
+    if (knob) set.truth.push_back(candidate.position);
+  }
+  return set;
+}
+
+TEST(PointScorerTraining, TheSecondLookFindsThePartsThatLookLikeTheBestOne) {
+  std::mt19937 rng(11);
+  std::vector<CandidateSet> sets;
+  for (int i = 0; i < 60; ++i) sets.push_back(knobsAlikeObject("train", i, rng));
+  std::vector<CandidateSet> heldOut;
+  for (int i = 0; i < 20; ++i) heldOut.push_back(knobsAlikeObject("held-out", i, rng));
+  std::vector<const CandidateSet*> training;
+  for (const auto& s : sets) training.push_back(&s);
+  ScorerTrainingOptions firstLookOnly;
+  firstLookOnly.context = false;
+  const PointScorer without = trainPointScorer(training, firstLookOnly);
+  const PointScorer with = trainPointScorer(training, {});
+  ASSERT_TRUE(with.forModel("stove.togglebutton")->classifier.contextTrees.has_value());
+  EXPECT_FALSE(without.forModel("stove.togglebutton")->classifier.contextTrees.has_value());
+  const std::size_t editsWithout = editsOn(without, heldOut, "held-out");
+  const std::size_t editsWith = editsOn(with, heldOut, "held-out");
+  // 60 knobs on the 20 objects: the first look finds one per object, the second most of them.
+  EXPECT_GE(editsWithout, 30u);
+  EXPECT_LE(editsWith, 15u);
+}
+
 TEST(PointScorerTraining, FoldsLeaveOneSourceOutAndAreReproducible) {
   const auto sets = syntheticSets();
   const ScorerCrossValidation cv = crossValidatePointScorer(sets, {});

@@ -2,6 +2,7 @@
 // among candidates: known labels on synthetic candidates.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <random>
 
 #include "core/common/error.h"
@@ -90,6 +91,45 @@ TEST(CandidateClassifier, TheChoiceKeepsAndAddsByItsTwoThresholdsAndSuppressesNe
   // Nothing reaches its threshold: the best alone.
   EXPECT_EQ(chooseCandidates(p, c, {0.99f, 0.99f, 0.05f}), (std::vector<std::size_t>{2}));
   EXPECT_TRUE(chooseCandidates({}, {}, {}).empty());
+}
+
+// Three candidates: the object's most probable, a copy of its part at its height that the first
+// look missed, and a likelier candidate of another shape lower down.
+TEST(CandidateContext, ACopyOfTheBestCandidatesPartLooksLikeItsCompany) {
+  const auto& names = candidateFeatureNames();
+  const auto at = [&](const char* name) {
+    return static_cast<std::size_t>(std::find(names.begin(), names.end(), name) - names.begin());
+  };
+  std::vector<PointCandidate> c(3);
+  for (auto& candidate : c) candidate.features.assign(names.size(), 0.0f);
+  for (std::size_t i : {0u, 1u}) {
+    c[i].features[at("on_part")] = 1;
+    c[i].features[at("part_size")] = 0.05f;
+    c[i].features[at("part_roundness")] = 0.9f;
+    c[i].features[at("height")] = 0.8f;
+  }
+  c[2].features[at("height")] = 0.3f;
+  const std::vector<float> p = {0.9f, 0.2f, 0.4f};
+  const auto x = contextFeatures(c, p);
+  ASSERT_EQ(x.size(), 3u);
+  ASSERT_EQ(x[0].size(), kContextFeatureCount);
+  ASSERT_EQ(contextFeatureNames().size(), kContextFeatureCount);
+  EXPECT_FLOAT_EQ(x[0][0], 0.9f);  // first look
+  EXPECT_FLOAT_EQ(x[0][1], 1.0f);  // against the best: itself
+  EXPECT_FLOAT_EQ(x[0][2], 0.0f);  // rank
+  EXPECT_FLOAT_EQ(x[1][2], 1.0f);
+  EXPECT_FLOAT_EQ(x[2][2], 0.5f);
+  EXPECT_FLOAT_EQ(x[1][3], 0.0f);  // at the best one's height and shape
+  EXPECT_FLOAT_EQ(x[1][4], 0.0f);
+  EXPECT_GT(x[2][3], 0.4f);
+  EXPECT_GT(x[2][4], 1.0f);
+  EXPECT_FLOAT_EQ(x[1][5], 0.9f);  // looks exactly like the best
+  EXPECT_LT(x[2][5], 0.05f);
+  const auto rows = withContext(c, p);
+  ASSERT_EQ(rows[1].size(), names.size() + kContextFeatureCount);
+  EXPECT_FLOAT_EQ(rows[1][at("height")], 0.8f);
+  EXPECT_FLOAT_EQ(rows[1][names.size() + 5], 0.9f);
+  EXPECT_TRUE(contextFeatures({}, {}).empty());
 }
 
 }  // namespace
