@@ -29,12 +29,18 @@ std::vector<float> candidateProbabilities(const CandidateClassifier& classifier,
                                           const std::vector<PointCandidate>& candidates) {
   std::vector<float> p;
   for (const auto& c : candidates) p.push_back(classifier.probability(c.features));
-  if (!classifier.contextTrees) return p;
-  const auto rows = withContext(candidates, p);
+  return classifier.contextTrees ? bothLooks(*classifier.contextTrees, candidates, p) : p;
+}
+
+std::vector<float> bothLooks(const BoostedTrees& contextTrees,
+                             const std::vector<PointCandidate>& candidates,
+                             const std::vector<float>& firstLook) {
+  const auto rows = withContext(candidates, firstLook);
   // Both looks decide together (their geometric mean): the second alone chose better sets of
   // points but a worse first point (resources/models/README.md).
+  std::vector<float> p(rows.size());
   for (std::size_t c = 0; c < rows.size(); ++c)
-    p[c] = std::sqrt(p[c] * static_cast<float>(sigmoid(classifier.contextTrees->score(rows[c]))));
+    p[c] = std::sqrt(firstLook[c] * static_cast<float>(sigmoid(contextTrees.score(rows[c]))));
   return p;
 }
 

@@ -41,6 +41,10 @@ constexpr std::size_t kContextFeatureCount = 6;
 const std::vector<std::string>& contextFeatureNames();
 std::vector<std::vector<float>> contextFeatures(const std::vector<PointCandidate>& candidates,
                                                 const std::vector<float>& p);
+// The decision's probabilities given the first look's: the geometric mean of both looks.
+std::vector<float> bothLooks(const BoostedTrees& contextTrees,
+                             const std::vector<PointCandidate>& candidates,
+                             const std::vector<float>& firstLook);
 // A candidate's features followed by its context features.
 std::vector<std::vector<float>> withContext(const std::vector<PointCandidate>& candidates,
                                             const std::vector<float>& p);
