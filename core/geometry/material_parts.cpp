@@ -1,6 +1,7 @@
 #include "core/geometry/material_parts.h"
 
 #include <map>
+#include <unordered_map>
 #include <set>
 #include <tuple>
 
@@ -9,12 +10,24 @@
 namespace sagrid {
 
 std::vector<MaterialPart> materialParts(const Mesh& mesh) {
+  // Each material's triangles on its own vertices only (a copy of every position per material
+  // would cost the vertex count times the material count).
   std::map<int, Mesh> byMaterial;
+  std::map<int, std::unordered_map<int, int>> vertexIn;
+  const int vertices = static_cast<int>(mesh.positions.size());
   for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+    const auto& corners = mesh.triangles[t];
+    if (corners.minCoeff() < 0 || corners.maxCoeff() >= vertices) continue;
     const int material = t < mesh.triangleMaterials.size() ? mesh.triangleMaterials[t] : -1;
     Mesh& subset = byMaterial[material];
-    if (subset.positions.empty()) subset.positions = mesh.positions;  // shared vertex indices
-    subset.triangles.push_back(mesh.triangles[t]);
+    auto& index = vertexIn[material];
+    Eigen::Vector3i local;
+    for (int c = 0; c < 3; ++c) {
+      const auto [at, added] = index.emplace(corners[c], static_cast<int>(subset.positions.size()));
+      if (added) subset.positions.push_back(mesh.positions[static_cast<std::size_t>(corners[c])]);
+      local[c] = at->second;
+    }
+    subset.triangles.push_back(local);
   }
   std::vector<MaterialPart> result;
   for (const auto& [material, subset] : byMaterial) {
