@@ -1,9 +1,9 @@
 #include "core/geometry/material_parts.h"
 
 #include <map>
-#include <unordered_map>
 #include <set>
 #include <tuple>
+#include <unordered_map>
 
 #include "core/mesh/mesh.h"
 

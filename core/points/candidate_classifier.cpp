@@ -83,7 +83,8 @@ std::vector<std::vector<float>> contextFeatures(const std::vector<PointCandidate
   if (n == 0) return out;
   std::vector<std::size_t> order(n);
   std::iota(order.begin(), order.end(), 0);
-  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return p[a] > p[b]; });
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t a, std::size_t b) { return p[a] > p[b]; });
   std::vector<float> rank(n);
   for (std::size_t r = 0; r < n; ++r)
     rank[order[r]] = n > 1 ? static_cast<float>(r) / static_cast<float>(n - 1) : 0.0f;
