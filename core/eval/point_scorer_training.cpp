@@ -191,7 +191,11 @@ BoostedTrees fitContextTrees(const std::vector<const CandidateSet*>& sets,
       for (const auto& c : others[i]->candidates) rows.push_back(c.features);
       return rows;
     });
-    if (std::find(t.positive.begin(), t.positive.end(), true) == t.positive.end()) continue;
+    // A fold whose other objects hold one class only (a few curated objects) gives no first
+    // look: its objects' context reads probabilities of 0.
+    if (std::find(t.positive.begin(), t.positive.end(), true) == t.positive.end() ||
+        std::find(t.positive.begin(), t.positive.end(), false) == t.positive.end())
+      continue;
     CandidateClassifier look;
     look.trees = fitBoostedTrees(t.rows, t.positive, t.weight, options.boosting);
     for (std::size_t i = 0; i < sets.size(); ++i)

@@ -152,6 +152,14 @@ TEST(PointScorerTraining, TheSecondLookFindsThePartsThatLookLikeTheBestOne) {
   // half the others at least.
   EXPECT_GE(editsWithout, 30u);
   EXPECT_LE(2 * editsWith, editsWithout) << "with: " << editsWith;
+
+  // Two curated objects, one all points and one without: no fold's first look can be fitted on
+  // the other alone, and the decision is still trained (its context reads probabilities of 0).
+  CandidateSet allPoints = sets[0], noPoint = sets[1];
+  allPoints.truth = allPoints.candidateSurface;
+  noPoint.truth.clear();
+  const PointScorer two = trainPointScorer({&allPoints, &noPoint}, {});
+  EXPECT_TRUE(two.forModel("stove.togglebutton")->classifier.contextTrees.has_value());
 }
 
 TEST(PointScorerTraining, FoldsLeaveOneSourceOutAndAreReproducible) {
