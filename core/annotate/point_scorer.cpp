@@ -120,6 +120,8 @@ std::optional<PointScorer> readPointScorer(const std::filesystem::path& modelsDi
           throw FileError(file, "model " + name + ": its trees read " +
                                     std::to_string(s.classifier.trees->features) + " features");
         if (m.contains("context_trees")) {
+          if (!j.contains("context_features"))
+            throw FileError(file, "model " + name + ": context trees without context_features");
           try {
             s.classifier.contextTrees = boostedTreesFromJson(m.at("context_trees"));
           } catch (const InvalidArgument& e) {
@@ -134,6 +136,8 @@ std::optional<PointScorer> readPointScorer(const std::filesystem::path& modelsDi
         scorer.byModel[name] = s;
         continue;
       }
+      if (m.contains("context_trees"))
+        throw FileError(file, "model " + name + ": context trees need the trees of a first look");
       s.classifier.mean = m.at("mean").get<std::vector<float>>();
       s.classifier.scale = m.at("scale").get<std::vector<float>>();
       s.classifier.weights = m.at("weights").get<std::vector<float>>();

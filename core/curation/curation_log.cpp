@@ -24,7 +24,7 @@ constexpr Name kNames[] = {
     {CurationAction::Drag, "drag"},         {CurationAction::Add, "add"},
     {CurationAction::Delete, "delete"},     {CurationAction::Retype, "retype"},
     {CurationAction::Category, "category"}, {CurationAction::ConfirmCategory, "confirm_category"},
-    {CurationAction::Units, "units"},
+    {CurationAction::Units, "units"},       {CurationAction::Copies, "copies"},
     {CurationAction::Edit, "edit"},         {CurationAction::Undo, "undo"},
     {CurationAction::Redo, "redo"},         {CurationAction::Skip, "skip"},
     {CurationAction::Navigate, "navigate"},

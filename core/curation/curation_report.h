@@ -33,7 +33,7 @@ inline constexpr double kMaxLoggedGapSeconds = 120.0;
 struct ObjectCuration {
   std::string object;
   std::map<CurationAction, int> actions;
-  int edits = 0;        // drag, add, delete, retype, category (switched or confirmed), units, edit
+  int edits = 0;        // drag, add, copies, delete, retype, category (switched or confirmed), units, edit
   bool oneKey = false;  // nothing but looking and one accept-all
   double loggedSeconds = 0;
   double klmSeconds = 0;

@@ -96,8 +96,8 @@ void addHeldOutDecisions(const std::vector<const CandidateSet*>& sets, const Poi
       if (!chosen.empty())
         d.bestPointError = nearestDistance(chosen.front(), set->truth, set->metersPerUnit);
       for (const auto& c : set->candidateSurface)
-        d.nearestCandidateError = std::fmin(
-            d.nearestCandidateError, nearestDistance(c, set->truth, set->metersPerUnit));
+        d.nearestCandidateError =
+            std::fmin(d.nearestCandidateError, nearestDistance(c, set->truth, set->metersPerUnit));
     }
     cv.decisions.push_back(std::move(d));
   }
@@ -141,6 +141,13 @@ PointChoiceFigures figuresOf(const std::vector<const CandidateSet*>& sets, const
   return f;
 }
 
+// A set's candidates' features, one row each.
+std::vector<std::vector<float>> featureRows(const CandidateSet& set) {
+  std::vector<std::vector<float>> rows;
+  for (const auto& c : set.candidates) rows.push_back(c.features);
+  return rows;
+}
+
 // The training rows of `sets`' candidates (their features, or what `rowsOf` makes of a set), with
 // labels and weights.
 struct TrainingRows {
@@ -176,26 +183,24 @@ BoostedTrees fitContextTrees(const std::vector<const CandidateSet*>& sets,
   const std::vector<std::string> objects(names.begin(), names.end());
   std::vector<std::size_t> fold(sets.size());
   for (std::size_t i = 0; i < sets.size(); ++i)
-    fold[i] = static_cast<std::size_t>(
-                  std::lower_bound(objects.begin(), objects.end(),
-                                   sets[i]->source + "/" + sets[i]->object) -
-                  objects.begin()) %
+    fold[i] = static_cast<std::size_t>(std::lower_bound(objects.begin(), objects.end(),
+                                                        sets[i]->source + "/" + sets[i]->object) -
+                                       objects.begin()) %
               kContextFolds;
   std::vector<std::vector<float>> firstLook(sets.size());
   for (std::size_t f = 0; f < kContextFolds; ++f) {
     std::vector<const CandidateSet*> others;
     for (std::size_t i = 0; i < sets.size(); ++i)
       if (fold[i] != f) others.push_back(sets[i]);
-    const auto t = trainingRows(others, options, [&](std::size_t i) {
-      std::vector<std::vector<float>> rows;
-      for (const auto& c : others[i]->candidates) rows.push_back(c.features);
-      return rows;
-    });
-    // A fold whose other objects hold one class only (a few curated objects) gives no first
-    // look: its objects' context reads probabilities of 0.
-    if (std::find(t.positive.begin(), t.positive.end(), true) == t.positive.end() ||
-        std::find(t.positive.begin(), t.positive.end(), false) == t.positive.end())
-      continue;
+    if (others.size() == sets.size()) continue;  // no object of its own (fewer than 4)
+    const auto t =
+        trainingRows(others, options, [&](std::size_t i) { return featureRows(*others[i]); });
+    // A fold whose other objects give one class no weight (a few curated objects, or a real
+    // weight of 0) gives no first look: its objects' context reads probabilities of 0.
+    double positive = 0, negative = 0;
+    for (std::size_t r = 0; r < t.rows.size(); ++r)
+      (t.positive[r] ? positive : negative) += t.weight[r];
+    if (!(positive > 0) || !(negative > 0)) continue;
     CandidateClassifier look;
     look.trees = fitBoostedTrees(t.rows, t.positive, t.weight, options.boosting);
     for (std::size_t i = 0; i < sets.size(); ++i)
@@ -211,11 +216,7 @@ BoostedTrees fitContextTrees(const std::vector<const CandidateSet*>& sets,
 
 ModelPointScorer fitModel(const std::vector<const CandidateSet*>& sets,
                           const ScorerTrainingOptions& options) {
-  const auto t = trainingRows(sets, options, [&](std::size_t i) {
-    std::vector<std::vector<float>> rows;
-    for (const auto& c : sets[i]->candidates) rows.push_back(c.features);
-    return rows;
-  });
+  const auto t = trainingRows(sets, options, [&](std::size_t i) { return featureRows(*sets[i]); });
   ModelPointScorer best;
   if (options.trees) {
     best.classifier.trees = fitBoostedTrees(t.rows, t.positive, t.weight, options.boosting);
@@ -263,7 +264,8 @@ PointScorer trainPointScorer(const std::vector<const CandidateSet*>& sets,
   for (const auto& [model, modelSets] : byModel) {
     bool hasPoint = false, hasOther = false;
     for (const CandidateSet* set : modelSets)
-      for (bool label : candidateLabels(*set, kMatchRadiusMeters)) (label ? hasPoint : hasOther) = true;
+      for (bool label : candidateLabels(*set, kMatchRadiusMeters))
+        (label ? hasPoint : hasOther) = true;
     if (!hasPoint || !hasOther) continue;
     ModelPointScorer& decision = scorer.byModel[model] = fitModel(modelSets, options);
     decision.networkWeights = modelSets.front()->networkWeights;
@@ -306,8 +308,10 @@ ScorerCrossValidation crossValidatePointScorer(const std::vector<CandidateSet>& 
     }
   }
   if (realBySource.size() < 2)
-    throw InvalidArgument("point scorer cross-validation needs curated real objects of two "
-                          "sources or more, got " + std::to_string(realBySource.size()));
+    throw InvalidArgument(
+        "point scorer cross-validation needs curated real objects of two "
+        "sources or more, got " +
+        std::to_string(realBySource.size()));
   ScorerCrossValidation cv;
   cv.tunedOn = curveOptions.tunedOn;
   cv.ks = curveOptions.ks;
@@ -324,13 +328,15 @@ ScorerCrossValidation crossValidatePointScorer(const std::vector<CandidateSet>& 
     for (const auto& [other, otherSets] : realBySource)
       if (other != source) {
         training.insert(training.end(), otherSets.begin(), otherSets.end());
-        for (const CandidateSet* set : otherSets) otherObjects[other + "/" + set->object].push_back(set);
+        for (const CandidateSet* set : otherSets)
+          otherObjects[other + "/" + set->object].push_back(set);
       }
     const PointScorer withCurated = trainPointScorer(training, options);
     ScorerSourceFold fold;
     fold.source = source;
     fold.count = figuresOf(held, count);
-    fold.generatedOnly = generatedOnly ? figuresOf(held, scorerChooser(*generatedOnly)) : fold.count;
+    fold.generatedOnly =
+        generatedOnly ? figuresOf(held, scorerChooser(*generatedOnly)) : fold.count;
     fold.withCurated = figuresOf(held, scorerChooser(withCurated));
     addObjectOutcomes(held, withCurated, cv);
     addHeldOutDecisions(held, withCurated, cv);
@@ -389,21 +395,25 @@ ScorerCrossValidation crossValidatePointScorer(const std::vector<CandidateSet>& 
     return t;
   };
   for (bool unseen : {false, true}) {
-    (unseen ? cv.unseenCount : cv.count) = total([](const auto& f) -> const auto& { return f.count; }, unseen);
-    (unseen ? cv.unseenGeneratedOnly : cv.generatedOnly) =
-        total([](const auto& f) -> const auto& { return f.generatedOnly; }, unseen);
-    (unseen ? cv.unseenWithCurated : cv.withCurated) =
-        total([](const auto& f) -> const auto& { return f.withCurated; }, unseen);
+    (unseen ? cv.unseenCount : cv.count) = total(
+        [](const auto& f) -> const auto& { return f.count; }, unseen);
+    (unseen ? cv.unseenGeneratedOnly : cv.generatedOnly) = total(
+        [](const auto& f) -> const auto& { return f.generatedOnly; }, unseen);
+    (unseen ? cv.unseenWithCurated : cv.withCurated) = total(
+        [](const auto& f) -> const auto& { return f.withCurated; }, unseen);
     for (std::size_t k = 0; k < cv.ks.size(); ++k)
       (unseen ? cv.unseenCurve : cv.curve)
-          .push_back(total([k](const auto& f) -> const auto& { return f.curve[k]; }, unseen));
+          .push_back(total(
+              [k](const auto& f) -> const auto& { return f.curve[k]; }, unseen));
   }
   cv.candidateRecall = truthPoints ? static_cast<double>(reached) / truthPoints : NAN;
   if (!cv.leastSure.empty()) {
     cv.confidence = fitConfidence(cv.leastSure, cv.oneKey);
-    cv.confidence->fittedOn = "the curated objects' points decided leave one source out (sagrid scorer cv)";
+    cv.confidence->fittedOn =
+        "the curated objects' points decided leave one source out (sagrid scorer cv)";
     for (const CandidateSet& set : sets)
-      if (!set.networkWeights.empty()) cv.confidence->networkWeights.emplace(set.model, set.networkWeights);
+      if (!set.networkWeights.empty())
+        cv.confidence->networkWeights.emplace(set.model, set.networkWeights);
   }
   // The confidence fitted on the tuned-on sources alone, and the other one given, on the rest.
   std::vector<double> tunedSure, unseenSure;
@@ -418,9 +428,9 @@ ScorerCrossValidation crossValidatePointScorer(const std::vector<CandidateSet>& 
     cv.unseenOneKeyShare =
         static_cast<double>(std::count(unseenRight.begin(), unseenRight.end(), true)) /
         static_cast<double>(unseenRight.size());
-    cv.unseenConfidence.push_back(checkConfidence(
-        "fitted on the tuned-on sources' objects", fitConfidence(tunedSure, tunedRight),
-        unseenSure, unseenRight));
+    cv.unseenConfidence.push_back(checkConfidence("fitted on the tuned-on sources' objects",
+                                                  fitConfidence(tunedSure, tunedRight), unseenSure,
+                                                  unseenRight));
     if (curveOptions.otherConfidence)
       cv.unseenConfidence.push_back(checkConfidence(curveOptions.otherConfidenceName,
                                                     *curveOptions.otherConfidence, unseenSure,
@@ -481,8 +491,10 @@ PointScorer adoptedScorer(const PointScorer* current, const PointScorer& fresh,
   for (const ScorerVerdict& v : guard.byModel) {
     if (!v.adopted) continue;
     const ModelPointScorer* decision = fresh.forModel(v.model);
-    if (decision) out.byModel[v.model] = *decision;
-    else out.byModel.erase(v.model);
+    if (decision)
+      out.byModel[v.model] = *decision;
+    else
+      out.byModel.erase(v.model);
   }
   if (!guard.adoptedWhole()) {
     const std::string models = modelsWhere(guard, true);
@@ -501,8 +513,8 @@ std::string modelsWhere(const ScorerGuard& guard, bool adopted) {
 
 std::string toString(const ScorerVerdict& v) {
   return v.model + ": " + std::to_string(v.currentEdits) + " -> " + std::to_string(v.newEdits) +
-         " edits on " + std::to_string(v.handPoints) + " held-out points: " +
-         (v.adopted ? "adopted" : "the decision before stays");
+         " edits on " + std::to_string(v.handPoints) +
+         " held-out points: " + (v.adopted ? "adopted" : "the decision before stays");
 }
 
 nlohmann::json toJson(const ScorerGuard& guard) {
@@ -513,12 +525,9 @@ nlohmann::json toJson(const ScorerGuard& guard) {
                       {"new_edits", v.newEdits},
                       {"hand_points", v.handPoints},
                       {"adopted", v.adopted}});
-  return {{"current_edits", guard.currentEdits},
-          {"new_edits", guard.newEdits},
-          {"adopted_edits", guard.adoptedEdits},
-          {"adopted", guard.adopted},
-          {"adopted_whole", guard.adoptedWhole()},
-          {"models", models}};
+  return {{"current_edits", guard.currentEdits},   {"new_edits", guard.newEdits},
+          {"adopted_edits", guard.adoptedEdits},   {"adopted", guard.adopted},
+          {"adopted_whole", guard.adoptedWhole()}, {"models", models}};
 }
 
 namespace {
@@ -526,16 +535,14 @@ double editRatio(const PointChoiceFigures& f) {
   return f.edits.handPoints ? static_cast<double>(f.edits.total()) / f.edits.handPoints : NAN;
 }
 std::string cells(const PointChoiceFigures& f) {
-  return reportCell(editRatio(f), "%.2f") + " | " + reportCell(100 * f.effort.oneKeyShare, "%.0f %%") +
-         " | " + reportCell(100 * f.singleError, "%.1f");
+  return reportCell(editRatio(f), "%.2f") + " | " +
+         reportCell(100 * f.effort.oneKeyShare, "%.0f %%") + " | " +
+         reportCell(100 * f.singleError, "%.1f");
 }
 nlohmann::json figuresJson(const PointChoiceFigures& f) {
-  return {{"objects", f.effort.objects},
-          {"edits", f.edits.total()},
-          {"hand_points", f.edits.handPoints},
-          {"edits_per_hand_point", editRatio(f)},
-          {"one_key_share", f.effort.oneKeyShare},
-          {"single_error_m", f.singleError}};
+  return {{"objects", f.effort.objects},           {"edits", f.edits.total()},
+          {"hand_points", f.edits.handPoints},     {"edits_per_hand_point", editRatio(f)},
+          {"one_key_share", f.effort.oneKeyShare}, {"single_error_m", f.singleError}};
 }
 }  // namespace
 
@@ -545,7 +552,9 @@ double signalAuc(const ScorerCrossValidation& cv) {
     for (std::size_t b = 0; b < cv.leastSure.size(); ++b)
       if (cv.oneKey[a] && !cv.oneKey[b]) {
         ++pairs;
-        ordered += cv.leastSure[a] < cv.leastSure[b] ? 1.0 : cv.leastSure[a] == cv.leastSure[b] ? 0.5 : 0.0;
+        ordered += cv.leastSure[a] < cv.leastSure[b]    ? 1.0
+                   : cv.leastSure[a] == cv.leastSure[b] ? 0.5
+                                                        : 0.0;
       }
   return pairs > 0 ? ordered / pairs : NAN;
 }
@@ -575,8 +584,8 @@ std::string scorerCrossValidationMarkdown(const ScorerCrossValidation& cv) {
     md << "\n## Learning curve: k curated objects of the other sources in training\n\n"
        << "Generated objects always in training; k objects drawn once per fold (k = 0: generated "
           "only).\n\n| k | edits | one key | error |"
-       << (cv.tunedOn.empty() ? "" : " unseen sources: edits | one key | error |") << "\n|---|---|---|---|"
-       << (cv.tunedOn.empty() ? "" : "---|---|---|") << "\n";
+       << (cv.tunedOn.empty() ? "" : " unseen sources: edits | one key | error |")
+       << "\n|---|---|---|---|" << (cv.tunedOn.empty() ? "" : "---|---|---|") << "\n";
     for (std::size_t k = 0; k < cv.ks.size(); ++k) {
       md << "| " << cv.ks[k] << " | " << cells(cv.curve[k]) << " |";
       if (!cv.tunedOn.empty()) md << ' ' << cells(cv.unseenCurve[k]) << " |";
@@ -615,8 +624,9 @@ std::string scorerCrossValidationMarkdown(const ScorerCrossValidation& cv) {
     for (double d : cv.leastSure) p.push_back(c.probability(d));
     for (double threshold : {0.3, 0.5, 0.7, 0.9}) {
       const AutoAcceptRow row = autoAcceptAt(p, cv.oneKey, threshold);
-      md << "| " << reportCell(threshold, "%.1f") << " | " << reportCell(100 * row.coverage, "%.0f %%")
-         << " | " << reportCell(100 * row.precision, "%.0f %%") << " |\n";
+      md << "| " << reportCell(threshold, "%.1f") << " | "
+         << reportCell(100 * row.coverage, "%.0f %%") << " | "
+         << reportCell(100 * row.precision, "%.0f %%") << " |\n";
     }
   }
   if (!cv.unseenConfidence.empty()) {
@@ -657,9 +667,8 @@ nlohmann::json toJson(const ScorerCrossValidation& cv) {
                     {"log_loss", c.logLoss},
                     {"brier", c.brier},
                     {"mean_probability", c.meanProbability}});
-  const nlohmann::json unseenConfidence = {{"objects", cv.unseenObjects},
-                                           {"one_key_share", cv.unseenOneKeyShare},
-                                           {"maps", maps}};
+  const nlohmann::json unseenConfidence = {
+      {"objects", cv.unseenObjects}, {"one_key_share", cv.unseenOneKeyShare}, {"maps", maps}};
   nlohmann::json curve = nlohmann::json::array();
   for (std::size_t k = 0; k < cv.ks.size(); ++k)
     curve.push_back({{"k", cv.ks[k]},

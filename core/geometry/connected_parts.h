@@ -23,7 +23,7 @@ struct ConnectedPart {
   // Standard deviations of its distinct vertex positions along their principal axes, largest
   // first: unchanged when the part is moved, turned or mirrored.
   Eigen::Vector3f spread = Eigen::Vector3f::Zero();
-  // Set for a part that only its material separates from the body it is fused into
+  // Set for a part that only its material separates from the rest of its connected part
   // (connectedAndMaterialParts, core/geometry/material_parts.h).
   bool byMaterial = false;
 };

@@ -31,7 +31,8 @@ std::vector<MaterialPart> materialParts(const Mesh& mesh) {
   }
   std::vector<MaterialPart> result;
   for (const auto& [material, subset] : byMaterial) {
-    for (ConnectedPart& part : connectedParts(subset)) result.push_back({material, std::move(part)});
+    for (ConnectedPart& part : connectedParts(subset))
+      result.push_back({material, std::move(part)});
   }
   return result;
 }

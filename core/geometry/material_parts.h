@@ -22,8 +22,10 @@ std::vector<MaterialPart> materialParts(const Mesh& mesh);
 
 // The mesh's parts as a segmentation finer than connectivity: every connected part, then every
 // material's connected part that is not one of them (the same triangle count and box), so a knob
-// or burner zone fused into the body but drawn in a material of its own is a part too. Connected
-// parts' order; a mesh of one material has only its connected parts.
+// or burner zone fused into the body but drawn in a material of its own is a part too. Any part
+// of two materials is split so: a free-standing knob with a cap of another material also gives
+// its cap and its base as parts (the smaller box wins where a point lies on both, partAt).
+// Connected parts' order; a mesh of one material has only its connected parts.
 std::vector<ConnectedPart> connectedAndMaterialParts(const Mesh& mesh);
 
 }  // namespace sagrid

@@ -1,10 +1,9 @@
 #include "core/points/candidate_classifier.h"
 
+#include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
 #include <numeric>
-
-#include <Eigen/Dense>
 
 #include "core/common/error.h"
 
@@ -35,7 +34,7 @@ std::vector<float> candidateProbabilities(const CandidateClassifier& classifier,
 std::vector<float> bothLooks(const BoostedTrees& contextTrees,
                              const std::vector<PointCandidate>& candidates,
                              const std::vector<float>& firstLook) {
-  const auto rows = withContext(candidates, firstLook);
+  const auto rows = withContext(candidates, firstLook);  // checks the sizes
   // Both looks decide together (their geometric mean): the second alone chose better sets of
   // points but a worse first point (resources/models/README.md).
   std::vector<float> p(rows.size());
@@ -57,14 +56,12 @@ struct Difference {
   float height = 0, shape = 0;
 };
 Difference differenceOf(const std::vector<float>& a, const std::vector<float>& b) {
-  static const auto index = [](const char* name) {
-    const auto& names = candidateFeatureNames();
-    return static_cast<std::size_t>(std::find(names.begin(), names.end(), name) - names.begin());
-  };
-  static const std::size_t height = index("height"), facing = index("facing_up");
-  static const std::vector<std::size_t> shape = {index("on_part"), index("part_size"),
-                                                 index("part_flatness"), index("part_roundness"),
-                                                 index("part_by_material")};
+  static const std::size_t height = candidateFeatureIndex("height"),
+                           facing = candidateFeatureIndex("facing_up");
+  static const std::vector<std::size_t> shape = {
+      candidateFeatureIndex("on_part"), candidateFeatureIndex("part_size"),
+      candidateFeatureIndex("part_flatness"), candidateFeatureIndex("part_roundness"),
+      candidateFeatureIndex("part_by_material")};
   Difference d;
   d.height = std::abs(a[height] - b[height]) + std::abs(a[facing] - b[facing]) / 2;
   for (std::size_t f : shape) d.shape += std::abs(a[f] - b[f]);
@@ -79,6 +76,9 @@ constexpr float kAlikeHeight = 0.1f, kAlikeShape = 0.2f;
 std::vector<std::vector<float>> contextFeatures(const std::vector<PointCandidate>& candidates,
                                                 const std::vector<float>& p) {
   const std::size_t n = candidates.size();
+  if (p.size() != n)
+    throw InvalidArgument("candidate context: " + std::to_string(p.size()) + " probabilities for " +
+                          std::to_string(n) + " candidates");
   std::vector<std::vector<float>> out(n, std::vector<float>(kContextFeatureCount, 0.0f));
   if (n == 0) return out;
   std::vector<std::size_t> order(n);
@@ -123,7 +123,8 @@ std::vector<std::size_t> chooseCandidates(const std::vector<float>& p,
                                           const PointChoice& choice) {
   std::vector<std::size_t> order(candidates.size());
   std::iota(order.begin(), order.end(), 0);
-  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return p[a] > p[b]; });
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t a, std::size_t b) { return p[a] > p[b]; });
   std::vector<std::size_t> taken;
   for (std::size_t i : order) {
     const float threshold = candidates[i].kept ? choice.keepThreshold : choice.addThreshold;

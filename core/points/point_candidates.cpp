@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "core/common/error.h"
 #include "core/grid/voxel_grid.h"
 #include "core/geometry/connected_parts.h"
 
@@ -116,6 +117,13 @@ const std::vector<std::string>& candidateFeatureNames() {
       "part_round_flat", "kept_count",         "nearest_kept",   "crowding",
       "best_kept",      "facing_up",           "surface_depth",  "part_by_material"};
   return names;
+}
+
+std::size_t candidateFeatureIndex(const std::string& name) {
+  const auto& names = candidateFeatureNames();
+  const auto at = std::find(names.begin(), names.end(), name);
+  if (at == names.end()) throw InvalidArgument("no candidate feature named " + name);
+  return static_cast<std::size_t>(at - names.begin());
 }
 
 std::vector<PointCandidate> pointCandidates(const PredictedField& field,

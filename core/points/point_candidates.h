@@ -28,6 +28,8 @@ struct PointCandidate {
 // The names of PointCandidate::features, in order (the scorer file records them, so a model
 // trained on other features is refused).
 const std::vector<std::string>& candidateFeatureNames();
+// The index of a feature in candidateFeatureNames(); throws InvalidArgument for an unknown name.
+std::size_t candidateFeatureIndex(const std::string& name);
 
 // Where a candidate meets the surface: the surface normal there (z up) and how far the candidate
 // lies from it (normalized units; a part's centroid lies inside it).

@@ -1,12 +1,15 @@
 #include "ui/app/curation_replay.h"
 
 #include <chrono>
+#include <map>
 #include <memory>
+#include <set>
 #include <thread>
 
 #include "core/curation/curation_plan.h"
 #include "ui/app/session.h"
 #include "ui/document/point_commands.h"
+#include "ui/document/point_copies.h"
 #include "ui/document/units_commands.h"
 
 namespace sagrid::ui {
@@ -43,6 +46,48 @@ void takeStep(Session& session, const CurationStep& step, bool repredict) {
       break;
   }
 }
+// Where the plan adds two or more points of one type and a row of equal parts holds them, the
+// curator places one (or selects a right one already there) and presses R (copies): taken when
+// the plan that follows, with that action and the place, needs fewer actions than before. Returns
+// whether it was taken; the steps then start again from the labels it left.
+bool takeCopies(Session& session, const ObjectLabels& truth, std::vector<CurationStep>& steps) {
+  AnnotationDocument& doc = *session.document();
+  std::map<std::string, std::vector<std::size_t>> addsByType;
+  std::set<int> touched;  // points the plan drags or deletes: not right as they are
+  for (std::size_t s = 0; s < steps.size(); ++s) {
+    if (steps[s].action == CurationAction::Add) addsByType[steps[s].point.type].push_back(s);
+    if (steps[s].action == CurationAction::Drag || steps[s].action == CurationAction::Delete)
+      touched.insert(steps[s].index);
+  }
+  for (const auto& [type, adds] : addsByType) {
+    if (adds.size() < 2) continue;
+    // The sources: a right point of the type already there, else the first point to add.
+    std::vector<std::pair<int, AffordancePoint>> sources;
+    for (int i = 0; i < static_cast<int>(doc.points().size()); ++i)
+      if (doc.points()[std::size_t(i)].type == type && !touched.count(i))
+        sources.push_back({i, doc.points()[std::size_t(i)]});
+    sources.push_back({-1, steps[adds.front()].point});
+    for (const auto& [index, source] : sources) {
+      ObjectLabels after = doc.labels();
+      if (index < 0) after.affordances.push_back(source);
+      for (const AffordancePoint& p : pointsForCopies(doc, source)) after.affordances.push_back(p);
+      const std::size_t cost = (index < 0 ? 2 : 1) + curationPlan(after, truth).size();
+      if (cost >= steps.size()) continue;
+      if (index < 0) {
+        AffordancePoint point = source;
+        session.setCurrentType(point.type);
+        session.execute(std::make_unique<AddPointCommand>(std::move(point)));
+      } else {
+        doc.select(index);
+      }
+      session.addOnCopiesOfSelected();
+      steps = curationPlan(session.document()->labels(), truth);
+      return true;
+    }
+  }
+  return false;
+}
+
 // A category switch predicts again for the new category (when the session has models): wait for
 // it and apply it, as the GUI's frame loop does.
 void awaitPrediction(Session& session) {
@@ -77,6 +122,8 @@ CurationReplaySummary replayCuration(Session& session,
       takeStep(session, steps.front(), repredict);
       awaitPrediction(session);
       steps = curationPlan(session.document()->labels(), *truth);  // from what the switch left
+    }
+    while (takeCopies(session, *truth, steps)) {
     }
     for (const CurationStep& step : steps) takeStep(session, step, repredict);
     session.document()->select(-1);

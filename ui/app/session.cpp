@@ -13,6 +13,7 @@
 #include "ui/document/category_commands.h"
 #include "ui/document/object_loader.h"
 #include "ui/document/point_commands.h"
+#include "ui/document/point_copies.h"
 #include "ui/document/up_axis_commands.h"
 
 namespace {
@@ -277,6 +278,23 @@ void Session::skip() {
 void Session::deleteSelected() {
   if (m_document && m_document->selected() >= 0)
     execute(std::make_unique<DeletePointCommand>(m_document->selected()));
+}
+
+int Session::addOnCopiesOfSelected() {
+  if (!m_document || m_document->selected() < 0) return 0;
+  const AffordancePoint& source = m_document->points()[std::size_t(m_document->selected())];
+  std::vector<std::unique_ptr<Command>> adds;
+  for (AffordancePoint& point : pointsForCopies(*m_document, source))
+    adds.push_back(std::make_unique<AddPointCommand>(std::move(point)));
+  const int added = static_cast<int>(adds.size());
+  if (added == 0) {
+    reportError("no copy of the selected point's part without a " + source.type + " point");
+    return 0;
+  }
+  const std::string what =
+      "Copy " + source.type + " to " + std::to_string(added) + " alike parts";
+  execute(std::make_unique<CommandGroup>(what, std::move(adds), CurationAction::Copies));
+  return added;
 }
 
 void Session::chooseNewPointType() {

@@ -66,6 +66,9 @@ class Session {
   void undo();
   void redo();
   void deleteSelected();
+  // Adds the selected point's type on every copy of the part it lies on where no point of that
+  // type is yet (pointsOnCopies): one undoable step, logged as "copies". Returns how many.
+  int addOnCopiesOfSelected();
   void changeSelectedType(const std::string& type);
   // Switches the open object's category (one undoable step) and, when its points are all still
   // predicted, drops them and predicts again for the new category.

@@ -20,6 +20,7 @@ const std::vector<ShortcutHelp>& shortcutHelp() {
       {"A", "accept the selected point; none selected: accept all and go to the next object"},
       {"C", "take the suggested category of a rejected object, with its points"},
       {"Del / Backspace", "delete the selected point"},
+      {"R", "copies: the selected point's type on every copy of its part (a row of knobs, burners)"},
       {"1-9", "current type (and the selected point's type)"},
       {"N / P", "next / previous object"},
       {"S", "skip object"},
@@ -90,6 +91,9 @@ bool handleShortcuts(const std::vector<InputEvent>& events, Session& session,
         break;
       case GLFW_KEY_C:
         session.confirmSuggestedCategory();
+        break;
+      case GLFW_KEY_R:
+        session.addOnCopiesOfSelected();
         break;
       case GLFW_KEY_F:
         session.frameSelection();

@@ -4,8 +4,9 @@
 
 namespace sagrid::ui {
 
-CommandGroup::CommandGroup(std::string description, std::vector<std::unique_ptr<Command>> children)
-    : m_description(std::move(description)), m_children(std::move(children)) {}
+CommandGroup::CommandGroup(std::string description, std::vector<std::unique_ptr<Command>> children,
+                           std::optional<CurationAction> action)
+    : m_description(std::move(description)), m_children(std::move(children)), m_action(action) {}
 
 void CommandGroup::apply(ObjectLabels& labels) {
   for (auto& child : m_children) child->apply(labels);

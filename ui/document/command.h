@@ -5,6 +5,7 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -29,12 +30,15 @@ class Command {
 // Applies children in order and reverts them in reverse: one undo step for many changes.
 class CommandGroup final : public Command {
  public:
-  CommandGroup(std::string description, std::vector<std::unique_ptr<Command>> children);
+  // `action`: what the log calls the group when it is not its first child's action.
+  CommandGroup(std::string description, std::vector<std::unique_ptr<Command>> children,
+               std::optional<CurationAction> action = std::nullopt);
   void apply(ObjectLabels& labels) override;
   void revert(ObjectLabels& labels) override;
   std::string description() const override { return m_description; }
   // A group is the action of its children (accepting every point is many accepts, one step).
   CurationAction curationAction() const override {
+    if (m_action) return *m_action;
     return m_children.empty() ? CurationAction::Edit : m_children.front()->curationAction();
   }
   bool empty() const { return m_children.empty(); }
@@ -42,6 +46,7 @@ class CommandGroup final : public Command {
  private:
   std::string m_description;
   std::vector<std::unique_ptr<Command>> m_children;
+  std::optional<CurationAction> m_action;
 };
 
 // Undo/redo history. Executing a new command drops the redo branch.

@@ -85,6 +85,10 @@ void drawPointsPanel(Session& session) {
     ImGui::SameLine();
     if (ImGui::Button("Delete (Del)")) session.deleteSelected();
     ImGui::SameLine();
+    if (ImGui::Button("Copies (R)")) session.addOnCopiesOfSelected();
+    if (ImGui::IsItemHovered())
+      ImGui::SetTooltip("Add this point's type on every copy of its part (a row of knobs, burners)");
+    ImGui::SameLine();
     if (ImGui::BeginCombo("##settype", "Type", ImGuiComboFlags_NoPreview)) {
       for (const auto& type : knownTypes()) {
         if (ImGui::Selectable(type.c_str(), type == points[std::size_t(selected)].type))

@@ -1,0 +1,24 @@
+#include "core/geometry/points_on_copies.h"
+
+#include "core/geometry/connected_parts.h"
+#include "core/geometry/material_parts.h"
+#include "core/mesh/mesh.h"
+
+namespace sagrid {
+
+std::vector<Eigen::Vector3f> pointsOnCopies(const Mesh& mesh, const Eigen::Vector3f& point) {
+  const std::vector<ConnectedPart> parts = connectedAndMaterialParts(mesh);
+  Eigen::AlignedBox3f all;
+  for (const auto& part : parts) all.extend(part.box);
+  if (all.isEmpty() || !point.allFinite()) return {};
+  const float largest = all.sizes().maxCoeff();
+  const auto on = partAt(point, parts, kCopyTouchShare * largest, kSmallPartDiagonal * largest);
+  if (!on) return {};
+  const PartCopies copies(parts, kCopyTolerance);
+  std::vector<Eigen::Vector3f> out;
+  for (std::size_t c : copies.of(*on))
+    out.push_back(point + parts[c].centroid - parts[*on].centroid);
+  return out;
+}
+
+}  // namespace sagrid
