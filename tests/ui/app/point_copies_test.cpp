@@ -15,7 +15,7 @@ namespace {
 namespace fs = std::filesystem;
 
 // The analytic stove (four knobs in a row on its front) opened with its burners and one knob.
-ObjectLabels stoveWithOneKnob(const fs::path& dir, ObjectLabels* truth = nullptr) {
+ObjectLabels stoveWithOneKnob(const fs::path& dir, ObjectLabels* truth) {
   const fs::path labels = test::writeAnalyticStove(dir);
   ObjectLabels all = readLabels(labels);
   if (truth) *truth = all;
@@ -30,15 +30,20 @@ std::size_t countOf(const std::vector<AffordancePoint>& points, const std::strin
       points.begin(), points.end(), [&](const AffordancePoint& p) { return p.type == type; }));
 }
 
-TEST(PointCopies, OneKnobsPointGoesOntoEveryOtherKnobInOneUndoableStep) {
-  const fs::path dir = test::freshTempDir();
-  ObjectLabels truth;
+// The stove opened in a session that logs to dir/curation.jsonl; `truth` its right labels.
+void openStove(Session& session, const fs::path& dir, ObjectLabels& truth) {
   stoveWithOneKnob(dir / "queue" / "stove", &truth);
-  Session session;
   session.autoPredict = false;
   session.logErrors = false;
   session.setCurationLog(dir / "curation.jsonl");
   session.openPaths({dir / "queue"});
+}
+
+TEST(PointCopies, OneKnobsPointGoesOntoEveryOtherKnobInOneUndoableStep) {
+  const fs::path dir = test::freshTempDir();
+  ObjectLabels truth;
+  Session session;
+  openStove(session, dir, truth);
   ASSERT_TRUE(session.document());
   EXPECT_EQ(session.addOnCopiesOfSelected(), 0);  // nothing selected
   session.document()->select(4);                  // the knob
@@ -74,11 +79,8 @@ TEST(PointCopies, OneKnobsPointGoesOntoEveryOtherKnobInOneUndoableStep) {
 TEST(PointCopies, TheReplayedCuratorTakesCopiesWhereTheyReplaceAdds) {
   const fs::path dir = test::freshTempDir();
   ObjectLabels truth;
-  stoveWithOneKnob(dir / "queue" / "stove", &truth);
   Session session;
-  session.autoPredict = false;
-  session.setCurationLog(dir / "curation.jsonl");
-  session.openPaths({dir / "queue"});
+  openStove(session, dir, truth);
   const auto summary = replayCuration(
       session, [&](const std::string&) -> std::optional<ObjectLabels> { return truth; });
   EXPECT_EQ(summary.objects, 1u);
