@@ -17,7 +17,7 @@
 #include <string>
 
 #include "core/common/error.h"
-#include "core/geometry/connected_parts.h"
+#include "core/geometry/material_parts.h"
 #include "core/io/npz.h"
 #include "core/labels/labels.h"
 #include "core/mesh/mesh_import.h"
@@ -45,7 +45,7 @@ void load(const std::string& folder, const fs::path& input, const fs::path& work
     return work / name;
   };
   if (folder.rfind("mesh_", 0) == 0) {
-    (void)connectedParts(importMesh(copyAs("input." + folder.substr(5))));
+    (void)connectedAndMaterialParts(importMesh(copyAs("input." + folder.substr(5))));
   } else if (folder == "labels") {
     (void)metersPerUnit(readLabels(copyAs("labels.json")));
   } else if (folder == "model_card") {
