@@ -30,13 +30,17 @@ struct Grower {
   double leafValue(double G, double H) const { return -G / (H + options.lambda); }
   double gain(double G, double H) const { return G * G / (H + options.lambda); }
 
-  int grow(const Orders& sorted, int depth) {
+  int direction(std::size_t f) const {
+    return f < options.monotone.size() ? options.monotone[f] : 0;
+  }
+
+  int grow(const Orders& sorted, int depth, double lower = -INFINITY, double upper = INFINITY) {
     const std::vector<std::size_t>& idx = sorted.front();
     double G = 0, H = 0;
     for (std::size_t i : idx) G += g[i], H += h[i];
     const int self = static_cast<int>(nodes.size());
     nodes.push_back({});
-    nodes[self].value = static_cast<float>(leafValue(G, H));
+    nodes[self].value = static_cast<float>(std::clamp(leafValue(G, H), lower, upper));
     if (depth >= options.depth || idx.size() < 2) return self;
     const double parent = gain(G, H);
     double bestGain = 1e-9;
@@ -52,6 +56,11 @@ struct Grower {
         if (here == next) continue;
         const double HR = H - HL;
         if (HL < options.minLeafHessian || HR < options.minLeafHessian) continue;
+        if (const int dir = direction(f); dir != 0) {
+          const double wl = std::clamp(leafValue(GL, HL), lower, upper);
+          const double wr = std::clamp(leafValue(G - GL, HR), lower, upper);
+          if (dir * (wr - wl) < 0) continue;  // against the feature's direction
+        }
         const double split = gain(GL, HL) + gain(G - GL, HR) - parent;
         if (split > bestGain) {
           bestGain = split;
@@ -63,11 +72,22 @@ struct Grower {
     if (bestFeature < 0) return self;
     for (std::size_t i : idx) goesLeft[i] = rows[i][bestFeature] < bestThreshold;
     Orders left(sorted.size()), right(sorted.size());
+    double GL = 0, HL = 0;
     for (std::size_t f = 0; f < sorted.size(); ++f)
       for (std::size_t i : sorted[f]) (goesLeft[i] ? left[f] : right[f]).push_back(i);
-    const int l = grow(left, depth + 1);
+    for (std::size_t i : left.front()) GL += g[i], HL += h[i];
+    // A monotone split bounds its subtrees at the middle of its two sides' values.
+    double leftLower = lower, leftUpper = upper, rightLower = lower, rightUpper = upper;
+    if (const int dir = direction(static_cast<std::size_t>(bestFeature)); dir != 0) {
+      const double wl = std::clamp(leafValue(GL, HL), lower, upper);
+      const double wr = std::clamp(leafValue(G - GL, H - HL), lower, upper);
+      const double middle = 0.5 * (wl + wr);
+      (dir > 0 ? leftUpper : leftLower) = middle;
+      (dir > 0 ? rightLower : rightUpper) = middle;
+    }
+    const int l = grow(left, depth + 1, leftLower, leftUpper);
     left.clear();
-    const int r = grow(right, depth + 1);
+    const int r = grow(right, depth + 1, rightLower, rightUpper);
     nodes[self].feature = bestFeature;
     nodes[self].threshold = bestThreshold;
     nodes[self].left = l;
@@ -85,7 +105,8 @@ double compact(float value) {
 
 float treeValue(const std::vector<TreeNode>& tree, const std::vector<float>& x) {
   int n = 0;
-  while (tree[n].feature >= 0) n = x[tree[n].feature] < tree[n].threshold ? tree[n].left : tree[n].right;
+  while (tree[n].feature >= 0)
+    n = x[tree[n].feature] < tree[n].threshold ? tree[n].left : tree[n].right;
   return tree[n].value;
 }
 
@@ -93,8 +114,8 @@ float treeValue(const std::vector<TreeNode>& tree, const std::vector<float>& x) 
 
 float BoostedTrees::score(const std::vector<float>& x) const {
   if (x.size() != features)
-    throw InvalidArgument("boosted trees: " + std::to_string(x.size()) + " features, the trees read " +
-                          std::to_string(features));
+    throw InvalidArgument("boosted trees: " + std::to_string(x.size()) +
+                          " features, the trees read " + std::to_string(features));
   float s = base;
   for (const auto& tree : trees) s += treeValue(tree, x);
   return s;

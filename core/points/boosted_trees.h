@@ -29,6 +29,10 @@ struct BoostingOptions {
   float learningRate = 0.1f;
   float lambda = 1.0f;        // ridge on leaf values
   float minLeafHessian = 1.0f;  // a leaf holds at least this much weighted p(1-p)
+  // Per feature (empty: none): +1 the score never falls as it grows, -1 never rises, 0 free
+  // (XGBoost's monotone constraints: a split against the direction is not made, and each
+  // subtree's leaves stay within the bounds its splits set).
+  std::vector<int> monotone;
 };
 
 // Throws InvalidArgument for no rows, rows of different lengths or a class without weight.

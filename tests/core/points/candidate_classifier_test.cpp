@@ -61,6 +61,26 @@ TEST(CandidateClassifier, BoostedTreesLearnWhatNoLineSeparates) {
   for (const auto& x : test.x) EXPECT_NEAR(again.score(x), trees.score(x), 1e-5f);
 }
 
+// Positive at both ends of the first feature: free trees score the far end high again; with the
+// first feature monotone (never rising as it grows) no pair of inputs that differ only in it
+// scores higher at the larger, whatever the second feature.
+TEST(CandidateClassifier, BoostedTreesKeepAMonotoneFeaturesDirection) {
+  const Rows r = rowsBy([](float a, float b) { return a < 0.3f || (a > 0.8f && b > 0.5f); }, 600, 5);
+  const auto rises = [](const BoostedTrees& trees) {
+    int count = 0;
+    for (float b = 0.05f; b < 1.0f; b += 0.1f)
+      for (float a = 0.0f; a < 0.99f; a += 0.02f)
+        count += trees.score({a + 0.02f, b}) > trees.score({a, b}) + 1e-6f;
+    return count;
+  };
+  EXPECT_GT(rises(fitBoostedTrees(r.x, r.y, r.w)), 0);
+  BoostingOptions monotone;
+  monotone.monotone = {-1, 0};
+  const BoostedTrees trees = fitBoostedTrees(r.x, r.y, r.w, monotone);
+  EXPECT_EQ(rises(trees), 0);
+  EXPECT_GT(trees.score({0.1f, 0.5f}), trees.score({0.5f, 0.5f}));  // it still learns the low end
+}
+
 TEST(CandidateClassifier, BadTreesAndBadRowsAreRefusedWithTheirReason) {
   nlohmann::json j = {{"base", 0}, {"features", 2}, {"trees", {{{0, 0.5, 0, 2, 0}, {-1, 0, -1, -1, 1}, {-1, 0, -1, -1, 2}}}}};
   EXPECT_THROW(boostedTreesFromJson(j), InvalidArgument);  // a node pointing at itself: a loop
