@@ -514,10 +514,17 @@ struct PartShape {
   std::optional<Eigen::Vector3f> held;  // awayFromHolder
 };
 
+// The distinct vertices of a part's triangles.
+std::vector<Eigen::Vector3f> partVertices(const Mesh& mesh, const std::vector<int>& triangles) {
+  std::vector<Eigen::Vector3f> vertices;
+  for (int v : distinctVertices(mesh, triangles))
+    vertices.push_back(mesh.positions[static_cast<std::size_t>(v)]);
+  return vertices;
+}
+
 PartShape partShapeOf(const Surface& s, const std::vector<int>& triangles) {
   PartShape part;
-  for (int v : distinctVertices(s.mesh, triangles))
-    part.vertices.push_back(s.mesh.positions[static_cast<std::size_t>(v)]);
+  part.vertices = partVertices(s.mesh, triangles);
   part.shape = principalOf(part.vertices);
   part.inPart.assign(s.valid.size(), false);
   for (int t : triangles) part.inPart[static_cast<std::size_t>(t)] = true;
@@ -749,10 +756,8 @@ Eigen::Vector3f partCentre(const Mesh& mesh, const std::vector<int>& triangles) 
   std::vector<int> valid;
   for (int t : triangles)
     if (t >= 0 && static_cast<std::size_t>(t) < mesh.triangles.size()) valid.push_back(t);
-  Eigen::Vector3f sum = Eigen::Vector3f::Zero();
-  const std::vector<int> vertices = distinctVertices(mesh, valid);
-  for (int v : vertices) sum += mesh.positions[static_cast<std::size_t>(v)];
-  return vertices.empty() ? sum : Eigen::Vector3f(sum / static_cast<float>(vertices.size()));
+  const std::vector<Eigen::Vector3f> vertices = partVertices(mesh, valid);
+  return vertices.empty() ? Eigen::Vector3f::Zero() : principalOf(vertices).mean;
 }
 
 ControlParts findControlParts(const Mesh& mesh, const std::vector<Eigen::Vector3f>& points) {

@@ -14,7 +14,7 @@ Eigen::Affine3f controlMotion(const ControlPart& part, float angle, float press)
 }
 
 float pressAtTurn(float angle, double metersPerUnit) {
-  return static_cast<float>(angle * 0.005 / 0.6 / std::max(metersPerUnit, 1e-9));
+  return angle == 0.0f ? 0.0f : static_cast<float>(kButtonTravel / std::max(metersPerUnit, 1e-9));
 }
 
 Mesh turnControls(const Mesh& mesh, const std::vector<ControlPart>& parts, float angle,

@@ -17,8 +17,12 @@ namespace sagrid {
 // pressed `press` along its axis.
 Eigen::Affine3f controlMotion(const ControlPart& part, float angle, float press);
 
-// How far a button is pressed (mesh units) while hinges turn by `angle`: 5 mm per 0.6 rad, in a
-// mesh of `metersPerUnit`.
+// How far a button travels when pressed home, metres: the exports' press joint's range
+// (core/export/control_geometry.h) and the turned preview's press.
+inline constexpr double kButtonTravel = 0.004;
+
+// How far a button is shown pressed (mesh units of a mesh of `metersPerUnit`) while hinges turn by
+// `angle`: home (kButtonTravel) at any angle but 0.
 float pressAtTurn(float angle, double metersPerUnit);
 
 // `parts` in the mesh's frame and units; discs (no triangles) move nothing.

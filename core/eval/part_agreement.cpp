@@ -9,6 +9,8 @@
 #include <sstream>
 
 #include "core/common/error.h"
+#include "core/common/atomic_file.h"
+#include "core/common/sha256.h"
 #include "core/controls/control_part.h"
 #include "core/controls/control_record.h"
 #include "core/controls/control_symmetry.h"
@@ -58,7 +60,7 @@ PartAgreementReport measurePartAgreement(const std::vector<DatasetEntry>& entrie
       std::filesystem::path recordsFile = entry.labels;
       if (truth) {
         const auto marked = truth->objects.find(entry.id);
-        const std::string sha = meshFileSha256(entry.mesh);
+        const std::string sha = sha256Hex(readFileBytes(entry.mesh));
         if (sha != marked->second.meshSha256)
           throw FileError(entry.mesh, "changed since its parts were marked (sha256 " + sha.substr(0, 12) +
                                           ", marked on " + marked->second.meshSha256.substr(0, 12) + ")");

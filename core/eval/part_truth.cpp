@@ -11,10 +11,6 @@
 
 namespace sagrid {
 
-std::string meshFileSha256(const std::filesystem::path& mesh) {
-  return sha256Hex(readFileBytes(mesh));
-}
-
 PartTruth partTruthOf(const std::vector<DatasetEntry>& entries) {
   PartTruth truth;
   for (const DatasetEntry& entry : entries) {
@@ -31,7 +27,7 @@ PartTruth partTruthOf(const std::vector<DatasetEntry>& entries) {
     if (object.controls.empty()) continue;
     if (truth.objects.count(entry.id))
       throw FileError(entry.labels, "object folder " + entry.id + " is among the data twice");
-    object.meshSha256 = meshFileSha256(entry.mesh);
+    object.meshSha256 = sha256Hex(readFileBytes(entry.mesh));
     truth.objects[entry.id] = std::move(object);
   }
   return truth;

@@ -46,7 +46,4 @@ PartTruth readPartTruth(const std::filesystem::path& file);
 // two of them is a FileError naming the second.
 PartTruth readPartTruths(const std::vector<std::filesystem::path>& files);
 
-// The sha256 of the mesh file at `mesh` (its bytes, as labels' object.sha256).
-std::string meshFileSha256(const std::filesystem::path& mesh);
-
 }  // namespace sagrid

@@ -49,31 +49,47 @@ std::optional<std::vector<std::size_t>> scorerChoice(const PointScorer& scorer,
                           s->choice);
 }
 
+// The points of a choice, the count's where there is none.
+std::vector<Eigen::Vector3f> pointsOf(const CandidateSet& set,
+                                      const std::optional<std::vector<std::size_t>>& chosen) {
+  return chosen ? surfaceOf(set, *chosen) : set.keptSurface;
+}
+
 // The scorer's points where it decides, else the count's.
 Chooser scorerChooser(const PointScorer& scorer) {
-  return [&scorer](const CandidateSet& set) {
-    const auto chosen = scorerChoice(scorer, set);
-    return chosen ? surfaceOf(set, *chosen) : set.keptSurface;
-  };
+  return [&scorer](const CandidateSet& set) { return pointsOf(set, scorerChoice(scorer, set)); };
+}
+
+// What `scorer` chooses for each of `sets` (scorerChoice), found once: a fold's reports read it
+// three times, and a choice runs both looks' trees over every candidate.
+using Choices = std::map<const CandidateSet*, std::optional<std::vector<std::size_t>>>;
+Choices choicesOf(const std::vector<const CandidateSet*>& sets, const PointScorer& scorer) {
+  Choices choices;
+  for (const CandidateSet* set : sets) choices[set] = scorerChoice(scorer, *set);
+  return choices;
+}
+
+std::vector<Eigen::Vector3f> chosenPoints(const Choices& choices, const CandidateSet& set) {
+  return pointsOf(set, choices.at(&set));
 }
 
 PointEdits editsOf(const CandidateSet& set, const std::vector<Eigen::Vector3f>& chosen) {
   return pointEdits(matchPoints(chosen, set.truth, set.metersPerUnit));
 }
 
-// Per object of `sets`: the largest predicted distance among the points `scorer` chooses (the
+// Per object of `sets`: the largest predicted distance among the points chosen (the
 // count's points where it has no decision), as annotate's object confidence reads it, whether the
 // object needs no edit, and its source.
-void addObjectOutcomes(const std::vector<const CandidateSet*>& sets, const PointScorer& scorer,
+void addObjectOutcomes(const std::vector<const CandidateSet*>& sets, const Choices& choices,
                        ScorerCrossValidation& cv) {
   std::map<std::string, std::pair<double, PointEdits>> byObject;
   for (const CandidateSet* set : sets) {
-    const auto chosen = scorerChoice(scorer, *set);
+    const auto& chosen = choices.at(set);
     auto& [worst, edits] = byObject[set->source + "/" + set->object];
     for (std::size_t i = 0; i < set->candidates.size(); ++i)
       if (chosen ? std::count(chosen->begin(), chosen->end(), i) > 0 : set->candidates[i].kept)
         worst = std::max(worst, static_cast<double>(set->candidates[i].distance));
-    edits += editsOf(*set, chosen ? surfaceOf(*set, *chosen) : set->keptSurface);
+    edits += editsOf(*set, chosenPoints(choices, *set));
   }
   for (const auto& [object, outcome] : byObject) {
     cv.leastSure.push_back(outcome.first);
@@ -82,14 +98,13 @@ void addObjectOutcomes(const std::vector<const CandidateSet*>& sets, const Point
   }
 }
 
-// Per (object, model) of `sets`: what `scorer` (the count's points where it has no decision)
-// chose, its edits and errors.
-void addHeldOutDecisions(const std::vector<const CandidateSet*>& sets, const PointScorer& scorer,
+// Per (object, model) of `sets`: what was chosen (the count's points where the scorer has no
+// decision), its edits and errors.
+void addHeldOutDecisions(const std::vector<const CandidateSet*>& sets, const Choices& choices,
                          ScorerCrossValidation& cv) {
-  const Chooser choose = scorerChooser(scorer);
   for (const CandidateSet* set : sets) {
     HeldOutDecision d{set->source, set->object, set->model, set->truth.size()};
-    const auto chosen = choose(*set);
+    const auto chosen = chosenPoints(choices, *set);
     d.chosenPoints = chosen.size();
     d.edits = editsOf(*set, chosen);
     if (!set->truth.empty()) {
@@ -99,6 +114,12 @@ void addHeldOutDecisions(const std::vector<const CandidateSet*>& sets, const Poi
         d.nearestCandidateError =
             std::fmin(d.nearestCandidateError, nearestDistance(c, set->truth, set->metersPerUnit));
     }
+    for (const auto& t : set->truth)
+      d.truthReached +=
+          std::any_of(set->candidateSurface.begin(), set->candidateSurface.end(),
+                      [&](const Eigen::Vector3f& c) {
+                        return (c - t).norm() * set->metersPerUnit <= kMatchRadiusMeters;
+                      });
     cv.decisions.push_back(std::move(d));
   }
 }
@@ -339,7 +360,6 @@ ScorerCrossValidation crossValidatePointScorer(const std::vector<CandidateSet>& 
   std::optional<PointScorer> generatedOnly;
   if (!generated.empty()) generatedOnly = trainPointScorer(generated, options);
   const Chooser count = [](const CandidateSet& set) { return set.keptSurface; };
-  std::size_t truthPoints = 0, reached = 0;
   unsigned foldIndex = 0;
   for (const auto& [source, held] : realBySource) {
     std::vector<const CandidateSet*> training = generated;
@@ -356,9 +376,11 @@ ScorerCrossValidation crossValidatePointScorer(const std::vector<CandidateSet>& 
     fold.count = figuresOf(held, count);
     fold.generatedOnly =
         generatedOnly ? figuresOf(held, scorerChooser(*generatedOnly)) : fold.count;
-    fold.withCurated = figuresOf(held, scorerChooser(withCurated));
-    addObjectOutcomes(held, withCurated, cv);
-    addHeldOutDecisions(held, withCurated, cv);
+    const Choices choices = choicesOf(held, withCurated);
+    fold.withCurated =
+        figuresOf(held, [&](const CandidateSet& set) { return chosenPoints(choices, set); });
+    addObjectOutcomes(held, choices, cv);
+    addHeldOutDecisions(held, choices, cv);
     fold.objects = fold.count.effort.objects;
     // The learning curve: k objects of the other sources, drawn once per fold.
     std::vector<std::string> order;
@@ -379,15 +401,6 @@ ScorerCrossValidation crossValidatePointScorer(const std::vector<CandidateSet>& 
       if (!fits) fold.curve.push_back(fold.count);  // nothing to fit on: the count stands
     }
     cv.folds.push_back(fold);
-    for (const CandidateSet* set : held)
-      for (const auto& t : set->truth) {
-        ++truthPoints;
-        for (const auto& s : set->candidateSurface)
-          if ((s - t).norm() * set->metersPerUnit <= kMatchRadiusMeters) {
-            ++reached;
-            break;
-          }
-      }
   }
   // Totals over every held-out object: each fold's decision on its own objects.
   using Arm = std::function<const PointChoiceFigures&(const ScorerSourceFold&)>;
@@ -425,6 +438,9 @@ ScorerCrossValidation crossValidatePointScorer(const std::vector<CandidateSet>& 
           .push_back(total(
               [k](const auto& f) -> const auto& { return f.curve[k]; }, unseen));
   }
+  std::size_t truthPoints = 0, reached = 0;
+  for (const HeldOutDecision& d : cv.decisions)
+    truthPoints += d.truthPoints, reached += d.truthReached;
   cv.candidateRecall = truthPoints ? static_cast<double>(reached) / truthPoints : NAN;
   if (!cv.leastSure.empty()) {
     cv.confidence = fitConfidence(cv.leastSure, cv.oneKey);
@@ -612,6 +628,38 @@ std::string scorerCrossValidationMarkdown(const ScorerCrossValidation& cv) {
     }
   }
   if (!cv.decisions.empty()) {
+    // Per model: how far the candidates reach and how the first point fares against the best
+    // candidate (the ranking's share of the error).
+    struct ModelTotals {
+      std::size_t decisions = 0, truth = 0, reached = 0, farFirst = 0, farFirstReachable = 0;
+      double first = 0, nearest = 0;
+    };
+    std::map<std::string, ModelTotals> byModel;
+    for (const auto& d : cv.decisions) {
+      ModelTotals& m = byModel[d.model];
+      m.truth += d.truthPoints, m.reached += d.truthReached;
+      if (!std::isfinite(d.bestPointError)) continue;
+      ++m.decisions;
+      m.first += d.bestPointError, m.nearest += d.nearestCandidateError;
+      const bool far = d.bestPointError > kMatchRadiusMeters;
+      m.farFirst += far;
+      m.farFirstReachable += far && d.nearestCandidateError <= kMatchRadiusMeters;
+    }
+    md << "\n## Per model\n\nOver the held-out decisions with true points: true points a candidate "
+       << "reaches within 5 cm; the first chosen point's and the nearest candidate's error, mean "
+          "cm; "
+       << "decisions whose first point is more than 5 cm off, and of them those with a candidate "
+       << "within 5 cm (the ranking failed, not the candidates).\n\n"
+       << "| model | decisions | true points reached | first point | nearest candidate | first "
+          "point "
+          "off | of them reachable |\n|---|---|---|---|---|---|---|\n";
+    for (const auto& [model, m] : byModel) {
+      const double n = static_cast<double>(std::max<std::size_t>(m.decisions, 1));
+      md << "| " << model << " | " << m.decisions << " | " << m.reached << " of " << m.truth
+         << " | " << reportCell(100 * m.first / n, "%.1f") << " | "
+         << reportCell(100 * m.nearest / n, "%.1f") << " | " << m.farFirst << " | "
+         << m.farFirstReachable << " |\n";
+    }
     std::vector<const HeldOutDecision*> costly;
     for (const auto& d : cv.decisions) costly.push_back(&d);
     std::stable_sort(costly.begin(), costly.end(), [](const auto* a, const auto* b) {
@@ -674,6 +722,7 @@ nlohmann::json toJson(const ScorerCrossValidation& cv) {
                          {"object", d.object},
                          {"model", d.model},
                          {"truth_points", d.truthPoints},
+                         {"truth_reached", d.truthReached},
                          {"chosen_points", d.chosenPoints},
                          {"drags", d.edits.drags},
                          {"additions", d.edits.additions},

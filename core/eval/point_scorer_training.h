@@ -89,6 +89,7 @@ struct ConfidenceCheck {
 struct HeldOutDecision {
   std::string source, object, model;
   std::size_t truthPoints = 0, chosenPoints = 0;
+  std::size_t truthReached = 0;  // true points with a candidate within the match radius
   PointEdits edits;
   double bestPointError = NAN;         // metres: the first chosen point to the nearest truth
   double nearestCandidateError = NAN;  // metres: the best any one candidate could have done

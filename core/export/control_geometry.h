@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "core/controls/control_part.h"
+#include "core/controls/control_turn.h"  // kButtonTravel
 #include "core/labels/labels.h"
 #include "core/mesh/mesh.h"
 #include "core/physics/mass_properties.h"
@@ -34,11 +35,10 @@ struct ControlGeometry {
 
 // How far a control moves from where the mesh shows it: a stove knob turns up to 270 degrees one
 // way (RoboCasa lights its burner from 0.35 rad), a tap handle up to 90 (RoboCasa runs water from
-// 0.4 rad), a button travels 4 mm; damping as RoboCasa's fixtures. A tap's handle is turned or
+// 0.4 rad), a button travels kButtonTravel (control_turn.h); damping as RoboCasa's fixtures. A tap's handle is turned or
 // lifted, never pressed: a flat one turns about its axis.
 inline constexpr double kKnobRange = 4.71238898;
 inline constexpr double kHandleRange = 1.57079633;
-inline constexpr double kButtonTravel = 0.004;
 inline constexpr double kControlDamping = 1.0;
 
 struct ControlMotionRange {

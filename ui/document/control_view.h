@@ -28,7 +28,7 @@ struct ShownControl {
 std::optional<ShownControl> shownControl(const AnnotationDocument& document, int index);
 
 // The document's mesh with the shown control of every toggle button moved as the exports move it
-// (core/controls/control_turn.h): knobs and levers turned by `angle` radians, buttons pressed
+// (core/controls/control_turn.h): knobs and levers turned by `angle` radians, buttons pressed home
 // (pressAtTurn). The mesh itself where no control moves.
 Mesh meshWithControlsTurned(const AnnotationDocument& document, float angle);
 

@@ -9,7 +9,6 @@
 #include "core/mesh/mesh_import.h"
 #include "ui/app/session.h"
 #include "ui/document/mass_commands.h"
-#include "ui/document/units_commands.h"
 #include "ui/panels/panels.h"
 
 namespace sagrid::ui {
@@ -60,7 +59,7 @@ void drawUnits(Session& session, const AnnotationDocument& doc) {
     for (const NamedUnit& unit : namedUnits()) {
       // Picking the guessed unit confirms it: the guess flag goes, the value stays.
       if (ImGui::Selectable(unit.name, shown == unit.name && !guess))
-        session.execute(std::make_unique<SetUnitsCommand>(unit.metersPerUnit));
+        session.setUnits(unit.metersPerUnit);
     }
     ImGui::EndCombo();
   }

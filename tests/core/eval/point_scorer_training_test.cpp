@@ -229,7 +229,15 @@ TEST(PointScorerTraining, EachFoldIsDecidedByAScorerFittedWithoutItsSource) {
     EXPECT_EQ(d.truthPoints, 3u) << d.object;
     EXPECT_GE(d.bestPointError, d.nearestCandidateError) << d.object;
     EXPECT_EQ(d.nearestCandidateError, 0.0) << d.object;  // the knobs are candidates
+    EXPECT_EQ(d.truthReached, 3u) << d.object;
   }
+  EXPECT_DOUBLE_EQ(cv.candidateRecall, 1.0);
+  EXPECT_NE(scorerCrossValidationMarkdown(cv).find("| stove.togglebutton | " +
+                                                   std::to_string(real) + " | " +
+                                                   std::to_string(3 * real) + " of " +
+                                                   std::to_string(3 * real) + " |"),
+            std::string::npos)
+      << scorerCrossValidationMarkdown(cv);
   EXPECT_EQ(listedEdits, foldEdits);
   EXPECT_EQ(toJson(cv)["held_out_decisions"].size(), real);
   EXPECT_NE(scorerCrossValidationMarkdown(cv).find("## The costliest decisions"), std::string::npos);

@@ -274,7 +274,7 @@ TEST(MujocoControls, APressedKeyLightsExactlyItsBurner) {
       const test::DataPtr data = test::makeData(*model);
       data->qpos[model->jnt_qposadr[joint]] = 1.0;
       for (int i = 0; i < static_cast<int>(0.5 / model->opt.timestep); ++i) mj_step(model.get(), data.get());
-      EXPECT_GT(data->qpos[model->jnt_qposadr[press]], 0.5 * exportdetail::kButtonTravel) << loc;
+      EXPECT_GT(data->qpos[model->jnt_qposadr[press]], 0.5 * kButtonTravel) << loc;
       EXPECT_TRUE(burnerLit(data->qpos[model->jnt_qposadr[joint]])) << loc;
     }
     expectEveryJointTurnsItsOwnPart(*model);
