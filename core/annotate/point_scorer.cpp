@@ -55,7 +55,8 @@ nlohmann::json toJson(const PointScorer& scorer) {
     nlohmann::json& model = models[name];
     model = {{"keep_threshold", m.choice.keepThreshold},
              {"add_threshold", m.choice.addThreshold},
-             {"nms_radius", m.choice.nmsRadius}};
+             {"nms_radius", m.choice.nmsRadius},
+             {"copy_threshold", m.choice.copyThreshold}};
     if (!m.networkWeights.empty()) model["network_weights"] = m.networkWeights;
     // Trees or the logistic regression, whichever decides.
     if (m.classifier.trees) {
@@ -88,12 +89,14 @@ std::optional<PointScorer> readPointScorer(const std::filesystem::path& modelsDi
     if (j.value("schema", "") != kSchema)
       throw FileError(file, "not a SAGrid point scorer (schema)");
     if (j.at("features").get<std::vector<std::string>>() != candidateFeatureNames())
-      throw FileError(file, "reads other candidate features than this build computes: train it "
-                            "again (sagrid scorer train)");
+      throw FileError(file,
+                      "reads other candidate features than this build computes: train it "
+                      "again (sagrid scorer train)");
     if (j.contains("context_features") &&
         j.at("context_features").get<std::vector<std::string>>() != contextFeatureNames())
-      throw FileError(file, "reads other context features than this build computes: train it "
-                            "again (sagrid scorer train)");
+      throw FileError(file,
+                      "reads other context features than this build computes: train it "
+                      "again (sagrid scorer train)");
     scorer.trainedOn = j.value("trained_on", "");
     try {
       scorer.passesOff = recordedPassesOff(j.value("passes_off", std::vector<std::string>{}));
@@ -106,9 +109,11 @@ std::optional<PointScorer> readPointScorer(const std::filesystem::path& modelsDi
       s.choice.keepThreshold = m.at("keep_threshold").get<float>();
       s.choice.addThreshold = m.at("add_threshold").get<float>();
       s.choice.nmsRadius = m.at("nms_radius").get<float>();
+      s.choice.copyThreshold = m.value("copy_threshold", PointChoice{}.copyThreshold);
       s.networkWeights = m.value("network_weights", "");
       if (!std::isfinite(s.choice.keepThreshold) || !std::isfinite(s.choice.addThreshold) ||
-          !std::isfinite(s.choice.nmsRadius) || s.choice.nmsRadius < 0)
+          !std::isfinite(s.choice.nmsRadius) || !std::isfinite(s.choice.copyThreshold) ||
+          s.choice.nmsRadius < 0)
         throw FileError(file, "model " + name + ": numbers must be finite (radius >= 0)");
       if (m.contains("trees")) {
         try {
@@ -130,8 +135,7 @@ std::optional<PointScorer> readPointScorer(const std::filesystem::path& modelsDi
           if (s.classifier.contextTrees->features != d + kContextFeatureCount)
             throw FileError(file, "model " + name + ": its context trees read " +
                                       std::to_string(s.classifier.contextTrees->features) +
-                                      " features, not " +
-                                      std::to_string(d + kContextFeatureCount));
+                                      " features, not " + std::to_string(d + kContextFeatureCount));
         }
         scorer.byModel[name] = s;
         continue;

@@ -4,8 +4,8 @@
 #include <optional>
 #include <sstream>
 
-#include "core/common/atomic_file.h"
 #include "core/annotate/pass_options.h"
+#include "core/common/atomic_file.h"
 #include "core/common/error.h"
 #include "core/eval/metrics.h"
 
@@ -22,7 +22,8 @@ nlohmann::json pointsJson(const std::vector<Eigen::Vector3f>& points) {
 
 std::vector<Eigen::Vector3f> pointsFrom(const nlohmann::json& j) {
   std::vector<Eigen::Vector3f> out;
-  for (const auto& p : j) out.emplace_back(p.at(0).get<float>(), p.at(1).get<float>(), p.at(2).get<float>());
+  for (const auto& p : j)
+    out.emplace_back(p.at(0).get<float>(), p.at(1).get<float>(), p.at(2).get<float>());
   return out;
 }
 }  // namespace
@@ -50,9 +51,11 @@ nlohmann::json toJson(const std::vector<CandidateSet>& sets) {
   nlohmann::json all = nlohmann::json::array();
   for (const auto& s : sets) {
     nlohmann::json features = nlohmann::json::array(), positions = nlohmann::json::array(),
-                   distances = nlohmann::json::array(), kept = nlohmann::json::array();
+                   distances = nlohmann::json::array(), kept = nlohmann::json::array(),
+                   copies = nlohmann::json::array();
     for (const auto& c : s.candidates) {
       features.push_back(c.features);
+      copies.push_back(c.copies);
       kept.push_back(c.kept);
       positions.push_back({c.position.x(), c.position.y(), c.position.z()});
       distances.push_back(c.distance);
@@ -66,6 +69,7 @@ nlohmann::json toJson(const std::vector<CandidateSet>& sets) {
                    {"positions", positions},
                    {"distances", distances},
                    {"kept_candidates", kept},
+                   {"copies", copies},
                    {"surface", pointsJson(s.candidateSurface)},
                    {"kept", pointsJson(s.keptSurface)},
                    {"truth", pointsJson(s.truth)},
@@ -86,8 +90,9 @@ std::vector<CandidateSet> readCandidateSets(const std::filesystem::path& file) {
     if (j.value("schema", "") != kSchema)
       throw FileError(file, "not a SAGrid point candidate file (schema)");
     if (j.at("features").get<std::vector<std::string>>() != candidateFeatureNames())
-      throw FileError(file, "holds other candidate features than this build computes: write it "
-                            "again (sagrid scorer candidates)");
+      throw FileError(file,
+                      "holds other candidate features than this build computes: write it "
+                      "again (sagrid scorer candidates)");
     for (const auto& s : j.at("sets")) {
       CandidateSet set;
       set.object = s.at("object").get<std::string>();
@@ -99,17 +104,28 @@ std::vector<CandidateSet> readCandidateSets(const std::filesystem::path& file) {
       const auto& features = s.at("features");
       const auto& distances = s.at("distances");
       const auto& kept = s.at("kept_candidates");
+      if (!s.contains("copies"))
+        throw FileError(file,
+                        "object " + set.object +
+                            ": its candidates carry no copies (an "
+                            "older build wrote it): write it again (sagrid scorer candidates)");
+      const auto& copies = s.at("copies");
       set.candidateSurface = pointsFrom(s.at("surface"));
       if (features.size() != positions.size() || distances.size() != positions.size() ||
-          kept.size() != positions.size() ||
+          kept.size() != positions.size() || copies.size() != positions.size() ||
           set.candidateSurface.size() != positions.size())
         throw FileError(file, "object " + set.object + ": candidate lists of different lengths");
       for (std::size_t c = 0; c < positions.size(); ++c) {
         PointCandidate candidate{positions[c], distances.at(c).get<float>(), kept.at(c).get<bool>(),
-                                 features.at(c).get<std::vector<float>>()};
+                                 features.at(c).get<std::vector<float>>(),
+                                 copies.at(c).get<std::vector<std::size_t>>()};
         if (candidate.features.size() != candidateFeatureNames().size())
           throw FileError(file, "object " + set.object + ": a candidate with " +
                                     std::to_string(candidate.features.size()) + " features");
+        for (std::size_t q : candidate.copies)
+          if (q >= positions.size() || q == c)
+            throw FileError(file, "object " + set.object +
+                                      ": a candidate's copy is no other candidate of the object");
         set.candidates.push_back(std::move(candidate));
       }
       set.keptSurface = pointsFrom(s.at("kept"));

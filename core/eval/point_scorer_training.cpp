@@ -271,20 +271,21 @@ ModelPointScorer fitModel(const std::vector<const CandidateSet*>& sets,
   for (const CandidateSet* set : sets)
     probabilities.push_back(candidateProbabilities(best.classifier, set->candidates));
   double bestCost = INFINITY;
-  for (float radius : options.nmsRadii)
-    for (float keep : options.keepThresholds)
-      for (float add : options.addThresholds) {
-        const PointChoice choice{keep, add, radius};
-        double cost = 0;
-        for (std::size_t i = 0; i < sets.size(); ++i)
-          if (!sets[i]->candidates.empty())
-            cost += objectWeight(*sets[i], options) *
-                    editsOf(*sets[i], chosenSurface(*sets[i], probabilities[i], choice)).total();
-        if (cost < bestCost) {
-          bestCost = cost;
-          best.choice = choice;
+  for (float copy : options.copyThresholds)
+    for (float radius : options.nmsRadii)
+      for (float keep : options.keepThresholds)
+        for (float add : options.addThresholds) {
+          const PointChoice choice{keep, add, radius, copy};
+          double cost = 0;
+          for (std::size_t i = 0; i < sets.size(); ++i)
+            if (!sets[i]->candidates.empty())
+              cost += objectWeight(*sets[i], options) *
+                      editsOf(*sets[i], chosenSurface(*sets[i], probabilities[i], choice)).total();
+          if (cost < bestCost) {
+            bestCost = cost;
+            best.choice = choice;
+          }
         }
-      }
   return best;
 }
 

@@ -43,6 +43,8 @@ struct ScorerTrainingOptions {
   // leave one source out, resources/models/README.md).
   std::vector<float> addThresholds = {1.01f, 0.9f, 0.8f, 0.7f, 0.6f, 0.5f, 0.4f, 0.3f, 0.2f, 0.1f};
   std::vector<float> nmsRadii = {0.03f, 0.05f, 0.08f, 0.12f};
+  // PointChoice::copyThreshold; the first (none) on ties.
+  std::vector<float> copyThresholds = {1.01f, 0.2f, 0.05f, 0.0f};
 };
 
 // One decision per model with both points and non-points among `sets`' candidates (other models

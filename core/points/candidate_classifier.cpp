@@ -126,17 +126,30 @@ std::vector<std::size_t> chooseCandidates(const std::vector<float>& p,
   std::stable_sort(order.begin(), order.end(),
                    [&](std::size_t a, std::size_t b) { return p[a] > p[b]; });
   std::vector<std::size_t> taken;
-  for (std::size_t i : order) {
-    const float threshold = candidates[i].kept ? choice.keepThreshold : choice.addThreshold;
-    if (p[i] < threshold) continue;
-    // Two kept points stand as the passes spaced them.
-    const bool suppressed = std::any_of(taken.begin(), taken.end(), [&](std::size_t t) {
+  std::vector<char> isTaken(candidates.size(), 0);
+  // Two kept points stand as the passes spaced them.
+  const auto suppressed = [&](std::size_t i) {
+    return std::any_of(taken.begin(), taken.end(), [&](std::size_t t) {
       return !(candidates[t].kept && candidates[i].kept) &&
              (candidates[t].position - candidates[i].position).norm() < choice.nmsRadius;
     });
-    if (!suppressed) taken.push_back(i);
+  };
+  // A taken candidate brings its places on its part's copies at or above the copy threshold.
+  const auto take = [&](std::size_t i) {
+    taken.push_back(i);
+    isTaken[i] = 1;
+    for (std::size_t j : candidates[i].copies)
+      if (j < candidates.size() && !isTaken[j] && p[j] >= choice.copyThreshold && !suppressed(j)) {
+        taken.push_back(j);
+        isTaken[j] = 1;
+      }
+  };
+  for (std::size_t i : order) {
+    const float threshold = candidates[i].kept ? choice.keepThreshold : choice.addThreshold;
+    if (p[i] < threshold || isTaken[i]) continue;
+    if (!suppressed(i)) take(i);
   }
-  if (taken.empty() && !order.empty()) taken.push_back(order.front());
+  if (taken.empty() && !order.empty()) take(order.front());
   return taken;
 }
 

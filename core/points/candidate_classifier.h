@@ -53,12 +53,15 @@ struct PointChoice {
   float keepThreshold = 0.5f;  // a kept point (PointCandidate::kept) at or above this stays
   float addThreshold = 0.5f;   // another candidate at or above this becomes a point
   float nmsRadius = 0.08f;     // normalized units: no point within this of a better one
+  // A taken candidate brings those of its places on its part's copies (PointCandidate::copies)
+  // at or above this (above 1: none), each unless a taken point lies within the radius.
+  float copyThreshold = 1.01f;
 };
 
 // Candidates by `probability` (one per candidate), best first; each at or above its threshold is
-// taken unless a taken one lies within the radius (two kept points do not suppress each other);
-// when none is, the best alone. Indices into
-// `candidates`, best first; empty for no candidates.
+// taken unless a taken one lies within the radius (two kept points do not suppress each other),
+// followed by its copies' places at or above the copy threshold; when none is, the best alone
+// (with its copies). Indices into `candidates`, in the order taken; empty for no candidates.
 std::vector<std::size_t> chooseCandidates(const std::vector<float>& probability,
                                           const std::vector<PointCandidate>& candidates,
                                           const PointChoice& choice);

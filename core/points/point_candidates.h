@@ -7,11 +7,10 @@
 // company it keeps. Normalized frame (z up); no torch, no surface.
 #pragma once
 
+#include <Eigen/Core>
 #include <functional>
 #include <string>
 #include <vector>
-
-#include <Eigen/Core>
 
 #include "core/geometry/connected_parts.h"
 #include "core/points/point_extraction.h"
@@ -21,8 +20,12 @@ namespace sagrid {
 struct PointCandidate {
   Eigen::Vector3f position = Eigen::Vector3f::Zero();  // normalized frame
   float distance = 0;                                  // the field there (normalized units)
-  bool kept = false;  // one of the points the automatic count and its passes kept
-  std::vector<float> features;                         // candidateFeatureNames() order
+  bool kept = false;            // one of the points the automatic count and its passes kept
+  std::vector<float> features;  // candidateFeatureNames() order
+  // The candidates at this one's place on every copy of the part it lies on (a knob's row, a
+  // burner's caps), indices into the same list: a choice may take them with it
+  // (PointChoice::copyThreshold).
+  std::vector<std::size_t> copies;
 };
 
 // The names of PointCandidate::features, in order (the scorer file records them, so a model
@@ -40,9 +43,15 @@ struct SurfaceContact {
 using SurfaceContactAt = std::function<SurfaceContact(const Eigen::Vector3f&)>;
 
 // Candidates of one model on one object: `kept` the points its automatic count and passes kept
-// (best first), `parts` from normalizedParts, `contact` the surface near a normalized point. Candidates closer than a voxel to an earlier one are one
-// candidate (kept points first, then minima best first, then parts), with the sources of both.
-// At most `maxMinima` field minima. Empty for an empty field.
+// (best first), `parts` from normalizedParts, `contact` the surface near a normalized point.
+// Candidates closer than a voxel to an earlier one are one candidate (kept points first, then
+// minima best first, then parts), with the sources of both. A candidate on a part with copies
+// (PartCopies, at most kMaxCandidateCopies) is linked to the candidates at its place on each copy
+// (its offset from the part's centroid kept; PointCandidate::copies). At most `maxMinima` field
+// minima. Empty for an empty field. A part with more copies than this (tiles, screws, a grate's
+// bars) gives its candidates none.
+constexpr std::size_t kMaxCandidateCopies = 15;
+
 std::vector<PointCandidate> pointCandidates(const PredictedField& field,
                                             const std::vector<ExtractedPoint>& kept,
                                             const std::vector<ConnectedPart>& parts,

@@ -401,21 +401,34 @@ TEST(PointScorerTraining, TheDecisionRecordsTheNetworkItsCandidatesCameFromAndRe
 TEST(PointScorerTraining, CandidateFilesReadBackAndBadOnesAreNamed) {
   auto sets = syntheticSets();
   sets[0].networkWeights = std::string(64, 'd');
+  ASSERT_GE(sets[0].candidates.size(), 2u);
+  sets[0].candidates[0].copies = {1};
+  sets[0].candidates[1].copies = {0};
   const auto file = std::filesystem::temp_directory_path() / "sagrid-candidates-test.json";
   writeCandidateSets(file, sets);
   const auto back = readCandidateSets(file);
   ASSERT_EQ(back.size(), sets.size());
   EXPECT_EQ(toJson(back).dump(), toJson(sets).dump());
   EXPECT_EQ(back[0].networkWeights, std::string(64, 'd'));
+  EXPECT_EQ(back[0].candidates[1].copies, (std::vector<std::size_t>{0}));
+  const auto refused = [&](nlohmann::json j, const std::string& why) {
+    std::ofstream(file) << j.dump();
+    try {
+      readCandidateSets(file);
+      ADD_FAILURE() << "read a file with " << why;
+    } catch (const FileError& e) {
+      EXPECT_NE(std::string(e.what()).find(file.string()), std::string::npos) << e.what();
+    }
+  };
   auto j = toJson(sets);
   j["features"][0] = "something_else";
-  std::ofstream(file) << j.dump();
-  try {
-    readCandidateSets(file);
-    FAIL() << "a file of other features was read";
-  } catch (const FileError& e) {
-    EXPECT_NE(std::string(e.what()).find(file.string()), std::string::npos);
-  }
+  refused(j, "other features");
+  j = toJson(sets);
+  j["sets"][0].erase("copies");
+  refused(j, "no copies (an older build's)");
+  j = toJson(sets);
+  j["sets"][0]["copies"][0] = {0};
+  refused(j, "a candidate its own copy");
   std::filesystem::remove(file);
 }
 

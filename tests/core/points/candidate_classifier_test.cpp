@@ -113,6 +113,31 @@ TEST(CandidateClassifier, TheChoiceKeepsAndAddsByItsTwoThresholdsAndSuppressesNe
   EXPECT_TRUE(chooseCandidates({}, {}, {}).empty());
 }
 
+TEST(CandidateClassifier, ATakenCandidateBringsItsCopiesAtOrAboveTheCopyThreshold) {
+  // A knob row: 0 is sure, 1 and 2 are its copies' places with little probability of their own,
+  // 3 is a copy too close to 0; 4 is a lone candidate as unsure as the copies.
+  std::vector<PointCandidate> c = {candidateAt(0.0f, false), candidateAt(0.2f, false),
+                                   candidateAt(0.4f, false), candidateAt(0.01f, false),
+                                   candidateAt(0.6f, false)};
+  c[0].copies = {1, 2, 3};
+  c[1].copies = {0, 2, 3};
+  c[2].copies = {0, 1, 3};
+  c[3].copies = {0, 1, 2};
+  const std::vector<float> p = {0.9f, 0.15f, 0.08f, 0.5f, 0.15f};
+  PointChoice choice{0.5f, 0.5f, 0.05f};
+  // Copies off (the default): the sure one alone (3 is suppressed beside it).
+  EXPECT_EQ(chooseCandidates(p, c, choice), (std::vector<std::size_t>{0}));
+  // From 0.1: the copy at 0.15 comes with it, not the one at 0.08 nor the lone candidate.
+  choice.copyThreshold = 0.1f;
+  EXPECT_EQ(chooseCandidates(p, c, choice), (std::vector<std::size_t>{0, 1}));
+  // From 0: every copy's place not beside a taken point.
+  choice.copyThreshold = 0.0f;
+  EXPECT_EQ(chooseCandidates(p, c, choice), (std::vector<std::size_t>{0, 1, 2}));
+  // The best alone when nothing reaches its threshold still brings its copies.
+  choice.addThreshold = 0.95f;
+  EXPECT_EQ(chooseCandidates(p, c, choice), (std::vector<std::size_t>{0, 1, 2}));
+}
+
 // Three candidates: the object's most probable, a copy of its part at its height that the first
 // look missed, and a likelier candidate of another shape lower down.
 TEST(CandidateContext, ACopyOfTheBestCandidatesPartLooksLikeItsCompany) {

@@ -67,6 +67,47 @@ TEST(PointCandidates, KeptPointsFieldMinimaAndSmallPartsAreCandidates) {
                 1.5f / test::kPlateResolution);
 }
 
+ConnectedPart knobAt(const Eigen::Vector3f& centre, int triangles = 24) {
+  ConnectedPart part;
+  part.triangles = triangles;
+  part.centroid = centre;
+  part.box = Eigen::AlignedBox3f(centre - Eigen::Vector3f::Constant(0.02f),
+                                 centre + Eigen::Vector3f::Constant(0.02f));
+  part.spread = Eigen::Vector3f(0.01f, 0.01f, 0.004f);
+  part.area = 0.003f;
+  return part;
+}
+
+bool linked(const std::vector<PointCandidate>& candidates, const PointCandidate* from,
+            const PointCandidate* to) {
+  const auto at = static_cast<std::size_t>(to - candidates.data());
+  return std::find(from->copies.begin(), from->copies.end(), at) != from->copies.end();
+}
+
+TEST(PointCandidates, ACandidateOnAPartIsLinkedToItsPlaceOnEachCopy) {
+  // A row of three equal knobs and an odd one; the field's minimum sits on the first knob's
+  // centroid, so every knob's centroid is its place on that knob's copies.
+  const Eigen::Vector3f k1 = onPlate(6, 20), k2 = onPlate(14, 20), k3 = onPlate(22, 20),
+                        odd = onPlate(16, 6);
+  const PredictedField field = test::plateFieldWithOffsets({k1}, {0.0f});
+  const std::vector<ConnectedPart> parts = {knobAt(k1), knobAt(k2), knobAt(k3), knobAt(odd, 40)};
+  const auto candidates = pointCandidates(field, {test::pointOnField(field, k1)}, parts, facingUp);
+  const PointCandidate* at1 = candidateNear(candidates, k1);
+  const PointCandidate* at2 = candidateNear(candidates, k2);
+  const PointCandidate* at3 = candidateNear(candidates, k3);
+  const PointCandidate* atOdd = candidateNear(candidates, odd);
+  ASSERT_TRUE(at1 && at2 && at3 && atOdd);
+  EXPECT_TRUE(linked(candidates, at1, at2) && linked(candidates, at1, at3));
+  EXPECT_TRUE(linked(candidates, at2, at1) && linked(candidates, at3, at2));
+  EXPECT_FALSE(linked(candidates, at1, atOdd));
+  EXPECT_TRUE(atOdd->copies.empty());  // a part of its own has no copies
+  for (std::size_t i = 0; i < candidates.size(); ++i)
+    for (std::size_t q : candidates[i].copies) {
+      ASSERT_LT(q, candidates.size());
+      EXPECT_NE(q, i);
+    }
+}
+
 TEST(PointCandidates, AnEmptyFieldHasNone) {
   EXPECT_TRUE(pointCandidates(PredictedField{}, {}, {}, facingUp).empty());
 }
