@@ -49,6 +49,7 @@ TEST(PointScorerFile, ReadsBackWhatWasWrittenAndNamesWhatIsWrong) {
   EXPECT_FALSE(readPointScorer(dir).has_value());  // no file: the passes' points stand
   PointScorer scorer;
   scorer.byModel["stove.togglebutton"] = oneBest();
+  scorer.byModel["stove.togglebutton"].choice.copyThreshold = 0.2f;
   // A model decided by trees: only the trees are written and read.
   const std::size_t d = candidateFeatureNames().size();
   std::vector<std::vector<float>> rows;
@@ -74,6 +75,7 @@ TEST(PointScorerFile, ReadsBackWhatWasWrittenAndNamesWhatIsWrong) {
   EXPECT_FALSE(toJson(scorer)["models"]["stove.heatsource"].contains("weights"));
   EXPECT_EQ(back->forModel("stove.heatsource")->networkWeights, std::string(64, 'a'));
   EXPECT_EQ(back->forModel("stove.togglebutton")->networkWeights, "");  // not recorded
+  EXPECT_EQ(back->forModel("stove.togglebutton")->choice.copyThreshold, 0.2f);
   ASSERT_TRUE(back->forModel("stove.heatsource")->classifier.trees.has_value());
   EXPECT_GT(back->forModel("stove.heatsource")->classifier.probability(rows[1]), 0.5f);
   EXPECT_LT(back->forModel("stove.heatsource")->classifier.probability(rows[0]), 0.5f);
@@ -105,6 +107,14 @@ TEST(PointScorerFile, ReadsBackWhatWasWrittenAndNamesWhatIsWrong) {
   j["models"]["stove.togglebutton"]["scale"][0] = 0;
   rewrite(j);
   EXPECT_NE(messageOf(dir).find("scales must be positive"), std::string::npos);
+  // A file from before copies were taken has no copy threshold: its choice takes none.
+  j = toJson(scorer);
+  j["models"]["stove.togglebutton"].erase("copy_threshold");
+  rewrite(j);
+  EXPECT_GT(readPointScorer(dir)->forModel("stove.togglebutton")->choice.copyThreshold, 1.0f);
+  j["models"]["stove.togglebutton"]["copy_threshold"] = "half";
+  rewrite(j);
+  EXPECT_NE(messageOf(dir).find(kPointScorerFile), std::string::npos);
   j = toJson(scorer);
   j["passes_off"] = {"mirror_pairs", "no_such_pass"};
   rewrite(j);
