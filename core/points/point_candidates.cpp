@@ -108,8 +108,8 @@ void addSeed(std::vector<Seed>& seeds, const Seed& seed, float merge) {
 // leave one source out (0.589 -> 0.597 edits per hand point without taking copies).
 std::vector<std::vector<std::size_t>> copyLinks(const std::vector<Seed>& seeds,
                                                 const std::vector<ConnectedPart>& parts,
-                                                float touch, float merge) {
-  const PartCopies copies(parts, kCopyTolerance);
+                                                const PartCopies& copies, float touch,
+                                                float merge) {
   std::vector<std::vector<std::size_t>> links(seeds.size());
   for (std::size_t s = 0; s < seeds.size(); ++s) {
     const auto on = partAt(seeds[s].position, parts, touch, kCandidatePartDiagonal);
@@ -190,7 +190,8 @@ std::vector<PointCandidate> pointCandidates(const PredictedField& field,
       const Eigen::Vector3f top(part.box.center().x(), part.box.center().y(), part.box.max().z());
       addSeed(seeds, {top, false, false, true, 0}, merge);
     }
-  const auto links = copyLinks(seeds, parts, PartContact{}.touchVoxels * voxel, merge);
+  const PartCopies copies(parts, kCopyTolerance);
+  const auto links = copyLinks(seeds, parts, copies, PartContact{}.touchVoxels * voxel, merge);
 
   Eigen::AlignedBox3f box;
   float best = std::numeric_limits<float>::infinity();
@@ -200,7 +201,6 @@ std::vector<PointCandidate> pointCandidates(const PredictedField& field,
   }
   const Eigen::Vector3f centre = box.center(), half = box.sizes() / 2;
   const float objectDiagonal = std::max(box.diagonal().norm(), voxel);
-  const PartCopies copies(parts, kCopyTolerance);
 
   std::vector<PointCandidate> out(seeds.size());
   for (std::size_t s = 0; s < seeds.size(); ++s) {
