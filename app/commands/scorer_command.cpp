@@ -81,8 +81,9 @@ void addTrainingOptions(CLI::App& cmd, std::vector<std::string>& candidates,
   cmd.add_flag_callback("--no-context", [&o] { o.context = false; },
                         "Trees without the second look in the company of the object's other "
                         "candidates (repeated parts, rows)");
-  cmd.add_flag_callback("--no-copies", [&o] { o.copyThresholds = {sagrid::PointChoice{}.copyThreshold}; },
-                        "A chosen point never brings its places on its part's copies");
+  cmd.add_flag_callback(
+      "--no-copies", [&o] { o.copyThresholds = {sagrid::PointChoice{}.copyThreshold}; },
+      "A chosen point never brings its places on its part's copies");
   cmd.add_option("--rounds", o.boosting.rounds, "Boosting rounds (default 100)");
   cmd.add_option("--depth", o.boosting.depth, "Tree depth (default 3)");
 }
@@ -139,6 +140,7 @@ void setupScorer(CLI::App& root) {
     sagrid::ScorerTrainingOptions training;
     sagrid::ScorerCurveOptions curve;
     std::string compareConfidence;
+    std::vector<std::string> withoutFeatures;
   };
   auto l = std::make_shared<LearnOptions>();
   auto* cv = cmd->add_subcommand(
@@ -157,6 +159,9 @@ void setupScorer(CLI::App& root) {
   cv->add_option("--compare-confidence", l->compareConfidence,
                  "A models folder whose confidence.json is checked beside the one fitted on the "
                  "--tuned-on sources, on the other sources' objects (log loss, Brier)");
+  cv->add_option("--without-feature", l->withoutFeatures,
+                 "A candidate feature the decision does without (repeatable; set to 0 on every "
+                 "candidate): what it adds, leave one source out");
   addTrainingOptions(*cv, l->candidates, l->training);
   cv->callback([l] {
     if (!l->compareConfidence.empty()) {
@@ -168,8 +173,9 @@ void setupScorer(CLI::App& root) {
       l->curve.otherConfidenceName = (fs::path(l->compareConfidence) / "confidence.json").string() +
                                      " (fitted on " + other.fittedOn + ")";
     }
-    const auto result =
-        sagrid::crossValidatePointScorer(readAll(l->candidates), l->training, l->curve);
+    auto sets = readAll(l->candidates);
+    sagrid::withoutFeatures(sets, l->withoutFeatures);
+    const auto result = sagrid::crossValidatePointScorer(sets, l->training, l->curve);
     const fs::path out = l->out.empty() ? fs::path("scorer-cv") : fs::path(l->out);
     fs::create_directories(out);
     const std::string md = sagrid::scorerCrossValidationMarkdown(result);

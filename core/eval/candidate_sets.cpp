@@ -47,6 +47,14 @@ std::vector<bool> candidateLabels(const CandidateSet& set, double radiusMeters) 
   return out;
 }
 
+void withoutFeatures(std::vector<CandidateSet>& sets, const std::vector<std::string>& names) {
+  std::vector<std::size_t> columns;
+  for (const auto& name : names) columns.push_back(candidateFeatureIndex(name));
+  for (auto& set : sets)
+    for (auto& candidate : set.candidates)
+      for (std::size_t f : columns) candidate.features.at(f) = 0;
+}
+
 nlohmann::json toJson(const std::vector<CandidateSet>& sets) {
   nlohmann::json all = nlohmann::json::array();
   for (const auto& s : sets) {

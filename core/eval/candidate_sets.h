@@ -34,6 +34,11 @@ struct CandidateSet {
 // `radiusMeters` of it (the radius within which a point needs no drag, kMatchRadiusMeters).
 std::vector<bool> candidateLabels(const CandidateSet& set, double radiusMeters);
 
+// The sets with the named features set to 0 on every candidate: what the decision does without
+// them (an ablation; a constant feature is never split on). Throws InvalidArgument naming an
+// unknown feature.
+void withoutFeatures(std::vector<CandidateSet>& sets, const std::vector<std::string>& names);
+
 nlohmann::json toJson(const std::vector<CandidateSet>& sets);
 // Throws FileError naming `file` when it is not a candidate file of this build's features.
 std::vector<CandidateSet> readCandidateSets(const std::filesystem::path& file);

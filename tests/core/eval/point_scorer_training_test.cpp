@@ -398,6 +398,29 @@ TEST(PointScorerTraining, TheDecisionRecordsTheNetworkItsCandidatesCameFromAndRe
   }
 }
 
+TEST(PointScorerTraining, AFeatureLeftOutIsZeroOnEveryCandidateAndAnUnknownOneIsNamed) {
+  auto sets = syntheticSets();
+  const std::size_t distance = candidateFeatureIndex("distance"),
+                    height = candidateFeatureIndex("height");
+  bool someNonZero = false;
+  for (const auto& s : sets)
+    for (const auto& c : s.candidates) someNonZero |= c.features[distance] != 0;
+  ASSERT_TRUE(someNonZero);
+  const auto before = sets;
+  withoutFeatures(sets, {"distance"});
+  for (std::size_t i = 0; i < sets.size(); ++i)
+    for (std::size_t c = 0; c < sets[i].candidates.size(); ++c) {
+      EXPECT_EQ(sets[i].candidates[c].features[distance], 0.0f);
+      EXPECT_EQ(sets[i].candidates[c].features[height], before[i].candidates[c].features[height]);
+    }
+  try {
+    withoutFeatures(sets, {"no_such_feature"});
+    FAIL() << "an unknown feature was left out";
+  } catch (const InvalidArgument& e) {
+    EXPECT_NE(std::string(e.what()).find("no_such_feature"), std::string::npos) << e.what();
+  }
+}
+
 TEST(PointScorerTraining, CandidateFilesReadBackAndBadOnesAreNamed) {
   auto sets = syntheticSets();
   sets[0].networkWeights = std::string(64, 'd');
