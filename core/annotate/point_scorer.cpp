@@ -89,14 +89,12 @@ std::optional<PointScorer> readPointScorer(const std::filesystem::path& modelsDi
     if (j.value("schema", "") != kSchema)
       throw FileError(file, "not a SAGrid point scorer (schema)");
     if (j.at("features").get<std::vector<std::string>>() != candidateFeatureNames())
-      throw FileError(file,
-                      "reads other candidate features than this build computes: train it "
-                      "again (sagrid scorer train)");
+      throw FileError(file, "reads other candidate features than this build computes: train it "
+                            "again (sagrid scorer train)");
     if (j.contains("context_features") &&
         j.at("context_features").get<std::vector<std::string>>() != contextFeatureNames())
-      throw FileError(file,
-                      "reads other context features than this build computes: train it "
-                      "again (sagrid scorer train)");
+      throw FileError(file, "reads other context features than this build computes: train it "
+                            "again (sagrid scorer train)");
     scorer.trainedOn = j.value("trained_on", "");
     try {
       scorer.passesOff = recordedPassesOff(j.value("passes_off", std::vector<std::string>{}));
@@ -135,7 +133,8 @@ std::optional<PointScorer> readPointScorer(const std::filesystem::path& modelsDi
           if (s.classifier.contextTrees->features != d + kContextFeatureCount)
             throw FileError(file, "model " + name + ": its context trees read " +
                                       std::to_string(s.classifier.contextTrees->features) +
-                                      " features, not " + std::to_string(d + kContextFeatureCount));
+                                      " features, not " +
+                                      std::to_string(d + kContextFeatureCount));
         }
         scorer.byModel[name] = s;
         continue;

@@ -7,10 +7,11 @@
 // company it keeps. Normalized frame (z up); no torch, no surface.
 #pragma once
 
-#include <Eigen/Core>
 #include <functional>
 #include <string>
 #include <vector>
+
+#include <Eigen/Core>
 
 #include "core/geometry/connected_parts.h"
 #include "core/points/point_extraction.h"
@@ -42,16 +43,16 @@ struct SurfaceContact {
 };
 using SurfaceContactAt = std::function<SurfaceContact(const Eigen::Vector3f&)>;
 
+// A part with more copies than this (tiles, screws, a grate's bars) links its candidates to none.
+constexpr std::size_t kMaxCandidateCopies = 15;
+
 // Candidates of one model on one object: `kept` the points its automatic count and passes kept
 // (best first), `parts` from normalizedParts, `contact` the surface near a normalized point.
 // Candidates closer than a voxel to an earlier one are one candidate (kept points first, then
 // minima best first, then parts), with the sources of both. A candidate on a part with copies
 // (PartCopies, at most kMaxCandidateCopies) is linked to the candidates at its place on each copy
 // (its offset from the part's centroid kept; PointCandidate::copies). At most `maxMinima` field
-// minima. Empty for an empty field. A part with more copies than this (tiles, screws, a grate's
-// bars) gives its candidates none.
-constexpr std::size_t kMaxCandidateCopies = 15;
-
+// minima. Empty for an empty field.
 std::vector<PointCandidate> pointCandidates(const PredictedField& field,
                                             const std::vector<ExtractedPoint>& kept,
                                             const std::vector<ConnectedPart>& parts,
