@@ -153,6 +153,10 @@ void setupScorer(CLI::App& root) {
                  "Learning curve: fit with k curated objects of the other sources too, e.g. "
                  "--ks 0 5 10 20");
   cv->add_option("--seed", l->curve.seed, "Seed of the learning curve's draws (default 1)");
+  cv->add_option("--draws", l->curve.draws,
+                 "Learning curve: draws of the k objects per fold, the figures pooled over them "
+                 "(default 1)")
+      ->check(CLI::Range(1u, 100u));
   cv->add_option("--tuned-on", l->curve.tunedOn,
                  "A source a pass or rule was made on (repeatable): the report also gives the "
                  "figures without these sources");

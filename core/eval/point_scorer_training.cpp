@@ -22,6 +22,10 @@ using Chooser = std::function<std::vector<Eigen::Vector3f>(const CandidateSet&)>
 // The held-out decisions scorer_cv.md lists (most edits first); the JSON has every one.
 constexpr std::size_t kCostliestDecisions = 12;
 
+// Draw d of a fold's learning curve is seeded seed + fold + d * this (no two folds' draws share a
+// seed).
+constexpr unsigned kDrawSeedStride = 7919;
+
 float objectWeight(const CandidateSet& set, const ScorerTrainingOptions& options) {
   return set.generated ? 1.0f : options.realWeight;
 }
@@ -160,6 +164,28 @@ PointChoiceFigures figuresOf(const std::vector<const CandidateSet*>& sets, const
   f.effort = effort.result();
   f.singleError = f.singleErrors ? errorSum / static_cast<double>(f.singleErrors) : NAN;
   return f;
+}
+
+// Figures pooled over several arms on objects (folds' objects, or draws on the same objects):
+// edits and errors summed, per-object figures averaged by object count.
+PointChoiceFigures pooled(const std::vector<const PointChoiceFigures*>& parts) {
+  PointChoiceFigures t;
+  double errorSum = 0;
+  for (const PointChoiceFigures* f : parts) {
+    t.edits += f->edits;
+    if (f->singleErrors) errorSum += f->singleError * static_cast<double>(f->singleErrors);
+    t.singleErrors += f->singleErrors;
+    t.effort.objects += f->effort.objects;
+    t.effort.editsPerObject += f->effort.editsPerObject * f->effort.objects;
+    t.effort.handPointsPerObject += f->effort.handPointsPerObject * f->effort.objects;
+    t.effort.oneKeyShare += f->effort.oneKeyShare * f->effort.objects;
+  }
+  const double n = std::max<std::size_t>(t.effort.objects, 1);
+  t.effort.editsPerObject /= n;
+  t.effort.handPointsPerObject /= n;
+  t.effort.oneKeyShare /= n;
+  t.singleError = t.singleErrors ? errorSum / static_cast<double>(t.singleErrors) : NAN;
+  return t;
 }
 
 // The boosting options with the field's features monotone: a candidate never scores higher only
@@ -356,6 +382,7 @@ ScorerCrossValidation crossValidatePointScorer(const std::vector<CandidateSet>& 
   ScorerCrossValidation cv;
   cv.tunedOn = curveOptions.tunedOn;
   cv.ks = curveOptions.ks;
+  cv.draws = std::max(curveOptions.draws, 1u);
   cv.generatedObjects = generatedObjects.size();
   cv.realObjects = realObjects.size();
   std::optional<PointScorer> generatedOnly;
@@ -383,49 +410,43 @@ ScorerCrossValidation crossValidatePointScorer(const std::vector<CandidateSet>& 
     addObjectOutcomes(held, choices, cv);
     addHeldOutDecisions(held, choices, cv);
     fold.objects = fold.count.effort.objects;
-    // The learning curve: k objects of the other sources, drawn once per fold.
-    std::vector<std::string> order;
-    for (const auto& [object, objectSets] : otherObjects) order.push_back(object);
-    std::mt19937 rng(curveOptions.seed + foldIndex++);
-    std::shuffle(order.begin(), order.end(), rng);
+    // The learning curve: k objects of the other sources, drawn `draws` times per fold (the
+    // figures pooled over the draws).
+    std::vector<std::string> objects;
+    for (const auto& [object, objectSets] : otherObjects) objects.push_back(object);
+    std::vector<std::vector<std::string>> orders;
+    for (unsigned d = 0; d < std::max(curveOptions.draws, 1u); ++d) {
+      std::mt19937 rng(curveOptions.seed + foldIndex + kDrawSeedStride * d);
+      orders.push_back(objects);
+      std::shuffle(orders.back().begin(), orders.back().end(), rng);
+    }
+    ++foldIndex;
     for (std::size_t k : curveOptions.ks) {
-      std::vector<const CandidateSet*> some = generated;
-      for (std::size_t i = 0; i < std::min(k, order.size()); ++i)
-        some.insert(some.end(), otherObjects[order[i]].begin(), otherObjects[order[i]].end());
-      bool fits = false;
-      try {
-        const PointScorer scorer = trainPointScorer(some, options);
-        fold.curve.push_back(figuresOf(held, scorerChooser(scorer)));
-        fits = true;
-      } catch (const InvalidArgument&) {
+      std::vector<PointChoiceFigures> draws;
+      for (const auto& order : orders) {
+        std::vector<const CandidateSet*> some = generated;
+        for (std::size_t i = 0; i < std::min(k, order.size()); ++i)
+          some.insert(some.end(), otherObjects[order[i]].begin(), otherObjects[order[i]].end());
+        try {
+          draws.push_back(figuresOf(held, scorerChooser(trainPointScorer(some, options))));
+        } catch (const InvalidArgument&) {
+          draws.push_back(fold.count);  // nothing to fit on: the count stands
+        }
       }
-      if (!fits) fold.curve.push_back(fold.count);  // nothing to fit on: the count stands
+      std::vector<const PointChoiceFigures*> parts;
+      for (const auto& f : draws) parts.push_back(&f);
+      fold.curve.push_back(pooled(parts));
     }
     cv.folds.push_back(fold);
   }
   // Totals over every held-out object: each fold's decision on its own objects.
   using Arm = std::function<const PointChoiceFigures&(const ScorerSourceFold&)>;
   auto total = [&](const Arm& arm, bool unseenOnly) {
-    PointChoiceFigures t;
-    double errorSum = 0;
-    for (const auto& fold : cv.folds) {
-      if (unseenOnly && std::count(cv.tunedOn.begin(), cv.tunedOn.end(), fold.source)) continue;
-      const PointChoiceFigures& f = arm(fold);
-      t.edits += f.edits;
-      if (f.singleErrors) errorSum += f.singleError * static_cast<double>(f.singleErrors);
-      t.singleErrors += f.singleErrors;
-      // Objects' one-key shares and edits add up by object count.
-      t.effort.objects += f.effort.objects;
-      t.effort.editsPerObject += f.effort.editsPerObject * f.effort.objects;
-      t.effort.handPointsPerObject += f.effort.handPointsPerObject * f.effort.objects;
-      t.effort.oneKeyShare += f.effort.oneKeyShare * f.effort.objects;
-    }
-    const double n = std::max<std::size_t>(t.effort.objects, 1);
-    t.effort.editsPerObject /= n;
-    t.effort.handPointsPerObject /= n;
-    t.effort.oneKeyShare /= n;
-    t.singleError = t.singleErrors ? errorSum / static_cast<double>(t.singleErrors) : NAN;
-    return t;
+    std::vector<const PointChoiceFigures*> parts;
+    for (const auto& fold : cv.folds)
+      if (!unseenOnly || !std::count(cv.tunedOn.begin(), cv.tunedOn.end(), fold.source))
+        parts.push_back(&arm(fold));
+    return pooled(parts);
   };
   for (bool unseen : {false, true}) {
     (unseen ? cv.unseenCount : cv.count) = total(
@@ -618,8 +639,9 @@ std::string scorerCrossValidationMarkdown(const ScorerCrossValidation& cv) {
        << cells(cv.unseenWithCurated) << " |\n";
   if (!cv.ks.empty()) {
     md << "\n## Learning curve: k curated objects of the other sources in training\n\n"
-       << "Generated objects always in training; k objects drawn once per fold (k = 0: generated "
-          "only).\n\n| k | edits | one key | error |"
+       << "Generated objects always in training; k objects drawn " << cv.draws
+       << " time(s) per fold, figures pooled over the draws (k = 0: generated only).\n\n"
+       << "| k | edits | one key | error |"
        << (cv.tunedOn.empty() ? "" : " unseen sources: edits | one key | error |")
        << "\n|---|---|---|---|" << (cv.tunedOn.empty() ? "" : "---|---|---|") << "\n";
     for (std::size_t k = 0; k < cv.ks.size(); ++k) {
@@ -746,6 +768,7 @@ nlohmann::json toJson(const ScorerCrossValidation& cv) {
   return {{"real_objects", cv.realObjects},
           {"tuned_on", cv.tunedOn},
           {"learning_curve", curve},
+          {"learning_curve_draws", cv.draws},
           {"unseen",
            {{"count", figuresJson(cv.unseenCount)},
             {"generated_only", figuresJson(cv.unseenGeneratedOnly)},

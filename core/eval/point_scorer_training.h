@@ -65,13 +65,16 @@ struct ScorerSourceFold {
   std::size_t objects = 0;
   PointChoiceFigures count, generatedOnly, withCurated;
   // Per ScorerCurveOptions::ks: fitted on the generated objects and k curated objects drawn from
-  // the other sources.
+  // the other sources (pooled over ScorerCurveOptions::draws draws).
   std::vector<PointChoiceFigures> curve;
 };
 
 struct ScorerCurveOptions {
   std::vector<std::size_t> ks;  // curated objects of the other sources in training (learning curve)
   unsigned seed = 1;            // of the draws
+  // Draws of the k objects per fold; a fold's curve pools them (the same objects decided once
+  // per draw). One draw is noisy: a lucky or unlucky pick of a few objects moves the curve.
+  unsigned draws = 1;
   // Sources a pass or rule was made on: the report gives the figures without them too, and an
   // object confidence fitted on their objects alone is checked on the others.
   std::vector<std::string> tunedOn;
@@ -105,7 +108,8 @@ struct ScorerCrossValidation {
   PointChoiceFigures unseenCount, unseenGeneratedOnly, unseenWithCurated;
   std::vector<std::string> tunedOn;
   std::vector<std::size_t> ks;
-  std::vector<PointChoiceFigures> curve, unseenCurve;  // per k, over the folds
+  unsigned draws = 1;
+  std::vector<PointChoiceFigures> curve, unseenCurve;  // per k, over the folds (and draws)
   double candidateRecall = 0;  // share of ground-truth points with a candidate within 5 cm
   std::size_t generatedObjects = 0, realObjects = 0;
   // Per curated object, its points decided by the scorer fitted without its source: annotate's

@@ -200,6 +200,32 @@ TEST(PointScorerTraining, TheLearningCurveDrawsFromTheOtherSourcesAndTotalsLeave
   EXPECT_NE(scorerCrossValidationMarkdown(cv).find("sources no pass was made on"), std::string::npos);
 }
 
+TEST(PointScorerTraining, TheLearningCurvePoolsItsDrawsOnEveryFold) {
+  const auto sets = syntheticSets(0.35f);
+  ScorerCurveOptions one, three;
+  one.ks = three.ks = {0, 2, 1000};
+  three.draws = 3;
+  const ScorerCrossValidation a = crossValidatePointScorer(sets, {}, one);
+  const ScorerCrossValidation b = crossValidatePointScorer(sets, {}, three);
+  ASSERT_EQ(a.folds.size(), b.folds.size());
+  EXPECT_EQ(b.draws, 3u);
+  for (std::size_t f = 0; f < a.folds.size(); ++f) {
+    const auto& x = a.folds[f];
+    const auto& y = b.folds[f];
+    // Every object decided once per draw; none drawn or all drawn: the draws decide alike.
+    EXPECT_EQ(y.curve[1].effort.objects, 3 * x.curve[1].effort.objects) << x.source;
+    EXPECT_EQ(y.curve[0].edits.total(), 3 * x.curve[0].edits.total()) << x.source;
+    EXPECT_EQ(y.curve[2].edits.total(), 3 * x.curve[2].edits.total()) << x.source;
+    EXPECT_EQ(y.withCurated.edits.total(), x.withCurated.edits.total()) << x.source;
+  }
+  // The totals pool every fold's draws.
+  std::size_t pooledEdits = 0;
+  for (const auto& fold : b.folds) pooledEdits += fold.curve[1].edits.total();
+  EXPECT_EQ(b.curve[1].edits.total(), pooledEdits);
+  EXPECT_EQ(toJson(b)["learning_curve_draws"], 3);
+  EXPECT_NE(scorerCrossValidationMarkdown(b).find("drawn 3 time(s) per fold"), std::string::npos);
+}
+
 TEST(PointScorerTraining, EachFoldIsDecidedByAScorerFittedWithoutItsSource) {
   // Knobs and distractors overlap, so a scorer fitted with a fold's objects would decide them
   // differently from one fitted without.
