@@ -8,8 +8,8 @@
 #include <set>
 #include <sstream>
 
-#include "core/common/error.h"
 #include "core/common/atomic_file.h"
+#include "core/common/error.h"
 #include "core/common/sha256.h"
 #include "core/controls/control_part.h"
 #include "core/controls/control_record.h"

@@ -415,7 +415,7 @@ ScorerCrossValidation crossValidatePointScorer(const std::vector<CandidateSet>& 
     std::vector<std::string> objects;
     for (const auto& [object, objectSets] : otherObjects) objects.push_back(object);
     std::vector<std::vector<std::string>> orders;
-    for (unsigned d = 0; d < std::max(curveOptions.draws, 1u); ++d) {
+    for (unsigned d = 0; d < cv.draws; ++d) {
       std::mt19937 rng(curveOptions.seed + foldIndex + kDrawSeedStride * d);
       orders.push_back(objects);
       std::shuffle(orders.back().begin(), orders.back().end(), rng);

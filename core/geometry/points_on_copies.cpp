@@ -6,6 +6,14 @@
 
 namespace sagrid {
 
+std::vector<Eigen::Vector3f> placesOnCopies(const Eigen::Vector3f& point, std::size_t on,
+                                            const std::vector<ConnectedPart>& parts,
+                                            const PartCopies& copies) {
+  std::vector<Eigen::Vector3f> out;
+  for (std::size_t c : copies.of(on)) out.push_back(point + parts[c].centroid - parts[on].centroid);
+  return out;
+}
+
 std::vector<Eigen::Vector3f> pointsOnCopies(const Mesh& mesh, const Eigen::Vector3f& point) {
   const std::vector<ConnectedPart> parts = connectedAndMaterialParts(mesh);
   Eigen::AlignedBox3f all;
@@ -14,11 +22,7 @@ std::vector<Eigen::Vector3f> pointsOnCopies(const Mesh& mesh, const Eigen::Vecto
   const float largest = all.sizes().maxCoeff();
   const auto on = partAt(point, parts, kCopyTouchShare * largest, kSmallPartDiagonal * largest);
   if (!on) return {};
-  const PartCopies copies(parts, kCopyTolerance);
-  std::vector<Eigen::Vector3f> out;
-  for (std::size_t c : copies.of(*on))
-    out.push_back(point + parts[c].centroid - parts[*on].centroid);
-  return out;
+  return placesOnCopies(point, *on, parts, PartCopies(parts, kCopyTolerance));
 }
 
 }  // namespace sagrid

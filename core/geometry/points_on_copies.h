@@ -9,9 +9,18 @@
 #include <Eigen/Core>
 #include <vector>
 
+#include "core/geometry/connected_parts.h"
+
 namespace sagrid {
 
 struct Mesh;
+
+// Where `point`, lying on part `on` of `parts`, lands on each of that part's copies (`copies.of`,
+// in its order): its offset from the part's centroid kept. The one rule the curator's copies (R)
+// and the point decision's copy links (core/points/point_candidates.h) share.
+std::vector<Eigen::Vector3f> placesOnCopies(const Eigen::Vector3f& point, std::size_t on,
+                                            const std::vector<ConnectedPart>& parts,
+                                            const PartCopies& copies);
 
 // Where `point` (the mesh's frame) lands on each copy of the small part it lies on, the copies in
 // the parts' order; empty when it lies on no small part (box diagonal at most kSmallPartDiagonal

@@ -1,9 +1,10 @@
 #include "core/points/candidate_classifier.h"
 
-#include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
 #include <numeric>
+
+#include <Eigen/Dense>
 
 #include "core/common/error.h"
 

@@ -6,6 +6,7 @@
 
 #include "core/common/error.h"
 #include "core/geometry/connected_parts.h"
+#include "core/geometry/points_on_copies.h"
 #include "core/grid/voxel_grid.h"
 
 namespace sagrid {
@@ -114,22 +115,20 @@ std::vector<std::vector<std::size_t>> copyLinks(const std::vector<Seed>& seeds,
   for (std::size_t s = 0; s < seeds.size(); ++s) {
     const auto on = partAt(seeds[s].position, parts, touch, kCandidatePartDiagonal);
     if (!on) continue;
-    const auto family = copies.familyOf(*on);
-    if (family.size() < 2 || family.size() > kMaxCandidateCopies + 1) continue;
-    const Eigen::Vector3f offset = seeds[s].position - parts[*on].centroid;
+    const auto onCopies = placesOnCopies(seeds[s].position, *on, parts, copies);
+    if (onCopies.empty() || onCopies.size() > kMaxCandidateCopies) continue;
     std::vector<std::size_t> places;
-    for (std::size_t q : family) {
-      std::size_t i = s;
-      if (q != *on) {
-        const Eigen::Vector3f place = parts[q].centroid + offset;
-        float nearest = merge;
-        i = seeds.size();
-        for (std::size_t o = 0; o < seeds.size(); ++o)
-          if (const float d = (seeds[o].position - place).norm(); d < nearest) nearest = d, i = o;
-        if (i == seeds.size()) continue;
-      }
+    const auto addPlace = [&](std::size_t i) {
       if (std::find(places.begin(), places.end(), i) == places.end()) places.push_back(i);
+    };
+    for (const Eigen::Vector3f& place : onCopies) {
+      float nearest = merge;
+      std::size_t at = seeds.size();
+      for (std::size_t o = 0; o < seeds.size(); ++o)
+        if (const float d = (seeds[o].position - place).norm(); d < nearest) nearest = d, at = o;
+      if (at < seeds.size()) addPlace(at);
     }
+    addPlace(s);
     for (std::size_t i : places)
       for (std::size_t j : places)
         if (i != j && std::find(links[i].begin(), links[i].end(), j) == links[i].end())
