@@ -14,7 +14,6 @@
 
 #include "app/command_registry.h"
 #include "app/progress_bar.h"
-#include "core/annotate/burner_caps_rule.h"
 #include "core/annotate/category_cross_validation.h"
 #include "core/annotate/category_evidence.h"
 #include "core/annotate/category_training.h"
@@ -37,14 +36,15 @@ using sagrid::defaultModelsDir;  // ./resources, <bin>/../share/sagrid or the so
 // with a progress bar per folder.
 std::vector<sagrid::CategorySample> collect(const std::vector<std::string>& dirs,
                                             const sagrid::FeatureOptions& features,
-                                            const std::set<std::string>& exclude, bool topRelief) {
+                                            const std::set<std::string>& exclude,
+                                            const sagrid::CategoryInputSet& inputs) {
   std::vector<sagrid::WeightedFolder> folders;
   for (const auto& arg : dirs) folders.push_back(sagrid::parseWeightedFolder(arg));
   std::unique_ptr<sagrid::app::ProgressBar> bar;
   fs::path barDir;
   std::vector<std::size_t> skipped;
   auto samples = sagrid::collectWeightedSamples(
-      folders, features, exclude, topRelief,
+      folders, features, exclude, inputs,
       [&](const fs::path& dir, std::size_t done, std::size_t total) {
         if (!bar || barDir != dir) {
           if (bar) bar->finish();
@@ -78,19 +78,9 @@ struct Options {
   double threshold = -1, l2 = 1e-2, keep = 0.98, sureAbove = 0;
   int iterations = 20000, treeRounds = 100, treeDepth = 3;
   bool trees = false;
-  bool retrieval = false, linear = false, topRelief = false, evidence = false, burnerCaps = false;
+  bool retrieval = false, linear = false, evidence = false;
+  sagrid::CategoryInputSet inputs;
 };
-
-// `decision` after the burner-cap rule on the sample's mesh (in its labelled up axis, else `up`),
-// as annotate decides before its evidence gate.
-sagrid::CategoryDecision withSampleBurnerCaps(const sagrid::CategorySample& s,
-                                              const sagrid::CategoryDecision& decision,
-                                              std::optional<sagrid::UpAxis> up) {
-  return sagrid::withBurnerCaps(decision, [&] {
-    if (!s.up.empty()) up = sagrid::parseUpAxis(s.up);
-    return sagrid::hasBurnerCaps(sagrid::importMesh(s.mesh, sagrid::ImportOptions(up, /*detect=*/true)));
-  });
-}
 
 // The evidence of a category on a sample: its models run on the sample's mesh (in its labelled
 // up axis, else --up) as `annotate --category` would, features from --cache when given, else from
@@ -108,14 +98,13 @@ class SampleEvidence {
     if (options.features.cacheDir.empty()) options.features.cacheDir = s.featureCache;
     return sagrid::affordanceEvidence(s.mesh, category, m_models, options);
   }
-  // The classifier's decision on `s` after the burner-cap rule and the models folder's evidence
-  // gate, as annotate decides.
+  // The classifier's decision on `s` after the models folder's evidence gate, as annotate decides.
   sagrid::CategoryDecision gate(const sagrid::CategorySample& s,
                                 const sagrid::CategoryDecision& d) const {
     const auto* classifier = m_models.categoryClassifier();
     if (!classifier) return d;
     return sagrid::applyEvidenceGate(
-        withSampleBurnerCaps(s, d, m_options.features.up), classifier->evidence,
+        d, classifier->evidence,
         [&](const std::string& category) { return (*this)(s, category); });
   }
 
@@ -137,10 +126,6 @@ void addEvidenceFlags(CLI::App* cmd, Options& o) {
                 "Follow the classifier with the models folder's evidence gate: an object filed "
                 "under a category whose models find no point of it (below the gate's threshold) is "
                 "rejected, as `annotate` does (runs the models on every accepted object)");
-  cmd->add_flag("--burner-caps", o.burnerCaps,
-                "Follow the classifier with the burner-cap rule alone (a sink decision on a mesh "
-                "with burner caps becomes a stove one), as `annotate` does before its evidence "
-                "gate; --evidence includes it");
   cmd->add_option("--cache", o.cache,
                   "Feature cache folder for the models' runs (default: each dataset's "
                   ".sagrid-cache, where the descriptors are cached)");
@@ -161,14 +146,18 @@ void addTrainingFlags(CLI::App* cmd, Options& o) {
       ->check(CLI::PositiveNumber);
   cmd->add_option("--tree-depth", o.treeDepth, "With --trees: depth of each tree")
       ->check(CLI::Range(1, 8));
-  cmd->add_flag("--top-relief", o.topRelief,
+  cmd->add_flag("--top-relief", o.inputs.topRelief,
                 "Also read the relief of the object's top from its voxels (basins, burner spots, "
                 "flat lids), beside the descriptor");
+  cmd->add_flag("--part-statistics", o.inputs.partStatistics,
+                "Also read the statistics of the mesh's parts (its families of copies: burner "
+                "caps, rows of knobs, a tap's handles; their size and height), beside the "
+                "descriptor");
 }
 
 sagrid::CategoryTrainingOptions trainingOptions(const Options& o) {
   sagrid::CategoryTrainingOptions options;
-  options.topRelief = o.topRelief;
+  options.inputs = o.inputs;
   options.l2 = o.l2;
   options.iterations = o.iterations;
   options.quadratic = !o.linear;
@@ -224,7 +213,7 @@ void setupCategory(CLI::App& root) {
     if (!o->up.empty()) features.up = sagrid::parseUpAxis(o->up);
     std::set<std::string> exclude;
     if (!o->exclude.empty()) exclude = sagrid::readIdSplit(o->exclude).val;
-    const auto samples = collect(o->data, features, exclude, o->topRelief);
+    const auto samples = collect(o->data, features, exclude, o->inputs);
     const auto options = trainingOptions(*o);
     auto classifier = sagrid::CategoryClassifier::train(samples, options);
     classifier.featureBackend = features.backend;
@@ -238,7 +227,8 @@ void setupCategory(CLI::App& root) {
     if (!o->up.empty()) command += " --up " + o->up;
     command += " --out " + out.string() + " --threshold " + std::to_string(options.threshold) +
                " --l2 " + std::to_string(o->l2) + " --iterations " + std::to_string(o->iterations) +
-               (o->linear ? " --linear" : "") + (o->topRelief ? " --top-relief" : "") +
+               (o->linear ? " --linear" : "") + (o->inputs.topRelief ? " --top-relief" : "") +
+               (o->inputs.partStatistics ? " --part-statistics" : "") +
                (o->trees ? " --trees --tree-rounds " + std::to_string(o->treeRounds) +
                                " --tree-depth " + std::to_string(o->treeDepth)
                          : "");
@@ -282,7 +272,8 @@ void setupCategory(CLI::App& root) {
     if (!o->up.empty()) features.up = sagrid::parseUpAxis(o->up);
     const auto* classifier = models.categoryClassifier();
     const auto samples =
-        collect(o->data, features, exclude, classifier && !o->retrieval && classifier->topRelief());
+        collect(o->data, features, exclude,
+                classifier && !o->retrieval ? classifier->inputSet() : sagrid::CategoryInputSet{});
     if (!classifier && !o->retrieval)
       std::fprintf(stderr, "%s has no %s: evaluating retrieval\n", dir.string().c_str(),
                    sagrid::kCategoryClassifierFile);
@@ -297,8 +288,7 @@ void setupCategory(CLI::App& root) {
           if (bar) bar->update(done++);
           if (classifier && !o->retrieval) {
             const auto d = classifier->classify(s.descriptor, threshold);
-            if (o->evidence) return evidence.gate(s, d);
-            return o->burnerCaps ? withSampleBurnerCaps(s, d, features.up) : d;
+            return o->evidence ? evidence.gate(s, d) : d;
           }
           sagrid::CategoryDecision r;
           const auto ranked = models.rankCategories(s.descriptor);
@@ -337,8 +327,8 @@ void setupCategory(CLI::App& root) {
     const fs::path dir = o->models.empty() ? defaultModelsDir() : fs::path(o->models);
     auto features = featuresFor(dir);
     if (!o->up.empty()) features.up = sagrid::parseUpAxis(o->up);
-    const auto always = collect(o->data, features, {}, o->topRelief);
-    const auto validated = collect(o->validate, features, {}, o->topRelief);
+    const auto always = collect(o->data, features, {}, o->inputs);
+    const auto validated = collect(o->validate, features, {}, o->inputs);
     std::optional<sagrid::ModelSet> models;
     std::optional<SampleEvidence> evidence;
     if (o->evidence) {
@@ -353,10 +343,6 @@ void setupCategory(CLI::App& root) {
     if (evidence)
       check = [&](const sagrid::CategorySample& s, const sagrid::CategoryDecision& d) {
         return evidence->gate(s, d);
-      };
-    else if (o->burnerCaps)
-      check = [&](const sagrid::CategorySample& s, const sagrid::CategoryDecision& d) {
-        return withSampleBurnerCaps(s, d, features.up);
       };
     const auto ev = o->bySource
                         ? sagrid::crossValidateCategoriesBySource(always, validated, trainingOptions(*o), onFold, check)
@@ -401,7 +387,7 @@ void setupCategory(CLI::App& root) {
     const auto models = sagrid::ModelSet::load(dir);
     auto features = models.featureOptions();
     if (!o->up.empty()) features.up = sagrid::parseUpAxis(o->up);
-    const auto samples = collect(o->data, features, {}, classifier.topRelief());
+    const auto samples = collect(o->data, features, {}, classifier.inputSet());
     const SampleEvidence evidence(models, *o);
     const std::vector<std::string> gated = o->gated.empty() ? models.categories() : o->gated;
     auto isGated = [&gated](const std::string& c) {

@@ -80,11 +80,12 @@ void setupFilter(CLI::App& root) {
       bar.update(i, files[i].id);
       try {
         auto source = sagrid::DescriptorSource::Computed;
+        const auto inputs = models.categoryInputSet();
         const auto object = sagrid::extractObjectDescriptor(files[i].path, features, &source,
-                                                            models.needsVoxelsToDecide());
+                                                            inputs.topRelief, inputs.partStatistics);
         if (source != sagrid::DescriptorSource::Computed) ++cached;
         const auto& descriptor = object.descriptor;
-        const auto decision = models.decideCategory(descriptor, object.topRelief);
+        const auto decision = models.decideCategory(object);
         ranked.push_back({files[i], models.categorySimilarity(descriptor, o->like),
                           decision.category, decision.rejected});
       } catch (const sagrid::Error& e) {

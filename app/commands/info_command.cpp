@@ -8,11 +8,11 @@
 
 #include "app/command_registry.h"
 #include "app/commands/up_axis_option.h"
-#include "core/annotate/burner_caps_rule.h"
 #include "core/annotate/point_passes.h"
 #include "core/controls/control_part.h"
 #include "core/controls/control_turn.h"
 #include "core/geometry/material_parts.h"
+#include "core/geometry/part_statistics.h"
 #include "core/geometry/surface_scene.h"
 #include "core/grid/mesh_summary.h"
 #include "core/grid/normalization.h"
@@ -56,18 +56,12 @@ void listMaterialParts(const sagrid::Mesh& mesh) {
   }
 }
 
-// The round flat families of two or more parts (burner caps, drains, round knobs) with their
-// widths as shares of the mesh's largest extent, and whether the burner-cap rule after the category
-// classifier takes them for a stove's caps.
-void listRoundFlatFamilies(const sagrid::Mesh& mesh) {
-  std::printf("burner caps: %s\n", sagrid::hasBurnerCaps(mesh) ? "yes" : "no");
-  for (const auto& family : sagrid::roundFlatFamilies(mesh)) {
-    if (family.widthShares.size() < 2) continue;
-    const auto [narrowest, widest] =
-        std::minmax_element(family.widthShares.begin(), family.widthShares.end());
-    std::printf("  round flat part %zu: family of %zu, width %.3f-%.3f of the largest extent\n",
-                family.part, family.widthShares.size(), *narrowest, *widest);
-  }
+// The statistics of the mesh's parts that the category classifier reads (where its file says so).
+void listPartStatistics(const sagrid::Mesh& mesh) {
+  const auto stats = sagrid::partStatistics(mesh);
+  std::printf("part statistics (category inputs):\n");
+  for (std::size_t i = 0; i < stats.size(); ++i)
+    std::printf("  %s: %.3f\n", sagrid::kPartStatisticNames[i], stats[i]);
 }
 
 // The control part of each toggle button point of a labels file, as the exports cut and move it.
@@ -126,8 +120,8 @@ void setupInfo(CLI::App& root) {
   cmd->add_flag(
       "--parts", o->parts,
       "Also list the mesh's small parts (a knob, a cap, a handle: those the point candidates "
-      "are seeded from) and how many copies each has, and the round flat families the "
-      "burner-cap rule of the category reads");
+      "are seeded from) and how many copies each has, and the statistics of the parts the "
+      "category classifier reads (core/geometry/part_statistics.h)");
   cmd->add_flag("--material-parts", o->materialParts,
                 "Also list, per material, the connected parts of its triangles with their box "
                 "centre in the file's frame and size: where zones, knobs and handles are drawn in "
@@ -170,7 +164,7 @@ void setupInfo(CLI::App& root) {
     if (!o->parts) return;
     const auto normalization = sagrid::Normalization::fromMesh(mesh);
     listSmallParts(sagrid::normalizedParts(mesh, normalization), normalization, mesh.fileUp);
-    listRoundFlatFamilies(mesh);
+    listPartStatistics(mesh);
   });
 }
 

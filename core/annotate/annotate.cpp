@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <chrono>
 
-#include "core/annotate/burner_caps_rule.h"
 #include "core/annotate/category_evidence.h"
 #include "core/annotate/point_scorer.h"
 #include "core/annotate/point_passes.h"
@@ -163,10 +162,9 @@ AnnotationResult annotateMeshFile(const fs::path& meshFile, const std::string& i
   // gate is applied below, once the category's models have run.
   std::optional<CategoryDecision> decided;
   if (options.category.empty()) {
-    // The classifier with rejection when the models folder has one, else retrieval; a sink
-    // decision on a mesh with burner caps is a stove one.
-    const CategoryDecision& decision = decided.emplace(
-        withBurnerCaps(models.decideCategory(features), [&mesh] { return hasBurnerCaps(mesh); }));
+    // The classifier with rejection when the models folder has one (reading the mesh's parts
+    // where its file says so), else retrieval.
+    const CategoryDecision& decision = decided.emplace(models.decideCategory(features, mesh));
     r.category = decision.category;
     r.categorySimilarity = decision.score;
     r.categoryRetrieved = true;
@@ -242,8 +240,6 @@ AnnotationResult annotateMeshFile(const fs::path& meshFile, const std::string& i
                                   {"object_confidence", r.objectConfidence},
                                   {"object_confidence_calibrated", options.confidence.fitted},
                                   {"symmetries", options.symmetries}};
-  if (decided && decided->byBurnerCaps)
-    r.labels.extra["prediction"]["category_by_burner_caps"] = true;
   if (r.categoryRetrieved && classifier && !classifier->evidence.empty())
     r.labels.extra["prediction"]["affordance_evidence"] = evidence;
   recordPointDecision(r.labels, passes);

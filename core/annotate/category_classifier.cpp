@@ -9,6 +9,7 @@
 #include "core/common/error.h"
 #include "core/common/sha256.h"
 #include "core/features/feature_grid.h"
+#include "core/geometry/part_statistics.h"
 #include "core/grid/top_relief.h"
 
 namespace sagrid {
@@ -41,16 +42,22 @@ std::string contentSha(const nlohmann::json& j) {
 }
 }  // namespace
 
-std::vector<float> categoryInputs(const std::vector<float>& descriptor,
-                                  const std::array<float, kTopReliefSize>& relief, bool topRelief) {
-  std::vector<float> inputs = descriptor;
-  if (topRelief) inputs.insert(inputs.end(), relief.begin(), relief.end());
+std::vector<float> categoryInputs(const ObjectDescriptor& object,
+                                  const CategoryInputSet& set) {
+  std::vector<float> inputs = object.descriptor;
+  if (set.topRelief) inputs.insert(inputs.end(), object.topRelief.begin(), object.topRelief.end());
+  if (set.partStatistics)
+    inputs.insert(inputs.end(), object.partStatistics.begin(), object.partStatistics.end());
   return inputs;
 }
 
-std::vector<float> categoryInputs(const FeatureGrid& grid, bool topRelief) {
-  if (!topRelief) return grid.descriptor;
-  return categoryInputs(grid.descriptor, sagrid::topRelief(grid.voxels, grid.resolution), true);
+std::vector<float> categoryInputs(const FeatureGrid& grid, const Mesh& mesh,
+                                  const CategoryInputSet& set) {
+  ObjectDescriptor object;
+  object.descriptor = grid.descriptor;
+  if (set.topRelief) object.topRelief = sagrid::topRelief(grid.voxels, grid.resolution);
+  if (set.partStatistics) object.partStatistics = partStatistics(mesh);
+  return categoryInputs(object, set);
 }
 
 bool EvidenceGate::passes(const std::string& category, double evidence) const {
@@ -103,7 +110,7 @@ CategoryClassifier CategoryClassifier::train(const std::vector<CategorySample>& 
     x.col(j) = ((x.col(j).array() - mean) / c.m_scale[j]).cwiseMax(-kClamp).cwiseMin(kClamp);
   }
   c.m_quadratic = options.quadratic && !options.trees;
-  c.m_topRelief = options.topRelief;
+  c.m_inputs = options.inputs;
   if (c.m_quadratic) {
     Eigen::MatrixXd expanded(n, 2 * d);
     expanded << x, x.array().square().matrix();
@@ -123,7 +130,8 @@ CategoryClassifier CategoryClassifier::train(const std::vector<CategorySample>& 
   nlohmann::json objects = nlohmann::json::object();
   for (const auto& [cls, count] : counts) objects[cls] = count;
   c.training["objects"] = objects;
-  c.training["top_relief"] = options.topRelief;
+  c.training["top_relief"] = options.inputs.topRelief;
+  c.training["part_statistics"] = options.inputs.partStatistics;
   if (options.trees) {
     std::vector<std::vector<float>> rows(n, std::vector<float>(inputs));
     std::vector<float> weight(n);
@@ -247,7 +255,8 @@ void CategoryClassifier::save(const std::filesystem::path& file) const {
   j["grid_resolution"] = gridResolution;
   j["descriptor_size"] = m_centre.size();
   j["quadratic"] = m_quadratic;
-  j["top_relief"] = m_topRelief;
+  j["top_relief"] = m_inputs.topRelief;
+  j["part_statistics"] = m_inputs.partStatistics;
   j["centre"] = m_centre;
   j["scale"] = m_scale;
   if (m_trees.empty()) {
@@ -289,7 +298,8 @@ CategoryClassifier CategoryClassifier::load(const std::filesystem::path& file) {
     c.m_centre = j.at("centre").get<std::vector<float>>();
     c.m_scale = j.at("scale").get<std::vector<float>>();
     c.m_quadratic = j.value("quadratic", false);
-    c.m_topRelief = j.value("top_relief", false);
+    c.m_inputs.topRelief = j.value("top_relief", false);
+    c.m_inputs.partStatistics = j.value("part_statistics", false);
     if (j.contains("trees")) {
       for (const auto& t : j.at("trees")) {
         try {

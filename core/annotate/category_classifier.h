@@ -7,9 +7,10 @@
 // the training set's mean and spread (and, by default, its squares: a quadratic boundary), trained
 // full-batch with class-balanced weights and an L2 penalty (convex, deterministic, no libtorch).
 // Decision: the most probable class; an object is rejected ("none") when that class is "none" or
-// its probability is below `threshold`. Inputs: the descriptor, and with `topRelief` also the
-// relief of the object's top (core/grid/top_relief.h: basins, burner spots, flat lids), which the
-// descriptor misses. Stored as <models folder>/category.json (kCategoryClassifierFile) next to the
+// its probability is below `threshold`. Inputs: the descriptor, and as its file says also the
+// relief of the object's top (core/grid/top_relief.h: basins, burner spots, flat lids) and the
+// statistics of the mesh's parts (core/geometry/part_statistics.h: families of copies such as
+// burner caps and rows of knobs), which the descriptor misses. Stored as <models folder>/category.json (kCategoryClassifierFile) next to the
 // model cards.
 #pragma once
 
@@ -18,9 +19,10 @@
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
+#include <tuple>
 #include <vector>
 
-#include "core/grid/top_relief.h"
+#include "core/features/descriptor_cache.h"
 #include "core/points/boosted_trees.h"
 
 namespace sagrid {
@@ -28,14 +30,20 @@ namespace sagrid {
 inline constexpr const char* kCategoryClassifierFile = "category.json";
 inline constexpr const char* kRejectedCategory = "none";
 
+// What the classifier reads beside the descriptor (recorded in its file).
+struct CategoryInputSet {
+  bool topRelief = false;       // the relief of the object's top, from its voxels
+  bool partStatistics = false;  // the statistics of its mesh's parts
+  bool operator<(const CategoryInputSet& o) const {
+    return std::tie(topRelief, partStatistics) < std::tie(o.topRelief, o.partStatistics);
+  }
+};
+
 struct CategoryDecision {
   std::string category;  // a known category, or kRejectedCategory
   double score = 0;      // probability of the best non-"none" class (retrieval: similarity)
   bool rejected = false;
   std::string best;      // the best non-"none" class even when rejected (what a curator may pick)
-  // A sink decision turned into a stove one by the mesh's burner caps
-  // (core/annotate/burner_caps_rule.h); the score stays the classifier's.
-  bool byBurnerCaps = false;
 };
 
 struct CategorySample {
@@ -80,9 +88,9 @@ struct CategoryTrainingOptions {
   // Also the squares of the standardized dimensions (a quadratic boundary: "far from the
   // stoves in this dimension" is not linear in it).
   bool quadratic = true;
-  // The samples' inputs end with the top relief (categoryInputs(grid, true)); recorded in the
-  // file so that classification appends it too.
-  bool topRelief = false;
+  // What the samples' inputs hold beside the descriptor (categoryInputs); recorded in the file so
+  // that classification appends the same.
+  CategoryInputSet inputs;
   // Boosted trees per class (one against the rest, on the standardized inputs without squares)
   // instead of the softmax; a class's probability is its trees' sigmoid over the classes' sum.
   bool trees = false;
@@ -90,12 +98,15 @@ struct CategoryTrainingOptions {
 };
 
 struct FeatureGrid;
+struct Mesh;
 
-// What the classifier reads from an object's features: the descriptor, followed by the top relief
-// of its occupied voxels when `topRelief`.
-std::vector<float> categoryInputs(const FeatureGrid& grid, bool topRelief);
-std::vector<float> categoryInputs(const std::vector<float>& descriptor,
-                                  const std::array<float, kTopReliefSize>& relief, bool topRelief);
+// What the classifier reads of an object: the descriptor, followed by the top relief and then the
+// part statistics where `set` asks for them.
+std::vector<float> categoryInputs(const ObjectDescriptor& object, const CategoryInputSet& set);
+// The same of an object's features and the mesh they came from (its top relief from the grid's
+// voxels, its part statistics from the mesh: each computed only where `set` asks for it).
+std::vector<float> categoryInputs(const FeatureGrid& grid, const Mesh& mesh,
+                                  const CategoryInputSet& set);
 
 class CategoryClassifier {
  public:
@@ -120,7 +131,7 @@ class CategoryClassifier {
   double threshold() const { return m_threshold; }
   void setThreshold(double t) { m_threshold = t; }
   std::size_t descriptorSize() const { return m_centre.size(); }  // inputs, relief included
-  bool topRelief() const { return m_topRelief; }  // inputs: categoryInputs(..., topRelief())
+  const CategoryInputSet& inputSet() const { return m_inputs; }  // categoryInputs(..., inputSet())
 
   // Feature setup the descriptors came from (checked against the model cards).
   std::string featureBackend, featureConfigHash;
@@ -136,7 +147,7 @@ class CategoryClassifier {
   // Standardized (clamped to +-kClamp) descriptor, then its squares when m_quadratic.
   std::vector<double> inputs(const std::vector<float>& descriptor) const;
   bool m_quadratic = false;
-  bool m_topRelief = false;
+  CategoryInputSet m_inputs;
   std::vector<std::vector<double>> m_weights;  // classes x inputs (empty with trees)
   std::vector<double> m_bias;
   std::vector<BoostedTrees> m_trees;  // one per class, or none (the softmax decides)

@@ -24,8 +24,7 @@ double affordanceEvidence(const std::filesystem::path& meshFile, const std::stri
 
 CategoryDecision applyEvidenceGate(const CategoryDecision& decision, const EvidenceGate& gate,
                                    const std::function<double(const std::string&)>& evidenceOf) {
-  if (decision.rejected || !gate.thresholds.count(decision.category) ||
-      (!gate.asks(decision.score) && !decision.byBurnerCaps))
+  if (decision.rejected || !gate.thresholds.count(decision.category) || !gate.asks(decision.score))
     return decision;
   if (gate.passes(decision.category, evidenceOf(decision.category))) return decision;
   CategoryDecision rejected = decision;

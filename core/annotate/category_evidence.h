@@ -27,8 +27,7 @@ double affordanceEvidence(const std::filesystem::path& meshFile, const std::stri
                           const ModelSet& models, AnnotateOptions options);
 
 // `decision` after `gate`: an accepted category with a threshold, decided with a probability
-// below the gate's sureProbability (or by burner caps, whatever the probability: the classifier
-// was sure of another category), is rejected (its best category kept) when evidenceOf(category),
+// below the gate's sureProbability, is rejected (its best category kept) when evidenceOf(category),
 // asked only then, falls short of it.
 CategoryDecision applyEvidenceGate(const CategoryDecision& decision, const EvidenceGate& gate,
                                    const std::function<double(const std::string&)>& evidenceOf);

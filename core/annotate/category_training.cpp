@@ -23,7 +23,7 @@ std::vector<CategorySample> collectCategorySamples(
     const fs::path& dataDir, const FeatureOptions& features,
     const std::set<std::string>& excludeIds,
     const std::function<void(std::size_t, std::size_t, const std::string&)>& onProgress,
-    std::size_t* failed, bool topRelief) {
+    std::size_t* failed, const CategoryInputSet& inputs) {
   const auto entries = readDataset(dataDir);
   if (entries.empty()) throw InvalidArgument("dataset " + dataDir.string() + " has no objects");
   FeatureOptions options = features;
@@ -56,7 +56,11 @@ std::vector<CategorySample> collectCategorySamples(
       // The labels say how the file was written (Sweet Home 3D OBJs are y-up); unset = the
       // importer's default for the format.
       if (!labels.object.up.empty()) objectFeatures.up = parseUpAxis(labels.object.up);
-      s.descriptor = categoryInputs(extractFeatures(entry.mesh, objectFeatures), topRelief);
+      // The parts are read from the mesh in the frame its features were computed in.
+      const FeatureGrid grid = extractFeatures(entry.mesh, objectFeatures);
+      s.descriptor = categoryInputs(
+          grid, inputs.partStatistics ? importMesh(entry.mesh, ImportOptions(objectFeatures.up)) : Mesh{},
+          inputs);
       s.mesh = entry.mesh;
       s.up = labels.object.up;
       s.featureCache = options.cacheDir;

@@ -20,14 +20,14 @@ namespace sagrid {
 // sample is the folder's name, plus the generator kind for generated distractors. An object's
 // labels.json up axis overrides features.up; objects without labels.json take the manifest's
 // category and features.up. Objects whose features fail are skipped and counted in `failed` (when
-// given). A sample's descriptor is categoryInputs(features, topRelief): with `topRelief` the
-// relief of the object's top follows the descriptor. Samples keep their mesh, labelled up axis and
+// given). A sample's descriptor is categoryInputs(features, mesh, inputs): the descriptor, then
+// what `inputs` asks for (the relief of the object's top, the statistics of its mesh's parts). Samples keep their mesh, labelled up axis and
 // feature cache.
 std::vector<CategorySample> collectCategorySamples(
     const std::filesystem::path& dataDir, const FeatureOptions& features,
     const std::set<std::string>& excludeIds = {},
     const std::function<void(std::size_t, std::size_t, const std::string&)>& onProgress = {},
-    std::size_t* failed = nullptr, bool topRelief = false);
+    std::size_t* failed = nullptr, const CategoryInputSet& inputs = {});
 
 // Fold of each id (0 .. folds-1): ids ordered by the sha256 of the id, the i-th to fold i % folds,
 // so folds differ in size by one at most and do not depend on the order given. Throws

@@ -30,7 +30,8 @@ WeightedFolder parseWeightedFolder(const std::string& text) {
 std::vector<CategorySample> collectWeightedSamples(const std::vector<WeightedFolder>& folders,
                                                    const FeatureOptions& features,
                                                    const std::set<std::string>& exclude,
-                                                   bool topRelief, const FolderProgress& onProgress,
+                                                   const CategoryInputSet& inputs,
+                                                   const FolderProgress& onProgress,
                                                    std::vector<std::size_t>* skipped) {
   std::vector<CategorySample> all;
   if (skipped) skipped->assign(folders.size(), 0);
@@ -42,7 +43,7 @@ std::vector<CategorySample> collectWeightedSamples(const std::vector<WeightedFol
         [&](std::size_t done, std::size_t total, const std::string&) {
           if (onProgress) onProgress(folder.dir, done, total);
         },
-        &failed, topRelief);
+        &failed, inputs);
     if (skipped) (*skipped)[f] = failed;
     for (auto& s : samples) s.weight = folder.weight;
     all.insert(all.end(), samples.begin(), samples.end());
@@ -65,14 +66,14 @@ void requireSeveralClasses(const std::vector<CategorySample>& heldOut) {
 CategoryVerdict judgeCategoryUpdate(const CategoryClassifier& candidate, const fs::path& currentFile,
                                     const std::vector<WeightedFolder>& heldOut,
                                     const FeatureOptions& features) {
-  // The held-out descriptors, once per input layout (with or without the top relief).
-  std::map<bool, std::vector<CategorySample>> samplesWithRelief;
+  // The held-out inputs, once per input set (with or without the top relief, the parts).
+  std::map<CategoryInputSet, std::vector<CategorySample>> samplesByInputs;
   const auto shareRight = [&](const CategoryClassifier& c) {
-    auto found = samplesWithRelief.find(c.topRelief());
-    if (found == samplesWithRelief.end()) {
-      auto samples = collectWeightedSamples(heldOut, features, {}, c.topRelief());
+    auto found = samplesByInputs.find(c.inputSet());
+    if (found == samplesByInputs.end()) {
+      auto samples = collectWeightedSamples(heldOut, features, {}, c.inputSet());
       requireSeveralClasses(samples);
-      found = samplesWithRelief.emplace(c.topRelief(), std::move(samples)).first;
+      found = samplesByInputs.emplace(c.inputSet(), std::move(samples)).first;
     }
     return balancedShareRight(evaluateCategories(
         [&](const CategorySample& s) { return c.classify(s.descriptor); }, found->second));
@@ -136,13 +137,13 @@ CategoryClassifier retrainCategoryClassifier(const CategoryClassifier& current,
   options.iterations = record.value("iterations", options.iterations);
   options.quadratic = record.value("quadratic", options.quadratic);
   options.threshold = current.threshold();
-  options.topRelief = current.topRelief();
+  options.inputs = current.inputSet();
   if (record.contains("trees")) {  // the same kind of classifier as the current one
     options.trees = true;
     options.boosting.rounds = record.at("trees").value("rounds", options.boosting.rounds);
     options.boosting.depth = record.at("trees").value("depth", options.boosting.depth);
   }
-  const auto samples = collectWeightedSamples(folders, features, {}, options.topRelief, onProgress);
+  const auto samples = collectWeightedSamples(folders, features, {}, options.inputs, onProgress);
   if (samples.empty())
     throw InvalidArgument("no object to retrain the category classifier on: " + curated.string() +
                           " holds none and the classifier's own training folders are missing");

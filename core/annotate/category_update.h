@@ -35,7 +35,8 @@ using FolderProgress =
 // features failed are skipped and counted per folder in `skipped` (when given).
 std::vector<CategorySample> collectWeightedSamples(
     const std::vector<WeightedFolder>& folders, const FeatureOptions& features,
-    const std::set<std::string>& exclude, bool topRelief, const FolderProgress& onProgress = {},
+    const std::set<std::string>& exclude, const CategoryInputSet& inputs,
+    const FolderProgress& onProgress = {},
     std::vector<std::size_t>* skipped = nullptr);
 
 // A guard set of one class cannot judge a classifier: one that calls everything that class would

@@ -88,24 +88,27 @@ void ModelSet::setCategoryClassifier(CategoryClassifier classifier,
   m_classifier = std::move(classifier);
 }
 
-CategoryDecision ModelSet::decideCategory(const FeatureGrid& features) const {
+CategoryDecision ModelSet::decideCategory(const FeatureGrid& features, const Mesh& mesh) const {
   if (m_classifier)
-    return m_classifier->classify(categoryInputs(features, m_classifier->topRelief()));
+    return m_classifier->classify(categoryInputs(features, mesh, m_classifier->inputSet()));
   return decideCategory(features.descriptor);
 }
 
-CategoryDecision ModelSet::decideCategory(const std::vector<float>& descriptor,
-                                          const std::array<float, kTopReliefSize>& relief) const {
-  if (m_classifier)
-    return m_classifier->classify(categoryInputs(descriptor, relief, m_classifier->topRelief()));
-  return decideCategory(descriptor);
+CategoryDecision ModelSet::decideCategory(const ObjectDescriptor& object) const {
+  if (!m_classifier) return decideCategory(object.descriptor);
+  if (m_classifier->inputSet().partStatistics && !object.hasPartStatistics)
+    throw InvalidArgument(
+        "the category classifier reads the mesh's parts: decide from a descriptor entry that "
+        "holds them");
+  return m_classifier->classify(categoryInputs(object, m_classifier->inputSet()));
 }
 
 CategoryDecision ModelSet::decideCategory(const std::vector<float>& descriptor) const {
-  if (needsVoxelsToDecide())
+  const CategoryInputSet set = categoryInputSet();
+  if (set.topRelief || set.partStatistics)
     throw InvalidArgument(
-        "the category classifier reads the top relief of the voxels too: decide from the "
-        "object's features, not its descriptor alone");
+        "the category classifier reads the top relief of the voxels or the mesh's parts too: "
+        "decide from the object's features and mesh, not its descriptor alone");
   if (m_classifier) return m_classifier->classify(descriptor);
   const auto ranked = rankCategories(descriptor);
   if (ranked.empty()) throw ModelError("no models to choose a category from");

@@ -51,14 +51,17 @@ class ModelSet {
 
   // The category of an object: the classifier's decision (possibly rejected, category "none")
   // when the folder has one, else the best retrieved category (never rejected).
-  CategoryDecision decideCategory(const FeatureGrid& features) const;
-  // The same from the descriptor and the top relief (a descriptor cache entry, `sagrid filter`).
-  CategoryDecision decideCategory(const std::vector<float>& descriptor,
-                                  const std::array<float, kTopReliefSize>& topRelief) const;
+  CategoryDecision decideCategory(const FeatureGrid& features, const Mesh& mesh) const;
+  // The same from what a descriptor cache entry holds (`sagrid filter`): it must hold what the
+  // classifier reads (categoryInputSet()).
+  CategoryDecision decideCategory(const ObjectDescriptor& object) const;
   // The same from the descriptor alone; throws InvalidArgument when the classifier also reads the
-  // top relief (needsVoxelsToDecide()).
+  // top relief or the parts (categoryInputSet()).
   CategoryDecision decideCategory(const std::vector<float>& descriptor) const;
-  bool needsVoxelsToDecide() const { return m_classifier && m_classifier->topRelief(); }
+  // What the classifier reads beside the descriptor (nothing without one).
+  CategoryInputSet categoryInputSet() const {
+    return m_classifier ? m_classifier->inputSet() : CategoryInputSet{};
+  }
   const CategoryClassifier* categoryClassifier() const {
     return m_classifier ? &*m_classifier : nullptr;
   }

@@ -8,6 +8,7 @@
 #include "core/common/log.h"
 #include "core/common/sha256.h"
 #include "core/features/feature_cache.h"
+#include "core/geometry/part_statistics.h"
 #include "core/mesh/mesh_import.h"
 
 namespace sagrid {
@@ -19,20 +20,25 @@ fs::path descriptorEntry(const fs::path& dir, const std::string& sha, const std:
   return dir / (sha + "-" + hash + (variant.empty() ? "" : "-" + variant) + ".descriptor.json");
 }
 
-// The entry's content; one written before entries kept the top relief only when `needTopRelief`
-// is false.
+// The entry's content; one written without the top relief (before entries kept it) or without
+// the part statistics only where they are not needed.
 std::optional<ObjectDescriptor> loadDescriptor(const fs::path& entry, const std::string& sha,
-                                               const std::string& hash, bool needTopRelief) {
+                                               const std::string& hash, bool needTopRelief,
+                                               bool needPartStatistics) {
   std::error_code ec;
   if (!fs::exists(entry, ec)) return std::nullopt;
   try {
     const auto j = nlohmann::json::parse(readFileBytes(entry));
-    const bool hasRelief = j.contains("top_relief");
+    const bool hasRelief = j.contains("top_relief"), hasParts = j.contains("part_statistics");
     if (j.at("mesh_sha256") == sha && j.at("config_hash") == hash &&
-        (hasRelief || !needTopRelief)) {
+        (hasRelief || !needTopRelief) && (hasParts || !needPartStatistics)) {
       ObjectDescriptor d;
       d.descriptor = j.at("descriptor").get<std::vector<float>>();
       if (hasRelief) d.topRelief = j.at("top_relief").get<std::array<float, kTopReliefSize>>();
+      if (hasParts) {
+        d.partStatistics = j.at("part_statistics").get<std::array<float, kPartStatisticsSize>>();
+        d.hasPartStatistics = true;
+      }
       return d;
     }
   } catch (const std::exception& e) {
@@ -43,7 +49,8 @@ std::optional<ObjectDescriptor> loadDescriptor(const fs::path& entry, const std:
 }  // namespace
 
 ObjectDescriptor extractObjectDescriptor(const fs::path& meshFile, const FeatureOptions& options,
-                                         DescriptorSource* source, bool needTopRelief) {
+                                         DescriptorSource* source, bool needTopRelief,
+                                         bool needPartStatistics) {
   const std::string hash = featureConfigHash(options);  // validates the backend
   // Without an up axis it is detected from the geometry, as `annotate` does: the descriptor
   // entry is then keyed "updetected" (the detection is a function of the file's bytes), so a
@@ -54,7 +61,7 @@ ObjectDescriptor extractObjectDescriptor(const fs::path& meshFile, const Feature
   if (!options.cacheDir.empty()) {
     sha = sha256Hex(readFileBytes(meshFile));
     entry = descriptorEntry(options.cacheDir, sha, hash, variant);
-    if (auto cached = loadDescriptor(entry, sha, hash, needTopRelief)) {
+    if (auto cached = loadDescriptor(entry, sha, hash, needTopRelief, needPartStatistics)) {
       if (source) *source = DescriptorSource::DescriptorCache;
       return std::move(*cached);
     }
@@ -79,21 +86,26 @@ ObjectDescriptor extractObjectDescriptor(const fs::path& meshFile, const Feature
       from = DescriptorSource::FeatureCache;
     }
   }
-  if (from == DescriptorSource::Computed) {
+  if (from == DescriptorSource::Computed || needPartStatistics) {
     if (!mesh) mesh = importMesh(meshFile, ImportOptions(framed.up));
-    take(computeFeatures(*mesh, framed));
+    if (from == DescriptorSource::Computed) take(computeFeatures(*mesh, framed));
+  }
+  // Whenever the mesh was read anyway (its parts cost little beside its features).
+  if (mesh) {
+    d.partStatistics = partStatistics(*mesh);
+    d.hasPartStatistics = true;
   }
   if (!entry.empty()) {
     std::error_code ec;
     fs::create_directories(options.cacheDir, ec);
     if (ec)
       throw FileError(options.cacheDir, "cannot create the feature cache folder: " + ec.message());
-    writeFileAtomic(entry, nlohmann::json{{"mesh_sha256", sha},
-                                          {"config_hash", hash},
-                                          {"descriptor", d.descriptor},
-                                          {"top_relief", d.topRelief}}
-                                   .dump() +
-                               "\n");
+    nlohmann::json j{{"mesh_sha256", sha},
+                     {"config_hash", hash},
+                     {"descriptor", d.descriptor},
+                     {"top_relief", d.topRelief}};
+    if (d.hasPartStatistics) j["part_statistics"] = d.partStatistics;
+    writeFileAtomic(entry, j.dump() + "\n");
   }
   if (source) *source = from;
   return d;
@@ -101,7 +113,9 @@ ObjectDescriptor extractObjectDescriptor(const fs::path& meshFile, const Feature
 
 std::vector<float> extractDescriptor(const fs::path& meshFile, const FeatureOptions& options,
                                      DescriptorSource* source) {
-  return extractObjectDescriptor(meshFile, options, source, /*needTopRelief=*/false).descriptor;
+  return extractObjectDescriptor(meshFile, options, source, /*needTopRelief=*/false,
+                                 /*needPartStatistics=*/false)
+      .descriptor;
 }
 
 }  // namespace sagrid

@@ -16,7 +16,9 @@
 #include "core/common/error.h"
 #include "core/generate/dataset_generator.h"
 #include "core/grid/top_relief.h"
+#include "core/mesh/mesh.h"
 #include "core/mesh/mesh_export.h"
+#include "support/analytic_meshes.h"
 #include "support/category_samples.h"
 #include "support/test_paths.h"
 #include "support/untrained_models.h"
@@ -173,6 +175,18 @@ const std::vector<VoxelIndex> kBurnerCaps = topOf([](int x, int y) {
   return (std::abs(x % 20 - 18) <= 1 && std::abs(y % 20 - 18) <= 1) ? 32 : 30;
 });
 
+// The stove and sink cards with a classifier trained on `samples`, saved and read back.
+ModelSet withClassifierReadBack(const std::vector<CategorySample>& samples,
+                                const CategoryTrainingOptions& options) {
+  auto c = CategoryClassifier::train(samples, options);
+  c.featureBackend = "embedded";
+  const auto file = test::freshTempDir() / kCategoryClassifierFile;
+  c.save(file);
+  ModelSet set = stoveAndSinkCards();
+  set.setCategoryClassifier(CategoryClassifier::load(file), file);
+  return set;
+}
+
 // The descriptor says nothing (the same noise for every class); only the top tells them apart.
 TEST(CategoryClassifier, TheTopReliefIsStoredAndReadWhenDeciding) {
   std::mt19937 rng(9);
@@ -186,35 +200,86 @@ TEST(CategoryClassifier, TheTopReliefIsStoredAndReadWhenDeciding) {
       for (float& v : descriptor) v = noise(rng);
       auto relief = topRelief(*voxels, 64);
       for (float& v : relief) v += noise(rng);
+      ObjectDescriptor object;
+      object.descriptor = descriptor;
+      object.topRelief = relief;
       samples.push_back(test::categorySample(category + std::to_string(i), category, "test",
-                                             categoryInputs(descriptor, relief, true)));
+                                             categoryInputs(object, {true, false})));
     }
   CategoryTrainingOptions options;
-  options.topRelief = true;
-  auto c = CategoryClassifier::train(samples, options);
-  c.featureBackend = "embedded";
-  const auto file = test::freshTempDir() / kCategoryClassifierFile;
-  c.save(file);
-  const auto back = CategoryClassifier::load(file);
-  EXPECT_TRUE(back.topRelief());
+  options.inputs.topRelief = true;
+  const ModelSet set = withClassifierReadBack(samples, options);
+  const CategoryClassifier& back = *set.categoryClassifier();
+  EXPECT_TRUE(back.inputSet().topRelief);
+  EXPECT_FALSE(back.inputSet().partStatistics);
   EXPECT_EQ(back.descriptorSize(), 6u + kTopReliefSize);
-
-  ModelSet set = stoveAndSinkCards();
-  set.setCategoryClassifier(back, file);
-  EXPECT_TRUE(set.needsVoxelsToDecide());
+  EXPECT_TRUE(set.categoryInputSet().topRelief);
   const std::vector<float> quiet(6, 0.0f);
   EXPECT_THROW(set.decideCategory(quiet), InvalidArgument);  // the descriptor alone is not enough
-  EXPECT_EQ(set.decideCategory(quiet, topRelief(kBurnerCaps, 64)).category, "stove");
-  EXPECT_EQ(set.decideCategory(quiet, topRelief(kBasin, 64)).category, "sink");
-  EXPECT_TRUE(set.decideCategory(quiet, topRelief(kFlatLid, 64)).rejected);
+  const auto withTop = [&](const std::vector<VoxelIndex>& voxels) {
+    ObjectDescriptor object;
+    object.descriptor = quiet;
+    object.topRelief = topRelief(voxels, 64);
+    return set.decideCategory(object);
+  };
+  EXPECT_EQ(withTop(kBurnerCaps).category, "stove");
+  EXPECT_EQ(withTop(kBasin).category, "sink");
+  EXPECT_TRUE(withTop(kFlatLid).rejected);
   // From an object's features: the relief of its voxels is appended.
   FeatureGrid grid;
   grid.resolution = 64;
   grid.descriptor = quiet;
   grid.voxels = kBasin;
-  EXPECT_EQ(set.decideCategory(grid).category, "sink");
+  EXPECT_EQ(set.decideCategory(grid, Mesh{}).category, "sink");
   grid.voxels = kBurnerCaps;
-  EXPECT_EQ(set.decideCategory(grid).category, "stove");
+  EXPECT_EQ(set.decideCategory(grid, Mesh{}).category, "stove");
+}
+
+// A counter 1 m x 0.6 m with `caps` equal flat squares 12 cm across standing on it.
+Mesh counterWithCaps(int caps) {
+  Mesh mesh = test::box({0, 0, 0}, {1.0f, 0.6f, 0.05f});
+  for (int i = 0; i < caps; ++i) {
+    const Eigen::Vector3f lo(0.1f + 0.2f * static_cast<float>(i), 0.2f, 0.05f);
+    test::append(mesh, test::box(lo, lo + Eigen::Vector3f(0.12f, 0.12f, 0.02f)));
+  }
+  return mesh;
+}
+
+// The descriptor says nothing again; only the mesh's parts do: four caps a stove, one (a drain) a
+// sink, none a look-alike.
+TEST(CategoryClassifier, TheMeshsPartsAreStoredAndReadWhenDeciding) {
+  std::mt19937 rng(11);
+  std::normal_distribution<float> noise(0.0f, 0.02f);
+  const std::vector<std::pair<std::string, int>> kinds = {{"stove", 4}, {"sink", 1}, {"none", 0}};
+  std::vector<CategorySample> samples;
+  for (const auto& [category, caps] : kinds)
+    for (int i = 0; i < 20; ++i) {
+      ObjectDescriptor object;
+      object.descriptor.assign(6, 0.0f);
+      for (float& v : object.descriptor) v = noise(rng);
+      object.partStatistics = partStatistics(counterWithCaps(caps));
+      for (float& v : object.partStatistics) v += noise(rng);
+      samples.push_back(test::categorySample(category + std::to_string(i), category, "test",
+                                             categoryInputs(object, {false, true})));
+    }
+  CategoryTrainingOptions options;
+  options.inputs.partStatistics = true;
+  options.trees = true;
+  const ModelSet set = withClassifierReadBack(samples, options);
+  EXPECT_TRUE(set.categoryInputSet().partStatistics);
+  EXPECT_EQ(set.categoryClassifier()->descriptorSize(), 6u + kPartStatisticsSize);
+  FeatureGrid grid;
+  grid.descriptor.assign(6, 0.0f);
+  EXPECT_EQ(set.decideCategory(grid, counterWithCaps(4)).category, "stove");
+  EXPECT_EQ(set.decideCategory(grid, counterWithCaps(1)).category, "sink");
+  EXPECT_TRUE(set.decideCategory(grid, counterWithCaps(0)).rejected);
+  // A descriptor entry written without the parts cannot decide; one with them can.
+  ObjectDescriptor entry;
+  entry.descriptor = grid.descriptor;
+  EXPECT_THROW(set.decideCategory(entry), InvalidArgument);
+  entry.partStatistics = partStatistics(counterWithCaps(4));
+  entry.hasPartStatistics = true;
+  EXPECT_EQ(set.decideCategory(entry).category, "stove");
 }
 
 TEST(CategoryClassifier, ModelSetUsesTheClassifierAndChecksIt) {
@@ -343,13 +408,14 @@ TEST(CategoryClassifier, ShippedClassifierRejectsGeneratedDistractorsSlow) {
   const int n = 8;
   for (int i = 0; i < n; ++i) {
     const auto o = gen::makeObject("none", 777, i, gen::MeshFormat::Obj);
-    rejected += set.decideCategory(computeFeatures(o.mesh, set.featureOptions())).rejected;
+    rejected += set.decideCategory(computeFeatures(o.mesh, set.featureOptions()), o.mesh).rejected;
   }
   EXPECT_GE(rejected, n - 1);
   // A generated stove is not rejected.
   const auto stove = gen::makeObject("stove", 777, 0, gen::MeshFormat::Obj);
-  EXPECT_EQ(set.decideCategory(computeFeatures(stove.mesh, set.featureOptions())).category,
-            "stove");
+  EXPECT_EQ(
+      set.decideCategory(computeFeatures(stove.mesh, set.featureOptions()), stove.mesh).category,
+      "stove");
 }
 
 // The shipped classifier (and the evidence gate where the file carries one; the shipped file

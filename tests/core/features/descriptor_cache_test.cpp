@@ -114,6 +114,38 @@ TEST(DescriptorCache, KeepsTheTopReliefAndRewritesEntriesWrittenWithoutIt) {
   EXPECT_EQ(source, DescriptorSource::DescriptorCache);
 }
 
+TEST(DescriptorCache, KeepsThePartStatisticsAndRewritesEntriesWrittenWithoutThem) {
+  const fs::path dir = test::freshTempDir();
+  const fs::path mesh = writeBoxObj(dir);
+  const auto options = smallOptions(dir / "cache");
+  DescriptorSource source{};
+  const auto first = extractObjectDescriptor(mesh, options, &source);
+  EXPECT_EQ(source, DescriptorSource::Computed);
+  ASSERT_TRUE(first.hasPartStatistics);
+  EXPECT_EQ(first.partStatistics,
+            partStatistics(importMesh(mesh, ImportOptions(std::nullopt, /*detect=*/true))));
+  const auto cached = extractObjectDescriptor(mesh, options, &source);
+  EXPECT_EQ(source, DescriptorSource::DescriptorCache);
+  EXPECT_TRUE(cached.hasPartStatistics);
+  EXPECT_EQ(cached.partStatistics, first.partStatistics);
+
+  // An entry written before entries kept them serves whoever does not need them, and is
+  // computed again and rewritten for whoever does.
+  const auto entries = descriptorEntries(options.cacheDir);
+  ASSERT_EQ(entries.size(), 1u);
+  auto j = nlohmann::json::parse(readFileBytes(entries[0]));
+  j.erase("part_statistics");
+  writeFileAtomic(entries[0], j.dump());
+  const auto without =
+      extractObjectDescriptor(mesh, options, &source, /*needTopRelief=*/true, /*needPartStatistics=*/false);
+  EXPECT_EQ(source, DescriptorSource::DescriptorCache);
+  EXPECT_FALSE(without.hasPartStatistics);
+  EXPECT_EQ(extractObjectDescriptor(mesh, options, &source).partStatistics, first.partStatistics);
+  EXPECT_NE(source, DescriptorSource::DescriptorCache);
+  EXPECT_TRUE(extractObjectDescriptor(mesh, options, &source).hasPartStatistics);
+  EXPECT_EQ(source, DescriptorSource::DescriptorCache);
+}
+
 TEST(DescriptorCache, ReadsAFileInTheFrameOfItsDetectedUpAxisLikeAnnotate) {
   const fs::path dir = test::freshTempDir();
   // A counter-like slab written y-up: wide in x and z (the file's floor plane), low in y.
