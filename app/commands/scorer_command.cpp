@@ -17,6 +17,7 @@
 #include "core/common/resource_paths.h"
 #include "core/eval/evaluation.h"
 #include "core/eval/point_scorer_training.h"
+#include "core/eval/scorer_learning_curve_plot.h"
 #include "core/eval/point_scorer_update.h"
 #include "core/model/model_card.h"
 #include "core/model/model_files.h"
@@ -147,7 +148,8 @@ void setupScorer(CLI::App& root) {
       "cv", "Leave one source out over the curated real objects of the candidate files: per "
             "source, the count's points, a decision fitted on generated objects only and one "
             "fitted with the curated objects of the other sources; writes OUT/scorer_cv.md, .json "
-            "and OUT/confidence.json (the object confidence fitted on the points so decided)");
+            "(with --ks also the learning curve as OUT/scorer_cv.png) and OUT/confidence.json "
+            "(the object confidence fitted on the points so decided)");
   cv->add_option("--out", l->out, "Report folder (default scorer-cv)");
   cv->add_option("--ks", l->curve.ks,
                  "Learning curve: fit with k curated objects of the other sources too, e.g. "
@@ -185,6 +187,7 @@ void setupScorer(CLI::App& root) {
     const std::string md = sagrid::scorerCrossValidationMarkdown(result);
     sagrid::writeFileAtomic(out / "scorer_cv.md", md);
     sagrid::writeFileAtomic(out / "scorer_cv.json", sagrid::toJson(result).dump(2) + "\n");
+    sagrid::writeScorerLearningCurvePng(result, out / "scorer_cv.png");
     // The object confidence fitted on the points decided leave one source out: a models folder
     // takes it by copying OUT/confidence.json.
     if (result.confidence) sagrid::writeConfidenceCalibration(out, *result.confidence);

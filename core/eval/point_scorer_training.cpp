@@ -587,18 +587,19 @@ nlohmann::json toJson(const ScorerGuard& guard) {
           {"adopted_whole", guard.adoptedWhole()}, {"models", models}};
 }
 
-namespace {
-double editRatio(const PointChoiceFigures& f) {
-  return f.edits.handPoints ? static_cast<double>(f.edits.total()) / f.edits.handPoints : NAN;
+double PointChoiceFigures::editsPerHandPoint() const {
+  return edits.handPoints ? static_cast<double>(edits.total()) / edits.handPoints : NAN;
 }
+
+namespace {
 std::string cells(const PointChoiceFigures& f) {
-  return reportCell(editRatio(f), "%.2f") + " | " +
+  return reportCell(f.editsPerHandPoint(), "%.2f") + " | " +
          reportCell(100 * f.effort.oneKeyShare, "%.0f %%") + " | " +
          reportCell(100 * f.singleError, "%.1f");
 }
 nlohmann::json figuresJson(const PointChoiceFigures& f) {
   return {{"objects", f.effort.objects},           {"edits", f.edits.total()},
-          {"hand_points", f.edits.handPoints},     {"edits_per_hand_point", editRatio(f)},
+          {"hand_points", f.edits.handPoints},     {"edits_per_hand_point", f.editsPerHandPoint()},
           {"one_key_share", f.effort.oneKeyShare}, {"single_error_m", f.singleError}};
 }
 }  // namespace

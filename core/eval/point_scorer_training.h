@@ -58,6 +58,8 @@ struct PointChoiceFigures {
   PointEdits edits;          // summed over the objects
   double singleError = 0;    // metres, mean over (object, model) pairs with ground truth
   std::size_t singleErrors = 0;
+  // The curator's edits per point placed by hand (NaN without ground-truth points).
+  double editsPerHandPoint() const;
 };
 
 struct ScorerSourceFold {
