@@ -39,12 +39,12 @@ std::vector<ScorerCurveSeries> scorerCurveSeries(const ScorerCrossValidation& cv
   for (const auto& f : cv.folds) others += static_cast<double>(cv.realObjects - f.objects);
   others /= static_cast<double>(cv.folds.size());
   std::vector<ScorerCurveSeries> out = {
-      seriesOf("edits per hand point", cv.ks, cv.curve, cv.withCurated, others, cv.generatedOnly, edits),
-      seriesOf("first point's error", cv.ks, cv.curve, cv.withCurated, others, cv.generatedOnly, error)};
+      seriesOf("edits", cv.ks, cv.curve, cv.withCurated, others, cv.generatedOnly, edits),
+      seriesOf("error", cv.ks, cv.curve, cv.withCurated, others, cv.generatedOnly, error)};
   if (!cv.tunedOn.empty() && cv.unseenCurve.size() == cv.ks.size()) {
-    out.push_back(seriesOf("edits, sources no pass was made on", cv.ks, cv.unseenCurve,
+    out.push_back(seriesOf("edits, unseen", cv.ks, cv.unseenCurve,
                            cv.unseenWithCurated, others, cv.unseenGeneratedOnly, edits));
-    out.push_back(seriesOf("error, sources no pass was made on", cv.ks, cv.unseenCurve,
+    out.push_back(seriesOf("error, unseen", cv.ks, cv.unseenCurve,
                            cv.unseenWithCurated, others, cv.unseenGeneratedOnly, error));
   }
   return out;
@@ -55,10 +55,10 @@ void writeScorerLearningCurvePng(const ScorerCrossValidation& cv, const std::fil
   if (series.empty()) return;
   const plot::Color palette[] = {{31, 119, 180}, {214, 39, 40}, {158, 202, 225}, {255, 152, 150}};
   plot::LinePlot p;
-  p.title = "Point decision, leave one source out: " + std::to_string(cv.folds.size()) +
-            " sources, " + std::to_string(cv.draws) + " draw(s) per k";
-  p.xLabel = "k (curated objects of the other sources in training; last: all of them)";
-  p.yLabel = "share of the figure with generated objects only";
+  p.title = "Leave one source out, " + std::to_string(cv.folds.size()) + " sources";
+  p.xLabel = "k curated objects of the other sources (last: all), " + std::to_string(cv.draws) +
+             " draw(s) per k";
+  p.yLabel = "share of generated-only";
   double lastK = 0;
   for (std::size_t i = 0; i < series.size(); ++i) {
     plot::Series s;

@@ -20,8 +20,8 @@ struct ScorerCurveSeries {
   std::vector<double> k, share;  // share of the generated-only figure, per k
 };
 
-// Edits and error over every fold, then over the folds of the sources no pass was made on (with
-// tunedOn), each at cv.ks and, last, with all the other sources' objects (k = their mean number
+// Edits per hand point and the first point's error over every fold ("edits", "error"), then over
+// the folds of the sources no pass was made on ("edits, unseen", "error, unseen"; with tunedOn), each at cv.ks and, last, with all the other sources' objects (k = their mean number
 // over the folds). Empty without ks; a figure that is not finite at k or at generated-only is
 // left out.
 std::vector<ScorerCurveSeries> scorerCurveSeries(const ScorerCrossValidation& cv);
