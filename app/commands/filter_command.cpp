@@ -81,8 +81,8 @@ void setupFilter(CLI::App& root) {
       try {
         auto source = sagrid::DescriptorSource::Computed;
         const auto inputs = models.categoryInputSet();
-        const auto object = sagrid::extractObjectDescriptor(files[i].path, features, &source,
-                                                            inputs.topRelief, inputs.partStatistics);
+        const auto object = sagrid::extractObjectDescriptor(
+            files[i].path, features, &source, inputs.topRelief, inputs.partStatistics);
         if (source != sagrid::DescriptorSource::Computed) ++cached;
         const auto& descriptor = object.descriptor;
         const auto decision = models.decideCategory(object);

@@ -10,8 +10,8 @@
 // its probability is below `threshold`. Inputs: the descriptor, and as its file says also the
 // relief of the object's top (core/grid/top_relief.h: basins, burner spots, flat lids) and the
 // statistics of the mesh's parts (core/geometry/part_statistics.h: families of copies such as
-// burner caps and rows of knobs), which the descriptor misses. Stored as <models folder>/category.json (kCategoryClassifierFile) next to the
-// model cards.
+// burner caps and rows of knobs), which the descriptor misses. Stored as
+// <models folder>/category.json (kCategoryClassifierFile) next to the model cards.
 #pragma once
 
 #include <filesystem>
@@ -130,7 +130,7 @@ class CategoryClassifier {
   const std::vector<std::string>& classes() const { return m_classes; }
   double threshold() const { return m_threshold; }
   void setThreshold(double t) { m_threshold = t; }
-  std::size_t descriptorSize() const { return m_centre.size(); }  // inputs, relief included
+  std::size_t descriptorSize() const { return m_centre.size(); }  // all inputs (categoryInputs)
   const CategoryInputSet& inputSet() const { return m_inputs; }  // categoryInputs(..., inputSet())
 
   // Feature setup the descriptors came from (checked against the model cards).

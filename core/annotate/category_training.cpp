@@ -58,9 +58,10 @@ std::vector<CategorySample> collectCategorySamples(
       if (!labels.object.up.empty()) objectFeatures.up = parseUpAxis(labels.object.up);
       // The parts are read from the mesh in the frame its features were computed in.
       const FeatureGrid grid = extractFeatures(entry.mesh, objectFeatures);
-      s.descriptor = categoryInputs(
-          grid, inputs.partStatistics ? importMesh(entry.mesh, ImportOptions(objectFeatures.up)) : Mesh{},
-          inputs);
+      const Mesh mesh = inputs.partStatistics
+                            ? importMesh(entry.mesh, ImportOptions(objectFeatures.up))
+                            : Mesh{};
+      s.descriptor = categoryInputs(grid, mesh, inputs);
       s.mesh = entry.mesh;
       s.up = labels.object.up;
       s.featureCache = options.cacheDir;

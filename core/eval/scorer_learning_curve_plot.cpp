@@ -50,7 +50,8 @@ std::vector<ScorerCurveSeries> scorerCurveSeries(const ScorerCrossValidation& cv
   return out;
 }
 
-void writeScorerLearningCurvePng(const ScorerCrossValidation& cv, const std::filesystem::path& file) {
+void writeScorerLearningCurvePng(const ScorerCrossValidation& cv,
+                                 const std::filesystem::path& file) {
   const auto series = scorerCurveSeries(cv);
   if (series.empty()) return;
   const plot::Color palette[] = {{31, 119, 180}, {214, 39, 40}, {158, 202, 225}, {255, 152, 150}};

@@ -21,13 +21,15 @@ struct ScorerCurveSeries {
 };
 
 // Edits per hand point and the first point's error over every fold ("edits", "error"), then over
-// the folds of the sources no pass was made on ("edits, unseen", "error, unseen"; with tunedOn), each at cv.ks and, last, with all the other sources' objects (k = their mean number
-// over the folds). Empty without ks; a figure that is not finite at k or at generated-only is
+// the folds of the sources no pass was made on ("edits, unseen", "error, unseen"; with tunedOn),
+// each at cv.ks and, last, with all the other sources' objects (k = their mean number over the
+// folds). Empty without ks; a figure that is not finite at k or at generated-only is
 // left out.
 std::vector<ScorerCurveSeries> scorerCurveSeries(const ScorerCrossValidation& cv);
 
 // scorerCurveSeries as a PNG line plot with the target line; nothing without ks. Throws FileError
 // when the file cannot be written.
-void writeScorerLearningCurvePng(const ScorerCrossValidation& cv, const std::filesystem::path& file);
+void writeScorerLearningCurvePng(const ScorerCrossValidation& cv,
+                                 const std::filesystem::path& file);
 
 }  // namespace sagrid

@@ -17,7 +17,8 @@ struct Family {
   float width = 0, height = 0, flatness = 0;
 };
 
-// Families of `instances` (indices into parts) among which `member` holds, largest first.
+// The families of copies among `instances` (indices into parts): each instance with its copies
+// that are instances too, each instance in one family; most members first, then widest.
 std::vector<Family> families(const std::vector<ConnectedPart>& parts,
                              const std::vector<std::size_t>& instances, const PartCopies& copies,
                              const Eigen::AlignedBox3f& bounds, float extent) {
@@ -75,7 +76,8 @@ std::array<float, kPartStatisticsSize> partStatistics(const Mesh& mesh) {
   if (!all.empty())
     out[2] = logCount(all[0].members), out[3] = all[0].width, out[4] = all[0].height,
     out[5] = all[0].flatness;
-  if (all.size() > 1) out[6] = logCount(all[1].members), out[7] = all[1].width, out[8] = all[1].height;
+  if (all.size() > 1)
+    out[6] = logCount(all[1].members), out[7] = all[1].width, out[8] = all[1].height;
   if (!round.empty())
     out[9] = logCount(round[0].members), out[10] = round[0].width, out[11] = round[0].height;
   std::set<int> materials(mesh.triangleMaterials.begin(), mesh.triangleMaterials.end());
