@@ -81,6 +81,17 @@ TEST(DescriptorCache, TakesTheDescriptorOfAFullFeatureEntryAndRewritesADamagedEn
   EXPECT_EQ(source, DescriptorSource::DescriptorCache);
 }
 
+// Makes the cache's one descriptor entry look written before it kept `key`; false when the cache
+// does not hold exactly one entry.
+bool eraseFromTheOnlyEntry(const fs::path& cache, const std::string& key) {
+  const auto entries = descriptorEntries(cache);
+  if (entries.size() != 1) return false;
+  auto j = nlohmann::json::parse(readFileBytes(entries[0]));
+  j.erase(key);
+  writeFileAtomic(entries[0], j.dump());
+  return true;
+}
+
 TEST(DescriptorCache, KeepsTheTopReliefAndRewritesEntriesWrittenWithoutIt) {
   const fs::path dir = test::freshTempDir();
   const fs::path mesh = writeBoxObj(dir);
@@ -99,11 +110,7 @@ TEST(DescriptorCache, KeepsTheTopReliefAndRewritesEntriesWrittenWithoutIt) {
 
   // An entry of the earlier format (descriptor only) serves the descriptor alone, and is
   // computed again and rewritten when the relief is asked for.
-  const auto entries = descriptorEntries(options.cacheDir);
-  ASSERT_EQ(entries.size(), 1u);
-  auto j = nlohmann::json::parse(readFileBytes(entries[0]));
-  j.erase("top_relief");
-  writeFileAtomic(entries[0], j.dump());
+  ASSERT_TRUE(eraseFromTheOnlyEntry(options.cacheDir, "top_relief"));
   EXPECT_EQ(extractDescriptor(mesh, options, &source), first.descriptor);
   EXPECT_EQ(source, DescriptorSource::DescriptorCache);
   extractObjectDescriptor(mesh, options, &source, /*needTopRelief=*/false);
@@ -131,13 +138,9 @@ TEST(DescriptorCache, KeepsThePartStatisticsAndRewritesEntriesWrittenWithoutThem
 
   // An entry written before entries kept them serves whoever does not need them, and is
   // computed again and rewritten for whoever does.
-  const auto entries = descriptorEntries(options.cacheDir);
-  ASSERT_EQ(entries.size(), 1u);
-  auto j = nlohmann::json::parse(readFileBytes(entries[0]));
-  j.erase("part_statistics");
-  writeFileAtomic(entries[0], j.dump());
-  const auto without =
-      extractObjectDescriptor(mesh, options, &source, /*needTopRelief=*/true, /*needPartStatistics=*/false);
+  ASSERT_TRUE(eraseFromTheOnlyEntry(options.cacheDir, "part_statistics"));
+  const auto without = extractObjectDescriptor(mesh, options, &source, /*needTopRelief=*/true,
+                                               /*needPartStatistics=*/false);
   EXPECT_EQ(source, DescriptorSource::DescriptorCache);
   EXPECT_FALSE(without.hasPartStatistics);
   EXPECT_EQ(extractObjectDescriptor(mesh, options, &source).partStatistics, first.partStatistics);
