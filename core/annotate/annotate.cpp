@@ -13,6 +13,7 @@
 #include "core/common/error.h"
 #include "core/features/feature_grid.h"
 #include "core/features/vector_channels.h"
+#include "core/geometry/material_parts.h"
 #include "core/geometry/surface_scene.h"
 #include "core/mesh/mesh_import.h"
 
@@ -161,10 +162,18 @@ AnnotationResult annotateMeshFile(const fs::path& meshFile, const std::string& i
   // The classifier's (or retrieval's) decision when the caller names no category; its evidence
   // gate is applied below, once the category's models have run.
   std::optional<CategoryDecision> decided;
+  // The mesh's parts, found once where the classifier reads them; the learned point decision
+  // seeds its candidates from the same.
+  std::optional<std::vector<ConnectedPart>> meshParts;
+  if (options.category.empty() && models.categoryInputSet().partStatistics)
+    meshParts = connectedAndMaterialParts(mesh);
+  const ObjectForPasses object{mesh, features, scene, featureOptions,
+                               meshParts ? &*meshParts : nullptr};
   if (options.category.empty()) {
     // The classifier with rejection when the models folder has one (reading the mesh's parts
     // where its file says so), else retrieval.
-    const CategoryDecision& decision = decided.emplace(models.decideCategory(features, mesh));
+    const CategoryDecision& decision =
+        decided.emplace(models.decideCategory(features, mesh, object.meshParts));
     r.category = decision.category;
     r.categorySimilarity = decision.score;
     r.categoryRetrieved = true;
@@ -197,7 +206,7 @@ AnnotationResult annotateMeshFile(const fs::path& meshFile, const std::string& i
       // No hard gate: the likeliest category's points, as suggestions.
       const auto closestModels = models.forCategory(r.closestCategory);
       const CategoryPoints suggested =
-          predictCategoryPoints(closestModels, {mesh, features, scene, featureOptions}, passes,
+          predictCategoryPoints(closestModels, object, passes,
                                 options.mode, options.counts, [](std::size_t) {});
       appendPredictedPoints(r.labels, suggested.predictions);
       markSuggestions(r.labels, r.closestCategory);
@@ -208,7 +217,7 @@ AnnotationResult annotateMeshFile(const fs::path& meshFile, const std::string& i
   }
   const auto categoryModels = models.forCategory(r.category);
   CategoryPoints points = predictCategoryPoints(
-      categoryModels, {mesh, features, scene, featureOptions}, passes, options.mode,
+      categoryModels, object, passes, options.mode,
       options.counts, [&](std::size_t m) {
         stage(0.7f + 0.3f * static_cast<float>(m) / static_cast<float>(categoryModels.size()),
               categoryModels[m]->card().name);

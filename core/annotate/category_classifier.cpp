@@ -52,11 +52,13 @@ std::vector<float> categoryInputs(const ObjectDescriptor& object,
 }
 
 std::vector<float> categoryInputs(const FeatureGrid& grid, const Mesh& mesh,
-                                  const CategoryInputSet& set) {
+                                  const CategoryInputSet& set,
+                                  const std::vector<ConnectedPart>* meshParts) {
   ObjectDescriptor object;
   object.descriptor = grid.descriptor;
   if (set.topRelief) object.topRelief = sagrid::topRelief(grid.voxels, grid.resolution);
-  if (set.partStatistics) object.partStatistics = partStatistics(mesh);
+  if (set.partStatistics)
+    object.partStatistics = meshParts ? partStatistics(mesh, *meshParts) : partStatistics(mesh);
   return categoryInputs(object, set);
 }
 

@@ -104,9 +104,11 @@ struct Mesh;
 // part statistics where `set` asks for them.
 std::vector<float> categoryInputs(const ObjectDescriptor& object, const CategoryInputSet& set);
 // The same of an object's features and the mesh they came from (its top relief from the grid's
-// voxels, its part statistics from the mesh: each computed only where `set` asks for it).
+// voxels, its part statistics from the mesh: each computed only where `set` asks for it; from
+// `meshParts`, connectedAndMaterialParts(mesh), where given).
 std::vector<float> categoryInputs(const FeatureGrid& grid, const Mesh& mesh,
-                                  const CategoryInputSet& set);
+                                  const CategoryInputSet& set,
+                                  const std::vector<ConnectedPart>* meshParts = nullptr);
 
 class CategoryClassifier {
  public:

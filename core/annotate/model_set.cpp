@@ -88,9 +88,11 @@ void ModelSet::setCategoryClassifier(CategoryClassifier classifier,
   m_classifier = std::move(classifier);
 }
 
-CategoryDecision ModelSet::decideCategory(const FeatureGrid& features, const Mesh& mesh) const {
+CategoryDecision ModelSet::decideCategory(const FeatureGrid& features, const Mesh& mesh,
+                                          const std::vector<ConnectedPart>* meshParts) const {
   if (m_classifier)
-    return m_classifier->classify(categoryInputs(features, mesh, m_classifier->inputSet()));
+    return m_classifier->classify(
+        categoryInputs(features, mesh, m_classifier->inputSet(), meshParts));
   return decideCategory(features.descriptor);
 }
 

@@ -51,7 +51,10 @@ class ModelSet {
 
   // The category of an object: the classifier's decision (possibly rejected, category "none")
   // when the folder has one, else the best retrieved category (never rejected).
-  CategoryDecision decideCategory(const FeatureGrid& features, const Mesh& mesh) const;
+  // `meshParts`: connectedAndMaterialParts(mesh) where found already (else found here when the
+  // classifier reads them).
+  CategoryDecision decideCategory(const FeatureGrid& features, const Mesh& mesh,
+                                  const std::vector<ConnectedPart>* meshParts = nullptr) const;
   // The same from what a descriptor cache entry holds (`sagrid filter`): it must hold what the
   // classifier reads (categoryInputSet()).
   CategoryDecision decideCategory(const ObjectDescriptor& object) const;

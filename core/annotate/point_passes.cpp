@@ -44,7 +44,11 @@ ModelPrediction locateWithModel(const model::AffordanceModel& model, const Objec
 }  // namespace
 
 std::vector<ConnectedPart> normalizedParts(const Mesh& mesh, const Normalization& normalization) {
-  auto parts = connectedAndMaterialParts(mesh);
+  return normalizedParts(connectedAndMaterialParts(mesh), normalization);
+}
+
+std::vector<ConnectedPart> normalizedParts(std::vector<ConnectedPart> parts,
+                                           const Normalization& normalization) {
   for (auto& part : parts) {
     part.area *= normalization.scale * normalization.scale;
     part.spread *= normalization.scale;
@@ -85,7 +89,9 @@ CategoryPoints predictCategoryPoints(const std::vector<const model::AffordanceMo
   const bool decide = (passes.scorer || passes.keepCandidates) && mode == InstanceMode::Auto &&
                       counts.empty();
   const std::vector<ConnectedPart> parts =
-      decide ? normalizedParts(mesh, features.normalization) : std::vector<ConnectedPart>{};
+      !decide           ? std::vector<ConnectedPart>{}
+      : object.meshParts ? normalizedParts(*object.meshParts, features.normalization)
+                         : normalizedParts(mesh, features.normalization);
   CategoryPoints out;
   for (auto& model : located) out.predictions.push_back(model.get());
   out.evidence = affordanceEvidence(out.predictions);

@@ -31,6 +31,9 @@ struct ObjectForPasses {
   const FeatureGrid& features;
   const SurfaceScene& scene;
   const FeatureOptions& featureOptions;
+  // The mesh's parts (connectedAndMaterialParts, z-up mesh frame) where they were found already
+  // (the category decision read them); null: found here when the learned decision needs them.
+  const std::vector<ConnectedPart>* meshParts = nullptr;
 };
 
 struct CategoryPoints {
@@ -49,6 +52,9 @@ struct Normalization;
 // separates, connectedAndMaterialParts) in the normalized frame of `normalization`: the parts the
 // point candidates are seeded from.
 std::vector<ConnectedPart> normalizedParts(const Mesh& mesh, const Normalization& normalization);
+// The same from the mesh's parts (connectedAndMaterialParts, z-up mesh frame).
+std::vector<ConnectedPart> normalizedParts(std::vector<ConnectedPart> meshParts,
+                                           const Normalization& normalization);
 
 // `passes` with `models`' learned point decision (ModelSet::pointScorer) when
 // passes.learnedDecision is on, and the passes it learned without (the crop) switched off; without

@@ -53,11 +53,15 @@ float logCount(std::size_t n) { return std::log1p(static_cast<float>(n)); }
 }  // namespace
 
 std::array<float, kPartStatisticsSize> partStatistics(const Mesh& mesh) {
+  return partStatistics(mesh, connectedAndMaterialParts(mesh));
+}
+
+std::array<float, kPartStatisticsSize> partStatistics(const Mesh& mesh,
+                                                      const std::vector<ConnectedPart>& parts) {
   std::array<float, kPartStatisticsSize> out{};
   const Eigen::AlignedBox3f bounds = mesh.bounds();
   if (bounds.isEmpty() || !(bounds.sizes().maxCoeff() > 0)) return out;
   const float extent = bounds.sizes().maxCoeff();
-  const auto parts = connectedAndMaterialParts(mesh);
   std::vector<std::size_t> instances, roundFlat;
   std::size_t counted = 0, byMaterial = 0;
   for (std::size_t p = 0; p < parts.size(); ++p) {

@@ -5,6 +5,9 @@
 #pragma once
 
 #include <array>
+#include <vector>
+
+#include "core/geometry/connected_parts.h"
 
 namespace sagrid {
 
@@ -28,6 +31,10 @@ inline constexpr int kPartStatisticsSize = 14;
 //  13 share of the parts that only their material separates
 // All zero for an empty mesh; a family's entries zero where there is none.
 std::array<float, kPartStatisticsSize> partStatistics(const Mesh& mesh);
+// The same from the mesh's parts when they were found already (connectedAndMaterialParts(mesh),
+// its frame).
+std::array<float, kPartStatisticsSize> partStatistics(const Mesh& mesh,
+                                                      const std::vector<ConnectedPart>& parts);
 
 // A short name of each entry, in order (`sagrid info --parts`).
 inline constexpr std::array<const char*, kPartStatisticsSize> kPartStatisticNames = {
