@@ -23,8 +23,14 @@ std::vector<fs::path> filesOf(const fs::path& folder, const std::string& modelNa
 
 void copyModelFiles(const fs::path& from, const fs::path& to, const std::string& modelName) {
   fs::create_directories(to);
-  for (const auto& file : filesOf(from, modelName))
-    fs::copy_file(file, to / file.filename(), fs::copy_options::overwrite_existing);
+  for (const auto& file : filesOf(from, modelName)) {
+    const fs::path target = to / file.filename();
+    std::error_code ec;
+    // A folder of links to the models it is copied from already holds them (copying a file onto
+    // itself fails).
+    if (fs::equivalent(file, target, ec)) continue;
+    fs::copy_file(file, target, fs::copy_options::overwrite_existing);
+  }
 }
 
 void moveModelFiles(const fs::path& from, const fs::path& to, const std::string& modelName) {

@@ -9,7 +9,7 @@
 namespace sagrid::model {
 
 // Copies the files of `modelName` (every model when empty) from `from` into `to` (created),
-// replacing files of the same names.
+// replacing files of the same names (a file that is already the same one, a link to it, stays).
 void copyModelFiles(const std::filesystem::path& from, const std::filesystem::path& to,
                     const std::string& modelName = "");
 // Moves them instead (the source folder keeps its other files).
