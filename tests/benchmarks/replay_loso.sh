@@ -104,3 +104,23 @@ for d in "$work"/sources/*/; do
 done
 "$sagrid" eval --curation "$work/curation.jsonl" --out "$work/report" > "$work/eval.log" 2>&1
 cat "$work/report/curation.md"
+
+# The same per curated category (the log names objects as annotate does: <folder>__<mesh stem>).
+python3 - "$work/report/curation.json" "$root/resources/datasets/wild" <<'PY'
+import collections, json, os, sys
+report, truth = json.load(open(sys.argv[1])), sys.argv[2]
+category = {}
+for name in os.listdir(truth):
+    file = os.path.join(truth, name, 'labels.json')
+    if os.path.isfile(file):
+        category[name] = json.load(open(file))['object']['category']
+rows = collections.defaultdict(list)
+for o in report['objects']:
+    rows[category.get(o['object'].rsplit('__', 1)[0], '?')].append(o)
+print('\n## By curated category\n\n| category | objects | edits / object | one key | KLM s / object |')
+print('|---|---:|---:|---:|---:|')
+for c, objects in sorted(rows.items()):
+    n = len(objects)
+    print('| %s | %d | %.2f | %.0f %% | %.1f |' % (c, n, sum(o['edits'] for o in objects) / n,
+          100.0 * sum(o['one_key'] for o in objects) / n, sum(o['klm_seconds'] for o in objects) / n))
+PY
