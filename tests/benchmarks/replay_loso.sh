@@ -33,15 +33,15 @@ log() { echo "replay_loso.sh: $*" >&2; }
 # The pool, unlabelled, with one object list and one held-out split per repository.
 mkdir -p "$work/empty"
 "$sagrid" corpus wild --from "$POOL" --labels "$work/empty" --out "$work/pool" > "$work/corpus.log" 2>&1
-python3 - "$work" "$CANDIDATES_REAL" <<'PY'
+python3 - "$work" "$CANDIDATES_REAL" "${IN_SAMPLE:-0}" <<'PY'
 import collections, json, os, sys
-work, real_file = sys.argv[1], sys.argv[2]
+work, real_file, in_sample = sys.argv[1], sys.argv[2], sys.argv[3] == '1'
 pool = os.path.join(work, 'pool', 'unlabelled')
 by_source = collections.defaultdict(list)
 for line in open(os.path.join(pool, 'manifest.jsonl')):
     entry = json.loads(line)
     by_source[entry['source']].append(entry)
-real = json.load(open(real_file))
+real = None if in_sample else json.load(open(real_file))  # the shipped decision in sample
 for i, (source, entries) in enumerate(sorted(by_source.items())):
     d = os.path.join(work, 'sources', '%02d' % i)
     os.makedirs(d, exist_ok=True)
@@ -52,9 +52,10 @@ for i, (source, entries) in enumerate(sorted(by_source.items())):
         for e in entries:  # the ids `annotate` gives a folder's objects
             stem = os.path.splitext(os.path.basename(e['mesh']))[0]
             f.write('%s__%s\t%s\n' % (e['id'], stem, os.path.join(pool, e['mesh'])))
-    kept = dict(real)
-    kept['sets'] = [s for s in real['sets'] if s['source'] != source]
-    json.dump(kept, open(os.path.join(d, 'candidates.json'), 'w'))
+    if real:
+        kept = dict(real)
+        kept['sets'] = [s for s in real['sets'] if s['source'] != source]
+        json.dump(kept, open(os.path.join(d, 'candidates.json'), 'w'))
 PY
 
 for d in "$work"/sources/*/; do
