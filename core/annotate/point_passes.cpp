@@ -1,11 +1,13 @@
 #include "core/annotate/point_passes.h"
 
+#include <algorithm>
 #include <future>
 
 #include "core/annotate/category_evidence.h"
 #include "core/annotate/coarse_to_fine.h"
 #include "core/annotate/model_set.h"
 #include "core/annotate/point_scorer.h"
+#include "core/geometry/crease_patches.h"
 #include "core/geometry/material_parts.h"
 #include "core/geometry/surface_scene.h"
 #include "core/mesh/mesh.h"
@@ -88,28 +90,39 @@ CategoryPoints predictCategoryPoints(const std::vector<const model::AffordanceMo
   }
   const bool decide = (passes.scorer || passes.keepCandidates) && mode == InstanceMode::Auto &&
                       counts.empty();
-  const std::vector<ConnectedPart> parts =
-      !decide           ? std::vector<ConnectedPart>{}
-      : object.meshParts ? normalizedParts(*object.meshParts, features.normalization)
-                         : normalizedParts(mesh, features.normalization);
+  // The mesh's parts, and with its crease patches where a model's card asks for them.
+  std::vector<ConnectedPart> parts, partsAndPatches;
+  if (decide) {
+    std::vector<ConnectedPart> meshParts =
+        object.meshParts ? *object.meshParts : connectedAndMaterialParts(mesh);
+    if (std::any_of(models.begin(), models.end(),
+                    [](const auto* m) { return m->card().extraction.creasePatches; })) {
+      std::vector<ConnectedPart> withPatches = meshParts;
+      appendNewParts(withPatches, creasePatches(mesh), &ConnectedPart::byCrease);
+      partsAndPatches = normalizedParts(std::move(withPatches), features.normalization);
+    }
+    parts = normalizedParts(std::move(meshParts), features.normalization);
+  }
   CategoryPoints out;
   for (auto& model : located) out.predictions.push_back(model.get());
   out.evidence = affordanceEvidence(out.predictions);
   if (!decide) return out;
   // The learned decision: it chooses among the count's points, the field's minima and the small
-  // parts.
+  // parts (and crease patches, where the model's card says so).
   for (std::size_t m = 0; m < out.predictions.size(); ++m) {
     ModelPrediction& p = out.predictions[m];
-    auto found = pointCandidates(p.field, p.points, parts, [&](const Eigen::Vector3f& at) {
+    const auto& card = models[m]->card();
+    auto found = pointCandidates(p.field, p.points,
+                                 card.extraction.creasePatches ? partsAndPatches : parts,
+                                 [&](const Eigen::Vector3f& at) {
       const SurfacePoint s = projectToSurface(at, features.normalization, scene, mesh.fileUp);
       return SurfaceContact{fileToZUpRotation(mesh.fileUp) * s.normal,
                             s.moved * features.normalization.scale};
     });
     const ModelPointScorer* scorer =
-        passes.scorer ? passes.scorer->forModel(models[m]->card().name) : nullptr;
+        passes.scorer ? passes.scorer->forModel(card.name) : nullptr;
     if (scorer && !found.empty())
-      setPoints(p, scoredPoints(*scorer, found, models[m]->card().extraction), features, scene,
-                mesh.fileUp);
+      setPoints(p, scoredPoints(*scorer, found, card.extraction), features, scene, mesh.fileUp);
     if (passes.keepCandidates) out.candidates.push_back(std::move(found));
   }
   return out;

@@ -26,6 +26,8 @@ struct ConnectedPart {
   // Set for a part that only its material separates from the rest of its connected part
   // (connectedAndMaterialParts, core/geometry/material_parts.h).
   bool byMaterial = false;
+  // Set for a patch of the surface that only creases bound (core/geometry/crease_patches.h).
+  bool byCrease = false;
 };
 
 // Every connected part of `mesh`, in its frame, largest triangle count first (ties: the order of

@@ -20,6 +20,16 @@ struct MaterialPart {
 // Every material's connected parts, materials in order, each material's parts largest first.
 std::vector<MaterialPart> materialParts(const Mesh& mesh);
 
+// The connected parts of each group of triangles (`groupOfTriangle`, one entry per triangle; a
+// triangle with an out-of-range index belongs to none), groups in ascending order, each group's
+// parts largest first; MaterialPart::material is the group.
+std::vector<MaterialPart> groupParts(const Mesh& mesh, const std::vector<int>& groupOfTriangle);
+
+// Appends to `parts` each of `more` that is not one of those it held before (the same triangle
+// count and box), with `flag` set on it (ConnectedPart::byMaterial, ::byCrease).
+void appendNewParts(std::vector<ConnectedPart>& parts, std::vector<ConnectedPart> more,
+                    bool ConnectedPart::*flag);
+
 // The mesh's parts as a segmentation finer than connectivity: every connected part, then every
 // material's connected part that is not one of them (the same triangle count and box), so a knob
 // or burner zone fused into the body but drawn in a material of its own is a part too. Any part

@@ -105,7 +105,8 @@ json toJson(const ModelCard& c) {
                            {"refine_voxels", c.extraction.refineVoxels},
                            {"max_distance_above_best", c.extraction.maxDistanceAboveBest},
                            {"min_persistence", c.extraction.minPersistence},
-                           {"coarse_to_fine", c.extraction.coarseToFine}};
+                           {"coarse_to_fine", c.extraction.coarseToFine},
+                           {"crease_patches", c.extraction.creasePatches}};
   j["retrieval"] = {{"descriptor_mean", c.descriptorMean}, {"descriptor_std", c.descriptorStd}};
   j["embedding_search"] = {{"affordance_feature_mean", c.affordanceFeatureMean}};
   j["training"] = c.training;
@@ -159,6 +160,7 @@ ModelCard modelCardFromJson(const json& j, const fs::path& path) {
           p.value("max_distance_above_best", c.extraction.maxDistanceAboveBest);
       c.extraction.minPersistence = p.value("min_persistence", c.extraction.minPersistence);
       c.extraction.coarseToFine = p.value("coarse_to_fine", c.extraction.coarseToFine);
+      c.extraction.creasePatches = p.value("crease_patches", c.extraction.creasePatches);
     }
     if (j.contains("retrieval")) {
       c.descriptorMean = j.at("retrieval").value("descriptor_mean", std::vector<float>{});

@@ -38,6 +38,7 @@ enum Feature {
   kFacingUp,
   kSurfaceDepth,
   kPartByMaterial,
+  kPartByCrease,
   kFeatureCount
 };
 
@@ -151,7 +152,8 @@ const std::vector<std::string>& candidateFeatureNames() {
       "radial",         "edge",                "centre_line",    "on_part",
       "part_size",      "part_flatness",       "part_roundness", "part_copies",
       "part_round_flat", "kept_count",         "nearest_kept",   "crowding",
-      "best_kept",      "facing_up",           "surface_depth",  "part_by_material"};
+      "best_kept",      "facing_up",           "surface_depth",  "part_by_material",
+      "part_by_crease"};
   // clang-format on
   return names;
 }
@@ -242,6 +244,7 @@ std::vector<PointCandidate> pointCandidates(const PredictedField& field,
           std::min(std::log1p(static_cast<float>(copies.of(*on).size())) / std::log(9.0f), 1.0f);
       f[kPartRoundFlat] = isRoundFlatPart(part);
       f[kPartByMaterial] = part.byMaterial;
+      f[kPartByCrease] = part.byCrease;
     }
     f[kKeptCount] = std::log1p(static_cast<float>(kept.size())) / std::log(9.0f);
     float nearestKept = kNearCap;

@@ -42,6 +42,11 @@ struct ExtractionSettings {
   // caller says otherwise (`train --coarse-to-fine` sets it; the shipped sink.togglebutton card
   // has it on).
   bool coarseToFine = false;
+  // The learned point decision also takes candidates from the mesh's crease patches
+  // (core/geometry/crease_patches.h: a burner's ring modelled into the hob) for this model. On
+  // where leaving one source out shows it helps: the shipped stove cards (resources/models/
+  // README.md, session 42); for the sink models more candidates made worse decisions.
+  bool creasePatches = false;
 };
 
 struct ExtractedPoint {

@@ -5,6 +5,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <fstream>
 
 #include <nlohmann/json.hpp>
@@ -86,6 +87,43 @@ TEST(ScorerTrainCli, RefusesCandidatesOfOtherNetworksThanTheModelsFolders) {
                 quotedPath(dir / "out"));
   ASSERT_EQ(r.exitCode, 0) << r.output;
   EXPECT_TRUE(readPointScorer(dir / "out").has_value());
+}
+
+// Candidates on the mesh's crease patches: made for the models whose card says so (the shipped
+// stove cards) and for no other.
+TEST(ScorerCandidatesCli, CreasePatchesGiveCandidatesWhereTheModelsCardSaysSo) {
+  const fs::path dir = test::freshTempDir();
+  gen::generateDataset({{"stove", 1, 85}}, gen::MeshFormat::Obj, dir / "data");
+  const fs::path models = dir / "models";
+  fs::copy(fs::path(SAGRID_SOURCE_DIR) / "resources/models", models);
+  fs::remove(models / kPointScorerFile);  // learned on the shipped candidates; not needed here
+  const auto onPatches = [&] {
+    const fs::path out = dir / "candidates.json";
+    const auto r = runSagrid("scorer candidates --models " + quotedPath(models) + " --data " +
+                             quotedPath(dir / "data") + " --out " + quotedPath(out));
+    EXPECT_EQ(r.exitCode, 0) << r.output;
+    nlohmann::json j;
+    std::ifstream(out) >> j;
+    const auto& names = j.at("features");
+    const auto column = std::find(names.begin(), names.end(), "part_by_crease") - names.begin();
+    int count = 0;
+    for (const auto& set : j.at("sets"))
+      for (const auto& features : set.at("features")) count += features.at(column) == 1.0;
+    return count;
+  };
+  const auto switchCards = [&](bool on) {
+    for (const char* model : {"stove.heatsource", "stove.togglebutton"}) {
+      const fs::path card = models / (std::string(model) + ".json");
+      nlohmann::json j;
+      std::ifstream(card) >> j;
+      EXPECT_EQ(j["point_extraction"]["crease_patches"], !on) << model;  // shipped on
+      j["point_extraction"]["crease_patches"] = on;
+      std::ofstream(card) << j.dump(2);
+    }
+  };
+  EXPECT_GT(onPatches(), 0);
+  switchCards(false);
+  EXPECT_EQ(onPatches(), 0);
 }
 
 }  // namespace

@@ -105,17 +105,24 @@ TEST(ModelCardValidation, CardsWithoutTheNewerCountSettingsReadAsBefore) {
   EXPECT_EQ(extraction.minPersistence, 0.0f);
 }
 
-TEST(ModelCardValidation, TheSecondPassSwitchIsReadAndOlderCardsRunWithoutIt) {
-  const fs::path card = savedCard();
-  EXPECT_FALSE(AffordanceModel::load(card).card().extraction.coarseToFine);  // written as false
-  edit(card, [](json& j) { j["point_extraction"]["coarse_to_fine"] = true; });
-  const ModelCard read = AffordanceModel::load(card).card();
-  EXPECT_TRUE(read.extraction.coarseToFine);
-  EXPECT_EQ(toJson(read)["point_extraction"]["coarse_to_fine"], true);  // kept on rewrite
-  edit(card, [](json& j) { j["point_extraction"].erase("coarse_to_fine"); });
-  EXPECT_FALSE(AffordanceModel::load(card).card().extraction.coarseToFine);
-  edit(card, [](json& j) { j["point_extraction"]["coarse_to_fine"] = "yes"; });
-  EXPECT_THAT(loadError(card), HasSubstr("wrong field type"));
+TEST(ModelCardValidation, ThePerModelSwitchesAreReadAndOlderCardsRunWithoutThem) {
+  // The second pass and the crease patches' candidates: off unless the card says so.
+  const std::pair<const char*, bool ExtractionSettings::*> switches[] = {
+      {"coarse_to_fine", &ExtractionSettings::coarseToFine},
+      {"crease_patches", &ExtractionSettings::creasePatches}};
+  for (const auto& [name, member] : switches) {
+    SCOPED_TRACE(name);
+    const fs::path card = savedCard();
+    EXPECT_FALSE(AffordanceModel::load(card).card().extraction.*member);  // written as false
+    edit(card, [name = name](json& j) { j["point_extraction"][name] = true; });
+    const ModelCard read = AffordanceModel::load(card).card();
+    EXPECT_TRUE(read.extraction.*member);
+    EXPECT_EQ(toJson(read)["point_extraction"][name], true);  // kept on rewrite
+    edit(card, [name = name](json& j) { j["point_extraction"].erase(name); });
+    EXPECT_FALSE(AffordanceModel::load(card).card().extraction.*member);
+    edit(card, [name = name](json& j) { j["point_extraction"][name] = "yes"; });
+    EXPECT_THAT(loadError(card), HasSubstr("wrong field type"));
+  }
 }
 
 TEST(ModelCardValidation, DuplicatedCardInOneFolderIsRefused) {

@@ -108,6 +108,23 @@ TEST(PointCandidates, ACandidateOnAPartIsLinkedToItsPlaceOnEachCopy) {
     }
 }
 
+TEST(PointCandidates, ACreasePatchIsAPartThatSaysSo) {
+  // A burner's ring modelled into the hob: a crease patch (core/geometry/crease_patches.h) where
+  // no connected part is; a knob of its own beside it.
+  const Eigen::Vector3f ring = onPlate(8, 16), knob = onPlate(24, 16);
+  const PredictedField field = test::plateFieldWithOffsets({knob}, {0.0f});
+  ConnectedPart patch = knobAt(ring);
+  patch.byCrease = true;
+  const auto candidates =
+      pointCandidates(field, {test::pointOnField(field, knob)}, {knobAt(knob), patch}, facingUp);
+  const PointCandidate* atRing = candidateNear(candidates, ring);
+  const PointCandidate* atKnob = candidateNear(candidates, knob);
+  ASSERT_TRUE(atRing && atKnob);
+  EXPECT_EQ(feature(*atRing, "part_centroid"), 1.0f);
+  EXPECT_EQ(feature(*atRing, "part_by_crease"), 1.0f);
+  EXPECT_EQ(feature(*atKnob, "part_by_crease"), 0.0f);
+}
+
 TEST(PointCandidates, AnEmptyFieldHasNone) {
   EXPECT_TRUE(pointCandidates(PredictedField{}, {}, {}, facingUp).empty());
 }
