@@ -25,7 +25,8 @@ std::vector<Eigen::Vector3f> placesOnCopies(const Eigen::Vector3f& point, std::s
 // Where `point` (the mesh's frame) lands on each copy of the small part it lies on, the copies in
 // the parts' order; empty when it lies on no small part (box diagonal at most kSmallPartDiagonal
 // of the mesh's largest extent, the box grown by kCopyTouchShare of that extent) or the part has
-// no copy.
+// no copy. Where no such part has copies, the crease patch it lies on does the same
+// (core/geometry/crease_patches.h: a burner's ring modelled into the hob, its copies the others).
 std::vector<Eigen::Vector3f> pointsOnCopies(const Mesh& mesh, const Eigen::Vector3f& point);
 
 // How near a point must lie to a part's box to be on it, as a share of the mesh's largest extent.

@@ -82,6 +82,25 @@ Mesh quadZ(const Eigen::Vector2f& lo, const Eigen::Vector2f& hi, float z) {
   return mesh;
 }
 
+Mesh plateWithPlateaus(int cellsX, int cellsY, float rise,
+                       const std::vector<std::array<int, 4>>& plateaus) {
+  Mesh mesh;
+  for (int j = 0; j <= cellsY; ++j)
+    for (int i = 0; i <= cellsX; ++i) {
+      bool raised = false;
+      for (const auto& p : plateaus) raised |= i >= p[0] && i <= p[1] && j >= p[2] && j <= p[3];
+      mesh.positions.emplace_back(0.1f * i, 0.1f * j, raised ? rise : 0.0f);
+    }
+  const auto at = [&](int i, int j) { return j * (cellsX + 1) + i; };
+  for (int j = 0; j < cellsY; ++j)
+    for (int i = 0; i < cellsX; ++i) {
+      mesh.triangles.emplace_back(at(i, j), at(i + 1, j), at(i + 1, j + 1));
+      mesh.triangles.emplace_back(at(i, j), at(i + 1, j + 1), at(i, j + 1));
+    }
+  mesh.computeVertexNormals();
+  return mesh;
+}
+
 void append(Mesh& a, const Mesh& b) {
   const int offset = static_cast<int>(a.positions.size());
   a.positions.insert(a.positions.end(), b.positions.begin(), b.positions.end());

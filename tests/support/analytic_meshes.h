@@ -3,6 +3,8 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <array>
+#include <vector>
 
 #include "core/mesh/mesh.h"
 
@@ -19,6 +21,12 @@ Mesh cylinder(float radius, float height, int segments,
               const Eigen::Vector3f& offset = Eigen::Vector3f::Zero());
 // Axis-aligned quad at height z over [lo, hi] in x and y, facing +z, with UVs over [0,1]^2.
 Mesh quadZ(const Eigen::Vector2f& lo, const Eigen::Vector2f& hi, float z);
+// A plate of cellsX x cellsY cells of 0.1 on shared vertices (one connected body) at z = 0, its
+// vertices with i0 <= i <= i1 and j0 <= j <= j1 of each of `plateaus` ({i0, i1, j0, j1}) raised
+// by `rise`: plateaus meeting the plate through slopes one cell wide (45 degrees for a rise of
+// 0.1), as a burner's ring modelled into a hob.
+Mesh plateWithPlateaus(int cellsX, int cellsY, float rise,
+                       const std::vector<std::array<int, 4>>& plateaus);
 // Appends b to a (indices offset); materials and colours of b are kept when present.
 void append(Mesh& a, const Mesh& b);
 // Gives every vertex the colour `rgb`.

@@ -13,25 +13,8 @@
 namespace sagrid {
 namespace {
 
-// A 1 x 1 plate of 10 x 10 cells on shared vertices, raised by `rise` over x and y in [0.3, 0.7]:
-// one connected body whose plateau meets the plate through slopes of 45 degrees.
-Mesh plateWithPlateau(float rise) {
-  Mesh mesh;
-  constexpr int kCells = 10;
-  for (int j = 0; j <= kCells; ++j)
-    for (int i = 0; i <= kCells; ++i) {
-      const bool raised = i >= 3 && i <= 7 && j >= 3 && j <= 7;
-      mesh.positions.emplace_back(0.1f * i, 0.1f * j, raised ? rise : 0.0f);
-    }
-  const auto at = [](int i, int j) { return j * (kCells + 1) + i; };
-  for (int j = 0; j < kCells; ++j)
-    for (int i = 0; i < kCells; ++i) {
-      mesh.triangles.emplace_back(at(i, j), at(i + 1, j), at(i + 1, j + 1));
-      mesh.triangles.emplace_back(at(i, j), at(i + 1, j + 1), at(i, j + 1));
-    }
-  mesh.computeVertexNormals();
-  return mesh;
-}
+// A 1 x 1 plate raised by `rise` over x and y in [0.3, 0.7].
+Mesh plateWithPlateau(float rise) { return test::plateWithPlateaus(10, 10, rise, {{3, 7, 3, 7}}); }
 
 TEST(CreasePatches, EachFaceOfABoxIsAPatch) {
   const auto patches = creasePatches(test::box({0, 0, 0}, {1, 2, 3}));

@@ -46,5 +46,18 @@ TEST(PointsOnCopies, APointOnNoSmallPartOrOnAPartWithoutCopiesHasNone) {
   EXPECT_TRUE(pointsOnCopies(lone, {0.52f, 0.24f, 0.53f}).empty());  // one knob: no copy
 }
 
+TEST(PointsOnCopies, WhereNoPartSeparatesThemTheCreasePatchesCopy) {
+  // Two burner rings raised out of one hob body, same shape: no connected or material part is
+  // small, but each ring's top is a crease patch, a copy of the other's.
+  const Mesh hob = test::plateWithPlateaus(20, 10, 0.1f, {{4, 6, 4, 6}, {14, 16, 4, 6}});
+  const auto copies = pointsOnCopies(hob, {0.52f, 0.48f, 0.1f});
+  ASSERT_EQ(copies.size(), 1u);
+  EXPECT_TRUE(copies[0].isApprox(Eigen::Vector3f(1.52f, 0.48f, 0.1f), 1e-5f));
+  // One ring alone has no copy.
+  EXPECT_TRUE(pointsOnCopies(test::plateWithPlateaus(10, 10, 0.1f, {{4, 6, 4, 6}}),
+                             {0.52f, 0.48f, 0.1f})
+                  .empty());
+}
+
 }  // namespace
 }  // namespace sagrid
