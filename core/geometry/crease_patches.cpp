@@ -14,10 +14,12 @@ namespace sagrid {
 
 namespace {
 
+// The patch a triangle belongs to (union-find with path halving).
 int rootOf(std::vector<int>& parent, int t) {
   while (parent[static_cast<std::size_t>(t)] != t) {
-    parent[static_cast<std::size_t>(t)] = parent[static_cast<std::size_t>(parent[static_cast<std::size_t>(t)])];
-    t = parent[static_cast<std::size_t>(t)];
+    int& up = parent[static_cast<std::size_t>(t)];
+    up = parent[static_cast<std::size_t>(up)];
+    t = up;
   }
   return t;
 }

@@ -2,9 +2,10 @@
 // described by numbers a small classifier can weigh. Candidates come from three places: the
 // points the automatic count and its passes kept, the minima of the model's field (with the depth
 // of their basin), and the small parts of the mesh (a knob, a burner's cap, a handle: connected
-// parts, at their centroid). Each carries the field there and around it, where it stands in the
-// object, the part it lies on (size, roundness, flatness, how many copies the part has) and the
-// company it keeps. Normalized frame (z up); no torch, no surface.
+// parts, material parts and, for some models, crease patches, at their centroid). Each carries
+// the field there and around it, where it stands in the object, the part it lies on (size,
+// roundness, flatness, how many copies the part has) and the company it keeps. Normalized frame
+// (z up); no torch, no surface.
 #pragma once
 
 #include <functional>
@@ -47,7 +48,8 @@ using SurfaceContactAt = std::function<SurfaceContact(const Eigen::Vector3f&)>;
 constexpr std::size_t kMaxCandidateCopies = 15;
 
 // Candidates of one model on one object: `kept` the points its automatic count and passes kept
-// (best first), `parts` from normalizedParts, `contact` the surface near a normalized point.
+// (best first), `parts` from normalizedParts (with the mesh's crease patches where the model's
+// card says so, core/annotate/point_passes.h), `contact` the surface near a normalized point.
 // Candidates closer than a voxel to an earlier one are one candidate (kept points first, then
 // minima best first, then parts), with the sources of both. A candidate on a part with copies
 // (PartCopies, at most kMaxCandidateCopies) is linked to the candidates at its place on each copy
