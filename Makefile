@@ -29,7 +29,8 @@ run: build
 # annotate sees), then the second stove.togglebutton network (trained on the bench train split plus
 # 300 more generated stoves, seed 7001) added to its card as an ensemble, then the learned point
 # decision on these networks' candidates (curated wild-pool, Sweet Home 3D and real-dev objects and
-# the bench val split) and the object confidence fitted on its points left out by source. The stove models are not fine-tuned: on the five real-train stoves it made the
+# the bench val split; the preset sets the stove cards' crease-patch candidates) and the object
+# confidence fitted on its points left out by source. The stove models are not fine-tuned: on the five real-train stoves it made the
 # held-out real stoves worse (resources/models/README.md).
 SAGRID_CACHE ?= $(if $(XDG_CACHE_HOME),$(XDG_CACHE_HOME),$(HOME)/.cache)/sagrid
 BENCH_DIR ?= $(SAGRID_CACHE)/bench

@@ -37,6 +37,7 @@ struct TrainCommandOptions {
   double nearWeight = 0;
   bool resume = false;
   std::optional<bool> coarseToFine;  // unset: from --init's card
+  std::optional<bool> creasePatches;  // unset: from --init's card (--preset: on for the stoves)
   std::string guard;  // held-out curated objects: the update is adopted only where better
   bool lossGiven = false;  // --near-weight or --target-cap on the command line
 };
@@ -51,6 +52,10 @@ constexpr int kPresetEpochsBeforeFineTune = 16;
 bool fineTunedByMakeModels(const std::string& model) {
   return model == "sink.fluidsource" || model == "sink.togglebutton";
 }
+// The shipped models whose learned decision takes candidates on crease patches: the stove models
+// (left out by source it helped them and made the sink models' decisions worse,
+// resources/models/README.md "Session 42").
+bool creasePatchesByPreset(const std::string& model) { return model.rfind("stove.", 0) == 0; }
 
 // Progress of generating training or replay data that is missing: says where it goes and opens
 // a bar only once something is generated (nothing is shown when the data is there).
@@ -89,6 +94,7 @@ std::string commandLine(const TrainCommandOptions& o, const std::vector<std::str
   if (o.targetCap > 0) s << " --target-cap " << o.targetCap;
   if (o.nearWeight > 0) s << " --near-weight " << o.nearWeight;
   if (o.coarseToFine) s << (*o.coarseToFine ? " --coarse-to-fine" : " --no-coarse-to-fine");
+  if (o.creasePatches) s << (*o.creasePatches ? " --crease-patches" : " --no-crease-patches");
   return s.str();
 }
 
@@ -128,6 +134,7 @@ sagrid::DatasetTrainingResult trainOne(const TrainCommandOptions& o,
   t.init = o.init;
   t.lossFromInit = !o.lossGiven;
   t.coarseToFine = o.coarseToFine;
+  t.creasePatches = o.creasePatches;
   t.modelName = model;
   t.architecture = o.arch;
   t.mode = o.mode;
@@ -242,6 +249,11 @@ void setupTrain(CLI::App& root) {
       cmd, "--coarse-to-fine,!--no-coarse-to-fine", o->coarseToFine,
       "Record in the card that annotate and eval run the second pass (a crop around the points) "
       "for this model (default: as the --init card says, else off)");
+  sagrid::app::addOptionalSwitch(
+      cmd, "--crease-patches,!--no-crease-patches", o->creasePatches,
+      "Record in the card that the learned point decision also takes candidates on the mesh's "
+      "crease patches for this model (default: as the --init card says, else off; --preset "
+      "default: on for the stove models)");
   cmd->add_flag("--resume", o->resume, "Continue from <out>/<model>.checkpoint when it exists");
   cmd->add_option("--preset", o->preset,
                   "default: the four shipped models on the generated bench split (stove models 13 "
@@ -272,6 +284,7 @@ void setupTrain(CLI::App& root) {
           forModel.epochs = kPresetEpochsBeforeFineTune;
         else if (!budgetGiven)
           forModel.minutes = kPresetMinutes;
+        if (!forModel.creasePatches) forModel.creasePatches = creasePatchesByPreset(name);
         trainOne(forModel, sources, name, out);
       }
       return;

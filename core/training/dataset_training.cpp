@@ -321,10 +321,13 @@ DatasetTrainingResult trainFromDataset(const DatasetTrainingOptions& options) {
   } else {
     net.card().extraction = init->extraction;
   }
-  // Whether annotate runs the second pass for this model is a choice about the model, not a
-  // calibration: kept from the init card unless the caller says.
+  // Whether annotate runs the second pass for this model, and whether its candidates include
+  // crease patches, are choices about the model, not calibrations: kept from the init card unless
+  // the caller says.
   net.card().extraction.coarseToFine =
       options.coarseToFine.value_or(init && init->extraction.coarseToFine);
+  net.card().extraction.creasePatches =
+      options.creasePatches.value_or(init && init->extraction.creasePatches);
 
   auto& c = net.card();
   nlohmann::json datasets = nlohmann::json::array();

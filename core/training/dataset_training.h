@@ -47,6 +47,9 @@ struct DatasetTrainingOptions {
   // The card's point_extraction.coarse_to_fine (annotate's second pass for this model); unset:
   // the init card's, false without one.
   std::optional<bool> coarseToFine;
+  // The card's point_extraction.crease_patches (the learned decision's candidates on crease
+  // patches for this model); unset: the init card's, false without one.
+  std::optional<bool> creasePatches;
   std::string modelName;     // "<category>.<type>"
   std::string architecture;  // empty = kDefaultArchitecture
   std::string mode = "sparse";

@@ -32,6 +32,8 @@ TEST(FineTuneCli, InitFromShippedModelsOnARealDevStyleFolder) {
   const auto shipped = nlohmann::json::parse(
       readFileBytes(fs::path(SAGRID_SOURCE_DIR) / "resources/models/stove.togglebutton.json"));
   EXPECT_EQ(card.at("architecture"), shipped.at("architecture"));
+  // Choices about the model kept from the init card: the stove cards' crease patches.
+  EXPECT_EQ(card.at("point_extraction").at("crease_patches"), true);
   const auto& training = card.at("training");
   EXPECT_DOUBLE_EQ(training.at("learning_rate").get<double>(), 1e-3);  // fine-tune default
   EXPECT_EQ(training.at("near_weight"), shipped.at("training").at("near_weight"));

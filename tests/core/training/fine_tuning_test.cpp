@@ -5,6 +5,7 @@
 
 #include <atomic>
 #include <fstream>
+#include <optional>
 
 #include "core/common/atomic_file.h"
 #include "core/common/error.h"
@@ -83,28 +84,43 @@ TEST_F(FineTuning, FirstStepLossIsTheInitModelsLossOnThatBatch) {
   EXPECT_GT(std::abs(model::evaluateLoss(fresh, {sample}, 0, true) - initLoss), 1e-3);
 }
 
-TEST_F(FineTuning, TheSecondPassSwitchIsKeptFromTheInitCardUnlessGiven) {
-  const fs::path out = test::freshTempDir();
-  // The base model with its card's second pass switched on.
-  fs::copy(dir() / "base", out / "init");
-  const fs::path initCard = out / "init" / (std::string(kModel) + ".json");
-  model::ModelCard card = model::readModelCard(initCard);
-  card.extraction.coarseToFine = true;
-  model::writeModelCard(initCard, card);
+TEST_F(FineTuning, ThePerModelSwitchesAreKeptFromTheInitCardUnlessGiven) {
+  // The second pass and the crease patches' candidates: choices about the model, not fitted.
+  struct Switch {
+    const char* name;
+    bool ExtractionSettings::*inCard;
+    std::optional<bool> DatasetTrainingOptions::*given;
+  };
+  for (const Switch& s : {Switch{"coarse_to_fine", &ExtractionSettings::coarseToFine,
+                                 &DatasetTrainingOptions::coarseToFine},
+                          Switch{"crease_patches", &ExtractionSettings::creasePatches,
+                                 &DatasetTrainingOptions::creasePatches}}) {
+    SCOPED_TRACE(s.name);
+    const fs::path out = test::freshTempDir();
+    const auto trained = [&](const DatasetTrainingOptions& o) {
+      return model::readModelCard(trainFromDataset(o).cardFile).extraction.*s.inCard;
+    };
+    // The base model with the switch on in its card.
+    fs::copy(dir() / "base", out / "init");
+    const fs::path initCard = out / "init" / (std::string(kModel) + ".json");
+    model::ModelCard card = model::readModelCard(initCard);
+    card.extraction.*s.inCard = true;
+    model::writeModelCard(initCard, card);
 
-  DatasetTrainingOptions o = tinyOptions(out / "kept");
-  o.dataDir = dir() / "one";
-  o.init = out / "init";
-  EXPECT_TRUE(model::readModelCard(trainFromDataset(o).cardFile).extraction.coarseToFine);
-  o.outDir = out / "off";
-  o.coarseToFine = false;
-  EXPECT_FALSE(model::readModelCard(trainFromDataset(o).cardFile).extraction.coarseToFine);
-  o = tinyOptions(out / "scratch");
-  o.dataDir = dir() / "one";
-  EXPECT_FALSE(model::readModelCard(trainFromDataset(o).cardFile).extraction.coarseToFine);
-  o.outDir = out / "scratch-on";
-  o.coarseToFine = true;
-  EXPECT_TRUE(model::readModelCard(trainFromDataset(o).cardFile).extraction.coarseToFine);
+    DatasetTrainingOptions o = tinyOptions(out / "kept");
+    o.dataDir = dir() / "one";
+    o.init = out / "init";
+    EXPECT_TRUE(trained(o));
+    o.outDir = out / "off";
+    o.*s.given = false;
+    EXPECT_FALSE(trained(o));
+    o = tinyOptions(out / "scratch");
+    o.dataDir = dir() / "one";
+    EXPECT_FALSE(trained(o));
+    o.outDir = out / "scratch-on";
+    o.*s.given = true;
+    EXPECT_TRUE(trained(o));
+  }
 }
 
 TEST_F(FineTuning, CardRecordsEveryDatasetAndTheInitModel) {
