@@ -11,6 +11,7 @@
 #include "core/annotate/point_passes.h"
 #include "core/controls/control_part.h"
 #include "core/controls/control_turn.h"
+#include "core/geometry/crease_patches.h"
 #include "core/geometry/material_parts.h"
 #include "core/geometry/part_statistics.h"
 #include "core/geometry/surface_scene.h"
@@ -36,9 +37,9 @@ void listSmallParts(const std::vector<sagrid::ConnectedPart>& parts, const sagri
     const Eigen::Vector3f c = sagrid::zUpToFile(n.toMesh(parts[p].box.center()), fileUp);
     const Eigen::Vector3f size = parts[p].box.sizes() / n.scale;
     std::printf(
-        "  part %zu: %d triangles, box centre (%g, %g, %g), size (%g, %g, %g) z-up, %zu copies\n",
+        "  part %zu: %d triangles, box centre (%g, %g, %g), size (%g, %g, %g) z-up, %zu copies%s\n",
         p, parts[p].triangles, c.x(), c.y(), c.z(), size.x(), size.y(), size.z(),
-        copies.of(p).size());
+        copies.of(p).size(), parts[p].byCrease ? " (crease patch)" : "");
   }
 }
 
@@ -107,7 +108,7 @@ void setupInfo(CLI::App& root) {
   struct Options {
     std::string mesh, up;
     int resolution = sagrid::kDefaultGridResolution;
-    bool json = false, parts = false, materialParts = false;
+    bool json = false, parts = false, materialParts = false, creasePatches = false;
     std::string controls, turnedMesh, unitsFor;
     float turn = 0.6f;
   };
@@ -122,6 +123,10 @@ void setupInfo(CLI::App& root) {
       "Also list the mesh's small parts (a knob, a cap, a handle: those the point candidates "
       "are seeded from) and how many copies each has, and the statistics of the parts the "
       "category classifier reads (core/geometry/part_statistics.h)");
+  cmd->add_flag("--crease-patches", o->creasePatches,
+                "With --parts: list the small parts as a model whose card takes crease patches "
+                "sees them (the shipped stove models): the crease patches beside the connected "
+                "and material parts, each marked (core/geometry/crease_patches.h)");
   cmd->add_flag("--material-parts", o->materialParts,
                 "Also list, per material, the connected parts of its triangles with their box "
                 "centre in the file's frame and size: where zones, knobs and handles are drawn in "
@@ -163,7 +168,11 @@ void setupInfo(CLI::App& root) {
     if (!o->controls.empty()) listControls(mesh, o->controls, o->turn, o->turnedMesh);
     if (!o->parts) return;
     const auto normalization = sagrid::Normalization::fromMesh(mesh);
-    listSmallParts(sagrid::normalizedParts(mesh, normalization), normalization, mesh.fileUp);
+    std::vector<sagrid::ConnectedPart> parts = sagrid::connectedAndMaterialParts(mesh);
+    if (o->creasePatches)
+      sagrid::appendNewParts(parts, sagrid::creasePatches(mesh), &sagrid::ConnectedPart::byCrease);
+    listSmallParts(sagrid::normalizedParts(std::move(parts), normalization), normalization,
+                   mesh.fileUp);
     listPartStatistics(mesh);
   });
 }

@@ -191,6 +191,15 @@ TEST(InfoCommand, ListsSmallParts) {
   EXPECT_THAT(r.output, HasSubstr("part 1: 12 triangles, box centre (-0.1, 0.008, 0.201), size "
                                   "(0.02, 0.016, 0.002"));
   EXPECT_THAT(r.output, HasSubstr("z-up, 1 copies\n  part 2"));
+  EXPECT_THAT(r.output, Not(HasSubstr("crease patch")));
+  // As a stove model's candidates see them: each box's faces are crease patches too.
+  const auto withPatches = runSagrid("info " + shellQuote((dir / "cooktop.obj").string()) +
+                                     " --up z --parts --crease-patches");
+  ASSERT_EQ(withPatches.exitCode, 0) << withPatches.output;
+  EXPECT_THAT(withPatches.output, HasSubstr("part 1: 12 triangles, box centre (-0.1, 0.008, 0.201)"));
+  EXPECT_THAT(withPatches.output, HasSubstr("small parts: 21 of 28"));  // 18 faces of 3 boxes
+  EXPECT_THAT(withPatches.output, HasSubstr("2 triangles, box centre (0.22, -0.215, 0.12), size "
+                                            "(0.04, 0.03, 0) z-up, 0 copies (crease patch)\n"));
 }
 
 }  // namespace
