@@ -45,10 +45,6 @@ ModelPrediction locateWithModel(const model::AffordanceModel& model, const Objec
 
 }  // namespace
 
-std::vector<ConnectedPart> normalizedParts(const Mesh& mesh, const Normalization& normalization) {
-  return normalizedParts(connectedAndMaterialParts(mesh), normalization);
-}
-
 std::vector<ConnectedPart> normalizedParts(std::vector<ConnectedPart> parts,
                                            const Normalization& normalization) {
   for (auto& part : parts) {
@@ -93,15 +89,14 @@ CategoryPoints predictCategoryPoints(const std::vector<const model::AffordanceMo
   // The mesh's parts, and with its crease patches where a model's card asks for them.
   std::vector<ConnectedPart> parts, partsAndPatches;
   if (decide) {
-    std::vector<ConnectedPart> meshParts =
-        object.meshParts ? *object.meshParts : connectedAndMaterialParts(mesh);
+    parts = normalizedParts(object.meshParts ? *object.meshParts : connectedAndMaterialParts(mesh),
+                            features.normalization);
     if (std::any_of(models.begin(), models.end(),
                     [](const auto* m) { return m->card().extraction.creasePatches; })) {
-      std::vector<ConnectedPart> withPatches = meshParts;
-      appendNewParts(withPatches, creasePatches(mesh), &ConnectedPart::byCrease);
-      partsAndPatches = normalizedParts(std::move(withPatches), features.normalization);
+      partsAndPatches = parts;
+      appendNewParts(partsAndPatches, normalizedParts(creasePatches(mesh), features.normalization),
+                     &ConnectedPart::byCrease);
     }
-    parts = normalizedParts(std::move(meshParts), features.normalization);
   }
   CategoryPoints out;
   for (auto& model : located) out.predictions.push_back(model.get());

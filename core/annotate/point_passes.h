@@ -48,11 +48,8 @@ struct CategoryPoints {
 class ModelSet;
 struct Normalization;
 
-// The parts of `mesh` (z-up mesh frame; connected parts and those a material of their own
-// separates, connectedAndMaterialParts) in the normalized frame of `normalization`: the parts the
-// point candidates are seeded from.
-std::vector<ConnectedPart> normalizedParts(const Mesh& mesh, const Normalization& normalization);
-// The same from the mesh's parts (connectedAndMaterialParts, z-up mesh frame).
+// The mesh's parts (z-up mesh frame: connectedAndMaterialParts, crease patches) in the normalized
+// frame of `normalization`: the parts the point candidates are seeded from.
 std::vector<ConnectedPart> normalizedParts(std::vector<ConnectedPart> meshParts,
                                            const Normalization& normalization);
 

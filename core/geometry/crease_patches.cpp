@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <numeric>
 #include <unordered_map>
+#include <utility>
 
 #include "core/geometry/material_parts.h"
 #include "core/geometry/triangle_components.h"
@@ -41,8 +42,16 @@ std::vector<ConnectedPart> creasePatches(const Mesh& mesh, float creaseDegrees) 
   const float smooth = std::cos(creaseDegrees * static_cast<float>(M_PI) / 180.0f);
   std::vector<int> parent(n);
   std::iota(parent.begin(), parent.end(), 0);
-  // Each welded edge's first triangle; later triangles on it join it where the turn is smooth.
-  std::unordered_map<std::uint64_t, std::vector<int>> onEdge;
+  // The triangles met so far on each welded edge, in the order met: a list threaded through one
+  // array of (triangle, next) entries, the map holding each edge's first and last entry (no
+  // allocation per edge). A triangle joins each earlier one on its edges where the turn is smooth.
+  struct Entry {
+    int triangle, next;
+  };
+  std::vector<Entry> entries;
+  entries.reserve(3 * n);
+  std::unordered_map<std::uint64_t, std::pair<int, int>> onEdge;  // first, last entry
+  onEdge.reserve(3 * n / 2);
   for (std::size_t t = 0; t < n; ++t) {
     if (components.ofTriangle[t] < 0 || normal[t].isZero()) continue;
     const auto& w = components.weldedCorners[t];
@@ -50,11 +59,18 @@ std::vector<ConnectedPart> creasePatches(const Mesh& mesh, float creaseDegrees) 
       const auto lo = static_cast<std::uint32_t>(std::min(w[e], w[(e + 1) % 3]));
       const auto hi = static_cast<std::uint32_t>(std::max(w[e], w[(e + 1) % 3]));
       if (lo == hi) continue;
-      auto& others = onEdge[(static_cast<std::uint64_t>(lo) << 32) | hi];
-      for (int o : others)
+      const int entry = static_cast<int>(entries.size());
+      entries.push_back({static_cast<int>(t), -1});
+      const auto [at, isNew] =
+          onEdge.try_emplace((static_cast<std::uint64_t>(lo) << 32) | hi, entry, entry);
+      if (isNew) continue;
+      for (int i = at->second.first; i >= 0; i = entries[static_cast<std::size_t>(i)].next) {
+        const int o = entries[static_cast<std::size_t>(i)].triangle;
         if (std::abs(normal[t].dot(normal[static_cast<std::size_t>(o)])) >= smooth)
           parent[static_cast<std::size_t>(rootOf(parent, static_cast<int>(t)))] = rootOf(parent, o);
-      others.push_back(static_cast<int>(t));
+      }
+      entries[static_cast<std::size_t>(at->second.second)].next = entry;
+      at->second.second = entry;
     }
   }
   std::vector<int> patch(n);

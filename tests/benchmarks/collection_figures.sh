@@ -17,12 +17,7 @@
 # ANNOTATE_OPTIONS (extra options for every annotate run). About 20 minutes on 2 cores.
 set -euo pipefail
 
-root=$(cd "$(dirname "$0")/../.." && pwd)
-build=$(cd "${1:-$root/build}" && pwd)
-work=${2:-$(mktemp -d /tmp/sagrid-collection-figures.XXXXXX)}
-mkdir -p "$work"
-work=$(cd "$work" && pwd)
-sagrid=$build/sagrid
+. "$(dirname "$0")/bench_dirs.sh" collection-figures "${1:-}" "${2:-}"
 objects=${OBJECTS:-200}
 array_objects=${ARRAY_OBJECTS:-40}
 nodes=${NODES:-100}

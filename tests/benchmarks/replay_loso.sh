@@ -17,12 +17,7 @@
 # About 6 minutes on 2 cores with cached features (IN_SAMPLE=1: 2).
 set -euo pipefail
 
-root=$(cd "$(dirname "$0")/../.." && pwd)
-build=$(cd "${1:-$root/build}" && pwd)
-work=${2:-$(mktemp -d /tmp/sagrid-replay-loso.XXXXXX)}
-mkdir -p "$work"
-work=$(cd "$work" && pwd)
-sagrid=$build/sagrid
+. "$(dirname "$0")/bench_dirs.sh" replay-loso "${1:-}" "${2:-}"
 shipped=$root/resources/models
 [ -x "$sagrid" ] || { echo "replay_loso.sh: no $sagrid (build it first)" >&2; exit 1; }
 for v in POOL WILD SH BENCH DIST GEN CANDIDATES_REAL CANDIDATES_SH CANDIDATES_BENCH; do
