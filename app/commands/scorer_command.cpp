@@ -17,6 +17,7 @@
 #include "core/common/resource_paths.h"
 #include "core/eval/evaluation.h"
 #include "core/eval/point_scorer_training.h"
+#include "core/eval/scorer_cv_spread.h"
 #include "core/eval/scorer_learning_curve_plot.h"
 #include "core/eval/point_scorer_update.h"
 #include "core/model/model_card.h"
@@ -142,6 +143,8 @@ void setupScorer(CLI::App& root) {
     sagrid::ScorerCurveOptions curve;
     std::string compareConfidence;
     std::vector<std::string> withoutFeatures;
+    unsigned repeats = 0;
+    double leaveOutGenerated = 0.2;
   };
   auto l = std::make_shared<LearnOptions>();
   auto* cv = cmd->add_subcommand(
@@ -168,6 +171,15 @@ void setupScorer(CLI::App& root) {
   cv->add_option("--without-feature", l->withoutFeatures,
                  "A candidate feature the decision does without (repeatable; set to 0 on every "
                  "candidate): what it adds, leave one source out");
+  cv->add_option("--repeats", l->repeats,
+                 "Repeat the leave one source out this many times, each with a share of the "
+                 "generated objects left out of training (seeds --seed, --seed + 1, ...): the "
+                 "report's \"Spread over repeats\" says how far the figures move (default 0)")
+      ->check(CLI::Range(0u, 100u));
+  cv->add_option("--leave-out-generated", l->leaveOutGenerated,
+                 "With --repeats: the share of the generated objects each repeat leaves out "
+                 "(default 0.2)")
+      ->check(CLI::Range(0.0, 0.95));
   addTrainingOptions(*cv, l->candidates, l->training);
   cv->callback([l] {
     if (!l->compareConfidence.empty()) {
@@ -184,9 +196,16 @@ void setupScorer(CLI::App& root) {
     const auto result = sagrid::crossValidatePointScorer(sets, l->training, l->curve);
     const fs::path out = l->out.empty() ? fs::path("scorer-cv") : fs::path(l->out);
     fs::create_directories(out);
-    const std::string md = sagrid::scorerCrossValidationMarkdown(result);
+    std::string md = sagrid::scorerCrossValidationMarkdown(result);
+    nlohmann::json json = sagrid::toJson(result);
+    if (l->repeats > 0) {
+      const auto spread = sagrid::scorerCvSpread(sets, l->training, l->curve, l->repeats,
+                                                 l->leaveOutGenerated, l->curve.seed);
+      md += "\n" + sagrid::scorerCvSpreadMarkdown(spread, result);
+      json["spread"] = sagrid::toJson(spread);
+    }
     sagrid::writeFileAtomic(out / "scorer_cv.md", md);
-    sagrid::writeFileAtomic(out / "scorer_cv.json", sagrid::toJson(result).dump(2) + "\n");
+    sagrid::writeFileAtomic(out / "scorer_cv.json", json.dump(2) + "\n");
     sagrid::writeScorerLearningCurvePng(result, out / "scorer_cv.png");
     // The object confidence fitted on the points decided leave one source out: a models folder
     // takes it by copying OUT/confidence.json.

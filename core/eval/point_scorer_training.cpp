@@ -597,12 +597,13 @@ std::string cells(const PointChoiceFigures& f) {
          reportCell(100 * f.effort.oneKeyShare, "%.0f %%") + " | " +
          reportCell(100 * f.singleError, "%.1f");
 }
-nlohmann::json figuresJson(const PointChoiceFigures& f) {
+}  // namespace
+
+nlohmann::json toJson(const PointChoiceFigures& f) {
   return {{"objects", f.effort.objects},           {"edits", f.edits.total()},
           {"hand_points", f.edits.handPoints},     {"edits_per_hand_point", f.editsPerHandPoint()},
           {"one_key_share", f.effort.oneKeyShare}, {"single_error_m", f.singleError}};
 }
-}  // namespace
 
 double signalAuc(const ScorerCrossValidation& cv) {
   double pairs = 0, ordered = 0;
@@ -737,9 +738,9 @@ nlohmann::json toJson(const ScorerCrossValidation& cv) {
   for (const auto& f : cv.folds)
     folds.push_back({{"source", f.source},
                      {"objects", f.objects},
-                     {"count", figuresJson(f.count)},
-                     {"generated_only", figuresJson(f.generatedOnly)},
-                     {"with_curated", figuresJson(f.withCurated)}});
+                     {"count", toJson(f.count)},
+                     {"generated_only", toJson(f.generatedOnly)},
+                     {"with_curated", toJson(f.withCurated)}});
   nlohmann::json decisions = nlohmann::json::array();
   for (const auto& d : cv.decisions)
     decisions.push_back({{"source", d.source},
@@ -764,16 +765,16 @@ nlohmann::json toJson(const ScorerCrossValidation& cv) {
   nlohmann::json curve = nlohmann::json::array();
   for (std::size_t k = 0; k < cv.ks.size(); ++k)
     curve.push_back({{"k", cv.ks[k]},
-                     {"all", figuresJson(cv.curve[k])},
-                     {"unseen", figuresJson(cv.unseenCurve[k])}});
+                     {"all", toJson(cv.curve[k])},
+                     {"unseen", toJson(cv.unseenCurve[k])}});
   return {{"real_objects", cv.realObjects},
           {"tuned_on", cv.tunedOn},
           {"learning_curve", curve},
           {"learning_curve_draws", cv.draws},
           {"unseen",
-           {{"count", figuresJson(cv.unseenCount)},
-            {"generated_only", figuresJson(cv.unseenGeneratedOnly)},
-            {"with_curated", figuresJson(cv.unseenWithCurated)}}},
+           {{"count", toJson(cv.unseenCount)},
+            {"generated_only", toJson(cv.unseenGeneratedOnly)},
+            {"with_curated", toJson(cv.unseenWithCurated)}}},
           {"generated_objects", cv.generatedObjects},
           {"candidate_recall", cv.candidateRecall},
           {"folds", folds},
@@ -786,9 +787,9 @@ nlohmann::json toJson(const ScorerCrossValidation& cv) {
           {"confidence", cv.confidence ? toJson(*cv.confidence) : nlohmann::json()},
           {"unseen_confidence", unseenConfidence},
           {"all",
-           {{"count", figuresJson(cv.count)},
-            {"generated_only", figuresJson(cv.generatedOnly)},
-            {"with_curated", figuresJson(cv.withCurated)}}}};
+           {{"count", toJson(cv.count)},
+            {"generated_only", toJson(cv.generatedOnly)},
+            {"with_curated", toJson(cv.withCurated)}}}};
 }
 
 }  // namespace sagrid

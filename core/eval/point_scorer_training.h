@@ -61,6 +61,7 @@ struct PointChoiceFigures {
   // The curator's edits per point placed by hand (NaN without ground-truth points).
   double editsPerHandPoint() const;
 };
+nlohmann::json toJson(const PointChoiceFigures& figures);
 
 struct ScorerSourceFold {
   std::string source;

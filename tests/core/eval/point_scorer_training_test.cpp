@@ -4,11 +4,13 @@
 
 #include <algorithm>
 #include <fstream>
+#include <map>
 #include <random>
 
 #include "core/common/error.h"
 #include "core/eval/metrics.h"
 #include "core/eval/point_scorer_training.h"
+#include "core/eval/scorer_cv_spread.h"
 #include "support/point_scorers.h"
 
 namespace sagrid {
@@ -224,6 +226,56 @@ TEST(PointScorerTraining, TheLearningCurvePoolsItsDrawsOnEveryFold) {
   EXPECT_EQ(b.curve[1].edits.total(), pooledEdits);
   EXPECT_EQ(toJson(b)["learning_curve_draws"], 3);
   EXPECT_NE(scorerCrossValidationMarkdown(b).find("drawn 3 time(s) per fold"), std::string::npos);
+}
+
+TEST(ScorerCvSpread, EachRepeatLeavesOutWholeGeneratedObjectsOfItsOwnDraw) {
+  auto sets = syntheticSets();
+  // A second model's set for every object: a drawn object loses both.
+  const std::size_t n = sets.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    sets.push_back(sets[i]);
+    sets.back().model = "stove.heatsource";
+  }
+  const auto kept = withoutSomeGenerated(sets, 0.25, 3);
+  std::map<std::string, int> setsOf;
+  std::size_t curated = 0;
+  for (const auto& s : kept) {
+    if (s.generated) ++setsOf[s.object];
+    curated += !s.generated;
+  }
+  EXPECT_EQ(curated, 36u);          // every curated set stays
+  EXPECT_EQ(setsOf.size(), 15u);    // 20 generated objects, 5 left out
+  for (const auto& [object, count] : setsOf) EXPECT_EQ(count, 2) << object;
+  const auto names = [](const std::vector<CandidateSet>& v) {
+    std::vector<std::string> out;
+    for (const auto& s : v) out.push_back(s.object + s.model);
+    return out;
+  };
+  EXPECT_EQ(names(withoutSomeGenerated(sets, 0.25, 3)), names(kept));  // reproducible
+  EXPECT_NE(names(withoutSomeGenerated(sets, 0.25, 4)), names(kept));  // another draw
+  EXPECT_EQ(withoutSomeGenerated(sets, 0.0, 3).size(), sets.size());
+  EXPECT_THROW(withoutSomeGenerated(sets, 1.0, 3), InvalidArgument);
+}
+
+TEST(ScorerCvSpread, RepeatsWithNothingLeftOutReadAsTheFullCrossValidation) {
+  const auto sets = syntheticSets(0.35f);
+  ScorerCurveOptions curve;
+  curve.tunedOn = {"repo-a"};
+  const ScorerCrossValidation full = crossValidatePointScorer(sets, {}, curve);
+  const ScorerCvSpread same = scorerCvSpread(sets, {}, curve, 2, 0.0, 1);
+  ASSERT_EQ(same.all.size(), 2u);
+  for (std::size_t r = 0; r < 2; ++r) {
+    EXPECT_EQ(same.all[r].edits.total(), full.withCurated.edits.total());
+    EXPECT_EQ(same.unseen[r].edits.total(), full.unseenWithCurated.edits.total());
+  }
+  // Most generated objects left out: every repeat still decides every unseen source's objects.
+  const ScorerCvSpread fewer = scorerCvSpread(sets, {}, curve, 3, 0.9, 1);
+  ASSERT_EQ(fewer.unseen.size(), 3u);
+  EXPECT_EQ(fewer.unseen[0].effort.objects, 12u);  // repo-b and library-c, every repeat
+  const std::string md = scorerCvSpreadMarkdown(fewer, full);
+  EXPECT_NE(md.find("3 times, each with 90 % of the generated objects left out"), std::string::npos);
+  EXPECT_NE(md.find("| **mean** |"), std::string::npos);
+  EXPECT_EQ(toJson(fewer)["repeats"].size(), 3u);
 }
 
 TEST(PointScorerTraining, EachFoldIsDecidedByAScorerFittedWithoutItsSource) {
