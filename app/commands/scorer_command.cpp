@@ -72,14 +72,6 @@ void refuseOtherWeights(const std::vector<sagrid::CandidateSet>& sets, const fs:
 void addTrainingOptions(CLI::App& cmd, std::vector<std::string>& candidates,
                         sagrid::ScorerTrainingOptions& o) {
   cmd.add_option("--candidates", candidates, "Candidate files (repeatable)")->required();
-  cmd.add_option("--bag", o.bag,
-                 "Per model, a bag of this many decisions whose probabilities are averaged, each "
-                 "fitted without another draw of the generated objects (default 1: one decision)")
-      ->check(CLI::Range(1u, 50u));
-  cmd.add_option("--bag-leave-out", o.bagLeaveOut,
-                 "With --bag: the share of the generated objects each member leaves out "
-                 "(default 0.2)")
-      ->check(CLI::Range(0.0, 0.95));
   cmd.add_option("--real-weight", o.realWeight,
                  "Weight of a curated real object's candidates against a generated object's "
                  "(default 3)")

@@ -19,87 +19,6 @@ bool allFinite(const std::vector<float>& v) {
     if (!std::isfinite(x)) return false;
   return true;
 }
-
-// Trees (with a second look), the logistic regression, or a bag of either: whichever decides.
-void writeClassifier(const CandidateClassifier& c, nlohmann::json& model) {
-  if (!c.members.empty()) {
-    nlohmann::json members = nlohmann::json::array();
-    for (const CandidateClassifier& member : c.members) {
-      nlohmann::json m = nlohmann::json::object();
-      writeClassifier(member, m);
-      members.push_back(std::move(m));
-    }
-    model["members"] = std::move(members);
-    return;
-  }
-  if (c.trees) {
-    model["trees"] = toJson(*c.trees);
-    if (c.contextTrees) model["context_trees"] = toJson(*c.contextTrees);
-    return;
-  }
-  model["mean"] = c.mean;
-  model["scale"] = c.scale;
-  model["weights"] = c.weights;
-  model["bias"] = c.bias;
-}
-
-// `what` names the model (and member) in messages about `file`.
-CandidateClassifier readClassifier(const nlohmann::json& m, const std::filesystem::path& file,
-                                   const std::string& what, bool contextFeatures) {
-  const std::size_t d = candidateFeatureNames().size();
-  CandidateClassifier c;
-  if (m.contains("members")) {
-    const auto& members = m.at("members");
-    if (!members.is_array() || members.empty())
-      throw FileError(file, what + ": members must be a list of decisions");
-    for (std::size_t i = 0; i < members.size(); ++i) {
-      if (members[i].contains("members"))
-        throw FileError(file, what + ": a member of a bag is no bag");
-      c.members.push_back(readClassifier(members[i], file,
-                                         what + ", member " + std::to_string(i + 1),
-                                         contextFeatures));
-    }
-    return c;
-  }
-  if (m.contains("trees")) {
-    try {
-      c.trees = boostedTreesFromJson(m.at("trees"));
-    } catch (const InvalidArgument& e) {
-      throw FileError(file, what + ": " + e.what());
-    }
-    if (c.trees->features != d)
-      throw FileError(file, what + ": its trees read " + std::to_string(c.trees->features) +
-                                " features");
-    if (m.contains("context_trees")) {
-      if (!contextFeatures)
-        throw FileError(file, what + ": context trees without context_features");
-      try {
-        c.contextTrees = boostedTreesFromJson(m.at("context_trees"));
-      } catch (const InvalidArgument& e) {
-        throw FileError(file, what + ": context_trees: " + e.what());
-      }
-      if (c.contextTrees->features != d + kContextFeatureCount)
-        throw FileError(file, what + ": its context trees read " +
-                                  std::to_string(c.contextTrees->features) + " features, not " +
-                                  std::to_string(d + kContextFeatureCount));
-    }
-    return c;
-  }
-  if (m.contains("context_trees"))
-    throw FileError(file, what + ": context trees need the trees of a first look");
-  c.mean = m.at("mean").get<std::vector<float>>();
-  c.scale = m.at("scale").get<std::vector<float>>();
-  c.weights = m.at("weights").get<std::vector<float>>();
-  c.bias = m.at("bias").get<float>();
-  if (c.mean.size() != d || c.scale.size() != d || c.weights.size() != d)
-    throw FileError(file, what + ": mean, scale and weights need " + std::to_string(d) +
-                              " values each");
-  if (!allFinite(c.mean) || !allFinite(c.scale) || !allFinite(c.weights) || !std::isfinite(c.bias))
-    throw FileError(file, what + ": numbers must be finite");
-  for (float scale : c.scale)
-    if (scale <= 0) throw FileError(file, what + ": scales must be positive");
-  return c;
-}
 }  // namespace
 
 const ModelPointScorer* PointScorer::forModel(const std::string& modelName) const {
@@ -139,7 +58,16 @@ nlohmann::json toJson(const PointScorer& scorer) {
              {"nms_radius", m.choice.nmsRadius},
              {"copy_threshold", m.choice.copyThreshold}};
     if (!m.networkWeights.empty()) model["network_weights"] = m.networkWeights;
-    writeClassifier(m.classifier, model);
+    // Trees or the logistic regression, whichever decides.
+    if (m.classifier.trees) {
+      model["trees"] = toJson(*m.classifier.trees);
+      if (m.classifier.contextTrees) model["context_trees"] = toJson(*m.classifier.contextTrees);
+      continue;
+    }
+    model["mean"] = m.classifier.mean;
+    model["scale"] = m.classifier.scale;
+    model["weights"] = m.classifier.weights;
+    model["bias"] = m.classifier.bias;
   }
   return {{"schema", kSchema},
           {"features", candidateFeatureNames()},
@@ -173,6 +101,7 @@ std::optional<PointScorer> readPointScorer(const std::filesystem::path& modelsDi
     } catch (const InvalidArgument& e) {
       throw FileError(file, e.what());
     }
+    const std::size_t d = candidateFeatureNames().size();
     for (const auto& [name, m] : j.at("models").items()) {
       ModelPointScorer s;
       s.choice.keepThreshold = m.at("keep_threshold").get<float>();
@@ -184,7 +113,47 @@ std::optional<PointScorer> readPointScorer(const std::filesystem::path& modelsDi
           !std::isfinite(s.choice.nmsRadius) || !std::isfinite(s.choice.copyThreshold) ||
           s.choice.nmsRadius < 0)
         throw FileError(file, "model " + name + ": numbers must be finite (radius >= 0)");
-      s.classifier = readClassifier(m, file, "model " + name, j.contains("context_features"));
+      if (m.contains("trees")) {
+        try {
+          s.classifier.trees = boostedTreesFromJson(m.at("trees"));
+        } catch (const InvalidArgument& e) {
+          throw FileError(file, "model " + name + ": " + e.what());
+        }
+        if (s.classifier.trees->features != d)
+          throw FileError(file, "model " + name + ": its trees read " +
+                                    std::to_string(s.classifier.trees->features) + " features");
+        if (m.contains("context_trees")) {
+          if (!j.contains("context_features"))
+            throw FileError(file, "model " + name + ": context trees without context_features");
+          try {
+            s.classifier.contextTrees = boostedTreesFromJson(m.at("context_trees"));
+          } catch (const InvalidArgument& e) {
+            throw FileError(file, "model " + name + ": context_trees: " + e.what());
+          }
+          if (s.classifier.contextTrees->features != d + kContextFeatureCount)
+            throw FileError(file, "model " + name + ": its context trees read " +
+                                      std::to_string(s.classifier.contextTrees->features) +
+                                      " features, not " +
+                                      std::to_string(d + kContextFeatureCount));
+        }
+        scorer.byModel[name] = s;
+        continue;
+      }
+      if (m.contains("context_trees"))
+        throw FileError(file, "model " + name + ": context trees need the trees of a first look");
+      s.classifier.mean = m.at("mean").get<std::vector<float>>();
+      s.classifier.scale = m.at("scale").get<std::vector<float>>();
+      s.classifier.weights = m.at("weights").get<std::vector<float>>();
+      s.classifier.bias = m.at("bias").get<float>();
+      const auto& c = s.classifier;
+      if (c.mean.size() != d || c.scale.size() != d || c.weights.size() != d)
+        throw FileError(file, "model " + name + ": mean, scale and weights need " +
+                                  std::to_string(d) + " values each");
+      if (!allFinite(c.mean) || !allFinite(c.scale) || !allFinite(c.weights) ||
+          !std::isfinite(c.bias))
+        throw FileError(file, "model " + name + ": numbers must be finite");
+      for (float scale : c.scale)
+        if (scale <= 0) throw FileError(file, "model " + name + ": scales must be positive");
       scorer.byModel[name] = s;
     }
   } catch (const nlohmann::json::exception& e) {

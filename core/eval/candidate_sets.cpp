@@ -1,8 +1,6 @@
 #include "core/eval/candidate_sets.h"
 
-#include <cmath>
 #include <fstream>
-#include <random>
 #include <optional>
 #include <sstream>
 
@@ -156,22 +154,6 @@ std::vector<CandidateSet> readCandidateSets(const std::filesystem::path& file) {
 
 void writeCandidateSets(const std::filesystem::path& file, const std::vector<CandidateSet>& sets) {
   writeFileAtomic(file, toJson(sets).dump() + "\n");
-}
-
-std::string objectKey(const CandidateSet& set) { return set.source + "/" + set.object; }
-
-std::set<std::string> drawGeneratedObjects(const std::vector<const CandidateSet*>& sets,
-                                           double share, unsigned seed) {
-  if (!(share >= 0 && share < 1))
-    throw InvalidArgument("the share of generated objects to draw must lie in [0, 1)");
-  std::set<std::string> objects;
-  for (const CandidateSet* s : sets)
-    if (s->generated) objects.insert(objectKey(*s));
-  std::vector<std::string> order(objects.begin(), objects.end());
-  std::mt19937 engine(seed);
-  for (std::size_t i = order.size(); i > 1; --i) std::swap(order[i - 1], order[engine() % i]);
-  const auto drawn = static_cast<std::size_t>(std::floor(share * static_cast<double>(order.size())));
-  return {order.begin(), order.begin() + static_cast<std::ptrdiff_t>(drawn)};
 }
 
 }  // namespace sagrid

@@ -6,7 +6,6 @@
 #pragma once
 
 #include <filesystem>
-#include <set>
 #include <string>
 #include <vector>
 
@@ -30,13 +29,6 @@ struct CandidateSet {
   // written before it was recorded.
   std::string networkWeights;
 };
-
-// The generated objects ("source/object") of one draw among `sets`' generated objects:
-// floor(share x their number), drawn by `seed` the same on every platform (a Fisher-Yates shuffle
-// on std::mt19937's raw numbers). Throws InvalidArgument for a share outside [0, 1).
-std::set<std::string> drawGeneratedObjects(const std::vector<const CandidateSet*>& sets,
-                                           double share, unsigned seed);
-std::string objectKey(const CandidateSet& set);  // "source/object"
 
 // Per candidate of `set`, whether it is the nearest candidate to a ground-truth point within
 // `radiusMeters` of it (the radius within which a point needs no drag, kMatchRadiusMeters).

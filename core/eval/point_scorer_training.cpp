@@ -279,30 +279,16 @@ BoostedTrees fitContextTrees(const std::vector<const CandidateSet*>& sets,
   return fitBoostedTrees(t.rows, t.positive, t.weight, fieldMonotone(options.boosting, true));
 }
 
-CandidateClassifier fitClassifier(const std::vector<const CandidateSet*>& sets,
-                                  const ScorerTrainingOptions& options) {
-  const auto t = trainingRows(sets, options, [&](std::size_t i) { return featureRows(*sets[i]); });
-  if (!options.trees) return fitCandidateClassifier(t.rows, t.positive, t.weight, options.ridge);
-  CandidateClassifier classifier;
-  classifier.trees =
-      fitBoostedTrees(t.rows, t.positive, t.weight, fieldMonotone(options.boosting, false));
-  if (options.context) classifier.contextTrees = fitContextTrees(sets, options);
-  return classifier;
-}
-
 ModelPointScorer fitModel(const std::vector<const CandidateSet*>& sets,
                           const ScorerTrainingOptions& options) {
+  const auto t = trainingRows(sets, options, [&](std::size_t i) { return featureRows(*sets[i]); });
   ModelPointScorer best;
-  if (options.bag > 1) {
-    for (unsigned b = 1; b <= options.bag; ++b) {
-      const auto drop = drawGeneratedObjects(sets, options.bagLeaveOut, b);
-      std::vector<const CandidateSet*> some;
-      for (const CandidateSet* set : sets)
-        if (!drop.count(objectKey(*set))) some.push_back(set);
-      best.classifier.members.push_back(fitClassifier(some, options));
-    }
+  if (options.trees) {
+    best.classifier.trees =
+        fitBoostedTrees(t.rows, t.positive, t.weight, fieldMonotone(options.boosting, false));
+    if (options.context) best.classifier.contextTrees = fitContextTrees(sets, options);
   } else {
-    best.classifier = fitClassifier(sets, options);
+    best.classifier = fitCandidateClassifier(t.rows, t.positive, t.weight, options.ridge);
   }
   // The choice is fitted on the training objects' own probabilities. (With two looks, fitting it
   // under first looks that did not see the object instead was tried: 0.613 edits per hand point

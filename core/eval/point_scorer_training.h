@@ -43,11 +43,6 @@ struct ScorerTrainingOptions {
   // leave one source out, resources/models/README.md).
   std::vector<float> addThresholds = {1.01f, 0.9f, 0.8f, 0.7f, 0.6f, 0.5f, 0.4f, 0.3f, 0.2f, 0.1f};
   std::vector<float> nmsRadii = {0.03f, 0.05f, 0.08f, 0.12f};
-  // A bag of this many decisions per model (CandidateClassifier::members), each fitted without
-  // another draw of `bagLeaveOut` of the generated objects (drawGeneratedObjects, seeds 1, 2,
-  // ...); the choice is fitted on their mean. 1: one decision.
-  unsigned bag = 1;
-  double bagLeaveOut = 0.2;
   // PointChoice::copyThreshold; the first (none) on ties.
   std::vector<float> copyThresholds = {1.01f, 0.2f, 0.05f, 0.0f};
 };

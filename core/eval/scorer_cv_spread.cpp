@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <random>
 #include <set>
 #include <sstream>
 
@@ -48,12 +49,20 @@ std::string row(const std::string& name, const std::array<double, 3>& all,
 
 std::vector<CandidateSet> withoutSomeGenerated(const std::vector<CandidateSet>& sets,
                                                double share, unsigned seed) {
-  std::vector<const CandidateSet*> all;
-  for (const CandidateSet& s : sets) all.push_back(&s);
-  const std::set<std::string> drop = drawGeneratedObjects(all, share, seed);
+  if (!(share >= 0 && share < 1))
+    throw InvalidArgument("the share of generated objects to leave out must lie in [0, 1)");
+  std::set<std::string> objects;
+  for (const CandidateSet& s : sets)
+    if (s.generated) objects.insert(s.source + "/" + s.object);
+  std::vector<std::string> order(objects.begin(), objects.end());
+  // Fisher-Yates on the engine's raw numbers: the same draw with every standard library.
+  std::mt19937 engine(seed);
+  for (std::size_t i = order.size(); i > 1; --i) std::swap(order[i - 1], order[engine() % i]);
+  const auto leftOut = static_cast<std::size_t>(std::floor(share * static_cast<double>(order.size())));
+  const std::set<std::string> drop(order.begin(), order.begin() + leftOut);
   std::vector<CandidateSet> out;
   for (const CandidateSet& s : sets)
-    if (!drop.count(objectKey(s))) out.push_back(s);
+    if (!s.generated || !drop.count(s.source + "/" + s.object)) out.push_back(s);
   return out;
 }
 

@@ -14,8 +14,10 @@
 
 namespace sagrid {
 
-// `sets` without the generated objects of one draw (drawGeneratedObjects), whole objects (every
-// model's set of a drawn object goes); curated objects' sets all stay, in their order.
+// `sets` without the generated objects of one draw: floor(share x generated objects) of them,
+// whole objects (every model's set of a drawn object goes), drawn by `seed` the same on every
+// platform; curated objects' sets all stay, in their order. Throws InvalidArgument for a share
+// outside [0, 1).
 std::vector<CandidateSet> withoutSomeGenerated(const std::vector<CandidateSet>& sets,
                                                double share, unsigned seed);
 

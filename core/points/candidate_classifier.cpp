@@ -27,15 +27,6 @@ float CandidateClassifier::probability(const std::vector<float>& features) const
 
 std::vector<float> candidateProbabilities(const CandidateClassifier& classifier,
                                           const std::vector<PointCandidate>& candidates) {
-  if (!classifier.members.empty()) {
-    std::vector<float> mean(candidates.size(), 0.0f);
-    for (const CandidateClassifier& member : classifier.members) {
-      const auto p = candidateProbabilities(member, candidates);
-      for (std::size_t c = 0; c < p.size(); ++c) mean[c] += p[c];
-    }
-    for (float& p : mean) p /= static_cast<float>(classifier.members.size());
-    return mean;
-  }
   std::vector<float> p;
   for (const auto& c : candidates) p.push_back(classifier.probability(c.features));
   return classifier.contextTrees ? bothLooks(*classifier.contextTrees, candidates, p) : p;

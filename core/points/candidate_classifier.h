@@ -26,10 +26,6 @@ struct CandidateClassifier {
   // candidate's features followed by its contextFeatures under the first look's probabilities):
   // where set, candidateProbabilities gives the geometric mean of both looks.
   std::optional<BoostedTrees> contextTrees;
-  // A bag of decisions, each fitted on another draw of the training objects: where set, the mean
-  // of their probabilities (candidateProbabilities) is the decision's, and the fields above are
-  // unused.
-  std::vector<CandidateClassifier> members;
   // The probability that a candidate with these features is an affordance point (the first
   // look). Throws InvalidArgument when the feature count differs from the classifier's.
   float probability(const std::vector<float>& features) const;

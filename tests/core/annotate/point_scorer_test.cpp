@@ -129,42 +129,6 @@ TEST(PointScorerFile, ReadsBackWhatWasWrittenAndNamesWhatIsWrong) {
   EXPECT_NE(messageOf(dir).find("not a SAGrid point scorer"), std::string::npos);
 }
 
-TEST(PointScorerFile, ABagOfDecisionsReadsBackAndABagInsideABagIsRefused) {
-  const fs::path dir = test::freshTempDir();
-  PointScorer scorer;
-  ModelPointScorer bag;
-  bag.classifier.members = {test::fieldOnlyScorer(-10).classifier,
-                            test::fieldOnlyScorer(10).classifier};
-  scorer.byModel["sink.fluidsource"] = bag;
-  writePointScorer(dir, scorer);
-  const auto back = readPointScorer(dir);
-  ASSERT_TRUE(back.has_value());
-  EXPECT_EQ(toJson(*back).dump(), toJson(scorer).dump());
-  ASSERT_EQ(back->forModel("sink.fluidsource")->classifier.members.size(), 2u);
-  // The bag's probability is its members' mean.
-  PointCandidate c;
-  c.features.assign(candidateFeatureNames().size(), 0.0f);
-  c.features[0] = 0.5f;
-  const float a = bag.classifier.members[0].probability(c.features);
-  const float b = bag.classifier.members[1].probability(c.features);
-  EXPECT_NEAR(candidateProbabilities(back->forModel("sink.fluidsource")->classifier, {c})[0],
-              (a + b) / 2, 1e-6f);
-
-  auto j = toJson(scorer);
-  j["models"]["sink.fluidsource"]["members"][1] = j["models"]["sink.fluidsource"];
-  std::ofstream(dir / kPointScorerFile) << j.dump();
-  EXPECT_NE(messageOf(dir).find("model sink.fluidsource: a member of a bag is no bag"),
-            std::string::npos);
-  j = toJson(scorer);
-  j["models"]["sink.fluidsource"]["members"][0]["scale"][0] = 0;
-  std::ofstream(dir / kPointScorerFile) << j.dump();
-  EXPECT_NE(messageOf(dir).find("model sink.fluidsource, member 1: scales must be positive"),
-            std::string::npos);
-  j["models"]["sink.fluidsource"]["members"] = nlohmann::json::array();
-  std::ofstream(dir / kPointScorerFile) << j.dump();
-  EXPECT_NE(messageOf(dir).find("members must be a list of decisions"), std::string::npos);
-}
-
 class AnnotateWithScorer : public ::testing::Test {
  protected:
   void SetUp() override {

@@ -228,41 +228,6 @@ TEST(PointScorerTraining, TheLearningCurvePoolsItsDrawsOnEveryFold) {
   EXPECT_NE(scorerCrossValidationMarkdown(b).find("drawn 3 time(s) per fold"), std::string::npos);
 }
 
-TEST(PointScorerTraining, ABagAveragesDecisionsFittedOnOtherDrawsOfTheGeneratedObjects) {
-  const auto sets = syntheticSets(0.35f);
-  std::vector<const CandidateSet*> all;
-  for (const auto& s : sets) all.push_back(&s);
-  ScorerTrainingOptions options;
-  options.bag = 3;
-  options.bagLeaveOut = 0.5;
-  const PointScorer scorer = trainPointScorer(all, options);
-  const auto& classifier = scorer.forModel("stove.togglebutton")->classifier;
-  ASSERT_EQ(classifier.members.size(), 3u);
-  // Each member is the decision fitted without its own draw of the generated objects.
-  for (unsigned b = 1; b <= 3; ++b) {
-    const auto drop = drawGeneratedObjects(all, 0.5, b);
-    EXPECT_EQ(drop.size(), 10u);
-    std::vector<const CandidateSet*> some;
-    for (const CandidateSet* s : all)
-      if (!drop.count(objectKey(*s))) some.push_back(s);
-    ScorerTrainingOptions one = options;
-    one.bag = 1;
-    const auto alone = trainPointScorer(some, one).forModel("stove.togglebutton")->classifier;
-    const auto& member = classifier.members[b - 1];
-    EXPECT_EQ(toJson(*member.trees).dump(), toJson(*alone.trees).dump()) << "member " << b;
-  }
-  EXPECT_NE(toJson(*classifier.members[0].trees).dump(), toJson(*classifier.members[1].trees).dump());
-  // It decides by their mean.
-  const auto& candidates = sets.front().candidates;
-  const auto p = candidateProbabilities(classifier, candidates);
-  for (std::size_t c = 0; c < candidates.size(); ++c) {
-    float mean = 0;
-    for (const auto& member : classifier.members)
-      mean += candidateProbabilities(member, candidates)[c] / 3;
-    EXPECT_NEAR(p[c], mean, 1e-6f);
-  }
-}
-
 TEST(ScorerCvSpread, EachRepeatLeavesOutWholeGeneratedObjectsOfItsOwnDraw) {
   auto sets = syntheticSets();
   // A second model's set for every object: a drawn object loses both.
