@@ -107,13 +107,16 @@ CategoryPoints predictCategoryPoints(const std::vector<const model::AffordanceMo
   for (std::size_t m = 0; m < out.predictions.size(); ++m) {
     ModelPrediction& p = out.predictions[m];
     const auto& card = models[m]->card();
+    std::vector<const PredictedField*> others;
+    for (std::size_t o = 0; o < out.predictions.size(); ++o)
+      if (o != m) others.push_back(&out.predictions[o].field);
     auto found = pointCandidates(p.field, p.points,
                                  card.extraction.creasePatches ? partsAndPatches : parts,
                                  [&](const Eigen::Vector3f& at) {
       const SurfacePoint s = projectToSurface(at, features.normalization, scene, mesh.fileUp);
       return SurfaceContact{fileToZUpRotation(mesh.fileUp) * s.normal,
                             s.moved * features.normalization.scale};
-    });
+    }, others);
     const ModelPointScorer* scorer =
         passes.scorer ? passes.scorer->forModel(card.name) : nullptr;
     if (scorer && !found.empty())

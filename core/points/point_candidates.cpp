@@ -39,6 +39,8 @@ enum Feature {
   kSurfaceDepth,
   kPartByMaterial,
   kPartByCrease,
+  kOtherField,
+  kOtherClaim,
   kFeatureCount
 };
 
@@ -153,7 +155,7 @@ const std::vector<std::string>& candidateFeatureNames() {
       "part_size",      "part_flatness",       "part_roundness", "part_copies",
       "part_round_flat", "kept_count",         "nearest_kept",   "crowding",
       "best_kept",      "facing_up",           "surface_depth",  "part_by_material",
-      "part_by_crease"};
+      "part_by_crease", "other_field",     "other_claim"};
   // clang-format on
   return names;
 }
@@ -169,9 +171,15 @@ std::vector<PointCandidate> pointCandidates(const PredictedField& field,
                                             const std::vector<ExtractedPoint>& kept,
                                             const std::vector<ConnectedPart>& parts,
                                             const SurfaceContactAt& contact,
+                                            const std::vector<const PredictedField*>& others,
                                             std::size_t maxMinima) {
   if (field.voxels.empty() || field.voxels.size() != field.distances.size()) return {};
   const FieldLookup lookup(field);
+  std::vector<std::pair<FieldLookup, float>> otherLookups;  // each with its best distance
+  for (const PredictedField* other : others)
+    if (other && !other->voxels.empty() && other->voxels.size() == other->distances.size())
+      otherLookups.emplace_back(FieldLookup(*other),
+                                *std::min_element(other->distances.begin(), other->distances.end()));
   const float voxel = 1.0f / static_cast<float>(field.resolution);
   const float merge = 1.5f * voxel;
 
@@ -261,6 +269,10 @@ std::vector<PointCandidate> pointCandidates(const PredictedField& field,
     const SurfaceContact surface = contact(p);
     f[kFacingUp] = surface.normal.z();
     f[kSurfaceDepth] = std::min(surface.depth / kNearCap, 1.0f);
+    f[kOtherField] = 1;
+    for (const auto& [other, otherBest] : otherLookups)
+      f[kOtherField] = std::min(f[kOtherField], (other.near(p, 1) - otherBest) / kDepthCap);
+    f[kOtherClaim] = std::clamp(f[kOtherField] - f[kDistanceAboveBest] / kDepthCap, -1.0f, 1.0f);
     out[s].features = std::move(f);
   }
   return out;

@@ -4,7 +4,8 @@
 // of their basin), and the small parts of the mesh (a knob, a burner's cap, a handle: connected
 // parts, material parts and, for some models, crease patches, at their centroid). Each carries
 // the field there and around it, where it stands in the object, the part it lies on (size,
-// roundness, flatness, how many copies the part has) and the company it keeps. Normalized frame
+// roundness, flatness, how many copies the part has), the company it keeps and what the
+// category's other models' fields say there. Normalized frame
 // (z up); no torch, no surface.
 #pragma once
 
@@ -54,11 +55,18 @@ constexpr std::size_t kMaxCandidateCopies = 15;
 // minima best first, then parts), with the sources of both. A candidate on a part with copies
 // (PartCopies, at most kMaxCandidateCopies) is linked to the candidates at its place on each copy
 // (its offset from the part's centroid kept; PointCandidate::copies). At most `maxMinima` field
-// minima. Empty for an empty field.
+// minima. `others`: the fields of the category's other models on the same object (a stove's
+// burners beside its knobs, a tap's outlet beside its handles), read as two features:
+// other_field, how far above its best the nearest other field lies at the candidate (in units of
+// 0.2 normalized, capped at 1; 1 without other fields: a knob's candidate on a burner's cap is
+// where the burners' field is lowest), and other_claim, other_field less the candidate's
+// own distance above its field's best in the same units, in [-1, 1] (which model the place
+// belongs to more). Empty for an empty field.
 std::vector<PointCandidate> pointCandidates(const PredictedField& field,
                                             const std::vector<ExtractedPoint>& kept,
                                             const std::vector<ConnectedPart>& parts,
                                             const SurfaceContactAt& contact,
+                                            const std::vector<const PredictedField*>& others = {},
                                             std::size_t maxMinima = 24);
 
 }  // namespace sagrid

@@ -25,6 +25,33 @@ const PointCandidate* candidateNear(const std::vector<PointCandidate>& candidate
 
 SurfaceContact facingUp(const Eigen::Vector3f&) { return {Eigen::Vector3f::UnitZ(), 0.0f}; }
 
+TEST(PointCandidates, TheOtherModelsFieldsSayWhichModelAPlaceBelongsTo) {
+  // A knob model's field has two basins, the shallower on a burner: the burner model's field is
+  // lowest there and far above its best at the knob.
+  const Eigen::Vector3f knob = onPlate(6, 10), burner = onPlate(26, 10);
+  const PredictedField knobs = test::plateFieldWithOffsets({knob, burner}, {0.0f, 0.05f});
+  const PredictedField burners = test::plateField({burner});
+  const auto candidates = pointCandidates(knobs, {}, {}, facingUp, {&burners});
+  const PointCandidate* atKnob = candidateNear(candidates, knob);
+  const PointCandidate* atBurner = candidateNear(candidates, burner);
+  ASSERT_TRUE(atKnob && atBurner);
+  const float voxel = 1.0f / test::kPlateResolution;
+  EXPECT_NEAR(feature(*atBurner, "other_field"), 0.0f, 2 * voxel / 0.2f);
+  // 20 voxels from the burner: capped at 1 (0.2 normalized above the burners' best).
+  EXPECT_EQ(feature(*atKnob, "other_field"), 1.0f);
+  // The burner's place is the other model's more than this one's; the knob's is this one's.
+  EXPECT_LT(feature(*atBurner, "other_claim"), 0.0f);
+  EXPECT_GT(feature(*atKnob, "other_claim"), 0.5f);
+  EXPECT_NEAR(feature(*atBurner, "other_claim"),
+              feature(*atBurner, "other_field") - feature(*atBurner, "distance_above_best") / 0.2f,
+              1e-5f);
+  // Without other models' fields every candidate reads as far from them.
+  for (const auto& c : pointCandidates(knobs, {}, {}, facingUp)) {
+    EXPECT_EQ(feature(c, "other_field"), 1.0f);
+    EXPECT_GE(feature(c, "other_claim"), 0.0f);
+  }
+}
+
 TEST(PointCandidates, KeptPointsFieldMinimaAndSmallPartsAreCandidates) {
   // Two basins, the second shallower; the count kept the first; a small part stands elsewhere.
   const Eigen::Vector3f a = onPlate(6, 10), b = onPlate(26, 10), knob = onPlate(16, 24);
