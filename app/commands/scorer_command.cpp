@@ -170,7 +170,8 @@ void setupScorer(CLI::App& root) {
                  "--tuned-on sources, on the other sources' objects (log loss, Brier)");
   cv->add_option("--without-feature", l->withoutFeatures,
                  "A candidate feature the decision does without (repeatable; set to 0 on every "
-                 "candidate): what it adds, leave one source out");
+                 "candidate; MODEL:FEATURE on that model's only): what it adds, leave one source "
+                 "out");
   cv->add_option("--repeats", l->repeats,
                  "Repeat the leave one source out this many times, each with a share of the "
                  "generated objects left out of training (seeds --seed, --seed + 1, ...): the "
@@ -226,9 +227,13 @@ void setupScorer(CLI::App& root) {
                     "(without one: the points the held-out candidates were made with); the "
                     "others keep theirs; refused anywhere, the new scorer also goes to "
                     "OUT/refused/; figures per model in OUT/scorer_guard.json");
+  train->add_option("--without-feature", l->withoutFeatures,
+                    "A candidate feature the decision is fitted without (repeatable; "
+                    "MODEL:FEATURE for that model's decision only): it never reads it");
   addTrainingOptions(*train, l->candidates, l->training);
   train->callback([l] {
-    const auto sets = readAll(l->candidates);
+    auto sets = readAll(l->candidates);
+    sagrid::withoutFeatures(sets, l->withoutFeatures);
     std::vector<const sagrid::CandidateSet*> all;
     for (const auto& s : sets) all.push_back(&s);
     const fs::path from = l->models.empty() ? sagrid::defaultModelsDir() : fs::path(l->models);

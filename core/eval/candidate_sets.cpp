@@ -48,11 +48,14 @@ std::vector<bool> candidateLabels(const CandidateSet& set, double radiusMeters) 
 }
 
 void withoutFeatures(std::vector<CandidateSet>& sets, const std::vector<std::string>& names) {
-  std::vector<std::size_t> columns;
-  for (const auto& name : names) columns.push_back(candidateFeatureIndex(name));
-  for (auto& set : sets)
-    for (auto& candidate : set.candidates)
-      for (std::size_t f : columns) candidate.features.at(f) = 0;
+  for (const auto& name : names) {
+    const auto colon = name.rfind(':');
+    const std::string model = colon == std::string::npos ? "" : name.substr(0, colon);
+    const std::size_t column = candidateFeatureIndex(name.substr(colon + 1));
+    for (auto& set : sets)
+      if (model.empty() || set.model == model)
+        for (auto& candidate : set.candidates) candidate.features.at(column) = 0;
+  }
 }
 
 nlohmann::json toJson(const std::vector<CandidateSet>& sets) {

@@ -35,7 +35,8 @@ struct CandidateSet {
 std::vector<bool> candidateLabels(const CandidateSet& set, double radiusMeters);
 
 // The sets with the named features set to 0 on every candidate: what the decision does without
-// them (an ablation; a constant feature is never split on). Throws InvalidArgument naming an
+// them (an ablation; a constant feature is never split on, so a decision fitted so never reads
+// it). A name "MODEL:FEATURE" does so on that model's sets only. Throws InvalidArgument naming an
 // unknown feature.
 void withoutFeatures(std::vector<CandidateSet>& sets, const std::vector<std::string>& names);
 

@@ -491,8 +491,22 @@ TEST(PointScorerTraining, AFeatureLeftOutIsZeroOnEveryCandidateAndAnUnknownOneIs
       EXPECT_EQ(sets[i].candidates[c].features[distance], 0.0f);
       EXPECT_EQ(sets[i].candidates[c].features[height], before[i].candidates[c].features[height]);
     }
+  // MODEL:FEATURE: that model's sets only.
+  auto mixed = before;
+  for (std::size_t i = 0; i < mixed.size(); i += 2) mixed[i].model = "stove.heatsource";
+  withoutFeatures(mixed, {"stove.heatsource:height"});
+  for (std::size_t i = 0; i < mixed.size(); ++i)
+    for (std::size_t c = 0; c < mixed[i].candidates.size(); ++c)
+      EXPECT_EQ(mixed[i].candidates[c].features[height],
+                i % 2 == 0 ? 0.0f : before[i].candidates[c].features[height]);
+  // A decision fitted without a feature for one model never reads it there.
+  std::vector<const CandidateSet*> all;
+  for (const auto& set : mixed) all.push_back(&set);
+  const PointScorer scorer = trainPointScorer(all, {});
+  for (const auto& tree : scorer.forModel("stove.heatsource")->classifier.trees->trees)
+    for (const auto& node : tree) EXPECT_NE(node.feature, static_cast<int>(height));
   try {
-    withoutFeatures(sets, {"no_such_feature"});
+    withoutFeatures(sets, {"stove.heatsource:no_such_feature"});
     FAIL() << "an unknown feature was left out";
   } catch (const InvalidArgument& e) {
     EXPECT_NE(std::string(e.what()).find("no_such_feature"), std::string::npos) << e.what();
