@@ -1,6 +1,7 @@
 #include "core/eval/scorer_cv_spread.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <random>
@@ -96,7 +97,8 @@ std::string scorerCvSpreadMarkdown(const ScorerCvSpread& spread, const ScorerCro
         "repeats.\n\n"
      << "| repeat | edits per hand point | one key | error, cm | unseen sources: edits | one key "
         "| error, cm |\n|---|---|---|---|---|---|---|\n"
-     << row("all generated objects", numbersOf(full.withCurated), numbersOf(full.unseenWithCurated));
+     << row("every generated object (above)", numbersOf(full.withCurated),
+            numbersOf(full.unseenWithCurated));
   std::array<std::vector<double>, 6> columns;
   for (std::size_t r = 0; r < spread.all.size(); ++r) {
     const auto a = numbersOf(spread.all[r]), u = numbersOf(spread.unseen[r]);
