@@ -16,6 +16,7 @@
 #include "core/dataset/object_source.h"
 #include "core/eval/evaluation.h"
 #include "core/eval/report_cell.h"
+#include "core/eval/sample_stats.h"
 #include "core/labels/labels.h"
 #include "core/model/model_card.h"
 #include "core/model/model_files.h"
@@ -98,10 +99,9 @@ Stats statsOf(const LearningCurveReport& r, const std::string& model, int k) {
   s.folds = static_cast<int>(values.size());
   if (values.empty()) return s;
   s.kUsed = kSum / values.size();
-  s.mean = std::accumulate(values.begin(), values.end(), 0.0) / values.size();
-  double squares = 0;
-  for (double v : values) squares += (v - s.mean) * (v - s.mean);
-  s.sd = values.size() > 1 ? std::sqrt(squares / (values.size() - 1)) : 0.0;
+  const SampleStats spread = sampleStats(values);
+  s.mean = spread.mean;
+  s.sd = spread.sd;
   return s;
 }
 

@@ -9,29 +9,11 @@
 #include <sstream>
 
 #include "core/common/error.h"
+#include "core/eval/sample_stats.h"
 
 namespace sagrid {
 
 namespace {
-
-struct Stats {
-  double mean = 0, sd = 0, lo = 0, hi = 0;
-};
-
-Stats statsOf(const std::vector<double>& values) {
-  Stats s;
-  if (values.empty()) return s;
-  s.lo = *std::min_element(values.begin(), values.end());
-  s.hi = *std::max_element(values.begin(), values.end());
-  for (double v : values) s.mean += v;
-  s.mean /= static_cast<double>(values.size());
-  if (values.size() > 1) {
-    double squares = 0;
-    for (double v : values) squares += (v - s.mean) * (v - s.mean);
-    s.sd = std::sqrt(squares / static_cast<double>(values.size() - 1));
-  }
-  return s;
-}
 
 // Edits per hand point, one-key share (percent) and single-point error (cm) of one figure set.
 std::array<double, 3> numbersOf(const PointChoiceFigures& f) {
@@ -106,15 +88,15 @@ std::string scorerCvSpreadMarkdown(const ScorerCvSpread& spread, const ScorerCro
     for (int c = 0; c < 3; ++c) columns[c].push_back(a[c]), columns[3 + c].push_back(u[c]);
   }
   if (spread.all.empty()) return md.str();
-  std::array<Stats, 6> stats;
-  for (int c = 0; c < 6; ++c) stats[c] = statsOf(columns[c]);
-  const auto pick = [&](double Stats::*field, int from) {
+  std::array<SampleStats, 6> stats;
+  for (int c = 0; c < 6; ++c) stats[c] = sampleStats(columns[c]);
+  const auto pick = [&](double SampleStats::*field, int from) {
     return std::array<double, 3>{stats[from].*field, stats[from + 1].*field, stats[from + 2].*field};
   };
-  md << row("**mean**", pick(&Stats::mean, 0), pick(&Stats::mean, 3))
-     << row("sd", pick(&Stats::sd, 0), pick(&Stats::sd, 3))
-     << row("lowest", pick(&Stats::lo, 0), pick(&Stats::lo, 3))
-     << row("highest", pick(&Stats::hi, 0), pick(&Stats::hi, 3)) << "\n";
+  md << row("**mean**", pick(&SampleStats::mean, 0), pick(&SampleStats::mean, 3))
+     << row("sd", pick(&SampleStats::sd, 0), pick(&SampleStats::sd, 3))
+     << row("lowest", pick(&SampleStats::lowest, 0), pick(&SampleStats::lowest, 3))
+     << row("highest", pick(&SampleStats::highest, 0), pick(&SampleStats::highest, 3)) << "\n";
   return md.str();
 }
 

@@ -5,8 +5,7 @@
 // parts, material parts and, for some models, crease patches, at their centroid). Each carries
 // the field there and around it, where it stands in the object, the part it lies on (size,
 // roundness, flatness, how many copies the part has), the company it keeps and what the
-// category's other models' fields say there. Normalized frame
-// (z up); no torch, no surface.
+// category's other models' fields say there. Normalized frame (z up); no torch, no surface.
 #pragma once
 
 #include <functional>
