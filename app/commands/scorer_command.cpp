@@ -17,6 +17,7 @@
 #include "core/common/resource_paths.h"
 #include "core/eval/evaluation.h"
 #include "core/eval/point_scorer_training.h"
+#include "core/eval/scorer_cv_pairing.h"
 #include "core/eval/scorer_cv_spread.h"
 #include "core/eval/scorer_learning_curve_plot.h"
 #include "core/eval/point_scorer_update.h"
@@ -244,6 +245,26 @@ void setupScorer(CLI::App& root) {
                           sagrid::judgeScorerUpdate(sagrid::trainPointScorer(all, l->training),
                                                     sagrid::readPointScorer(from),
                                                     guardSets, all));
+  });
+
+  struct CompareOptions {
+    std::string these, those, out;
+  };
+  auto pair = std::make_shared<CompareOptions>();
+  auto* compare = cmd->add_subcommand(
+      "compare", "Two runs of `scorer cv --repeats` on the same curated objects, repeat by "
+                 "repeat: per repeat both figures and their difference, the mean and sd of the "
+                 "differences, how many repeats need fewer edits and the sign test (markdown on "
+                 "stdout)");
+  compare->add_option("THIS", pair->these, "A run's scorer_cv.json (or its folder)")->required();
+  compare->add_option("OTHER", pair->those, "The run it is compared with")->required();
+  compare->add_option("--out", pair->out, "Also write the report to this file");
+  compare->callback([pair] {
+    const auto file = [](const fs::path& p) { return fs::is_directory(p) ? p / "scorer_cv.json" : p; };
+    const std::string md = sagrid::pairedScorerCvMarkdown(sagrid::pairScorerCvs(
+        sagrid::readScorerCv(file(pair->these)), sagrid::readScorerCv(file(pair->those))));
+    if (!pair->out.empty()) sagrid::writeFileAtomic(pair->out, md);
+    std::cout << md;
   });
 
   struct UpdateOptions {
