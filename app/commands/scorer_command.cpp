@@ -87,6 +87,8 @@ void addTrainingOptions(CLI::App& cmd, std::vector<std::string>& candidates,
   cmd.add_flag_callback(
       "--no-copies", [&o] { o.copyThresholds = {sagrid::PointChoice{}.copyThreshold}; },
       "A chosen point never brings its places on its part's copies");
+  cmd.add_flag("--smooth-choice", o.smoothChoice,
+               "Judge each choice of thresholds with its neighbours' training edits");
   cmd.add_option("--rounds", o.boosting.rounds, "Boosting rounds (default 100)");
   cmd.add_option("--depth", o.boosting.depth, "Tree depth (default 3)");
 }

@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "core/common/error.h"
+#include "core/eval/choice_grid.h"
 #include "core/eval/metrics.h"
 #include "core/eval/report_cell.h"
 
@@ -296,22 +297,26 @@ ModelPointScorer fitModel(const std::vector<const CandidateSet*>& sets,
   std::vector<std::vector<float>> probabilities;
   for (const CandidateSet* set : sets)
     probabilities.push_back(candidateProbabilities(best.classifier, set->candidates));
-  double bestCost = INFINITY;
-  for (float copy : options.copyThresholds)
-    for (float radius : options.nmsRadii)
-      for (float keep : options.keepThresholds)
-        for (float add : options.addThresholds) {
-          const PointChoice choice{keep, add, radius, copy};
-          double cost = 0;
-          for (std::size_t i = 0; i < sets.size(); ++i)
-            if (!sets[i]->candidates.empty())
-              cost += objectWeight(*sets[i], options) *
-                      editsOf(*sets[i], chosenSurface(*sets[i], probabilities[i], choice)).total();
-          if (cost < bestCost) {
-            bestCost = cost;
-            best.choice = choice;
-          }
-        }
+  // Every choice's weighted edits on the training objects; copy threshold and radius outside.
+  const std::size_t radii = options.nmsRadii.size();
+  ChoiceGrid grid(options.copyThresholds.size() * radii, options.keepThresholds.size(),
+                  options.addThresholds.size());
+  const auto choiceAt = [&](std::size_t outer, std::size_t keep, std::size_t add) {
+    return PointChoice{options.keepThresholds[keep], options.addThresholds[add],
+                       options.nmsRadii[outer % radii], options.copyThresholds[outer / radii]};
+  };
+  for (std::size_t outer = 0; outer < options.copyThresholds.size() * radii; ++outer)
+    for (std::size_t keep = 0; keep < options.keepThresholds.size(); ++keep)
+      for (std::size_t add = 0; add < options.addThresholds.size(); ++add) {
+        const PointChoice choice = choiceAt(outer, keep, add);
+        for (std::size_t i = 0; i < sets.size(); ++i)
+          if (!sets[i]->candidates.empty())
+            grid.cost(outer, keep, add) +=
+                objectWeight(*sets[i], options) *
+                editsOf(*sets[i], chosenSurface(*sets[i], probabilities[i], choice)).total();
+      }
+  const ChoiceGrid::Index taken = grid.best(options.smoothChoice);
+  best.choice = choiceAt(taken.outer, taken.keep, taken.add);
   return best;
 }
 

@@ -45,6 +45,9 @@ struct ScorerTrainingOptions {
   std::vector<float> nmsRadii = {0.03f, 0.05f, 0.08f, 0.12f};
   // PointChoice::copyThreshold; the first (none) on ties.
   std::vector<float> copyThresholds = {1.01f, 0.2f, 0.05f, 0.0f};
+  // The choice judged by the mean training cost of it and its neighbours in the keep and add
+  // thresholds (a flat minimum rather than a lucky one).
+  bool smoothChoice = false;
 };
 
 // One decision per model with both points and non-points among `sets`' candidates (other models
