@@ -87,8 +87,9 @@ void addTrainingOptions(CLI::App& cmd, std::vector<std::string>& candidates,
   cmd.add_flag_callback(
       "--no-copies", [&o] { o.copyThresholds = {sagrid::PointChoice{}.copyThreshold}; },
       "A chosen point never brings its places on its part's copies");
-  cmd.add_flag("--smooth-choice", o.smoothChoice,
-               "Judge each choice of thresholds with its neighbours' training edits");
+  cmd.add_flag_callback("--least-cost-choice", [&o] { o.smoothChoice = false; },
+                        "The choice of thresholds with the least training edits alone (before "
+                        "session 44), instead of the one whose neighbours' edits are least too");
   cmd.add_option("--rounds", o.boosting.rounds, "Boosting rounds (default 100)");
   cmd.add_option("--depth", o.boosting.depth, "Tree depth (default 3)");
 }
