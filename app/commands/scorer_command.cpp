@@ -8,6 +8,7 @@
 #include <iostream>
 #include <map>
 #include <memory>
+#include <sstream>
 
 #include "app/command_registry.h"
 #include "app/commands/pass_options_flags.h"
@@ -259,13 +260,24 @@ void setupScorer(CLI::App& root) {
                  "repeat: per repeat both figures and their difference, the mean and sd of the "
                  "differences, how many repeats need fewer edits and the sign test (markdown on "
                  "stdout)");
-  compare->add_option("THIS", pair->these, "A run's scorer_cv.json (or its folder)")->required();
-  compare->add_option("OTHER", pair->those, "The run it is compared with")->required();
+  compare->add_option("THIS", pair->these,
+                      "A run's scorer_cv.json or its folder; several, comma-separated, are one "
+                      "design's runs with other seeds, their repeats pooled")
+      ->required();
+  compare->add_option("OTHER", pair->those, "The run(s) it is compared with, the same way")
+      ->required();
   compare->add_option("--out", pair->out, "Also write the report to this file");
   compare->callback([pair] {
-    const auto file = [](const fs::path& p) { return fs::is_directory(p) ? p / "scorer_cv.json" : p; };
-    const std::string md = sagrid::pairedScorerCvMarkdown(sagrid::pairScorerCvs(
-        sagrid::readScorerCv(file(pair->these)), sagrid::readScorerCv(file(pair->those))));
+    const auto pooled = [](const std::string& paths) {
+      std::vector<sagrid::RecordedScorerCv> runs;
+      std::stringstream list(paths);
+      for (std::string p; std::getline(list, p, ',');)
+        runs.push_back(sagrid::readScorerCv(fs::is_directory(p) ? fs::path(p) / "scorer_cv.json"
+                                                                : fs::path(p)));
+      return sagrid::pooledScorerCvs(runs);
+    };
+    const std::string md = sagrid::pairedScorerCvMarkdown(
+        sagrid::pairScorerCvs(pooled(pair->these), pooled(pair->those)));
     if (!pair->out.empty()) sagrid::writeFileAtomic(pair->out, md);
     std::cout << md;
   });

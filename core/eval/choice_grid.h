@@ -18,8 +18,8 @@ class ChoiceGrid {
   ChoiceGrid(std::size_t outer, std::size_t keeps, std::size_t adds);
   double& cost(std::size_t outer, std::size_t keep, std::size_t add);
   double cost(std::size_t outer, std::size_t keep, std::size_t add) const;
-  // The mean cost of (keep, add) and its neighbours one step away in either threshold or both
-  // (those inside the grid).
+  // The mean cost of the cell (keep, add), which must lie in the grid, and its neighbours one step
+  // away in either threshold or both (those inside the grid).
   double neighbourhoodCost(std::size_t outer, std::size_t keep, std::size_t add) const;
 
   struct Index {

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <map>
 #include <sstream>
 
 #include <nlohmann/json.hpp>
@@ -37,10 +38,12 @@ void count(const std::vector<PairedFigure>& paired, int& fewer, int& more, int& 
   }
 }
 
+// `d` as `format` prints its size, signed; a difference that prints as zero has no sign.
 std::string differenceCell(double d, const char* format) {
   char cell[64];
-  std::snprintf(cell, sizeof cell, format, d);
-  return (d > 0 ? "+" : "") + std::string(cell);
+  std::snprintf(cell, sizeof cell, format, std::abs(d));
+  const bool zero = std::string(cell).find_first_of("123456789") == std::string::npos;
+  return (zero ? "" : d > 0 ? "+" : "-") + std::string(cell);
 }
 
 }  // namespace
@@ -66,6 +69,39 @@ RecordedScorerCv readScorerCv(const std::filesystem::path& file) {
     throw FileError(file, std::string("not a `sagrid scorer cv` report (scorer_cv.json): ") + e.what());
   }
   return run;
+}
+
+RecordedScorerCv pooledScorerCvs(const std::vector<RecordedScorerCv>& runs) {
+  if (runs.empty()) throw InvalidArgument("no scorer cv runs to pool");
+  const auto sameFigures = [](const RecordedFigures& a, const RecordedFigures& b) {
+    return a.editsPerHandPoint == b.editsPerHandPoint && a.oneKeyShare == b.oneKeyShare &&
+           sameGround(a, b);
+  };
+  RecordedScorerCv pooled = runs.front();
+  std::map<unsigned, std::pair<RecordedFigures, RecordedFigures>> bySeed;
+  for (const RecordedScorerCv& run : runs) {
+    const std::string both = runs.front().file + " and " + run.file;
+    if (!sameFigures(run.all, pooled.all) || !sameFigures(run.unseen, pooled.unseen))
+      throw InvalidArgument(both + ": their full runs differ (another design or other objects): "
+                                   "only runs of one design pool");
+    if (run.leftOutShare != pooled.leftOutShare)
+      throw InvalidArgument(both + ": the repeats left out other shares of the generated objects");
+    for (std::size_t r = 0; r < run.seeds.size(); ++r)
+      if (!bySeed.emplace(run.seeds[r], std::make_pair(run.repeatsAll[r], run.repeatsUnseen[r]))
+               .second)
+        throw InvalidArgument(both + ": seed " + std::to_string(run.seeds[r]) +
+                              " repeats (give the later run --seed past the earlier's)");
+    if (&run != &runs.front()) pooled.file += "+" + run.file;
+  }
+  pooled.seeds.clear();
+  pooled.repeatsAll.clear();
+  pooled.repeatsUnseen.clear();
+  for (const auto& [seed, figures] : bySeed) {
+    pooled.seeds.push_back(seed);
+    pooled.repeatsAll.push_back(figures.first);
+    pooled.repeatsUnseen.push_back(figures.second);
+  }
+  return pooled;
 }
 
 double signTestP(int fewer, int more) {

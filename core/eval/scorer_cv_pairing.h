@@ -32,6 +32,12 @@ struct RecordedScorerCv {
 // repeats has none (pairScorerCvs then refuses it).
 RecordedScorerCv readScorerCv(const std::filesystem::path& file);
 
+// Runs of one design on the same objects with other repeats (`scorer cv --repeats N --seed S` with
+// other seeds) as one run: their repeats together, in seed order. Throws InvalidArgument naming
+// the files when a seed repeats, the left-out shares differ, or the full runs differ (another
+// design or other objects). One run is returned as it is.
+RecordedScorerCv pooledScorerCvs(const std::vector<RecordedScorerCv>& runs);
+
 struct PairedFigure {
   double these = 0, those = 0;
   double difference() const { return these - those; }

@@ -53,6 +53,8 @@ TEST(ScorerCvPairing, PairsTwoRunsRepeatByRepeatAndCountsWhichNeedsFewerEdits) {
   const std::string md = pairedScorerCvMarkdown(p);
   EXPECT_NE(md.find("| 3 | 0.600 | 0.640 | -0.040 |"), std::string::npos) << md;
   EXPECT_NE(md.find("2 / 1 / 1"), std::string::npos) << md;
+  // A difference that prints as zero has no sign.
+  EXPECT_NE(md.find("| 2 | 0.550 | 0.550 | 0.000 |"), std::string::npos) << md;
 }
 
 TEST(ScorerCvPairing, TheSignTestIsTheExactBinomialTail) {
@@ -99,6 +101,28 @@ TEST(ScorerCvPairing, AFileThatIsNoReportIsOneErrorNamingIt) {
   EXPECT_THROW(readScorerCv(dir / "missing.json"), Error);
 }
 
+// `report` with its repeats' seeds starting at `firstSeed`.
+nlohmann::json reportFrom(unsigned firstSeed, double full, const std::vector<double>& repeats) {
+  nlohmann::json j = report(full, repeats);
+  for (std::size_t i = 0; i < repeats.size(); ++i) j["spread"]["repeats"][i]["seed"] = firstSeed + i;
+  return j;
+}
+
+TEST(ScorerCvPairing, OneDesignsRunsWithOtherSeedsPoolTheirRepeats) {
+  const auto dir = test::freshTempDir("scorer_cv_pooling");
+  const auto later = readScorerCv(write(dir, "later.json", reportFrom(3, 0.5, {0.7, 0.8})));
+  const auto first = readScorerCv(write(dir, "first.json", reportFrom(1, 0.5, {0.5, 0.6})));
+  const RecordedScorerCv pooled = pooledScorerCvs({later, first});
+  EXPECT_EQ(pooled.seeds, (std::vector<unsigned>{1, 2, 3, 4}));
+  ASSERT_EQ(pooled.repeatsAll.size(), 4u);
+  EXPECT_DOUBLE_EQ(pooled.repeatsAll[2].editsPerHandPoint, 0.7);
+  // A seed twice, or a run of another design (its full run differs), does not pool.
+  EXPECT_THROW(pooledScorerCvs({first, first}), InvalidArgument);
+  const auto other = readScorerCv(write(dir, "other.json", reportFrom(5, 0.45, {0.5})));
+  EXPECT_THROW(pooledScorerCvs({first, other}), InvalidArgument);
+  EXPECT_THROW(pooledScorerCvs({}), InvalidArgument);
+}
+
 TEST(ScorerCvPairing, TheCommandReadsRunFoldersAndWritesTheReport) {
   const auto dir = test::freshTempDir("scorer_cv_pairing_cli");
   std::filesystem::create_directories(dir / "a");
@@ -110,6 +134,14 @@ TEST(ScorerCvPairing, TheCommandReadsRunFoldersAndWritesTheReport) {
   ASSERT_EQ(r.exitCode, 0) << r.output;
   EXPECT_NE(r.output.find("2 / 0 / 0"), std::string::npos) << r.output;
   EXPECT_TRUE(std::filesystem::exists(dir / "paired.md"));
+  // Runs with other seeds, comma-separated, pool: 4 repeats a side.
+  write(dir, "a2.json", reportFrom(3, 0.5, {0.5, 0.6}));
+  write(dir, "b2.json", reportFrom(3, 0.5, {0.6, 0.7}));
+  r = test::runSagrid("scorer compare " + test::quotedPath(dir / "a") + "," +
+                      test::quotedPath(dir / "a2.json") + " " + test::quotedPath(dir / "b.json") +
+                      "," + test::quotedPath(dir / "b2.json"));
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_NE(r.output.find("4 / 0 / 0"), std::string::npos) << r.output;
   write(dir, "c.json", report(0.5, {0.6}));
   r = test::runSagrid("scorer compare " + test::quotedPath(dir / "a") + " " +
                       test::quotedPath(dir / "c.json"));
