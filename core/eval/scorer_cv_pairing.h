@@ -3,7 +3,8 @@
 // files with the same generated objects, so two runs' repeats pair, and a difference is read
 // against the spread of the differences instead of the spread of either run. Reads the two runs'
 // scorer_cv.json; refuses runs whose repeats do not pair (other seeds, another left-out share,
-// other curated objects).
+// other curated objects). One design's runs with other seeds pool into one (more repeats than
+// one run was given).
 #pragma once
 
 #include <filesystem>
