@@ -662,12 +662,18 @@ std::string scorerCrossValidationMarkdown(const ScorerCrossValidation& cv) {
     // candidate (the ranking's share of the error).
     struct ModelTotals {
       std::size_t decisions = 0, truth = 0, reached = 0, farFirst = 0, farFirstReachable = 0;
+      std::size_t chosen = 0, unreachableAdditions = 0;
+      PointEdits edits;
       double first = 0, nearest = 0;
     };
     std::map<std::string, ModelTotals> byModel;
     for (const auto& d : cv.decisions) {
       ModelTotals& m = byModel[d.model];
       m.truth += d.truthPoints, m.reached += d.truthReached;
+      m.chosen += d.chosenPoints;
+      m.edits += d.edits;
+      // A true point no candidate reaches is an addition whatever the decision chooses.
+      m.unreachableAdditions += std::min(d.edits.additions, d.truthPoints - d.truthReached);
       if (!std::isfinite(d.bestPointError)) continue;
       ++m.decisions;
       m.first += d.bestPointError, m.nearest += d.nearestCandidateError;
@@ -679,16 +685,20 @@ std::string scorerCrossValidationMarkdown(const ScorerCrossValidation& cv) {
        << "reaches within 5 cm; the first chosen point's and the nearest candidate's error, mean "
           "cm; "
        << "decisions whose first point is more than 5 cm off, and of them those with a candidate "
-       << "within 5 cm (the ranking failed, not the candidates).\n\n"
+       << "within 5 cm (the ranking failed, not the candidates); points chosen, and the edits "
+       << "by kind over every held-out decision, with the additions of true points no candidate "
+       << "reaches (no choice saves those).\n\n"
        << "| model | decisions | true points reached | first point | nearest candidate | first "
-          "point "
-          "off | of them reachable |\n|---|---|---|---|---|---|---|\n";
+          "point off | of them reachable | chosen | drags | additions (unreachable) | deletions "
+          "|\n|---|---|---|---|---|---|---|---|---|---|---|\n";
     for (const auto& [model, m] : byModel) {
       const double n = static_cast<double>(std::max<std::size_t>(m.decisions, 1));
       md << "| " << model << " | " << m.decisions << " | " << m.reached << " of " << m.truth
          << " | " << reportCell(100 * m.first / n, "%.1f") << " | "
          << reportCell(100 * m.nearest / n, "%.1f") << " | " << m.farFirst << " | "
-         << m.farFirstReachable << " |\n";
+         << m.farFirstReachable << " | " << m.chosen << " | " << m.edits.drags << " | "
+         << m.edits.additions << " (" << m.unreachableAdditions << ") | " << m.edits.deletions
+         << " |\n";
     }
     std::vector<const HeldOutDecision*> costly;
     for (const auto& d : cv.decisions) costly.push_back(&d);

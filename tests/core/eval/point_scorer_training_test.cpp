@@ -316,6 +316,17 @@ TEST(PointScorerTraining, EachFoldIsDecidedByAScorerFittedWithoutItsSource) {
                                                    std::to_string(3 * real) + " |"),
             std::string::npos)
       << scorerCrossValidationMarkdown(cv);
+  // The per-model row ends with the points chosen and the edits by kind, summed over the held-out
+  // decisions; every true point is reached, so no addition is unreachable.
+  std::size_t chosen = 0;
+  PointEdits byKind;
+  for (const auto& d : cv.decisions) chosen += d.chosenPoints, byKind += d.edits;
+  EXPECT_NE(scorerCrossValidationMarkdown(cv).find(
+                " | " + std::to_string(chosen) + " | " + std::to_string(byKind.drags) + " | " +
+                std::to_string(byKind.additions) + " (0) | " + std::to_string(byKind.deletions) +
+                " |\n"),
+            std::string::npos)
+      << scorerCrossValidationMarkdown(cv);
   EXPECT_EQ(listedEdits, foldEdits);
   EXPECT_EQ(toJson(cv)["held_out_decisions"].size(), real);
   EXPECT_NE(scorerCrossValidationMarkdown(cv).find("## The costliest decisions"), std::string::npos);
