@@ -65,6 +65,20 @@ Chooser scorerChooser(const PointScorer& scorer) {
   return [&scorer](const CandidateSet& set) { return pointsOf(set, scorerChoice(scorer, set)); };
 }
 
+// `scorer`'s ranking cut at the set's true number of points (ScorerSourceFold::trueCount); the
+// count's points where it has no decision.
+Chooser trueCountChooser(const PointScorer& scorer) {
+  return [&scorer](const CandidateSet& set) {
+    const ModelPointScorer* s = scorer.forModel(set.model);
+    if (!s || set.candidates.empty()) return set.keptSurface;
+    const PointChoice ranking{0.0f, 0.0f, s->choice.nmsRadius, PointChoice{}.copyThreshold};
+    auto order = chooseCandidates(candidateProbabilities(s->classifier, set.candidates),
+                                  set.candidates, ranking);
+    order.resize(std::min(order.size(), set.truth.size()));
+    return surfaceOf(set, order);
+  };
+}
+
 // What `scorer` chooses for each of `sets` (scorerChoice), found once: a fold's reports read it
 // three times, and a choice runs both looks' trees over every candidate.
 using Choices = std::map<const CandidateSet*, std::optional<std::vector<std::size_t>>>;
@@ -412,6 +426,7 @@ ScorerCrossValidation crossValidatePointScorer(const std::vector<CandidateSet>& 
     const Choices choices = choicesOf(held, withCurated);
     fold.withCurated =
         figuresOf(held, [&](const CandidateSet& set) { return chosenPoints(choices, set); });
+    fold.trueCount = figuresOf(held, trueCountChooser(withCurated));
     addObjectOutcomes(held, choices, cv);
     addHeldOutDecisions(held, choices, cv);
     fold.objects = fold.count.effort.objects;
@@ -460,6 +475,8 @@ ScorerCrossValidation crossValidatePointScorer(const std::vector<CandidateSet>& 
         [](const auto& f) -> const auto& { return f.generatedOnly; }, unseen);
     (unseen ? cv.unseenWithCurated : cv.withCurated) = total(
         [](const auto& f) -> const auto& { return f.withCurated; }, unseen);
+    (unseen ? cv.unseenTrueCount : cv.trueCount) = total(
+        [](const auto& f) -> const auto& { return f.trueCount; }, unseen);
     for (std::size_t k = 0; k < cv.ks.size(); ++k)
       (unseen ? cv.unseenCurve : cv.curve)
           .push_back(total(
@@ -644,6 +661,13 @@ std::string scorerCrossValidationMarkdown(const ScorerCrossValidation& cv) {
     md << "| **sources no pass was made on** | " << cv.unseenCount.effort.objects << " | "
        << cells(cv.unseenCount) << " | " << cells(cv.unseenGeneratedOnly) << " | "
        << cells(cv.unseenWithCurated) << " |\n";
+  md << "\n## With the true number of points\n\nEach held-out decision's ranking (the last "
+        "column group above) cut at its true number of points, the suppression radius kept, no "
+        "threshold or copy: what a perfect count decision would leave to the curator.\n\n"
+     << "| objects | edits | one key | error |\n|---|---|---|---|\n"
+     << "| **all** | " << cells(cv.trueCount) << " |\n";
+  if (!cv.tunedOn.empty())
+    md << "| **sources no pass was made on** | " << cells(cv.unseenTrueCount) << " |\n";
   if (!cv.ks.empty()) {
     md << "\n## Learning curve: k curated objects of the other sources in training\n\n"
        << "Generated objects always in training; k objects drawn " << cv.draws
@@ -755,7 +779,8 @@ nlohmann::json toJson(const ScorerCrossValidation& cv) {
                      {"objects", f.objects},
                      {"count", toJson(f.count)},
                      {"generated_only", toJson(f.generatedOnly)},
-                     {"with_curated", toJson(f.withCurated)}});
+                     {"with_curated", toJson(f.withCurated)},
+                     {"true_count", toJson(f.trueCount)}});
   nlohmann::json decisions = nlohmann::json::array();
   for (const auto& d : cv.decisions)
     decisions.push_back({{"source", d.source},
@@ -789,7 +814,8 @@ nlohmann::json toJson(const ScorerCrossValidation& cv) {
           {"unseen",
            {{"count", toJson(cv.unseenCount)},
             {"generated_only", toJson(cv.unseenGeneratedOnly)},
-            {"with_curated", toJson(cv.unseenWithCurated)}}},
+            {"with_curated", toJson(cv.unseenWithCurated)},
+            {"true_count", toJson(cv.unseenTrueCount)}}},
           {"generated_objects", cv.generatedObjects},
           {"candidate_recall", cv.candidateRecall},
           {"folds", folds},
@@ -804,7 +830,8 @@ nlohmann::json toJson(const ScorerCrossValidation& cv) {
           {"all",
            {{"count", toJson(cv.count)},
             {"generated_only", toJson(cv.generatedOnly)},
-            {"with_curated", toJson(cv.withCurated)}}}};
+            {"with_curated", toJson(cv.withCurated)},
+            {"true_count", toJson(cv.trueCount)}}}};
 }
 
 }  // namespace sagrid

@@ -72,6 +72,9 @@ struct ScorerSourceFold {
   std::string source;
   std::size_t objects = 0;
   PointChoiceFigures count, generatedOnly, withCurated;
+  // withCurated's ranking cut at each decision's true number of points (its suppression radius
+  // kept, thresholds and copies off): what a perfect count decision would leave to the curator.
+  PointChoiceFigures trueCount;
   // Per ScorerCurveOptions::ks: fitted on the generated objects and k curated objects drawn from
   // the other sources (pooled over ScorerCurveOptions::draws draws).
   std::vector<PointChoiceFigures> curve;
@@ -112,6 +115,7 @@ struct ScorerCrossValidation {
   std::vector<ScorerSourceFold> folds;  // one per source of curated real objects
   std::vector<HeldOutDecision> decisions;  // every held-out (object, model), folds in order
   PointChoiceFigures count, generatedOnly, withCurated;  // over every fold's objects
+  PointChoiceFigures trueCount, unseenTrueCount;  // ScorerSourceFold::trueCount, totalled
   // The same over the folds of sources not in ScorerCurveOptions::tunedOn.
   PointChoiceFigures unseenCount, unseenGeneratedOnly, unseenWithCurated;
   std::vector<std::string> tunedOn;

@@ -329,6 +329,20 @@ TEST(PointScorerTraining, EachFoldIsDecidedByAScorerFittedWithoutItsSource) {
       << scorerCrossValidationMarkdown(cv);
   EXPECT_EQ(listedEdits, foldEdits);
   EXPECT_EQ(toJson(cv)["held_out_decisions"].size(), real);
+  // The same rankings cut at the true number of points: never a deletion (no more points than
+  // the truth's), never fewer points than the truth's while candidates remain (every knob is one,
+  // so no addition), the same hand points; totalled over the folds and reported.
+  PointEdits trueCount;
+  for (const auto& fold : cv.folds) {
+    EXPECT_EQ(fold.trueCount.edits.deletions, 0u) << fold.source;
+    EXPECT_EQ(fold.trueCount.edits.additions, 0u) << fold.source;
+    EXPECT_EQ(fold.trueCount.edits.handPoints, fold.withCurated.edits.handPoints) << fold.source;
+    trueCount += fold.trueCount.edits;
+  }
+  EXPECT_EQ(cv.trueCount.edits.total(), trueCount.total());
+  EXPECT_EQ(toJson(cv)["all"]["true_count"]["edits"], trueCount.total());
+  EXPECT_NE(scorerCrossValidationMarkdown(cv).find("## With the true number of points"),
+            std::string::npos);
   EXPECT_NE(scorerCrossValidationMarkdown(cv).find("## The costliest decisions"), std::string::npos);
 
   // The object confidence's signal and outcome, one per curated object as its fold decided it:
