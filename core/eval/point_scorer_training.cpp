@@ -118,14 +118,15 @@ void addObjectOutcomes(const std::vector<const CandidateSet*>& sets, const Choic
 }
 
 // Per (object, model) of `sets`: what was chosen (the count's points where the scorer has no
-// decision), its edits and errors.
+// decision), its edits and errors, and the edits with the true number of points (`trueCount`).
 void addHeldOutDecisions(const std::vector<const CandidateSet*>& sets, const Choices& choices,
-                         ScorerCrossValidation& cv) {
+                         const Chooser& trueCount, ScorerCrossValidation& cv) {
   for (const CandidateSet* set : sets) {
     HeldOutDecision d{set->source, set->object, set->model, set->truth.size()};
     const auto chosen = chosenPoints(choices, *set);
     d.chosenPoints = chosen.size();
     d.edits = editsOf(*set, chosen);
+    d.trueCountEdits = editsOf(*set, trueCount(*set));
     if (!set->truth.empty()) {
       if (!chosen.empty())
         d.bestPointError = nearestDistance(chosen.front(), set->truth, set->metersPerUnit);
@@ -426,9 +427,10 @@ ScorerCrossValidation crossValidatePointScorer(const std::vector<CandidateSet>& 
     const Choices choices = choicesOf(held, withCurated);
     fold.withCurated =
         figuresOf(held, [&](const CandidateSet& set) { return chosenPoints(choices, set); });
-    fold.trueCount = figuresOf(held, trueCountChooser(withCurated));
+    const Chooser trueCount = trueCountChooser(withCurated);
+    fold.trueCount = figuresOf(held, trueCount);
     addObjectOutcomes(held, choices, cv);
-    addHeldOutDecisions(held, choices, cv);
+    addHeldOutDecisions(held, choices, trueCount, cv);
     fold.objects = fold.count.effort.objects;
     // The learning curve: k objects of the other sources, drawn `draws` times per fold (the
     // figures pooled over the draws).
@@ -687,7 +689,7 @@ std::string scorerCrossValidationMarkdown(const ScorerCrossValidation& cv) {
     struct ModelTotals {
       std::size_t decisions = 0, truth = 0, reached = 0, farFirst = 0, farFirstReachable = 0;
       std::size_t chosen = 0, unreachableAdditions = 0;
-      PointEdits edits;
+      PointEdits edits, trueCountEdits;
       double first = 0, nearest = 0;
     };
     std::map<std::string, ModelTotals> byModel;
@@ -696,6 +698,7 @@ std::string scorerCrossValidationMarkdown(const ScorerCrossValidation& cv) {
       m.truth += d.truthPoints, m.reached += d.truthReached;
       m.chosen += d.chosenPoints;
       m.edits += d.edits;
+      m.trueCountEdits += d.trueCountEdits;
       // A true point no candidate reaches is an addition whatever the decision chooses.
       m.unreachableAdditions += std::min(d.edits.additions, d.truthPoints - d.truthReached);
       if (!std::isfinite(d.bestPointError)) continue;
@@ -711,10 +714,11 @@ std::string scorerCrossValidationMarkdown(const ScorerCrossValidation& cv) {
        << "decisions whose first point is more than 5 cm off, and of them those with a candidate "
        << "within 5 cm (the ranking failed, not the candidates); points chosen, and the edits "
        << "by kind over every held-out decision, with the additions of true points no candidate "
-       << "reaches (no choice saves those).\n\n"
+       << "reaches (no choice saves those); the edits with the true number of points (the same "
+          "ranking cut there).\n\n"
        << "| model | decisions | true points reached | first point | nearest candidate | first "
           "point off | of them reachable | chosen | drags | additions (unreachable) | deletions "
-          "|\n|---|---|---|---|---|---|---|---|---|---|---|\n";
+          "| edits | with the true count |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
     for (const auto& [model, m] : byModel) {
       const double n = static_cast<double>(std::max<std::size_t>(m.decisions, 1));
       md << "| " << model << " | " << m.decisions << " | " << m.reached << " of " << m.truth
@@ -722,7 +726,7 @@ std::string scorerCrossValidationMarkdown(const ScorerCrossValidation& cv) {
          << reportCell(100 * m.nearest / n, "%.1f") << " | " << m.farFirst << " | "
          << m.farFirstReachable << " | " << m.chosen << " | " << m.edits.drags << " | "
          << m.edits.additions << " (" << m.unreachableAdditions << ") | " << m.edits.deletions
-         << " |\n";
+         << " | " << m.edits.total() << " | " << m.trueCountEdits.total() << " |\n";
     }
     std::vector<const HeldOutDecision*> costly;
     for (const auto& d : cv.decisions) costly.push_back(&d);

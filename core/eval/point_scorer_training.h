@@ -107,6 +107,7 @@ struct HeldOutDecision {
   std::size_t truthPoints = 0, chosenPoints = 0;
   std::size_t truthReached = 0;  // true points with a candidate within the match radius
   PointEdits edits;
+  PointEdits trueCountEdits;  // the same ranking cut at the true number of points
   double bestPointError = NAN;         // metres: the first chosen point to the nearest truth
   double nearestCandidateError = NAN;  // metres: the best any one candidate could have done
 };

@@ -324,7 +324,8 @@ TEST(PointScorerTraining, EachFoldIsDecidedByAScorerFittedWithoutItsSource) {
   EXPECT_NE(scorerCrossValidationMarkdown(cv).find(
                 " | " + std::to_string(chosen) + " | " + std::to_string(byKind.drags) + " | " +
                 std::to_string(byKind.additions) + " (0) | " + std::to_string(byKind.deletions) +
-                " |\n"),
+                " | " + std::to_string(byKind.total()) + " | " +
+                std::to_string(cv.trueCount.edits.total()) + " |\n"),
             std::string::npos)
       << scorerCrossValidationMarkdown(cv);
   EXPECT_EQ(listedEdits, foldEdits);
@@ -339,6 +340,9 @@ TEST(PointScorerTraining, EachFoldIsDecidedByAScorerFittedWithoutItsSource) {
     EXPECT_EQ(fold.trueCount.edits.handPoints, fold.withCurated.edits.handPoints) << fold.source;
     trueCount += fold.trueCount.edits;
   }
+  PointEdits listedTrueCount;
+  for (const auto& d : cv.decisions) listedTrueCount += d.trueCountEdits;
+  EXPECT_EQ(listedTrueCount.total(), trueCount.total());
   EXPECT_EQ(cv.trueCount.edits.total(), trueCount.total());
   EXPECT_EQ(toJson(cv)["all"]["true_count"]["edits"], trueCount.total());
   EXPECT_NE(scorerCrossValidationMarkdown(cv).find("## With the true number of points"),
