@@ -65,18 +65,26 @@ Chooser scorerChooser(const PointScorer& scorer) {
   return [&scorer](const CandidateSet& set) { return pointsOf(set, scorerChoice(scorer, set)); };
 }
 
-// `scorer`'s ranking cut at the set's true number of points (ScorerSourceFold::trueCount); the
-// count's points where it has no decision.
-Chooser trueCountChooser(const PointScorer& scorer) {
-  return [&scorer](const CandidateSet& set) {
-    const ModelPointScorer* s = scorer.forModel(set.model);
-    if (!s || set.candidates.empty()) return set.keptSurface;
+// Per set of `sets`, `scorer`'s ranking cut at the set's true number of points
+// (ScorerSourceFold::trueCount; the count's points where it has no decision), found once: the
+// fold's figures and its held-out decisions both read it.
+using PointsBySet = std::map<const CandidateSet*, std::vector<Eigen::Vector3f>>;
+PointsBySet trueCountPoints(const std::vector<const CandidateSet*>& sets,
+                            const PointScorer& scorer) {
+  PointsBySet points;
+  for (const CandidateSet* set : sets) {
+    const ModelPointScorer* s = scorer.forModel(set->model);
+    if (!s || set->candidates.empty()) {
+      points[set] = set->keptSurface;
+      continue;
+    }
     const PointChoice ranking{0.0f, 0.0f, s->choice.nmsRadius, PointChoice{}.copyThreshold};
-    auto order = chooseCandidates(candidateProbabilities(s->classifier, set.candidates),
-                                  set.candidates, ranking);
-    order.resize(std::min(order.size(), set.truth.size()));
-    return surfaceOf(set, order);
-  };
+    auto order = chooseCandidates(candidateProbabilities(s->classifier, set->candidates),
+                                  set->candidates, ranking);
+    order.resize(std::min(order.size(), set->truth.size()));
+    points[set] = surfaceOf(*set, order);
+  }
+  return points;
 }
 
 // What `scorer` chooses for each of `sets` (scorerChoice), found once: a fold's reports read it
@@ -120,13 +128,13 @@ void addObjectOutcomes(const std::vector<const CandidateSet*>& sets, const Choic
 // Per (object, model) of `sets`: what was chosen (the count's points where the scorer has no
 // decision), its edits and errors, and the edits with the true number of points (`trueCount`).
 void addHeldOutDecisions(const std::vector<const CandidateSet*>& sets, const Choices& choices,
-                         const Chooser& trueCount, ScorerCrossValidation& cv) {
+                         const PointsBySet& trueCount, ScorerCrossValidation& cv) {
   for (const CandidateSet* set : sets) {
     HeldOutDecision d{set->source, set->object, set->model, set->truth.size()};
     const auto chosen = chosenPoints(choices, *set);
     d.chosenPoints = chosen.size();
     d.edits = editsOf(*set, chosen);
-    d.trueCountEdits = editsOf(*set, trueCount(*set));
+    d.trueCountEdits = editsOf(*set, trueCount.at(set));
     if (!set->truth.empty()) {
       if (!chosen.empty())
         d.bestPointError = nearestDistance(chosen.front(), set->truth, set->metersPerUnit);
@@ -427,8 +435,9 @@ ScorerCrossValidation crossValidatePointScorer(const std::vector<CandidateSet>& 
     const Choices choices = choicesOf(held, withCurated);
     fold.withCurated =
         figuresOf(held, [&](const CandidateSet& set) { return chosenPoints(choices, set); });
-    const Chooser trueCount = trueCountChooser(withCurated);
-    fold.trueCount = figuresOf(held, trueCount);
+    const PointsBySet trueCount = trueCountPoints(held, withCurated);
+    fold.trueCount =
+        figuresOf(held, [&](const CandidateSet& set) { return trueCount.at(&set); });
     addObjectOutcomes(held, choices, cv);
     addHeldOutDecisions(held, choices, trueCount, cv);
     fold.objects = fold.count.effort.objects;
