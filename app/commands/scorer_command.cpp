@@ -91,6 +91,9 @@ void addTrainingOptions(CLI::App& cmd, std::vector<std::string>& candidates,
   cmd.add_flag_callback("--least-cost-choice", [&o] { o.smoothChoice = false; },
                         "The choice of thresholds with the least training edits alone (before "
                         "session 44), instead of the one whose neighbours' edits are least too");
+  cmd.add_flag_callback("--no-learned-count", [&o] { o.learnedCount = false; },
+                        "No learned count of points: the choice's thresholds alone decide how "
+                        "many (before session 46)");
   cmd.add_option("--rounds", o.boosting.rounds, "Boosting rounds (default 100)");
   cmd.add_option("--depth", o.boosting.depth, "Tree depth (default 3)");
 }

@@ -8,6 +8,7 @@
 #include "core/annotate/pass_options.h"
 #include "core/common/atomic_file.h"
 #include "core/common/error.h"
+#include "core/points/point_count.h"
 
 namespace sagrid {
 
@@ -26,12 +27,25 @@ const ModelPointScorer* PointScorer::forModel(const std::string& modelName) cons
   return found == byModel.end() ? nullptr : &found->second;
 }
 
+std::vector<std::size_t> chosenCandidates(const ModelPointScorer& scorer,
+                                          const std::vector<PointCandidate>& candidates) {
+  const auto p = candidateProbabilities(scorer.classifier, candidates);
+  auto taken = chooseCandidates(p, candidates, scorer.choice);
+  if (!scorer.countTrees || !scorer.classifier.trees || candidates.empty()) return taken;
+  CandidateClassifier firstLook;
+  firstLook.trees = scorer.classifier.trees;
+  const auto features = countFeatures(candidates, candidateProbabilities(firstLook, candidates),
+                                      scorer.choice.nmsRadius);
+  const PointChoice ranking{0.0f, 0.0f, scorer.choice.nmsRadius, PointChoice{}.copyThreshold};
+  return withLearnedCount(std::move(taken), chooseCandidates(p, candidates, ranking), p,
+                          candidates, scorer.choice.nmsRadius, *scorer.countTrees, features);
+}
+
 std::vector<ExtractedPoint> scoredPoints(const ModelPointScorer& scorer,
                                          const std::vector<PointCandidate>& candidates,
                                          const ExtractionSettings& extraction) {
   std::vector<ExtractedPoint> out;
-  const auto p = candidateProbabilities(scorer.classifier, candidates);
-  for (std::size_t i : chooseCandidates(p, candidates, scorer.choice))
+  for (std::size_t i : chosenCandidates(scorer, candidates))
     out.push_back({candidates[i].position, candidates[i].distance,
                    confidenceOf(candidates[i].distance, extraction)});
   return out;
@@ -58,6 +72,7 @@ nlohmann::json toJson(const PointScorer& scorer) {
              {"nms_radius", m.choice.nmsRadius},
              {"copy_threshold", m.choice.copyThreshold}};
     if (!m.networkWeights.empty()) model["network_weights"] = m.networkWeights;
+    if (m.countTrees) model["count_trees"] = toJson(*m.countTrees);
     // Trees or the logistic regression, whichever decides.
     if (m.classifier.trees) {
       model["trees"] = toJson(*m.classifier.trees);
@@ -72,6 +87,7 @@ nlohmann::json toJson(const PointScorer& scorer) {
   return {{"schema", kSchema},
           {"features", candidateFeatureNames()},
           {"context_features", contextFeatureNames()},
+          {"count_features", countFeatureNames()},
           {"trained_on", scorer.trainedOn},
           {"passes_off", scorer.passesOff},
           {"models", models}};
@@ -95,6 +111,10 @@ std::optional<PointScorer> readPointScorer(const std::filesystem::path& modelsDi
         j.at("context_features").get<std::vector<std::string>>() != contextFeatureNames())
       throw FileError(file, "reads other context features than this build computes: train it "
                             "again (sagrid scorer train)");
+    if (j.contains("count_features") &&
+        j.at("count_features").get<std::vector<std::string>>() != countFeatureNames())
+      throw FileError(file, "reads other count features than this build computes: train it "
+                            "again (sagrid scorer train)");
     scorer.trainedOn = j.value("trained_on", "");
     try {
       scorer.passesOff = recordedPassesOff(j.value("passes_off", std::vector<std::string>{}));
@@ -109,6 +129,19 @@ std::optional<PointScorer> readPointScorer(const std::filesystem::path& modelsDi
       s.choice.nmsRadius = m.at("nms_radius").get<float>();
       s.choice.copyThreshold = m.value("copy_threshold", PointChoice{}.copyThreshold);
       s.networkWeights = m.value("network_weights", "");
+      if (m.contains("count_trees")) {
+        if (!j.contains("count_features"))
+          throw FileError(file, "model " + name + ": count trees without count_features");
+        try {
+          s.countTrees = boostedTreesFromJson(m.at("count_trees"));
+        } catch (const InvalidArgument& e) {
+          throw FileError(file, "model " + name + ": count_trees: " + e.what());
+        }
+        if (s.countTrees->features != countFeatureNames().size())
+          throw FileError(file, "model " + name + ": its count trees read " +
+                                    std::to_string(s.countTrees->features) + " features, not " +
+                                    std::to_string(countFeatureNames().size()));
+      }
       if (!std::isfinite(s.choice.keepThreshold) || !std::isfinite(s.choice.addThreshold) ||
           !std::isfinite(s.choice.nmsRadius) || !std::isfinite(s.choice.copyThreshold) ||
           s.choice.nmsRadius < 0)
@@ -139,8 +172,10 @@ std::optional<PointScorer> readPointScorer(const std::filesystem::path& modelsDi
         scorer.byModel[name] = s;
         continue;
       }
-      if (m.contains("context_trees"))
-        throw FileError(file, "model " + name + ": context trees need the trees of a first look");
+      for (const char* needsTrees : {"context_trees", "count_trees"})
+        if (m.contains(needsTrees))
+          throw FileError(file, "model " + name + ": " + needsTrees +
+                                    " need the trees of a first look");
       s.classifier.mean = m.at("mean").get<std::vector<float>>();
       s.classifier.scale = m.at("scale").get<std::vector<float>>();
       s.classifier.weights = m.at("weights").get<std::vector<float>>();

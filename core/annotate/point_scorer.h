@@ -26,6 +26,8 @@ struct ModelPointScorer {
   // empty when not recorded. A models folder whose card has other weights still uses the decision
   // and says so (ModelSet::setPointScorer): its fields may no longer look like what it learned.
   std::string networkWeights;
+  // How many points (core/points/point_count.h); where absent, the choice's thresholds decide.
+  std::optional<BoostedTrees> countTrees;
 };
 
 struct PointScorer {
@@ -37,6 +39,11 @@ struct PointScorer {
   // The decision for one model; nullptr where the scorer has none (its count's points stand).
   const ModelPointScorer* forModel(const std::string& modelName) const;
 };
+
+// The candidates `scorer` chooses, most probable first: its choice (PointChoice), with the
+// learned count's additions where it has one (core/points/point_count.h).
+std::vector<std::size_t> chosenCandidates(const ModelPointScorer& scorer,
+                                          const std::vector<PointCandidate>& candidates);
 
 // The points of one model from its candidates: the chosen candidates, most probable first, with
 // their field distance and its confidence under `extraction` (as the count's points have: the

@@ -13,6 +13,7 @@
 #include "core/eval/choice_grid.h"
 #include "core/eval/metrics.h"
 #include "core/eval/report_cell.h"
+#include "core/points/point_count.h"
 
 namespace sagrid {
 
@@ -50,8 +51,7 @@ std::optional<std::vector<std::size_t>> scorerChoice(const PointScorer& scorer,
                                                      const CandidateSet& set) {
   const ModelPointScorer* s = scorer.forModel(set.model);
   if (!s || set.candidates.empty()) return std::nullopt;
-  return chooseCandidates(candidateProbabilities(s->classifier, set.candidates), set.candidates,
-                          s->choice);
+  return chosenCandidates(*s, set.candidates);
 }
 
 // The points of a choice, the count's where there is none.
@@ -265,7 +265,8 @@ TrainingRows trainingRows(
 // is to be trusted.
 constexpr std::size_t kContextFolds = 4;
 BoostedTrees fitContextTrees(const std::vector<const CandidateSet*>& sets,
-                             const ScorerTrainingOptions& options) {
+                             const ScorerTrainingOptions& options,
+                             std::vector<std::vector<float>>& firstLook) {
   std::set<std::string> names;
   for (const CandidateSet* set : sets) names.insert(set->source + "/" + set->object);
   const std::vector<std::string> objects(names.begin(), names.end());
@@ -275,7 +276,7 @@ BoostedTrees fitContextTrees(const std::vector<const CandidateSet*>& sets,
                                                         sets[i]->source + "/" + sets[i]->object) -
                                        objects.begin()) %
               kContextFolds;
-  std::vector<std::vector<float>> firstLook(sets.size());
+  firstLook.assign(sets.size(), {});
   for (std::size_t f = 0; f < kContextFolds; ++f) {
     std::vector<const CandidateSet*> others;
     for (std::size_t i = 0; i < sets.size(); ++i)
@@ -303,14 +304,40 @@ BoostedTrees fitContextTrees(const std::vector<const CandidateSet*>& sets,
   return fitBoostedTrees(t.rows, t.positive, t.weight, fieldMonotone(options.boosting, true));
 }
 
+// The learned count's trees (core/points/point_count.h) over `sets`' first looks by trees that
+// did not see them; nullopt where the sets give one answer alone (every object k points or more).
+std::optional<BoostedTrees> fitCountTrees(const std::vector<const CandidateSet*>& sets,
+                                          const std::vector<std::vector<float>>& firstLook,
+                                          float nmsRadius, const ScorerTrainingOptions& options) {
+  TrainingRows t;
+  for (std::size_t i = 0; i < sets.size(); ++i) {
+    if (sets[i]->candidates.empty()) continue;
+    const auto rows = countRows(countFeatures(sets[i]->candidates, firstLook[i], nmsRadius));
+    for (std::size_t k = 0; k < rows.size(); ++k) {
+      t.rows.push_back(rows[k]);
+      t.positive.push_back(sets[i]->truth.size() > k);
+      t.weight.push_back(objectWeight(*sets[i], options));
+    }
+  }
+  if (std::count(t.positive.begin(), t.positive.end(), true) == 0 ||
+      std::count(t.positive.begin(), t.positive.end(), false) == 0)
+    return std::nullopt;
+  BoostingOptions boosting = options.boosting;
+  boosting.monotone.assign(countFeatureNames().size(), 0);
+  boosting.monotone.back() = -1;  // never more likely to have k points or more for a larger k
+  return fitBoostedTrees(t.rows, t.positive, t.weight, boosting);
+}
+
 ModelPointScorer fitModel(const std::vector<const CandidateSet*>& sets,
                           const ScorerTrainingOptions& options) {
   const auto t = trainingRows(sets, options, [&](std::size_t i) { return featureRows(*sets[i]); });
   ModelPointScorer best;
+  std::vector<std::vector<float>> unseenFirstLook;
   if (options.trees) {
     best.classifier.trees =
         fitBoostedTrees(t.rows, t.positive, t.weight, fieldMonotone(options.boosting, false));
-    if (options.context) best.classifier.contextTrees = fitContextTrees(sets, options);
+    if (options.context)
+      best.classifier.contextTrees = fitContextTrees(sets, options, unseenFirstLook);
   } else {
     best.classifier = fitCandidateClassifier(t.rows, t.positive, t.weight, options.ridge);
   }
@@ -340,6 +367,8 @@ ModelPointScorer fitModel(const std::vector<const CandidateSet*>& sets,
       }
   const ChoiceGrid::Index taken = grid.best(options.smoothChoice);
   best.choice = choiceAt(taken.outer, taken.keep, taken.add);
+  if (options.learnedCount && !unseenFirstLook.empty())
+    best.countTrees = fitCountTrees(sets, unseenFirstLook, best.choice.nmsRadius, options);
   return best;
 }
 

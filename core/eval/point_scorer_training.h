@@ -50,6 +50,12 @@ struct ScorerTrainingOptions {
   // out over 20 paired repeats, 0.583 -> 0.567 edits per hand point (fewer in 15, more in 4;
   // resources/models/README.md, session 44).
   bool smoothChoice = true;
+  // With trees and the second look: a learned count (core/points/point_count.h) that adds the
+  // ranking's next candidates to the choice while each is worth its risk. Leave one source out
+  // over 20 paired repeats, 0.567 -> 0.546 edits per hand point (fewer in 19, more in none; the
+  // 13 repositories no rule was made on fewer in 16, more in 3; resources/models/README.md,
+  // session 46).
+  bool learnedCount = true;
 };
 
 // One decision per model with both points and non-points among `sets`' candidates (other models
@@ -75,6 +81,7 @@ struct ScorerSourceFold {
   // withCurated's ranking cut at each decision's true number of points (its suppression radius
   // kept, thresholds and copies off): what a perfect count decision would leave to the curator.
   PointChoiceFigures trueCount;
+  std::vector<PointChoiceFigures> countArms;
   // Per ScorerCurveOptions::ks: fitted on the generated objects and k curated objects drawn from
   // the other sources (pooled over ScorerCurveOptions::draws draws).
   std::vector<PointChoiceFigures> curve;
@@ -117,6 +124,7 @@ struct ScorerCrossValidation {
   std::vector<HeldOutDecision> decisions;  // every held-out (object, model), folds in order
   PointChoiceFigures count, generatedOnly, withCurated;  // over every fold's objects
   PointChoiceFigures trueCount, unseenTrueCount;  // ScorerSourceFold::trueCount, totalled
+  std::vector<PointChoiceFigures> countArms, unseenCountArms;
   // The same over the folds of sources not in ScorerCurveOptions::tunedOn.
   PointChoiceFigures unseenCount, unseenGeneratedOnly, unseenWithCurated;
   std::vector<std::string> tunedOn;

@@ -17,6 +17,7 @@
 #include "core/dataset/dataset.h"
 #include "core/features/feature_grid.h"
 #include "core/generate/dataset_generator.h"
+#include "core/points/point_count.h"
 #include "support/point_scorers.h"
 #include "support/test_paths.h"
 #include "support/untrained_models.h"
@@ -65,6 +66,11 @@ TEST(PointScorerFile, ReadsBackWhatWasWrittenAndNamesWhatIsWrong) {
     contextRows.back().resize(d + kContextFeatureCount, static_cast<float>(contextRows.size() % 2));
   }
   trees.classifier.contextTrees = fitBoostedTrees(contextRows, positive, std::vector<float>(20, 1.0f));
+  // With a learned count: trees over the count's features and k.
+  std::vector<std::vector<float>> countRows;
+  for (int i = 0; i < 20; ++i)
+    countRows.push_back(std::vector<float>(countFeatureNames().size(), static_cast<float>(i % 2)));
+  trees.countTrees = fitBoostedTrees(countRows, positive, std::vector<float>(20, 1.0f));
   scorer.byModel["stove.heatsource"] = trees;
   scorer.byModel["stove.heatsource"].networkWeights = std::string(64, 'a');
   scorer.trainedOn = "test";
@@ -82,6 +88,8 @@ TEST(PointScorerFile, ReadsBackWhatWasWrittenAndNamesWhatIsWrong) {
   ASSERT_TRUE(back->forModel("stove.heatsource")->classifier.contextTrees.has_value());
   EXPECT_EQ(toJson(*back->forModel("stove.heatsource")->classifier.contextTrees).dump(),
             toJson(*trees.classifier.contextTrees).dump());
+  ASSERT_TRUE(back->forModel("stove.heatsource")->countTrees.has_value());
+  EXPECT_FALSE(back->forModel("stove.togglebutton")->countTrees.has_value());
 
   auto j = toJson(scorer);
   auto rewrite = [&](const nlohmann::json& bad) { std::ofstream(dir / kPointScorerFile) << bad.dump(); };
@@ -95,6 +103,26 @@ TEST(PointScorerFile, ReadsBackWhatWasWrittenAndNamesWhatIsWrong) {
   EXPECT_NE(messageOf(dir).find("its context trees read " + std::to_string(d) + " features"),
             std::string::npos);
   EXPECT_NE(messageOf(dir).find(kPointScorerFile), std::string::npos);
+  // Count trees of another build's count features, or beside a logistic regression: refused.
+  j = toJson(scorer);
+  j["count_features"][0] = "renamed";
+  rewrite(j);
+  EXPECT_NE(messageOf(dir).find("other count features"), std::string::npos);
+  j = toJson(scorer);
+  j["models"]["stove.heatsource"]["count_trees"] = toJson(*trees.classifier.trees);
+  rewrite(j);
+  EXPECT_NE(messageOf(dir).find("its count trees read " + std::to_string(d) + " features"),
+            std::string::npos);
+  j = toJson(scorer);
+  j["models"]["stove.togglebutton"]["count_trees"] = toJson(*trees.countTrees);
+  rewrite(j);
+  EXPECT_NE(messageOf(dir).find("count_trees need the trees of a first look"), std::string::npos);
+  // A file from before the learned count: its choice alone decides.
+  j = toJson(scorer);
+  j.erase("count_features");
+  j["models"]["stove.heatsource"].erase("count_trees");
+  rewrite(j);
+  EXPECT_FALSE(readPointScorer(dir)->forModel("stove.heatsource")->countTrees.has_value());
   j = toJson(scorer);
   j["context_features"][0] = "renamed";
   rewrite(j);

@@ -164,6 +164,36 @@ TEST(PointScorerTraining, TheSecondLookFindsThePartsThatLookLikeTheBestOne) {
   EXPECT_TRUE(two.forModel("stove.togglebutton")->classifier.contextTrees.has_value());
 }
 
+// Every object has three knobs: the learned count fills a choice whose thresholds stop short, and
+// takes no fourth point.
+TEST(PointScorerTraining, TheLearnedCountGrowsAChoiceToTheNumberOfPointsObjectsHave) {
+  std::mt19937 rng(13);
+  std::vector<CandidateSet> sets, heldOut;
+  for (int i = 0; i < 60; ++i) sets.push_back(knobsAlikeObject("train", i, rng));
+  for (int i = 0; i < 20; ++i) heldOut.push_back(knobsAlikeObject("held-out", i, rng));
+  std::vector<const CandidateSet*> training;
+  for (const auto& s : sets) training.push_back(&s);
+  ScorerTrainingOptions noCount;
+  noCount.learnedCount = false;
+  const PointScorer without = trainPointScorer(training, noCount);
+  const PointScorer with = trainPointScorer(training, {});
+  ASSERT_TRUE(with.forModel("stove.togglebutton")->countTrees.has_value());
+  EXPECT_FALSE(without.forModel("stove.togglebutton")->countTrees.has_value());
+  std::size_t fewerThanThree = 0;
+  for (const auto& s : heldOut) {
+    const auto withCount = scoredPoints(*with.forModel(s.model), s.candidates, {});
+    EXPECT_EQ(withCount.size(), 3u) << s.object;
+    fewerThanThree += scoredPoints(*without.forModel(s.model), s.candidates, {}).size() < 3;
+  }
+  EXPECT_GT(fewerThanThree, 0u);  // the thresholds alone stop short on some
+  EXPECT_LE(editsOn(with, heldOut, "held-out"), editsOn(without, heldOut, "held-out"));
+  // Without the second look there is no first look of unseen objects to learn the count on.
+  ScorerTrainingOptions firstLookOnly;
+  firstLookOnly.context = false;
+  EXPECT_FALSE(
+      trainPointScorer(training, firstLookOnly).forModel("stove.togglebutton")->countTrees);
+}
+
 TEST(PointScorerTraining, FoldsLeaveOneSourceOutAndAreReproducible) {
   const auto sets = syntheticSets();
   const ScorerCrossValidation cv = crossValidatePointScorer(sets, {});
