@@ -52,7 +52,7 @@ struct ScorerTrainingOptions {
   bool smoothChoice = true;
   // With trees and the second look: a learned count (core/points/point_count.h) that adds the
   // ranking's next candidates to the choice while each is worth its risk. Leave one source out
-  // over 20 paired repeats, 0.567 -> 0.546 edits per hand point (fewer in 19, more in none; the
+  // over 20 paired repeats, 0.567 -> 0.547 edits per hand point (fewer in 19, more in none; the
   // 13 repositories no rule was made on fewer in 16, more in 3; resources/models/README.md,
   // session 46).
   bool learnedCount = true;
