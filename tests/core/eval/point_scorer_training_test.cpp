@@ -134,14 +134,27 @@ CandidateSet knobsAlikeObject(const std::string& source, int index, std::mt19937
   return set;
 }
 
+// 60 objects to train on and 20 held out, as knobsAlikeObject makes them.
+struct KnobsAlike {
+  std::vector<CandidateSet> sets, heldOut;
+  std::vector<const CandidateSet*> training() const {
+    std::vector<const CandidateSet*> out;
+    for (const auto& s : sets) out.push_back(&s);
+    return out;
+  }
+};
+KnobsAlike knobsAlikeObjects(unsigned seed) {
+  std::mt19937 rng(seed);
+  KnobsAlike objects;
+  for (int i = 0; i < 60; ++i) objects.sets.push_back(knobsAlikeObject("train", i, rng));
+  for (int i = 0; i < 20; ++i) objects.heldOut.push_back(knobsAlikeObject("held-out", i, rng));
+  return objects;
+}
+
 TEST(PointScorerTraining, TheSecondLookFindsThePartsThatLookLikeTheBestOne) {
-  std::mt19937 rng(11);
-  std::vector<CandidateSet> sets;
-  for (int i = 0; i < 60; ++i) sets.push_back(knobsAlikeObject("train", i, rng));
-  std::vector<CandidateSet> heldOut;
-  for (int i = 0; i < 20; ++i) heldOut.push_back(knobsAlikeObject("held-out", i, rng));
-  std::vector<const CandidateSet*> training;
-  for (const auto& s : sets) training.push_back(&s);
+  const KnobsAlike objects = knobsAlikeObjects(11);
+  const auto& [sets, heldOut] = objects;
+  const auto training = objects.training();
   ScorerTrainingOptions firstLookOnly;
   firstLookOnly.context = false;
   const PointScorer without = trainPointScorer(training, firstLookOnly);
@@ -167,12 +180,9 @@ TEST(PointScorerTraining, TheSecondLookFindsThePartsThatLookLikeTheBestOne) {
 // Every object has three knobs: the learned count fills a choice whose thresholds stop short, and
 // takes no fourth point.
 TEST(PointScorerTraining, TheLearnedCountGrowsAChoiceToTheNumberOfPointsObjectsHave) {
-  std::mt19937 rng(13);
-  std::vector<CandidateSet> sets, heldOut;
-  for (int i = 0; i < 60; ++i) sets.push_back(knobsAlikeObject("train", i, rng));
-  for (int i = 0; i < 20; ++i) heldOut.push_back(knobsAlikeObject("held-out", i, rng));
-  std::vector<const CandidateSet*> training;
-  for (const auto& s : sets) training.push_back(&s);
+  const KnobsAlike objects = knobsAlikeObjects(13);
+  const auto& heldOut = objects.heldOut;
+  const auto training = objects.training();
   ScorerTrainingOptions noCount;
   noCount.learnedCount = false;
   const PointScorer without = trainPointScorer(training, noCount);
