@@ -81,7 +81,6 @@ struct ScorerSourceFold {
   // withCurated's ranking cut at each decision's true number of points (its suppression radius
   // kept, thresholds and copies off): what a perfect count decision would leave to the curator.
   PointChoiceFigures trueCount;
-  std::vector<PointChoiceFigures> countArms;
   // Per ScorerCurveOptions::ks: fitted on the generated objects and k curated objects drawn from
   // the other sources (pooled over ScorerCurveOptions::draws draws).
   std::vector<PointChoiceFigures> curve;
@@ -124,7 +123,6 @@ struct ScorerCrossValidation {
   std::vector<HeldOutDecision> decisions;  // every held-out (object, model), folds in order
   PointChoiceFigures count, generatedOnly, withCurated;  // over every fold's objects
   PointChoiceFigures trueCount, unseenTrueCount;  // ScorerSourceFold::trueCount, totalled
-  std::vector<PointChoiceFigures> countArms, unseenCountArms;
   // The same over the folds of sources not in ScorerCurveOptions::tunedOn.
   PointChoiceFigures unseenCount, unseenGeneratedOnly, unseenWithCurated;
   std::vector<std::string> tunedOn;
