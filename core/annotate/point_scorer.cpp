@@ -29,13 +29,17 @@ const ModelPointScorer* PointScorer::forModel(const std::string& modelName) cons
 
 std::vector<std::size_t> chosenCandidates(const ModelPointScorer& scorer,
                                           const std::vector<PointCandidate>& candidates) {
-  const auto p = candidateProbabilities(scorer.classifier, candidates);
+  if (!scorer.countTrees || !scorer.classifier.trees || candidates.empty())
+    return chooseCandidates(candidateProbabilities(scorer.classifier, candidates), candidates,
+                            scorer.choice);
+  // The first look once: the count reads it, both looks' probabilities build on it.
+  std::vector<float> firstLook;
+  for (const auto& c : candidates) firstLook.push_back(scorer.classifier.probability(c.features));
+  const auto p = scorer.classifier.contextTrees
+                     ? bothLooks(*scorer.classifier.contextTrees, candidates, firstLook)
+                     : firstLook;
   auto taken = chooseCandidates(p, candidates, scorer.choice);
-  if (!scorer.countTrees || !scorer.classifier.trees || candidates.empty()) return taken;
-  CandidateClassifier firstLook;
-  firstLook.trees = scorer.classifier.trees;
-  const auto features = countFeatures(candidates, candidateProbabilities(firstLook, candidates),
-                                      scorer.choice.nmsRadius);
+  const auto features = countFeatures(candidates, firstLook, scorer.choice.nmsRadius);
   const PointChoice ranking{0.0f, 0.0f, scorer.choice.nmsRadius, PointChoice{}.copyThreshold};
   return withLearnedCount(std::move(taken), chooseCandidates(p, candidates, ranking), p,
                           candidates, scorer.choice.nmsRadius, *scorer.countTrees, features);

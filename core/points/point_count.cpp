@@ -67,12 +67,6 @@ std::vector<std::vector<float>> countRows(const std::vector<float>& features) {
   return rows;
 }
 
-std::size_t learnedCount(const BoostedTrees& trees, const std::vector<float>& features) {
-  std::size_t n = 0;
-  for (std::size_t k = 1; k <= kMaxLearnedCount; ++k) n += countAtLeast(trees, features, k) >= 0.5f;
-  return n;
-}
-
 float countAtLeast(const BoostedTrees& trees, const std::vector<float>& features, std::size_t k) {
   if (k == 0) return 1.0f;
   if (k > kMaxLearnedCount) return 0.0f;

@@ -1,8 +1,7 @@
 // How many points one model has on an object, learned (issue 40): boosted trees over a
 // description of the object's candidates under the first look (core/points/
 // candidate_classifier.h) followed by a number k, giving the probability that the object has k
-// points or more. The count is the number of k (1 .. kMaxLearnedCount) at which that is at least
-// a half; the trees are monotone in k, so it is where the probability first falls below a half.
+// points or more; the trees are monotone in k, so that probability never rises with k.
 // Its trees learn on first looks of trees that did not see the object (the second look's folds),
 // so they read the first look as it reads an object nobody curated.
 #pragma once
@@ -28,8 +27,6 @@ std::vector<float> countFeatures(const std::vector<PointCandidate>& candidates,
                                  const std::vector<float>& firstLook, float nmsRadius);
 // The rows the trees read for k = 1 .. kMaxLearnedCount: the features followed by k.
 std::vector<std::vector<float>> countRows(const std::vector<float>& features);
-// The learned count (0 .. kMaxLearnedCount).
-std::size_t learnedCount(const BoostedTrees& trees, const std::vector<float>& features);
 // The probability that the object has k points or more (k >= 1; 0 beyond kMaxLearnedCount).
 float countAtLeast(const BoostedTrees& trees, const std::vector<float>& features, std::size_t k);
 
