@@ -94,6 +94,10 @@ void addTrainingOptions(CLI::App& cmd, std::vector<std::string>& candidates,
   cmd.add_flag_callback("--no-learned-count", [&o] { o.learnedCount = false; },
                         "No learned count of points: the choice's thresholds alone decide how "
                         "many (before session 46)");
+  cmd.add_flag_callback(
+      "--no-other-models-count", [&o] { o.otherModelsCount = false; },
+      "The learned count reads its own model's candidates alone, not the "
+      "object's other models of the category (before session 47)");
   cmd.add_option("--rounds", o.boosting.rounds, "Boosting rounds (default 100)");
   cmd.add_option("--depth", o.boosting.depth, "Tree depth (default 3)");
 }
@@ -248,10 +252,11 @@ void setupScorer(CLI::App& root) {
     const auto guardSets = readAll(l->guard);
     refuseOtherWeights(sets, from);
     refuseOtherWeights(guardSets, from);
+    // Unguarded, the current decision is not read: a file of an older build is replaced.
+    const auto current = guardSets.empty() ? std::nullopt : sagrid::readPointScorer(from);
     writeModelsWithScorer(from, l->out,
                           sagrid::judgeScorerUpdate(sagrid::trainPointScorer(all, l->training),
-                                                    sagrid::readPointScorer(from),
-                                                    guardSets, all));
+                                                    current, guardSets, all));
   });
 
   struct CompareOptions {

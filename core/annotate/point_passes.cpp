@@ -104,24 +104,36 @@ CategoryPoints predictCategoryPoints(const std::vector<const model::AffordanceMo
   if (!decide) return out;
   // The learned decision: it chooses among the count's points, the field's minima and the small
   // parts (and crease patches, where the model's card says so).
+  std::vector<std::vector<PointCandidate>> found(out.predictions.size());
+  std::vector<const ModelPointScorer*> scorers(out.predictions.size(), nullptr);
+  std::vector<std::vector<float>> descriptions(out.predictions.size());
   for (std::size_t m = 0; m < out.predictions.size(); ++m) {
     ModelPrediction& p = out.predictions[m];
     const auto& card = models[m]->card();
     std::vector<const PredictedField*> others;
     for (std::size_t o = 0; o < out.predictions.size(); ++o)
       if (o != m) others.push_back(&out.predictions[o].field);
-    auto found = pointCandidates(p.field, p.points,
-                                 card.extraction.creasePatches ? partsAndPatches : parts,
-                                 [&](const Eigen::Vector3f& at) {
-      const SurfacePoint s = projectToSurface(at, features.normalization, scene, mesh.fileUp);
-      return SurfaceContact{fileToZUpRotation(mesh.fileUp) * s.normal,
-                            s.moved * features.normalization.scale};
-    }, others);
-    const ModelPointScorer* scorer =
-        passes.scorer ? passes.scorer->forModel(card.name) : nullptr;
-    if (scorer && !found.empty())
-      setPoints(p, scoredPoints(*scorer, found, card.extraction), features, scene, mesh.fileUp);
-    if (passes.keepCandidates) out.candidates.push_back(std::move(found));
+    found[m] = pointCandidates(
+        p.field, p.points, card.extraction.creasePatches ? partsAndPatches : parts,
+        [&](const Eigen::Vector3f& at) {
+          const SurfacePoint s = projectToSurface(at, features.normalization, scene, mesh.fileUp);
+          return SurfaceContact{fileToZUpRotation(mesh.fileUp) * s.normal,
+                                s.moved * features.normalization.scale};
+        },
+        others);
+    scorers[m] = passes.scorer ? passes.scorer->forModel(card.name) : nullptr;
+    if (scorers[m]) descriptions[m] = countDescription(*scorers[m], found[m]);
+  }
+  // Each model's count also reads the category's other models (a knob per burner).
+  for (std::size_t m = 0; m < out.predictions.size(); ++m) {
+    std::vector<std::vector<float>> otherModels;
+    for (std::size_t o = 0; o < out.predictions.size(); ++o)
+      if (o != m) otherModels.push_back(descriptions[o]);
+    if (scorers[m] && !found[m].empty())
+      setPoints(out.predictions[m],
+                scoredPoints(*scorers[m], found[m], models[m]->card().extraction, otherModels),
+                features, scene, mesh.fileUp);
+    if (passes.keepCandidates) out.candidates.push_back(std::move(found[m]));
   }
   return out;
 }

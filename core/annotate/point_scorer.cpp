@@ -27,19 +27,38 @@ const ModelPointScorer* PointScorer::forModel(const std::string& modelName) cons
   return found == byModel.end() ? nullptr : &found->second;
 }
 
+namespace {
+std::vector<float> firstLookOf(const ModelPointScorer& scorer,
+                               const std::vector<PointCandidate>& candidates) {
+  std::vector<float> firstLook;
+  for (const auto& c : candidates) firstLook.push_back(scorer.classifier.probability(c.features));
+  return firstLook;
+}
+}  // namespace
+
+std::vector<float> countDescription(const ModelPointScorer& scorer,
+                                    const std::vector<PointCandidate>& candidates) {
+  if (!scorer.classifier.trees || candidates.empty()) return {};
+  return countFeatures(candidates, firstLookOf(scorer, candidates), scorer.choice.nmsRadius);
+}
+
 std::vector<std::size_t> chosenCandidates(const ModelPointScorer& scorer,
-                                          const std::vector<PointCandidate>& candidates) {
+                                          const std::vector<PointCandidate>& candidates,
+                                          const std::vector<std::vector<float>>& otherModels) {
   if (!scorer.countTrees || !scorer.classifier.trees || candidates.empty())
     return chooseCandidates(candidateProbabilities(scorer.classifier, candidates), candidates,
                             scorer.choice);
   // The first look once: the count reads it, both looks' probabilities build on it.
-  std::vector<float> firstLook;
-  for (const auto& c : candidates) firstLook.push_back(scorer.classifier.probability(c.features));
+  const auto firstLook = firstLookOf(scorer, candidates);
   const auto p = scorer.classifier.contextTrees
                      ? bothLooks(*scorer.classifier.contextTrees, candidates, firstLook)
                      : firstLook;
   auto taken = chooseCandidates(p, candidates, scorer.choice);
-  const auto features = countFeatures(candidates, firstLook, scorer.choice.nmsRadius);
+  std::vector<std::vector<float>> others;
+  for (const auto& other : otherModels)
+    if (!other.empty()) others.push_back(other);
+  const auto features =
+      withOtherModels(countFeatures(candidates, firstLook, scorer.choice.nmsRadius), others);
   const PointChoice ranking{0.0f, 0.0f, scorer.choice.nmsRadius, PointChoice{}.copyThreshold};
   return withLearnedCount(std::move(taken), chooseCandidates(p, candidates, ranking), p,
                           candidates, scorer.choice.nmsRadius, *scorer.countTrees, features);
@@ -47,9 +66,10 @@ std::vector<std::size_t> chosenCandidates(const ModelPointScorer& scorer,
 
 std::vector<ExtractedPoint> scoredPoints(const ModelPointScorer& scorer,
                                          const std::vector<PointCandidate>& candidates,
-                                         const ExtractionSettings& extraction) {
+                                         const ExtractionSettings& extraction,
+                                         const std::vector<std::vector<float>>& otherModels) {
   std::vector<ExtractedPoint> out;
-  for (std::size_t i : chosenCandidates(scorer, candidates))
+  for (std::size_t i : chosenCandidates(scorer, candidates, otherModels))
     out.push_back({candidates[i].position, candidates[i].distance,
                    confidenceOf(candidates[i].distance, extraction)});
   return out;

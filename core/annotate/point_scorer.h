@@ -40,17 +40,26 @@ struct PointScorer {
   const ModelPointScorer* forModel(const std::string& modelName) const;
 };
 
+// What one model's candidates tell the learned counts of the object's other models of its
+// category (core/points/point_count.h, withOtherModels): countFeatures under `scorer`'s first
+// look; empty where it has no trees or there are no candidates.
+std::vector<float> countDescription(const ModelPointScorer& scorer,
+                                    const std::vector<PointCandidate>& candidates);
+
 // The candidates `scorer` chooses, most probable first: its choice (PointChoice), with the
-// learned count's additions where it has one (core/points/point_count.h).
+// learned count's additions where it has one (core/points/point_count.h). `otherModels`: the
+// countDescription of each of the object's other models of the category (empty ones skipped).
 std::vector<std::size_t> chosenCandidates(const ModelPointScorer& scorer,
-                                          const std::vector<PointCandidate>& candidates);
+                                          const std::vector<PointCandidate>& candidates,
+                                          const std::vector<std::vector<float>>& otherModels = {});
 
 // The points of one model from its candidates: the chosen candidates, most probable first, with
 // their field distance and its confidence under `extraction` (as the count's points have: the
 // category's evidence gate and the object confidence read them).
 std::vector<ExtractedPoint> scoredPoints(const ModelPointScorer& scorer,
                                          const std::vector<PointCandidate>& candidates,
-                                         const ExtractionSettings& extraction);
+                                         const ExtractionSettings& extraction,
+                                         const std::vector<std::vector<float>>& otherModels = {});
 
 // A model whose decision learned from the candidates of other weights than its card's.
 struct DecisionOfOtherWeights {

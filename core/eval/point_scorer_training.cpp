@@ -45,13 +45,34 @@ std::vector<Eigen::Vector3f> chosenSurface(const CandidateSet& set,
   return surfaceOf(set, chooseCandidates(probability, set.candidates, choice));
 }
 
-// The candidates `scorer` chooses for `set`; nullopt where it has no decision for the set's model
-// or the set has no candidates (the count's points stand).
+// Whether two models are of one category (stove.heatsource and stove.togglebutton).
+bool sameCategory(const std::string& a, const std::string& b) {
+  return a != b && a.substr(0, a.find('.')) == b.substr(0, b.find('.'));
+}
+
+// The sets of each object (source/object): a decision's count reads the object's other models.
+using SetsByObject = std::map<std::string, std::vector<const CandidateSet*>>;
+SetsByObject setsByObject(const std::vector<const CandidateSet*>& sets) {
+  SetsByObject out;
+  for (const CandidateSet* set : sets) out[set->source + "/" + set->object].push_back(set);
+  return out;
+}
+
+// The candidates `scorer` chooses for `set`, its count reading the object's other models of the
+// category among `objects`; nullopt where it has no decision for the set's model or the set has no
+// candidates (the count's points stand).
 std::optional<std::vector<std::size_t>> scorerChoice(const PointScorer& scorer,
-                                                     const CandidateSet& set) {
+                                                     const CandidateSet& set,
+                                                     const SetsByObject& objects) {
   const ModelPointScorer* s = scorer.forModel(set.model);
   if (!s || set.candidates.empty()) return std::nullopt;
-  return chosenCandidates(*s, set.candidates);
+  std::vector<std::vector<float>> otherModels;
+  if (const auto found = objects.find(set.source + "/" + set.object); found != objects.end())
+    for (const CandidateSet* other : found->second)
+      if (const ModelPointScorer* o = scorer.forModel(other->model);
+          o && sameCategory(set.model, other->model))
+        otherModels.push_back(countDescription(*o, other->candidates));
+  return chosenCandidates(*s, set.candidates, otherModels);
 }
 
 // The points of a choice, the count's where there is none.
@@ -60,9 +81,11 @@ std::vector<Eigen::Vector3f> pointsOf(const CandidateSet& set,
   return chosen ? surfaceOf(set, *chosen) : set.keptSurface;
 }
 
-// The scorer's points where it decides, else the count's.
-Chooser scorerChooser(const PointScorer& scorer) {
-  return [&scorer](const CandidateSet& set) { return pointsOf(set, scorerChoice(scorer, set)); };
+// The scorer's points where it decides, else the count's; `sets` holds the objects' other models.
+Chooser scorerChooser(const PointScorer& scorer, const std::vector<const CandidateSet*>& sets) {
+  return [&scorer, objects = setsByObject(sets)](const CandidateSet& set) {
+    return pointsOf(set, scorerChoice(scorer, set, objects));
+  };
 }
 
 // Per set of `sets`, `scorer`'s ranking cut at the set's true number of points
@@ -92,7 +115,8 @@ PointsBySet trueCountPoints(const std::vector<const CandidateSet*>& sets,
 using Choices = std::map<const CandidateSet*, std::optional<std::vector<std::size_t>>>;
 Choices choicesOf(const std::vector<const CandidateSet*>& sets, const PointScorer& scorer) {
   Choices choices;
-  for (const CandidateSet* set : sets) choices[set] = scorerChoice(scorer, *set);
+  const SetsByObject objects = setsByObject(sets);
+  for (const CandidateSet* set : sets) choices[set] = scorerChoice(scorer, *set, objects);
   return choices;
 }
 
@@ -305,14 +329,18 @@ BoostedTrees fitContextTrees(const std::vector<const CandidateSet*>& sets,
 }
 
 // The learned count's trees (core/points/point_count.h) over `sets`' first looks by trees that
-// did not see them; nullopt where the sets give one answer alone (every object k points or more).
-std::optional<BoostedTrees> fitCountTrees(const std::vector<const CandidateSet*>& sets,
-                                          const std::vector<std::vector<float>>& firstLook,
-                                          float nmsRadius, const ScorerTrainingOptions& options) {
+// did not see them, with `otherModels` (per set, the count descriptions of its object's other
+// models of the category); nullopt where the sets give one answer alone (every object k points or
+// more).
+std::optional<BoostedTrees> fitCountTrees(
+    const std::vector<const CandidateSet*>& sets, const std::vector<std::vector<float>>& firstLook,
+    float nmsRadius, const std::vector<std::vector<std::vector<float>>>& otherModels,
+    const ScorerTrainingOptions& options) {
   TrainingRows t;
   for (std::size_t i = 0; i < sets.size(); ++i) {
     if (sets[i]->candidates.empty()) continue;
-    const auto rows = countRows(countFeatures(sets[i]->candidates, firstLook[i], nmsRadius));
+    const auto rows = countRows(withOtherModels(
+        countFeatures(sets[i]->candidates, firstLook[i], nmsRadius), otherModels[i]));
     for (std::size_t k = 0; k < rows.size(); ++k) {
       t.rows.push_back(rows[k]);
       t.positive.push_back(sets[i]->truth.size() > k);
@@ -328,11 +356,19 @@ std::optional<BoostedTrees> fitCountTrees(const std::vector<const CandidateSet*>
   return fitBoostedTrees(t.rows, t.positive, t.weight, boosting);
 }
 
-ModelPointScorer fitModel(const std::vector<const CandidateSet*>& sets,
-                          const ScorerTrainingOptions& options) {
-  const auto t = trainingRows(sets, options, [&](std::size_t i) { return featureRows(*sets[i]); });
-  ModelPointScorer best;
+// One model's decision before its learned count, and its sets' first looks by trees that did
+// not see them (empty without the second look): the count learns on them.
+struct FittedDecision {
+  ModelPointScorer decision;
   std::vector<std::vector<float>> unseenFirstLook;
+};
+
+FittedDecision fitModel(const std::vector<const CandidateSet*>& sets,
+                        const ScorerTrainingOptions& options) {
+  const auto t = trainingRows(sets, options, [&](std::size_t i) { return featureRows(*sets[i]); });
+  FittedDecision fitted;
+  ModelPointScorer& best = fitted.decision;
+  std::vector<std::vector<float>>& unseenFirstLook = fitted.unseenFirstLook;
   if (options.trees) {
     best.classifier.trees =
         fitBoostedTrees(t.rows, t.positive, t.weight, fieldMonotone(options.boosting, false));
@@ -367,9 +403,38 @@ ModelPointScorer fitModel(const std::vector<const CandidateSet*>& sets,
       }
   const ChoiceGrid::Index taken = grid.best(options.smoothChoice);
   best.choice = choiceAt(taken.outer, taken.keep, taken.add);
-  if (options.learnedCount && !unseenFirstLook.empty())
-    best.countTrees = fitCountTrees(sets, unseenFirstLook, best.choice.nmsRadius, options);
-  return best;
+  return fitted;
+}
+
+// The learned counts of `fitted`'s models, each over its sets and the count descriptions of
+// their objects' other models of the category (ScorerTrainingOptions::otherModelsCount), all
+// under first looks of trees that did not see the object.
+void fitCounts(const std::map<std::string, std::vector<const CandidateSet*>>& byModel,
+               std::map<std::string, FittedDecision>& fitted,
+               const ScorerTrainingOptions& options) {
+  // Per model, each object's count description under the unseen first look.
+  std::map<std::string, std::map<std::string, std::vector<float>>> described;
+  for (const auto& [model, f] : fitted) {
+    if (f.unseenFirstLook.empty()) continue;
+    const auto& sets = byModel.at(model);
+    for (std::size_t i = 0; i < sets.size(); ++i)
+      if (!sets[i]->candidates.empty())
+        described[model][sets[i]->source + "/" + sets[i]->object] =
+            countFeatures(sets[i]->candidates, f.unseenFirstLook[i], f.decision.choice.nmsRadius);
+  }
+  for (auto& [model, f] : fitted) {
+    if (f.unseenFirstLook.empty()) continue;
+    const auto& sets = byModel.at(model);
+    std::vector<std::vector<std::vector<float>>> others(sets.size());
+    for (std::size_t i = 0; i < sets.size() && options.otherModelsCount; ++i)
+      for (const auto& [other, objects] : described) {
+        const auto found = objects.find(sets[i]->source + "/" + sets[i]->object);
+        if (sameCategory(model, other) && found != objects.end())
+          others[i].push_back(found->second);
+      }
+    f.decision.countTrees =
+        fitCountTrees(sets, f.unseenFirstLook, f.decision.choice.nmsRadius, others, options);
+  }
 }
 
 }  // namespace
@@ -385,21 +450,24 @@ PointScorer trainPointScorer(const std::vector<const CandidateSet*>& sets,
       throw InvalidArgument("point scorer: candidates made with different passes (" + set->object +
                             " of " + set->source + " differs from " + sets.front()->object +
                             "): make them all with the same eval flags");
+  std::map<std::string, FittedDecision> fitted;
   for (const auto& [model, modelSets] : byModel) {
     bool hasPoint = false, hasOther = false;
     for (const CandidateSet* set : modelSets)
       for (bool label : candidateLabels(*set, kMatchRadiusMeters))
         (label ? hasPoint : hasOther) = true;
     if (!hasPoint || !hasOther) continue;
-    ModelPointScorer& decision = scorer.byModel[model] = fitModel(modelSets, options);
-    decision.networkWeights = modelSets.front()->networkWeights;
     for (const CandidateSet* set : modelSets)
-      if (set->networkWeights != decision.networkWeights)
+      if (set->networkWeights != modelSets.front()->networkWeights)
         throw InvalidArgument("point scorer: the candidates of " + model + " were made by " +
                               "different weights (" + set->object + " of " + set->source +
                               " differs from " + modelSets.front()->object +
                               "): make them all with one models folder");
+    fitted[model] = fitModel(modelSets, options);
+    fitted[model].decision.networkWeights = modelSets.front()->networkWeights;
   }
+  if (options.learnedCount) fitCounts(byModel, fitted, options);
+  for (auto& [model, f] : fitted) scorer.byModel[model] = std::move(f.decision);
   if (scorer.byModel.empty())
     throw InvalidArgument("point scorer: no model has candidates that are points and others");
   std::set<std::string> sources;
@@ -460,7 +528,7 @@ ScorerCrossValidation crossValidatePointScorer(const std::vector<CandidateSet>& 
     fold.source = source;
     fold.count = figuresOf(held, count);
     fold.generatedOnly =
-        generatedOnly ? figuresOf(held, scorerChooser(*generatedOnly)) : fold.count;
+        generatedOnly ? figuresOf(held, scorerChooser(*generatedOnly, held)) : fold.count;
     const Choices choices = choicesOf(held, withCurated);
     fold.withCurated =
         figuresOf(held, [&](const CandidateSet& set) { return chosenPoints(choices, set); });
@@ -488,7 +556,7 @@ ScorerCrossValidation crossValidatePointScorer(const std::vector<CandidateSet>& 
         for (std::size_t i = 0; i < std::min(k, order.size()); ++i)
           some.insert(some.end(), otherObjects[order[i]].begin(), otherObjects[order[i]].end());
         try {
-          draws.push_back(figuresOf(held, scorerChooser(trainPointScorer(some, options))));
+          draws.push_back(figuresOf(held, scorerChooser(trainPointScorer(some, options), held)));
         } catch (const InvalidArgument&) {
           draws.push_back(fold.count);  // nothing to fit on: the count stands
         }
@@ -576,14 +644,18 @@ ScorerGuard guardPointScorer(const PointScorer* current, const PointScorer& fres
   const PointScorer none;
   const PointScorer& was = current ? *current : none;
   std::map<std::string, std::vector<const CandidateSet*>> byModel;
-  for (const auto& set : heldOut) byModel[set.model].push_back(&set);
+  std::vector<const CandidateSet*> all;
+  for (const auto& set : heldOut) {
+    byModel[set.model].push_back(&set);
+    all.push_back(&set);
+  }
   ScorerGuard guard;
   for (const auto& [model, sets] : byModel) {
     ScorerVerdict v;
     v.model = model;
-    const auto before = figuresOf(sets, scorerChooser(was));
+    const auto before = figuresOf(sets, scorerChooser(was, all));
     v.currentEdits = before.edits.total();
-    v.newEdits = figuresOf(sets, scorerChooser(fresh)).edits.total();
+    v.newEdits = figuresOf(sets, scorerChooser(fresh, all)).edits.total();
     v.handPoints = before.edits.handPoints;
     v.adopted = v.newEdits < v.currentEdits;
     guard.currentEdits += v.currentEdits;

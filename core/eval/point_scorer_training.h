@@ -56,6 +56,9 @@ struct ScorerTrainingOptions {
   // 13 repositories no rule was made on fewer in 16, more in 3; resources/models/README.md,
   // session 46).
   bool learnedCount = true;
+  // The learned count also reads the object's other models of its category (a knob per burner;
+  // core/points/point_count.h, withOtherModels).
+  bool otherModelsCount = true;
 };
 
 // One decision per model with both points and non-points among `sets`' candidates (other models

@@ -11,14 +11,21 @@ namespace sagrid {
 namespace {
 // The first look's probabilities of the ranking's first few, each a feature.
 constexpr std::size_t kRankedProbabilities = 8;
+// What withOtherModels takes from another model's countFeatures: kept_count, p_sum, likely,
+// possible.
+constexpr std::size_t kFromOtherModels[] = {0, kRankedProbabilities + 2, kRankedProbabilities + 3,
+                                            kRankedProbabilities + 4};
+constexpr std::size_t kOwnCountFeatures = kRankedProbabilities + 7;
 }  // namespace
 
 const std::vector<std::string>& countFeatureNames() {
   static const std::vector<std::string> names = [] {
     std::vector<std::string> n = {"kept_count", "candidates"};
     for (std::size_t r = 1; r <= kRankedProbabilities; ++r) n.push_back("p" + std::to_string(r));
-    for (const char* s : {"p_sum", "likely", "possible", "best_copies", "top_copies", "k"})
+    for (const char* s : {"p_sum", "likely", "possible", "best_copies", "top_copies"})
       n.push_back(s);
+    for (std::size_t i : kFromOtherModels) n.push_back("other_models_" + n[i]);
+    n.push_back("k");
     return n;
   }();
   return names;
@@ -56,6 +63,25 @@ std::vector<float> countFeatures(const std::vector<PointCandidate>& candidates,
   x.push_back(static_cast<float>(best));
   x.push_back(static_cast<float>(top));
   return x;
+}
+
+std::vector<float> withOtherModels(std::vector<float> own,
+                                   const std::vector<std::vector<float>>& others) {
+  if (own.size() != kOwnCountFeatures)
+    throw InvalidArgument("point count: " + std::to_string(own.size()) + " features, expected " +
+                          std::to_string(kOwnCountFeatures));
+  for (std::size_t i : kFromOtherModels) {
+    float sum = 0;
+    for (const auto& other : others) {
+      if (other.size() != kOwnCountFeatures)
+        throw InvalidArgument("point count: another model's description has " +
+                              std::to_string(other.size()) + " features, expected " +
+                              std::to_string(kOwnCountFeatures));
+      sum += other[i];
+    }
+    own.push_back(sum);
+  }
+  return own;
 }
 
 std::vector<std::vector<float>> countRows(const std::vector<float>& features) {

@@ -17,7 +17,7 @@ namespace sagrid {
 
 inline constexpr std::size_t kMaxLearnedCount = 12;
 
-// The names of countFeatures' values, then "k" (the trees' last input).
+// The names of the trees' inputs: countFeatures' values, withOtherModels' and "k".
 const std::vector<std::string>& countFeatureNames();
 // The object's description: the count's number of points, the number of candidates, the first
 // look's probabilities of its ranking (best first, none within `nmsRadius` of a better one, as
@@ -25,6 +25,14 @@ const std::vector<std::string>& countFeatureNames();
 // `firstLook` has one probability per candidate (InvalidArgument otherwise).
 std::vector<float> countFeatures(const std::vector<PointCandidate>& candidates,
                                  const std::vector<float>& firstLook, float nmsRadius);
+// An object's models of one category count parts that come together (a knob per burner, a
+// handle beside a spout): the trees also read, from the countFeatures of the object's other
+// models of the category under their own decisions' first looks, the count's number of points,
+// the probabilities' sum and how many are at least 0.5 and 0.25, summed over those models (zeros
+// where there are none). `own` is countFeatures' result; the result is what the trees read
+// before k.
+std::vector<float> withOtherModels(std::vector<float> own,
+                                   const std::vector<std::vector<float>>& others);
 // The rows the trees read for k = 1 .. kMaxLearnedCount: the features followed by k.
 std::vector<std::vector<float>> countRows(const std::vector<float>& features);
 // The probability that the object has k points or more (k >= 1; 0 beyond kMaxLearnedCount).

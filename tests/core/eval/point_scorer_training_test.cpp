@@ -1,5 +1,7 @@
 // The learned point decision fitted and measured leave one source out, on synthetic candidate sets
 // whose true points are known: knobs (low field, one feature apart) among distractors.
+#include "core/eval/point_scorer_training.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -7,9 +9,9 @@
 #include <map>
 #include <random>
 
+#include "core/annotate/point_scorer.h"
 #include "core/common/error.h"
 #include "core/eval/metrics.h"
-#include "core/eval/point_scorer_training.h"
 #include "core/eval/scorer_cv_spread.h"
 #include "support/point_scorers.h"
 
@@ -202,6 +204,80 @@ TEST(PointScorerTraining, TheLearnedCountGrowsAChoiceToTheNumberOfPointsObjectsH
   firstLookOnly.context = false;
   EXPECT_FALSE(
       trainPointScorer(training, firstLookOnly).forModel("stove.togglebutton")->countTrees);
+}
+
+// One stove of `n` burners and as many knobs: the burners' model sees them plainly (a low field
+// on round flat parts), the knobs' model only dimly (knobs' and distractors' fields overlap, so
+// their probabilities do not say how many there are).
+std::pair<CandidateSet, CandidateSet> burnersAndKnobs(const std::string& source, int index,
+                                                      std::size_t n, std::mt19937& rng) {
+  std::uniform_real_distribution<float> u(0.0f, 1.0f);
+  const auto& names = candidateFeatureNames();
+  const std::size_t roundFlat = static_cast<std::size_t>(
+      std::find(names.begin(), names.end(), "part_round_flat") - names.begin());
+  const auto modelSet = [&](const char* model, bool plain) {
+    CandidateSet set;
+    set.object = source + "-" + std::to_string(index);
+    set.source = source;
+    set.model = model;
+    set.generated = source == "generated";
+    for (std::size_t c = 0; c < 10; ++c) {
+      const bool point = c < n;
+      PointCandidate candidate;
+      candidate.position = Eigen::Vector3f(0.3f * static_cast<float>(c), plain ? 0.0f : 1.0f, 0.0f);
+      candidate.features.assign(names.size(), 0.5f);
+      candidate.features[0] = plain ? (point ? 0.1f * u(rng) : 0.5f + 0.5f * u(rng))
+                                    : (point ? 0.2f + 0.4f * u(rng) : 0.4f + 0.4f * u(rng));
+      candidate.features[roundFlat] = plain && point ? 1.0f : 0.0f;
+      candidate.distance = candidate.features[0];
+      set.candidates.push_back(candidate);
+      set.candidateSurface.push_back(candidate.position);
+      if (point) set.truth.push_back(candidate.position);
+    }
+    return set;
+  };
+  return {modelSet("stove.heatsource", true), modelSet("stove.togglebutton", false)};
+}
+
+// The knobs' count reads the burners' model: told how many burners there are, the knobs' choice
+// stops at as many, where their own probabilities leave it guessing.
+TEST(PointScorerTraining, TheLearnedCountReadsTheCategorysOtherModels) {
+  std::mt19937 rng(17);
+  std::vector<CandidateSet> sets;
+  for (const char* source : {"repo-a", "repo-b", "library-c", "generated"})
+    for (int i = 0; i < 20; ++i) {
+      auto [burners, knobs] = burnersAndKnobs(source, i, 1 + i % 5, rng);
+      sets.push_back(std::move(burners));
+      sets.push_back(std::move(knobs));
+    }
+  ScorerTrainingOptions alone;
+  alone.otherModelsCount = false;
+  const ScorerCrossValidation with = crossValidatePointScorer(sets, {});
+  const ScorerCrossValidation without = crossValidatePointScorer(sets, alone);
+  std::map<std::string, std::size_t> knobEdits;
+  for (const auto* cv : {&with, &without})
+    for (const auto& d : cv->decisions)
+      if (d.model == "stove.togglebutton")
+        knobEdits[cv == &with ? "with" : "without"] += d.edits.total();
+  EXPECT_LT(4 * knobEdits["with"], 3 * knobEdits["without"])
+      << knobEdits["with"] << " against " << knobEdits["without"];
+
+  // Deciding one object: the burners' description changes the knobs' choice; none is no input.
+  std::vector<const CandidateSet*> training;
+  for (const auto& s : sets) training.push_back(&s);
+  const PointScorer scorer = trainPointScorer(training, {});
+  const ModelPointScorer& knobModel = *scorer.forModel("stove.togglebutton");
+  std::mt19937 again(5);
+  std::size_t right = 0;
+  for (std::size_t n = 1; n <= 5; ++n) {
+    const auto [burners, knobs] = burnersAndKnobs("held-out", static_cast<int>(n), n, again);
+    const auto description =
+        countDescription(*scorer.forModel("stove.heatsource"), burners.candidates);
+    ASSERT_FALSE(description.empty());
+    right += chosenCandidates(knobModel, knobs.candidates, {description}).size() == n;
+  }
+  EXPECT_GE(right, 4u);
+  EXPECT_TRUE(countDescription(ModelPointScorer{}, sets.front().candidates).empty());
 }
 
 TEST(PointScorerTraining, FoldsLeaveOneSourceOutAndAreReproducible) {

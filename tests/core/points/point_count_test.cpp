@@ -22,7 +22,8 @@ TEST(PointCount, TheFeaturesDescribeTheRankingUnderTheFirstLook) {
   c[0].copies = {2};
   // 1 lies within the radius of the better 0: not in the ranking (0, 2, 3).
   const auto x = countFeatures(c, {0.9f, 0.8f, 0.4f, 0.1f}, 0.05f);
-  ASSERT_EQ(x.size() + 1, countFeatureNames().size());  // k follows in the trees' rows
+  // The other models' four and k follow in the trees' rows.
+  ASSERT_EQ(x.size() + 5, countFeatureNames().size());
   EXPECT_EQ(countFeatureNames().back(), "k");
   const std::vector<float> expected = {1, 4, 0.9f, 0.4f, 0.1f, 0, 0, 0, 0, 0, 1.4f, 1, 2, 2, 2};
   ASSERT_EQ(x.size(), expected.size());
@@ -32,6 +33,27 @@ TEST(PointCount, TheFeaturesDescribeTheRankingUnderTheFirstLook) {
   const auto rows = countRows(x);
   ASSERT_EQ(rows.size(), kMaxLearnedCount);
   EXPECT_EQ(rows[2].back(), 3.0f);
+}
+
+// The object's other models of the category: their count's number of points, probabilities'
+// sum and likely and possible points, summed; zeros where there are none.
+TEST(PointCount, TheOtherModelsOfTheCategoryAddTheirCountsSummed) {
+  const std::vector<PointCandidate> c = {candidateAt(0.0f, true), candidateAt(0.3f)};
+  const auto own = countFeatures(c, {0.9f, 0.3f}, 0.05f);
+  const auto alone = withOtherModels(own, {});
+  ASSERT_EQ(alone.size() + 1, countFeatureNames().size());
+  for (std::size_t i = own.size(); i < alone.size(); ++i) EXPECT_EQ(alone[i], 0.0f);
+  const auto other = countFeatures(c, {0.6f, 0.2f}, 0.05f);
+  const auto both = withOtherModels(own, {own, other});
+  const std::size_t at = own.size();
+  EXPECT_EQ(countFeatureNames()[at], "other_models_kept_count");
+  EXPECT_NEAR(both[at], 2.0f, 1e-6f);      // one kept point each
+  EXPECT_NEAR(both[at + 1], 2.0f, 1e-6f);  // p_sum 1.2 + 0.8
+  EXPECT_NEAR(both[at + 2], 2.0f, 1e-6f);  // 0.9 and 0.6 at least 0.5
+  EXPECT_NEAR(both[at + 3], 3.0f, 1e-6f);  // and 0.3 at least 0.25
+  for (std::size_t i = 0; i < at; ++i) EXPECT_EQ(both[i], own[i]);
+  EXPECT_THROW(withOtherModels({1.0f}, {}), InvalidArgument);
+  EXPECT_THROW(withOtherModels(own, {{1.0f}}), InvalidArgument);
 }
 
 // How many points the trees give the object: the k at which P(k or more) is at least a half.
@@ -85,7 +107,7 @@ std::vector<float> describedObject(std::size_t points, std::mt19937& rng) {
     c.push_back(candidateAt(0.3f * static_cast<float>(i), u(rng) < 0.3f));
     firstLook.push_back(i < points ? 0.6f + 0.4f * u(rng) : 0.4f * u(rng));
   }
-  return countFeatures(c, firstLook, 0.05f);
+  return withOtherModels(countFeatures(c, firstLook, 0.05f), {});
 }
 
 TEST(PointCount, FittedTreesLearnHowManyPointsObjectsHave) {
