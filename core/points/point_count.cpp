@@ -11,20 +11,31 @@ namespace sagrid {
 namespace {
 // The first look's probabilities of the ranking's first few, each a feature.
 constexpr std::size_t kRankedProbabilities = 8;
-// What withOtherModels takes from another model's countFeatures: kept_count, p_sum, likely,
-// possible.
-constexpr std::size_t kFromOtherModels[] = {0, kRankedProbabilities + 2, kRankedProbabilities + 3,
-                                            kRankedProbabilities + 4};
-constexpr std::size_t kOwnCountFeatures = kRankedProbabilities + 7;
-}  // namespace
+// What withOtherModels takes from another model's countFeatures.
+constexpr const char* kFromOtherModels[] = {"kept_count", "p_sum", "likely", "possible"};
 
-const std::vector<std::string>& countFeatureNames() {
+// The names of countFeatures' values, in its order.
+const std::vector<std::string>& ownFeatureNames() {
   static const std::vector<std::string> names = [] {
     std::vector<std::string> n = {"kept_count", "candidates"};
     for (std::size_t r = 1; r <= kRankedProbabilities; ++r) n.push_back("p" + std::to_string(r));
     for (const char* s : {"p_sum", "likely", "possible", "best_copies", "top_copies"})
       n.push_back(s);
-    for (std::size_t i : kFromOtherModels) n.push_back("other_models_" + n[i]);
+    return n;
+  }();
+  return names;
+}
+
+std::size_t ownFeatureIndex(const std::string& name) {
+  const auto& names = ownFeatureNames();
+  return static_cast<std::size_t>(std::find(names.begin(), names.end(), name) - names.begin());
+}
+}  // namespace
+
+const std::vector<std::string>& countFeatureNames() {
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> n = ownFeatureNames();
+    for (const char* name : kFromOtherModels) n.push_back(std::string("other_models_") + name);
     n.push_back("k");
     return n;
   }();
@@ -67,17 +78,18 @@ std::vector<float> countFeatures(const std::vector<PointCandidate>& candidates,
 
 std::vector<float> withOtherModels(std::vector<float> own,
                                    const std::vector<std::vector<float>>& others) {
-  if (own.size() != kOwnCountFeatures)
+  const std::size_t expected = ownFeatureNames().size();
+  if (own.size() != expected)
     throw InvalidArgument("point count: " + std::to_string(own.size()) + " features, expected " +
-                          std::to_string(kOwnCountFeatures));
-  for (std::size_t i : kFromOtherModels) {
+                          std::to_string(expected));
+  for (const char* name : kFromOtherModels) {
     float sum = 0;
     for (const auto& other : others) {
-      if (other.size() != kOwnCountFeatures)
+      if (other.size() != expected)
         throw InvalidArgument("point count: another model's description has " +
                               std::to_string(other.size()) + " features, expected " +
-                              std::to_string(kOwnCountFeatures));
-      sum += other[i];
+                              std::to_string(expected));
+      sum += other[ownFeatureIndex(name)];
     }
     own.push_back(sum);
   }

@@ -1,7 +1,5 @@
 // The learned point decision fitted and measured leave one source out, on synthetic candidate sets
 // whose true points are known: knobs (low field, one feature apart) among distractors.
-#include "core/eval/point_scorer_training.h"
-
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -12,6 +10,7 @@
 #include "core/annotate/point_scorer.h"
 #include "core/common/error.h"
 #include "core/eval/metrics.h"
+#include "core/eval/point_scorer_training.h"
 #include "core/eval/scorer_cv_spread.h"
 #include "support/point_scorers.h"
 
