@@ -8,6 +8,7 @@
 #include <random>
 #include <set>
 #include <sstream>
+#include <tuple>
 
 #include "core/common/error.h"
 #include "core/eval/choice_grid.h"
@@ -45,9 +46,12 @@ std::vector<Eigen::Vector3f> chosenSurface(const CandidateSet& set,
   return surfaceOf(set, chooseCandidates(probability, set.candidates, choice));
 }
 
+// The category of a model's name (stove of stove.heatsource).
+std::string categoryOfModel(const std::string& model) { return model.substr(0, model.find('.')); }
+
 // Whether two models are of one category (stove.heatsource and stove.togglebutton).
 bool sameCategory(const std::string& a, const std::string& b) {
-  return a != b && a.substr(0, a.find('.')) == b.substr(0, b.find('.'));
+  return a != b && categoryOfModel(a) == categoryOfModel(b);
 }
 
 // The sets of each object (source/object): a decision's count reads the object's other models.
@@ -650,6 +654,9 @@ ScorerGuard guardPointScorer(const PointScorer* current, const PointScorer& fres
     all.push_back(&set);
   }
   ScorerGuard guard;
+  // A category's decisions read each other (each count reads the category's other models), so
+  // they are judged and adopted together: on the sum of the category's held-out edits.
+  std::map<std::string, std::pair<std::size_t, std::size_t>> byCategory;  // current, new edits
   for (const auto& [model, sets] : byModel) {
     ScorerVerdict v;
     v.model = model;
@@ -657,12 +664,18 @@ ScorerGuard guardPointScorer(const PointScorer* current, const PointScorer& fres
     v.currentEdits = before.edits.total();
     v.newEdits = figuresOf(sets, scorerChooser(fresh, all)).edits.total();
     v.handPoints = before.edits.handPoints;
-    v.adopted = v.newEdits < v.currentEdits;
+    auto& [currentEdits, newEdits] = byCategory[categoryOfModel(model)];
+    currentEdits += v.currentEdits;
+    newEdits += v.newEdits;
+    guard.byModel.push_back(v);
+  }
+  for (ScorerVerdict& v : guard.byModel) {
+    std::tie(v.categoryCurrentEdits, v.categoryNewEdits) = byCategory.at(categoryOfModel(v.model));
+    v.adopted = v.categoryNewEdits < v.categoryCurrentEdits;
     guard.currentEdits += v.currentEdits;
     guard.newEdits += v.newEdits;
     guard.adoptedEdits += v.adopted ? v.newEdits : v.currentEdits;
     guard.adopted = guard.adopted || v.adopted;
-    guard.byModel.push_back(v);
   }
   for (const auto& [model, decision] : fresh.byModel)
     if (!byModel.count(model)) guard.byModel.push_back({model, 0, 0, 0, false});
@@ -703,9 +716,15 @@ std::string modelsWhere(const ScorerGuard& guard, bool adopted) {
 }
 
 std::string toString(const ScorerVerdict& v) {
+  const std::string category =
+      v.categoryCurrentEdits == v.currentEdits && v.categoryNewEdits == v.newEdits
+          ? std::string()
+          : " (" + categoryOfModel(v.model) + " with its other models: " +
+                std::to_string(v.categoryCurrentEdits) + " -> " +
+                std::to_string(v.categoryNewEdits) + ")";
   return v.model + ": " + std::to_string(v.currentEdits) + " -> " + std::to_string(v.newEdits) +
-         " edits on " + std::to_string(v.handPoints) +
-         " held-out points: " + (v.adopted ? "adopted" : "the decision before stays");
+         " edits on " + std::to_string(v.handPoints) + " held-out points" + category + ": " +
+         (v.adopted ? "adopted" : "the decision before stays");
 }
 
 nlohmann::json toJson(const ScorerGuard& guard) {
@@ -715,6 +734,8 @@ nlohmann::json toJson(const ScorerGuard& guard) {
                       {"current_edits", v.currentEdits},
                       {"new_edits", v.newEdits},
                       {"hand_points", v.handPoints},
+                      {"category_current_edits", v.categoryCurrentEdits},
+                      {"category_new_edits", v.categoryNewEdits},
                       {"adopted", v.adopted}});
   return {{"current_edits", guard.currentEdits},   {"new_edits", guard.newEdits},
           {"adopted_edits", guard.adoptedEdits},   {"adopted", guard.adopted},

@@ -156,16 +156,21 @@ ScorerCrossValidation crossValidatePointScorer(const std::vector<CandidateSet>& 
                                                const ScorerTrainingOptions& options,
                                                const ScorerCurveOptions& curve = {});
 
-// A guarded scorer update, per model: the new scorer's decision for a model is adopted only where
-// it needs fewer edits on that model's held-out curated objects than the current one (the models
-// folder's scorer; where it has none for the model, the points the held-out candidates were made
-// with: the count's). A model without held-out objects keeps its current decision (nothing
-// judged it). The passes the decisions switch off are the same for both (the guard checks), so
-// decisions of two scorers can stand side by side in one file (adoptedScorer).
+// A guarded scorer update, per category: the new scorer's decisions for a category's models are
+// adopted only where together they need fewer edits on the category's held-out curated objects
+// than the current ones (the models folder's scorer; where it has none for a model, the points the
+// held-out candidates were made with: the count's). A category's decisions are judged together
+// because each model's count reads the category's other models (a knob per burner): a new knob
+// decision beside the old burner one was never judged. A model without held-out objects keeps its
+// current decision (nothing judged it). The passes the decisions switch off are the same for both
+// (the guard checks), so decisions of two scorers can stand side by side in one file
+// (adoptedScorer), one category's from each.
 struct ScorerVerdict {
   std::string model;
   std::size_t currentEdits = 0, newEdits = 0, handPoints = 0;
-  bool adopted = false;  // newEdits < currentEdits (false without held-out points)
+  // The edits of the model's category, its held-out models summed (what adoption is decided on).
+  std::size_t categoryCurrentEdits = 0, categoryNewEdits = 0;
+  bool adopted = false;  // categoryNewEdits < categoryCurrentEdits (false without held-out points)
 };
 struct ScorerGuard {
   std::vector<ScorerVerdict> byModel;  // the held-out objects' models, then the new scorer's others
@@ -190,7 +195,8 @@ PointScorer adoptedScorer(const PointScorer* current, const PointScorer& fresh,
 // The models of `guard` whose new decision was (`adopted`) or was not adopted, comma-separated.
 std::string modelsWhere(const ScorerGuard& guard, bool adopted);
 // One verdict as the CLI and the GUI show it: "model: a -> b edits on n held-out points: adopted"
-// (or "the decision before stays").
+// (or "the decision before stays"), with the category's sums where its other models were judged
+// too: "... (stove with its other models: c -> d): adopted".
 std::string toString(const ScorerVerdict& verdict);
 
 // How well the object-confidence signal orders cv's objects: the share of (right, wrong) pairs in

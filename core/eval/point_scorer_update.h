@@ -2,8 +2,8 @@
 // candidates of the curated training objects, of generated objects the networks were not trained
 // on and of held-out curated objects are made by the models folder's networks as its scorer runs
 // them (as `sagrid scorer candidates`); a scorer fitted on the first two replaces the folder's
-// decision of each model only where it needs fewer edits on that model's held-out objects
-// (guardPointScorer, adoptedScorer). The GUI's Train panel
+// decisions of each category only where together they need fewer edits on that category's
+// held-out objects (guardPointScorer, adoptedScorer). The GUI's Train panel
 // ("Retrain point decision") goes through here; `sagrid scorer candidates` + `scorer train
 // --guard` do the same in steps.
 #pragma once

@@ -549,58 +549,108 @@ TEST(PointScorerTraining, TheGuardAdoptsABetterScorerAndRefusesAWorseOne) {
   EXPECT_THROW(guardPointScorer(&poor, good, {}, training), InvalidArgument);
 }
 
-// Two models judged apart: the new scorer is better on one and worse on the other; the adopted
-// scorer takes the new decision for the first and keeps the current one for the second.
-TEST(PointScorerTraining, TheGuardAdoptsEachModelsDecisionOnItsOwnHeldOutObjects) {
-  const auto sets = syntheticSets();
-  std::vector<const CandidateSet*> training;
+// The synthetic knobs held out twice: as stove.togglebutton and as `second` (the same knobs,
+// judged as a second model).
+std::vector<CandidateSet> heldOutTwice(const std::vector<CandidateSet>& sets, const std::string& second,
+                                       std::vector<const CandidateSet*>& training) {
   std::vector<CandidateSet> heldOut;
   for (const auto& s : sets)
     if (s.source == "library-c") {
       heldOut.push_back(s);
       heldOut.push_back(s);
-      heldOut.back().model = "stove.heatsource";  // the same knobs, judged as a second model
+      heldOut.back().model = second;
     } else {
       training.push_back(&s);
     }
+  return heldOut;
+}
+
+bool sameDecision(const ModelPointScorer* a, const ModelPointScorer& b) {
+  PointScorer x, y;
+  x.byModel["m"] = *a;
+  y.byModel["m"] = b;
+  return toJson(x).dump() == toJson(y).dump();
+}
+
+// Two models of two categories judged apart: the new scorer is better on one and worse on the
+// other; the adopted scorer takes the new decision for the first and keeps the current one for
+// the second.
+TEST(PointScorerTraining, TheGuardAdoptsEachCategorysDecisionsOnItsOwnHeldOutObjects) {
+  const auto sets = syntheticSets();
+  std::vector<const CandidateSet*> training;
+  const auto heldOut = heldOutTwice(sets, "sink.togglebutton", training);
   const ModelPointScorer good = *trainPointScorer(training, {}).forModel("stove.togglebutton");
   const ModelPointScorer poor = *onePointScorer().forModel("stove.togglebutton");
   PointScorer current, fresh;
-  current.byModel = {{"stove.togglebutton", poor}, {"stove.heatsource", good}, {"sink.fluidsource", poor}};
-  fresh.byModel = {{"stove.togglebutton", good}, {"stove.heatsource", poor}, {"sink.togglebutton", good}};
+  current.byModel = {{"stove.togglebutton", poor}, {"sink.togglebutton", good}, {"sink.fluidsource", poor}};
+  fresh.byModel = {{"stove.togglebutton", good}, {"sink.togglebutton", poor}, {"stove.heatsource", good}};
   fresh.trainedOn = "fresh";
   const ScorerGuard guard = guardPointScorer(&current, fresh, heldOut, training);
   ASSERT_EQ(guard.byModel.size(), 3u);  // the two judged, then the new scorer's unjudged one
-  EXPECT_EQ(guard.byModel[0].model, "stove.heatsource");
+  EXPECT_EQ(guard.byModel[0].model, "sink.togglebutton");
   EXPECT_FALSE(guard.byModel[0].adopted);
   EXPECT_EQ(guard.byModel[1].model, "stove.togglebutton");
   EXPECT_TRUE(guard.byModel[1].adopted);
-  EXPECT_EQ(guard.byModel[2].model, "sink.togglebutton");
+  EXPECT_EQ(guard.byModel[1].categoryNewEdits, 0u);  // alone in its category: its own edits
+  EXPECT_EQ(guard.byModel[1].categoryCurrentEdits, 12u);
+  EXPECT_EQ(guard.byModel[2].model, "stove.heatsource");
   EXPECT_FALSE(guard.byModel[2].adopted);  // no held-out object judged it
   EXPECT_TRUE(guard.adopted);
   EXPECT_FALSE(guard.adoptedWhole());
   EXPECT_EQ(guard.adoptedEdits, 0u);  // the good decision on both models' objects
   EXPECT_EQ(guard.currentEdits, 12u);
   EXPECT_EQ(guard.newEdits, 12u);     // as many as before summed: a whole-scorer guard refused it
+  EXPECT_EQ(toString(guard.byModel[1]),
+            "stove.togglebutton: 12 -> 0 edits on 18 held-out points: adopted");
 
   const PointScorer adopted = adoptedScorer(&current, fresh, guard);
-  const auto same = [](const ModelPointScorer* a, const ModelPointScorer& b) {
-    PointScorer x, y;
-    x.byModel["m"] = *a;
-    y.byModel["m"] = b;
-    return toJson(x).dump() == toJson(y).dump();
-  };
   ASSERT_NE(adopted.forModel("stove.togglebutton"), nullptr);
-  EXPECT_TRUE(same(adopted.forModel("stove.togglebutton"), good));
-  EXPECT_TRUE(same(adopted.forModel("stove.heatsource"), good));    // kept
-  EXPECT_TRUE(same(adopted.forModel("sink.fluidsource"), poor));    // not judged: kept
-  EXPECT_EQ(adopted.forModel("sink.togglebutton"), nullptr);        // not judged: not taken
+  EXPECT_TRUE(sameDecision(adopted.forModel("stove.togglebutton"), good));
+  EXPECT_TRUE(sameDecision(adopted.forModel("sink.togglebutton"), good));  // kept
+  EXPECT_TRUE(sameDecision(adopted.forModel("sink.fluidsource"), poor));   // not judged: kept
+  EXPECT_EQ(adopted.forModel("stove.heatsource"), nullptr);               // not judged: not taken
   EXPECT_NE(adopted.trainedOn.find("adopted for stove.togglebutton"), std::string::npos);
   // Without a current scorer, the adopted one holds the adopted models' decisions only.
   const ScorerGuard fromNone = guardPointScorer(nullptr, fresh, heldOut, training);
   const PointScorer onlyAdopted = adoptedScorer(nullptr, fresh, fromNone);
   EXPECT_NE(onlyAdopted.forModel("stove.togglebutton"), nullptr);
-  EXPECT_EQ(onlyAdopted.forModel("stove.heatsource"), nullptr);
+  EXPECT_EQ(onlyAdopted.forModel("sink.togglebutton"), nullptr);
+}
+
+// A category's models read each other (a knob per burner), so a new decision better on one and
+// worse on the other is judged on their sum: as many edits -> neither adopted; fewer -> both.
+TEST(PointScorerTraining, TheGuardJudgesACategorysModelsTogether) {
+  const auto sets = syntheticSets();
+  std::vector<const CandidateSet*> training;
+  const auto heldOut = heldOutTwice(sets, "stove.heatsource", training);
+  const ModelPointScorer good = *trainPointScorer(training, {}).forModel("stove.togglebutton");
+  const ModelPointScorer poor = *onePointScorer().forModel("stove.togglebutton");
+  PointScorer current, mixed, better;
+  current.byModel = {{"stove.togglebutton", poor}, {"stove.heatsource", good}};
+  mixed.byModel = {{"stove.togglebutton", good}, {"stove.heatsource", poor}};
+  const ScorerGuard same = guardPointScorer(&current, mixed, heldOut, training);
+  ASSERT_EQ(same.byModel.size(), 2u);
+  for (const ScorerVerdict& v : same.byModel) {
+    EXPECT_FALSE(v.adopted) << v.model;  // 12 -> 0 on the knobs, 0 -> 12 on the burners
+    EXPECT_EQ(v.categoryCurrentEdits, 12u);
+    EXPECT_EQ(v.categoryNewEdits, 12u);
+  }
+  EXPECT_FALSE(same.adopted);
+  EXPECT_EQ(toString(same.byModel[1]),
+            "stove.togglebutton: 12 -> 0 edits on 18 held-out points (stove with its other "
+            "models: 12 -> 12): the decision before stays");
+  const PointScorer kept = adoptedScorer(&current, mixed, same);
+  EXPECT_TRUE(sameDecision(kept.forModel("stove.togglebutton"), poor));
+  EXPECT_TRUE(sameDecision(kept.forModel("stove.heatsource"), good));
+
+  better.byModel = {{"stove.togglebutton", good}, {"stove.heatsource", good}};
+  current.byModel["stove.heatsource"] = poor;  // 24 edits before, none after
+  const ScorerGuard both = guardPointScorer(&current, better, heldOut, training);
+  EXPECT_TRUE(both.adoptedWhole());
+  EXPECT_EQ(both.adoptedEdits, 0u);
+  const PointScorer taken = adoptedScorer(&current, better, both);
+  EXPECT_TRUE(sameDecision(taken.forModel("stove.togglebutton"), good));
+  EXPECT_TRUE(sameDecision(taken.forModel("stove.heatsource"), good));
 }
 
 TEST(PointScorerTraining, TheDecisionRecordsTheNetworkItsCandidatesCameFromAndRefusesAMix) {

@@ -52,9 +52,10 @@ void prepare(const fs::path& dir) {
   fs::copy(kShipped, dir / "loaded", fs::copy_options::recursive);
 }
 
-// The retrained decision is judged per model on the held-out objects: each model's new decision
-// goes into the models folder out exactly when it needs fewer edits on that model's objects, the
-// others keep the loaded one's (the whole new scorer goes to refused/ where any model refused it),
+// The retrained decision is judged per category on the held-out objects: a category's new
+// decisions go into the models folder out exactly when together they need fewer edits on its
+// objects, the others keep the loaded one's (the whole new scorer goes to refused/ where any
+// category refused it),
 // with one verdict per model and the figures in scorer_guard.json; it switches off the passes the
 // loaded one did; the loaded file is untouched; adopted, the unreviewed object of the queue is
 // predicted again, the accepted one not.
@@ -71,7 +72,9 @@ TEST(PointScorerRetrainWorker, TheRetrainedDecisionGoesWhereTheHeldOutEditsSay) 
   const auto guard = nlohmann::json::parse(readFileBytes(dir / "out" / "scorer_guard.json"));
   bool anyAdopted = false, allAdopted = true;
   for (const auto& m : guard.at("models")) {
-    const bool better = m.at("new_edits").get<int>() < m.at("current_edits").get<int>();
+    // Judged with the category's other models (each count reads them).
+    const bool better =
+        m.at("category_new_edits").get<int>() < m.at("category_current_edits").get<int>();
     EXPECT_EQ(m.at("adopted").get<bool>(), better) << m.dump();
     anyAdopted = anyAdopted || better;
     allAdopted = allAdopted && better;
