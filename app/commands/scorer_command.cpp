@@ -234,12 +234,12 @@ void setupScorer(CLI::App& root) {
   train->add_option("--out", l->out, "Models folder to write")->required();
   train->add_option("--guard", l->guard,
                     "Candidate files of held-out curated objects (other sources than the "
-                    "training's; repeatable): per category, the new decisions are adopted only if "
-                    "together they need fewer edits on the category's held-out objects than "
-                    "--models' decisions (without one: the points the held-out candidates were "
-                    "made with), as a category's counts read each other; the other categories "
-                    "keep theirs; refused anywhere, the new scorer also goes to OUT/refused/; "
-                    "figures per model in OUT/scorer_guard.json");
+                    "training's; repeatable): per category, every mix of --models' decisions "
+                    "(without one: the points the held-out candidates were made with) and the new "
+                    "ones is judged on the category's held-out objects as a whole (its counts read "
+                    "each other) and the mix with the fewest edits adopted, the current decisions "
+                    "on a tie; refused anywhere, the new scorer also goes to OUT/refused/; "
+                    "figures per model and category in OUT/scorer_guard.json");
   train->add_option("--without-feature", l->withoutFeatures,
                     "A candidate feature the decision is fitted without (repeatable; "
                     "MODEL:FEATURE for that model's decision only): it never reads it");

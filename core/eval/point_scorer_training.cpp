@@ -1,14 +1,15 @@
 #include "core/eval/point_scorer_training.h"
 
 #include <algorithm>
+#include <bitset>
 #include <cmath>
 #include <functional>
 #include <map>
+#include <numeric>
 #include <optional>
 #include <random>
 #include <set>
 #include <sstream>
-#include <tuple>
 
 #include "core/common/error.h"
 #include "core/eval/choice_grid.h"
@@ -630,6 +631,19 @@ ScorerCrossValidation crossValidatePointScorer(const std::vector<CandidateSet>& 
   return cv;
 }
 
+namespace {
+// `base` with `fresh`'s decisions for `models` (none where `fresh` has none: the count's points).
+PointScorer withDecisionsOf(PointScorer base, const PointScorer& fresh,
+                            const std::vector<std::string>& models) {
+  for (const auto& model : models)
+    if (const ModelPointScorer* decision = fresh.forModel(model))
+      base.byModel[model] = *decision;
+    else
+      base.byModel.erase(model);
+  return base;
+}
+}  // namespace
+
 ScorerGuard guardPointScorer(const PointScorer* current, const PointScorer& fresh,
                              const std::vector<CandidateSet>& heldOut,
                              const std::vector<const CandidateSet*>& training) {
@@ -654,9 +668,8 @@ ScorerGuard guardPointScorer(const PointScorer* current, const PointScorer& fres
     all.push_back(&set);
   }
   ScorerGuard guard;
-  // A category's decisions read each other (each count reads the category's other models), so
-  // they are judged and adopted together: on the sum of the category's held-out edits.
-  std::map<std::string, std::pair<std::size_t, std::size_t>> byCategory;  // current, new edits
+  std::map<std::string, std::vector<std::string>> categories;  // category -> its judged models
+  std::map<std::string, std::size_t> verdictOf;                // model -> its verdict's index
   for (const auto& [model, sets] : byModel) {
     ScorerVerdict v;
     v.model = model;
@@ -664,18 +677,44 @@ ScorerGuard guardPointScorer(const PointScorer* current, const PointScorer& fres
     v.currentEdits = before.edits.total();
     v.newEdits = figuresOf(sets, scorerChooser(fresh, all)).edits.total();
     v.handPoints = before.edits.handPoints;
-    auto& [currentEdits, newEdits] = byCategory[categoryOfModel(model)];
-    currentEdits += v.currentEdits;
-    newEdits += v.newEdits;
-    guard.byModel.push_back(v);
-  }
-  for (ScorerVerdict& v : guard.byModel) {
-    std::tie(v.categoryCurrentEdits, v.categoryNewEdits) = byCategory.at(categoryOfModel(v.model));
-    v.adopted = v.categoryNewEdits < v.categoryCurrentEdits;
     guard.currentEdits += v.currentEdits;
     guard.newEdits += v.newEdits;
-    guard.adoptedEdits += v.adopted ? v.newEdits : v.currentEdits;
-    guard.adopted = guard.adopted || v.adopted;
+    categories[categoryOfModel(model)].push_back(model);
+    verdictOf[model] = guard.byModel.size();
+    guard.byModel.push_back(v);
+  }
+  // A category's decisions read each other (each model's count reads the category's other
+  // models), so every mix of its current and new decisions is judged on the category's held-out
+  // objects as a whole and the one with the fewest edits adopted: the mix adopted is the mix
+  // judged. Mixes with fewer new decisions come first, so a tie keeps the current ones.
+  for (const auto& [category, models] : categories) {
+    std::vector<const CandidateSet*> sets;
+    for (const auto& model : models)
+      sets.insert(sets.end(), byModel.at(model).begin(), byModel.at(model).end());
+    std::vector<std::size_t> mixes(std::size_t{1} << models.size());
+    std::iota(mixes.begin(), mixes.end(), std::size_t{0});
+    std::stable_sort(mixes.begin(), mixes.end(), [](std::size_t a, std::size_t b) {
+      return std::bitset<32>(a).count() < std::bitset<32>(b).count();
+    });
+    std::size_t best = 0, bestEdits = 0, currentEdits = 0;
+    for (std::size_t mix : mixes) {
+      std::vector<std::string> taken;
+      for (std::size_t i = 0; i < models.size(); ++i)
+        if ((mix >> i) & 1) taken.push_back(models[i]);
+      const PointScorer judged = withDecisionsOf(was, fresh, taken);
+      const std::size_t edits = figuresOf(sets, scorerChooser(judged, all)).edits.total();
+      if (mix == 0) currentEdits = bestEdits = edits;
+      else if (edits < bestEdits) best = mix, bestEdits = edits;
+    }
+    for (std::size_t i = 0; i < models.size(); ++i) {
+      ScorerVerdict& v = guard.byModel[verdictOf.at(models[i])];
+      v.adopted = (best >> i) & 1;
+      v.categoryCurrentEdits = currentEdits;
+      v.categoryAdoptedEdits = bestEdits;
+      v.categoryJudged = models.size();
+    }
+    guard.adoptedEdits += bestEdits;
+    guard.adopted = guard.adopted || best != 0;
   }
   for (const auto& [model, decision] : fresh.byModel)
     if (!byModel.count(model)) guard.byModel.push_back({model, 0, 0, 0, false});
@@ -689,17 +728,12 @@ bool ScorerGuard::adoptedWhole() const {
 
 PointScorer adoptedScorer(const PointScorer* current, const PointScorer& fresh,
                           const ScorerGuard& guard) {
-  PointScorer out = current ? *current : PointScorer{};
+  std::vector<std::string> adopted;
+  for (const ScorerVerdict& v : guard.byModel)
+    if (v.adopted) adopted.push_back(v.model);
+  PointScorer out = withDecisionsOf(current ? *current : PointScorer{}, fresh, adopted);
   out.passesOff = fresh.passesOff;
   out.trainedOn = fresh.trainedOn;
-  for (const ScorerVerdict& v : guard.byModel) {
-    if (!v.adopted) continue;
-    const ModelPointScorer* decision = fresh.forModel(v.model);
-    if (decision)
-      out.byModel[v.model] = *decision;
-    else
-      out.byModel.erase(v.model);
-  }
   if (!guard.adoptedWhole()) {
     const std::string models = modelsWhere(guard, true);
     out.trainedOn += "; adopted for " + (models.empty() ? std::string("no model") : models) +
@@ -716,15 +750,14 @@ std::string modelsWhere(const ScorerGuard& guard, bool adopted) {
 }
 
 std::string toString(const ScorerVerdict& v) {
-  const std::string category =
-      v.categoryCurrentEdits == v.currentEdits && v.categoryNewEdits == v.newEdits
-          ? std::string()
-          : " (" + categoryOfModel(v.model) + " with its other models: " +
-                std::to_string(v.categoryCurrentEdits) + " -> " +
-                std::to_string(v.categoryNewEdits) + ")";
-  return v.model + ": " + std::to_string(v.currentEdits) + " -> " + std::to_string(v.newEdits) +
-         " edits on " + std::to_string(v.handPoints) + " held-out points" + category + ": " +
-         (v.adopted ? "adopted" : "the decision before stays");
+  std::string line = v.model + ": " + std::to_string(v.currentEdits) + " -> " +
+                     std::to_string(v.newEdits) + " edits on " + std::to_string(v.handPoints) +
+                     " held-out points: " + (v.adopted ? "adopted" : "the decision before stays");
+  if (v.categoryJudged > 1)
+    line += " (" + categoryOfModel(v.model) + " judged as a whole: " +
+            std::to_string(v.categoryCurrentEdits) + " -> " +
+            std::to_string(v.categoryAdoptedEdits) + " edits with the decisions adopted)";
+  return line;
 }
 
 nlohmann::json toJson(const ScorerGuard& guard) {
@@ -735,7 +768,7 @@ nlohmann::json toJson(const ScorerGuard& guard) {
                       {"new_edits", v.newEdits},
                       {"hand_points", v.handPoints},
                       {"category_current_edits", v.categoryCurrentEdits},
-                      {"category_new_edits", v.categoryNewEdits},
+                      {"category_adopted_edits", v.categoryAdoptedEdits},
                       {"adopted", v.adopted}});
   return {{"current_edits", guard.currentEdits},   {"new_edits", guard.newEdits},
           {"adopted_edits", guard.adoptedEdits},   {"adopted", guard.adopted},

@@ -156,26 +156,29 @@ ScorerCrossValidation crossValidatePointScorer(const std::vector<CandidateSet>& 
                                                const ScorerTrainingOptions& options,
                                                const ScorerCurveOptions& curve = {});
 
-// A guarded scorer update, per category: the new scorer's decisions for a category's models are
-// adopted only where together they need fewer edits on the category's held-out curated objects
-// than the current ones (the models folder's scorer; where it has none for a model, the points the
-// held-out candidates were made with: the count's). A category's decisions are judged together
-// because each model's count reads the category's other models (a knob per burner): a new knob
-// decision beside the old burner one was never judged. A model without held-out objects keeps its
-// current decision (nothing judged it). The passes the decisions switch off are the same for both
-// (the guard checks), so decisions of two scorers can stand side by side in one file
-// (adoptedScorer), one category's from each.
+// A guarded scorer update: the new scorer's decision for a model is adopted only where it makes
+// the edits on the held-out curated objects fewer than the current one (the models folder's
+// scorer; where it has none for a model, the points the held-out candidates were made with: the
+// count's). A category's decisions read each other (each model's count reads the category's other
+// models: a knob per burner), so they are judged together: every mix of the category's current
+// and new decisions is judged on the category's held-out objects as a whole, and the mix with the
+// fewest edits is adopted (on ties the one with fewer new decisions, the current ones first): what
+// is adopted is what was judged. A model without held-out objects keeps its current decision
+// (nothing judged it). The passes the decisions switch off are the same for both (the guard
+// checks), so decisions of two scorers can stand side by side in one file (adoptedScorer).
 struct ScorerVerdict {
   std::string model;
+  // The model's held-out edits with the current decisions and with the new scorer's.
   std::size_t currentEdits = 0, newEdits = 0, handPoints = 0;
-  // The edits of the model's category, its held-out models summed (what adoption is decided on).
-  std::size_t categoryCurrentEdits = 0, categoryNewEdits = 0;
-  bool adopted = false;  // categoryNewEdits < categoryCurrentEdits (false without held-out points)
+  bool adopted = false;  // its new decision is in the category's adopted mix
+  // Its category's held-out edits with the current decisions and with the mix adopted, and how
+  // many of the category's models were judged.
+  std::size_t categoryCurrentEdits = 0, categoryAdoptedEdits = 0, categoryJudged = 0;
 };
 struct ScorerGuard {
   std::vector<ScorerVerdict> byModel;  // the held-out objects' models, then the new scorer's others
   std::size_t currentEdits = 0, newEdits = 0;
-  std::size_t adoptedEdits = 0;  // with each model's adopted decision (new where adopted, else current)
+  std::size_t adoptedEdits = 0;  // with the decisions adopted (each category's mix, judged)
   bool adopted = false;          // for at least one model
   bool adoptedWhole() const;     // for every model judged, and the new scorer has no other
 };
@@ -195,8 +198,8 @@ PointScorer adoptedScorer(const PointScorer* current, const PointScorer& fresh,
 // The models of `guard` whose new decision was (`adopted`) or was not adopted, comma-separated.
 std::string modelsWhere(const ScorerGuard& guard, bool adopted);
 // One verdict as the CLI and the GUI show it: "model: a -> b edits on n held-out points: adopted"
-// (or "the decision before stays"), with the category's sums where its other models were judged
-// too: "... (stove with its other models: c -> d): adopted".
+// (or "the decision before stays"), where other models of its category were judged too followed
+// by " (stove judged as a whole: c -> d edits with the decisions adopted)".
 std::string toString(const ScorerVerdict& verdict);
 
 // How well the object-confidence signal orders cv's objects: the share of (right, wrong) pairs in

@@ -2,8 +2,8 @@
 // candidates of the curated training objects, of generated objects the networks were not trained
 // on and of held-out curated objects are made by the models folder's networks as its scorer runs
 // them (as `sagrid scorer candidates`); a scorer fitted on the first two replaces the folder's
-// decisions of each category only where together they need fewer edits on that category's
-// held-out objects (guardPointScorer, adoptedScorer). The GUI's Train panel
+// decisions where the guard judges it better on the held-out objects, each category's mixes of
+// the two judged as a whole (guardPointScorer, adoptedScorer). The GUI's Train panel
 // ("Retrain point decision") goes through here; `sagrid scorer candidates` + `scorer train
 // --guard` do the same in steps.
 #pragma once

@@ -37,9 +37,9 @@ struct TrainingRequest {
   bool categoryClassifier = false;
   // Instead of point models: retrain the learned point decision of initDir (else outDir) on the
   // training set's curated objects and `generated` objects (core/eval/point_scorer_update.h),
-  // guarded by heldOut when given: each category's new decisions go into outDir's
-  // point_scorer.json where together they need fewer held-out edits, the others keep theirs, and
-  // the whole new scorer goes to outDir/refused/ where any category refused it.
+  // guarded by heldOut when given (guardPointScorer: each category's best mix of the loaded and
+  // new decisions, judged as a whole, goes into outDir's point_scorer.json), and the whole new
+  // scorer goes to outDir/refused/ where any model's new decision was not taken.
   bool pointScorer = false;
   std::filesystem::path generated;  // empty: the bench's val split (generated when missing)
 };

@@ -591,8 +591,9 @@ TEST(PointScorerTraining, TheGuardAdoptsEachCategorysDecisionsOnItsOwnHeldOutObj
   EXPECT_FALSE(guard.byModel[0].adopted);
   EXPECT_EQ(guard.byModel[1].model, "stove.togglebutton");
   EXPECT_TRUE(guard.byModel[1].adopted);
-  EXPECT_EQ(guard.byModel[1].categoryNewEdits, 0u);  // alone in its category: its own edits
+  EXPECT_EQ(guard.byModel[1].categoryAdoptedEdits, 0u);  // alone in its category: its own edits
   EXPECT_EQ(guard.byModel[1].categoryCurrentEdits, 12u);
+  EXPECT_EQ(guard.byModel[1].categoryJudged, 1u);
   EXPECT_EQ(guard.byModel[2].model, "stove.heatsource");
   EXPECT_FALSE(guard.byModel[2].adopted);  // no held-out object judged it
   EXPECT_TRUE(guard.adopted);
@@ -617,9 +618,10 @@ TEST(PointScorerTraining, TheGuardAdoptsEachCategorysDecisionsOnItsOwnHeldOutObj
   EXPECT_EQ(onlyAdopted.forModel("sink.togglebutton"), nullptr);
 }
 
-// A category's models read each other (a knob per burner), so a new decision better on one and
-// worse on the other is judged on their sum: as many edits -> neither adopted; fewer -> both.
-TEST(PointScorerTraining, TheGuardJudgesACategorysModelsTogether) {
+// A category's models read each other (a knob per burner), so every mix of its current and new
+// decisions is judged on the category's objects as a whole: the mix adopted is the best one judged,
+// and the adopted scorer needs exactly the edits the guard reported.
+TEST(PointScorerTraining, TheGuardJudgesEveryMixOfACategorysDecisions) {
   const auto sets = syntheticSets();
   std::vector<const CandidateSet*> training;
   const auto heldOut = heldOutTwice(sets, "stove.heatsource", training);
@@ -628,29 +630,40 @@ TEST(PointScorerTraining, TheGuardJudgesACategorysModelsTogether) {
   PointScorer current, mixed, better;
   current.byModel = {{"stove.togglebutton", poor}, {"stove.heatsource", good}};
   mixed.byModel = {{"stove.togglebutton", good}, {"stove.heatsource", poor}};
-  const ScorerGuard same = guardPointScorer(&current, mixed, heldOut, training);
-  ASSERT_EQ(same.byModel.size(), 2u);
-  for (const ScorerVerdict& v : same.byModel) {
-    EXPECT_FALSE(v.adopted) << v.model;  // 12 -> 0 on the knobs, 0 -> 12 on the burners
-    EXPECT_EQ(v.categoryCurrentEdits, 12u);
-    EXPECT_EQ(v.categoryNewEdits, 12u);
+  // Current 12 edits (the knobs), all new 12 (the burners): as a whole no better, but the mix of
+  // the new knobs and the current burners needs none.
+  const ScorerGuard guard = guardPointScorer(&current, mixed, heldOut, training);
+  ASSERT_EQ(guard.byModel.size(), 2u);
+  EXPECT_EQ(guard.byModel[0].model, "stove.heatsource");
+  EXPECT_FALSE(guard.byModel[0].adopted);
+  EXPECT_TRUE(guard.byModel[1].adopted);
+  for (const ScorerVerdict& v : guard.byModel) {
+    EXPECT_EQ(v.categoryCurrentEdits, 12u) << v.model;
+    EXPECT_EQ(v.categoryAdoptedEdits, 0u) << v.model;
+    EXPECT_EQ(v.categoryJudged, 2u) << v.model;
   }
-  EXPECT_FALSE(same.adopted);
-  EXPECT_EQ(toString(same.byModel[1]),
-            "stove.togglebutton: 12 -> 0 edits on 18 held-out points (stove with its other "
-            "models: 12 -> 12): the decision before stays");
-  const PointScorer kept = adoptedScorer(&current, mixed, same);
-  EXPECT_TRUE(sameDecision(kept.forModel("stove.togglebutton"), poor));
-  EXPECT_TRUE(sameDecision(kept.forModel("stove.heatsource"), good));
+  EXPECT_EQ(guard.currentEdits, 12u);
+  EXPECT_EQ(guard.newEdits, 12u);
+  EXPECT_EQ(guard.adoptedEdits, 0u);
+  EXPECT_EQ(toString(guard.byModel[1]),
+            "stove.togglebutton: 12 -> 0 edits on 18 held-out points: adopted (stove judged as a "
+            "whole: 12 -> 0 edits with the decisions adopted)");
+  const PointScorer adopted = adoptedScorer(&current, mixed, guard);
+  EXPECT_TRUE(sameDecision(adopted.forModel("stove.togglebutton"), good));
+  EXPECT_TRUE(sameDecision(adopted.forModel("stove.heatsource"), good));
+  // What was adopted is what was judged: as the current scorer, its edits are the guard's.
+  EXPECT_EQ(guardPointScorer(&adopted, mixed, heldOut, training).currentEdits, guard.adoptedEdits);
 
+  // Both new decisions better: both adopted. Both as good as the current ones: neither (a tie
+  // keeps the current decisions).
   better.byModel = {{"stove.togglebutton", good}, {"stove.heatsource", good}};
   current.byModel["stove.heatsource"] = poor;  // 24 edits before, none after
   const ScorerGuard both = guardPointScorer(&current, better, heldOut, training);
   EXPECT_TRUE(both.adoptedWhole());
   EXPECT_EQ(both.adoptedEdits, 0u);
-  const PointScorer taken = adoptedScorer(&current, better, both);
-  EXPECT_TRUE(sameDecision(taken.forModel("stove.togglebutton"), good));
-  EXPECT_TRUE(sameDecision(taken.forModel("stove.heatsource"), good));
+  const ScorerGuard tie = guardPointScorer(&better, better, heldOut, training);
+  EXPECT_FALSE(tie.adopted);
+  EXPECT_EQ(tie.adoptedEdits, 0u);
 }
 
 TEST(PointScorerTraining, TheDecisionRecordsTheNetworkItsCandidatesCameFromAndRefusesAMix) {
