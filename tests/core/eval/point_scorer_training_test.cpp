@@ -549,21 +549,27 @@ TEST(PointScorerTraining, TheGuardAdoptsABetterScorerAndRefusesAWorseOne) {
   EXPECT_THROW(guardPointScorer(&poor, good, {}, training), InvalidArgument);
 }
 
-// The synthetic knobs held out twice: as stove.togglebutton and as `second` (the same knobs,
-// judged as a second model).
-std::vector<CandidateSet> heldOutTwice(const std::vector<CandidateSet>& sets, const std::string& second,
-                                       std::vector<const CandidateSet*>& training) {
+// The synthetic knobs of one source held out twice: as stove.togglebutton and as `second` (the
+// same knobs, judged as a second model); a good decision fitted on the other sources and a poor
+// one (one point).
+struct HeldOutTwice {
+  std::vector<CandidateSet> sets = syntheticSets();
+  std::vector<const CandidateSet*> training;
   std::vector<CandidateSet> heldOut;
-  for (const auto& s : sets)
-    if (s.source == "library-c") {
-      heldOut.push_back(s);
-      heldOut.push_back(s);
-      heldOut.back().model = second;
-    } else {
-      training.push_back(&s);
-    }
-  return heldOut;
-}
+  ModelPointScorer good, poor;
+  explicit HeldOutTwice(const std::string& second) {
+    for (const auto& s : sets)
+      if (s.source == "library-c") {
+        heldOut.push_back(s);
+        heldOut.push_back(s);
+        heldOut.back().model = second;
+      } else {
+        training.push_back(&s);
+      }
+    good = *trainPointScorer(training, {}).forModel("stove.togglebutton");
+    poor = *onePointScorer().forModel("stove.togglebutton");
+  }
+};
 
 bool sameDecision(const ModelPointScorer* a, const ModelPointScorer& b) {
   PointScorer x, y;
@@ -576,11 +582,8 @@ bool sameDecision(const ModelPointScorer* a, const ModelPointScorer& b) {
 // other; the adopted scorer takes the new decision for the first and keeps the current one for
 // the second.
 TEST(PointScorerTraining, TheGuardAdoptsEachCategorysDecisionsOnItsOwnHeldOutObjects) {
-  const auto sets = syntheticSets();
-  std::vector<const CandidateSet*> training;
-  const auto heldOut = heldOutTwice(sets, "sink.togglebutton", training);
-  const ModelPointScorer good = *trainPointScorer(training, {}).forModel("stove.togglebutton");
-  const ModelPointScorer poor = *onePointScorer().forModel("stove.togglebutton");
+  const HeldOutTwice c("sink.togglebutton");
+  const auto& [sets, training, heldOut, good, poor] = c;
   PointScorer current, fresh;
   current.byModel = {{"stove.togglebutton", poor}, {"sink.togglebutton", good}, {"sink.fluidsource", poor}};
   fresh.byModel = {{"stove.togglebutton", good}, {"sink.togglebutton", poor}, {"stove.heatsource", good}};
@@ -622,11 +625,8 @@ TEST(PointScorerTraining, TheGuardAdoptsEachCategorysDecisionsOnItsOwnHeldOutObj
 // decisions is judged on the category's objects as a whole: the mix adopted is the best one judged,
 // and the adopted scorer needs exactly the edits the guard reported.
 TEST(PointScorerTraining, TheGuardJudgesEveryMixOfACategorysDecisions) {
-  const auto sets = syntheticSets();
-  std::vector<const CandidateSet*> training;
-  const auto heldOut = heldOutTwice(sets, "stove.heatsource", training);
-  const ModelPointScorer good = *trainPointScorer(training, {}).forModel("stove.togglebutton");
-  const ModelPointScorer poor = *onePointScorer().forModel("stove.togglebutton");
+  const HeldOutTwice c("stove.heatsource");
+  const auto& [sets, training, heldOut, good, poor] = c;
   PointScorer current, mixed, better;
   current.byModel = {{"stove.togglebutton", poor}, {"stove.heatsource", good}};
   mixed.byModel = {{"stove.togglebutton", good}, {"stove.heatsource", poor}};
