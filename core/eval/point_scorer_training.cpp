@@ -632,6 +632,9 @@ ScorerCrossValidation crossValidatePointScorer(const std::vector<CandidateSet>& 
 }
 
 namespace {
+// A category's models whose mixes the guard judges (2^n mixes; a stove and a sink have two).
+constexpr std::size_t kMostGuardedModelsPerCategory = 8;
+
 // `base` with `fresh`'s decisions for `models` (none where `fresh` has none: the count's points).
 PointScorer withDecisionsOf(PointScorer base, const PointScorer& fresh,
                             const std::vector<std::string>& models) {
@@ -688,13 +691,18 @@ ScorerGuard guardPointScorer(const PointScorer* current, const PointScorer& fres
   // objects as a whole and the one with the fewest edits adopted: the mix adopted is the mix
   // judged. Mixes with fewer new decisions come first, so a tie keeps the current ones.
   for (const auto& [category, models] : categories) {
+    if (models.size() > kMostGuardedModelsPerCategory)
+      throw InvalidArgument("scorer guard: category " + category + " has " +
+                            std::to_string(models.size()) + " models; the guard judges every mix "
+                            "of at most " + std::to_string(kMostGuardedModelsPerCategory));
     std::vector<const CandidateSet*> sets;
     for (const auto& model : models)
       sets.insert(sets.end(), byModel.at(model).begin(), byModel.at(model).end());
     std::vector<std::size_t> mixes(std::size_t{1} << models.size());
     std::iota(mixes.begin(), mixes.end(), std::size_t{0});
     std::stable_sort(mixes.begin(), mixes.end(), [](std::size_t a, std::size_t b) {
-      return std::bitset<32>(a).count() < std::bitset<32>(b).count();
+      return std::bitset<kMostGuardedModelsPerCategory>(a).count() <
+             std::bitset<kMostGuardedModelsPerCategory>(b).count();
     });
     std::size_t best = 0, bestEdits = 0, currentEdits = 0;
     for (std::size_t mix : mixes) {
@@ -769,6 +777,7 @@ nlohmann::json toJson(const ScorerGuard& guard) {
                       {"hand_points", v.handPoints},
                       {"category_current_edits", v.categoryCurrentEdits},
                       {"category_adopted_edits", v.categoryAdoptedEdits},
+                      {"category_judged", v.categoryJudged},
                       {"adopted", v.adopted}});
   return {{"current_edits", guard.currentEdits},   {"new_edits", guard.newEdits},
           {"adopted_edits", guard.adoptedEdits},   {"adopted", guard.adopted},

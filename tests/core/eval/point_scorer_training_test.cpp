@@ -648,6 +648,7 @@ TEST(PointScorerTraining, TheGuardJudgesEveryMixOfACategorysDecisions) {
   EXPECT_EQ(toString(guard.byModel[1]),
             "stove.togglebutton: 12 -> 0 edits on 18 held-out points: adopted (stove judged as a "
             "whole: 12 -> 0 edits with the decisions adopted)");
+  EXPECT_EQ(toJson(guard).at("models")[1].at("category_judged"), 2);
   const PointScorer adopted = adoptedScorer(&current, mixed, guard);
   EXPECT_TRUE(sameDecision(adopted.forModel("stove.togglebutton"), good));
   EXPECT_TRUE(sameDecision(adopted.forModel("stove.heatsource"), good));
