@@ -100,6 +100,11 @@ void addTrainingOptions(CLI::App& cmd, std::vector<std::string>& candidates,
       "object's other models of the category (before session 47)");
   cmd.add_option("--rounds", o.boosting.rounds, "Boosting rounds (default 100)");
   cmd.add_option("--depth", o.boosting.depth, "Tree depth (default 3)");
+  cmd.add_option("--min-leaf-hessian", o.boosting.minLeafHessian,
+                 "Least weighted p(1 - p) a tree's leaf holds (default 1)")
+      ->check(CLI::PositiveNumber);
+  cmd.add_option("--leaf-ridge", o.boosting.lambda, "Ridge on the trees' leaf values (default 1)")
+      ->check(CLI::NonNegativeNumber);
 }
 
 void setupScorer(CLI::App& root) {
