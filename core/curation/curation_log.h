@@ -19,6 +19,7 @@ enum class CurationAction {
   Drag,       // a point moved
   Add,        // a point added
   Delete,     // a point deleted
+  DeleteRest,  // the selected point and every point of its type after it deleted (one key)
   Copies,     // the selected point carried onto every copy of its part (core/geometry/points_on_copies.h)
   Retype,     // a point's type changed
   Category,   // the object's category switched

@@ -45,9 +45,10 @@ std::vector<CurationStep> curationPlan(const ObjectLabels& opened, const ObjectL
   std::set<std::string> types;
   for (const auto& p : points) types.insert(p.type);
   for (const auto& p : truth.affordances) types.insert(p.type);
-  std::vector<int> extra;
+  std::vector<std::pair<int, CurationAction>> deletions;  // index, Delete or DeleteRest
   std::vector<AffordancePoint> missing;
   for (const std::string& type : types) {
+    std::vector<int> extra;
     std::vector<int> have;
     std::vector<const AffordancePoint*> want;
     for (int i = 0; i < static_cast<int>(points.size()); ++i)
@@ -80,12 +81,22 @@ std::vector<CurationStep> curationPlan(const ObjectLabels& opened, const ObjectL
     }
     for (std::size_t c = 0; c < want.size(); ++c)
       if (!wanted[c]) missing.push_back(*want[c]);
+    // The type's last points all extra (the ranking's tail, most probable first: a count that took
+    // too many) go with one key from the first of them; the others one by one.
+    std::size_t tail = 0;
+    while (tail < have.size() &&
+           std::count(extra.begin(), extra.end(), have[have.size() - 1 - tail]) > 0)
+      ++tail;
+    for (int i : extra)
+      if (tail < 2 || i < have[have.size() - tail]) deletions.push_back({i, CurationAction::Delete});
+    if (tail >= 2) deletions.push_back({have[have.size() - tail], CurationAction::DeleteRest});
   }
-  std::sort(extra.rbegin(), extra.rend());  // from the back, so earlier indices stay valid
-  for (int i : extra) {
+  // From the back, so earlier indices stay valid (a tail's later points go with its first).
+  std::sort(deletions.rbegin(), deletions.rend());
+  for (const auto& [index, action] : deletions) {
     CurationStep s;
-    s.action = CurationAction::Delete;
-    s.index = i;
+    s.action = action;
+    s.index = index;
     steps.push_back(s);
   }
   for (const auto& p : missing) {

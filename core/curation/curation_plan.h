@@ -3,7 +3,8 @@
 // right (its suggested points stay), else switch the category if it is wrong (the GUI then drops
 // the old category's predicted points; accepting "none" drops suggestions), set the units if they are wrong, drag every predicted point that
 // is matched (Hungarian, per type) to a right point but lies farther than the match radius, delete
-// every extra point, add every missing one, and accept the rest with one key. The edits are the
+// every extra point (where a type's last two or more points are all extra, with one key from the
+// first of them: DeleteRest), add every missing one, and accept the rest with one key. The edits are the
 // ones core/eval/curator_effort.h counts; the replay (ui/app/curation_replay.h) performs them
 // through the GUI's own session so the curation log measures them.
 #pragma once
@@ -18,10 +19,10 @@
 namespace sagrid {
 
 struct CurationStep {
-  CurationAction action = CurationAction::Drag;  // (Confirm)Category, Units, Drag, Delete or Add
+  CurationAction action = CurationAction::Drag;  // (Confirm)Category, Units, Drag, Delete(Rest), Add
   std::string category;                          // Category
   double metersPerUnit = 1.0;                    // Units
-  int index = -1;                                // Drag, Delete: the point's index at that moment
+  int index = -1;  // Drag, Delete, DeleteRest: the point's index at that moment
   AffordancePoint point;                         // Drag: where to; Add: the point
 };
 

@@ -15,6 +15,7 @@ std::string klmSequence(CurationAction action) {
     case CurationAction::Drag: return "MPBPB";
     case CurationAction::Add: return "MKPBB";       // the type's digit, then click on the surface
     case CurationAction::Delete: return "MPBBK";    // select, Del
+    case CurationAction::DeleteRest: return "MPBBKK";  // select the first to go, Shift+Del
     case CurationAction::Copies: return "MPBBK";    // select, key R
     case CurationAction::Retype: return "MPBBK";    // select, digit
     case CurationAction::Category: return "MPBBPBB";  // open the list, pick
@@ -41,6 +42,7 @@ namespace {
 bool isEdit(CurationAction a) {
   switch (a) {
     case CurationAction::Drag: case CurationAction::Add: case CurationAction::Delete: case CurationAction::Retype:
+    case CurationAction::DeleteRest:
     case CurationAction::Copies:
     case CurationAction::Category: case CurationAction::ConfirmCategory: case CurationAction::Units:
     case CurationAction::Edit:

@@ -35,6 +35,10 @@ void takeStep(Session& session, const CurationStep& step, bool repredict) {
       session.document()->select(step.index);
       session.deleteSelected();
       break;
+    case CurationAction::DeleteRest:
+      session.document()->select(step.index);
+      session.deleteRestOfSelected();
+      break;
     case CurationAction::Add: {
       AffordancePoint point = step.point;
       point.status = AffordanceStatus::Added;
@@ -58,6 +62,10 @@ bool takeCopies(Session& session, const ObjectLabels& truth, std::vector<Curatio
     if (steps[s].action == CurationAction::Add) addsByType[steps[s].point.type].push_back(s);
     if (steps[s].action == CurationAction::Drag || steps[s].action == CurationAction::Delete)
       touched.insert(steps[s].index);
+    if (steps[s].action == CurationAction::DeleteRest)  // the point and its type's later ones
+      for (int i = steps[s].index; i < static_cast<int>(doc.points().size()); ++i)
+        if (doc.points()[std::size_t(i)].type == doc.points()[std::size_t(steps[s].index)].type)
+          touched.insert(i);
   }
   for (const auto& [type, adds] : addsByType) {
     if (adds.size() < 2) continue;

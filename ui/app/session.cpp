@@ -280,6 +280,21 @@ void Session::deleteSelected() {
     execute(std::make_unique<DeletePointCommand>(m_document->selected()));
 }
 
+int Session::deleteRestOfSelected() {
+  if (!m_document || m_document->selected() < 0) return 0;
+  const int from = m_document->selected();
+  const auto& points = m_document->points();
+  const std::string type = points[std::size_t(from)].type;
+  std::vector<std::unique_ptr<Command>> deletes;
+  for (int i = static_cast<int>(points.size()) - 1; i >= from; --i)  // from the back
+    if (points[std::size_t(i)].type == type) deletes.push_back(std::make_unique<DeletePointCommand>(i));
+  const int deleted = static_cast<int>(deletes.size());
+  execute(std::make_unique<CommandGroup>("Delete " + std::to_string(deleted) + " " + type +
+                                             " points from the selected one on",
+                                         std::move(deletes), CurationAction::DeleteRest));
+  return deleted;
+}
+
 int Session::addOnCopiesOfSelected() {
   if (!m_document || m_document->selected() < 0) return 0;
   const AffordancePoint& source = m_document->points()[std::size_t(m_document->selected())];

@@ -66,6 +66,10 @@ class Session {
   void undo();
   void redo();
   void deleteSelected();
+  // Deletes the selected point and every point of its type listed after it (a model's points are
+  // listed most probable first, so these are the tail of a count that took too many): one
+  // undoable step, logged as "delete_rest". Returns how many.
+  int deleteRestOfSelected();
   // Adds the selected point's type on every copy of the part it lies on where no point of that
   // type is yet (pointsOnCopies): one undoable step, logged as "copies". Returns how many.
   int addOnCopiesOfSelected();

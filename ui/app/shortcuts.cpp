@@ -20,6 +20,7 @@ const std::vector<ShortcutHelp>& shortcutHelp() {
       {"A", "accept the selected point; none selected: accept all and go to the next object"},
       {"C", "take the suggested category of a rejected object, with its points"},
       {"Del / Backspace", "delete the selected point"},
+      {"Shift+Del", "delete the selected point and every later one of its type"},
       {"R", "copies: the selected point's type on every copy of its part (a row of knobs, burners)"},
       {"1-9", "current type (and the selected point's type)"},
       {"N / P", "next / previous object"},
@@ -78,7 +79,10 @@ bool handleShortcuts(const std::vector<InputEvent>& events, Session& session,
         break;
       case GLFW_KEY_DELETE:
       case GLFW_KEY_BACKSPACE:
-        session.deleteSelected();
+        if (shift)
+          session.deleteRestOfSelected();
+        else
+          session.deleteSelected();
         break;
       case GLFW_KEY_N:
         session.navigate(+1);

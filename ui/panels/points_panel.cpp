@@ -85,6 +85,10 @@ void drawPointsPanel(Session& session) {
     ImGui::SameLine();
     if (ImGui::Button("Delete (Del)")) session.deleteSelected();
     ImGui::SameLine();
+    if (ImGui::Button("Delete rest (Shift+Del)")) session.deleteRestOfSelected();
+    if (ImGui::IsItemHovered())
+      ImGui::SetTooltip("Delete this point and every point of its type listed after it");
+    ImGui::SameLine();
     if (ImGui::Button("Copies (R)")) session.addOnCopiesOfSelected();
     if (ImGui::IsItemHovered())
       ImGui::SetTooltip("Add this point's type on every copy of its part (a row of knobs, burners)");

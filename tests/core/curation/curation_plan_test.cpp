@@ -51,5 +51,30 @@ TEST(CurationPlan, AWrongCategoryDropsThePredictedPointsAndWrongUnitsAreSetFirst
   EXPECT_TRUE(curationPlan(labels("sink", {point("fluidsource", 14, 0)}, 0.01), truth).empty());
 }
 
+// A type's last points all extra (a count that took too many, its points most probable first) go
+// with one key from the first of them; an extra point before a right one goes alone.
+TEST(CurationPlan, ATypesExtraTailIsDeletedWithOneKey) {
+  const ObjectLabels predicted =
+      labels("stove", {point("togglebutton", 0, 0), point("togglebutton", 9, 9), point("togglebutton", 1, 0),
+                       point("heatsource", 0, 5), point("togglebutton", 7, 7), point("togglebutton", 8, 8)});
+  const ObjectLabels truth = labels("stove", {point("togglebutton", 0, 0), point("togglebutton", 1, 0),
+                                              point("heatsource", 0, 5)});
+  const std::vector<CurationStep> steps = curationPlan(predicted, truth);
+  ASSERT_EQ(steps.size(), 2u);
+  EXPECT_EQ(steps[0].action, CurationAction::DeleteRest);  // (7,7) and (8,8): the knobs' tail
+  EXPECT_EQ(steps[0].index, 4);
+  EXPECT_EQ(steps[1].action, CurationAction::Delete);  // (9,9), between two right knobs
+  EXPECT_EQ(steps[1].index, 1);
+  // One extra at the end is one Delete.
+  ObjectLabels one = predicted;
+  one.affordances.pop_back();
+  const std::vector<CurationStep> single = curationPlan(one, truth);
+  ASSERT_EQ(single.size(), 2u);
+  EXPECT_EQ(single[0].action, CurationAction::Delete);
+  EXPECT_EQ(single[0].index, 4);
+  EXPECT_EQ(single[1].action, CurationAction::Delete);
+  EXPECT_EQ(single[1].index, 1);
+}
+
 }  // namespace
 }  // namespace sagrid

@@ -31,19 +31,27 @@ std::size_t countOf(const std::vector<AffordancePoint>& points, const std::strin
 }
 
 // The stove opened in a session that logs to dir/curation.jsonl; `truth` its right labels.
-void openStove(Session& session, const fs::path& dir, ObjectLabels& truth) {
-  stoveWithOneKnob(dir / "queue" / "stove", &truth);
-  session.autoPredict = false;
-  session.logErrors = false;
-  session.setCurationLog(dir / "curation.jsonl");
-  session.openPaths({dir / "queue"});
-}
-
-TEST(PointCopies, OneKnobsPointGoesOntoEveryOtherKnobInOneUndoableStep) {
+class PointCopies : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    stoveWithOneKnob(dir / "queue" / "stove", &truth);
+    session.autoPredict = false;
+    session.logErrors = false;
+    session.setCurationLog(dir / "curation.jsonl");
+    session.openPaths({dir / "queue"});
+  }
+  // How many times the log holds `action`.
+  std::ptrdiff_t logged(CurationAction action) const {
+    const auto events = readCurationLog(dir / "curation.jsonl");
+    return std::count_if(events.begin(), events.end(),
+                         [&](const CurationEvent& e) { return e.action == action; });
+  }
   const fs::path dir = test::freshTempDir();
   ObjectLabels truth;
   Session session;
-  openStove(session, dir, truth);
+};
+
+TEST_F(PointCopies, OneKnobsPointGoesOntoEveryOtherKnobInOneUndoableStep) {
   ASSERT_TRUE(session.document());
   EXPECT_EQ(session.addOnCopiesOfSelected(), 0);  // nothing selected
   session.document()->select(4);                  // the knob
@@ -67,20 +75,35 @@ TEST(PointCopies, OneKnobsPointGoesOntoEveryOtherKnobInOneUndoableStep) {
   EXPECT_FALSE(session.pendingErrors().empty());
   session.undo();
   EXPECT_EQ(countOf(session.document()->points(), "togglebutton"), 1u);
-  const auto events = readCurationLog(dir / "curation.jsonl");
-  EXPECT_EQ(std::count_if(events.begin(), events.end(),
-                          [](const CurationEvent& e) { return e.action == CurationAction::Copies; }),
-            1);
+  EXPECT_EQ(logged(CurationAction::Copies), 1);
   // A burner has no copy on this mesh (burners are drawn, not modelled): nothing, one message.
   session.document()->select(0);
   EXPECT_EQ(session.addOnCopiesOfSelected(), 0);
 }
 
-TEST(PointCopies, TheReplayedCuratorTakesCopiesWhereTheyReplaceAdds) {
-  const fs::path dir = test::freshTempDir();
-  ObjectLabels truth;
-  Session session;
-  openStove(session, dir, truth);
+// Shift+Del: the selected point and every later point of its type go in one undoable step,
+// logged as "delete_rest"; the other types' points stay.
+TEST_F(PointCopies, DeleteRestTakesTheSelectedPointAndItsTypesLaterOnesInOneStep) {
+  ASSERT_TRUE(session.document());
+  EXPECT_EQ(session.deleteRestOfSelected(), 0);  // nothing selected
+  const std::vector<AffordancePoint> before = session.document()->points();
+  ASSERT_EQ(countOf(before, "heatsource"), 4u);
+  session.document()->select(1);  // the second burner: it and the two after it go
+  const std::size_t steps = session.document()->historySize();
+  EXPECT_EQ(session.deleteRestOfSelected(), 3);
+  EXPECT_EQ(session.document()->historySize(), steps + 1);
+  const auto& after = session.document()->points();
+  EXPECT_EQ(countOf(after, "heatsource"), 1u);
+  EXPECT_EQ(countOf(after, "togglebutton"), 1u);
+  EXPECT_EQ(after.front().position, before.front().position);
+  session.undo();
+  ASSERT_EQ(session.document()->points().size(), before.size());
+  for (std::size_t i = 0; i < before.size(); ++i)
+    EXPECT_EQ(session.document()->points()[i].position, before[i].position) << i;
+  EXPECT_EQ(logged(CurationAction::DeleteRest), 1);
+}
+
+TEST_F(PointCopies, TheReplayedCuratorTakesCopiesWhereTheyReplaceAdds) {
   const auto summary = replayCuration(
       session, [&](const std::string&) -> std::optional<ObjectLabels> { return truth; });
   EXPECT_EQ(summary.objects, 1u);
