@@ -85,10 +85,6 @@ void drawPointsPanel(Session& session) {
     ImGui::SameLine();
     if (ImGui::Button("Delete (Del)")) session.deleteSelected();
     ImGui::SameLine();
-    if (ImGui::Button("Delete rest (Shift+Del)")) session.deleteRestOfSelected();
-    if (ImGui::IsItemHovered())
-      ImGui::SetTooltip("Delete this point and every point of its type listed after it");
-    ImGui::SameLine();
     if (ImGui::Button("Copies (R)")) session.addOnCopiesOfSelected();
     if (ImGui::IsItemHovered())
       ImGui::SetTooltip("Add this point's type on every copy of its part (a row of knobs, burners)");
@@ -100,6 +96,10 @@ void drawPointsPanel(Session& session) {
       }
       ImGui::EndCombo();
     }
+    // Its own line: the row above fills the panel's width.
+    if (ImGui::Button("Delete rest (Shift+Del)")) session.deleteRestOfSelected();
+    if (ImGui::IsItemHovered())
+      ImGui::SetTooltip("Delete this point and every point of its type listed after it");
     if (points[std::size_t(selected)].type == "togglebutton") drawControlEditor(session, selected);
   } else if (!points.empty()) {
     if (ImGui::Button("Accept all and next (A)", ImVec2(-1, 0))) session.accept();
