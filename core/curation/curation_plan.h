@@ -4,8 +4,8 @@
 // the old category's predicted points; accepting "none" drops suggestions), set the units if they are wrong, drag every predicted point that
 // is matched (Hungarian, per type) to a right point but lies farther than the match radius, delete
 // every extra point (where a type's last two or more points are all extra, with one key from the
-// first of them: DeleteRest), add every missing one, and accept the rest with one key. The edits are the
-// ones core/eval/curator_effort.h counts; the replay (ui/app/curation_replay.h) performs them
+// first of them: DeleteRest), add every missing one, and accept the rest with one key. The points
+// edited are the ones core/eval/curator_effort.h counts (a DeleteRest step deletes several); the replay (ui/app/curation_replay.h) performs them
 // through the GUI's own session so the curation log measures them.
 #pragma once
 

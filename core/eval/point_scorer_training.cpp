@@ -15,6 +15,7 @@
 #include "core/eval/choice_grid.h"
 #include "core/eval/metrics.h"
 #include "core/eval/report_cell.h"
+#include "core/model/model_card.h"
 #include "core/points/point_count.h"
 
 namespace sagrid {
@@ -48,7 +49,7 @@ std::vector<Eigen::Vector3f> chosenSurface(const CandidateSet& set,
 }
 
 // The category of a model's name (stove of stove.heatsource).
-std::string categoryOfModel(const std::string& model) { return model.substr(0, model.find('.')); }
+std::string categoryOfModel(const std::string& model) { return model::splitModelName(model).first; }
 
 // Whether two models are of one category (stove.heatsource and stove.togglebutton).
 bool sameCategory(const std::string& a, const std::string& b) {
@@ -704,15 +705,25 @@ ScorerGuard guardPointScorer(const PointScorer* current, const PointScorer& fres
       return std::bitset<kMostGuardedModelsPerCategory>(a).count() <
              std::bitset<kMostGuardedModelsPerCategory>(b).count();
     });
-    std::size_t best = 0, bestEdits = 0, currentEdits = 0;
+    // All current and all new are the models' own figures summed; the mixes between are judged.
+    std::size_t currentEdits = 0, newEdits = 0;
+    for (const auto& model : models) {
+      currentEdits += guard.byModel[verdictOf.at(model)].currentEdits;
+      newEdits += guard.byModel[verdictOf.at(model)].newEdits;
+    }
+    const std::size_t allNew = mixes.size() - 1;
+    std::size_t best = 0, bestEdits = currentEdits;
     for (std::size_t mix : mixes) {
-      std::vector<std::string> taken;
-      for (std::size_t i = 0; i < models.size(); ++i)
-        if ((mix >> i) & 1) taken.push_back(models[i]);
-      const PointScorer judged = withDecisionsOf(was, fresh, taken);
-      const std::size_t edits = figuresOf(sets, scorerChooser(judged, all)).edits.total();
-      if (mix == 0) currentEdits = bestEdits = edits;
-      else if (edits < bestEdits) best = mix, bestEdits = edits;
+      if (mix == 0) continue;
+      std::size_t edits = newEdits;
+      if (mix != allNew) {
+        std::vector<std::string> taken;
+        for (std::size_t i = 0; i < models.size(); ++i)
+          if ((mix >> i) & 1) taken.push_back(models[i]);
+        const PointScorer judged = withDecisionsOf(was, fresh, taken);
+        edits = figuresOf(sets, scorerChooser(judged, all)).edits.total();
+      }
+      if (edits < bestEdits) best = mix, bestEdits = edits;
     }
     for (std::size_t i = 0; i < models.size(); ++i) {
       ScorerVerdict& v = guard.byModel[verdictOf.at(models[i])];

@@ -82,14 +82,19 @@ std::vector<float> withOtherModels(std::vector<float> own,
   if (own.size() != expected)
     throw InvalidArgument("point count: " + std::to_string(own.size()) + " features, expected " +
                           std::to_string(expected));
-  for (const char* name : kFromOtherModels) {
+  static const std::vector<std::size_t> from = [] {
+    std::vector<std::size_t> at;
+    for (const char* name : kFromOtherModels) at.push_back(ownFeatureIndex(name));
+    return at;
+  }();
+  for (std::size_t i : from) {
     float sum = 0;
     for (const auto& other : others) {
       if (other.size() != expected)
         throw InvalidArgument("point count: another model's description has " +
                               std::to_string(other.size()) + " features, expected " +
                               std::to_string(expected));
-      sum += other[ownFeatureIndex(name)];
+      sum += other[i];
     }
     own.push_back(sum);
   }
