@@ -266,17 +266,23 @@ const char* toString(CorpusRole role) {
 std::optional<CorpusRole> selectCorpusRole(const FurnitureCatalogEntry& entry) {
   if (entry.category != "Kitchen" && entry.category != "Bathroom") return std::nullopt;
   static const std::regex stove("cooker|cooktop|stove|hob", std::regex::icase);
-  static const std::regex sink("sink|washbasin|lavatory|basin|vanity", std::regex::icase);
+  // A tap alone is a sink (issue 41's rule): it has the sink's controls and outlet.
+  static const std::regex sink("sink|washbasin|lavatory|basin|vanity|faucet|\\btaps?\\b",
+                               std::regex::icase);
+  // Small appliances first: a rice cooker or a pressure cooker has no hob.
+  static const std::regex appliance("rice cooker|pressure cooker|slow cooker", std::regex::icase);
   static const std::regex distractor(
       "oven|microwave|coffee (machine|maker|brewer)|dishwasher|hood|fridge|refrigerator|"
       "washing machine|clothes washer|toaster|deep fryer|sandwich|grill|kettle|blender|mixer|dryer",
       std::regex::icase);
   const std::string& name = entry.name;
+  if (std::regex_search(name, appliance)) return CorpusRole::None;
   if (std::regex_search(name, stove)) return CorpusRole::Stove;
   if (std::regex_search(name, sink)) {
     std::string lower = lowerAscii(name);
     for (std::size_t at; (at = lower.find("basin")) != std::string::npos;) lower.erase(at, 5);
-    if (lower.find("bath") == std::string::npos) return CorpusRole::Sink;
+    if (lower.find("bath") == std::string::npos && lower.find("shower") == std::string::npos)
+      return CorpusRole::Sink;
   }
   if (std::regex_search(name, distractor)) return CorpusRole::None;
   return std::nullopt;

@@ -83,6 +83,11 @@ TEST(CorpusSelection, RolesFollowTheNameRules) {
   EXPECT_EQ(roleOf("Double vanity", "Bathroom"), CorpusRole::Sink);
   EXPECT_EQ(roleOf("Small lavatory", "Bathroom"), CorpusRole::Sink);
   EXPECT_EQ(roleOf("Sink cabinet"), CorpusRole::Sink);
+  EXPECT_EQ(roleOf("Faucet", "Bathroom"), CorpusRole::Sink);  // a tap alone
+  EXPECT_EQ(roleOf("Mixer tap"), CorpusRole::Sink);
+  EXPECT_EQ(roleOf("Tapestry", "Bathroom"), std::nullopt);
+  EXPECT_EQ(roleOf("Shower head and faucet", "Bathroom"), std::nullopt);
+  EXPECT_EQ(roleOf("Rice cooker"), CorpusRole::None);  // an appliance, not a hob
   EXPECT_EQ(roleOf("Bath with basin", "Bathroom"), std::nullopt);  // a bathtub, not a sink
   EXPECT_EQ(roleOf("Bathtub", "Bathroom"), std::nullopt);
   EXPECT_EQ(roleOf("Shower", "Bathroom"), std::nullopt);
