@@ -67,6 +67,7 @@ void setupCorpus(CLI::App& root) {
   struct Options {
     std::string out, debs, labels, jar;
     std::vector<std::string> sh3f;
+    bool nonFree = false;
   };
   auto o = std::make_shared<Options>();
   cmd->add_option("--out", o->out, "Output folder (replaced only if empty or an earlier corpus)")
@@ -76,6 +77,10 @@ void setupCorpus(CLI::App& root) {
                   "Furniture library archive to read instead of the package (repeatable)");
   cmd->add_option("--jar", o->jar,
                   "sweethome3d.jar to read the default catalog from instead of the package");
+  cmd->add_flag("--non-free", o->nonFree,
+                "Also the libraries of sweethome3d-furniture-nonfree (Debian's non-free component; "
+                "each model under its author's licence): installed, else downloaded through a "
+                "private apt configuration that reads that component alone");
   cmd->add_option("--labels", o->labels,
                   "Shipped labels folder (<id>/labels.json, split.json); default "
                   "<source>/resources/datasets/sweethome3d");
@@ -84,6 +89,7 @@ void setupCorpus(CLI::App& root) {
     packages.debCache = o->debs.empty() ? defaultDebCache() : fs::path(o->debs);
     for (const auto& f : o->sh3f) packages.sh3f.emplace_back(f);
     if (!o->jar.empty()) packages.jar = fs::path(o->jar);
+    packages.nonFree = o->nonFree;
     const auto log = [](const std::string& line) {
       std::fprintf(stderr, "corpus: %s\n", line.c_str());
     };

@@ -25,6 +25,7 @@ using json = nlohmann::ordered_json;
 namespace {
 
 constexpr const char* kFurniturePackage = "sweethome3d-furniture";
+constexpr const char* kNonFreeFurniturePackage = "sweethome3d-furniture-nonfree";
 constexpr const char* kAppPackage = "sweethome3d";
 constexpr const char* kPluginCatalog = "PluginFurnitureCatalog.properties";
 constexpr const char* kDefaultCatalog =
@@ -66,6 +67,45 @@ std::string installedVersion(const std::string& package) {
   return status == 0 ? trimmed(output) : std::string();
 }
 
+// The .sh3f files an installed package holds (dpkg-query -L); empty when it is not installed.
+std::set<fs::path> installedLibraries(const std::string& package) {
+  std::set<fs::path> files;
+  const auto [status, output] = runCommand("dpkg-query -L " + shellQuote(package));
+  if (status != 0) return files;
+  std::istringstream lines(output);
+  for (std::string line; std::getline(lines, line);) {
+    const fs::path file = trimmed(line);
+    if (file.extension() == ".sh3f" && fs::is_regular_file(file)) files.insert(file);
+  }
+  return files;
+}
+
+// Options making apt-get read Debian's non-free component alone, from a private state folder
+// under `cache` (the system's sources and lists are left as they are).
+std::string nonFreeAptOptions(const fs::path& cache) {
+  const fs::path apt = cache / "apt-non-free";
+  std::error_code ec;
+  fs::create_directories(apt / "sources", ec);
+  fs::create_directories(apt / "lists" / "partial", ec);
+  fs::create_directories(apt / "archives" / "partial", ec);
+  if (ec) throw FileError(apt, "cannot create the apt state folder: " + ec.message());
+  std::string codename = "bookworm";
+  const auto [status, output] = runCommand(". /etc/os-release && echo \"$VERSION_CODENAME\"");
+  if (status == 0 && !trimmed(output).empty()) codename = trimmed(output);
+  writeFileAtomic(apt / "sources" / "debian-non-free.sources",
+                  "Types: deb\nURIs: http://deb.debian.org/debian\nSuites: " + codename +
+                      "\nComponents: non-free\n"
+                      "Signed-By: /usr/share/keyrings/debian-archive-keyring.gpg\n");
+  writeFileAtomic(apt / "none.list", "");
+  auto option = [](const std::string& name, const fs::path& value) {
+    return " -o " + shellQuote(name + "=" + value.string());
+  };
+  return option("Dir::Etc::sourcelist", apt / "none.list") +
+         option("Dir::Etc::sourceparts", apt / "sources") +
+         option("Dir::State::Lists", apt / "lists") +
+         option("Dir::Cache::Archives", apt / "archives");
+}
+
 std::vector<fs::path> sh3fFiles(const fs::path& furnitureDir) {
   std::vector<fs::path> files;
   if (!fs::is_directory(furnitureDir)) return files;
@@ -76,11 +116,12 @@ std::vector<fs::path> sh3fFiles(const fs::path& furnitureDir) {
   return files;
 }
 
-// The unpacked root of `package` from the .deb cache, downloading it when no .deb is cached.
-// Returns the root and the package version.
+// The unpacked root of `package` from the .deb cache, downloading it when no .deb is cached
+// (`aptOptions`: extra apt-get options, whose package lists are updated first). Returns the root
+// and the package version.
 std::pair<fs::path, std::string> unpackedPackage(
     const std::string& package, const fs::path& cache,
-    const std::function<void(const std::string&)>& log) {
+    const std::function<void(const std::string&)>& log, const std::string& aptOptions = {}) {
   auto cachedDeb = [&]() -> fs::path {
     std::vector<fs::path> debs;
     if (fs::is_directory(cache)) {
@@ -101,13 +142,17 @@ std::pair<fs::path, std::string> unpackedPackage(
     fs::create_directories(cache, ec);
     if (ec) throw FileError(cache, "cannot create the .deb cache folder: " + ec.message());
     if (log) log("downloading " + package + " with apt-get download into " + cache.string());
-    const auto [status, output] = runCommand("cd " + shellQuote(cache.string()) +
-                                             " && apt-get download " + shellQuote(package));
+    const std::string update =
+        aptOptions.empty() ? std::string() : "apt-get" + aptOptions + " update && ";
+    const auto [status, output] =
+        runCommand("cd " + shellQuote(cache.string()) + " && " + update + "apt-get" + aptOptions +
+                   " download " + shellQuote(package));
     deb = cachedDeb();
     if (status != 0 || deb.empty()) {
       throw Error("Sweet Home 3D package '" + package +
                   "' is not installed and `apt-get download " + package + "` failed (" +
                   lastLine(output) + "). Install it (sudo apt-get install " + package +
+                  (aptOptions.empty() ? "" : ", from Debian's non-free component") +
                   "), check that Debian's apt sources are reachable, or pass the archives with "
                   "--sh3f FILE / "
                   "--jar FILE.");
@@ -302,6 +347,13 @@ std::vector<SweetHome3dSource> locateSweetHome3dSources(
   }
 
   std::vector<fs::path> libraries = sh3fFiles(installedShare / "furniture");
+  // An installed non-free package puts its libraries in the same folder: they are its own.
+  const std::set<fs::path> nonFreeInstalled = options.installedRoot == "/"
+                                                  ? installedLibraries(kNonFreeFurniturePackage)
+                                                  : std::set<fs::path>();
+  libraries.erase(std::remove_if(libraries.begin(), libraries.end(),
+                                 [&](const fs::path& f) { return nonFreeInstalled.count(f) > 0; }),
+                  libraries.end());
   std::string furnitureVersion;
   if (!libraries.empty()) {
     furnitureVersion = installedVersion(kFurniturePackage);
@@ -314,6 +366,20 @@ std::vector<SweetHome3dSource> locateSweetHome3dSources(
   }
   for (const auto& file : libraries) {
     sources.push_back({file, false, file.stem().string(), kFurniturePackage, furnitureVersion});
+  }
+  if (options.nonFree) {
+    std::vector<fs::path> nonFree(nonFreeInstalled.begin(), nonFreeInstalled.end());
+    std::string version = nonFree.empty() ? std::string() : installedVersion(kNonFreeFurniturePackage);
+    if (nonFree.empty()) {
+      const auto [root, unpackedVersion] = unpackedPackage(
+          kNonFreeFurniturePackage, options.debCache, log, nonFreeAptOptions(options.debCache));
+      nonFree = sh3fFiles(root / "usr/share/sweethome3d/furniture");
+      version = unpackedVersion;
+      if (nonFree.empty())
+        throw FileError(root, "the unpacked sweethome3d-furniture-nonfree package holds no .sh3f files");
+    }
+    for (const auto& file : nonFree)
+      sources.push_back({file, false, file.stem().string(), kNonFreeFurniturePackage, version});
   }
 
   fs::path jar = installedShare / "sweethome3d.jar";
@@ -579,15 +645,27 @@ CorpusSummary buildSweetHome3dCorpus(const SweetHome3dCorpusOptions& options) {
     if (r.role != CorpusRole::None) used.insert(r.id);
   }
   if (!shipped.dir.empty() && fs::is_directory(shipped.dir)) {
+    // Labels of a package this run did not read (object.provenance.package) are not orphans.
+    auto ofPackageNotRead = [&](const std::string& id) {
+      const fs::path file = shipped.dir / id / "labels.json";
+      if (!fs::is_regular_file(file)) return false;
+      const auto j = nlohmann::json::parse(readFileBytes(file), nullptr, false);
+      if (j.is_discarded()) return false;
+      const auto package = j.value("/object/provenance/package"_json_pointer, std::string());
+      return !package.empty() &&
+             std::none_of(options.sources.begin(), options.sources.end(),
+                          [&](const SweetHome3dSource& source) { return source.package == package; });
+    };
     std::vector<std::string> orphans;
     for (const auto& e : fs::directory_iterator(shipped.dir)) {
       const std::string id = e.path().filename().string();
-      if (e.is_directory() && fs::is_regular_file(e.path() / "labels.json") && !used.count(id)) {
+      if (e.is_directory() && fs::is_regular_file(e.path() / "labels.json") && !used.count(id) &&
+          !ofPackageNotRead(id)) {
         orphans.push_back(id);
       }
     }
     for (const auto& [id, split] : shipped.split) {
-      if (!used.count(id)) orphans.push_back(id + " (in split.json)");
+      if (!used.count(id) && !ofPackageNotRead(id)) orphans.push_back(id + " (in split.json)");
     }
     std::sort(orphans.begin(), orphans.end());
     for (const auto& id : orphans) {

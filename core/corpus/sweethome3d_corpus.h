@@ -32,10 +32,15 @@ struct SweetHome3dPackageOptions {
   std::filesystem::path installedRoot = "/";  // where an installed package's files are looked for
   std::vector<std::filesystem::path> sh3f;    // explicit archives: skip the package lookup
   std::optional<std::filesystem::path> jar;
+  // Also the libraries of sweethome3d-furniture-nonfree (Debian's non-free component: models
+  // under their authors' licences, e.g. the Free Art License): installed, else downloaded through
+  // a private apt configuration that reads that component alone.
+  bool nonFree = false;
 };
 
 // The archives to read: the explicit ones when given; else the installed files under
-// /usr/share/sweethome3d; else `apt-get download` of both packages into debCache and `dpkg -x`.
+// /usr/share/sweethome3d; else `apt-get download` of both packages (and with nonFree the third)
+// into debCache and `dpkg -x`.
 // Throws Error saying what to install when neither works. `log` receives one line per action.
 std::vector<SweetHome3dSource> locateSweetHome3dSources(
     const SweetHome3dPackageOptions& options,

@@ -22,6 +22,7 @@ namespace fs = std::filesystem;
 using json = nlohmann::json;
 using ::testing::Contains;
 using ::testing::HasSubstr;
+using ::testing::Not;
 
 SweetHome3dPackageOptions archives(const fs::path& sh3f) {
   SweetHome3dPackageOptions o;
@@ -61,10 +62,15 @@ TEST(SweetHome3dCorpus, ExtractsSelectedObjectsIntoDatasets) {
   const fs::path labels = writeShippedLabels(dir / "labels", sha256Hex(f.cookerObj));
   fs::create_directories(labels / "test_lib_renamed");
   writeFileAtomic(labels / "test_lib_renamed" / "labels.json", "{}");
+  // Labels of a package this run did not read are not orphans.
+  fs::create_directories(labels / "contrib_hob");
+  writeFileAtomic(labels / "contrib_hob" / "labels.json",
+                  R"({"object":{"provenance":{"package":"sweethome3d-furniture-nonfree"}}})");
   const fs::path out = dir / "corpus";
   const CorpusSummary s = buildSweetHome3dCorpus(optionsFor(f, out, labels));
   EXPECT_THAT(s.warnings,
               Contains("shipped labels test_lib_renamed match no extracted stove or sink"));
+  for (const auto& w : s.warnings) EXPECT_THAT(w, Not(HasSubstr("contrib_hob")));
 
   ASSERT_EQ(s.objects.size(), 4u);  // the chair is not selected
   EXPECT_EQ(s.objects[0].id, "test_lib_cooker");
@@ -222,14 +228,18 @@ class FakeAptGet {
  public:
   FakeAptGet(const fs::path& bin, const fs::path& debs) : m_oldPath(std::getenv("PATH")) {
     fs::create_directories(bin);
+    // Logs every call's arguments; `update` succeeds, `download PACKAGE` copies its .deb.
     writeFileAtomic(bin / "apt-get",
                     "#!/bin/sh\n"
+                    "echo \"$*\" >> " + test::shellQuote((bin / "calls.log").string()) + "\n"
+                    "for a; do last=$a; done\n"
+                    "[ \"$last\" = update ] && exit 0\n"
                     "for f in " +
                         test::shellQuote(debs.string()) +
-                        "/\"$2\"_*.deb; do\n"
+                        "/\"$last\"_*.deb; do\n"
                         "  [ -f \"$f\" ] && cp \"$f\" . && exit 0\n"
                         "done\n"
-                        "echo \"E: Unable to locate package $2\" >&2; exit 100\n");
+                        "echo \"E: Unable to locate package $last\" >&2; exit 100\n");
     fs::permissions(bin / "apt-get", fs::perms::owner_all);
     ::setenv("PATH", (bin.string() + ":" + m_oldPath).c_str(), 1);
   }
@@ -308,6 +318,42 @@ TEST(SweetHome3dCorpus, DownloadsAndUnpacksPackagesWhenNotInstalled) {
   log.clear();
   locateSweetHome3dSources(packages, [&](const std::string& l) { log.push_back(l); });
   EXPECT_TRUE(log.empty());
+}
+
+TEST(SweetHome3dCorpus, NonFreeLibrariesComeFromTheirOwnPackageThroughItsOwnAptSources) {
+  if (test::runCommand("dpkg-deb --version").exitCode != 0) GTEST_SKIP() << "no dpkg-deb";
+  const fs::path dir = test::freshTempDir();
+  const fs::path debs = dir / "repo";
+  fs::create_directories(debs);
+  buildDeb(debs, "sweethome3d-furniture", "1.8-1", "usr/share/sweethome3d/furniture/TestLib.sh3f",
+           "main");
+  buildDeb(debs, "sweethome3d", "7.0.2+dfsg-3", "usr/share/sweethome3d/sweethome3d.jar", "jar");
+  buildDeb(debs, "sweethome3d-furniture-nonfree", "1.6.2-2",
+           "usr/share/sweethome3d/furniture/Contributions.sh3f", "non-free");
+  FakeAptGet fake(dir / "bin", debs);
+  SweetHome3dPackageOptions packages;
+  packages.debCache = dir / "cache";
+  packages.installedRoot = dir / "nothing-installed";
+  EXPECT_EQ(locateSweetHome3dSources(packages).size(), 2u);  // not asked: not read
+
+  packages.nonFree = true;
+  const auto sources = locateSweetHome3dSources(packages);
+  ASSERT_EQ(sources.size(), 3u);
+  EXPECT_EQ(sources[0].package, "sweethome3d-furniture");
+  EXPECT_EQ(sources[1].library, "Contributions");
+  EXPECT_EQ(sources[1].package, "sweethome3d-furniture-nonfree");
+  EXPECT_EQ(sources[1].packageVersion, "1.6.2-2");
+  EXPECT_TRUE(sources[2].isJar);
+  // The non-free package alone is fetched with the private sources, its lists updated first;
+  // the system's sources file is not read for it.
+  const std::string calls = readFileBytes(dir / "bin" / "calls.log");
+  EXPECT_THAT(calls, HasSubstr("Dir::Etc::sourceparts"));
+  EXPECT_THAT(calls, HasSubstr("update\n"));
+  EXPECT_THAT(calls, HasSubstr("download sweethome3d-furniture-nonfree"));
+  EXPECT_EQ(calls.rfind("download sweethome3d-furniture\n", 0), 0u);  // the main one: plain
+  EXPECT_THAT(readFileBytes(packages.debCache / "apt-non-free" / "sources" /
+                            "debian-non-free.sources"),
+              HasSubstr("Components: non-free\n"));
 }
 
 TEST(SweetHome3dCorpus, UndownloadablePackageSaysWhatToInstall) {
