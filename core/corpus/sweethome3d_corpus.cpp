@@ -292,6 +292,19 @@ ObjectFiles collectObjectFiles(const ZipArchive& zip, const std::string& objEntr
   return result;
 }
 
+// How many OBJ entries lie under `root` (at any depth).
+std::size_t objEntriesUnder(const ZipArchive& zip, const std::string& root) {
+  std::size_t count = 0;
+  for (const ZipEntry& e : zip.entries()) {
+    if (e.isDirectory() || e.name.rfind(root, 0) != 0 || e.name.size() < 4) continue;
+    std::string extension = e.name.substr(e.name.size() - 4);
+    std::transform(extension.begin(), extension.end(), extension.begin(),
+                   [](unsigned char c) { return std::tolower(c); });
+    count += extension == ".obj";
+  }
+  return count;
+}
+
 // ---- shipped labels
 
 struct ShippedLabels {
@@ -526,8 +539,11 @@ CorpusSummary buildSweetHome3dCorpus(const SweetHome3dCorpusOptions& options) {
       continue;
     }
     const std::string root = directoryOf(*objEntry);
-    // A plugin model's folder is its own; the jar's resources folder holds every default model.
-    const bool wholeFolder = !p.source->isJar && !root.empty();
+    // A plugin model's folder is its own where it holds no other model; the jar's resources
+    // folder and a library's top folder (the non-free Contributions keeps some models there,
+    // beside every other model's folder) hold many.
+    const bool wholeFolder =
+        !p.source->isJar && !root.empty() && objEntriesUnder(*p.zip, root) == 1;
     ObjectFiles files = collectObjectFiles(*p.zip, *objEntry, root, wholeFolder);
     record.warnings = files.warnings;
 

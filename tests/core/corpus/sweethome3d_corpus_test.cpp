@@ -158,6 +158,37 @@ TEST(SweetHome3dCorpus, ExtractsSelectedObjectsIntoDatasets) {
   EXPECT_FALSE(siblingsLeft(out));
 }
 
+TEST(SweetHome3dCorpus, AModelBesideOtherModelsFoldersTakesOnlyWhatItReferences) {
+  // As the non-free Contributions library: some models sit in the library's top folder, beside
+  // every other model's folder. Such a model's object folder holds its OBJ, MTL and textures only;
+  // a model in a folder of its own still brings the whole folder.
+  const fs::path dir = test::freshTempDir();
+  const std::string triangle = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+  writeStoredZip(
+      dir / "Lib.sh3f",
+      {{"PluginFurnitureCatalog.properties",
+        "id#1=Lib#tap\nname#1=Faucet\ncategory#1=Bathroom\nmodel#1=/lib/tap.obj\n"
+        "width#1=10\ndepth#1=20\nheight#1=30\n\n"
+        "id#2=Lib#cooker\nname#2=Cooker\ncategory#2=Kitchen\nmodel#2=/lib/cooker/cooker.obj\n"
+        "width#2=60\ndepth#2=50\nheight#2=90\n"},
+       {"lib/tap.obj", "mtllib tap.mtl\n" + triangle},
+       {"lib/tap.mtl", "newmtl chrome\nmap_Kd chrome.png\n"},
+       {"lib/chrome.png", "png"},
+       {"lib/other.png", "another model's texture"},
+       {"lib/cooker/cooker.obj", triangle},
+       {"lib/cooker/readme.txt", "kept with its folder"}});
+  SweetHome3dCorpusOptions o;
+  o.out = dir / "out";
+  o.sources = locateSweetHome3dSources(archives(dir / "Lib.sh3f"));
+  buildSweetHome3dCorpus(o);
+  const auto files = [&](const std::string& id) {
+    const auto p = json::parse(readFileBytes(dir / "out" / "unlabelled" / id / "provenance.json"));
+    return p["files"];
+  };
+  EXPECT_EQ(files("lib_tap"), json({"tap.obj", "tap.mtl", "chrome.png"}));
+  EXPECT_EQ(files("lib_cooker"), json({"cooker.obj", "readme.txt"}));
+}
+
 TEST(SweetHome3dCorpus, ShippedLabelShaMismatchNamesObjectAndWritesNothing) {
   const fs::path dir = test::freshTempDir();
   const auto f = test::writeSweetHome3dFixture(dir / "in");
