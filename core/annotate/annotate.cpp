@@ -10,6 +10,7 @@
 #include "core/controls/control_annotation.h"
 #include "core/annotate/symmetry_averaging.h"
 #include "core/annotate/units_record.h"
+#include "core/dataset/object_source.h"
 #include "core/common/error.h"
 #include "core/features/feature_grid.h"
 #include "core/features/vector_channels.h"
@@ -193,7 +194,10 @@ AnnotationResult annotateMeshFile(const fs::path& meshFile, const std::string& i
   r.labels.object.category = r.category;
   r.labels.object.up = toString(mesh.fileUp);
   if (mesh.fileUpDetected) r.labels.object.upConfidence = mesh.fileUpConfidence;
-  recordUnitGuess(r.labels.object, guessMetersPerUnit(mesh.bounds().sizes().maxCoeff(), r.category));
+  if (const auto declared = declaredMetersPerUnit(meshFile))
+    recordDeclaredUnits(r.labels.object, *declared, "provenance.json");
+  else
+    recordUnitGuess(r.labels.object, guessMetersPerUnit(mesh.bounds().sizes().maxCoeff(), r.category));
   // The model stage's time and the final progress report, on every way out.
   auto finish = [&] {
     r.modelSeconds = secondsSince(t);

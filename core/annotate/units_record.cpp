@@ -27,4 +27,9 @@ void setCuratedUnits(ObjectInfo& object, double metersPerUnit) {
   object.extra.erase(kUnitGuessField);
 }
 
+void recordDeclaredUnits(ObjectInfo& object, double metersPerUnit, const std::string& declaredBy) {
+  setCuratedUnits(object, metersPerUnit);
+  object.extra[kUnitsDeclaredByField] = declaredBy;
+}
+
 }  // namespace sagrid

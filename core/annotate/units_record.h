@@ -5,6 +5,7 @@
 #pragma once
 
 #include <optional>
+#include <string>
 
 #include "core/labels/labels.h"
 #include "core/mesh/unit_guess.h"
@@ -20,5 +21,12 @@ std::optional<UnitGuess> recordedUnitGuess(const ObjectInfo& object);
 
 // The curator's units: object.meters_per_unit = metersPerUnit, the guess record removed.
 void setCuratedUnits(ObjectInfo& object, double metersPerUnit);
+
+inline constexpr const char* kUnitsDeclaredByField = "meters_per_unit_declared_by";
+
+// Units the object's source declares (a provenance.json beside the mesh: the Sweet Home 3D
+// corpus writes its catalog's scale) stand without a guess: object.meters_per_unit, and
+// object.meters_per_unit_declared_by naming the record.
+void recordDeclaredUnits(ObjectInfo& object, double metersPerUnit, const std::string& declaredBy);
 
 }  // namespace sagrid

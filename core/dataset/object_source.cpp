@@ -1,5 +1,6 @@
 #include "core/dataset/object_source.h"
 
+#include <cmath>
 #include <system_error>
 
 #include "core/common/atomic_file.h"
@@ -14,6 +15,19 @@ std::string textOf(const nlohmann::json& object, const char* key) {
   const auto it = object.find(key);
   return it != object.end() && it->is_string() ? it->get<std::string>() : std::string();
 }
+
+// The provenance.json beside `mesh` as an object; an absent or unreadable record is none.
+std::optional<nlohmann::json> provenanceRecord(const fs::path& mesh) {
+  const fs::path beside = mesh.parent_path() / "provenance.json";
+  std::error_code ec;
+  if (!fs::is_regular_file(beside, ec)) return std::nullopt;
+  try {
+    nlohmann::json record = parseJsonDocument(readFileBytes(beside), beside);
+    if (record.is_object()) return record;
+  } catch (const FileError&) {
+  }
+  return std::nullopt;
+}
 }  // namespace
 
 std::string objectSource(const ObjectLabels& labels, const fs::path& mesh, const std::string& fallback) {
@@ -21,20 +35,21 @@ std::string objectSource(const ObjectLabels& labels, const fs::path& mesh, const
   if (provenance != labels.object.extra.end() && provenance->is_object()) {
     if (std::string repo = textOf(*provenance, "repo"); !repo.empty()) return repo;
   }
-  const fs::path beside = mesh.parent_path() / "provenance.json";
-  std::error_code ec;
-  if (fs::is_regular_file(beside, ec)) {
-    try {
-      const nlohmann::json record = parseJsonDocument(readFileBytes(beside), beside);
-      if (record.is_object()) {
-        for (const char* key : {"repo", "library"})
-          if (std::string source = textOf(record, key); !source.empty()) return source;
-      }
-    } catch (const FileError&) {
-      // An unreadable record names no source: the fallback stands.
-    }
+  if (const auto record = provenanceRecord(mesh)) {
+    for (const char* key : {"repo", "library"})
+      if (std::string source = textOf(*record, key); !source.empty()) return source;
   }
   return fallback;
+}
+
+std::optional<double> declaredMetersPerUnit(const fs::path& mesh) {
+  const auto record = provenanceRecord(mesh);
+  if (!record) return std::nullopt;
+  const auto it = record->find("meters_per_unit");
+  if (it == record->end() || !it->is_number()) return std::nullopt;
+  const double value = it->get<double>();
+  if (!std::isfinite(value) || value <= 0) return std::nullopt;
+  return value;
 }
 
 }  // namespace sagrid

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <filesystem>
+#include <optional>
 #include <string>
 
 #include "core/labels/labels.h"
@@ -13,5 +14,9 @@ namespace sagrid {
 // labels' object.provenance.repo, else the "repo" or "library" of a provenance.json beside the
 // mesh (the corpora write one), else `fallback`.
 std::string objectSource(const ObjectLabels& labels, const std::filesystem::path& mesh, const std::string& fallback);
+
+// The metres per file unit a provenance.json beside the mesh declares (`meters_per_unit` > 0:
+// the Sweet Home 3D corpus writes the scale its catalog gives the model); nullopt without one.
+std::optional<double> declaredMetersPerUnit(const std::filesystem::path& mesh);
 
 }  // namespace sagrid

@@ -15,8 +15,13 @@ UnitGuessScore scoreUnitGuesses(const std::vector<std::pair<ObjectLabels, Object
                                 double factor) {
   UnitGuessScore score;
   for (const auto& [predicted, curated] : predictedAndCurated) {
-    const double guessed = recordedUnitGuess(predicted.object).value_or(UnitGuess{}).metersPerUnit;
+    // What annotate recorded: its guess, or the units the object's source declared.
+    const bool declared = predicted.object.extra.contains(kUnitsDeclaredByField);
+    const double guessed = declared
+                               ? metersPerUnit(predicted)
+                               : recordedUnitGuess(predicted.object).value_or(UnitGuess{}).metersPerUnit;
     const double truth = metersPerUnit(curated);
+    score.declared += declared;
     const bool right = ratio(guessed, truth) <= factor;
     const bool notMetres = ratio(truth, 1.0) > factor;
     ++score.objects;
@@ -39,6 +44,13 @@ std::string unitGuessMarkdown(const UnitGuessScore& score, double factor) {
                 "|---:|---:|---:|---:|\n| %zu | %zu | %zu | %zu |\n\n",
                 factor, factor, score.objects, score.right, score.notMetres, score.notMetresRight);
   std::string md = line;
+  if (score.declared) {
+    std::snprintf(line, sizeof line,
+                  "%zu of the objects' units were declared by their source (provenance.json), not "
+                  "guessed.\n\n",
+                  score.declared);
+    md += line;
+  }
   for (const auto& w : score.wrong) md += "- " + w + "\n";
   return md;
 }

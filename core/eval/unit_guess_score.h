@@ -15,10 +15,11 @@ namespace sagrid {
 struct UnitGuessScore {
   std::size_t objects = 0, right = 0;
   std::size_t notMetres = 0, notMetresRight = 0;
+  std::size_t declared = 0;  // units the object's source declared (annotate recorded no guess)
   std::vector<std::string> wrong;  // "id: guessed X, curated Y"
 };
 
-// Pairs of (annotate's labels with object.meters_per_unit_guess, curated labels).
+// Pairs of (annotate's labels with object.meters_per_unit_guess or declared units, curated labels).
 UnitGuessScore scoreUnitGuesses(const std::vector<std::pair<ObjectLabels, ObjectLabels>>& predictedAndCurated,
                                 double factor = 1.5);
 

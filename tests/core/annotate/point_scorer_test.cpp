@@ -12,6 +12,7 @@
 #include "core/annotate/annotate.h"
 #include "core/annotate/model_set.h"
 #include "core/annotate/point_passes.h"
+#include "core/annotate/units_record.h"
 #include "core/common/error.h"
 #include "core/common/log.h"
 #include "core/dataset/dataset.h"
@@ -184,6 +185,19 @@ class AnnotateWithScorer : public ::testing::Test {
   FeatureGrid features;
   AnnotateOptions annotate;
 };
+
+TEST_F(AnnotateWithScorer, UnitsAProvenanceRecordDeclaresStandWithoutAGuess) {
+  annotate.category = "stove";
+  const auto guessed = annotateMeshFile(entries[0].mesh, "s", models(), annotate, dir / "a");
+  EXPECT_TRUE(recordedUnitGuess(guessed.labels.object));
+  EXPECT_FALSE(guessed.labels.object.extra.contains(kUnitsDeclaredByField));
+  // The Sweet Home 3D corpus writes its catalog's scale beside each mesh.
+  std::ofstream(entries[0].mesh.parent_path() / "provenance.json") << R"({"meters_per_unit": 0.2799})";
+  const auto declared = annotateMeshFile(entries[0].mesh, "s", models(), annotate, dir / "b");
+  EXPECT_FALSE(recordedUnitGuess(declared.labels.object));
+  EXPECT_DOUBLE_EQ(declared.labels.object.extra.value("meters_per_unit", 0.0), 0.2799);
+  EXPECT_EQ(declared.labels.object.extra.value(kUnitsDeclaredByField, std::string()), "provenance.json");
+}
 
 TEST_F(AnnotateWithScorer, ItDecidesForItsModelsOnlyAndIsSwitchedOff) {
   const ModelSet plain = models();

@@ -22,5 +22,18 @@ TEST(ObjectSource, TheLabelsRepositoryThenTheProvenanceBesideTheMeshThenTheFallb
   EXPECT_EQ(objectSource(labels, dir / "mesh.obj", "real-val"), "real-val");
 }
 
+TEST(ObjectSource, TheUnitsAProvenanceRecordDeclares) {
+  const fs::path dir = test::freshTempDir();
+  EXPECT_FALSE(declaredMetersPerUnit(dir / "mesh.obj"));  // no record
+  test::writeFile(dir / "provenance.json", R"({"library": "Contributions", "meters_per_unit": 0.2799})");
+  EXPECT_DOUBLE_EQ(declaredMetersPerUnit(dir / "mesh.obj").value_or(0), 0.2799);
+  for (const char* text : {R"({"meters_per_unit": null})", R"({"meters_per_unit": 0})",
+                           R"({"meters_per_unit": -1})", R"({"meters_per_unit": "cm"})",
+                           R"({"repo": "owner/name"})", "{ not json", "[1]"}) {
+    test::writeFile(dir / "provenance.json", text);
+    EXPECT_FALSE(declaredMetersPerUnit(dir / "mesh.obj")) << text;
+  }
+}
+
 }  // namespace
 }  // namespace sagrid

@@ -26,6 +26,16 @@ TEST(UnitGuessScore, RightWithinTheFactorAndTheFilesNotInMetresApart) {
   EXPECT_EQ(score.notMetresRight, 1u);   // the centimetres
   ASSERT_EQ(score.wrong.size(), 2u);
   EXPECT_EQ(score.wrong[0], "o: guessed 1, curated 0.18");
+  EXPECT_EQ(score.declared, 0u);
+}
+
+TEST(UnitGuessScore, UnitsTheSourceDeclaredAreScoredAsRecordedAndCounted) {
+  auto [predicted, truth] = object(1.0, 0.28);
+  recordDeclaredUnits(predicted.object, 0.28, "provenance.json");
+  const UnitGuessScore score = scoreUnitGuesses({{predicted, truth}, object(1.0, 0.28)});
+  EXPECT_EQ(score.right, 1u);
+  EXPECT_EQ(score.declared, 1u);
+  EXPECT_NE(unitGuessMarkdown(score).find("1 of the objects' units were declared"), std::string::npos);
 }
 
 }  // namespace
