@@ -146,9 +146,11 @@ AnnotationResult annotateMeshFile(const fs::path& meshFile, const std::string& i
   };
   stage(0.0f, "import");
   auto t = Clock::now();
-  // Without --up the up axis is detected from the geometry (formats that do not fix it); the
-  // features are then computed in that frame too.
-  const Mesh mesh = importMesh(meshFile, ImportOptions(options.features.up, /*detect=*/true));
+  // Without --up the up axis is the one a provenance.json beside the mesh declares, else detected
+  // from the geometry (formats that do not fix it); the features are then computed in that frame.
+  const std::optional<UpAxis> up =
+      options.features.up ? options.features.up : declaredUpAxis(meshFile);
+  const Mesh mesh = importMesh(meshFile, ImportOptions(up, /*detect=*/true));
   r.importSeconds = secondsSince(t);
   stage(0.1f, "features");
   t = Clock::now();

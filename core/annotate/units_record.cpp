@@ -25,6 +25,7 @@ std::optional<UnitGuess> recordedUnitGuess(const ObjectInfo& object) {
 void setCuratedUnits(ObjectInfo& object, double metersPerUnit) {
   object.extra["meters_per_unit"] = metersPerUnit;
   object.extra.erase(kUnitGuessField);
+  object.extra.erase(kUnitsDeclaredByField);
 }
 
 void recordDeclaredUnits(ObjectInfo& object, double metersPerUnit, const std::string& declaredBy) {

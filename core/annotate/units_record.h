@@ -13,16 +13,16 @@
 namespace sagrid {
 
 inline constexpr const char* kUnitGuessField = "meters_per_unit_guess";
+inline constexpr const char* kUnitsDeclaredByField = "meters_per_unit_declared_by";
 
 void recordUnitGuess(ObjectInfo& object, const UnitGuess& guess);
 
 // The guess, when the object's units are guessed and not yet confirmed.
 std::optional<UnitGuess> recordedUnitGuess(const ObjectInfo& object);
 
-// The curator's units: object.meters_per_unit = metersPerUnit, the guess record removed.
+// The curator's units: object.meters_per_unit = metersPerUnit, the guess (or declaration) record
+// removed.
 void setCuratedUnits(ObjectInfo& object, double metersPerUnit);
-
-inline constexpr const char* kUnitsDeclaredByField = "meters_per_unit_declared_by";
 
 // Units the object's source declares (a provenance.json beside the mesh: the Sweet Home 3D
 // corpus writes its catalog's scale) stand without a guess: object.meters_per_unit, and

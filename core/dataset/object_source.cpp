@@ -52,4 +52,11 @@ std::optional<double> declaredMetersPerUnit(const fs::path& mesh) {
   return value;
 }
 
+std::optional<UpAxis> declaredUpAxis(const fs::path& mesh) {
+  const auto record = provenanceRecord(mesh);
+  if (!record) return std::nullopt;
+  const std::string up = textOf(*record, "up");
+  return up.empty() ? std::nullopt : parseUpAxis(up);
+}
+
 }  // namespace sagrid

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "core/labels/labels.h"
+#include "core/mesh/mesh_import.h"
 
 namespace sagrid {
 
@@ -18,5 +19,9 @@ std::string objectSource(const ObjectLabels& labels, const std::filesystem::path
 // The metres per file unit a provenance.json beside the mesh declares (`meters_per_unit` > 0:
 // the Sweet Home 3D corpus writes the scale its catalog gives the model); nullopt without one.
 std::optional<double> declaredMetersPerUnit(const std::filesystem::path& mesh);
+
+// The up axis a provenance.json beside the mesh declares (`up`: the Sweet Home 3D corpus writes
+// "y", its catalogs' convention); nullopt without one or for text that names no axis.
+std::optional<UpAxis> declaredUpAxis(const std::filesystem::path& mesh);
 
 }  // namespace sagrid

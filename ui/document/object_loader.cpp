@@ -3,6 +3,7 @@
 #include <optional>
 #include <system_error>
 
+#include "core/dataset/object_source.h"
 #include "core/mesh/mesh_import.h"
 
 namespace sagrid::ui {
@@ -15,9 +16,9 @@ std::unique_ptr<AnnotationDocument> openDocument(const fs::path& meshPath,
   std::optional<ObjectLabels> existing;
   if (fs::exists(labelsPath, ec)) existing = readLabels(labelsPath);
 
-  std::optional<UpAxis> up;
-  if (existing) up = upAxisOrZ(existing->object.up);
-  // A new object's up axis is detected from the geometry; a labelled one keeps its labels' axis.
+  // A labelled object keeps its labels' axis; a new one takes the axis its provenance.json
+  // declares, else the one detected from the geometry.
+  std::optional<UpAxis> up = existing ? upAxisOrZ(existing->object.up) : declaredUpAxis(meshPath);
   auto mesh = std::make_shared<Mesh>(importMesh(meshPath, ImportOptions(up, /*detect=*/!existing)));
 
   ObjectLabels labels;

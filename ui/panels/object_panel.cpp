@@ -48,13 +48,20 @@ void drawUnits(Session& session, const AnnotationDocument& doc) {
   const double current = doc.metersPerUnit();
   const std::string shown = unitName(current);
   char label[96];
+  const auto declared = doc.labels().object.extra.find(kUnitsDeclaredByField);
+  const bool isDeclared = !guess && declared != doc.labels().object.extra.end() && declared->is_string();
   std::snprintf(label, sizeof label, "units: %s%s", shown.c_str(),
-                guess ? " (guessed)" : doc.unitsKnown() ? "" : " (unknown: m assumed)");
+                guess        ? " (guessed)"
+                : isDeclared ? " (declared)"
+                : doc.unitsKnown() ? "" : " (unknown: m assumed)");
   if (guess) ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(0.95f, 0.75f, 0.35f, 1.0f));
   ImGui::SetNextItemWidth(-1);
   const bool open = ImGui::BeginCombo("##units", label);
   if (guess) ImGui::PopStyleColor();
   if (guess && ImGui::IsItemHovered()) ImGui::SetTooltip("%s", guess->reason.c_str());
+  if (isDeclared && ImGui::IsItemHovered())
+    ImGui::SetTooltip("The object's %s declares %g m per unit (a Sweet Home 3D catalog's scale)",
+                      declared->get<std::string>().c_str(), current);
   if (open) {
     for (const NamedUnit& unit : namedUnits()) {
       // Picking the guessed unit confirms it: the guess flag goes, the value stays.

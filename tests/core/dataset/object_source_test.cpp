@@ -35,5 +35,16 @@ TEST(ObjectSource, TheUnitsAProvenanceRecordDeclares) {
   }
 }
 
+TEST(ObjectSource, TheUpAxisAProvenanceRecordDeclares) {
+  const fs::path dir = test::freshTempDir();
+  EXPECT_FALSE(declaredUpAxis(dir / "mesh.obj"));
+  test::writeFile(dir / "provenance.json", R"({"library": "Scopia", "up": "y"})");
+  EXPECT_EQ(declaredUpAxis(dir / "mesh.obj"), UpAxis::Y);
+  for (const char* text : {R"({"up": "sideways"})", R"({"up": 2})", R"({"library": "Scopia"})", "{ no"}) {
+    test::writeFile(dir / "provenance.json", text);
+    EXPECT_FALSE(declaredUpAxis(dir / "mesh.obj")) << text;
+  }
+}
+
 }  // namespace
 }  // namespace sagrid

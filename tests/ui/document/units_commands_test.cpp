@@ -40,6 +40,24 @@ TEST(UnitsCommands, AGuessIsFlaggedSettingUnitsConfirmsAndUndoRestoresTheGuess) 
   EXPECT_TRUE(recordedUnitGuess(readLabels(dir / "labels.json").object));
 }
 
+TEST(UnitsCommands, UnitsTheSourceDeclaredAreKnownAndTheCuratorsReplaceThem) {
+  const auto dir = test::freshTempDir();
+  ObjectLabels labels;
+  labels.object.id = "sink";
+  labels.object.category = "sink";
+  recordDeclaredUnits(labels.object, 0.28, "provenance.json");
+  AnnotationDocument doc(std::make_shared<Mesh>(test::box({0, 0, 0}, {3.0f, 2.0f, 3.0f})), labels,
+                         dir / "labels.json");
+  EXPECT_TRUE(doc.unitsKnown());
+  EXPECT_FLOAT_EQ(doc.metersPerUnit(), 0.28f);
+  EXPECT_FALSE(recordedUnitGuess(doc.labels().object));
+  doc.execute(std::make_unique<SetUnitsCommand>(0.3));
+  EXPECT_FALSE(readLabels(dir / "labels.json").object.extra.contains(kUnitsDeclaredByField));
+  doc.undo();
+  EXPECT_EQ(readLabels(dir / "labels.json").object.extra.value(kUnitsDeclaredByField, std::string()),
+            "provenance.json");
+}
+
 TEST(CategoryCommands, ASwitchIsOneUndoableStep) {
   const auto dir = test::freshTempDir();
   ObjectLabels labels;

@@ -1,0 +1,45 @@
+// Opening an object in the GUI: a new object's up axis is the one its provenance.json declares
+// (the Sweet Home 3D corpus writes its catalogs' y) and is not detected; without one it is
+// detected from the geometry; a labelled object keeps its labels' axis.
+#include "ui/document/object_loader.h"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+#include "support/test_paths.h"
+
+namespace sagrid::ui {
+namespace {
+namespace fs = std::filesystem;
+
+void writeBox(const fs::path& file) {
+  fs::create_directories(file.parent_path());
+  std::ofstream(file) << "v 0 0 0\nv 2 0 0\nv 2 1 0\nv 0 1 0\nv 0 0 0.5\nv 2 0 0.5\nv 2 1 0.5\n"
+                         "v 0 1 0.5\nf 1 2 3\nf 1 3 4\nf 5 6 7\nf 5 7 8\nf 1 2 6\nf 1 6 5\n";
+}
+
+TEST(ObjectLoader, ANewObjectTakesTheUpAxisItsProvenanceDeclares) {
+  const fs::path dir = test::freshTempDir();
+  writeBox(dir / "detected" / "box.obj");
+  const auto detected = openDocument(dir / "detected" / "box.obj", dir / "detected" / "labels.json");
+  EXPECT_TRUE(detected->labels().object.upConfidence.has_value());
+
+  writeBox(dir / "declared" / "box.obj");
+  std::ofstream(dir / "declared" / "provenance.json") << R"({"library": "Contributions", "up": "x"})";
+  const auto declared = openDocument(dir / "declared" / "box.obj", dir / "declared" / "labels.json");
+  EXPECT_EQ(declared->labels().object.up, "x");
+  EXPECT_FALSE(declared->labels().object.upConfidence.has_value());
+
+  // Labels beside the mesh decide over the record.
+  ObjectLabels labels;
+  labels.object.id = "box";
+  labels.object.mesh = "box.obj";
+  labels.object.up = "z";
+  writeLabels(dir / "declared" / "labels.json", labels);
+  const auto labelled = openDocument(dir / "declared" / "box.obj", dir / "declared" / "labels.json");
+  EXPECT_EQ(labelled->labels().object.up, "z");
+}
+
+}  // namespace
+}  // namespace sagrid::ui
