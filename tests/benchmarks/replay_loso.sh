@@ -74,24 +74,7 @@ done
 
 # Each object's predictions beside its mesh (as replay-curation --predictions writes them), then
 # one replay session per repository.
-python3 - "$work" <<'PY'
-import json, os, sys
-work = sys.argv[1]
-predictions = os.path.join(work, 'predictions')
-for name in sorted(os.listdir(predictions)):
-    file = os.path.join(predictions, name, 'labels.json')
-    if not os.path.isfile(file):
-        continue
-    labels = json.load(open(file))
-    mesh = os.path.normpath(os.path.join(predictions, name, labels['object']['mesh']))
-    folder, base = os.path.split(mesh)
-    labels['object']['mesh'] = base
-    meshes = [f for f in os.listdir(folder)
-              if f.lower().endswith(('.obj', '.gltf', '.glb', '.fbx', '.dae', '.ply', '.stl'))]
-    # Where the GUI looks for them (ui/document/review_queue.cpp, labelsPathFor).
-    target = 'labels.json' if len(meshes) <= 1 else os.path.splitext(base)[0] + '.labels.json'
-    json.dump(labels, open(os.path.join(folder, target), 'w'), indent=2)
-PY
+python3 "$root/tests/benchmarks/place_predictions.py" "$work/predictions"
 rm -f "$work/curation.jsonl"
 for d in "$work"/sources/*/; do
   mapfile -t folders < <(cut -f2 "$d/objects.list" | xargs -n1 dirname)

@@ -45,20 +45,7 @@ PY
 "$sagrid" annotate "$work/objects" --models "$models" --out "$work/predictions" \
   > "$work/annotate.log" 2>&1
 # Each object's predictions beside its mesh, where the GUI looks for them.
-python3 - "$work" <<'PY'
-import json, os, sys
-work = sys.argv[1]
-predictions = os.path.join(work, 'predictions')
-for name in sorted(os.listdir(predictions)):
-    file = os.path.join(predictions, name, 'labels.json')
-    if not os.path.isfile(file):
-        continue
-    labels = json.load(open(file))
-    mesh = os.path.normpath(os.path.join(predictions, name, labels['object']['mesh']))
-    folder, base = os.path.split(mesh)
-    labels['object']['mesh'] = base
-    json.dump(labels, open(os.path.join(folder, 'labels.json'), 'w'), indent=2)
-PY
+python3 "$root/tests/benchmarks/place_predictions.py" "$work/predictions"
 "$sagrid" replay-curation "$work"/objects/*/ --truth "$work/truth" --models "$models" \
   --curation-log "$work/curation.jsonl" > "$work/replay.log" 2>&1
 "$sagrid" eval --curation "$work/curation.jsonl" --out "$work/report" > "$work/eval.log" 2>&1
