@@ -4,14 +4,14 @@
 #include <chrono>
 
 #include "core/annotate/category_evidence.h"
-#include "core/annotate/point_scorer.h"
 #include "core/annotate/point_passes.h"
+#include "core/annotate/point_scorer.h"
 #include "core/annotate/suggested_points.h"
-#include "core/controls/control_annotation.h"
 #include "core/annotate/symmetry_averaging.h"
 #include "core/annotate/units_record.h"
-#include "core/dataset/object_source.h"
 #include "core/common/error.h"
+#include "core/controls/control_annotation.h"
+#include "core/dataset/object_source.h"
 #include "core/features/feature_grid.h"
 #include "core/features/vector_channels.h"
 #include "core/geometry/material_parts.h"
@@ -199,7 +199,8 @@ AnnotationResult annotateMeshFile(const fs::path& meshFile, const std::string& i
   if (const auto declared = declaredMetersPerUnit(meshFile))
     recordDeclaredUnits(r.labels.object, *declared, "provenance.json");
   else
-    recordUnitGuess(r.labels.object, guessMetersPerUnit(mesh.bounds().sizes().maxCoeff(), r.category));
+    recordUnitGuess(r.labels.object,
+                    guessMetersPerUnit(mesh.bounds().sizes().maxCoeff(), r.category));
   // The model stage's time and the final progress report, on every way out.
   auto finish = [&] {
     r.modelSeconds = secondsSince(t);

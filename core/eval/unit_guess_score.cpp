@@ -17,9 +17,9 @@ UnitGuessScore scoreUnitGuesses(const std::vector<std::pair<ObjectLabels, Object
   for (const auto& [predicted, curated] : predictedAndCurated) {
     // What annotate recorded: its guess, or the units the object's source declared.
     const bool declared = predicted.object.extra.contains(kUnitsDeclaredByField);
-    const double guessed = declared
-                               ? metersPerUnit(predicted)
-                               : recordedUnitGuess(predicted.object).value_or(UnitGuess{}).metersPerUnit;
+    const double guessed =
+        declared ? metersPerUnit(predicted)
+                 : recordedUnitGuess(predicted.object).value_or(UnitGuess{}).metersPerUnit;
     const double truth = metersPerUnit(curated);
     score.declared += declared;
     const bool right = ratio(guessed, truth) <= factor;

@@ -49,11 +49,13 @@ void drawUnits(Session& session, const AnnotationDocument& doc) {
   const std::string shown = unitName(current);
   char label[96];
   const auto declared = doc.labels().object.extra.find(kUnitsDeclaredByField);
-  const bool isDeclared = !guess && declared != doc.labels().object.extra.end() && declared->is_string();
+  const bool isDeclared =
+      !guess && declared != doc.labels().object.extra.end() && declared->is_string();
   std::snprintf(label, sizeof label, "units: %s%s", shown.c_str(),
-                guess        ? " (guessed)"
-                : isDeclared ? " (declared)"
-                : doc.unitsKnown() ? "" : " (unknown: m assumed)");
+                guess              ? " (guessed)"
+                : isDeclared       ? " (declared)"
+                : doc.unitsKnown() ? ""
+                                   : " (unknown: m assumed)");
   if (guess) ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(0.95f, 0.75f, 0.35f, 1.0f));
   ImGui::SetNextItemWidth(-1);
   const bool open = ImGui::BeginCombo("##units", label);

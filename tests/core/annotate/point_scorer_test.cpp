@@ -3,11 +3,10 @@
 #include "core/annotate/point_scorer.h"
 
 #include <gtest/gtest.h>
+#include <spdlog/sinks/ostream_sink.h>
 
 #include <fstream>
 #include <sstream>
-
-#include <spdlog/sinks/ostream_sink.h>
 
 #include "core/annotate/annotate.h"
 #include "core/annotate/model_set.h"
@@ -192,11 +191,13 @@ TEST_F(AnnotateWithScorer, UnitsAProvenanceRecordDeclaresStandWithoutAGuess) {
   EXPECT_TRUE(recordedUnitGuess(guessed.labels.object));
   EXPECT_FALSE(guessed.labels.object.extra.contains(kUnitsDeclaredByField));
   // The Sweet Home 3D corpus writes its catalog's scale beside each mesh.
-  std::ofstream(entries[0].mesh.parent_path() / "provenance.json") << R"({"meters_per_unit": 0.2799})";
+  std::ofstream(entries[0].mesh.parent_path() / "provenance.json")
+      << R"({"meters_per_unit": 0.2799})";
   const auto declared = annotateMeshFile(entries[0].mesh, "s", models(), annotate, dir / "b");
   EXPECT_FALSE(recordedUnitGuess(declared.labels.object));
   EXPECT_DOUBLE_EQ(declared.labels.object.extra.value("meters_per_unit", 0.0), 0.2799);
-  EXPECT_EQ(declared.labels.object.extra.value(kUnitsDeclaredByField, std::string()), "provenance.json");
+  EXPECT_EQ(declared.labels.object.extra.value(kUnitsDeclaredByField, std::string()),
+            "provenance.json");
 }
 
 TEST_F(AnnotateWithScorer, ItDecidesForItsModelsOnlyAndIsSwitchedOff) {

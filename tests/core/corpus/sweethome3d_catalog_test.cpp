@@ -87,7 +87,7 @@ TEST(CorpusSelection, RolesFollowTheNameRules) {
   EXPECT_EQ(roleOf("Mixer tap"), CorpusRole::Sink);
   EXPECT_EQ(roleOf("Tapestry", "Bathroom"), std::nullopt);
   EXPECT_EQ(roleOf("Shower head and faucet", "Bathroom"), std::nullopt);
-  EXPECT_EQ(roleOf("Rice cooker"), CorpusRole::None);  // an appliance, not a hob
+  EXPECT_EQ(roleOf("Rice cooker"), CorpusRole::None);              // an appliance, not a hob
   EXPECT_EQ(roleOf("Bath with basin", "Bathroom"), std::nullopt);  // a bathtub, not a sink
   EXPECT_EQ(roleOf("Bathtub", "Bathroom"), std::nullopt);
   EXPECT_EQ(roleOf("Shower", "Bathroom"), std::nullopt);

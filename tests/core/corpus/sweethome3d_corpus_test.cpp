@@ -262,10 +262,12 @@ class FakeAptGet {
     // Logs every call's arguments; `update` succeeds, `download PACKAGE` copies its .deb.
     writeFileAtomic(bin / "apt-get",
                     "#!/bin/sh\n"
-                    "echo \"$*\" >> " + test::shellQuote((bin / "calls.log").string()) + "\n"
-                    "for a; do last=$a; done\n"
-                    "[ \"$last\" = update ] && exit 0\n"
-                    "for f in " +
+                    "echo \"$*\" >> " +
+                        test::shellQuote((bin / "calls.log").string()) +
+                        "\n"
+                        "for a; do last=$a; done\n"
+                        "[ \"$last\" = update ] && exit 0\n"
+                        "for f in " +
                         test::shellQuote(debs.string()) +
                         "/\"$last\"_*.deb; do\n"
                         "  [ -f \"$f\" ] && cp \"$f\" . && exit 0\n"
@@ -382,9 +384,9 @@ TEST(SweetHome3dCorpus, NonFreeLibrariesComeFromTheirOwnPackageThroughItsOwnAptS
   EXPECT_THAT(calls, HasSubstr("update\n"));
   EXPECT_THAT(calls, HasSubstr("download sweethome3d-furniture-nonfree"));
   EXPECT_EQ(calls.rfind("download sweethome3d-furniture\n", 0), 0u);  // the main one: plain
-  EXPECT_THAT(readFileBytes(packages.debCache / "apt-non-free" / "sources" /
-                            "debian-non-free.sources"),
-              HasSubstr("Components: non-free\n"));
+  EXPECT_THAT(
+      readFileBytes(packages.debCache / "apt-non-free" / "sources" / "debian-non-free.sources"),
+      HasSubstr("Components: non-free\n"));
 }
 
 TEST(SweetHome3dCorpus, UndownloadablePackageSaysWhatToInstall) {

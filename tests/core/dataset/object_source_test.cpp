@@ -25,11 +25,12 @@ TEST(ObjectSource, TheLabelsRepositoryThenTheProvenanceBesideTheMeshThenTheFallb
 TEST(ObjectSource, TheUnitsAProvenanceRecordDeclares) {
   const fs::path dir = test::freshTempDir();
   EXPECT_FALSE(declaredMetersPerUnit(dir / "mesh.obj"));  // no record
-  test::writeFile(dir / "provenance.json", R"({"library": "Contributions", "meters_per_unit": 0.2799})");
+  test::writeFile(dir / "provenance.json",
+                  R"({"library": "Contributions", "meters_per_unit": 0.2799})");
   EXPECT_DOUBLE_EQ(declaredMetersPerUnit(dir / "mesh.obj").value_or(0), 0.2799);
-  for (const char* text : {R"({"meters_per_unit": null})", R"({"meters_per_unit": 0})",
-                           R"({"meters_per_unit": -1})", R"({"meters_per_unit": "cm"})",
-                           R"({"repo": "owner/name"})", "{ not json", "[1]"}) {
+  for (const char* text :
+       {R"({"meters_per_unit": null})", R"({"meters_per_unit": 0})", R"({"meters_per_unit": -1})",
+        R"({"meters_per_unit": "cm"})", R"({"repo": "owner/name"})", "{ not json", "[1]"}) {
     test::writeFile(dir / "provenance.json", text);
     EXPECT_FALSE(declaredMetersPerUnit(dir / "mesh.obj")) << text;
   }
@@ -40,7 +41,8 @@ TEST(ObjectSource, TheUpAxisAProvenanceRecordDeclares) {
   EXPECT_FALSE(declaredUpAxis(dir / "mesh.obj"));
   test::writeFile(dir / "provenance.json", R"({"library": "Scopia", "up": "y"})");
   EXPECT_EQ(declaredUpAxis(dir / "mesh.obj"), UpAxis::Y);
-  for (const char* text : {R"({"up": "sideways"})", R"({"up": 2})", R"({"library": "Scopia"})", "{ no"}) {
+  for (const char* text :
+       {R"({"up": "sideways"})", R"({"up": 2})", R"({"library": "Scopia"})", "{ no"}) {
     test::writeFile(dir / "provenance.json", text);
     EXPECT_FALSE(declaredUpAxis(dir / "mesh.obj")) << text;
   }

@@ -35,7 +35,8 @@ TEST(UnitGuessScore, UnitsTheSourceDeclaredAreScoredAsRecordedAndCounted) {
   const UnitGuessScore score = scoreUnitGuesses({{predicted, truth}, object(1.0, 0.28)});
   EXPECT_EQ(score.right, 1u);
   EXPECT_EQ(score.declared, 1u);
-  EXPECT_NE(unitGuessMarkdown(score).find("1 of the objects' units were declared"), std::string::npos);
+  EXPECT_NE(unitGuessMarkdown(score).find("1 of the objects' units were declared"),
+            std::string::npos);
 }
 
 }  // namespace

@@ -22,12 +22,15 @@ void writeBox(const fs::path& file) {
 TEST(ObjectLoader, ANewObjectTakesTheUpAxisItsProvenanceDeclares) {
   const fs::path dir = test::freshTempDir();
   writeBox(dir / "detected" / "box.obj");
-  const auto detected = openDocument(dir / "detected" / "box.obj", dir / "detected" / "labels.json");
+  const auto detected =
+      openDocument(dir / "detected" / "box.obj", dir / "detected" / "labels.json");
   EXPECT_TRUE(detected->labels().object.upConfidence.has_value());
 
   writeBox(dir / "declared" / "box.obj");
-  std::ofstream(dir / "declared" / "provenance.json") << R"({"library": "Contributions", "up": "x"})";
-  const auto declared = openDocument(dir / "declared" / "box.obj", dir / "declared" / "labels.json");
+  std::ofstream(dir / "declared" / "provenance.json")
+      << R"({"library": "Contributions", "up": "x"})";
+  const auto declared =
+      openDocument(dir / "declared" / "box.obj", dir / "declared" / "labels.json");
   EXPECT_EQ(declared->labels().object.up, "x");
   EXPECT_FALSE(declared->labels().object.upConfidence.has_value());
 
@@ -37,7 +40,8 @@ TEST(ObjectLoader, ANewObjectTakesTheUpAxisItsProvenanceDeclares) {
   labels.object.mesh = "box.obj";
   labels.object.up = "z";
   writeLabels(dir / "declared" / "labels.json", labels);
-  const auto labelled = openDocument(dir / "declared" / "box.obj", dir / "declared" / "labels.json");
+  const auto labelled =
+      openDocument(dir / "declared" / "box.obj", dir / "declared" / "labels.json");
   EXPECT_EQ(labelled->labels().object.up, "z");
 }
 

@@ -54,8 +54,9 @@ TEST(UnitsCommands, UnitsTheSourceDeclaredAreKnownAndTheCuratorsReplaceThem) {
   doc.execute(std::make_unique<SetUnitsCommand>(0.3));
   EXPECT_FALSE(readLabels(dir / "labels.json").object.extra.contains(kUnitsDeclaredByField));
   doc.undo();
-  EXPECT_EQ(readLabels(dir / "labels.json").object.extra.value(kUnitsDeclaredByField, std::string()),
-            "provenance.json");
+  EXPECT_EQ(
+      readLabels(dir / "labels.json").object.extra.value(kUnitsDeclaredByField, std::string()),
+      "provenance.json");
 }
 
 TEST(CategoryCommands, ASwitchIsOneUndoableStep) {
