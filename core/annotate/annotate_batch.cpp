@@ -49,7 +49,7 @@ nlohmann::json annotateOne(const MeshFile& file, const AnnotateBatchSettings& s,
   const fs::path dir = s.out / file.id;
   const fs::path labelsFile = dir / "labels.json";
   AnnotationFingerprint fingerprint{sha256Hex(readFileBytes(file.path)), loaded.shas,
-                                    loaded.optionsHash};
+                                    loaded.optionsHash, declaredByProvenance(file.path)};
   std::error_code ec;
   if (!s.force && fs::exists(labelsFile, ec)) {
     ObjectLabels existing;

@@ -7,6 +7,7 @@
 #include "core/annotate/point_scorer.h"
 #include "core/common/atomic_file.h"
 #include "core/common/sha256.h"
+#include "core/dataset/object_source.h"
 #include "core/mesh/mesh_import.h"
 
 namespace sagrid {
@@ -43,6 +44,10 @@ void recordFingerprint(ObjectLabels& labels, const AnnotationFingerprint& finger
   auto& prediction = labels.extra["prediction"];
   if (!prediction.is_object()) prediction = nlohmann::json::object();
   prediction["mesh_sha256"] = fingerprint.meshSha256;
+  if (fingerprint.declared.is_null())
+    prediction.erase("declared");
+  else
+    prediction["declared"] = fingerprint.declared;
   prediction["models"] = fingerprint.models;
   prediction["options_hash"] = fingerprint.optionsHash;
 }
@@ -59,7 +64,15 @@ bool matchesFingerprint(const ObjectLabels& labels, const AnnotationFingerprint&
   if (p == labels.extra.end() || !p->is_object()) return false;
   return p->value("mesh_sha256", std::string()) == fingerprint.meshSha256 &&
          p->value("options_hash", std::string()) == fingerprint.optionsHash &&
-         p->value("models", nlohmann::json()) == fingerprint.models;
+         p->value("models", nlohmann::json()) == fingerprint.models &&
+         p->value("declared", nlohmann::json()) == fingerprint.declared;
+}
+
+nlohmann::json declaredByProvenance(const std::filesystem::path& mesh) {
+  nlohmann::json declared;
+  if (const auto up = declaredUpAxis(mesh)) declared["up"] = toString(*up);
+  if (const auto scale = declaredMetersPerUnit(mesh)) declared["meters_per_unit"] = *scale;
+  return declared;
 }
 
 }  // namespace sagrid

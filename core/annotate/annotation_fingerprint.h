@@ -18,7 +18,12 @@ struct AnnotationFingerprint {
   std::string meshSha256;
   nlohmann::json models = nlohmann::json::object();  // model name or file -> sha256
   std::string optionsHash;
+  nlohmann::json declared;  // declaredByProvenance(mesh): null when nothing is declared
 };
+
+// What a provenance.json beside the mesh declares that annotate takes instead of guessing:
+// {"up": ..., "meters_per_unit": ...} with the fields it declares; null when none.
+nlohmann::json declaredByProvenance(const std::filesystem::path& mesh);
 
 // {"<model name>": weights sha256, ..., "category.json": sha256, "confidence.json": sha256} (the
 // two files only when the folder has them).

@@ -17,6 +17,7 @@
 #include "core/geometry/surface_scene.h"
 #include "core/mesh/mesh_import.h"
 #include "support/category_samples.h"
+#include "support/import_errors.h"
 #include "support/test_paths.h"
 #include "support/untrained_models.h"
 
@@ -350,6 +351,27 @@ TEST(AnnotationFingerprintTest, EveryPassSwitchChangesTheOptionsHash) {
   for (const auto& options : switched) hashes.insert(annotateOptionsHash(options));
   EXPECT_EQ(hashes.size(), 6u);
   EXPECT_EQ(annotateOptionsHash(defaults), annotateOptionsHash(AnnotateOptions{}));
+}
+
+TEST(AnnotationFingerprintTest, WhatAProvenanceRecordDeclaresIsPartOfTheFingerprint) {
+  // Labels predicted before a provenance.json declared the units and up axis (or by a build that
+  // did not read them) are not up to date; labels of an object with no record still are.
+  const std::filesystem::path dir = test::freshTempDir();
+  AnnotationFingerprint before{"sha", nlohmann::json::object(), "hash",
+                               declaredByProvenance(dir / "mesh.obj")};
+  EXPECT_TRUE(before.declared.is_null());
+  ObjectLabels labels;
+  recordFingerprint(labels, before);
+  EXPECT_FALSE(labels.extra.at("prediction").contains("declared"));
+  EXPECT_TRUE(matchesFingerprint(labels, before));
+
+  test::writeFile(dir / "provenance.json", R"({"up": "y", "meters_per_unit": 0.01})");
+  AnnotationFingerprint after = before;
+  after.declared = declaredByProvenance(dir / "mesh.obj");
+  EXPECT_EQ(after.declared, nlohmann::json({{"up", "y"}, {"meters_per_unit", 0.01}}));
+  EXPECT_FALSE(matchesFingerprint(labels, after));
+  recordFingerprint(labels, after);
+  EXPECT_TRUE(matchesFingerprint(labels, after));
 }
 
 }  // namespace
