@@ -25,6 +25,7 @@ std::optional<nlohmann::json> provenanceRecord(const fs::path& mesh) {
     nlohmann::json record = parseJsonDocument(readFileBytes(beside), beside);
     if (record.is_object()) return record;
   } catch (const FileError&) {
+    // An unreadable record names no source and declares nothing: what it would say is guessed.
   }
   return std::nullopt;
 }
