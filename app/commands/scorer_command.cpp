@@ -98,6 +98,9 @@ void addTrainingOptions(CLI::App& cmd, std::vector<std::string>& candidates,
       "--no-other-models-count", [&o] { o.otherModelsCount = false; },
       "The learned count reads its own model's candidates alone, not the "
       "object's other models of the category (before session 47)");
+  cmd.add_flag("--skip-unreached", o.skipUnreached,
+               "Leave out of training an object's candidates of a model whose true points no "
+               "candidate reaches (every candidate a non-point)");
   cmd.add_option("--rounds", o.boosting.rounds, "Boosting rounds (default 100)");
   cmd.add_option("--depth", o.boosting.depth, "Tree depth (default 3)");
   cmd.add_option("--min-leaf-hessian", o.boosting.minLeafHessian,

@@ -448,7 +448,13 @@ void fitCounts(const std::map<std::string, std::vector<const CandidateSet*>>& by
 PointScorer trainPointScorer(const std::vector<const CandidateSet*>& sets,
                              const ScorerTrainingOptions& options) {
   std::map<std::string, std::vector<const CandidateSet*>> byModel;
-  for (const CandidateSet* set : sets) byModel[set->model].push_back(set);
+  for (const CandidateSet* set : sets) {
+    if (options.skipUnreached && !set->truth.empty()) {
+      const auto labels = candidateLabels(*set, kMatchRadiusMeters);
+      if (std::none_of(labels.begin(), labels.end(), [](bool point) { return point; })) continue;
+    }
+    byModel[set->model].push_back(set);
+  }
   PointScorer scorer;
   if (!sets.empty()) scorer.passesOff = sets.front()->passesOff;
   for (const CandidateSet* set : sets)

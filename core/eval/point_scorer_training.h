@@ -59,6 +59,10 @@ struct ScorerTrainingOptions {
   // The learned count also reads the object's other models of its category (a knob per burner;
   // core/points/point_count.h, withOtherModels).
   bool otherModelsCount = true;
+  // Leave out of training each object's candidates of a model whose true points no candidate
+  // reaches (a hob's zones printed on a flat box): every candidate is then a non-point, and the
+  // trees would learn that what looks most like a point is not one.
+  bool skipUnreached = false;
 };
 
 // One decision per model with both points and non-points among `sets`' candidates (other models

@@ -152,6 +152,28 @@ KnobsAlike knobsAlikeObjects(unsigned seed) {
   return objects;
 }
 
+TEST(PointScorerTraining, ObjectsWhosePointsNoCandidateReachesCanBeLeftOut) {
+  // Six objects whose knobs are printed where no candidate lies: every candidate, knob-like or
+  // not, is a non-point there. Left out, the decision is the one fitted without them.
+  const auto sets = syntheticSets(0.2f);
+  std::vector<CandidateSet> printed;
+  std::mt19937 rng(11);
+  for (int i = 0; i < 6; ++i) {
+    printed.push_back(syntheticObject("printed", i, false, rng, 0.2f));
+    for (auto& t : printed.back().truth) t += Eigen::Vector3f(0.0f, 5.0f, 0.0f);
+  }
+  std::vector<const CandidateSet*> without, with;
+  for (const auto& s : sets) without.push_back(&s), with.push_back(&s);
+  for (const auto& s : printed) with.push_back(&s);
+  ScorerTrainingOptions skip;
+  skip.skipUnreached = true;
+  const auto decision = [](const PointScorer& scorer) {
+    return toJson(scorer).at("models").dump();
+  };
+  EXPECT_EQ(decision(trainPointScorer(with, skip)), decision(trainPointScorer(without, skip)));
+  EXPECT_NE(decision(trainPointScorer(with, {})), decision(trainPointScorer(without, {})));
+}
+
 TEST(PointScorerTraining, TheSecondLookFindsThePartsThatLookLikeTheBestOne) {
   const KnobsAlike objects = knobsAlikeObjects(11);
   const auto& [sets, heldOut] = objects;
