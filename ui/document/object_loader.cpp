@@ -3,6 +3,7 @@
 #include <optional>
 #include <system_error>
 
+#include "core/annotate/units_record.h"
 #include "core/dataset/object_source.h"
 #include "core/mesh/mesh_import.h"
 
@@ -16,8 +17,8 @@ std::unique_ptr<AnnotationDocument> openDocument(const fs::path& meshPath,
   std::optional<ObjectLabels> existing;
   if (fs::exists(labelsPath, ec)) existing = readLabels(labelsPath);
 
-  // A labelled object keeps its labels' axis; a new one takes the axis its provenance.json
-  // declares, else the one detected from the geometry.
+  // A labelled object keeps its labels' axis and units; a new one takes the axis and units its
+  // provenance.json declares, else the axis detected from the geometry.
   std::optional<UpAxis> up = existing ? upAxisOrZ(existing->object.up) : declaredUpAxis(meshPath);
   auto mesh = std::make_shared<Mesh>(importMesh(meshPath, ImportOptions(up, /*detect=*/!existing)));
 
@@ -35,6 +36,10 @@ std::unique_ptr<AnnotationDocument> openDocument(const fs::path& meshPath,
     labels.object.sha256 = mesh->sha256;
     labels.object.up = toString(mesh->fileUp);
     if (mesh->fileUpDetected) labels.object.upConfidence = mesh->fileUpConfidence;
+    // Units the record declares stand from the start: the prediction's guess is only taken where
+    // none are known, and the mass shown before it returns uses them.
+    if (const auto scale = declaredMetersPerUnit(meshPath))
+      recordDeclaredUnits(labels.object, *scale, "provenance.json");
   }
   return std::make_unique<AnnotationDocument>(std::move(mesh), std::move(labels), labelsPath,
                                               meshPath);

@@ -1,12 +1,14 @@
 // Opening an object in the GUI: a new object's up axis is the one its provenance.json declares
 // (the Sweet Home 3D corpus writes its catalogs' y) and is not detected; without one it is
-// detected from the geometry; a labelled object keeps its labels' axis.
+// detected from the geometry; a labelled object keeps its labels' axis. The units the record
+// declares are known from the start, flagged as declared.
 #include "ui/document/object_loader.h"
 
 #include <gtest/gtest.h>
 
 #include <fstream>
 
+#include "core/annotate/units_record.h"
 #include "support/test_paths.h"
 
 namespace sagrid::ui {
@@ -43,6 +45,32 @@ TEST(ObjectLoader, ANewObjectTakesTheUpAxisItsProvenanceDeclares) {
   const auto labelled =
       openDocument(dir / "declared" / "box.obj", dir / "declared" / "labels.json");
   EXPECT_EQ(labelled->labels().object.up, "z");
+}
+
+TEST(ObjectLoader, ANewObjectTakesTheUnitsItsProvenanceDeclares) {
+  const fs::path dir = test::freshTempDir();
+  writeBox(dir / "unknown" / "box.obj");
+  const auto unknown = openDocument(dir / "unknown" / "box.obj", dir / "unknown" / "labels.json");
+  EXPECT_FALSE(unknown->unitsKnown());
+
+  writeBox(dir / "declared" / "box.obj");
+  std::ofstream(dir / "declared" / "provenance.json")
+      << R"({"library": "Contributions", "meters_per_unit": 0.01})";
+  const auto declared =
+      openDocument(dir / "declared" / "box.obj", dir / "declared" / "labels.json");
+  EXPECT_TRUE(declared->unitsKnown());
+  EXPECT_NEAR(declared->metersPerUnit(), 0.01, 1e-7);
+  EXPECT_EQ(declared->labels().object.extra.value(kUnitsDeclaredByField, std::string()),
+            "provenance.json");
+
+  // Labels beside the mesh decide over the record.
+  ObjectLabels labels;
+  labels.object.id = "box";
+  labels.object.mesh = "box.obj";
+  writeLabels(dir / "declared" / "labels.json", labels);
+  const auto labelled =
+      openDocument(dir / "declared" / "box.obj", dir / "declared" / "labels.json");
+  EXPECT_FALSE(labelled->unitsKnown());
 }
 
 }  // namespace
