@@ -19,6 +19,7 @@ class MeshRenderer {
   MeshRenderer();
   void upload(const Mesh& mesh);
   bool hasMesh() const { return m_indexCount > 0; }
+  GLsizei indexCount() const { return m_indexCount; }  // three per uploaded triangle
   void draw(const Camera& camera, bool wireframe) const;
 
  private:

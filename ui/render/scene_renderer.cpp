@@ -15,7 +15,7 @@ void SceneRenderer::sync(const AnnotationDocument* document, const std::optional
   if (!document) {
     if (m_document) {
       m_document = nullptr;
-      m_meshIdentity = nullptr;
+      m_shownMesh.reset();
       m_mesh = MeshRenderer();
       m_markerInstances.clear();
       m_markers.upload(m_markerInstances);
@@ -24,10 +24,10 @@ void SceneRenderer::sync(const AnnotationDocument* document, const std::optional
     }
     return;
   }
-  const bool newDocument = document != m_document || document->sharedMesh().get() != m_meshIdentity;
+  const bool newDocument = document != m_document || document->sharedMesh() != m_shownMesh;
   if (newDocument) {
     m_document = document;
-    m_meshIdentity = document->sharedMesh().get();
+    m_shownMesh = document->sharedMesh();
     m_mesh.upload(document->mesh());
     m_grid.build(document->mesh().bounds());
     m_revision = 0;

@@ -5,6 +5,7 @@
 
 #include <Eigen/Core>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -33,6 +34,7 @@ class SceneRenderer {
             const ViewSettings& settings);
   void draw(const Camera& camera, const ViewSettings& settings) const;
 
+  const MeshRenderer& mesh() const { return m_mesh; }
   const FieldRenderer& field() const { return m_field; }
   const std::vector<DistanceField>& shownFields() const { return m_shownFields; }
   bool showingPredictedFields() const { return m_predictedShown; }
@@ -43,7 +45,10 @@ class SceneRenderer {
   FieldRenderer m_field;
   MarkerRenderer m_markers;
   const AnnotationDocument* m_document = nullptr;
-  const void* m_meshIdentity = nullptr;
+  // Held, not only compared: a mesh freed while its address is remembered can be replaced by the
+  // next object's mesh at the same address (and its document at the old document's), and the
+  // next object would be drawn with the previous one's triangles.
+  std::shared_ptr<const Mesh> m_shownMesh;
   std::uint64_t m_revision = 0, m_fieldsRevision = 0;
   float m_turn = 0.0f;  // the angle the uploaded mesh's controls are turned by
   std::uint64_t m_turnedLabelsRevision = 0;  // the labels it was turned for
