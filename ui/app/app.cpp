@@ -75,8 +75,13 @@ void App::frame(const std::vector<InputEvent>& events, double deltaSeconds) {
 
   if (m_session.screenshotRequested) {
     m_session.screenshotRequested = false;
-    const auto path = m_options.screenshotDir /
-                      ("sagrid-screenshot-" + std::to_string(++m_screenshotCount) + ".png");
+    // The next number no file in the folder has: a screenshot of an earlier session stays.
+    std::filesystem::path path;
+    std::error_code ec;
+    do {
+      path = m_options.screenshotDir /
+             ("sagrid-screenshot-" + std::to_string(++m_screenshotCount) + ".png");
+    } while (std::filesystem::exists(path, ec));
     try {
       writePng(path, capture());
       logger()->info("screenshot saved to {}", path.string());

@@ -212,6 +212,17 @@ TEST(Interaction, DroppedBrokenFileShowsErrorAndQueueGoesOn) {
   EXPECT_EQ(s.document().points().size(), 2u);
 }
 
+TEST(Interaction, F12KeepsTheScreenshotsOfAnEarlierSession) {
+  const auto dir = sagrid::test::freshTempDir();
+  ScriptedApp s(dir);
+  std::ofstream(dir / "sagrid-screenshot-1.png") << "an earlier session's";
+  s.key(GLFW_KEY_F12);
+  s.frame({});
+  std::ifstream earlier(dir / "sagrid-screenshot-1.png");
+  EXPECT_EQ(std::string(std::istreambuf_iterator<char>(earlier), {}), "an earlier session's");
+  EXPECT_TRUE(std::filesystem::exists(dir / "sagrid-screenshot-2.png"));
+}
+
 TEST(Interaction, HelpOverlayListsEveryShortcutKey) {
   // The overlay is generated from the same table the handler documents; spot-check key entries.
   bool undo = false, accept = false;
