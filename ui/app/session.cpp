@@ -209,8 +209,12 @@ void Session::switchCategory(const std::string& category) {
 
 void Session::accept() {
   if (!m_document) return;
-  if (m_document->selected() >= 0) {
-    execute(std::make_unique<AcceptPointCommand>(m_document->selected()));
+  // A selected point still as predicted is accepted alone; one the curator already placed, moved
+  // or accepted needs nothing, so A goes on as with none selected (no Esc first after an edit).
+  const int selected = m_document->selected();
+  if (selected >= 0 &&
+      m_document->points()[std::size_t(selected)].status == AffordanceStatus::Predicted) {
+    execute(std::make_unique<AcceptPointCommand>(selected));
     return;
   }
   // Accepting a rejected object keeps "none": its suggested points go.
@@ -443,8 +447,10 @@ void Session::pollPrediction() {
   PredictionResult& result = *outcome->result;
   if (!m_queue.empty() && !result.rejected)
     m_queue.setConfidence(std::size_t(m_queue.current()), result.objectConfidence);
-  if (m_document->labels().object.category.empty() && !result.category.empty())
+  if (m_document->labels().object.category.empty() && !result.category.empty()) {
     m_document->setCategory(result.category);
+    chooseNewPointType();  // a sink's first type, not the previous stove's
+  }
   if (!m_document->unitsKnown() && result.units) m_document->setUnitGuess(*result.units);
   if (result.rejected) {
     // Opened as "none"; its likeliest category's points, if any, are suggestions: C takes them.

@@ -17,7 +17,7 @@ const std::vector<ShortcutHelp>& shortcutHelp() {
       {"Click", "select a point (empty space: deselect)"},
       {"Shift+click, Insert then click", "add a point of the current type"},
       {"Click, Ctrl+, Alt+click (Brush on)", "brush the selected control's part on, away, anew"},
-      {"A", "accept the selected point; none selected: accept all and go to the next object"},
+      {"A", "accept the selected predicted point; else accept all and go to the next object"},
       {"C", "take the suggested category of a rejected object, with its points"},
       {"Del / Backspace", "delete the selected point"},
       {"Shift+Del", "delete the selected point and every later one of its type"},

@@ -1,9 +1,6 @@
 // An object the category classifier rejects opens with category "none" and no points, and the
 // curator can then pick its category (the prediction is replayed through a scripted job, the
 // session and worker are the real ones).
-#include <chrono>
-#include <thread>
-
 #include <gtest/gtest.h>
 
 #include "support/test_paths.h"
@@ -25,23 +22,12 @@ TEST(CategoryRejection, RejectedObjectOpensWithNoPointsAndCuratorPicksCategory) 
   writeLabels(dir / "fresh" / "labels.json", fresh);
   std::filesystem::copy_file(dir / "mesh.obj", dir / "fresh" / "mesh.obj");
   auto& session = s.app->session();
-  session.setPredictorLookup([](const AnnotationDocument&) -> std::optional<PredictionJob> {
-    return PredictionJob([](PredictionProgress& progress) {
-      PredictionResult r;
-      r.category = "none";  // what annotateMeshFile returns for a rejected object
-      r.rejected = true;
-      r.closestCategory = "stove";
-      progress.fraction = 1.0f;
-      return r;
-    });
-  });
   session.openObject(dir / "fresh" / "mesh.obj", dir / "fresh" / "labels.json");
-  session.runPrediction();
-  for (int i = 0; i < 200 && session.worker().running(); ++i) {
-    std::this_thread::sleep_for(std::chrono::milliseconds(5));
-    s.frame({});
-  }
-  s.frame({});
+  PredictionResult r;
+  r.category = "none";  // what annotateMeshFile returns for a rejected object
+  r.rejected = true;
+  r.closestCategory = "stove";
+  s.predict(r);
   EXPECT_EQ(s.document().labels().object.category, "none");
   EXPECT_TRUE(s.document().points().empty());
   EXPECT_EQ(readLabels(dir / "fresh" / "labels.json").object.category, "none");
@@ -55,23 +41,12 @@ TEST(CategoryRejection, TheObjectPanelSaysWhyTheEvidenceGateRejected) {
   const auto dir = sagrid::test::freshTempDir();
   ScriptedApp s(dir);
   auto& session = s.app->session();
-  session.setPredictorLookup([](const AnnotationDocument&) -> std::optional<PredictionJob> {
-    return PredictionJob([](PredictionProgress& progress) {
-      PredictionResult r;
-      r.category = "none";
-      r.rejected = r.rejectedByEvidence = true;
-      r.closestCategory = "sink";
-      progress.fraction = 1.0f;
-      return r;
-    });
-  });
   session.openObject(dir / "mesh.obj", dir / "labels.json");
-  session.runPrediction();
-  for (int i = 0; i < 200 && session.worker().running(); ++i) {
-    std::this_thread::sleep_for(std::chrono::milliseconds(5));
-    s.frame({});
-  }
-  s.frame({});
+  PredictionResult r;
+  r.category = "none";
+  r.rejected = r.rejectedByEvidence = true;
+  r.closestCategory = "sink";
+  s.predict(r);
   EXPECT_EQ(session.predictionNote(),
             "shaped like a sink, but the sink models find none of its parts on it: no points");
   // The next prediction (or object) starts without it.

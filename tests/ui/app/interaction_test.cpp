@@ -177,6 +177,34 @@ TEST(Interaction, NewPointTypeFollowsTheObjectsCategory) {
   EXPECT_EQ(s.app->session().currentType(), "togglebutton");
 }
 
+TEST(Interaction, NewPointTypeFollowsTheCategoryThePredictionGives) {
+  const auto dir = sagrid::test::freshTempDir();
+  ScriptedApp s(dir);
+  EXPECT_EQ(s.app->session().currentType(), "heatsource");  // the stove's
+  // A new object: no category until the prediction says sink.
+  std::filesystem::create_directories(dir / "new");
+  std::filesystem::copy_file(dir / "mesh.obj", dir / "new" / "mesh.obj");
+  s.app->session().openObject(dir / "new" / "mesh.obj", dir / "new" / "labels.json");
+  PredictionResult sink;
+  sink.category = "sink";
+  s.predict(sink);
+  EXPECT_EQ(s.document().labels().object.category, "sink");
+  EXPECT_EQ(s.app->session().currentType(), "fluidsource");
+}
+
+TEST(Interaction, AOnAPointTheCuratorPlacedGoesOnToTheNextObject) {
+  const auto dir = sagrid::test::freshTempDir();
+  ScriptedApp s(dir);
+  s.click(s.pixelOf({0.0f, 0.0f, 0.0f}), GLFW_MOD_SHIFT);  // added: selected, "added"
+  ASSERT_EQ(s.document().points().size(), 3u);
+  ASSERT_EQ(s.document().selected(), 2);
+  s.key(GLFW_KEY_A);  // nothing to accept on it: accept all, as with none selected
+  const ObjectLabels saved = readLabels(dir / "labels.json");
+  EXPECT_EQ(saved.reviewState, ReviewState::Done);
+  EXPECT_EQ(saved.affordances[2].status, AffordanceStatus::Added);  // not turned into "accepted"
+  EXPECT_EQ(saved.affordances[0].status, AffordanceStatus::Accepted);
+}
+
 TEST(Interaction, AWithNothingSelectedAcceptsAllAndMarksObjectReviewed) {
   const auto dir = sagrid::test::freshTempDir();
   ScriptedApp s(dir);

@@ -5,7 +5,9 @@
 
 #include <filesystem>
 #include <fstream>
+#include <chrono>
 #include <memory>
+#include <thread>
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
@@ -92,6 +94,23 @@ class ScriptedApp {
   void key(int glfwKey, int mods = 0) {
     frame({InputEvent::keyEvent(glfwKey, true, mods)});
     frame({InputEvent::keyEvent(glfwKey, false, mods)});
+  }
+
+  // Runs a prediction that returns `result` through the session's real worker and waits for it.
+  void predict(PredictionResult result) {
+    Session& session = app->session();
+    session.setPredictorLookup([result](const AnnotationDocument&) -> std::optional<PredictionJob> {
+      return PredictionJob([result](PredictionProgress& progress) {
+        progress.fraction = 1.0f;
+        return result;
+      });
+    });
+    session.runPrediction();
+    for (int i = 0; i < 200 && session.worker().running(); ++i) {
+      std::this_thread::sleep_for(std::chrono::milliseconds(5));
+      frame({});
+    }
+    frame({});
   }
 
   const AnnotationDocument& document() const { return *app->session().document(); }
