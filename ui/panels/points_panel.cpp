@@ -81,7 +81,11 @@ void drawPointsPanel(Session& session) {
     ImGui::Separator();
     ImGui::Text("Point %d (%s)", selected + 1, points[std::size_t(selected)].type.c_str());
     coordinateEditor(session, selected);
-    if (ImGui::Button("Accept (A)")) session.accept();
+    // As A: a predicted point is accepted alone; any other lets the object go on.
+    const bool predicted = points[std::size_t(selected)].status == AffordanceStatus::Predicted;
+    if (ImGui::Button(predicted ? "Accept (A)" : "Accept all (A)")) session.accept();
+    if (!predicted && ImGui::IsItemHovered())
+      ImGui::SetTooltip("Accept every point and go to the next object");
     ImGui::SameLine();
     if (ImGui::Button("Delete (Del)")) session.deleteSelected();
     ImGui::SameLine();
