@@ -58,7 +58,10 @@ void ViewportInput::handle(const std::vector<InputEvent>& events, Session& sessi
         break;
       case InputEvent::Kind::Scroll:
         if (!panelsWantMouse && session.viewport().contains(m_x, m_y)) {
-          session.camera().zoom(e.y);
+          if (const auto hit = surfaceUnder(session, m_x, m_y))
+            session.camera().zoomTowards(e.y, hit->position);
+          else
+            session.camera().zoom(e.y);
           session.noteLook("zoom");
         }
         break;

@@ -45,6 +45,14 @@ void Camera::zoom(float steps) {
                           100.0f * m_sceneRadius);
 }
 
+void Camera::zoomTowards(float steps, const Eigen::Vector3f& point) {
+  const float before = m_distance;
+  zoom(steps);
+  // Eye and target scaled about the point by the same factor: the view direction stays, so the
+  // ray through the point's pixel still meets it.
+  m_target = point + (m_target - point) * (m_distance / before);
+}
+
 Eigen::Vector3f Camera::eye() const {
   const float c = std::cos(m_pitch);
   return m_target +

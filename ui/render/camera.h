@@ -24,6 +24,9 @@ class Camera {
   void orbit(float deltaYawRadians, float deltaPitchRadians);
   void pan(float dxPixels, float dyPixels);  // moves the target with the screen
   void zoom(float steps);                    // positive = closer
+  // Zooms keeping `point` where it is on screen (the wheel over the surface: the spot under the
+  // pointer comes closer, not the object's middle).
+  void zoomTowards(float steps, const Eigen::Vector3f& point);
 
   Eigen::Vector3f eye() const;
   const Eigen::Vector3f& target() const { return m_target; }

@@ -251,6 +251,23 @@ TEST(Interaction, F12KeepsTheScreenshotsOfAnEarlierSession) {
   EXPECT_TRUE(std::filesystem::exists(dir / "sagrid-screenshot-2.png"));
 }
 
+TEST(Interaction, TheWheelZoomsTowardsTheSurfaceUnderThePointer) {
+  const auto dir = sagrid::test::freshTempDir();
+  ScriptedApp s(dir);
+  const Eigen::Vector3f spot(0.3f, 0.3f, 0.0f);  // on the plate, away from the view's middle
+  const Eigen::Vector2f pixel = s.pixelOf(spot);
+  const float distance = s.app->session().camera().distance();
+  s.moveTo(pixel);
+  s.frame({InputEvent::scroll(0.0f, 3.0f)});
+  EXPECT_LT(s.app->session().camera().distance(), 0.7f * distance);
+  EXPECT_LT((s.pixelOf(spot) - pixel).norm(), 1.0f);  // the spot stays under the pointer
+  // Off the object the wheel zooms about the view's middle.
+  const Eigen::Vector3f target = s.app->session().camera().target();
+  s.moveTo({2.0f, 2.0f});
+  s.frame({InputEvent::scroll(0.0f, -3.0f)});
+  EXPECT_LT((s.app->session().camera().target() - target).norm(), 1e-6f);
+}
+
 TEST(Interaction, HelpOverlayListsEveryShortcutKey) {
   // The overlay is generated from the same table the handler documents; spot-check key entries.
   bool undo = false, accept = false;
