@@ -159,7 +159,8 @@ void App::run() {
   while (!m_quit) {
     events.clear();
     // Sleep until input arrives, but keep animating while a prediction runs.
-    m_context.waitEvents(m_session.worker().running() ? 0.05 : 0.25);
+    // A panel click's release held back for the next frame is drawn at once.
+    m_context.waitEvents(m_imgui.hasPendingInput() ? 0.0 : m_session.worker().running() ? 0.05 : 0.25);
     m_context.pollEvents(events);
     const double now = m_context.timeSeconds();
     frame(events, now - last);

@@ -104,38 +104,55 @@ void ImGuiLayer::beginFrame(const std::vector<InputEvent>& events, double deltaS
   if (w > 0 && h > 0)
     io.DisplayFramebufferScale = ImVec2(float(fw) / float(w), float(fh) / float(h));
   io.DeltaTime = deltaSeconds > 0 ? float(deltaSeconds) : 1.0f / 60.0f;
-  for (const InputEvent& e : events) {
-    switch (e.kind) {
-      case InputEvent::Kind::MouseMove:
-        io.MousePos = ImVec2(e.x, e.y);
+  std::vector<InputEvent> queue = std::move(m_pending);
+  m_pending.clear();
+  queue.insert(queue.end(), events.begin(), events.end());
+  bool pressedThisFrame[5] = {};
+  for (std::size_t i = 0; i < queue.size(); ++i) {
+    const InputEvent& e = queue[i];
+    if (e.kind == InputEvent::Kind::MouseButton && e.button >= 0 && e.button < 5) {
+      if (!e.pressed && pressedThisFrame[e.button]) {
+        m_pending.assign(queue.begin() + std::ptrdiff_t(i), queue.end());
         break;
-      case InputEvent::Kind::MouseButton:
-        if (e.button >= 0 && e.button < 5) io.MouseDown[e.button] = e.pressed;
-        break;
-      case InputEvent::Kind::Scroll:
-        io.MouseWheelH += e.x;
-        io.MouseWheel += e.y;
-        break;
-      case InputEvent::Kind::Key:
-        if (e.key >= 0 && e.key < 512) io.KeysDown[e.key] = e.pressed;
-        io.KeyCtrl = (e.mods & GLFW_MOD_CONTROL) != 0;
-        io.KeyShift = (e.mods & GLFW_MOD_SHIFT) != 0;
-        io.KeyAlt = (e.mods & GLFW_MOD_ALT) != 0;
-        io.KeySuper = (e.mods & GLFW_MOD_SUPER) != 0;
-        if (!e.pressed) {  // a released modifier clears its flag
-          if (e.key == GLFW_KEY_LEFT_CONTROL || e.key == GLFW_KEY_RIGHT_CONTROL) io.KeyCtrl = false;
-          if (e.key == GLFW_KEY_LEFT_SHIFT || e.key == GLFW_KEY_RIGHT_SHIFT) io.KeyShift = false;
-        }
-        break;
-      case InputEvent::Kind::Char:
-        io.AddInputCharacter(e.codepoint);
-        break;
-      case InputEvent::Kind::Drop:
-        break;
+      }
+      if (e.pressed) pressedThisFrame[e.button] = true;
     }
+    apply(e);
   }
   ImGui_ImplOpenGL3_NewFrame();
   ImGui::NewFrame();
+}
+
+void ImGuiLayer::apply(const InputEvent& e) {
+  ImGuiIO& io = ImGui::GetIO();
+  switch (e.kind) {
+    case InputEvent::Kind::MouseMove:
+      io.MousePos = ImVec2(e.x, e.y);
+      break;
+    case InputEvent::Kind::MouseButton:
+      if (e.button >= 0 && e.button < 5) io.MouseDown[e.button] = e.pressed;
+      break;
+    case InputEvent::Kind::Scroll:
+      io.MouseWheelH += e.x;
+      io.MouseWheel += e.y;
+      break;
+    case InputEvent::Kind::Key:
+      if (e.key >= 0 && e.key < 512) io.KeysDown[e.key] = e.pressed;
+      io.KeyCtrl = (e.mods & GLFW_MOD_CONTROL) != 0;
+      io.KeyShift = (e.mods & GLFW_MOD_SHIFT) != 0;
+      io.KeyAlt = (e.mods & GLFW_MOD_ALT) != 0;
+      io.KeySuper = (e.mods & GLFW_MOD_SUPER) != 0;
+      if (!e.pressed) {  // a released modifier clears its flag
+        if (e.key == GLFW_KEY_LEFT_CONTROL || e.key == GLFW_KEY_RIGHT_CONTROL) io.KeyCtrl = false;
+        if (e.key == GLFW_KEY_LEFT_SHIFT || e.key == GLFW_KEY_RIGHT_SHIFT) io.KeyShift = false;
+      }
+      break;
+    case InputEvent::Kind::Char:
+      io.AddInputCharacter(e.codepoint);
+      break;
+    case InputEvent::Kind::Drop:
+      break;
+  }
 }
 
 void ImGuiLayer::render() {
