@@ -28,10 +28,13 @@ std::unique_ptr<AnnotationDocument> openDocument(const fs::path& meshPath,
     if (labels.object.mesh.empty()) labels.object.mesh = meshPath.filename().string();
     if (labels.object.sha256.empty()) labels.object.sha256 = mesh->sha256;
   } else {
-    // Dataset layout DIR/<id>/mesh.ext names the object after its folder.
+    // Dataset layout DIR/<id>/mesh.ext (labels.json beside it) names the object after its
+    // folder, whatever the mesh is called: two libraries' frigo.obj are two objects.
+    const bool ownFolder = labelsPath.filename() == "labels.json" &&
+                           labelsPath.parent_path() == meshPath.parent_path();
     const bool genericName = meshPath.stem() == "mesh";
-    labels.object.id =
-        genericName ? meshPath.parent_path().filename().string() : meshPath.stem().string();
+    labels.object.id = (ownFolder || genericName) ? meshPath.parent_path().filename().string()
+                                                  : meshPath.stem().string();
     labels.object.mesh = meshPath.filename().string();
     labels.object.sha256 = mesh->sha256;
     labels.object.up = toString(mesh->fileUp);

@@ -73,5 +73,22 @@ TEST(ObjectLoader, ANewObjectTakesTheUnitsItsProvenanceDeclares) {
   EXPECT_FALSE(labelled->unitsKnown());
 }
 
+TEST(ObjectLoader, AnObjectInAFolderOfItsOwnIsNamedAfterTheFolder) {
+  const fs::path dir = test::freshTempDir();
+  writeBox(dir / "bettinelli_frigo" / "frigo.obj");
+  writeBox(dir / "lucapresidente_frigo" / "frigo.obj");
+  EXPECT_EQ(openDocument(dir / "bettinelli_frigo" / "frigo.obj",
+                         dir / "bettinelli_frigo" / "labels.json")->labels().object.id,
+            "bettinelli_frigo");
+  EXPECT_EQ(openDocument(dir / "lucapresidente_frigo" / "frigo.obj",
+                         dir / "lucapresidente_frigo" / "labels.json")->labels().object.id,
+            "lucapresidente_frigo");
+  // Several meshes in one folder, each with its own labels file: named after the mesh.
+  writeBox(dir / "loose" / "stove.obj");
+  EXPECT_EQ(openDocument(dir / "loose" / "stove.obj", dir / "loose" / "stove.labels.json")
+                ->labels().object.id,
+            "stove");
+}
+
 }  // namespace
 }  // namespace sagrid::ui
