@@ -201,7 +201,11 @@ void Session::switchCategory(const std::string& category) {
     steps.push_back(std::make_unique<ReplacePointsCommand>(std::vector<AffordancePoint>{},
                                                            "drop the points of the old category"));
   }
+  const bool dropsPoints = steps.size() > 1;
   execute(std::make_unique<CommandGroup>("Category " + category, std::move(steps)));
+  // The old category's fields go with its points (the viewport showed them over an object left
+  // with none); a new prediction brings its own.
+  if (dropsPoints) m_document->setPredictedFields({});
   m_predictionNote.clear();
   chooseNewPointType();
   if (allPredicted && autoPredict) runPrediction();

@@ -268,6 +268,20 @@ TEST(Interaction, TheWheelZoomsTowardsTheSurfaceUnderThePointer) {
   EXPECT_LT((s.app->session().camera().target() - target).norm(), 1e-6f);
 }
 
+TEST(Interaction, SwitchingToNoneDropsTheOldCategorysFieldsWithItsPoints) {
+  const auto dir = sagrid::test::freshTempDir();
+  ScriptedApp s(dir);
+  DistanceField heat;
+  heat.type = "heatsource";
+  heat.voxels = {VoxelIndex{1, 2, 3}};
+  heat.distances = {0.1f};
+  s.app->session().document()->setPredictedFields({heat});
+  ASSERT_FALSE(s.document().predictedFields().empty());
+  s.app->session().switchCategory("none");
+  EXPECT_TRUE(s.document().points().empty());
+  EXPECT_TRUE(s.document().predictedFields().empty());
+}
+
 TEST(Interaction, HelpOverlayListsEveryShortcutKey) {
   // The overlay is generated from the same table the handler documents; spot-check key entries.
   bool undo = false, accept = false;
