@@ -1,5 +1,6 @@
 #include <imgui.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <memory>
 
@@ -17,13 +18,20 @@ void typeSelector(Session& session) {
   ImGui::TextUnformatted("New points:");
   ImGui::SameLine();
   ImGui::SetNextItemWidth(-1);
-  if (ImGui::BeginCombo("##type", session.currentType().c_str())) {
-    const auto& types = knownTypes();
+  // Each type with its number key, the current one too: a stove's togglebutton is 3, not 2.
+  const auto& types = knownTypes();
+  auto withKey = [&types](const std::string& type) {
+    const auto at = std::find(types.begin(), types.end(), type);
+    char label[96];
+    if (at == types.end()) std::snprintf(label, sizeof label, "%s", type.c_str());
+    else std::snprintf(label, sizeof label, "%d  %s", int(at - types.begin()) + 1, type.c_str());
+    return std::string(label);
+  };
+  if (ImGui::BeginCombo("##type", withKey(session.currentType()).c_str())) {
     for (std::size_t i = 0; i < types.size(); ++i) {
-      char label[96];
-      std::snprintf(label, sizeof label, "%zu  %s", i + 1, types[i].c_str());
+      const std::string label = withKey(types[i]);
       ImGui::PushStyleColor(ImGuiCol_Text, toImGui(typeColor(types[i])));
-      if (ImGui::Selectable(label, types[i] == session.currentType()))
+      if (ImGui::Selectable(label.c_str(), types[i] == session.currentType()))
         session.setCurrentType(types[i]);
       ImGui::PopStyleColor();
     }

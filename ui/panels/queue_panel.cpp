@@ -81,6 +81,11 @@ void drawQueuePanel(Session& session, const ConfidenceCalibration& confidence) {
   drawConfidenceControls(session, confidence);
   const float rows = std::min<float>(float(queue.size()), 8.0f);
   ImGui::BeginChild("queue", ImVec2(0, rows * ImGui::GetTextLineHeightWithSpacing() + 8), true);
+  // The list follows the queue: when the current object changes (A, N, P), its row scrolls into
+  // the middle of the list; the curator's own scrolling is left alone otherwise.
+  ImGuiStorage* storage = ImGui::GetStateStorage();
+  const ImGuiID shownKey = ImGui::GetID("shown current");
+  const bool follow = storage->GetInt(shownKey, -1) != queue.current();
   for (std::size_t i = 0; i < queue.size(); ++i) {
     const QueueEntry& entry = queue.entry(i);
     ImGui::PushID(static_cast<int>(i));
@@ -96,6 +101,10 @@ void drawQueuePanel(Session& session, const ConfidenceCalibration& confidence) {
         entry.mesh.parent_path().filename().string() + "/" + entry.mesh.filename().string();
     if (ImGui::Selectable(name.c_str(), static_cast<int>(i) == queue.current()))
       session.openEntry(static_cast<int>(i));
+    if (follow && static_cast<int>(i) == queue.current()) {
+      ImGui::SetScrollHereY(0.5f);
+      storage->SetInt(shownKey, queue.current());
+    }
     if (!entry.error.empty() && ImGui::IsItemHovered())
       ImGui::SetTooltip("%s", entry.error.c_str());
     ImGui::PopID();
