@@ -27,6 +27,7 @@ const std::vector<ShortcutHelp>& shortcutHelp() {
       {"S", "skip object"},
       {"F", "close-up of the selected point; again (or none selected): the whole object"},
       {"W", "wireframe"},
+      {"G", "plain grey: the mesh without its colours (a black model's shape)"},
       {"T", "controls turned as the exports turn them (a knob's part seen moving) / as modelled"},
       {"V", "distance field on/off"},
       {"Ctrl+Z", "undo"},
@@ -105,6 +106,9 @@ bool handleShortcuts(const std::vector<InputEvent>& events, Session& session,
         break;
       case GLFW_KEY_W:
         session.view().wireframe = !session.view().wireframe;
+        break;
+      case GLFW_KEY_G:
+        session.view().plainShading = !session.view().plainShading;
         break;
       case GLFW_KEY_T:
         session.view().controlTurn = session.view().controlTurn != 0.0f ? 0.0f : kPreviewTurn;

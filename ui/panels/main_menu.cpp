@@ -49,6 +49,7 @@ bool drawMainMenu(Session& session, FileBrowser& browser) {
     ViewSettings& v = session.view();
     ImGui::MenuItem("Mesh", nullptr, &v.showMesh);
     ImGui::MenuItem("Wireframe", "W", &v.wireframe);
+    ImGui::MenuItem("Plain grey", "G", &v.plainShading);
     bool turned = v.controlTurn != 0.0f;
     if (ImGui::MenuItem("Controls turned", "T", &turned)) v.controlTurn = turned ? kPreviewTurn : 0.0f;
     ImGui::MenuItem("Distance field", "V", &v.field.visible);

@@ -24,6 +24,7 @@ MeshRenderer::MeshRenderer() : m_program("mesh.vert", "mesh.frag") {
   m_uTexture = m_program.uniform("uTexture");
   m_uFlatColor = m_program.uniform("uFlatColor");
   m_uAlpha = m_program.uniform("uAlpha");
+  m_uPlain = m_program.uniform("uPlain");
 }
 
 void MeshRenderer::upload(const Mesh& mesh) {
@@ -111,7 +112,7 @@ void MeshRenderer::upload(const Mesh& mesh) {
   }
 }
 
-void MeshRenderer::draw(const Camera& camera, bool wireframe) const {
+void MeshRenderer::draw(const Camera& camera, bool wireframe, bool plain) const {
   if (!m_indexCount) return;
   m_program.use();
   setUniform(m_uViewProj, camera.viewProjection());
@@ -119,6 +120,7 @@ void MeshRenderer::draw(const Camera& camera, bool wireframe) const {
   setUniform(m_uTexture, 0);
   setUniform(m_uAlpha, 1.0f);
   setUniform(m_uFlatColor, 0);
+  setUniform(m_uPlain, plain ? 1 : 0);
   glBindVertexArray(m_vao.id());
   glEnable(GL_POLYGON_OFFSET_FILL);
   glPolygonOffset(1.0f, 1.0f);  // keeps the wireframe overlay and markers on top

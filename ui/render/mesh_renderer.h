@@ -20,7 +20,8 @@ class MeshRenderer {
   void upload(const Mesh& mesh);
   bool hasMesh() const { return m_indexCount > 0; }
   GLsizei indexCount() const { return m_indexCount; }  // three per uploaded triangle
-  void draw(const Camera& camera, bool wireframe) const;
+  // `plain`: one light grey for every material (ViewSettings::plainShading).
+  void draw(const Camera& camera, bool wireframe, bool plain = false) const;
 
  private:
   struct Range {
@@ -29,7 +30,7 @@ class MeshRenderer {
     int texture = -1;
   };
   ShaderProgram m_program;
-  GLint m_uViewProj, m_uEye, m_uBaseColor, m_uHasTexture, m_uTexture, m_uFlatColor, m_uAlpha;
+  GLint m_uViewProj, m_uEye, m_uBaseColor, m_uHasTexture, m_uTexture, m_uFlatColor, m_uPlain, m_uAlpha;
   GlVertexArray m_vao;
   GlBuffer m_vertices, m_indices;
   std::vector<GlTexture> m_textures;

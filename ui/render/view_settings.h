@@ -23,6 +23,9 @@ inline constexpr float kPreviewTurn = 0.6f;
 struct ViewSettings {
   bool showMesh = true;
   bool wireframe = false;
+  // The mesh in one light grey, without its textures, materials or vertex colours: the shape of a
+  // model whose materials are black (its wireframe shows on it too).
+  bool plainShading = false;
   bool showGrid = true;
   bool showAxes = true;
   bool showPoints = true;

@@ -1,0 +1,50 @@
+// G (View > Plain grey) draws a model whose materials are black in one light grey, so its shape
+// shows (seen curating the wild pool in the window: an electric stove rendered black, wireframe
+// included, and its points were accepted unseen).
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+#include "support/test_paths.h"
+#include "tests/ui/app/scripted_scene.h"
+
+namespace sagrid::ui {
+namespace {
+namespace fs = std::filesystem;
+
+// Mean of the red, green and blue values over the middle quarter of the image.
+double middleBrightness(const RgbaImage& image) {
+  double sum = 0;
+  int count = 0;
+  for (int y = image.height / 4; y < 3 * image.height / 4; ++y)
+    for (int x = image.width / 4; x < 3 * image.width / 4; ++x, ++count)
+      sum += (image.at(x, y)[0] + image.at(x, y)[1] + image.at(x, y)[2]) / 3.0;
+  return sum / count;
+}
+
+TEST(RenderPlainShading, GShowsTheShapeOfABlackModel) {
+  const fs::path dir = sagrid::test::freshTempDir();
+  test::ScriptedApp s(dir);
+  fs::create_directories(dir / "black");
+  std::ofstream(dir / "black" / "mesh.mtl") << "newmtl black\nKd 0 0 0\n";
+  {
+    std::ofstream obj(dir / "black" / "mesh.obj");
+    obj << "mtllib mesh.mtl\nusemtl black\n";
+    obj << "v -0.5 -0.5 0\nv 0.5 -0.5 0\nv 0.5 0.5 0\nv -0.5 0.5 0\nf 1 2 3\nf 1 3 4\n";
+  }
+  s.app->session().openObject(dir / "black" / "mesh.obj", dir / "black" / "labels.json");
+  s.app->session().view().showGrid = false;
+  s.app->session().view().showAxes = false;
+  s.frame({});
+  s.app->session().camera().set({0, 0, 0}, 2.5f, -1.5707963f, 1.5f);  // straight down on it
+  s.frame({});
+  const double black = middleBrightness(s.app->capture());
+  s.key(GLFW_KEY_G);
+  EXPECT_TRUE(s.app->session().view().plainShading);
+  s.frame({});
+  const double plain = middleBrightness(s.app->capture());
+  EXPECT_GT(plain, black + 60.0) << "black " << black << ", plain " << plain;
+}
+
+}  // namespace
+}  // namespace sagrid::ui
