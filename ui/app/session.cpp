@@ -455,7 +455,12 @@ void Session::pollPrediction() {
     m_document->setCategory(result.category);
     chooseNewPointType();  // a sink's first type, not the previous stove's
   }
-  if (!m_document->unitsKnown() && result.units) m_document->setUnitGuess(*result.units);
+  // The object's own guess, unless units are known; over units carried from another object of
+  // its source where only one unit fits its size (see carryCuratedUnits).
+  if (result.units && (!m_document->unitsKnown() || (m_unitsCarried && result.units->sure))) {
+    m_document->setUnitGuess(*result.units);
+    m_unitsCarried = false;
+  }
   if (result.rejected) {
     // Opened as "none"; its likeliest category's points, if any, are suggestions: C takes them.
     const std::string points = result.points.empty()

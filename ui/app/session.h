@@ -179,6 +179,7 @@ class Session {
   std::optional<CurationLogWriter> m_curationLog;
   double m_lastLookSeconds = -1e9;
   std::map<std::string, double> m_curatedUnits;  // per source: the units the curator last set
+  bool m_unitsCarried = false;  // the open object shows units carried from another of its source
 };
 
 }  // namespace sagrid::ui

@@ -22,6 +22,7 @@ bool Session::setUnits(double metersPerUnit) {
     return false;
   }
   execute(std::make_unique<SetUnitsCommand>(metersPerUnit));
+  m_unitsCarried = false;  // the curator's now: no prediction replaces them
   return true;
 }
 
@@ -29,13 +30,18 @@ std::string Session::sourceOfOpenObject() const {
   return m_document ? objectSource(m_document->labels(), m_document->meshPath(), "") : std::string();
 }
 
+// A size guess that only one unit fits (a fridge 1.8 units tall is in metres) stands: within a
+// repository, scales differ (the wild pool's: carrying over such guesses cost one more units
+// action than carrying nothing, tests/benchmarks/units_carry.py).
 void Session::carryCuratedUnits() {
+  m_unitsCarried = false;
   if (!m_document) return;
   const std::string source = sourceOfOpenObject();
   const auto carried = m_curatedUnits.find(source);
   if (source.empty() || carried == m_curatedUnits.end()) return;
   const std::optional<UnitGuess> guess = recordedUnitGuess(m_document->labels().object);
   if (m_document->unitsKnown() && !guess) return;  // the file's or a curator's units
+  if (guess && guess->sure) return;
   if (guess && std::abs(guess->metersPerUnit - carried->second) <= 1e-9 * carried->second) return;
   UnitGuess fromSource;
   fromSource.metersPerUnit = carried->second;
@@ -43,6 +49,7 @@ void Session::carryCuratedUnits() {
   fromSource.reason = "as the curator set them for another object of " + source + " this session" +
                       (guess ? " (the size guess said " + guess->unit + ")" : std::string());
   m_document->setUnitGuess(fromSource);
+  m_unitsCarried = true;
 }
 
 }  // namespace sagrid::ui

@@ -3,7 +3,9 @@
 // says so, to the objects of that source whose units are only guessed, and to no other.
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <cmath>
+#include <thread>
 #include <fstream>
 #include <limits>
 
@@ -15,8 +17,9 @@ namespace sagrid::ui {
 namespace {
 namespace fs = std::filesystem;
 
-// A stove 1.3 units wide whose units annotate guessed as metres, from repository `repo`.
-void writeObject(const fs::path& dir, const std::string& repo) {
+// A stove 1.3 units wide whose units annotate guessed as metres (`sure`: no other unit fits its
+// size), from repository `repo`.
+void writeObject(const fs::path& dir, const std::string& repo, bool sure = false) {
   fs::create_directories(dir);
   std::ofstream(dir / "mesh.obj") << "v 0 0 0\nv 1.3 0 0\nv 1.3 1 0\nv 0 1 0\nv 0 0 1.3\nf 1 2 3\nf 1 3 4\nf 1 2 5\n";
   std::ofstream(dir / "provenance.json") << R"({"repo": ")" << repo << R"("})";
@@ -28,6 +31,7 @@ void writeObject(const fs::path& dir, const std::string& repo) {
   UnitGuess guess;
   guess.unit = "m";
   guess.reason = "largest extent 1.3 units";
+  guess.sure = sure;
   recordUnitGuess(labels.object, guess);
   writeLabels(dir / "labels.json", labels);
 }
@@ -78,6 +82,48 @@ TEST(SessionUnits, TypedUnitsAreOneStepAndCarryToTheirSourcesGuessedObjects) {
   ASSERT_TRUE(session.setUnits(0.5));
   session.openEntry(0);
   EXPECT_NEAR(session.document()->metersPerUnit(), 0.69, 1e-6);
+}
+
+TEST(SessionUnits, AGuessOnlyOneUnitFitsIsNotReplacedByTheSourcesUnits) {
+  const fs::path dir = test::freshTempDir() / "queue";
+  writeObject(dir / "a_microwave", "someone/kit");
+  writeObject(dir / "b_fridge", "someone/kit", /*sure=*/true);
+  writeObject(dir / "c_sink", "someone/kit");
+  Session session;
+  session.autoPredict = false;
+  session.logErrors = false;
+  session.openPaths({dir});
+  ASSERT_TRUE(session.setUnits(0.18));
+  session.openEntry(1);  // its size fits metres alone: its own guess stands
+  EXPECT_FLOAT_EQ(session.document()->metersPerUnit(), 1.0f);
+  session.openEntry(2);  // its guess is one of several: the source's units
+  EXPECT_NEAR(session.document()->metersPerUnit(), 0.18, 1e-6);
+
+  // A new object, opened before its prediction: the source's units until the prediction's own
+  // guess says only metres fit.
+  fs::create_directories(dir / "d_new");
+  fs::copy_file(dir / "a_microwave" / "mesh.obj", dir / "d_new" / "mesh.obj");
+  fs::copy_file(dir / "a_microwave" / "provenance.json", dir / "d_new" / "provenance.json");
+  session.addPaths({dir / "d_new" / "mesh.obj"});
+  ASSERT_TRUE(session.document());
+  EXPECT_NEAR(session.document()->metersPerUnit(), 0.18, 1e-6);
+  session.setPredictorLookup([](const AnnotationDocument&) -> std::optional<PredictionJob> {
+    return PredictionJob([](PredictionProgress& progress) {
+      PredictionResult r;
+      r.category = "stove";
+      UnitGuess metres;
+      metres.sure = true;
+      metres.reason = "only metres fit";
+      r.units = metres;
+      progress.fraction = 1.0f;
+      return r;
+    });
+  });
+  session.runPrediction();
+  for (int i = 0; i < 400 && session.worker().running(); ++i)
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  session.pollPrediction();
+  EXPECT_FLOAT_EQ(session.document()->metersPerUnit(), 1.0f);
 }
 
 }  // namespace
