@@ -14,6 +14,24 @@ namespace sagrid::ui {
 namespace {
 ImVec4 toImGui(const Eigen::Vector3f& c) { return ImVec4(c.x(), c.y(), c.z(), 1.0f); }
 
+// True once the last item has been hovered for `seconds` without a break: a row's tooltip then
+// covers the next row only when asked for, not on every pass of the pointer.
+bool hoveredFor(float seconds) {
+  ImGuiStorage* storage = ImGui::GetStateStorage();
+  const ImGuiID sinceKey = ImGui::GetID("hovered since");  // the row's own (inside its PushID)
+  if (!ImGui::IsItemHovered()) {
+    storage->SetFloat(sinceKey, -1.0f);
+    return false;
+  }
+  float since = storage->GetFloat(sinceKey, -1.0f);
+  if (since < 0.0f) storage->SetFloat(sinceKey, since = float(ImGui::GetTime()));
+  return float(ImGui::GetTime()) - since >= seconds;
+}
+
+// The selected row in a colour of its own: the hovered one is the blue of every list, and A's
+// effect depends on which point is selected.
+const ImVec4 kSelectedRow(0.80f, 0.52f, 0.16f, 0.60f);
+
 void typeSelector(Session& session) {
   ImGui::TextUnformatted("New points:");
   ImGui::SameLine();
@@ -77,8 +95,10 @@ void drawPointsPanel(Session& session) {
     ImGui::SameLine();
     char label[160];
     std::snprintf(label, sizeof label, "%d  %-13s %s", i + 1, p.type.c_str(), toString(p.status));
+    ImGui::PushStyleColor(ImGuiCol_Header, kSelectedRow);
     if (ImGui::Selectable(label, doc->selected() == i)) doc->select(i);
-    if (ImGui::IsItemHovered()) {
+    ImGui::PopStyleColor();
+    if (hoveredFor(0.6f)) {
       ImGui::SetTooltip("(%.4f, %.4f, %.4f) file frame%s", p.position.x(), p.position.y(),
                         p.position.z(), mpu != 1.0f ? " (units scaled to metres on export)" : "");
     }

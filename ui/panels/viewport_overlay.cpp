@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "core/controls/control_turn.h"
+#include "ui/app/point_visibility.h"
 #include "ui/app/session.h"
 #include "ui/document/control_view.h"
 #include "ui/panels/panels.h"
@@ -41,10 +42,12 @@ void pointLabels(const Session& session, ImDrawList* draw) {
                   p.status == AffordanceStatus::Predicted ? " ?" : "");
     const ImVec2 textAt(at.x + session.view().markerPixels + 4, at.y - 8);
     const ImVec2 size = ImGui::CalcTextSize(text);
+    // A point the surface hides keeps a faint label: the near ones of a row of knobs stay legible.
+    const bool hidden = pointHiddenFromEye(*doc, session.camera().eye(), i);
     draw->AddRectFilled(ImVec2(textAt.x - 3, textAt.y - 1),
                         ImVec2(textAt.x + size.x + 3, textAt.y + size.y + 1),
-                        IM_COL32(15, 17, 20, 190), 3.0f);
-    draw->AddText(textAt, toU32(typeColor(p.type)), text);
+                        IM_COL32(15, 17, 20, hidden ? 60 : 190), 3.0f);
+    draw->AddText(textAt, toU32(typeColor(p.type), hidden ? 0.35f : 1.0f), text);
   }
 }
 
