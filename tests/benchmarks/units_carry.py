@@ -3,10 +3,11 @@
 a source (repository: the id's part before "__") and the other objects of that source:
 none (each object shows its own size guess), always (the source's units replace the guess),
 unless_sure (they replace it unless only one unit fits the object's size). An object needs an
-action where the units it shows are off the curated ones by more than 1.5x; the curator then sets
+action where the units it shows are off the curated ones by more than TOLERANCE (a ratio, default
+1.5: `sagrid eval --units`'s "right"; 1.001 is the replayed curator's); the curator then sets
 the curated units, which become the source's. Objects are taken in id order, as the GUI's queue.
 
-  tests/benchmarks/units_carry.py PRED TRUTH
+  tests/benchmarks/units_carry.py PRED TRUTH [TOLERANCE]
 PRED: an `annotate --out` folder (labels with object.meters_per_unit_guess); TRUTH: curated
 <id>/labels.json folders (object.meters_per_unit, else metres)."""
 import json
@@ -14,9 +15,15 @@ import sys
 from pathlib import Path
 
 
+TOLERANCE = 1.5
+
+
 def main():
-    if len(sys.argv) != 3:
+    global TOLERANCE
+    if len(sys.argv) not in (3, 4):
         sys.exit(__doc__)
+    if len(sys.argv) == 4:
+        TOLERANCE = float(sys.argv[3])
     guesses = {}
     for f in Path(sys.argv[1]).glob("*/labels.json"):
         o = json.loads(f.read_text())["object"]
@@ -36,14 +43,23 @@ def main():
         print("no guess for", ", ".join(missing))
 
     def off(a, b):
-        return max(a, b) / min(a, b) > 1.5
+        return max(a, b) / min(a, b) > TOLERANCE
 
-    for rule in ("none", "always", "unless_sure"):
+    def carries(rule, carried, guess, sure):
+        if rule == "always":
+            return True
+        if rule == "unless_sure":
+            return not sure
+        if rule == "unless_sure_and_far":  # a sure guess more than 2x from the source's units
+            return not sure or max(carried, guess) / min(carried, guess) <= 2.0
+        return False
+
+    for rule in ("none", "always", "unless_sure", "unless_sure_and_far"):
         carried, needed = {}, []
         for i in sorted(own):
             shown, sure = own[i]
             source = i.split("__")[0]
-            if source in carried and (rule == "always" or (rule == "unless_sure" and not sure)):
+            if source in carried and carries(rule, carried[source], shown, sure):
                 shown = carried[source]
             if off(shown, truth[i]):
                 needed.append(i)

@@ -456,8 +456,10 @@ void Session::pollPrediction() {
     chooseNewPointType();  // a sink's first type, not the previous stove's
   }
   // The object's own guess, unless units are known; over units carried from another object of
-  // its source where only one unit fits its size (see carryCuratedUnits).
-  if (result.units && (!m_document->unitsKnown() || (m_unitsCarried && result.units->sure))) {
+  // its source where only one unit fits its size, far from them (see carryCuratedUnits).
+  if (result.units && (!m_document->unitsKnown() ||
+                       (m_unitsCarried &&
+                        carriedUnitsDisagree(m_document->metersPerUnit(), *result.units)))) {
     m_document->setUnitGuess(*result.units);
     m_unitsCarried = false;
   }

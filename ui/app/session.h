@@ -35,6 +35,10 @@ struct ViewportRect {
   }
 };
 
+// Units a curator set on another object of the source are not shown over the object's own size
+// guess where only one unit fits its size and it is more than 2x from them (session_units.cpp).
+bool carriedUnitsDisagree(double carried, const UnitGuess& own);
+
 class Session {
  public:
   explicit Session(std::filesystem::path recentFilesPath = {});

@@ -84,7 +84,7 @@ TEST(SessionUnits, TypedUnitsAreOneStepAndCarryToTheirSourcesGuessedObjects) {
   EXPECT_NEAR(session.document()->metersPerUnit(), 0.69, 1e-6);
 }
 
-TEST(SessionUnits, AGuessOnlyOneUnitFitsIsNotReplacedByTheSourcesUnits) {
+TEST(SessionUnits, ASureGuessFarFromTheSourcesUnitsIsNotReplacedByThem) {
   const fs::path dir = test::freshTempDir() / "queue";
   writeObject(dir / "a_microwave", "someone/kit");
   writeObject(dir / "b_fridge", "someone/kit", /*sure=*/true);
@@ -98,6 +98,12 @@ TEST(SessionUnits, AGuessOnlyOneUnitFitsIsNotReplacedByTheSourcesUnits) {
   EXPECT_FLOAT_EQ(session.document()->metersPerUnit(), 1.0f);
   session.openEntry(2);  // its guess is one of several: the source's units
   EXPECT_NEAR(session.document()->metersPerUnit(), 0.18, 1e-6);
+  // A kit's scale within 2x of a sure metres guess is the kit's: carried.
+  ASSERT_TRUE(session.setUnits(0.69));
+  session.openEntry(1);
+  EXPECT_NEAR(session.document()->metersPerUnit(), 0.69, 1e-6);
+  session.openEntry(0);
+  ASSERT_TRUE(session.setUnits(0.18));
 
   // A new object, opened before its prediction: the source's units until the prediction's own
   // guess says only metres fit.
