@@ -363,6 +363,15 @@ void Session::frameObject() {
   if (m_document) m_camera.frame(m_document->mesh().bounds());
 }
 
+void Session::viewFrom(ViewSide side) {
+  if (!m_document) return;
+  constexpr float kHalfPi = 1.5707963f;
+  const float yaw = side == ViewSide::Right ? 0.0f : -kHalfPi;
+  const float pitch = side == ViewSide::Top ? kHalfPi : 0.0f;
+  m_camera.frameFrom(m_document->mesh().bounds(), yaw, pitch);
+  noteLook("view");
+}
+
 void Session::frameSelection() {
   if (!m_document) return;
   const int selected = m_document->selected();

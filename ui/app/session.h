@@ -103,6 +103,10 @@ class Session {
 
   // View -----------------------------------------------------------------------------------------
   void frameObject();
+  // The whole object from above, the front (-y) or the right (+x): keypad 7, 1, 3 and the View
+  // menu (a top view took four to six arrow presses).
+  enum class ViewSide { Top, Front, Right };
+  void viewFrom(ViewSide side);
   // F: a close-up of the selected point (a tap on a 2 m counter fills the view); pressed again,
   // or with nothing selected, the whole object.
   void frameSelection();

@@ -26,6 +26,7 @@ const std::vector<ShortcutHelp>& shortcutHelp() {
       {"N / P", "next / previous object"},
       {"S", "skip object"},
       {"F", "close-up of the selected point; again (or none selected): the whole object"},
+      {"Keypad 7 / 1 / 3", "the whole object from above / the front / the right"},
       {"W", "wireframe"},
       {"G", "plain grey: the mesh without its colours (a black model's shape)"},
       {"T", "controls turned as the exports turn them (a knob's part seen moving) / as modelled"},
@@ -106,6 +107,15 @@ bool handleShortcuts(const std::vector<InputEvent>& events, Session& session,
         break;
       case GLFW_KEY_W:
         session.view().wireframe = !session.view().wireframe;
+        break;
+      case GLFW_KEY_KP_7:
+        session.viewFrom(Session::ViewSide::Top);
+        break;
+      case GLFW_KEY_KP_1:
+        session.viewFrom(Session::ViewSide::Front);
+        break;
+      case GLFW_KEY_KP_3:
+        session.viewFrom(Session::ViewSide::Right);
         break;
       case GLFW_KEY_G:
         session.view().plainShading = !session.view().plainShading;

@@ -50,6 +50,9 @@ bool drawMainMenu(Session& session, FileBrowser& browser) {
     ImGui::MenuItem("Mesh", nullptr, &v.showMesh);
     ImGui::MenuItem("Wireframe", "W", &v.wireframe);
     ImGui::MenuItem("Plain grey", "G", &v.plainShading);
+    if (ImGui::MenuItem("From above", "Keypad 7")) session.viewFrom(Session::ViewSide::Top);
+    if (ImGui::MenuItem("From the front", "Keypad 1")) session.viewFrom(Session::ViewSide::Front);
+    if (ImGui::MenuItem("From the right", "Keypad 3")) session.viewFrom(Session::ViewSide::Right);
     bool turned = v.controlTurn != 0.0f;
     if (ImGui::MenuItem("Controls turned", "T", &turned)) v.controlTurn = turned ? kPreviewTurn : 0.0f;
     ImGui::MenuItem("Distance field", "V", &v.field.visible);

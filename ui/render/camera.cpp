@@ -20,6 +20,13 @@ void Camera::frame(const Eigen::AlignedBox3f& bounds) {
   m_pitch = 0.45f;
 }
 
+void Camera::frameFrom(const Eigen::AlignedBox3f& bounds, float yaw, float pitch) {
+  if (bounds.isEmpty()) return;
+  frame(bounds);
+  m_yaw = yaw;
+  m_pitch = std::clamp(pitch, -kMaxPitch, kMaxPitch);
+}
+
 void Camera::set(const Eigen::Vector3f& target, float distance, float yaw, float pitch) {
   m_target = target;
   m_distance = distance;

@@ -21,6 +21,9 @@ class Camera {
 
   // Looks at the box centre from the default three-quarter view, far enough to see all of it.
   void frame(const Eigen::AlignedBox3f& bounds);
+  // The whole box seen from one side: yaw about z, pitch above the horizon (straight down is
+  // clamped just short of it).
+  void frameFrom(const Eigen::AlignedBox3f& bounds, float yaw, float pitch);
   void orbit(float deltaYawRadians, float deltaPitchRadians);
   void pan(float dxPixels, float dyPixels);  // moves the target with the screen
   void zoom(float steps);                    // positive = closer

@@ -282,6 +282,27 @@ TEST(Interaction, SwitchingToNoneDropsTheOldCategorysFieldsWithItsPoints) {
   EXPECT_TRUE(s.document().predictedFields().empty());
 }
 
+TEST(Interaction, KeypadKeysShowTheWholeObjectFromAboveTheFrontAndTheRight) {
+  const auto dir = sagrid::test::freshTempDir();
+  ScriptedApp s(dir);
+  s.key(GLFW_KEY_KP_7);
+  EXPECT_GT(s.app->session().camera().pitch(), 1.5f);  // straight down, all but
+  s.key(GLFW_KEY_KP_1);
+  EXPECT_NEAR(s.app->session().camera().pitch(), 0.0f, 1e-6f);
+  EXPECT_NEAR(s.app->session().camera().yaw(), -1.5707963f, 1e-6f);
+  EXPECT_LT(s.app->session().camera().eye().y(), -0.5f);  // in front of the object (-y)
+  s.key(GLFW_KEY_KP_3);
+  EXPECT_GT(s.app->session().camera().eye().x(), 0.5f);
+  // Each shows the whole object: the plate's corners are on screen.
+  Eigen::Vector2f pixel;
+  s.key(GLFW_KEY_KP_7);
+  for (const Eigen::Vector3f corner : {Eigen::Vector3f(-0.5f, -0.5f, 0), Eigen::Vector3f(0.5f, 0.5f, 0)}) {
+    ASSERT_TRUE(s.app->session().camera().project(corner, pixel));
+    EXPECT_GE(pixel.x(), 0.0f);
+    EXPECT_LE(pixel.x(), float(s.app->session().camera().width()));
+  }
+}
+
 TEST(Interaction, HelpOverlayListsEveryShortcutKey) {
   // The overlay is generated from the same table the handler documents; spot-check key entries.
   bool undo = false, accept = false;
