@@ -5,7 +5,8 @@ nearest first (in metres, by each object's meters_per_unit), the points only one
 
   tests/benchmarks/label_agreement.py A B   # A, B: folders of <object>/labels.json (same folder names)
 
-Prints one row per object and the totals; objects are paired by folder name."""
+Prints one row per object, the objects only one side has (by category) and the totals; objects
+are paired by folder name."""
 import json
 import math
 import statistics
@@ -71,6 +72,15 @@ def main():
         mx = f"{100 * max(d):.1f}" if d else ""
         print(f"| {name} | {ca} / {cb} | {len(d)} | {med} | {mx} | {na} | {nb} |")
     print()
+    for side, mine, other in (("A", a, b), ("B", b, a)):
+        alone = sorted(set(mine) - set(other))
+        if alone:
+            cats = {}
+            for name in alone:
+                c = mine[name].get("object", {}).get("category", "")
+                cats[c] = cats.get(c, 0) + 1
+            print(f"objects only in {side}: {len(alone)} (" +
+                  ", ".join(f"{c or 'no category'} {n}" for c, n in sorted(cats.items())) + ")")
     print(f"objects {len(common)}, same category {same_cat}; pairs {len(all_d)}, median "
           f"{100 * statistics.median(all_d):.1f} cm, within 2 cm {sum(x <= 0.02 for x in all_d)}, "
           f"within 5 cm {sum(x <= 0.05 for x in all_d)}; only in A {only_a}, only in B {only_b}")

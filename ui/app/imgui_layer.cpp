@@ -104,21 +104,24 @@ void ImGuiLayer::beginFrame(const std::vector<InputEvent>& events, double deltaS
   if (w > 0 && h > 0)
     io.DisplayFramebufferScale = ImVec2(float(fw) / float(w), float(fh) / float(h));
   io.DeltaTime = deltaSeconds > 0 ? float(deltaSeconds) : 1.0f / 60.0f;
-  std::vector<InputEvent> queue = std::move(m_pending);
+  // The held-back events first, then this frame's; one buffer kept across frames (no allocation
+  // per frame once it has grown).
+  m_feed.swap(m_pending);
   m_pending.clear();
-  queue.insert(queue.end(), events.begin(), events.end());
+  m_feed.insert(m_feed.end(), events.begin(), events.end());
   bool pressedThisFrame[5] = {};
-  for (std::size_t i = 0; i < queue.size(); ++i) {
-    const InputEvent& e = queue[i];
+  for (std::size_t i = 0; i < m_feed.size(); ++i) {
+    const InputEvent& e = m_feed[i];
     if (e.kind == InputEvent::Kind::MouseButton && e.button >= 0 && e.button < 5) {
       if (!e.pressed && pressedThisFrame[e.button]) {
-        m_pending.assign(queue.begin() + std::ptrdiff_t(i), queue.end());
+        m_pending.assign(m_feed.begin() + std::ptrdiff_t(i), m_feed.end());
         break;
       }
       if (e.pressed) pressedThisFrame[e.button] = true;
     }
     apply(e);
   }
+  m_feed.clear();
   ImGui_ImplOpenGL3_NewFrame();
   ImGui::NewFrame();
 }

@@ -29,7 +29,8 @@ class ImGuiLayer {
   void apply(const InputEvent& e);
 
   GlContext& m_context;
-  std::vector<InputEvent> m_pending;
+  std::vector<InputEvent> m_pending;  // held back for the next frame
+  std::vector<InputEvent> m_feed;     // this frame's events as fed (reused)
 };
 
 }  // namespace sagrid::ui

@@ -195,13 +195,13 @@ void Session::switchCategory(const std::string& category) {
   }
   const bool allPredicted = std::all_of(m_document->points().begin(), m_document->points().end(),
                                         [](const AffordancePoint& p) { return p.status == AffordanceStatus::Predicted; });
+  const bool dropsPoints = allPredicted && !m_document->points().empty();
   std::vector<std::unique_ptr<Command>> steps;
   steps.push_back(std::make_unique<SetCategoryCommand>(category));
-  if (allPredicted && !m_document->points().empty()) {
+  if (dropsPoints) {
     steps.push_back(std::make_unique<ReplacePointsCommand>(std::vector<AffordancePoint>{},
                                                            "drop the points of the old category"));
   }
-  const bool dropsPoints = steps.size() > 1;
   execute(std::make_unique<CommandGroup>("Category " + category, std::move(steps)));
   // The old category's fields go with its points (the viewport showed them over an object left
   // with none); a new prediction brings its own.
