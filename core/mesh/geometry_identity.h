@@ -1,0 +1,43 @@
+// The identity of a mesh's geometry alone: two files whose triangles lie in the same places are
+// the same object to a curator (colour variants of a library's model, the same washbasin with
+// another material), whatever their materials, colours, textures, UVs or file format. The GUI
+// carries a curated object's points to its same-geometry twins (ui/app/session_twin.cpp);
+// `sagrid info --geometry-id` prints it.
+//
+// What it hashes: every triangle as the three corners' positions in the mesh file's own frame (the
+// frame labels are written in, so equal identities mean the same label coordinates), each
+// coordinate rounded to a cell of 2^-14 of the object's largest extent (rounded up to a power of
+// two, so the cell itself does not move with float noise in the extent): 0.06 mm on a 1 m stove.
+//   - `shape` ignores the order of vertices and triangles and how vertices are shared or split
+//     (exporters split vertices at UV seams and group triangles by material, so neither is part
+//     of the geometry): each triangle starts at its smallest corner (keeping its winding) and the
+//     triangles are sorted.
+//   - `triangleOrder` also keeps the triangles' order: where it agrees, triangle indices (a
+//     control's part in labels.json) mean the same faces in both meshes.
+// Rounding absorbs the noise of re-encoding only where a coordinate does not straddle a cell
+// boundary, so exporters that jitter many coordinates can hide a twin; the error goes the safe way
+// (a missed twin is reviewed as usual, never a wrong one carried).
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "core/mesh/mesh.h"
+
+namespace sagrid {
+
+struct GeometryIdentity {
+  std::string shape;          // 32 hex digits (sha256 prefix)
+  std::string triangleOrder;  // 32 hex digits
+
+  bool operator==(const GeometryIdentity& other) const {
+    return shape == other.shape && triangleOrder == other.triangleOrder;
+  }
+};
+
+// Nullopt for a mesh with no triangle or no extent (nothing to be identical to: two failed or
+// empty imports are not twins). Throws InvalidArgument for a triangle naming a vertex the mesh
+// lacks or a position that is not finite.
+std::optional<GeometryIdentity> geometryIdentity(const Mesh& mesh);
+
+}  // namespace sagrid
