@@ -64,7 +64,8 @@ const std::vector<CurationAction>& allCurationActions() {
   return all;
 }
 
-std::string CurationLogWriter::record(const std::string& object, CurationAction action, const std::string& detail) {
+std::string CurationLogWriter::record(const std::string& object, CurationAction action, const std::string& detail,
+                                      const std::string& carriedFrom) {
   if (m_failed || m_path.empty()) return {};
   const double now =
       std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch()).count();
@@ -74,6 +75,7 @@ std::string CurationLogWriter::record(const std::string& object, CurationAction 
                             {"action", toString(action)},
                             {"detail", detail}};
   if (m_replayed) line["replayed"] = true;
+  if (!carriedFrom.empty()) line["carried_from"] = carriedFrom;
   std::ofstream out(m_path, std::ios::app | std::ios::binary);
   out << line.dump() << '\n';
   out.flush();
@@ -106,7 +108,8 @@ std::vector<CurationEvent> readCurationLog(const std::filesystem::path& path) {
     if (!std::isfinite(seconds)) throw FileError(path, where + " has a time that is not finite");
     events.push_back({seconds, j["object"].get<std::string>(), *action,
                       j.contains("detail") && j["detail"].is_string() ? j["detail"].get<std::string>() : "",
-                      j.value("replayed", false)});
+                      j.value("replayed", false),
+                      j.contains("carried_from") && j["carried_from"].is_string() ? j["carried_from"].get<std::string>() : ""});
   }
   return events;
 }

@@ -1,5 +1,6 @@
 // The curation log (issue 41): every action a curator takes in the GUI, appended as one JSON line
-// to a log beside the dataset ({"time", "seconds", "object", "action", "detail"}), so curator
+// to a log beside the dataset ({"time", "seconds", "object", "action", "detail"}, and on an open
+// whose points were carried from an object of the same geometry "carried_from"), so curator
 // throughput is measured from what people did, not estimated from evaluations. The GUI writes it
 // (ui/app/session.cpp); `sagrid eval --curation LOG` reads it (curation_report.h).
 #pragma once
@@ -42,6 +43,8 @@ struct CurationEvent {
   CurationAction action = CurationAction::Open;
   std::string detail;  // e.g. the command's description
   bool replayed = false;  // taken by `sagrid replay-curation`, not a person: its times are the machine's
+  // An open whose points were carried from this object of the same geometry, not predicted.
+  std::string carriedFrom;
 };
 
 // Appends events to a log file, one flushed line each, so a crash loses at most the line being
@@ -51,8 +54,10 @@ class CurationLogWriter {
  public:
   explicit CurationLogWriter(std::filesystem::path path, bool replayed = false)
       : m_path(std::move(path)), m_replayed(replayed) {}
-  // Returns an error message the first time a write fails, else empty.
-  std::string record(const std::string& object, CurationAction action, const std::string& detail = "");
+  // Returns an error message the first time a write fails, else empty. `carriedFrom`: see
+  // CurationEvent (written only when not empty).
+  std::string record(const std::string& object, CurationAction action, const std::string& detail = "",
+                     const std::string& carriedFrom = "");
   const std::filesystem::path& path() const { return m_path; }
 
  private:

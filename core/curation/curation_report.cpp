@@ -69,6 +69,7 @@ CurationReport curationReport(const std::vector<CurationEvent>& events, const Kl
       order.push_back(e.object);
     }
     ++o.actions[e.action];
+    if (e.action == CurationAction::Open && !e.carriedFrom.empty()) o.carriedFrom = e.carriedFrom;
     if (isEdit(e.action)) ++o.edits;
     if (e.action == CurationAction::AcceptAll || e.action == CurationAction::Skip) finished[e.object] = true;
     o.klmSeconds += klmSeconds(e.action, ops);
@@ -87,6 +88,7 @@ CurationReport curationReport(const std::vector<CurationEvent>& events, const Kl
       if (action != CurationAction::Open && action != CurationAction::Look) keys += n;
     o.oneKey = keys == 1 && o.actions.count(CurationAction::AcceptAll);
     for (const auto& [action, n] : o.actions) report.actions[action] += n;
+    if (!o.carriedFrom.empty()) ++report.carriedObjects;
     report.objects.push_back(o);
   }
   const double n = static_cast<double>(report.objects.size());
@@ -114,6 +116,9 @@ std::string curationMarkdown(const CurationReport& report, std::size_t slowest) 
   md += line;
   if (report.replayed)
     md += "Replayed by `sagrid replay-curation`: the logged times are the machine's; the KLM times are a person's.\n\n";
+  if (report.carriedObjects > 0)
+    md += std::to_string(report.carriedObjects) +
+          " object(s) opened with the points of a curated object of the same geometry, not a prediction.\n\n";
   md += "Actions:";
   for (const CurationAction a : allCurationActions()) {
     const auto it = report.actions.find(a);
@@ -148,6 +153,7 @@ nlohmann::json toJson(const CurationReport& report) {
   for (const auto& o : report.objects) {
     objects.push_back({{"object", o.object}, {"actions", counts(o.actions)}, {"edits", o.edits},
                        {"one_key", o.oneKey}, {"logged_seconds", o.loggedSeconds}, {"klm_seconds", o.klmSeconds}});
+    if (!o.carriedFrom.empty()) objects.back()["carried_from"] = o.carriedFrom;
   }
   return {{"objects", objects},
           {"actions", counts(report.actions)},
@@ -158,6 +164,7 @@ nlohmann::json toJson(const CurationReport& report) {
           {"objects_per_hour_logged", report.objectsPerHourLogged},
           {"objects_per_hour_klm", report.objectsPerHourKlm},
           {"replayed", report.replayed},
+          {"carried_objects", report.carriedObjects},
           {"klm_operators", {{"K", report.operators.keystroke}, {"P", report.operators.point},
                              {"B", report.operators.button}, {"M", report.operators.mental}}}};
 }

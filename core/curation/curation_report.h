@@ -37,6 +37,7 @@ struct ObjectCuration {
   bool oneKey = false;  // nothing but looking and one accept-all
   double loggedSeconds = 0;
   double klmSeconds = 0;
+  std::string carriedFrom;  // opened with the points of this object of the same geometry
 };
 
 struct CurationReport {
@@ -50,6 +51,7 @@ struct CurationReport {
   double objectsPerHourLogged = 0;
   double objectsPerHourKlm = 0;
   bool replayed = false;  // every event replayed: the logged times are the machine's, not a person's
+  int carriedObjects = 0;  // objects opened with the points of another of the same geometry
 };
 
 // Objects the log shows being finished (accept-all or skip) or edited; objects only opened and

@@ -3,6 +3,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include "core/common/atomic_file.h"
 #include "core/common/error.h"
 #include "support/import_errors.h"
 #include "support/test_paths.h"
@@ -75,6 +76,33 @@ TEST(CurationReport, AReplayedLogSaysItsTimesAreTheMachines) {
   const CurationReport report = curationReport(readCurationLog(path));
   EXPECT_TRUE(report.replayed);
   EXPECT_THAT(curationMarkdown(report), ::testing::HasSubstr("the logged times are the machine's"));
+}
+
+TEST(CurationReport, AnOpenWithCarriedPointsIsToldApart) {
+  const auto path = test::freshTempDir() / "carried.jsonl";
+  CurationLogWriter writer(path);
+  writer.record("basin_white", CurationAction::Open, "white.glb");
+  writer.record("basin_white", CurationAction::Drag, "Move point");
+  writer.record("basin_white", CurationAction::AcceptAll);
+  writer.record("basin_blue", CurationAction::Open, "blue.glb", "basin_white");
+  writer.record("basin_blue", CurationAction::AcceptAll);
+  // The line carries the field; a reader that knows nothing of it still reads the open.
+  const std::string text = readFileBytes(path);
+  EXPECT_THAT(text, ::testing::HasSubstr(R"("carried_from":"basin_white")"));
+  const std::vector<CurationEvent> events = readCurationLog(path);
+  ASSERT_EQ(events.size(), 5u);
+  EXPECT_EQ(events[0].carriedFrom, "");
+  EXPECT_EQ(events[3].action, CurationAction::Open);
+  EXPECT_EQ(events[3].carriedFrom, "basin_white");
+  const CurationReport report = curationReport(events);
+  ASSERT_EQ(report.objects.size(), 2u);
+  EXPECT_EQ(report.objects[0].carriedFrom, "");
+  EXPECT_EQ(report.objects[1].carriedFrom, "basin_white");
+  EXPECT_TRUE(report.objects[1].oneKey);
+  EXPECT_EQ(report.carriedObjects, 1);
+  EXPECT_EQ(toJson(report)["objects"][1]["carried_from"], "basin_white");
+  EXPECT_FALSE(toJson(report)["objects"][0].contains("carried_from"));
+  EXPECT_THAT(curationMarkdown(report), ::testing::HasSubstr("1 object(s) opened with the points of a curated object"));
 }
 
 }  // namespace
