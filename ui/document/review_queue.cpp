@@ -74,6 +74,17 @@ std::vector<fs::path> meshesIn(const fs::path& dir) {
   return found;
 }
 
+// An entry's "geometry" in the state file; none where absent or not two strings (an identity is
+// only ever compared, so a damaged one just finds no twin).
+std::optional<GeometryIdentity> geometryIn(const nlohmann::json& item) {
+  const auto it = item.find("geometry");
+  if (it == item.end() || !it->is_object()) return std::nullopt;
+  const auto shape = it->find("shape"), order = it->find("triangle_order");
+  if (shape == it->end() || order == it->end() || !shape->is_string() || !order->is_string())
+    return std::nullopt;
+  return GeometryIdentity{shape->get<std::string>(), order->get<std::string>()};
+}
+
 QueueEntry entryFor(const fs::path& mesh) {
   QueueEntry entry;
   entry.mesh = fs::absolute(mesh).lexically_normal();
@@ -115,6 +126,24 @@ void ReviewQueue::orderLeastSureFirst() {
   save();
 }
 
+void ReviewQueue::setGeometry(std::size_t index, std::optional<GeometryIdentity> geometry) {
+  if (m_entries.at(index).geometry == geometry) return;
+  m_entries.at(index).geometry = std::move(geometry);
+  save();
+}
+
+std::vector<std::size_t> ReviewQueue::curatedTwinsOf(std::size_t index) const {
+  std::vector<std::size_t> twins;
+  const auto& geometry = m_entries.at(index).geometry;
+  if (!geometry) return twins;
+  for (std::size_t i = 0; i < m_entries.size(); ++i) {
+    const QueueEntry& e = m_entries[i];
+    const bool curated = e.state == QueueState::Accepted || e.state == QueueState::Edited;
+    if (i != index && curated && e.geometry && e.geometry->shape == geometry->shape) twins.push_back(i);
+  }
+  return twins;
+}
+
 std::vector<std::size_t> ReviewQueue::unreviewedAtOrAbove(double threshold) const {
   std::vector<std::size_t> out;
   for (std::size_t i = 0; i < m_entries.size(); ++i)
@@ -149,7 +178,9 @@ void ReviewQueue::loadState() {
     for (const auto& item : json.value("objects", nlohmann::json::array())) {
       const fs::path mesh = (base / item.at("mesh").get<std::string>()).lexically_normal();
       for (auto& entry : m_entries) {
-        if (entry.mesh == mesh) entry.state = parseQueueState(item.value("state", ""));
+        if (entry.mesh != mesh) continue;
+        entry.state = parseQueueState(item.value("state", ""));
+        entry.geometry = geometryIn(item);
       }
     }
     const std::string currentMesh = json.value("current", "");
@@ -170,6 +201,9 @@ void ReviewQueue::save() const {
   for (const auto& entry : m_entries) {
     objects.push_back({{"mesh", entry.mesh.lexically_relative(base).generic_string()},
                        {"state", toString(entry.state)}});
+    if (entry.geometry)
+      objects.back()["geometry"] = {{"shape", entry.geometry->shape},
+                                    {"triangle_order", entry.geometry->triangleOrder}};
   }
   nlohmann::json json = {{"schema", "sagrid.review-queue/1"}, {"objects", objects}};
   json["current"] =

@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "core/mesh/geometry_identity.h"
+
 namespace sagrid::ui {
 
 enum class QueueState { Unreviewed, Accepted, Edited, Skipped };
@@ -21,6 +23,9 @@ struct QueueEntry {
   std::string error;  // last load error, shown in the queue (the queue goes on)
   // P(right with one key) of its prediction (labels' prediction.object_confidence), when predicted.
   std::optional<double> confidence;
+  // Its mesh's geometry identity, known once the object was opened (kept in the state file), so
+  // an object opened later finds its curated same-geometry twins without importing them.
+  std::optional<GeometryIdentity> geometry;
 };
 
 // The object confidence a labels.json records (prediction.object_confidence); nullopt when the file
@@ -58,6 +63,9 @@ class ReviewQueue {
   void setState(std::size_t index, QueueState state);  // saves
   void setError(std::size_t index, std::string error);
   void setConfidence(std::size_t index, std::optional<double> confidence);
+  void setGeometry(std::size_t index, std::optional<GeometryIdentity> geometry);  // saves on change
+  // The other entries of `index`'s shape (GeometryIdentity::shape) a curator accepted or edited.
+  std::vector<std::size_t> curatedTwinsOf(std::size_t index) const;
   // Least sure first: objects without a prediction, then by increasing confidence (stable); the
   // current object stays current. Saves.
   void orderLeastSureFirst();

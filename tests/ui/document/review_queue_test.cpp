@@ -54,6 +54,31 @@ TEST(ReviewQueue, ResumesStatesAndPosition) {
   EXPECT_EQ(resumed.reviewedCount(), 2u);
 }
 
+TEST(ReviewQueue, KeepsGeometryAndFindsOnlyCuratedTwinsOfTheSameShape) {
+  const auto dir = test::freshTempDir();
+  for (const char* id : {"o1", "o2", "o3", "o4", "o5"}) touch(dir / id / "mesh.obj");
+  const GeometryIdentity basin{"aaaa", "0001"}, basinReordered{"aaaa", "0002"}, stove{"bbbb", "0003"};
+  {
+    ReviewQueue queue = ReviewQueue::openFolder(dir);
+    queue.setGeometry(0, basin);
+    queue.setGeometry(1, basinReordered);
+    queue.setGeometry(2, stove);
+    queue.setGeometry(3, basin);
+    queue.setState(1, QueueState::Edited);
+    queue.setState(2, QueueState::Accepted);
+    queue.setState(3, QueueState::Skipped);  // seen, not curated
+    EXPECT_EQ(queue.curatedTwinsOf(0), std::vector<std::size_t>{1});
+    EXPECT_TRUE(queue.curatedTwinsOf(4).empty());  // never opened: no geometry yet
+  }
+  const ReviewQueue resumed = ReviewQueue::openFolder(dir);
+  ASSERT_TRUE(resumed.entry(1).geometry);
+  EXPECT_EQ(*resumed.entry(1).geometry, basinReordered);
+  EXPECT_FALSE(resumed.entry(4).geometry);
+  EXPECT_EQ(resumed.curatedTwinsOf(0), std::vector<std::size_t>{1});
+  EXPECT_EQ(resumed.curatedTwinsOf(3), std::vector<std::size_t>{1});
+  EXPECT_TRUE(resumed.curatedTwinsOf(1).empty());  // its twins are not curated
+}
+
 TEST(ReviewQueue, DamagedStateFileStartsOver) {
   const auto dir = test::freshTempDir();
   touch(dir / "o1" / "mesh.obj");
