@@ -14,6 +14,7 @@
 #include "ui/document/object_loader.h"
 #include "ui/document/point_commands.h"
 #include "ui/document/point_copies.h"
+#include "ui/document/twin_points.h"
 #include "ui/document/up_axis_commands.h"
 
 namespace {
@@ -95,13 +96,15 @@ void Session::openEntry(int index) {
     return;
   }
   logger()->info("opened {} ({} of {})", m_document->displayName(), i + 1, m_queue.size());
-  logAction(CurationAction::Open, entry.mesh.filename().string());
-  carryCuratedUnits();
+  const std::string carriedFrom = carryTwinPoints();
+  logAction(CurationAction::Open, entry.mesh.filename().string(), carriedFrom);
+  if (carriedFrom.empty()) carryCuratedUnits();  // a twin's units are this object's own
+  else m_unitsCarried = false;
   chooseNewPointType();
   applyDefaultFieldSettings();
   frameObject();
   addModeArmed = false;
-  if (autoPredict) runPrediction();
+  if (autoPredict && carriedFrom.empty()) runPrediction();
 }
 
 bool Session::next() {
@@ -143,12 +146,16 @@ void Session::applyCommand(std::unique_ptr<Command> command, bool logged) {
 
 void Session::undo() {
   if (!m_document) return;
+  const bool carried = pointsCarriedFrom(m_document->labels()).has_value();
   try {
     if (m_document->undo()) logAction(CurationAction::Undo);
   } catch (const Error& e) {
     reportError(e.what());
   }
   updateQueueState();
+  // The twin's points undone from an object that had none: the model's prediction instead.
+  if (carried && !pointsCarriedFrom(m_document->labels()) && m_document->points().empty() && autoPredict)
+    runPrediction();
 }
 
 void Session::redo() {
@@ -166,11 +173,11 @@ void Session::setCurationLog(const fs::path& path, bool replayed) {
   else m_curationLog.emplace(path, replayed);
 }
 
-void Session::logAction(CurationAction action, const std::string& detail) {
+void Session::logAction(CurationAction action, const std::string& detail, const std::string& carriedFrom) {
   if (!m_curationLog || !m_document) return;
   const std::string& id = m_document->labels().object.id;
   const std::string object = id.empty() ? m_document->meshPath().stem().string() : id;
-  const std::string problem = m_curationLog->record(object, action, detail);
+  const std::string problem = m_curationLog->record(object, action, detail, carriedFrom);
   if (!problem.empty()) reportError(problem);
 }
 
@@ -488,9 +495,10 @@ void Session::pollPrediction() {
   // Predictions fill an object with no points yet; existing (reviewed) points are never replaced.
   if (m_document->points().empty() && !result.points.empty()) {
     try {
-      // With edits in the history (e.g. a turned up axis) the prediction is one more undoable
-      // step; otherwise it is the starting point of the review.
-      if (m_document->historySize() > 0) {
+      // With edits applied (e.g. a turned up axis) the prediction is one more undoable step;
+      // otherwise (none, or all undone: a twin's carried points) it is the starting point of the
+      // review.
+      if (m_document->canUndo()) {
         m_document->execute(
             std::make_unique<ReplacePointsCommand>(std::move(result.points), "predicted points"));
       } else {

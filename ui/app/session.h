@@ -47,6 +47,8 @@ class Session {
   void openPaths(const std::vector<std::filesystem::path>& paths);  // replaces the queue
   void addPaths(
       const std::vector<std::filesystem::path>& paths);  // drag-and-drop: adds, opens first
+  // An object without curated labels whose geometry a curated object of the queue shares opens
+  // with that object's points, category and units, to confirm (session_twin.cpp), not predicted.
   void openEntry(int index);
   // One object with an explicit labels file (sagrid render --labels, tests).
   void openObject(const std::filesystem::path& mesh, const std::filesystem::path& labels);
@@ -164,13 +166,17 @@ class Session {
 
   void updateQueueState();
   void applyDefaultFieldSettings();
-  void logAction(CurationAction action, const std::string& detail = "");
+  void logAction(CurationAction action, const std::string& detail = "", const std::string& carriedFrom = "");
   void applyCommand(std::unique_ptr<Command> command, bool logged);
   // The open object's source, empty where its labels and folder name none.
   std::string sourceOfOpenObject() const;
   // On opening: units the curator set for the object's source this session, where its own are
   // only guessed (session_units.cpp).
   void carryCuratedUnits();
+  // On opening: records the object's geometry identity in the queue and, where the object has no
+  // curated labels yet, starts it from the labels of a curated object of the same geometry (one
+  // undoable step; session_twin.cpp). Returns that object's id, empty when nothing was carried.
+  std::string carryTwinPoints();
 
   ReviewQueue m_queue;
   std::unique_ptr<AnnotationDocument> m_document;

@@ -5,6 +5,7 @@
 
 #include "core/annotate/suggested_points.h"
 #include "core/annotate/units_record.h"
+#include "core/common/error.h"
 #include "core/common/log.h"
 #include "core/controls/control_part_edit.h"
 #include "core/geometry/surface_scene.h"
@@ -52,17 +53,18 @@ Eigen::Vector3f AnnotationDocument::toFile(const Eigen::Vector3f& viewPoint) con
   return zUpToFile(viewPoint, m_mesh->fileUp);
 }
 
-bool AnnotationDocument::unitsKnown() const {
-  const auto& object = m_labels.object.extra;
+bool unitsKnown(const ObjectLabels& labels) {
+  const auto& object = labels.object.extra;
   const bool inObject = object.is_object() && (object.contains("meters_per_unit") || object.contains("units") ||
                                                 object.contains(kUnitGuessField));
-  const bool topLevel =
-      m_labels.extra.is_object() && m_labels.extra.contains("units");  // real-dev form
+  const bool topLevel = labels.extra.is_object() && labels.extra.contains("units");  // real-dev form
   return inObject || topLevel;
 }
 
 void AnnotationDocument::execute(std::unique_ptr<Command> command) {
   const bool removes = dynamic_cast<DeletePointCommand*>(command.get()) != nullptr;
+  // A new step drops the redo branch, and with it a review start that was undone.
+  if (m_reviewStart && m_history.applied() < m_reviewStart->applied) m_reviewStart.reset();
   const std::string what = command->description();
   const Command* applied = command.get();
   m_history.execute(std::move(command), m_labels);
@@ -147,8 +149,23 @@ void AnnotationDocument::adoptPredictedPoints(std::vector<AffordancePoint> point
   m_openedPointCount = m_labels.affordances.size();
   m_removedPoint = false;
   m_history = CommandStack();
+  m_reviewStart.reset();
   m_selected = -1;
   changed();
+}
+
+void AnnotationDocument::startReviewWith(std::unique_ptr<Command> command) {
+  const std::size_t before = m_history.applied();
+  auto markStart = [&] {
+    if (m_history.applied() > before) m_reviewStart = ReviewStart{m_history.applied(), m_labels.affordances.size()};
+  };
+  try {
+    execute(std::move(command));
+  } catch (const Error&) {
+    markStart();  // applied; only its autosave failed
+    throw;
+  }
+  markStart();
 }
 
 void AnnotationDocument::save() const {
@@ -166,7 +183,9 @@ void AnnotationDocument::select(int index) {
 }
 
 bool AnnotationDocument::editedByHand() const {
-  if (m_removedPoint || m_labels.affordances.size() != m_openedPointCount) return true;
+  const bool fromStart = m_reviewStart && m_history.applied() >= m_reviewStart->applied;
+  const std::size_t startCount = fromStart ? m_reviewStart->pointCount : m_openedPointCount;
+  if (m_removedPoint || m_labels.affordances.size() != startCount) return true;
   for (const auto& p : m_labels.affordances) {
     if (p.status == AffordanceStatus::Edited || p.status == AffordanceStatus::Added) return true;
   }

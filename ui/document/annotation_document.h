@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -24,6 +25,9 @@ struct PartEditSurface;
 }
 
 namespace sagrid::ui {
+
+// Whether labels say what the mesh unit is (the curator's, a declaration's or a guess's).
+bool unitsKnown(const ObjectLabels& labels);
 
 class AnnotationDocument {
  public:
@@ -51,7 +55,7 @@ class AnnotationDocument {
   }
   float metersPerUnit() const { return m_metersPerUnit; }
   // Whether the labels say what the mesh unit is; if not, lengths are shown in "units", not "m".
-  bool unitsKnown() const;
+  bool unitsKnown() const { return ui::unitsKnown(m_labels); }
   // Records annotate's guess of the units (flagged until the curator sets them, SetUnitsCommand).
   void setUnitGuess(const UnitGuess& guess);
   // Records that the points are suggestions of `category` for a rejected object
@@ -76,6 +80,10 @@ class AnnotationDocument {
   // Predicted points for an object that has none yet: the starting point of its review (not an
   // edit, not undoable); saved at once.
   void adoptPredictedPoints(std::vector<AffordancePoint> points);
+  // Another starting point of the review, as one undoable step (the points of a curated object
+  // of the same geometry): while it stands, the review compares to it (editedByHand); undone, or
+  // dropped from the history by a later edit, the review compares to the opened points again.
+  void startReviewWith(std::unique_ptr<Command> command);
 
   // Turns the view mesh to another file up axis and rebuilds what depends on it (surface,
   // normalization, voxels; predicted fields are dropped). Labels are the caller's: this is for
@@ -121,6 +129,11 @@ class AnnotationDocument {
   std::filesystem::path m_meshPath;
   CommandStack m_history;
   std::size_t m_openedPointCount = 0;
+  struct ReviewStart {
+    std::size_t applied;  // the history's applied() just after the starting step
+    std::size_t pointCount;
+  };
+  std::optional<ReviewStart> m_reviewStart;  // see startReviewWith
   bool m_removedPoint = false;
   int m_selected = -1;
   std::uint64_t m_revision = 1;

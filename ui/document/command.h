@@ -62,6 +62,7 @@ class CommandStack {
   std::string undoDescription() const;
   std::string redoDescription() const;
   std::size_t size() const { return m_history.size(); }
+  std::size_t applied() const { return m_next; }  // commands applied (the rest can be redone)
 
  private:
   std::vector<std::unique_ptr<Command>> m_history;

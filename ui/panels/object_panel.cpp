@@ -9,6 +9,7 @@
 #include "core/mesh/mesh_import.h"
 #include "ui/app/session.h"
 #include "ui/document/mass_commands.h"
+#include "ui/document/twin_points.h"
 #include "ui/panels/panels.h"
 
 namespace sagrid::ui {
@@ -128,6 +129,12 @@ void drawObjectPanel(Session& session) {
     // A rejected object's points are its likeliest category's: one key takes them.
     if (ImGui::Button(("take suggested: " + *suggested + " (C)").c_str(), ImVec2(-1, 0)))
       session.confirmSuggestedCategory();
+  }
+  if (const auto twin = pointsCarriedFrom(doc->labels())) {
+    // Not the model's: a curated object of the same geometry gave them (A confirms them).
+    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(0.55f, 0.8f, 0.95f, 1.0f));
+    ImGui::TextWrapped("points carried from %s (same geometry)", twin->c_str());
+    ImGui::PopStyleColor();
   }
   if (!session.predictionNote().empty()) {
     ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(0.95f, 0.75f, 0.35f, 1.0f));

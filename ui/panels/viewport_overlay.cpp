@@ -8,6 +8,7 @@
 #include "ui/app/point_visibility.h"
 #include "ui/app/session.h"
 #include "ui/document/control_view.h"
+#include "ui/document/twin_points.h"
 #include "ui/panels/panels.h"
 #include "ui/render/colormap.h"
 #include "ui/render/scene_renderer.h"
@@ -195,6 +196,10 @@ void drawStatusBar(Session& session) {
   if (doc) {
     ImGui::TextDisabled("| %s | %zu points | %s", doc->displayName().c_str(), doc->points().size(),
                         doc->canUndo() ? ("undo: " + doc->undoDescription()).c_str() : "no edits");
+    ImGui::SameLine();
+  }
+  if (const auto twin = doc ? pointsCarriedFrom(doc->labels()) : std::nullopt) {
+    ImGui::TextColored(ImVec4(0.55f, 0.8f, 0.95f, 1), "| points carried from %s (same geometry)", twin->c_str());
     ImGui::SameLine();
   }
   if (session.addModeArmed) {

@@ -14,9 +14,12 @@ namespace sagrid::ui {
 namespace {
 namespace fs = std::filesystem;
 
-void writeObject(const fs::path& dir, const std::vector<AffordancePoint>& predicted) {
+// `apex`: the height of the one raised corner (objects of one geometry would start from each
+// other's curated points, ui/document/twin_points.h).
+void writeObject(const fs::path& dir, const std::vector<AffordancePoint>& predicted, float apex = 0.2f) {
   fs::create_directories(dir);
-  std::ofstream(dir / "mesh.obj") << "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 0.2\nf 1 2 3\nf 1 3 4\nf 1 2 5\n";
+  std::ofstream(dir / "mesh.obj") << "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 " << apex
+                                  << "\nf 1 2 3\nf 1 3 4\nf 1 2 5\n";
   ObjectLabels labels;
   labels.object.id = dir.filename().string();
   labels.object.mesh = "mesh.obj";
@@ -36,7 +39,7 @@ AffordancePoint at(const char* type, float x, float y) {
 TEST(CurationReplay, RightLabelsOnDiskAndThePlansActionsInTheLog) {
   const fs::path dir = test::freshTempDir();
   writeObject(dir / "queue" / "a", {at("heatsource", 0.5f, 0.5f)});
-  writeObject(dir / "queue" / "b", {at("heatsource", 0.1f, 0.1f), at("heatsource", 0.9f, 0.9f)});
+  writeObject(dir / "queue" / "b", {at("heatsource", 0.1f, 0.1f), at("heatsource", 0.9f, 0.9f)}, 0.3f);
   ObjectLabels truthA;
   truthA.object.category = "stove";
   truthA.affordances = {at("heatsource", 0.51f, 0.5f)};

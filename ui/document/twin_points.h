@@ -1,0 +1,47 @@
+// Points carried from a curated twin: an object of the same geometry
+// (core/mesh/geometry_identity.h; a colour variant, the same washbasin with another material) needs
+// the same labels, so an object with none curated yet starts from its twin's points, category and
+// units instead of the model's prediction. The points stay to confirm (status predicted: one key,
+// A, accepts them) and labels.json records where they came from: object.points_carried_from = the
+// twin's id. The Session finds the twin when an object opens (ui/app/session_twin.cpp).
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/mesh/unit_guess.h"
+#include "ui/document/command.h"
+
+namespace sagrid::ui {
+
+inline constexpr const char* kPointsCarriedFromField = "points_carried_from";
+
+// The twin the object's points were carried from, when they were.
+std::optional<std::string> pointsCarriedFrom(const ObjectLabels& labels);
+
+// The twin's points as predictions to confirm, source "carried:<twin id>". A control's record
+// names triangles by index (core/controls/control_record.h): it is kept only where both meshes
+// list their triangles in the same order; elsewhere the part is found again, as for a prediction.
+std::vector<AffordancePoint> carriedPoints(const ObjectLabels& twin, const std::string& twinId,
+                                           bool sameTriangleOrder);
+
+// One undoable step: the twin's category and points, `units` (a guess naming the twin, where the
+// object's own are not known) and the record. Undo puts the labels back as they were.
+class CarryTwinPointsCommand final : public Command {
+ public:
+  CarryTwinPointsCommand(const ObjectLabels& twin, std::string twinId, bool sameTriangleOrder,
+                         std::optional<UnitGuess> units);
+  void apply(ObjectLabels& labels) override;
+  void revert(ObjectLabels& labels) override { labels = m_before; }
+  std::string description() const override;
+
+ private:
+  std::string m_twinId;
+  std::string m_category;
+  std::vector<AffordancePoint> m_points;
+  std::optional<UnitGuess> m_units;
+  ObjectLabels m_before;
+};
+
+}  // namespace sagrid::ui
