@@ -66,6 +66,18 @@ void appendPredictedPoints(ObjectLabels& labels, const std::vector<ModelPredicti
       labels.affordances.push_back(std::move(a));
     }
 }
+
+// The named-unit guess, or the size of curated objects like it where the folder remembers them
+// and the named unit is far from it (core/annotate/size_memory.h). The decided category, rejected
+// objects as "none".
+UnitGuess unitGuessOf(const Mesh& mesh, const FeatureGrid& features, const std::string& category,
+                      const ModelSet& models) {
+  const double extent = mesh.bounds().sizes().maxCoeff();
+  const UnitGuess guess = guessMetersPerUnit(extent, category);
+  const SizeMemory* memory = models.sizeMemory();
+  return memory ? memory->refine(guess, extent, features.descriptor, category) : guess;
+}
+
 }  // namespace
 
 PredictedField predictField(const model::AffordanceModel& model, const FeatureGrid& features,
@@ -199,8 +211,7 @@ AnnotationResult annotateMeshFile(const fs::path& meshFile, const std::string& i
   if (const auto declared = declaredMetersPerUnit(meshFile))
     recordDeclaredUnits(r.labels.object, *declared, "provenance.json");
   else
-    recordUnitGuess(r.labels.object,
-                    guessMetersPerUnit(mesh.bounds().sizes().maxCoeff(), r.category));
+    recordUnitGuess(r.labels.object, unitGuessOf(mesh, features, r.category, models));
   // The model stage's time and the final progress report, on every way out.
   auto finish = [&] {
     r.modelSeconds = secondsSince(t);

@@ -28,6 +28,8 @@ ModelSet ModelSet::load(const std::filesystem::path& directory) {
     set.setCategoryClassifier(CategoryClassifier::load(classifierFile), classifierFile);
   if (auto scorer = readPointScorer(directory))
     set.setPointScorer(std::move(*scorer), directory / kPointScorerFile);
+  if (auto memory = readSizeMemory(directory))
+    set.setSizeMemory(std::move(*memory), directory / kSizeMemoryFile);
   return set;
 }
 
@@ -248,6 +250,16 @@ std::vector<CategoryScore> ModelSet::rankCategories(const std::vector<float>& de
       scores.begin(), scores.end(),
       [](const CategoryScore& a, const CategoryScore& b) { return a.similarity > b.similarity; });
   return scores;
+}
+
+void ModelSet::setSizeMemory(SizeMemory memory, const std::filesystem::path& file) {
+  const std::string cards = m_models.empty() ? memory.featureConfigHash()
+                                             : m_models.front().card().featureConfigHash;
+  if (memory.featureConfigHash() != cards)
+    throw ModelError(file.string() + ": its descriptors were computed with other features (" +
+                     memory.featureConfigHash() + ") than the models' (" + cards +
+                     "): build it again (sagrid units memory)");
+  m_sizeMemory = std::move(memory);
 }
 
 FeatureOptions ModelSet::featureOptions() const {

@@ -17,6 +17,7 @@
 
 #include "core/annotate/category_classifier.h"
 #include "core/annotate/point_scorer.h"
+#include "core/annotate/size_memory.h"
 #include "core/features/feature_pipeline.h"
 #include "core/model/affordance_model.h"
 
@@ -80,6 +81,12 @@ class ModelSet {
   // Feature options matching the cards (backend, grid size); the cache folder is the caller's.
   FeatureOptions featureOptions() const;
 
+  // The sizes of curated objects the units guess recalls (units_memory.json); nullptr without.
+  const SizeMemory* sizeMemory() const { return m_sizeMemory ? &*m_sizeMemory : nullptr; }
+  // Throws ModelError naming `file` when the memory's descriptors come from other features than
+  // the cards'.
+  void setSizeMemory(SizeMemory memory, const std::filesystem::path& file);
+
  private:
   // Centre and per-dimension scale of the retrieval space (see the file comment).
   struct RetrievalSpace {
@@ -94,6 +101,7 @@ class ModelSet {
   std::optional<RetrievalSpace> m_retrieval;
   std::optional<CategoryClassifier> m_classifier;
   std::optional<PointScorer> m_scorer;
+  std::optional<SizeMemory> m_sizeMemory;
 };
 
 }  // namespace sagrid

@@ -1,5 +1,6 @@
 #include "core/mesh/unit_guess.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -60,6 +61,26 @@ UnitGuess guessMetersPerUnit(double largestExtent, const std::string& category) 
                 range.minMeters, range.maxMeters, guess.sure ? "" : "; other units fit too");
   guess.reason = line;
   return guess;
+}
+
+UnitGuess unlessFarFromExpectedSize(const UnitGuess& guess, double largestExtent,
+                                    double expectedMeters, double farFactor) {
+  if (!(largestExtent > 0) || !std::isfinite(largestExtent) || !(expectedMeters > 0) ||
+      !std::isfinite(expectedMeters) || !(farFactor >= 1))
+    return guess;
+  const double meters = largestExtent * guess.metersPerUnit;
+  if (std::max(meters, expectedMeters) <= farFactor * std::min(meters, expectedMeters)) return guess;
+  UnitGuess scaled;
+  scaled.metersPerUnit = expectedMeters / largestExtent;
+  scaled.unit = unitName(scaled.metersPerUnit);
+  scaled.sure = false;
+  char line[240];
+  std::snprintf(line, sizeof line,
+                "largest extent %.4g units: %.3g m in %s, more than %.3gx from the %.3g m of curated "
+                "objects like it; scaled to that",
+                largestExtent, meters, guess.unit.c_str(), farFactor, expectedMeters);
+  scaled.reason = line;
+  return scaled;
 }
 
 }  // namespace sagrid

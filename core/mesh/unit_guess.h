@@ -40,4 +40,13 @@ PlausibleSize plausibleSize(const std::string& category);
 // `largestExtent` in file units (> 0).
 UnitGuess guessMetersPerUnit(double largestExtent, const std::string& category);
 
+// Game files are in no real unit (a kit scaled so its counters are 1.3 units high, a fridge 448
+// units tall), and many are plausible in metres, so no size range tells. Where the sizes of
+// curated objects that look alike (core/annotate/size_memory.h) put the object at
+// `expectedMeters`, a named unit that makes it more than `farFactor` times larger or smaller gives
+// way to the scale that makes it that size (unit "custom", not sure: a curator's units for the
+// source replace it). Otherwise, and for expectations or extents that are not positive, `guess`.
+UnitGuess unlessFarFromExpectedSize(const UnitGuess& guess, double largestExtent,
+                                    double expectedMeters, double farFactor);
+
 }  // namespace sagrid

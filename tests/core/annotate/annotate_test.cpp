@@ -9,6 +9,7 @@
 #include "core/annotate/annotation_fingerprint.h"
 #include "core/annotate/category_evidence.h"
 #include "core/annotate/suggested_points.h"
+#include "core/annotate/units_record.h"
 #include "core/common/error.h"
 #include "core/dataset/dataset.h"
 #include "core/eval/evaluation.h"
@@ -156,6 +157,31 @@ TEST_F(AnnotateTest, WritesTheObjectConfidenceOfTheLeastSurePoint) {
   EXPECT_DOUBLE_EQ(r.objectConfidence, expected);
   EXPECT_DOUBLE_EQ(r.labels.extra["prediction"]["object_confidence"].get<double>(), expected);
   EXPECT_TRUE(r.labels.extra["prediction"]["object_confidence_calibrated"].get<bool>());
+}
+
+TEST_F(AnnotateTest, AFolderRememberingSizesScalesAFileFarFromObjectsLikeIt) {
+  annotate.category = "stove";
+  const double extent = importMesh(entries[0].mesh).bounds().sizes().maxCoeff();
+  const AnnotationResult named = annotateMeshFile(entries[0].mesh, "s", *set, annotate, dir);
+  const auto namedGuess = recordedUnitGuess(named.labels.object);
+  ASSERT_TRUE(namedGuess);
+  // Curated stoves that look exactly like it are 20 times the size its named unit gives.
+  const double remembered = 20.0 * extent * namedGuess->metersPerUnit;
+  set->setSizeMemory(SizeMemory({{"curated", "elsewhere", "stove", stoveFeatures.descriptor, remembered}},
+                                set->models().front().card().featureConfigHash, 4.0),
+                     dir / kSizeMemoryFile);
+  const AnnotationResult r = annotateMeshFile(entries[0].mesh, "s", *set, annotate, dir);
+  const auto guess = recordedUnitGuess(r.labels.object);
+  ASSERT_TRUE(guess);
+  EXPECT_NEAR(guess->metersPerUnit * extent, remembered, 1e-6 * remembered);
+  EXPECT_NE(guess->reason.find("curated objects like it"), std::string::npos) << guess->reason;
+  // A memory made with other features is refused, naming its file.
+  try {
+    set->setSizeMemory(SizeMemory({}, "other-features", 4.0), dir / kSizeMemoryFile);
+    ADD_FAILURE() << "a memory of other features was taken";
+  } catch (const ModelError& e) {
+    EXPECT_THAT(e.what(), HasSubstr(kSizeMemoryFile));
+  }
 }
 
 TEST_F(AnnotateTest, SymmetryAveragingKeepsThePointsOnTheSurface) {

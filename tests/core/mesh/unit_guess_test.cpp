@@ -30,5 +30,23 @@ TEST(UnitGuess, OutsideEveryRangeTheNearestUnitAndNoExtentKeepsMetres) {
   EXPECT_DOUBLE_EQ(guessMetersPerUnit(std::nan(""), "none").metersPerUnit, 1.0);
 }
 
+TEST(UnitGuess, AGameFileFarFromTheSizeOfObjectsLikeItIsScaledToThatSize) {
+  // A microwave 2.73 units wide fits the appliance range in metres; curated microwaves are 0.5 m.
+  const UnitGuess named = guessMetersPerUnit(2.73, "none");
+  ASSERT_EQ(named.unit, "m");
+  const UnitGuess scaled = unlessFarFromExpectedSize(named, 2.73, 0.5, 4.0);
+  EXPECT_NEAR(scaled.metersPerUnit, 0.5 / 2.73, 1e-12);
+  EXPECT_EQ(scaled.unit, "custom");
+  EXPECT_FALSE(scaled.sure);
+  EXPECT_NE(scaled.reason.find("curated objects like it"), std::string::npos) << scaled.reason;
+  // Within the factor, or with nothing to go by, the named unit stays.
+  EXPECT_EQ(unlessFarFromExpectedSize(named, 2.73, 0.8, 4.0).unit, "m");
+  EXPECT_EQ(unlessFarFromExpectedSize(named, 2.73, 0.0, 4.0).unit, "m");
+  EXPECT_EQ(unlessFarFromExpectedSize(named, 2.73, std::nan(""), 4.0).unit, "m");
+  EXPECT_EQ(unlessFarFromExpectedSize(named, 0.0, 0.5, 4.0).unit, "m");
+  // A scale that lands on a named unit is called by its name: metres assumed, 90 units expected at 0.9 m.
+  EXPECT_EQ(unlessFarFromExpectedSize(UnitGuess{}, 90.0, 0.9, 4.0).unit, "cm");
+}
+
 }  // namespace
 }  // namespace sagrid

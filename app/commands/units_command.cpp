@@ -1,0 +1,101 @@
+// `sagrid units memory --data DIR...`: the size memory the units guess recalls
+// (core/annotate/size_memory.h) built from curated real objects, its far factor chosen leaving
+// each source out, and written into the models folder only where that beats the named units
+// alone. Parsing and progress display only.
+#include <CLI/CLI.hpp>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <limits>
+#include <memory>
+
+#include "app/command_registry.h"
+#include "app/progress_bar.h"
+#include "core/annotate/model_set.h"
+#include "core/annotate/size_memory.h"
+#include "core/common/atomic_file.h"
+#include "core/common/error.h"
+#include "core/common/resource_paths.h"
+#include "core/eval/size_memory_loso.h"
+#include "core/eval/units_cases.h"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct MemoryOptions {
+  std::vector<std::string> data;
+  std::string models, out, cache, report;
+  std::vector<double> factors{1.5, 2, 3, 4, 5, 8};
+};
+
+void setupUnits(CLI::App& root) {
+  auto* cmd = root.add_subcommand("units", "Units of files that do not state them");
+  cmd->require_subcommand(1);
+  auto o = std::make_shared<MemoryOptions>();
+  auto* memory = cmd->add_subcommand(
+      "memory", "Remember the real sizes of the curated objects of --data (their labels' units) "
+                "for the units guess; evaluate it leaving each source out, choose its far factor "
+                "so, and write units_memory.json into --out only where it guesses more units "
+                "right than the named units alone");
+  memory->add_option("--data", o->data, "Curated dataset folder (repeatable)")->required();
+  memory->add_option("--models", o->models,
+                     "Models folder whose feature configuration the descriptors use (default "
+                     "resources/models)");
+  memory->add_option("--out", o->out, "Folder to write units_memory.json into (default --models)");
+  memory->add_option("--cache", o->cache, "Feature cache folder");
+  memory->add_option("--report", o->report, "Also write the evaluation to REPORT/units_memory.md");
+  memory->add_option("--factors", o->factors, "Candidate far factors (>= 1)")
+      ->check(CLI::Range(1.0, 1e9));
+  memory->callback([o] {
+    const fs::path modelsDir = o->models.empty() ? sagrid::defaultModelsDir() : fs::path(o->models);
+    const auto models = sagrid::ModelSet::load(modelsDir);
+    sagrid::FeatureOptions features = models.featureOptions();
+    features.cacheDir = o->cache;
+    const std::string hash = models.models().empty()
+                                 ? sagrid::featureConfigHash(features)
+                                 : models.models().front().card().featureConfigHash;
+    std::vector<fs::path> folders(o->data.begin(), o->data.end());
+    std::unique_ptr<sagrid::app::ProgressBar> bar;
+    const auto cases = sagrid::readUnitsCases(
+        folders, features, [&](std::size_t done, std::size_t total, const std::string& id) {
+          if (!bar) bar = std::make_unique<sagrid::app::ProgressBar>("units", total);
+          bar->update(done, id);
+          if (done == total) bar.reset();
+        });
+    if (cases.empty()) throw sagrid::InvalidArgument("units memory: no curated objects in --data");
+    std::vector<double> factors = o->factors;
+    factors.push_back(std::numeric_limits<double>::infinity());
+    const auto report = sagrid::evaluateSizeMemory(cases, factors, hash);
+    const std::string md = sagrid::unitsLosoMarkdown(report);
+    std::cout << md;
+    if (!o->report.empty()) {
+      fs::create_directories(o->report);
+      sagrid::writeFileAtomic(fs::path(o->report) / "units_memory.md", md);
+    }
+    const std::size_t withMemory = report.chosenLeavingSourceOut.back().right;
+    const std::size_t namedOnly = report.byFactor.back().back().right;
+    const fs::path out = o->out.empty() ? modelsDir : fs::path(o->out);
+    if (withMemory <= namedOnly || !std::isfinite(report.chosenOnAll)) {
+      std::fprintf(stderr,
+                   "units memory: not written: left out by source it guesses %zu of %zu right, the "
+                   "named units alone %zu\n",
+                   withMemory, cases.size(), namedOnly);
+      return;
+    }
+    std::vector<sagrid::RememberedSize> entries;
+    for (const auto& c : cases) entries.push_back(c.object);
+    fs::create_directories(out);
+    sagrid::writeSizeMemory(sagrid::SizeMemory(entries, hash, report.chosenOnAll), out);
+    std::fprintf(stderr,
+                 "units memory: %zu objects, far factor %.3g -> %s (left out by source %zu of %zu "
+                 "right, named units alone %zu)\n",
+                 cases.size(), report.chosenOnAll, (out / sagrid::kSizeMemoryFile).c_str(),
+                 withMemory, cases.size(), namedOnly);
+  });
+}
+
+}  // namespace
+
+SAGRID_REGISTER_COMMAND("units", setupUnits);

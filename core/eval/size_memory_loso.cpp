@@ -1,0 +1,135 @@
+#include "core/eval/size_memory_loso.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <map>
+#include <set>
+
+namespace sagrid {
+
+namespace {
+
+double ratio(double a, double b) { return std::max(a, b) / std::min(a, b); }
+
+void count(UnitsScore& score, bool right, bool notMetres) {
+  ++score.objects;
+  score.right += right;
+  score.notMetres += notMetres;
+  score.notMetresRight += right && notMetres;
+}
+
+std::string factorName(double factor) {
+  if (!std::isfinite(factor)) return "named units only (no memory)";
+  char text[40];
+  std::snprintf(text, sizeof text, "memory, far factor %.3g", factor);
+  return text;
+}
+
+std::string cell(std::size_t right, std::size_t of) {
+  return std::to_string(right) + " / " + std::to_string(of);
+}
+
+}  // namespace
+
+UnitsLosoReport evaluateSizeMemory(const std::vector<UnitsCase>& cases,
+                                   const std::vector<double>& factors,
+                                   const std::string& featureConfigHash, double tolerance) {
+  UnitsLosoReport report;
+  report.factors = factors;
+  report.tolerance = tolerance;
+  std::vector<RememberedSize> entries;
+  std::set<std::string> groups;
+  for (const auto& c : cases) {
+    entries.push_back(c.object);
+    groups.insert(c.group);
+  }
+  report.groups.assign(groups.begin(), groups.end());
+  const SizeMemory memory(entries, featureConfigHash, 1.0);
+  auto groupIndex = [&](const std::string& g) {
+    return std::size_t(std::find(report.groups.begin(), report.groups.end(), g) - report.groups.begin());
+  };
+  // right[f][i]: case i's guess with factor f, its own source left out of the memory.
+  std::vector<std::vector<bool>> right(factors.size(), std::vector<bool>(cases.size()));
+  report.byFactor.assign(factors.size(), std::vector<UnitsScore>(report.groups.size() + 1));
+  for (std::size_t i = 0; i < cases.size(); ++i) {
+    const UnitsCase& c = cases[i];
+    const UnitGuess named = guessMetersPerUnit(c.extentUnits, c.object.category);
+    const bool notMetres = ratio(c.curatedMetersPerUnit, 1.0) > tolerance;
+    for (std::size_t f = 0; f < factors.size(); ++f) {
+      const UnitGuess guess =
+          std::isfinite(factors[f]) ? memory.refine(named, c.extentUnits, c.object.descriptor,
+                                                    c.object.category, c.object.source, factors[f])
+                                    : named;
+      right[f][i] = ratio(guess.metersPerUnit, c.curatedMetersPerUnit) <= tolerance;
+      count(report.byFactor[f][groupIndex(c.group)], right[f][i], notMetres);
+      count(report.byFactor[f].back(), right[f][i], notMetres);
+    }
+  }
+  // The factor with the most right among `among`; ties go to the larger (fewer scaled files).
+  auto choose = [&](auto among) {
+    std::size_t best = 0, bestRight = 0;
+    for (std::size_t f = 0; f < factors.size(); ++f) {
+      std::size_t n = 0;
+      for (std::size_t i = 0; i < cases.size(); ++i) n += among(i) && right[f][i];
+      if (n > bestRight || (n == bestRight && factors[f] > factors[best])) {
+        best = f;
+        bestRight = n;
+      }
+    }
+    return best;
+  };
+  std::set<std::string> sources;
+  for (const auto& c : cases) sources.insert(c.object.source);
+  report.chosenLeavingSourceOut.assign(report.groups.size() + 1, UnitsScore{});
+  for (const auto& source : sources) {
+    const std::size_t f = choose([&](std::size_t i) { return cases[i].object.source != source; });
+    report.chosenBySource.emplace_back(source, factors[f]);
+    for (std::size_t i = 0; i < cases.size(); ++i) {
+      if (cases[i].object.source != source) continue;
+      const bool notMetres = ratio(cases[i].curatedMetersPerUnit, 1.0) > tolerance;
+      count(report.chosenLeavingSourceOut[groupIndex(cases[i].group)], right[f][i], notMetres);
+      count(report.chosenLeavingSourceOut.back(), right[f][i], notMetres);
+    }
+  }
+  report.chosenOnAll = factors.empty() ? 1.0 : factors[choose([](std::size_t) { return true; })];
+  return report;
+}
+
+std::string unitsLosoMarkdown(const UnitsLosoReport& report) {
+  char line[300];
+  std::string md = "# Units guess, each source left out of the size memory\n\n";
+  std::snprintf(line, sizeof line,
+                "Right: the guess within %.3gx of the curated units; not in metres: curated units "
+                "more than %.3gx from 1. Each cell: right / objects, then right / not in metres.\n\n",
+                report.tolerance, report.tolerance);
+  md += line;
+  md += "| guess |";
+  for (const auto& g : report.groups) md += " " + g + " |";
+  md += " all |\n|---|";
+  for (std::size_t g = 0; g <= report.groups.size(); ++g) md += "---:|";
+  md += "\n";
+  auto row = [&](const std::string& name, const std::vector<UnitsScore>& scores) {
+    md += "| " + name + " |";
+    for (const auto& s : scores)
+      md += " " + cell(s.right, s.objects) + "; " + cell(s.notMetresRight, s.notMetres) + " |";
+    md += "\n";
+  };
+  for (std::size_t f = 0; f < report.factors.size(); ++f)
+    row(factorName(report.factors[f]), report.byFactor[f]);
+  row("**memory, far factor chosen leaving each source out**", report.chosenLeavingSourceOut);
+  md += "\nFactor chosen without each source:";
+  std::map<double, std::size_t> chosen;
+  for (const auto& [source, factor] : report.chosenBySource) ++chosen[factor];
+  for (const auto& [factor, n] : chosen) {
+    std::snprintf(line, sizeof line, " %.3g (%zu source%s)", factor, n, n == 1 ? "" : "s");
+    md += line;
+  }
+  std::snprintf(line, sizeof line, "; on all of them: %.3g (kept in units_memory.json).\n",
+                report.chosenOnAll);
+  md += line;
+  return md;
+}
+
+}  // namespace sagrid
