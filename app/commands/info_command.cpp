@@ -1,4 +1,5 @@
-// `sagrid info MESH [--up y|z] [--resolution N] [--json]`: what SAGrid sees in a mesh file.
+// `sagrid info MESH [--up y|z] [--resolution N] [--json] [--geometry-id]`: what SAGrid sees in a
+// mesh file.
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <cstdio>
@@ -18,6 +19,7 @@
 #include "core/grid/mesh_summary.h"
 #include "core/grid/normalization.h"
 #include "core/labels/labels.h"
+#include "core/mesh/geometry_identity.h"
 #include "core/mesh/mesh_export.h"
 #include "core/mesh/mesh_import.h"
 #include "core/mesh/unit_guess.h"
@@ -108,7 +110,7 @@ void setupInfo(CLI::App& root) {
   struct Options {
     std::string mesh, up;
     int resolution = sagrid::kDefaultGridResolution;
-    bool json = false, parts = false, materialParts = false, creasePatches = false;
+    bool json = false, parts = false, materialParts = false, creasePatches = false, geometryId = false;
     std::string controls, turnedMesh, unitsFor;
     float turn = 0.6f;
   };
@@ -140,6 +142,10 @@ void setupInfo(CLI::App& root) {
                   "move it (.obj or .glb, file frame): knobs and levers turned by --turn radians, "
                   "buttons pressed");
   cmd->add_option("--turn", o->turn, "Angle for --turned-mesh, radians")->capture_default_str();
+  cmd->add_flag("--geometry-id", o->geometryId,
+                "Also print the identity of the mesh's geometry alone (core/mesh/geometry_identity.h): "
+                "files with the same triangles in other materials, colours, UVs or formats share its "
+                "shape; the GUI carries a curated object's points to such twins");
   cmd->add_option("--units-for", o->unitsFor,
                   "Also print the units `annotate` guesses for this file were it of this category "
                   "(stove, sink, none): the unit, metres per unit and why");
@@ -149,17 +155,29 @@ void setupInfo(CLI::App& root) {
     std::optional<sagrid::UnitGuess> units;
     if (!o->unitsFor.empty())
       units = sagrid::guessMetersPerUnit(summary.bounds.sizes().maxCoeff(), o->unitsFor);
+    std::optional<sagrid::GeometryIdentity> geometry;
+    if (o->geometryId)
+      geometry = sagrid::geometryIdentity(
+          sagrid::importMesh(o->mesh, sagrid::ImportOptions(summary.fileUp, /*detect=*/false)));
     if (o->json) {
       nlohmann::json report = sagrid::summaryJson(summary);
       if (units)
         report["units_guess"] = {{"unit", units->unit}, {"meters_per_unit", units->metersPerUnit},
                                  {"sure", units->sure}, {"reason", units->reason}};
+      if (o->geometryId)
+        report["geometry_id"] =
+            geometry ? nlohmann::json{{"shape", geometry->shape}, {"triangle_order", geometry->triangleOrder}}
+                     : nlohmann::json(nullptr);
       std::cout << report.dump(2) << "\n";
     } else {
       std::cout << sagrid::formatSummary(summary);
       if (units)
         std::printf("units guess: %s, %g m per unit (%s)\n", units->unit.c_str(),
                     units->metersPerUnit, units->reason.c_str());
+      if (o->geometryId)
+        std::printf("geometry id: %s\n", geometry ? (geometry->shape + " (triangle order " +
+                                                      geometry->triangleOrder + ")").c_str()
+                                                   : "none (no triangle with an extent)");
     }
     if (!o->parts && !o->materialParts && o->controls.empty()) return;
     const sagrid::ImportOptions import(summary.fileUp, /*detect=*/false);

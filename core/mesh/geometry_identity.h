@@ -5,7 +5,8 @@
 // `sagrid info --geometry-id` prints it.
 //
 // What it hashes: every triangle as the three corners' positions in the mesh file's own frame (the
-// frame labels are written in, so equal identities mean the same label coordinates), each
+// frame labels are written in, so equal identities mean the same label coordinates; the same
+// triangles written in another frame, a z-up OBJ of a y-up GLB, are another identity), each
 // coordinate rounded to a cell of 2^-14 of the object's largest extent (rounded up to a power of
 // two, so the cell itself does not move with float noise in the extent): 0.06 mm on a 1 m stove.
 //   - `shape` ignores the order of vertices and triangles and how vertices are shared or split

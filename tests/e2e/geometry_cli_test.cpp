@@ -3,6 +3,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <fstream>
 #include <nlohmann/json.hpp>
 
@@ -172,6 +173,28 @@ TEST(InfoCommand, PrintsTheUnitsAnnotateWouldGuess) {
   r = runSagrid(info + " --units-for stove --json");
   ASSERT_EQ(r.exitCode, 0) << r.output;
   EXPECT_EQ(nlohmann::json::parse(r.output).at("units_guess").at("unit"), "cm");
+}
+
+TEST(InfoCommand, GeometryIdIsTheSameForTheSameTrianglesInAnotherMaterial) {
+  const fs::path dir = test::freshTempDir();
+  const Mesh stove = test::box({0, 0, 0}, {0.6f, 0.6f, 0.9f});
+  exportMesh(stove, dir / "stove.obj");
+  Mesh red = stove;  // another material, the triangles listed backwards
+  red.materials = {{"red", {1, 0, 0}, -1}};
+  red.triangleMaterials.assign(red.triangles.size(), 0);
+  std::reverse(red.triangles.begin(), red.triangles.end());
+  exportMesh(red, dir / "red.obj");
+  exportMesh(test::box({0, 0, 0}, {0.6f, 0.6f, 0.95f}), dir / "taller.obj");
+  auto shapeOf = [&](const char* file) {
+    const auto r = runSagrid("info " + shellQuote((dir / file).string()) + " --up z --json --geometry-id");
+    EXPECT_EQ(r.exitCode, 0) << r.output;
+    return nlohmann::json::parse(r.output).at("geometry_id").at("shape").get<std::string>();
+  };
+  EXPECT_EQ(shapeOf("stove.obj").size(), 32u);
+  EXPECT_EQ(shapeOf("stove.obj"), shapeOf("red.obj"));
+  EXPECT_NE(shapeOf("stove.obj"), shapeOf("taller.obj"));
+  const auto text = runSagrid("info " + shellQuote((dir / "red.obj").string()) + " --up z --geometry-id");
+  EXPECT_THAT(text.output, HasSubstr("geometry id: " + shapeOf("stove.obj") + " (triangle order "));
 }
 
 TEST(InfoCommand, ListsSmallParts) {
