@@ -10,6 +10,7 @@
 #include <thread>
 
 #include "core/annotate/units_record.h"
+#include "core/mesh/mesh_import.h"
 #include "support/test_paths.h"
 #include "ui/app/session.h"
 #include "ui/document/point_commands.h"
@@ -157,6 +158,24 @@ TEST(SessionTwin, UndoingTheCarriedPointsGivesTheModelsPrediction) {
   EXPECT_FALSE(doc->editedByHand());  // the prediction is the review's start again
   session.accept();
   EXPECT_EQ(session.queue().entry(1).state, QueueState::Accepted);
+}
+
+TEST(SessionTwin, TheTwinsUpAxisComesWithItsPoints) {
+  Session session;
+  curatedQueue(session);
+  const UpAxis opened = session.document()->mesh().fileUp;
+  const UpAxis turned = opened == UpAxis::NegY ? UpAxis::PosX : UpAxis::NegY;
+  session.turnUpAxis(turned);  // the curator stands a up another way (its moved point stays)
+  awaitPrediction(session);
+  ASSERT_EQ(session.document()->labels().object.up, toString(turned));
+  session.openEntry(1);
+  const AnnotationDocument* doc = session.document();
+  EXPECT_EQ(doc->mesh().fileUp, turned);
+  EXPECT_EQ(doc->labels().object.up, toString(turned));
+  ASSERT_EQ(doc->points().size(), 1u);
+  EXPECT_TRUE(doc->points()[0].position.isApprox(kCurated));  // file coordinates: as they were
+  session.undo();
+  EXPECT_EQ(session.document()->mesh().fileUp, opened);
 }
 
 TEST(SessionTwin, ATwinCuratedLaterChangesNothingOpenedAndTheFolderRemembersGeometry) {
