@@ -157,7 +157,8 @@ void AnnotationDocument::adoptPredictedPoints(std::vector<AffordancePoint> point
 void AnnotationDocument::startReviewWith(std::unique_ptr<Command> command) {
   const std::size_t before = m_history.applied();
   auto markStart = [&] {
-    if (m_history.applied() > before) m_reviewStart = ReviewStart{m_history.applied(), m_labels.affordances.size()};
+    if (m_history.applied() > before)
+      m_reviewStart = ReviewStart{m_history.applied(), m_labels.affordances.size()};
   };
   try {
     execute(std::move(command));

@@ -199,7 +199,8 @@ void drawStatusBar(Session& session) {
     ImGui::SameLine();
   }
   if (const auto twin = doc ? pointsCarriedFrom(doc->labels()) : std::nullopt) {
-    ImGui::TextColored(ImVec4(0.55f, 0.8f, 0.95f, 1), "| points carried from %s (same geometry)", twin->c_str());
+    ImGui::TextColored(ImVec4(0.55f, 0.8f, 0.95f, 1), "| points carried from %s (same geometry)",
+                       twin->c_str());
     ImGui::SameLine();
   }
   if (session.addModeArmed) {
