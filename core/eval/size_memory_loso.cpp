@@ -52,6 +52,7 @@ UnitsLosoReport evaluateSizeMemory(const std::vector<UnitsCase>& cases,
   };
   // right[f][i]: case i's guess with factor f, its own source left out of the memory.
   std::vector<std::vector<bool>> right(factors.size(), std::vector<bool>(cases.size()));
+  std::vector<std::vector<double>> guessed(factors.size(), std::vector<double>(cases.size()));
   report.byFactor.assign(factors.size(), std::vector<UnitsScore>(report.groups.size() + 1));
   for (std::size_t i = 0; i < cases.size(); ++i) {
     const UnitsCase& c = cases[i];
@@ -62,6 +63,7 @@ UnitsLosoReport evaluateSizeMemory(const std::vector<UnitsCase>& cases,
           std::isfinite(factors[f]) ? memory.refine(named, c.extentUnits, c.object.descriptor,
                                                     c.object.category, c.object.source, factors[f])
                                     : named;
+      guessed[f][i] = guess.metersPerUnit;
       right[f][i] = ratio(guess.metersPerUnit, c.curatedMetersPerUnit) <= tolerance;
       count(report.byFactor[f][groupIndex(c.group)], right[f][i], notMetres);
       count(report.byFactor[f].back(), right[f][i], notMetres);
@@ -91,6 +93,13 @@ UnitsLosoReport evaluateSizeMemory(const std::vector<UnitsCase>& cases,
       const bool notMetres = ratio(cases[i].curatedMetersPerUnit, 1.0) > tolerance;
       count(report.chosenLeavingSourceOut[groupIndex(cases[i].group)], right[f][i], notMetres);
       count(report.chosenLeavingSourceOut.back(), right[f][i], notMetres);
+      if (!right[f][i]) {
+        char line[300];
+        std::snprintf(line, sizeof line, "%s (%s, %s): guessed %.3g, curated %.3g m per unit",
+                      cases[i].object.id.c_str(), source.c_str(), cases[i].object.category.c_str(),
+                      guessed[f][i], cases[i].curatedMetersPerUnit);
+        report.wrongChosen.push_back(line);
+      }
     }
   }
   report.chosenOnAll = factors.empty() ? 1.0 : factors[choose([](std::size_t) { return true; })];
@@ -129,6 +138,8 @@ std::string unitsLosoMarkdown(const UnitsLosoReport& report) {
   std::snprintf(line, sizeof line, "; on all of them: %.3g (kept in units_memory.json).\n",
                 report.chosenOnAll);
   md += line;
+  if (!report.wrongChosen.empty()) md += "\nWrong with the factor chosen leaving the source out:\n\n";
+  for (const auto& wrong : report.wrongChosen) md += "- " + wrong + "\n";
   return md;
 }
 

@@ -29,6 +29,7 @@ struct UnitsLosoReport {
   std::vector<UnitsScore> chosenLeavingSourceOut;      // [group], the last all
   std::vector<std::string> groups;                     // without "all"
   std::vector<std::pair<std::string, double>> chosenBySource;
+  std::vector<std::string> wrongChosen;  // "id (source): guessed X, curated Y" with the chosen factor
   double chosenOnAll = 0;                              // the factor the shipped memory keeps
   double tolerance = 1.5;
 };

@@ -65,6 +65,8 @@ TEST(SizeMemoryLoso, AnObjectIsNeverRecalledFromItsOwnSource) {
   cases[0].extentUnits = 1.8 / 0.25;
   const auto report = evaluateSizeMemory(cases, {1.5}, "hash");
   EXPECT_EQ(report.byFactor[0].back().notMetresRight, 0u);
+  ASSERT_EQ(report.wrongChosen.size(), 1u);
+  EXPECT_NE(report.wrongChosen[0].find("real-a/fridge (real-a, none)"), std::string::npos) << report.wrongChosen[0];
 }
 
 }  // namespace
