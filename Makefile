@@ -30,7 +30,8 @@ run: build
 # 300 more generated stoves, seed 7001) added to its card as an ensemble, then the learned point
 # decision on these networks' candidates (curated wild-pool, Sweet Home 3D and real-dev objects and
 # the bench val split; the preset sets the stove cards' crease-patch candidates) and the object
-# confidence fitted on its points left out by source. The stove models are not fine-tuned: on the five real-train stoves it made the
+# confidence fitted on its points left out by source, then the units memory (the sizes of the
+# curated real objects, its far factor chosen leaving each source out). The stove models are not fine-tuned: on the five real-train stoves it made the
 # held-out real stoves worse (resources/models/README.md).
 SAGRID_CACHE ?= $(if $(XDG_CACHE_HOME),$(XDG_CACHE_HOME),$(HOME)/.cache)/sagrid
 BENCH_DIR ?= $(SAGRID_CACHE)/bench
@@ -39,6 +40,8 @@ REAL_DIR ?= $(SAGRID_CACHE)/real
 WILD_POOL ?= ../shared/data/wild-pool
 WILD_DIR ?= $(SAGRID_CACHE)/wild
 REAL_DEV_DIR ?= ../shared/data/real-dev
+# Sweet Home 3D with its non-free package (the free libraries too), for the units memory.
+REAL_NONFREE_DIR ?= $(SAGRID_CACHE)/real-nonfree
 # The sink knobs' card switches annotate's second pass on (a crop around the points): on the bench
 # val split and the real sets it brings their automatic-count points closer at equal edits.
 REAL_FINE_TUNE = $(BUILD_DIR)/sagrid train --data $(REAL_DIR)/real-train --init resources/models \
@@ -71,6 +74,11 @@ models: build
 	@$(BUILD_DIR)/sagrid scorer cv --candidates $(BUILD_DIR)/scorer-real.json \
 	  --candidates $(BUILD_DIR)/scorer-bench.json --out $(BUILD_DIR)/scorer-cv
 	@cp $(BUILD_DIR)/scorer-cv/confidence.json resources/models/
+	@test -d $(REAL_NONFREE_DIR)/real-train || $(BUILD_DIR)/sagrid corpus sweethome3d --non-free \
+	  --out $(REAL_NONFREE_DIR)
+	@$(BUILD_DIR)/sagrid units memory --data $(WILD_DIR)/wild-train --data $(WILD_DIR)/wild-val \
+	  --data $(REAL_NONFREE_DIR)/real-train --data $(REAL_NONFREE_DIR)/real-val \
+	  --data $(REAL_NONFREE_DIR)/distractors --data $(REAL_DEV_DIR) --out resources/models
 
 bench: build
 	@for b in $(BUILD_DIR)/tests/benchmarks/*_bench; do $$b --benchmark_repetitions=5 --benchmark_report_aggregates_only=true; done
