@@ -16,6 +16,7 @@
 #include "ui/document/point_copies.h"
 #include "ui/document/twin_points.h"
 #include "ui/document/up_axis_commands.h"
+#include "ui/render/type_colors.h"
 
 namespace {
 double nowSeconds() {
@@ -327,15 +328,30 @@ int Session::addOnCopiesOfSelected() {
   return added;
 }
 
-void Session::chooseNewPointType() {
-  // Keep the curator's choice when this category has that type (a stove has no fluidsource);
-  // else its first type from the default models (stove.heatsource, sink.fluidsource, ...).
-  const std::string& category = m_document->labels().object.category;
+namespace {
+// The types of a category's default models (stove.heatsource, sink.fluidsource, ...), in order.
+std::vector<std::string> categoryTypes(const std::string& category) {
   std::vector<std::string> types;
   for (const auto& name : defaultModelNames())
     if (name.rfind(category + ".", 0) == 0) types.push_back(name.substr(category.size() + 1));
+  return types;
+}
+}  // namespace
+
+void Session::chooseNewPointType() {
+  // Keep the curator's choice when this category has that type (a stove has no fluidsource);
+  // else its first type.
+  const std::vector<std::string> types = categoryTypes(m_document->labels().object.category);
   if (types.empty() || std::find(types.begin(), types.end(), m_currentType) != types.end()) return;
   m_currentType = types.front();
+}
+
+std::vector<std::string> Session::typesForKeys() const {
+  std::vector<std::string> types =
+      m_document ? categoryTypes(m_document->labels().object.category) : std::vector<std::string>{};
+  for (const auto& type : knownTypes())
+    if (std::find(types.begin(), types.end(), type) == types.end()) types.push_back(type);
+  return types;
 }
 
 void Session::changeSelectedType(const std::string& type) {

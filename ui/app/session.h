@@ -80,6 +80,10 @@ class Session {
   // type is yet (pointsOnCopies): one undoable step, logged as "copies". Returns how many.
   int addOnCopiesOfSelected();
   void changeSelectedType(const std::string& type);
+  // The types keys 1..9 choose, in order: the open object's category's own (its default models':
+  // a stove's heatsource and togglebutton, a sink's fluidsource and togglebutton), then the other
+  // known types; so 2 is a knob on a stove and on a sink alike.
+  std::vector<std::string> typesForKeys() const;
   // Switches the open object's category (one undoable step) and, when its points are all still
   // predicted, drops them and predicts again for the new category.
   void switchCategory(const std::string& category);

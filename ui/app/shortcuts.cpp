@@ -4,7 +4,6 @@
 #include <GLFW/glfw3.h>
 
 #include "ui/app/session.h"
-#include "ui/render/type_colors.h"
 
 namespace sagrid::ui {
 
@@ -22,7 +21,7 @@ const std::vector<ShortcutHelp>& shortcutHelp() {
       {"Del / Backspace", "delete the selected point"},
       {"Shift+Del", "delete the selected point and every later one of its type"},
       {"R", "copies: the selected point's type on every copy of its part (a row of knobs, burners)"},
-      {"1-9", "current type (and the selected point's type)"},
+      {"1-9", "current type, the category's own first (and the selected point's type)"},
       {"N / P", "next / previous object"},
       {"S", "skip object"},
       {"F", "close-up of the selected point; again (or none selected): the whole object"},
@@ -72,7 +71,8 @@ bool handleShortcuts(const std::vector<InputEvent>& events, Session& session,
     }
     if (e.key >= GLFW_KEY_1 && e.key <= GLFW_KEY_9) {
       const std::size_t index = std::size_t(e.key - GLFW_KEY_1);
-      if (index < knownTypes().size()) session.changeSelectedType(knownTypes()[index]);
+      const std::vector<std::string> types = session.typesForKeys();
+      if (index < types.size()) session.changeSelectedType(types[index]);
       continue;
     }
     switch (e.key) {

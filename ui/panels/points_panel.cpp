@@ -36,8 +36,8 @@ void typeSelector(Session& session) {
   ImGui::TextUnformatted("New points:");
   ImGui::SameLine();
   ImGui::SetNextItemWidth(-1);
-  // Each type with its number key, the current one too: a stove's togglebutton is 3, not 2.
-  const auto& types = knownTypes();
+  // Each type with its number key (the category's own types first), the current one too.
+  const std::vector<std::string> types = session.typesForKeys();
   auto withKey = [&types](const std::string& type) {
     const auto at = std::find(types.begin(), types.end(), type);
     char label[96];

@@ -140,7 +140,7 @@ TEST(Interaction, FFramesTheSelectedPointThenTheObject) {
 TEST(Interaction, ShiftClickAddsPointOfCurrentTypeOnSurface) {
   const auto dir = sagrid::test::freshTempDir();
   ScriptedApp s(dir);
-  s.key(GLFW_KEY_2);  // fluidsource
+  s.key(GLFW_KEY_3);  // fluidsource: on a stove the stove's own types come first
   EXPECT_EQ(s.app->session().currentType(), "fluidsource");
   s.click(s.pixelOf({0.3f, -0.2f, 0.2f}), GLFW_MOD_SHIFT);
   ASSERT_EQ(s.document().points().size(), 3u);
@@ -161,7 +161,7 @@ TEST(Interaction, NewPointTypeFollowsTheObjectsCategory) {
   const auto dir = sagrid::test::freshTempDir();
   ScriptedApp s(dir);
   EXPECT_EQ(s.app->session().currentType(), "heatsource");
-  s.key(GLFW_KEY_2);  // fluidsource, which a stove does not have
+  s.key(GLFW_KEY_3);  // fluidsource, which a stove does not have
   s.app->session().openObject(dir / "mesh.obj", dir / "labels.json");
   EXPECT_EQ(s.app->session().currentType(), "heatsource");
   // A sink: heatsource becomes its first type; togglebutton, which it has, is kept.
@@ -172,8 +172,35 @@ TEST(Interaction, NewPointTypeFollowsTheObjectsCategory) {
   std::filesystem::copy_file(dir / "mesh.obj", dir / "sink" / "mesh.obj");
   s.app->session().openObject(dir / "sink" / "mesh.obj", dir / "sink" / "labels.json");
   EXPECT_EQ(s.app->session().currentType(), "fluidsource");
-  s.key(GLFW_KEY_3);  // togglebutton
+  s.key(GLFW_KEY_2);  // togglebutton
   s.app->session().openObject(dir / "sink" / "mesh.obj", dir / "sink" / "labels.json");
+  EXPECT_EQ(s.app->session().currentType(), "togglebutton");
+}
+
+TEST(Interaction, NumberKeysChooseTheCategorysOwnTypesFirst) {
+  // A curator pressed 2 for a knob on a stove and got a fluid source: 2 is the knob on a stove
+  // and on a sink, 1 the category's first type, the other types after them.
+  const auto dir = sagrid::test::freshTempDir();
+  ScriptedApp s(dir);
+  EXPECT_EQ(s.app->session().typesForKeys(),
+            (std::vector<std::string>{"heatsource", "togglebutton", "fluidsource", "particleremover",
+                                      "particleapplier"}));
+  s.key(GLFW_KEY_2);
+  EXPECT_EQ(s.app->session().currentType(), "togglebutton");
+  s.key(GLFW_KEY_1);
+  EXPECT_EQ(s.app->session().currentType(), "heatsource");
+  ObjectLabels sink = readLabels(dir / "labels.json");
+  sink.object.category = "sink";
+  sink.affordances.clear();
+  std::filesystem::create_directories(dir / "sink");
+  writeLabels(dir / "sink" / "labels.json", sink);
+  std::filesystem::copy_file(dir / "mesh.obj", dir / "sink" / "mesh.obj");
+  s.app->session().openObject(dir / "sink" / "mesh.obj", dir / "sink" / "labels.json");
+  s.key(GLFW_KEY_1);
+  EXPECT_EQ(s.app->session().currentType(), "fluidsource");
+  s.key(GLFW_KEY_2);
+  EXPECT_EQ(s.app->session().currentType(), "togglebutton");
+  s.key(GLFW_KEY_9);  // no ninth type: nothing changes
   EXPECT_EQ(s.app->session().currentType(), "togglebutton");
 }
 
