@@ -144,8 +144,10 @@ void setupInfo(CLI::App& root) {
   cmd->add_option("--turn", o->turn, "Angle for --turned-mesh, radians")->capture_default_str();
   cmd->add_flag("--geometry-id", o->geometryId,
                 "Also print the identity of the mesh's geometry alone (core/mesh/geometry_identity.h): "
-                "files with the same triangles in other materials, colours, UVs or formats share its "
-                "shape; the GUI carries a curated object's points to such twins");
+                "files with the same triangles in other materials, colours, UVs or formats, or at "
+                "another place of the file, share its shape; the GUI carries a curated object's "
+                "points to such twins, moved by the difference of their origins (the box's lowest "
+                "corner, file frame)");
   cmd->add_option("--units-for", o->unitsFor,
                   "Also print the units `annotate` guesses for this file were it of this category "
                   "(stove, sink, none): the unit, metres per unit and why");
@@ -166,7 +168,10 @@ void setupInfo(CLI::App& root) {
                                  {"sure", units->sure}, {"reason", units->reason}};
       if (o->geometryId)
         report["geometry_id"] =
-            geometry ? nlohmann::json{{"shape", geometry->shape}, {"triangle_order", geometry->triangleOrder}}
+            geometry ? nlohmann::json{{"shape", geometry->shape},
+                                      {"triangle_order", geometry->triangleOrder},
+                                      {"origin",
+                                       {geometry->origin.x(), geometry->origin.y(), geometry->origin.z()}}}
                      : nlohmann::json(nullptr);
       std::cout << report.dump(2) << "\n";
     } else {
@@ -175,9 +180,12 @@ void setupInfo(CLI::App& root) {
         std::printf("units guess: %s, %g m per unit (%s)\n", units->unit.c_str(),
                     units->metersPerUnit, units->reason.c_str());
       if (o->geometryId)
-        std::printf("geometry id: %s\n", geometry ? (geometry->shape + " (triangle order " +
-                                                      geometry->triangleOrder + ")").c_str()
-                                                   : "none (no triangle with an extent)");
+        std::printf("geometry id: %s\n",
+                    geometry ? (geometry->shape + " (triangle order " + geometry->triangleOrder +
+                                "; origin " + std::to_string(geometry->origin.x()) + " " +
+                                std::to_string(geometry->origin.y()) + " " +
+                                std::to_string(geometry->origin.z()) + ")").c_str()
+                             : "none (no triangle with an extent)");
     }
     if (!o->parts && !o->materialParts && o->controls.empty()) return;
     const sagrid::ImportOptions import(summary.fileUp, /*detect=*/false);

@@ -16,8 +16,6 @@ namespace {
 
 constexpr int kCellsPerExtentLog2 = 14;
 constexpr std::size_t kHexDigits = 32;
-// Cells beyond this from the origin cannot be rounded exactly (and no float mesh has them).
-constexpr double kMaxCell = 4.0e18;
 
 using Corner = std::array<std::int32_t, 3>;  // cells from the lowest corner of the box
 using CellTriangle = std::array<Corner, 3>;  // starting at its smallest corner, winding kept
@@ -36,6 +34,10 @@ std::string hashOf(const std::string& header, const std::vector<CellTriangle>& t
 }
 
 }  // namespace
+
+Eigen::Vector3d twinOffset(const GeometryIdentity& from, const GeometryIdentity& to) {
+  return to.origin - from.origin;
+}
 
 std::optional<GeometryIdentity> geometryIdentity(const Mesh& mesh) {
   if (mesh.triangles.empty()) return std::nullopt;
@@ -61,21 +63,14 @@ std::optional<GeometryIdentity> geometryIdentity(const Mesh& mesh) {
   const double extent = box.sizes().maxCoeff();
   if (!(extent > 0)) return std::nullopt;
 
-  // A power-of-two cell: x / cell is exact, so rounding depends on the coordinate alone.
+  // A power-of-two cell: (x - lowest) / cell is exact (the difference of two floats is a double),
+  // so rounding depends on where the corner lies in the box alone, not where the box lies.
   const int exponent = static_cast<int>(std::ceil(std::log2(extent))) - kCellsPerExtentLog2;
-  std::array<std::int64_t, 3> lowest{};
-  for (int a = 0; a < 3; ++a) {
-    const double cell = std::ldexp(box.min()[a], -exponent);
-    if (std::abs(cell) > kMaxCell)
-      throw InvalidArgument(
-          "geometry identity: coordinates too far from the origin for the object's size");
-    lowest[std::size_t(a)] = std::llround(cell);
-  }
   auto cornerOf = [&](int v) {
     Corner c{};
     for (int a = 0; a < 3; ++a)
       c[std::size_t(a)] = static_cast<std::int32_t>(
-          std::llround(std::ldexp(file[std::size_t(v)][a], -exponent)) - lowest[std::size_t(a)]);
+          std::llround(std::ldexp(file[std::size_t(v)][a] - box.min()[a], -exponent)));
     return c;
   };
 
@@ -84,14 +79,14 @@ std::optional<GeometryIdentity> geometryIdentity(const Mesh& mesh) {
   for (const Eigen::Vector3i& t : mesh.triangles)
     inOrder.push_back(startAtSmallestCorner({cornerOf(t[0]), cornerOf(t[1]), cornerOf(t[2])}));
 
-  // Where the object lies and at which cell size, so a moved or scaled copy differs.
-  std::string header(reinterpret_cast<const char*>(&exponent), sizeof exponent);
-  header.append(reinterpret_cast<const char*>(lowest.data()), sizeof lowest);
+  // The cell size, so a copy scaled by a power of two (the same cells) differs.
+  const std::string header(reinterpret_cast<const char*>(&exponent), sizeof exponent);
 
   GeometryIdentity identity;
   identity.triangleOrder = hashOf(header, inOrder);
   std::sort(inOrder.begin(), inOrder.end());
   identity.shape = hashOf(header, inOrder);
+  identity.origin = box.min();
   return identity;
 }
 

@@ -185,6 +185,7 @@ TEST(InfoCommand, GeometryIdIsTheSameForTheSameTrianglesInAnotherMaterial) {
   std::reverse(red.triangles.begin(), red.triangles.end());
   exportMesh(red, dir / "red.obj");
   exportMesh(test::box({0, 0, 0}, {0.6f, 0.6f, 0.95f}), dir / "taller.obj");
+  exportMesh(test::box({2, -1, 0.5f}, {2.6f, -0.4f, 1.4f}), dir / "moved.obj");
   auto shapeOf = [&](const char* file) {
     const auto r = runSagrid("info " + shellQuote((dir / file).string()) + " --up z --json --geometry-id");
     EXPECT_EQ(r.exitCode, 0) << r.output;
@@ -193,6 +194,13 @@ TEST(InfoCommand, GeometryIdIsTheSameForTheSameTrianglesInAnotherMaterial) {
   EXPECT_EQ(shapeOf("stove.obj").size(), 32u);
   EXPECT_EQ(shapeOf("stove.obj"), shapeOf("red.obj"));
   EXPECT_NE(shapeOf("stove.obj"), shapeOf("taller.obj"));
+  EXPECT_EQ(shapeOf("stove.obj"), shapeOf("moved.obj"));  // elsewhere in its file
+  const auto moved =
+      runSagrid("info " + shellQuote((dir / "moved.obj").string()) + " --up z --json --geometry-id");
+  const auto origin = nlohmann::json::parse(moved.output).at("geometry_id").at("origin");
+  EXPECT_NEAR(origin.at(0).get<double>(), 2.0, 1e-6);
+  EXPECT_NEAR(origin.at(1).get<double>(), -1.0, 1e-6);
+  EXPECT_NEAR(origin.at(2).get<double>(), 0.5, 1e-6);
   const auto text = runSagrid("info " + shellQuote((dir / "red.obj").string()) + " --up z --geometry-id");
   EXPECT_THAT(text.output, HasSubstr("geometry id: " + shapeOf("stove.obj") + " (triangle order "));
 }

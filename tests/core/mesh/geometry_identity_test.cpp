@@ -62,7 +62,8 @@ TEST(GeometryIdentity, FloatNoiseBelowACellIsTheSameAMovedVertexIsNot) {
   const GeometryIdentity plain = identityOf(floorAndWall());
   Mesh noisy = floorAndWall();
   for (auto& p : noisy.positions) p += Eigen::Vector3f(3e-7f, -2e-7f, 1e-7f);
-  EXPECT_EQ(identityOf(noisy), plain);
+  EXPECT_EQ(identityOf(noisy).shape, plain.shape);
+  EXPECT_EQ(identityOf(noisy).triangleOrder, plain.triangleOrder);
 
   Mesh moved = floorAndWall();
   moved.positions[2].z() += 0.01f;  // 1 % of the object's size
@@ -73,19 +74,44 @@ TEST(GeometryIdentity, FloatNoiseBelowACellIsTheSameAMovedVertexIsNot) {
   EXPECT_NE(identityOf(flipped).shape, plain.shape);
 }
 
-TEST(GeometryIdentity, AScaledOrShiftedCopyIsAnotherObject) {
+TEST(GeometryIdentity, AMovedCopyIsTheSameObjectAtAnotherOrigin) {
+  // The same triangles placed elsewhere in the file (not by whole cells, far from the origin):
+  // the same shape and order, the origin where its box begins.
   const GeometryIdentity plain = identityOf(floorAndWall());
-  Mesh scaled = floorAndWall();
-  for (auto& p : scaled.positions) p *= 2.0f;
-  EXPECT_NE(identityOf(scaled).shape, plain.shape);
-  Mesh shifted = floorAndWall();
-  for (auto& p : shifted.positions) p.x() += 0.5f;
-  EXPECT_NE(identityOf(shifted).shape, plain.shape);
+  EXPECT_EQ(plain.origin, Eigen::Vector3d::Zero());
+  const Eigen::Vector3f offset(240.3f, -150.7f, 0.1f);
+  Mesh moved = floorAndWall();
+  for (auto& p : moved.positions) p += offset;
+  const GeometryIdentity there = identityOf(moved);
+  EXPECT_EQ(there.shape, plain.shape);
+  EXPECT_EQ(there.triangleOrder, plain.triangleOrder);
+  EXPECT_TRUE(there.origin.isApprox(offset.cast<double>(), 1e-7)) << there.origin.transpose();
+  EXPECT_TRUE(twinOffset(plain, there).isApprox(offset.cast<double>(), 1e-7));
+  EXPECT_TRUE(twinOffset(there, plain).isApprox(-offset.cast<double>(), 1e-7));
+}
+
+TEST(GeometryIdentity, AScaledRotatedOrMirroredCopyIsAnotherObject) {
+  const GeometryIdentity plain = identityOf(floorAndWall());
+  for (float scale : {2.0f, 1.5f, 0.5f}) {  // 2 and 0.5: the same cells, another cell size
+    Mesh scaled = floorAndWall();
+    for (auto& p : scaled.positions) p *= scale;
+    EXPECT_NE(identityOf(scaled).shape, plain.shape) << scale;
+  }
+  // A quarter turn about the vertical: the wall stands on another side of the floor.
+  Mesh turned = floorAndWall();
+  for (auto& p : turned.positions) p = Eigen::Vector3f(-p.y(), p.x(), p.z());
+  EXPECT_NE(identityOf(turned).shape, plain.shape);
+  // Mirrored across the wall's plane (and wound back so the faces still face out): the floor
+  // lies on the wall's other side.
+  Mesh mirrored = floorAndWall();
+  for (auto& p : mirrored.positions) p.y() = -p.y();
+  for (auto& t : mirrored.triangles) std::swap(t[1], t[2]);
+  EXPECT_NE(identityOf(mirrored).shape, plain.shape);
 }
 
 TEST(GeometryIdentity, IsOfTheFilesFrameWhateverUpAxisTheImportChose) {
-  // The same file coordinates read y-up: positions turned z-up, identity unchanged (labels are in
-  // the file's frame, so a twin's points carry as they are).
+  // The same file coordinates read y-up: positions turned z-up, identity and origin unchanged
+  // (labels are in the file's frame, so a twin's points carry by the origins' offset alone).
   Mesh yUp = floorAndWall();
   for (auto& p : yUp.positions) p = fileToZUp(p, UpAxis::Y);
   yUp.fileUp = UpAxis::Y;
