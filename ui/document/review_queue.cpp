@@ -74,15 +74,23 @@ std::vector<fs::path> meshesIn(const fs::path& dir) {
   return found;
 }
 
-// An entry's "geometry" in the state file; none where absent or not two strings (an identity is
-// only ever compared, so a damaged one just finds no twin).
+// An entry's "geometry" in the state file; none where absent or damaged (an identity is only
+// compared, so a damaged one just finds no twin) or without "origin" (written by a build whose
+// identity still held where the object lies, so it would never match one of this build).
 std::optional<GeometryIdentity> geometryIn(const nlohmann::json& item) {
   const auto it = item.find("geometry");
   if (it == item.end() || !it->is_object()) return std::nullopt;
-  const auto shape = it->find("shape"), order = it->find("triangle_order");
+  const auto shape = it->find("shape"), order = it->find("triangle_order"),
+             origin = it->find("origin");
   if (shape == it->end() || order == it->end() || !shape->is_string() || !order->is_string())
     return std::nullopt;
-  return GeometryIdentity{shape->get<std::string>(), order->get<std::string>()};
+  if (origin == it->end() || !origin->is_array() || origin->size() != 3) return std::nullopt;
+  GeometryIdentity identity{shape->get<std::string>(), order->get<std::string>()};
+  for (int a = 0; a < 3; ++a) {
+    if (!(*origin)[std::size_t(a)].is_number()) return std::nullopt;
+    identity.origin[a] = (*origin)[std::size_t(a)].get<double>();
+  }
+  return identity;
 }
 
 QueueEntry entryFor(const fs::path& mesh) {
@@ -203,7 +211,10 @@ void ReviewQueue::save() const {
                        {"state", toString(entry.state)}});
     if (entry.geometry)
       objects.back()["geometry"] = {{"shape", entry.geometry->shape},
-                                    {"triangle_order", entry.geometry->triangleOrder}};
+                                    {"triangle_order", entry.geometry->triangleOrder},
+                                    {"origin",
+                                     {entry.geometry->origin.x(), entry.geometry->origin.y(),
+                                      entry.geometry->origin.z()}}};
   }
   nlohmann::json json = {{"schema", "sagrid.review-queue/1"}, {"objects", objects}};
   json["current"] =

@@ -57,7 +57,8 @@ TEST(ReviewQueue, ResumesStatesAndPosition) {
 TEST(ReviewQueue, KeepsGeometryAndFindsOnlyCuratedTwinsOfTheSameShape) {
   const auto dir = test::freshTempDir();
   for (const char* id : {"o1", "o2", "o3", "o4", "o5"}) touch(dir / id / "mesh.obj");
-  const GeometryIdentity basin{"aaaa", "0001"}, basinReordered{"aaaa", "0002"}, stove{"bbbb", "0003"};
+  const GeometryIdentity basin{"aaaa", "0001"}, stove{"bbbb", "0003"};
+  const GeometryIdentity basinReordered{"aaaa", "0002", {-70.5, 148.25, 1e-3}};  // elsewhere
   {
     ReviewQueue queue = ReviewQueue::openFolder(dir);
     queue.setGeometry(0, basin);
@@ -77,6 +78,21 @@ TEST(ReviewQueue, KeepsGeometryAndFindsOnlyCuratedTwinsOfTheSameShape) {
   EXPECT_EQ(resumed.curatedTwinsOf(0), std::vector<std::size_t>{1});
   EXPECT_EQ(resumed.curatedTwinsOf(3), std::vector<std::size_t>{1});
   EXPECT_TRUE(resumed.curatedTwinsOf(1).empty());  // its twins are not curated
+}
+
+TEST(ReviewQueue, AGeometryWithoutOriginFromAnOlderBuildIsForgotten) {
+  // Such an identity still held where the object lies: it would never match one of this build.
+  const auto dir = test::freshTempDir();
+  for (const char* id : {"o1", "o2"}) touch(dir / id / "mesh.obj");
+  std::ofstream(dir / kQueueStateFile) << R"({"schema": "sagrid.review-queue/1", "objects": [
+    {"mesh": "o1/mesh.obj", "state": "edited", "geometry": {"shape": "aa", "triangle_order": "01"}},
+    {"mesh": "o2/mesh.obj", "state": "unreviewed",
+     "geometry": {"shape": "aa", "triangle_order": "01", "origin": [1, 2, 3]}}]})";
+  const ReviewQueue queue = ReviewQueue::openFolder(dir);
+  EXPECT_EQ(queue.entry(0).state, QueueState::Edited);
+  EXPECT_FALSE(queue.entry(0).geometry);
+  ASSERT_TRUE(queue.entry(1).geometry);
+  EXPECT_EQ(queue.entry(1).geometry->origin, Eigen::Vector3d(1, 2, 3));
 }
 
 TEST(ReviewQueue, DamagedStateFileStartsOver) {
