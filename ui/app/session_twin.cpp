@@ -1,7 +1,8 @@
 // The Session's same-geometry twins: the open object's geometry identity kept in the queue, and the
 // points, category and units of a curated twin carried to an object that has no curated labels
-// yet (ui/document/twin_points.h). Only at opening: a twin curated later changes nothing already
-// open or opened.
+// yet (ui/document/twin_points.h), moved by the offset between the two copies' geometry origins
+// (a twin may sit elsewhere in its file). Only at opening: a twin curated later changes nothing
+// already open or opened.
 #include <algorithm>
 #include <system_error>
 
@@ -64,8 +65,9 @@ std::string Session::carryTwinPoints() {
       continue;
     }
     const std::string id = labels.object.id.empty() ? twin.mesh.stem().string() : labels.object.id;
-    const bool sameOrder =
-        twin.geometry->triangleOrder == m_queue.entry(index).geometry->triangleOrder;
+    const GeometryIdentity& here = *m_queue.entry(index).geometry;
+    const bool sameOrder = twin.geometry->triangleOrder == here.triangleOrder;
+    const Eigen::Vector3f offset = twinOffset(*twin.geometry, here).cast<float>();
     // The twin's units, as a guess that names it, where this object's are unknown or guessed.
     std::optional<UnitGuess> units;
     if (unitsKnown(labels) &&
@@ -75,12 +77,13 @@ std::string Session::carryTwinPoints() {
       units->unit = unitName(units->metersPerUnit);
       units->reason = "as curated for " + id + ", an object of the same geometry";
     }
-    // The twin's up axis too: the same file coordinates stand the same way up.
+    // The twin's up axis too: the same file coordinates (moved) stand the same way up.
     std::vector<std::unique_ptr<Command>> steps;
     const UpAxis up = upAxisOrZ(labels.object.up);
     if (up != m_document->mesh().fileUp)
       steps.push_back(std::make_unique<TurnUpAxisCommand>(*m_document, up));
-    steps.push_back(std::make_unique<CarryTwinPointsCommand>(labels, id, sameOrder, units));
+    steps.push_back(
+        std::make_unique<CarryTwinPointsCommand>(labels, id, sameOrder, units, offset));
     const std::string what = steps.back()->description();
     try {
       m_document->startReviewWith(std::make_unique<CommandGroup>(what, std::move(steps)));

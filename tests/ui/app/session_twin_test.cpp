@@ -1,7 +1,8 @@
 // Same-geometry twins in the GUI session: two objects of one shape in other materials (a colour
 // variant), the first curated, open the second with the first's points, category and units as
 // predictions to confirm with one key, marked as carried in labels.json and in the curation log;
-// an object of another shape still gets the model's prediction; a twin curated later changes
+// an object of another shape still gets the model's prediction; a twin placed elsewhere in its
+// file gets the points moved onto the same spot of its surface; a twin curated later changes
 // nothing already opened; undo gives the model's prediction instead.
 #include <gtest/gtest.h>
 
@@ -24,8 +25,10 @@ const Eigen::Vector3f kPredicted{-0.2f, 0.2f, 0.0f};  // where the scripted mode
 const Eigen::Vector3f kCurated{0.25f, -0.25f, 0.2f};  // where the curator moved it
 
 // A plate with a block on it, in one material of `colour` (another vertex order and UVs for
-// the second material, as another export of the same model writes it); `blockAt` moves the block.
-void writeObject(const fs::path& dir, const std::string& colour, float blockAt = 0.1f) {
+// the second material, as another export of the same model writes it); `blockAt` moves the block,
+// `placedAt` the whole object (the same mesh at another spot of its file).
+void writeObject(const fs::path& dir, const std::string& colour, float blockAt = 0.1f,
+                 const Eigen::Vector3f& placedAt = Eigen::Vector3f::Zero()) {
   fs::create_directories(dir);
   std::ofstream(dir / "look.mtl") << "newmtl " << colour << "\nKd "
                                   << (colour == "white" ? "1 1 1" : "0 0 1") << "\n";
@@ -40,7 +43,10 @@ void writeObject(const fs::path& dir, const std::string& colour, float blockAt =
                                         {9, 10, 6},  {9, 6, 5},  {10, 11, 7}, {10, 7, 6},
                                         {11, 12, 8}, {11, 8, 7}, {12, 9, 5},  {12, 5, 8}};
   if (colour != "white") std::reverse(faces.begin(), faces.end());
-  for (const auto& c : corners) obj << "v " << c.x() << " " << c.y() << " " << c.z() << "\n";
+  for (const auto& corner : corners) {
+    const Eigen::Vector3f c = corner + placedAt;
+    obj << "v " << c.x() << " " << c.y() << " " << c.z() << "\n";
+  }
   if (colour != "white") obj << "vt 0 0\nvt 1 0\nvt 1 1\n";
   for (const auto& f : faces) {
     if (colour == "white")
@@ -141,6 +147,40 @@ TEST(SessionTwin, AColourVariantOfACuratedObjectOpensWithItsPointsToConfirm) {
   const std::vector<std::pair<std::string, std::string>> expected{
       {"a_white", ""}, {"b_blue", "a_white"}, {"c_other", ""}};
   EXPECT_EQ(opens, expected);
+}
+
+TEST(SessionTwin, ACopyPlacedElsewhereInItsFileGetsThePointsOnTheSameSpot) {
+  // b is a's mesh placed 2 units away along x, 1.5 back along y and 0.5 up: the curated point on
+  // a's block top lands on b's block top, at the same place on it. (Not hundreds of units away:
+  // there a float's step, 1.5e-5, is a quarter of this 1-unit object's cell, enough to round a
+  // corner such as 240.1 into the next cell; the identity then misses the twin, the safe way.)
+  const Eigen::Vector3f placedAt(2.0f, -1.5f, 0.5f);
+  const fs::path dir = test::freshTempDir() / "queue";
+  writeObject(dir / "a_white", "white");
+  writeObject(dir / "b_blue", "blue", 0.1f, placedAt);
+  Session session;
+  session.logErrors = false;
+  predictOnePoint(session);
+  session.openPaths({dir});
+  awaitPrediction(session);
+  session.execute(std::make_unique<MovePointCommand>(0, kCurated, std::nullopt));
+  session.openEntry(1);
+  const AnnotationDocument* doc = session.document();
+  ASSERT_TRUE(doc);
+  EXPECT_EQ(pointsCarriedFrom(doc->labels()), "a_white");
+  ASSERT_EQ(doc->points().size(), 1u);
+  const Eigen::Vector3f at = doc->points()[0].position;
+  EXPECT_TRUE(at.isApprox(kCurated + placedAt, 1e-6f)) << at.transpose();
+  // On b's block top (z 0.2, x 0.1..0.4, y -0.4..-0.1 before b was placed), not in the air.
+  EXPECT_NEAR(at.z(), 0.2f + placedAt.z(), 1e-4f);
+  EXPECT_GT(at.x(), 0.1f + placedAt.x());
+  EXPECT_LT(at.x(), 0.4f + placedAt.x());
+  EXPECT_GT(at.y(), -0.4f + placedAt.y());
+  EXPECT_LT(at.y(), -0.1f + placedAt.y());
+  const ObjectLabels saved = readLabels(dir / "b_blue" / "labels.json");
+  ASSERT_EQ(saved.affordances.size(), 1u);
+  EXPECT_TRUE(saved.affordances[0].position.isApprox(kCurated + placedAt, 1e-6f));
+  EXPECT_EQ(saved.object.extra.value("points_carried_from", ""), "a_white");
 }
 
 TEST(SessionTwin, UndoingTheCarriedPointsGivesTheModelsPrediction) {

@@ -1,6 +1,6 @@
 // Points carried from a curated object of the same geometry: predictions to confirm that name
-// their twin, a control's triangles kept only where both meshes list them alike, and one step
-// that undo puts back exactly.
+// their twin, a control's triangles kept only where both meshes list them alike, points and pivots
+// moved onto a copy placed elsewhere, and one step that undo puts back exactly.
 #include "ui/document/twin_points.h"
 
 #include <gtest/gtest.h>
@@ -27,7 +27,11 @@ ObjectLabels curatedBasin() {
   handle.status = AffordanceStatus::Accepted;
   handle.confidence = 0.7f;
   handle.source = "sink.togglebutton@1a2b3c4d";
-  handle.extra[kControlField] = {{"motion", "lever"}, {"part", {{"triangles", {{10, 4}}}}}};
+  handle.normal = Eigen::Vector3f(0, 0, 1);
+  handle.extra[kControlField] = {{"motion", "lever"},
+                                 {"part", {{"triangles", {{10, 4}}}}},
+                                 {"axis", {1, 0, 0}},
+                                 {"pivot", {0.1, 0.2, 0.35}}};
   twin.affordances = {tap, handle};
   twin.reviewState = ReviewState::Done;
   return twin;
@@ -48,6 +52,33 @@ TEST(TwinPoints, CarriedPointsArePredictionsNamingTheirTwin) {
   // Listed otherwise: the record goes, the part is found again.
   EXPECT_FALSE(
       carriedPoints(curatedBasin(), "basin_white", false)[1].extra.contains(kControlField));
+}
+
+TEST(TwinPoints, ACopyElsewhereGetsThePointsMovedOntoItsOwnSurface) {
+  // The twin's mesh 240 units along x and 150 back along y of this one's (the origins' offset):
+  // each point lands on the same spot of this copy, facing the same way, with its lever's pivot.
+  const Eigen::Vector3f offset(-240.0f, 150.0f, 0.0f);
+  const std::vector<AffordancePoint> points =
+      carriedPoints(curatedBasin(), "basin_white", true, offset);
+  ASSERT_EQ(points.size(), 2u);
+  EXPECT_TRUE(points[0].position.isApprox(Eigen::Vector3f(-239.9f, 150.2f, 0.3f), 1e-6f))
+      << points[0].position.transpose();
+  EXPECT_TRUE(points[1].position.isApprox(Eigen::Vector3f(-239.9f, 150.25f, 0.35f), 1e-6f));
+  ASSERT_TRUE(points[1].normal);
+  EXPECT_EQ(*points[1].normal, Eigen::Vector3f(0, 0, 1));
+  const nlohmann::json& control = points[1].extra[kControlField];
+  EXPECT_NEAR(control["pivot"][0].get<double>(), -239.9, 1e-4);
+  EXPECT_NEAR(control["pivot"][1].get<double>(), 150.2, 1e-4);
+  EXPECT_NEAR(control["pivot"][2].get<double>(), 0.35, 1e-6);
+  EXPECT_EQ(control["axis"], nlohmann::json({1, 0, 0}));
+  EXPECT_EQ(control["part"]["triangles"][0][0], 10);
+
+  // The one step moves them alike.
+  ObjectLabels labels;
+  CarryTwinPointsCommand carry(curatedBasin(), "basin_white", true, std::nullopt, offset);
+  carry.apply(labels);
+  ASSERT_EQ(labels.affordances.size(), 2u);
+  EXPECT_TRUE(labels.affordances[0].position.isApprox(points[0].position));
 }
 
 TEST(TwinPoints, OneStepTakesCategoryPointsUnitsAndRecordAndUndoPutsAllBack) {
