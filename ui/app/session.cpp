@@ -376,7 +376,12 @@ void Session::updateQueueState() {
   if (!m_document || m_queue.empty()) return;
   const std::size_t i = std::size_t(m_queue.current());
   if (m_document->editedByHand()) {
-    if (m_queue.entry(i).state != QueueState::Edited) m_queue.setState(i, QueueState::Edited);
+    // Reviewed once the curator says it is done (A); an object finished before and edited again
+    // stays reviewed.
+    const QueueState now = m_queue.entry(i).state;
+    const QueueState state =
+        now == QueueState::Accepted || now == QueueState::Edited ? QueueState::Edited : QueueState::InProgress;
+    if (now != state) m_queue.setState(i, state);
   } else if (!m_document->points().empty() && m_document->allAccepted()) {
     if (m_queue.entry(i).state != QueueState::Accepted) m_queue.setState(i, QueueState::Accepted);
   }

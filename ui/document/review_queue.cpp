@@ -22,6 +22,8 @@ const char* toString(QueueState state) {
       return "edited";
     case QueueState::Skipped:
       return "skipped";
+    case QueueState::InProgress:
+      return "in progress";
     case QueueState::Unreviewed:
       break;
   }
@@ -32,6 +34,7 @@ QueueState parseQueueState(const std::string& text) {
   if (text == "accepted") return QueueState::Accepted;
   if (text == "edited") return QueueState::Edited;
   if (text == "skipped") return QueueState::Skipped;
+  if (text == "in progress") return QueueState::InProgress;
   return QueueState::Unreviewed;
 }
 
@@ -146,7 +149,8 @@ std::vector<std::size_t> ReviewQueue::curatedTwinsOf(std::size_t index) const {
   if (!geometry) return twins;
   for (std::size_t i = 0; i < m_entries.size(); ++i) {
     const QueueEntry& e = m_entries[i];
-    const bool curated = e.state == QueueState::Accepted || e.state == QueueState::Edited;
+    const bool curated = e.state == QueueState::Accepted || e.state == QueueState::Edited ||
+                         e.state == QueueState::InProgress;
     if (i != index && curated && e.geometry && e.geometry->shape == geometry->shape) twins.push_back(i);
   }
   return twins;
@@ -227,7 +231,9 @@ void ReviewQueue::save() const {
 std::size_t ReviewQueue::reviewedCount() const {
   return static_cast<std::size_t>(
       std::count_if(m_entries.begin(), m_entries.end(),
-                    [](const QueueEntry& e) { return e.state != QueueState::Unreviewed; }));
+                    [](const QueueEntry& e) {
+                      return e.state != QueueState::Unreviewed && e.state != QueueState::InProgress;
+                    }));
 }
 
 void ReviewQueue::setCurrent(int index) {

@@ -12,7 +12,9 @@
 
 namespace sagrid::ui {
 
-enum class QueueState { Unreviewed, Accepted, Edited, Skipped };
+// Accepted: every point accepted as predicted; Edited: finished (A) after hand edits; InProgress:
+// edited by hand but not finished yet (not counted as reviewed); Skipped: passed over on purpose.
+enum class QueueState { Unreviewed, InProgress, Accepted, Edited, Skipped };
 const char* toString(QueueState state);
 QueueState parseQueueState(const std::string& text);  // unknown text -> Unreviewed
 
@@ -55,7 +57,7 @@ class ReviewQueue {
   const std::vector<QueueEntry>& entries() const { return m_entries; }
   const QueueEntry& entry(std::size_t i) const { return m_entries.at(i); }
   int current() const { return m_current; }
-  std::size_t reviewedCount() const;  // entries not "unreviewed" (the k of k/n)
+  std::size_t reviewedCount() const;  // entries accepted, edited or skipped (the k of k/n)
 
   void setCurrent(int index);  // clamps; saves
   bool next();                 // false at the end

@@ -18,6 +18,8 @@ ImVec4 stateColor(QueueState state) {
       return ImVec4(0.95f, 0.75f, 0.30f, 1);
     case QueueState::Skipped:
       return ImVec4(0.60f, 0.60f, 0.65f, 1);
+    case QueueState::InProgress:
+      return ImVec4(0.95f, 0.90f, 0.55f, 1);
     case QueueState::Unreviewed:
       break;
   }

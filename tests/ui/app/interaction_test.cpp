@@ -232,6 +232,19 @@ TEST(Interaction, AOnAPointTheCuratorPlacedGoesOnToTheNextObject) {
   EXPECT_EQ(saved.affordances[0].status, AffordanceStatus::Accepted);
 }
 
+TEST(Interaction, AnEditedObjectCountsAsReviewedWhenTheCuratorPressesA) {
+  // Both curators read "k / n reviewed" rising at the first drag as "done": an edit makes the
+  // object "in progress", A finishes it as edited.
+  const auto dir = sagrid::test::freshTempDir();
+  ScriptedApp s(dir);
+  s.drag(s.pixelOf({-0.2f, 0.2f, 0.0f}), s.pixelOf({0.25f, -0.25f, 0.2f}));
+  EXPECT_EQ(s.app->session().queue().entry(0).state, QueueState::InProgress);
+  EXPECT_EQ(s.app->session().queue().reviewedCount(), 0u);
+  s.key(GLFW_KEY_A);
+  EXPECT_EQ(s.app->session().queue().entry(0).state, QueueState::Edited);
+  EXPECT_EQ(s.app->session().queue().reviewedCount(), 1u);
+}
+
 TEST(Interaction, AWithNothingSelectedAcceptsAllAndMarksObjectReviewed) {
   const auto dir = sagrid::test::freshTempDir();
   ScriptedApp s(dir);

@@ -96,7 +96,7 @@ fs::path curatedQueue(Session& session) {
   EXPECT_EQ(session.document()->points().size(), 1u);
   session.execute(std::make_unique<MovePointCommand>(0, kCurated, std::nullopt));
   EXPECT_TRUE(session.setUnits(0.01));
-  EXPECT_EQ(session.queue().entry(0).state, QueueState::Edited);
+  EXPECT_EQ(session.queue().entry(0).state, QueueState::InProgress);  // edited, not finished yet
   return dir;
 }
 

@@ -54,6 +54,21 @@ TEST(ReviewQueue, ResumesStatesAndPosition) {
   EXPECT_EQ(resumed.reviewedCount(), 2u);
 }
 
+TEST(ReviewQueue, AnObjectInProgressIsKeptButNotCountedAsReviewed) {
+  const auto dir = test::freshTempDir();
+  for (const char* id : {"o1", "o2"}) touch(dir / id / "mesh.obj");
+  {
+    ReviewQueue queue = ReviewQueue::openFolder(dir);
+    queue.setState(0, QueueState::InProgress);
+    queue.setState(1, QueueState::Skipped);
+    EXPECT_EQ(queue.reviewedCount(), 1u);
+  }
+  const ReviewQueue resumed = ReviewQueue::openFolder(dir);
+  EXPECT_EQ(resumed.entry(0).state, QueueState::InProgress);
+  EXPECT_EQ(std::string(toString(QueueState::InProgress)), "in progress");
+  EXPECT_EQ(resumed.reviewedCount(), 1u);
+}
+
 TEST(ReviewQueue, KeepsGeometryAndFindsOnlyCuratedTwinsOfTheSameShape) {
   const auto dir = test::freshTempDir();
   for (const char* id : {"o1", "o2", "o3", "o4", "o5"}) touch(dir / id / "mesh.obj");
