@@ -5,6 +5,7 @@
 #include "core/annotate/category_classifier.h"
 #include "core/annotate/object_confidence.h"
 #include "core/annotate/point_scorer.h"
+#include "core/annotate/size_memory.h"
 #include "core/common/atomic_file.h"
 #include "core/common/sha256.h"
 #include "core/dataset/object_source.h"
@@ -16,7 +17,7 @@ namespace fs = std::filesystem;
 nlohmann::json modelShas(const ModelSet& models, const fs::path& modelsDir) {
   nlohmann::json shas = nlohmann::json::object();
   for (const auto& [name, weights] : models.weightsByModel()) shas[name] = weights;
-  for (const char* file : {kCategoryClassifierFile, kConfidenceFile, kPointScorerFile}) {
+  for (const char* file : {kCategoryClassifierFile, kConfidenceFile, kPointScorerFile, kSizeMemoryFile}) {
     std::error_code ec;
     if (fs::is_regular_file(modelsDir / file, ec))
       shas[file] = sha256Hex(readFileBytes(modelsDir / file));

@@ -379,6 +379,18 @@ TEST(AnnotationFingerprintTest, EveryPassSwitchChangesTheOptionsHash) {
   EXPECT_EQ(annotateOptionsHash(defaults), annotateOptionsHash(AnnotateOptions{}));
 }
 
+TEST(AnnotationFingerprintTest, TheUnitsMemoryIsPartOfTheModelsFingerprint) {
+  // A batch annotated before the folder remembered sizes guessed units without it: not up to date.
+  const auto dir = test::freshTempDir();
+  const ModelSet models(std::vector<model::AffordanceModel>{});
+  EXPECT_FALSE(modelShas(models, dir).contains(kSizeMemoryFile));
+  writeSizeMemory(SizeMemory({}, "hash", 4.0), dir);
+  const auto first = modelShas(models, dir);
+  ASSERT_TRUE(first.contains(kSizeMemoryFile));
+  writeSizeMemory(SizeMemory({}, "hash", 5.0), dir);
+  EXPECT_NE(modelShas(models, dir).at(kSizeMemoryFile), first.at(kSizeMemoryFile));
+}
+
 TEST(AnnotationFingerprintTest, WhatAProvenanceRecordDeclaresIsPartOfTheFingerprint) {
   // Labels predicted before a provenance.json declared the units and up axis (or by a build that
   // did not read them) are not up to date; labels of an object with no record still are.
