@@ -3,8 +3,11 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <string>
+#include <vector>
 
 #include "core/controls/control_turn.h"
+#include "ui/app/label_layout.h"
 #include "ui/app/point_visibility.h"
 #include "ui/app/session.h"
 #include "ui/document/control_view.h"
@@ -24,6 +27,14 @@ ImU32 toU32(const Eigen::Vector3f& c, float a = 1.0f) {
 void pointLabels(const Session& session, ImDrawList* draw) {
   const AnnotationDocument* doc = session.document();
   const ViewportRect& vp = session.viewport();
+  struct Shown {
+    int index;
+    ImVec2 at;
+    bool hidden;
+    std::string full, number;
+  };
+  std::vector<Shown> shown;
+  std::vector<LabelRequest> requests;
   for (int i = 0; i < static_cast<int>(doc->points().size()); ++i) {
     Eigen::Vector2f pixel;
     if (!session.camera().project(doc->pointInView(i), pixel)) continue;
@@ -41,14 +52,27 @@ void pointLabels(const Session& session, ImDrawList* draw) {
     char text[96];
     std::snprintf(text, sizeof text, "%d %s%s", i + 1, p.type.c_str(),
                   p.status == AffordanceStatus::Predicted ? " ?" : "");
-    const ImVec2 textAt(at.x + session.view().markerPixels + 4, at.y - 8);
-    const ImVec2 size = ImGui::CalcTextSize(text);
     // A point the surface hides keeps a faint label: the near ones of a row of knobs stay legible.
     const bool hidden = pointHiddenFromEye(*doc, session.camera().eye(), i);
-    draw->AddRectFilled(ImVec2(textAt.x - 3, textAt.y - 1),
-                        ImVec2(textAt.x + size.x + 3, textAt.y + size.y + 1),
-                        IM_COL32(15, 17, 20, hidden ? 60 : 190), 3.0f);
-    draw->AddText(textAt, toU32(typeColor(p.type), hidden ? 0.35f : 1.0f), text);
+    Shown s{i, at, hidden, text, std::to_string(i + 1)};
+    const ImVec2 full = ImGui::CalcTextSize(s.full.c_str()), number = ImGui::CalcTextSize(s.number.c_str());
+    // Labels placed so that a row of knobs' do not pile up: the selected point's first, then the
+    // points the eye sees; a label with no room left is its number alone.
+    requests.push_back({{at.x, at.y}, {full.x + 6, full.y + 2}, {number.x + 6, number.y + 2},
+                        doc->selected() == i ? 0 : hidden ? 2 : 1});
+    shown.push_back(std::move(s));
+  }
+  const auto placed = layOutLabels(requests, session.view().markerPixels + 1);
+  for (std::size_t k = 0; k < shown.size(); ++k) {
+    const Shown& s = shown[k];
+    const std::string& text = placed[k].shortened ? s.number : s.full;
+    const ImVec2 box(placed[k].topLeft.x(), placed[k].topLeft.y());
+    const ImVec2 size = ImGui::CalcTextSize(text.c_str());
+    draw->AddRectFilled(box, ImVec2(box.x + size.x + 6, box.y + size.y + 2),
+                        IM_COL32(15, 17, 20, s.hidden ? 60 : 190), 3.0f);
+    draw->AddText(ImVec2(box.x + 3, box.y + 1),
+                  toU32(typeColor(doc->points()[std::size_t(s.index)].type), s.hidden ? 0.35f : 1.0f),
+                  text.c_str());
   }
 }
 

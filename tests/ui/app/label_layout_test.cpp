@@ -1,0 +1,55 @@
+#include "ui/app/label_layout.h"
+
+#include <gtest/gtest.h>
+
+namespace sagrid::ui {
+namespace {
+
+bool overlap(const PlacedLabel& a, const Eigen::Vector2f& sizeA, const PlacedLabel& b,
+             const Eigen::Vector2f& sizeB) {
+  return a.topLeft.x() < b.topLeft.x() + sizeB.x() && b.topLeft.x() < a.topLeft.x() + sizeA.x() &&
+         a.topLeft.y() < b.topLeft.y() + sizeB.y() && b.topLeft.y() < a.topLeft.y() + sizeA.y();
+}
+
+TEST(LabelLayout, ALoneLabelSitsRightOfItsMarkerInFull) {
+  const auto placed = layOutLabels({{{100, 100}, {120, 16}, {10, 16}, 1}}, 8);
+  ASSERT_EQ(placed.size(), 1u);
+  EXPECT_FALSE(placed[0].shortened);
+  EXPECT_FLOAT_EQ(placed[0].topLeft.x(), 108);
+  EXPECT_FLOAT_EQ(placed[0].topLeft.y(), 92);
+}
+
+TEST(LabelLayout, ARowOfKnobsGetsLabelsThatDoNotOverlap) {
+  // Four knobs 12 px apart in a row: full labels 120 x 16 px cannot all sit to the right.
+  std::vector<LabelRequest> row;
+  for (int k = 0; k < 4; ++k) row.push_back({{100.0f + 12.0f * float(k), 200.0f}, {120, 16}, {10, 16}, 1});
+  const auto placed = layOutLabels(row, 8);
+  ASSERT_EQ(placed.size(), 4u);
+  auto sizeOf = [&](std::size_t i) { return placed[i].shortened ? row[i].shortSize : row[i].fullSize; };
+  int overlapping = 0;
+  for (std::size_t a = 0; a < 4; ++a)
+    for (std::size_t b = a + 1; b < 4; ++b) overlapping += overlap(placed[a], sizeOf(a), placed[b], sizeOf(b));
+  EXPECT_EQ(overlapping, 0);
+  EXPECT_FALSE(placed[0].shortened);  // the first keeps its full label
+}
+
+TEST(LabelLayout, TheSelectedPointsLabelIsPlacedFirstAndKeepsItsSpot) {
+  // Two markers on top of each other: the selected one (priority 0, listed second) keeps the
+  // right-hand spot in full; the other moves elsewhere.
+  const std::vector<LabelRequest> two{{{100, 100}, {120, 16}, {10, 16}, 1},
+                                      {{100, 100}, {120, 16}, {10, 16}, 0}};
+  const auto placed = layOutLabels(two, 8);
+  EXPECT_FLOAT_EQ(placed[1].topLeft.x(), 108);
+  EXPECT_FALSE(placed[1].shortened);
+  EXPECT_FALSE(placed[0].topLeft.isApprox(placed[1].topLeft));
+}
+
+TEST(LabelLayout, WithNoFreeSpotTheNumberAloneOverlaps) {
+  std::vector<LabelRequest> pile(12, LabelRequest{{100, 100}, {120, 16}, {10, 16}, 1});
+  const auto placed = layOutLabels(pile, 8);
+  EXPECT_TRUE(placed.back().shortened);
+  EXPECT_FLOAT_EQ(placed.back().topLeft.x(), 108);
+}
+
+}  // namespace
+}  // namespace sagrid::ui
