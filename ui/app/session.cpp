@@ -336,19 +336,28 @@ std::vector<std::string> categoryTypes(const std::string& category) {
     if (name.rfind(category + ".", 0) == 0) types.push_back(name.substr(category.size() + 1));
   return types;
 }
+
+// The types new points of an object take: its category's, or, for an object judged "none" that
+// carries suggestions, its likeliest category's (the points the curator adds before pressing C).
+std::vector<std::string> objectTypes(const ObjectLabels& labels) {
+  std::vector<std::string> types = categoryTypes(labels.object.category);
+  if (types.empty())
+    if (const auto suggested = suggestedCategory(labels)) types = categoryTypes(*suggested);
+  return types;
+}
 }  // namespace
 
 void Session::chooseNewPointType() {
   // Keep the curator's choice when this category has that type (a stove has no fluidsource);
   // else its first type.
-  const std::vector<std::string> types = categoryTypes(m_document->labels().object.category);
+  const std::vector<std::string> types = objectTypes(m_document->labels());
   if (types.empty() || std::find(types.begin(), types.end(), m_currentType) != types.end()) return;
   m_currentType = types.front();
 }
 
 std::vector<std::string> Session::typesForKeys() const {
   std::vector<std::string> types =
-      m_document ? categoryTypes(m_document->labels().object.category) : std::vector<std::string>{};
+      m_document ? objectTypes(m_document->labels()) : std::vector<std::string>{};
   for (const auto& type : knownTypes())
     if (std::find(types.begin(), types.end(), type) == types.end()) types.push_back(type);
   return types;

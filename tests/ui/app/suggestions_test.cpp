@@ -48,6 +48,17 @@ TEST(Suggestions, CTakesTheSuggestedCategoryWithItsPointsAndUndoGivesThemBack) {
   EXPECT_TRUE(isSuggestion(readLabels(labels).affordances[0]));
 }
 
+TEST(Suggestions, NumberKeysFollowTheSuggestedCategoryOfAnObjectJudgedNone) {
+  const fs::path labels = rejectedStove(test::freshTempDir() / "stove");
+  Session session;
+  session.autoPredict = false;
+  session.openPaths({labels.parent_path()});
+  const auto types = session.typesForKeys();
+  ASSERT_GE(types.size(), 2u);
+  EXPECT_EQ(types[0], "heatsource");
+  EXPECT_EQ(types[1], "togglebutton");  // 2 is a knob, as on a stove
+}
+
 TEST(Suggestions, AcceptingKeepsNoneAndDropsThem) {
   const fs::path labels = rejectedStove(test::freshTempDir() / "stove");
   Session session;
