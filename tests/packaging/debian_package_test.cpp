@@ -45,6 +45,7 @@ TEST(DebianPackageSlow, ContentsDependenciesAndAnnotateFromAnExtractedRoot) {
        {"./usr/bin/sagrid", "./usr/share/sagrid/models/stove.heatsource.pt",
         "./usr/share/sagrid/models/stove.heatsource.json",
         "./usr/share/sagrid/models/sink.fluidsource.pt", "./usr/share/sagrid/models/category.json",
+        "./usr/share/sagrid/models/units_memory.json",
         "./usr/share/sagrid/samples/stove_s42_00001/mesh.obj",
         "./usr/share/sagrid/samples/sink_s42_00001/mesh.glb",
         "./usr/share/applications/sagrid.desktop",
