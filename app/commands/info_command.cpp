@@ -1,5 +1,5 @@
-// `sagrid info MESH [--up y|z] [--resolution N] [--json] [--geometry-id]`: what SAGrid sees in a
-// mesh file.
+// `sagrid info MESH [--up y|z] [--resolution N] [--json] [--same-geometry-as OTHER]`: what SAGrid
+// sees in a mesh file.
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <cstdio>
@@ -110,8 +110,8 @@ void setupInfo(CLI::App& root) {
   struct Options {
     std::string mesh, up;
     int resolution = sagrid::kDefaultGridResolution;
-    bool json = false, parts = false, materialParts = false, creasePatches = false, geometryId = false;
-    std::string controls, turnedMesh, unitsFor;
+    bool json = false, parts = false, materialParts = false, creasePatches = false;
+    std::string controls, turnedMesh, unitsFor, sameGeometryAs;
     float turn = 0.6f;
   };
   auto o = std::make_shared<Options>();
@@ -142,12 +142,12 @@ void setupInfo(CLI::App& root) {
                   "move it (.obj or .glb, file frame): knobs and levers turned by --turn radians, "
                   "buttons pressed");
   cmd->add_option("--turn", o->turn, "Angle for --turned-mesh, radians")->capture_default_str();
-  cmd->add_flag("--geometry-id", o->geometryId,
-                "Also print the identity of the mesh's geometry alone (core/mesh/geometry_identity.h): "
-                "files with the same triangles in other materials, colours, UVs or formats, or at "
-                "another place of the file, share its shape; the GUI carries a curated object's "
-                "points to such twins, moved by the difference of their origins (the box's lowest "
-                "corner, file frame)");
+  cmd->add_option("--same-geometry-as", o->sameGeometryAs,
+                  "Also say whether this other mesh file has the same geometry "
+                  "(core/mesh/geometry_identity.h): the same triangles, up to a translation and "
+                  "within 1e-4 of the object's size, whatever their materials, colours, UVs, "
+                  "format or order; the GUI carries a curated object's points to such twins, moved "
+                  "by the offset printed (this file's box's lowest corner less the other's)");
   cmd->add_option("--units-for", o->unitsFor,
                   "Also print the units `annotate` guesses for this file were it of this category "
                   "(stove, sink, none): the unit, metres per unit and why");
@@ -157,35 +157,38 @@ void setupInfo(CLI::App& root) {
     std::optional<sagrid::UnitGuess> units;
     if (!o->unitsFor.empty())
       units = sagrid::guessMetersPerUnit(summary.bounds.sizes().maxCoeff(), o->unitsFor);
-    std::optional<sagrid::GeometryIdentity> geometry;
-    if (o->geometryId)
-      geometry = sagrid::geometryIdentity(
-          sagrid::importMesh(o->mesh, sagrid::ImportOptions(summary.fileUp, /*detect=*/false)));
+    std::optional<sagrid::GeometryMatch> twin;
+    if (!o->sameGeometryAs.empty())  // any up axis: the match is in the files' own frames
+      twin = sagrid::matchGeometry(
+          sagrid::importMesh(o->sameGeometryAs, sagrid::ImportOptions(sagrid::UpAxis::Z)),
+          sagrid::importMesh(o->mesh, sagrid::ImportOptions(sagrid::UpAxis::Z)));
     if (o->json) {
       nlohmann::json report = sagrid::summaryJson(summary);
       if (units)
         report["units_guess"] = {{"unit", units->unit}, {"meters_per_unit", units->metersPerUnit},
                                  {"sure", units->sure}, {"reason", units->reason}};
-      if (o->geometryId)
-        report["geometry_id"] =
-            geometry ? nlohmann::json{{"shape", geometry->shape},
-                                      {"triangle_order", geometry->triangleOrder},
-                                      {"origin",
-                                       {geometry->origin.x(), geometry->origin.y(), geometry->origin.z()}}}
-                     : nlohmann::json(nullptr);
+      if (!o->sameGeometryAs.empty())
+        report["same_geometry"] = {
+            {"mesh", o->sameGeometryAs},
+            {"same", twin.has_value()},
+            {"tolerance", sagrid::kSameGeometryTolerance},
+            {"offset", twin ? nlohmann::json{twin->offset.x(), twin->offset.y(), twin->offset.z()}
+                            : nlohmann::json(nullptr)},
+            {"same_triangle_order", twin && twin->sameTriangleOrder}};
       std::cout << report.dump(2) << "\n";
     } else {
       std::cout << sagrid::formatSummary(summary);
       if (units)
         std::printf("units guess: %s, %g m per unit (%s)\n", units->unit.c_str(),
                     units->metersPerUnit, units->reason.c_str());
-      if (o->geometryId)
-        std::printf("geometry id: %s\n",
-                    geometry ? (geometry->shape + " (triangle order " + geometry->triangleOrder +
-                                "; origin " + std::to_string(geometry->origin.x()) + " " +
-                                std::to_string(geometry->origin.y()) + " " +
-                                std::to_string(geometry->origin.z()) + ")").c_str()
-                             : "none (no triangle with an extent)");
+      if (!o->sameGeometryAs.empty()) {
+        if (twin)
+          std::printf("same geometry as %s: yes, offset %g %g %g (%s triangle order)\n",
+                      o->sameGeometryAs.c_str(), twin->offset.x(), twin->offset.y(),
+                      twin->offset.z(), twin->sameTriangleOrder ? "same" : "other");
+        else
+          std::printf("same geometry as %s: no\n", o->sameGeometryAs.c_str());
+      }
     }
     if (!o->parts && !o->materialParts && o->controls.empty()) return;
     const sagrid::ImportOptions import(summary.fileUp, /*detect=*/false);

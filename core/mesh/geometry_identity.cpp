@@ -4,90 +4,158 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
-#include <string_view>
+#include <string>
+#include <unordered_map>
 #include <vector>
 
 #include "core/common/error.h"
-#include "core/common/sha256.h"
 
 namespace sagrid {
 
 namespace {
 
-constexpr int kCellsPerExtentLog2 = 14;
-constexpr std::size_t kHexDigits = 32;
-
-using Corner = std::array<std::int32_t, 3>;  // cells from the lowest corner of the box
-using CellTriangle = std::array<Corner, 3>;  // starting at its smallest corner, winding kept
-
-CellTriangle startAtSmallestCorner(const CellTriangle& t) {
-  const std::size_t first =
-      static_cast<std::size_t>(std::min_element(t.begin(), t.end()) - t.begin());
-  return {t[first], t[(first + 1) % 3], t[(first + 2) % 3]};
-}
-
-std::string hashOf(const std::string& header, const std::vector<CellTriangle>& triangles) {
-  std::string bytes = header;
-  bytes.append(reinterpret_cast<const char*>(triangles.data()),
-               triangles.size() * sizeof(CellTriangle));
-  return sha256Hex(bytes).substr(0, kHexDigits);
-}
-
-}  // namespace
-
-Eigen::Vector3d twinOffset(const GeometryIdentity& from, const GeometryIdentity& to) {
-  return to.origin - from.origin;
-}
-
-std::optional<GeometryIdentity> geometryIdentity(const Mesh& mesh) {
-  if (mesh.triangles.empty()) return std::nullopt;
-  const int vertexCount = static_cast<int>(mesh.positions.size());
-  std::vector<Eigen::Vector3d> file(mesh.positions.size());
-  for (std::size_t v = 0; v < file.size(); ++v)
-    file[v] = zUpToFile(mesh.positions[v], mesh.fileUp).cast<double>();
-
-  // The box of the triangles' corners (a stray vertex no triangle uses is not geometry).
+// The triangles' corners in the file's frame (three per triangle) and their box.
+struct FileCorners {
+  std::vector<Eigen::Vector3d> corners;
   Eigen::AlignedBox3d box;
+};
+
+FileCorners fileCorners(const Mesh& mesh) {
+  const int vertexCount = static_cast<int>(mesh.positions.size());
+  FileCorners out;
+  out.corners.reserve(mesh.triangles.size() * 3);
   for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
     for (int k = 0; k < 3; ++k) {
       const int v = mesh.triangles[t][k];
       if (v < 0 || v >= vertexCount)
-        throw InvalidArgument("geometry identity: triangle " + std::to_string(t) +
-                              " names vertex " + std::to_string(v) + " of a mesh with " +
-                              std::to_string(vertexCount));
-      if (!file[std::size_t(v)].allFinite())
-        throw InvalidArgument("geometry identity: vertex " + std::to_string(v) + " is not finite");
-      box.extend(file[std::size_t(v)]);
+        throw InvalidArgument("geometry outline: triangle " + std::to_string(t) + " names vertex " +
+                              std::to_string(v) + " of a mesh with " + std::to_string(vertexCount));
+      const Eigen::Vector3d p =
+          zUpToFile(mesh.positions[std::size_t(v)], mesh.fileUp).cast<double>();
+      if (!p.allFinite())
+        throw InvalidArgument("geometry outline: vertex " + std::to_string(v) + " is not finite");
+      out.corners.push_back(p);
+      out.box.extend(p);
     }
   }
-  const double extent = box.sizes().maxCoeff();
-  if (!(extent > 0)) return std::nullopt;
+  return out;
+}
 
-  // A power-of-two cell: (x - lowest) / cell is exact (the difference of two floats is a double),
-  // so rounding depends on where the corner lies in the box alone, not where the box lies.
-  const int exponent = static_cast<int>(std::ceil(std::log2(extent))) - kCellsPerExtentLog2;
-  auto cornerOf = [&](int v) {
-    Corner c{};
-    for (int a = 0; a < 3; ++a)
-      c[std::size_t(a)] = static_cast<std::int32_t>(
-          std::llround(std::ldexp(file[std::size_t(v)][a] - box.min()[a], -exponent)));
-    return c;
-  };
+std::optional<GeometryOutline> outlineOf(const FileCorners& corners) {
+  if (corners.corners.empty()) return std::nullopt;
+  GeometryOutline outline;
+  outline.triangles = corners.corners.size() / 3;
+  outline.origin = corners.box.min();
+  outline.size = corners.box.sizes();
+  if (!(outline.extent() > 0)) return std::nullopt;
+  return outline;
+}
 
-  std::vector<CellTriangle> inOrder;
-  inOrder.reserve(mesh.triangles.size());
-  for (const Eigen::Vector3i& t : mesh.triangles)
-    inOrder.push_back(startAtSmallestCorner({cornerOf(t[0]), cornerOf(t[1]), cornerOf(t[2])}));
+using Cell = std::array<std::int64_t, 3>;
 
-  // The cell size, so a copy scaled by a power of two (the same cells) differs.
-  const std::string header(reinterpret_cast<const char*>(&exponent), sizeof exponent);
+struct CellHash {
+  std::size_t operator()(const Cell& c) const {
+    std::uint64_t h = 1469598103934665603ull;
+    for (std::int64_t v : c) h = (h ^ static_cast<std::uint64_t>(v)) * 1099511628211ull;
+    return static_cast<std::size_t>(h);
+  }
+};
 
-  GeometryIdentity identity;
-  identity.triangleOrder = hashOf(header, inOrder);
-  std::sort(inOrder.begin(), inOrder.end());
-  identity.shape = hashOf(header, inOrder);
-  identity.origin = box.min();
-  return identity;
+// One mesh's triangles relative to its box origin, with a grid of their centres.
+class TriangleGrid {
+ public:
+  TriangleGrid(const FileCorners& file, double cell) : m_cell(cell) {
+    m_corners.reserve(file.corners.size());
+    for (const Eigen::Vector3d& p : file.corners) m_corners.push_back(p - file.box.min());
+    for (std::size_t t = 0; t < triangles(); ++t) m_cells[cellOf(centre(t))].push_back(t);
+  }
+
+  std::size_t triangles() const { return m_corners.size() / 3; }
+  const Eigen::Vector3d& corner(std::size_t t, int k) const {
+    return m_corners[3 * t + std::size_t(k)];
+  }
+  Eigen::Vector3d centre(std::size_t t) const {
+    return (corner(t, 0) + corner(t, 1) + corner(t, 2)) / 3.0;
+  }
+
+  // Triangle `t` of `other` and triangle `mine` of this grid have the same corners within a cell,
+  // in the same winding, from any first corner.
+  bool same(const TriangleGrid& other, std::size_t t, std::size_t mine) const {
+    for (int start = 0; start < 3; ++start) {
+      bool all = true;
+      for (int k = 0; k < 3 && all; ++k)
+        all = (other.corner(t, k) - corner(mine, (k + start) % 3)).cwiseAbs().maxCoeff() <= m_cell;
+      if (all) return true;
+    }
+    return false;
+  }
+
+  // Some triangle of this grid is triangle `t` of `other`. Corners within a cell put the centres
+  // within a cell, so the centre's cell and its neighbours hold every candidate.
+  bool holds(const TriangleGrid& other, std::size_t t) const {
+    const Cell c = cellOf(other.centre(t));
+    for (std::int64_t dx = -1; dx <= 1; ++dx)
+      for (std::int64_t dy = -1; dy <= 1; ++dy)
+        for (std::int64_t dz = -1; dz <= 1; ++dz) {
+          const auto it = m_cells.find({c[0] + dx, c[1] + dy, c[2] + dz});
+          if (it == m_cells.end()) continue;
+          for (std::size_t mine : it->second)
+            if (same(other, t, mine)) return true;
+        }
+    return false;
+  }
+
+ private:
+  Cell cellOf(const Eigen::Vector3d& p) const {
+    return {static_cast<std::int64_t>(std::floor(p.x() / m_cell)),
+            static_cast<std::int64_t>(std::floor(p.y() / m_cell)),
+            static_cast<std::int64_t>(std::floor(p.z() / m_cell))};
+  }
+
+  double m_cell;
+  std::vector<Eigen::Vector3d> m_corners;
+  std::unordered_map<Cell, std::vector<std::size_t>, CellHash> m_cells;
+};
+
+}  // namespace
+
+std::optional<GeometryOutline> geometryOutline(const Mesh& mesh) {
+  return outlineOf(fileCorners(mesh));
+}
+
+bool sameOutline(const GeometryOutline& a, const GeometryOutline& b, double relativeTolerance) {
+  const double within = relativeTolerance * std::max(a.extent(), b.extent());
+  return a.triangles == b.triangles && (a.size - b.size).cwiseAbs().maxCoeff() <= within;
+}
+
+Eigen::Vector3d twinOffset(const GeometryOutline& from, const GeometryOutline& to) {
+  return to.origin - from.origin;
+}
+
+std::optional<GeometryMatch> matchGeometry(const Mesh& from, const Mesh& to,
+                                           double relativeTolerance) {
+  if (!(relativeTolerance > 0 && relativeTolerance < 1))
+    throw InvalidArgument("same geometry: the tolerance " + std::to_string(relativeTolerance) +
+                          " is not between 0 and 1 (a share of the object's size)");
+  const FileCorners a = fileCorners(from), b = fileCorners(to);
+  const auto outlineA = outlineOf(a), outlineB = outlineOf(b);
+  if (!outlineA || !outlineB || !sameOutline(*outlineA, *outlineB, relativeTolerance))
+    return std::nullopt;
+
+  const double cell = relativeTolerance * std::max(outlineA->extent(), outlineB->extent());
+  const TriangleGrid gridA(a, cell), gridB(b, cell);
+  // Both ways: equal counts alone would let one triangle of A stand for two of B.
+  for (std::size_t t = 0; t < gridA.triangles(); ++t)
+    if (!gridB.holds(gridA, t)) return std::nullopt;
+  for (std::size_t t = 0; t < gridB.triangles(); ++t)
+    if (!gridA.holds(gridB, t)) return std::nullopt;
+
+  GeometryMatch match;
+  match.offset = twinOffset(*outlineA, *outlineB);
+  match.sameTriangleOrder = true;
+  for (std::size_t t = 0; t < gridA.triangles() && match.sameTriangleOrder; ++t)
+    match.sameTriangleOrder = gridB.same(gridA, t, t);
+  return match;
 }
 
 }  // namespace sagrid

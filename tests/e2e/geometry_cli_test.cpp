@@ -175,7 +175,7 @@ TEST(InfoCommand, PrintsTheUnitsAnnotateWouldGuess) {
   EXPECT_EQ(nlohmann::json::parse(r.output).at("units_guess").at("unit"), "cm");
 }
 
-TEST(InfoCommand, GeometryIdIsTheSameForTheSameTrianglesInAnotherMaterial) {
+TEST(InfoCommand, SameGeometryAsSaysWhetherTwoFilesHoldTheSameTrianglesAndTheirOffset) {
   const fs::path dir = test::freshTempDir();
   const Mesh stove = test::box({0, 0, 0}, {0.6f, 0.6f, 0.9f});
   exportMesh(stove, dir / "stove.obj");
@@ -186,23 +186,30 @@ TEST(InfoCommand, GeometryIdIsTheSameForTheSameTrianglesInAnotherMaterial) {
   exportMesh(red, dir / "red.obj");
   exportMesh(test::box({0, 0, 0}, {0.6f, 0.6f, 0.95f}), dir / "taller.obj");
   exportMesh(test::box({2, -1, 0.5f}, {2.6f, -0.4f, 1.4f}), dir / "moved.obj");
-  auto shapeOf = [&](const char* file) {
-    const auto r = runSagrid("info " + shellQuote((dir / file).string()) + " --up z --json --geometry-id");
+  auto sameAs = [&](const char* file, const char* other) {
+    const auto r = runSagrid("info " + shellQuote((dir / file).string()) +
+                             " --json --same-geometry-as " + shellQuote((dir / other).string()));
     EXPECT_EQ(r.exitCode, 0) << r.output;
-    return nlohmann::json::parse(r.output).at("geometry_id").at("shape").get<std::string>();
+    return nlohmann::json::parse(r.output).at("same_geometry");
   };
-  EXPECT_EQ(shapeOf("stove.obj").size(), 32u);
-  EXPECT_EQ(shapeOf("stove.obj"), shapeOf("red.obj"));
-  EXPECT_NE(shapeOf("stove.obj"), shapeOf("taller.obj"));
-  EXPECT_EQ(shapeOf("stove.obj"), shapeOf("moved.obj"));  // elsewhere in its file
-  const auto moved =
-      runSagrid("info " + shellQuote((dir / "moved.obj").string()) + " --up z --json --geometry-id");
-  const auto origin = nlohmann::json::parse(moved.output).at("geometry_id").at("origin");
-  EXPECT_NEAR(origin.at(0).get<double>(), 2.0, 1e-6);
-  EXPECT_NEAR(origin.at(1).get<double>(), -1.0, 1e-6);
-  EXPECT_NEAR(origin.at(2).get<double>(), 0.5, 1e-6);
-  const auto text = runSagrid("info " + shellQuote((dir / "red.obj").string()) + " --up z --geometry-id");
-  EXPECT_THAT(text.output, HasSubstr("geometry id: " + shapeOf("stove.obj") + " (triangle order "));
+  const auto red_ = sameAs("red.obj", "stove.obj");
+  EXPECT_TRUE(red_.at("same").get<bool>());
+  EXPECT_FALSE(red_.at("same_triangle_order").get<bool>());
+  EXPECT_FALSE(sameAs("taller.obj", "stove.obj").at("same").get<bool>());
+  EXPECT_TRUE(sameAs("taller.obj", "stove.obj").at("offset").is_null());
+  const auto moved = sameAs("moved.obj", "stove.obj");  // elsewhere in its file
+  ASSERT_TRUE(moved.at("same").get<bool>());
+  EXPECT_TRUE(moved.at("same_triangle_order").get<bool>());
+  const auto offset = moved.at("offset");
+  EXPECT_NEAR(offset.at(0).get<double>(), 2.0, 1e-6);
+  EXPECT_NEAR(offset.at(1).get<double>(), -1.0, 1e-6);
+  EXPECT_NEAR(offset.at(2).get<double>(), 0.5, 1e-6);
+  const std::string info =
+      "info " + shellQuote((dir / "moved.obj").string()) + " --same-geometry-as ";
+  EXPECT_THAT(runSagrid(info + shellQuote((dir / "stove.obj").string())).output,
+              HasSubstr("stove.obj: yes, offset 2 -1 0.5 (same triangle order)"));
+  EXPECT_THAT(runSagrid(info + shellQuote((dir / "taller.obj").string())).output,
+              HasSubstr("taller.obj: no"));
 }
 
 TEST(InfoCommand, ListsSmallParts) {

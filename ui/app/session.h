@@ -177,7 +177,7 @@ class Session {
   // On opening: units the curator set for the object's source this session, where its own are
   // only guessed (session_units.cpp).
   void carryCuratedUnits();
-  // On opening: records the object's geometry identity in the queue and, where the object has no
+  // On opening: records the object's geometry outline in the queue and, where the object has no
   // curated labels yet, starts it from the labels of a curated object of the same geometry (one
   // undoable step; session_twin.cpp). Returns that object's id, empty when nothing was carried.
   std::string carryTwinPoints();

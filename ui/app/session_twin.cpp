@@ -1,8 +1,9 @@
-// The Session's same-geometry twins: the open object's geometry identity kept in the queue, and the
+// The Session's same-geometry twins: the open object's geometry outline kept in the queue, and the
 // points, category and units of a curated twin carried to an object that has no curated labels
 // yet (ui/document/twin_points.h), moved by the offset between the two copies' geometry origins
-// (a twin may sit elsewhere in its file). Only at opening: a twin curated later changes nothing
-// already open or opened.
+// (a twin may sit elsewhere in its file). A curated object of the same outline is a candidate; its
+// mesh is imported to confirm it (matchGeometry), so an object without candidates costs one pass
+// over its own mesh. Only at opening: a twin curated later changes nothing already open or opened.
 #include <algorithm>
 #include <system_error>
 
@@ -42,32 +43,40 @@ std::string Session::carryTwinPoints() {
   if (!m_document || m_queue.empty()) return {};
   const std::size_t index = std::size_t(m_queue.current());
   try {
-    m_queue.setGeometry(index, geometryIdentity(m_document->mesh()));
+    m_queue.setGeometry(index, geometryOutline(m_document->mesh()));
   } catch (const Error& e) {
-    logger()->warn("{}: no geometry identity ({}): no twin is looked for",
-                   m_document->displayName(), e.what());
+    logger()->warn("{}: no geometry outline ({}): no twin is looked for", m_document->displayName(),
+                   e.what());
     return {};
   }
+  if (!m_queue.entry(index).geometry) return {};
   if (hasCuratedLabels(m_document->labels(), m_queue.entry(index).state)) return {};
 
   // The twin curated last, where several are: its labels are the curator's latest word.
-  std::vector<std::size_t> twins = m_queue.curatedTwinsOf(index);
+  std::vector<std::size_t> twins = m_queue.curatedTwinCandidatesOf(index);
   std::stable_sort(twins.begin(), twins.end(), [&](std::size_t a, std::size_t b) {
     return writtenAt(m_queue.entry(a).labels) > writtenAt(m_queue.entry(b).labels);
   });
   for (std::size_t t : twins) {
     const QueueEntry& twin = m_queue.entry(t);
+    std::optional<GeometryMatch> match;
     ObjectLabels labels;
     try {
+      // Any up axis: the match is in the files' own frames.
+      match = matchGeometry(importMesh(twin.mesh, ImportOptions(UpAxis::Z)), m_document->mesh());
+      if (!match) {
+        logger()->info("{}: the outline of {}, not its geometry", m_document->displayName(),
+                       twin.mesh.string());
+        continue;
+      }
       labels = readLabels(twin.labels);
     } catch (const Error& e) {
       logger()->warn("same-geometry twin not carried: {}", e.what());
       continue;
     }
     const std::string id = labels.object.id.empty() ? twin.mesh.stem().string() : labels.object.id;
-    const GeometryIdentity& here = *m_queue.entry(index).geometry;
-    const bool sameOrder = twin.geometry->triangleOrder == here.triangleOrder;
-    const Eigen::Vector3f offset = twinOffset(*twin.geometry, here).cast<float>();
+    const bool sameOrder = match->sameTriangleOrder;
+    const Eigen::Vector3f offset = match->offset.cast<float>();
     // The twin's units, as a guess that names it, where this object's are unknown or guessed.
     std::optional<UnitGuess> units;
     if (unitsKnown(labels) &&

@@ -77,23 +77,26 @@ std::vector<fs::path> meshesIn(const fs::path& dir) {
   return found;
 }
 
-// An entry's "geometry" in the state file; none where absent or damaged (an identity is only
-// compared, so a damaged one just finds no twin) or without "origin" (written by a build whose
-// identity still held where the object lies, so it would never match one of this build).
-std::optional<GeometryIdentity> geometryIn(const nlohmann::json& item) {
+// An entry's "geometry" in the state file; none where absent or damaged (an outline is only
+// compared, so a damaged one just finds no twin) or without "triangles" (an older build's exact
+// hash, which this build cannot compare).
+std::optional<GeometryOutline> geometryIn(const nlohmann::json& item) {
   const auto it = item.find("geometry");
   if (it == item.end() || !it->is_object()) return std::nullopt;
-  const auto shape = it->find("shape"), order = it->find("triangle_order"),
-             origin = it->find("origin");
-  if (shape == it->end() || order == it->end() || !shape->is_string() || !order->is_string())
-    return std::nullopt;
-  if (origin == it->end() || !origin->is_array() || origin->size() != 3) return std::nullopt;
-  GeometryIdentity identity{shape->get<std::string>(), order->get<std::string>()};
-  for (int a = 0; a < 3; ++a) {
-    if (!(*origin)[std::size_t(a)].is_number()) return std::nullopt;
-    identity.origin[a] = (*origin)[std::size_t(a)].get<double>();
+  const auto triangles = it->find("triangles"), origin = it->find("origin"),
+             size = it->find("size");
+  if (triangles == it->end() || !triangles->is_number_unsigned()) return std::nullopt;
+  GeometryOutline outline;
+  outline.triangles = triangles->get<std::size_t>();
+  for (const auto& [field, into] :
+       {std::pair{origin, &outline.origin}, std::pair{size, &outline.size}}) {
+    if (field == it->end() || !field->is_array() || field->size() != 3) return std::nullopt;
+    for (int a = 0; a < 3; ++a) {
+      if (!(*field)[std::size_t(a)].is_number()) return std::nullopt;
+      (*into)[a] = (*field)[std::size_t(a)].get<double>();
+    }
   }
-  return identity;
+  return outline;
 }
 
 QueueEntry entryFor(const fs::path& mesh) {
@@ -137,13 +140,13 @@ void ReviewQueue::orderLeastSureFirst() {
   save();
 }
 
-void ReviewQueue::setGeometry(std::size_t index, std::optional<GeometryIdentity> geometry) {
+void ReviewQueue::setGeometry(std::size_t index, std::optional<GeometryOutline> geometry) {
   if (m_entries.at(index).geometry == geometry) return;
   m_entries.at(index).geometry = std::move(geometry);
   save();
 }
 
-std::vector<std::size_t> ReviewQueue::curatedTwinsOf(std::size_t index) const {
+std::vector<std::size_t> ReviewQueue::curatedTwinCandidatesOf(std::size_t index) const {
   std::vector<std::size_t> twins;
   const auto& geometry = m_entries.at(index).geometry;
   if (!geometry) return twins;
@@ -151,7 +154,8 @@ std::vector<std::size_t> ReviewQueue::curatedTwinsOf(std::size_t index) const {
     const QueueEntry& e = m_entries[i];
     const bool curated = e.state == QueueState::Accepted || e.state == QueueState::Edited ||
                          e.state == QueueState::InProgress;
-    if (i != index && curated && e.geometry && e.geometry->shape == geometry->shape) twins.push_back(i);
+    if (i != index && curated && e.geometry && sameOutline(*e.geometry, *geometry))
+      twins.push_back(i);
   }
   return twins;
 }
@@ -214,11 +218,11 @@ void ReviewQueue::save() const {
     objects.push_back({{"mesh", entry.mesh.lexically_relative(base).generic_string()},
                        {"state", toString(entry.state)}});
     if (entry.geometry)
-      objects.back()["geometry"] = {{"shape", entry.geometry->shape},
-                                    {"triangle_order", entry.geometry->triangleOrder},
-                                    {"origin",
-                                     {entry.geometry->origin.x(), entry.geometry->origin.y(),
-                                      entry.geometry->origin.z()}}};
+      objects.back()["geometry"] = {
+          {"triangles", entry.geometry->triangles},
+          {"origin",
+           {entry.geometry->origin.x(), entry.geometry->origin.y(), entry.geometry->origin.z()}},
+          {"size", {entry.geometry->size.x(), entry.geometry->size.y(), entry.geometry->size.z()}}};
   }
   nlohmann::json json = {{"schema", "sagrid.review-queue/1"}, {"objects", objects}};
   json["current"] =

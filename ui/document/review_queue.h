@@ -25,9 +25,10 @@ struct QueueEntry {
   std::string error;  // last load error, shown in the queue (the queue goes on)
   // P(right with one key) of its prediction (labels' prediction.object_confidence), when predicted.
   std::optional<double> confidence;
-  // Its mesh's geometry identity, known once the object was opened (kept in the state file), so
-  // an object opened later finds its curated same-geometry twins without importing them.
-  std::optional<GeometryIdentity> geometry;
+  // Its mesh's geometry outline (triangle count, box size and origin), known once the object was
+  // opened (kept in the state file), so an object opened later finds its curated twins'
+  // candidates without importing anything; only a candidate's mesh is imported, to confirm it.
+  std::optional<GeometryOutline> geometry;
 };
 
 // The object confidence a labels.json records (prediction.object_confidence); nullopt when the file
@@ -65,9 +66,10 @@ class ReviewQueue {
   void setState(std::size_t index, QueueState state);  // saves
   void setError(std::size_t index, std::string error);
   void setConfidence(std::size_t index, std::optional<double> confidence);
-  void setGeometry(std::size_t index, std::optional<GeometryIdentity> geometry);  // saves on change
-  // The other entries of `index`'s shape (GeometryIdentity::shape) a curator accepted or edited.
-  std::vector<std::size_t> curatedTwinsOf(std::size_t index) const;
+  void setGeometry(std::size_t index, std::optional<GeometryOutline> geometry);  // saves on change
+  // The other entries a curator accepted, edited or began whose outline is `index`'s (sameOutline):
+  // candidate twins, to be confirmed on their meshes (matchGeometry).
+  std::vector<std::size_t> curatedTwinCandidatesOf(std::size_t index) const;
   // Least sure first: objects without a prediction, then by increasing confidence (stable); the
   // current object stays current. Saves.
   void orderLeastSureFirst();

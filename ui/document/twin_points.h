@@ -1,12 +1,12 @@
 // Points carried from a curated twin: an object of the same geometry
-// (core/mesh/geometry_identity.h; a colour variant, the same washbasin with another material) needs
-// the same labels, so an object with none curated yet starts from its twin's points, category and
-// units instead of the model's prediction. The points stay to confirm (status predicted: one key,
-// A, accepts them) and labels.json records where they came from: object.points_carried_from = the
-// twin's id. The Session finds the twin when an object opens (ui/app/session_twin.cpp). A twin
-// may lie elsewhere in its file (the same mesh placed at another spot): its points move by
-// `offset`, this object's geometry origin less the twin's (twinOffset), so they land on the same
-// spot of this copy.
+// (core/mesh/geometry_identity.h: the same triangles up to a translation; a colour variant, the
+// same washbasin with another material) needs the same labels, so an object with none curated yet
+// starts from its twin's points, category and units instead of the model's prediction. The points
+// stay to confirm (status predicted: one key, A, accepts them) and labels.json records where they
+// came from: object.points_carried_from = the twin's id. The Session finds the twin when an object
+// opens (ui/app/session_twin.cpp). A twin may lie elsewhere in its file (the same mesh placed at
+// another spot): its points move by `offset`, this object's geometry origin less the twin's
+// (GeometryMatch::offset), so they land on the same spot of this copy.
 #pragma once
 
 #include <optional>

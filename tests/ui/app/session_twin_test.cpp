@@ -8,6 +8,7 @@
 
 #include <chrono>
 #include <fstream>
+#include <iomanip>
 #include <thread>
 
 #include "core/annotate/units_record.h"
@@ -26,9 +27,10 @@ const Eigen::Vector3f kCurated{0.25f, -0.25f, 0.2f};  // where the curator moved
 
 // A plate with a block on it, in one material of `colour` (another vertex order and UVs for
 // the second material, as another export of the same model writes it); `blockAt` moves the block,
-// `placedAt` the whole object (the same mesh at another spot of its file).
+// `placedAt` the whole object (the same mesh at another spot of its file), `noise` every
+// coordinate by up to that much (a file that prints a few decimals after moving the model).
 void writeObject(const fs::path& dir, const std::string& colour, float blockAt = 0.1f,
-                 const Eigen::Vector3f& placedAt = Eigen::Vector3f::Zero()) {
+                 const Eigen::Vector3f& placedAt = Eigen::Vector3f::Zero(), float noise = 0.0f) {
   fs::create_directories(dir);
   std::ofstream(dir / "look.mtl") << "newmtl " << colour << "\nKd "
                                   << (colour == "white" ? "1 1 1" : "0 0 1") << "\n";
@@ -43,8 +45,11 @@ void writeObject(const fs::path& dir, const std::string& colour, float blockAt =
                                         {9, 10, 6},  {9, 6, 5},  {10, 11, 7}, {10, 7, 6},
                                         {11, 12, 8}, {11, 8, 7}, {12, 9, 5},  {12, 5, 8}};
   if (colour != "white") std::reverse(faces.begin(), faces.end());
-  for (const auto& corner : corners) {
-    const Eigen::Vector3f c = corner + placedAt;
+  obj << std::setprecision(10);
+  for (std::size_t i = 0; i < corners.size(); ++i) {
+    Eigen::Vector3f c = corners[i] + placedAt;
+    for (int a = 0; a < 3; ++a)
+      c[a] += noise * float(int((i * 7 + std::size_t(a) * 3) % 5) - 2) / 2;
     obj << "v " << c.x() << " " << c.y() << " " << c.z() << "\n";
   }
   if (colour != "white") obj << "vt 0 0\nvt 1 0\nvt 1 1\n";
@@ -149,15 +154,16 @@ TEST(SessionTwin, AColourVariantOfACuratedObjectOpensWithItsPointsToConfirm) {
   EXPECT_EQ(opens, expected);
 }
 
-TEST(SessionTwin, ACopyPlacedElsewhereInItsFileGetsThePointsOnTheSameSpot) {
-  // b is a's mesh placed 2 units away along x, 1.5 back along y and 0.5 up: the curated point on
-  // a's block top lands on b's block top, at the same place on it. (Not hundreds of units away:
-  // there a float's step, 1.5e-5, is a quarter of this 1-unit object's cell, enough to round a
-  // corner such as 240.1 into the next cell; the identity then misses the twin, the safe way.)
-  const Eigen::Vector3f placedAt(2.0f, -1.5f, 0.5f);
+TEST(SessionTwin, ANoisyCopyPlacedFarElsewhereInItsFileGetsThePointsOnTheSameSpot) {
+  // b is a's mesh placed 240 units away along x, 150 back along y and 0.5 up, every coordinate
+  // off by up to 1e-6 units (1e-6 of this 1-unit object; a float's step there is 1.5e-5): the
+  // curated point on a's block top lands on b's block top, at the same place on it.
+  const Eigen::Vector3f placedAt(240.3f, -150.7f, 0.5f);
   const fs::path dir = test::freshTempDir() / "queue";
   writeObject(dir / "a_white", "white");
-  writeObject(dir / "b_blue", "blue", 0.1f, placedAt);
+  writeObject(dir / "b_blue", "blue", 0.1f, placedAt, 1e-6f);
+  // A copy with its block moved by 1 % of the object: the same outline, not the same geometry.
+  writeObject(dir / "c_edited", "blue", 0.11f, placedAt);
   Session session;
   session.logErrors = false;
   predictOnePoint(session);
@@ -181,6 +187,10 @@ TEST(SessionTwin, ACopyPlacedElsewhereInItsFileGetsThePointsOnTheSameSpot) {
   ASSERT_EQ(saved.affordances.size(), 1u);
   EXPECT_TRUE(saved.affordances[0].position.isApprox(kCurated + placedAt, 1e-6f));
   EXPECT_EQ(saved.object.extra.value("points_carried_from", ""), "a_white");
+  session.openEntry(2);
+  EXPECT_FALSE(pointsCarriedFrom(session.document()->labels()));
+  ASSERT_TRUE(session.queue().entry(2).geometry);
+  EXPECT_TRUE(sameOutline(*session.queue().entry(0).geometry, *session.queue().entry(2).geometry));
 }
 
 TEST(SessionTwin, UndoingTheCarriedPointsGivesTheModelsPrediction) {

@@ -69,45 +69,59 @@ TEST(ReviewQueue, AnObjectInProgressIsKeptButNotCountedAsReviewed) {
   EXPECT_EQ(resumed.reviewedCount(), 1u);
 }
 
-TEST(ReviewQueue, KeepsGeometryAndFindsOnlyCuratedTwinsOfTheSameShape) {
+GeometryOutline outline(std::size_t triangles, Eigen::Vector3d size, Eigen::Vector3d origin) {
+  GeometryOutline o;
+  o.triangles = triangles;
+  o.size = size;
+  o.origin = origin;
+  return o;
+}
+
+TEST(ReviewQueue, KeepsGeometryAndFindsOnlyCuratedCandidatesOfTheSameOutline) {
   const auto dir = test::freshTempDir();
-  for (const char* id : {"o1", "o2", "o3", "o4", "o5"}) touch(dir / id / "mesh.obj");
-  const GeometryIdentity basin{"aaaa", "0001"}, stove{"bbbb", "0003"};
-  const GeometryIdentity basinReordered{"aaaa", "0002", {-70.5, 148.25, 1e-3}};  // elsewhere
+  for (const char* id : {"o1", "o2", "o3", "o4", "o5", "o6"}) touch(dir / id / "mesh.obj");
+  const Eigen::Vector3d size(101.2, 48.7, 60.05);
+  const GeometryOutline basin = outline(6636, size, {0, 0, 0});
+  // Elsewhere in its file, its size 1e-4 units (1e-6 of it) off: a file printing 4 decimals.
+  const GeometryOutline basinElsewhere =
+      outline(6636, size + Eigen::Vector3d(1e-4, -1e-4, 0), {240.0001, -70.5, 1e-3});
+  const GeometryOutline longer = outline(6636, size + Eigen::Vector3d(0.1, 0, 0), {0, 0, 0});
+  const GeometryOutline fewer = outline(6634, size, {0, 0, 0});
   {
     ReviewQueue queue = ReviewQueue::openFolder(dir);
     queue.setGeometry(0, basin);
-    queue.setGeometry(1, basinReordered);
-    queue.setGeometry(2, stove);
+    queue.setGeometry(1, basinElsewhere);
+    queue.setGeometry(2, longer);
     queue.setGeometry(3, basin);
-    queue.setState(1, QueueState::Edited);
-    queue.setState(2, QueueState::Accepted);
+    queue.setGeometry(4, fewer);
+    for (std::size_t i : {1, 2, 4}) queue.setState(i, QueueState::Edited);
     queue.setState(3, QueueState::Skipped);  // seen, not curated
-    EXPECT_EQ(queue.curatedTwinsOf(0), std::vector<std::size_t>{1});
-    EXPECT_TRUE(queue.curatedTwinsOf(4).empty());  // never opened: no geometry yet
+    EXPECT_EQ(queue.curatedTwinCandidatesOf(0), std::vector<std::size_t>{1});
+    EXPECT_TRUE(queue.curatedTwinCandidatesOf(5).empty());  // never opened: no geometry yet
   }
   const ReviewQueue resumed = ReviewQueue::openFolder(dir);
   ASSERT_TRUE(resumed.entry(1).geometry);
-  EXPECT_EQ(*resumed.entry(1).geometry, basinReordered);
-  EXPECT_FALSE(resumed.entry(4).geometry);
-  EXPECT_EQ(resumed.curatedTwinsOf(0), std::vector<std::size_t>{1});
-  EXPECT_EQ(resumed.curatedTwinsOf(3), std::vector<std::size_t>{1});
-  EXPECT_TRUE(resumed.curatedTwinsOf(1).empty());  // its twins are not curated
+  EXPECT_EQ(*resumed.entry(1).geometry, basinElsewhere);  // the numbers as they were
+  EXPECT_FALSE(resumed.entry(5).geometry);
+  EXPECT_EQ(resumed.curatedTwinCandidatesOf(0), std::vector<std::size_t>{1});
+  EXPECT_EQ(resumed.curatedTwinCandidatesOf(3), std::vector<std::size_t>{1});
+  EXPECT_TRUE(resumed.curatedTwinCandidatesOf(1).empty());  // its twins are not curated
 }
 
-TEST(ReviewQueue, AGeometryWithoutOriginFromAnOlderBuildIsForgotten) {
-  // Such an identity still held where the object lies: it would never match one of this build.
+TEST(ReviewQueue, AnExactHashFromAnOlderBuildIsForgotten) {
+  // Such a geometry held a hash of rounded corners, which this build cannot compare.
   const auto dir = test::freshTempDir();
   for (const char* id : {"o1", "o2"}) touch(dir / id / "mesh.obj");
   std::ofstream(dir / kQueueStateFile) << R"({"schema": "sagrid.review-queue/1", "objects": [
-    {"mesh": "o1/mesh.obj", "state": "edited", "geometry": {"shape": "aa", "triangle_order": "01"}},
+    {"mesh": "o1/mesh.obj", "state": "edited",
+     "geometry": {"shape": "aa", "triangle_order": "01", "origin": [1, 2, 3]}},
     {"mesh": "o2/mesh.obj", "state": "unreviewed",
-     "geometry": {"shape": "aa", "triangle_order": "01", "origin": [1, 2, 3]}}]})";
+     "geometry": {"triangles": 12, "origin": [1, 2, 3], "size": [0.5, 0.25, 1]}}]})";
   const ReviewQueue queue = ReviewQueue::openFolder(dir);
   EXPECT_EQ(queue.entry(0).state, QueueState::Edited);
   EXPECT_FALSE(queue.entry(0).geometry);
   ASSERT_TRUE(queue.entry(1).geometry);
-  EXPECT_EQ(queue.entry(1).geometry->origin, Eigen::Vector3d(1, 2, 3));
+  EXPECT_EQ(*queue.entry(1).geometry, outline(12, {0.5, 0.25, 1}, {1, 2, 3}));
 }
 
 TEST(ReviewQueue, DamagedStateFileStartsOver) {
