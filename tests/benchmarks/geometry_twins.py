@@ -1,13 +1,12 @@
 #!/usr/bin/env python3
 """How many objects of a dataset share their geometry with another (a colour variant, the same model
-in another material or format): the GUI carries a curated object's points to such twins
-(ui/document/twin_points.h). Runs `sagrid info MESH --geometry-id --json` on every object folder's
-mesh (the file labels.json names, else the folder's one mesh file), groups the objects by the
-identity's shape (blind to where the object lies in its file: twins' points carry moved by the
-offset of their origins), and prints each group of two or more and the count; then the objects that
-share a triangle count and a box size (to 0.1 % of the extent) with another but not its shape: twins
-the identity may miss (a file that re-encodes coordinates, e.g. prints them to 4 decimals after
-moving the object, rounds a few corners into the next cell).
+in another material or format, placed elsewhere in its file): the GUI carries a curated object's
+points to such twins (ui/document/twin_points.h). Runs `sagrid info MESH --json` on every object
+folder's mesh (the file labels.json names, else the folder's one mesh file); objects of one triangle
+count and box size (sorted, to 1e-3 of the extent: the GUI's candidates, screened loosely here as the
+box is read in each file's detected up axis) are compared with `sagrid info A --same-geometry-as B`
+(the same triangles up to a translation, within 1e-4 of the size: core/mesh/geometry_identity.h).
+Prints each group of twins and the count, then the candidates that are not the same geometry.
 
   tests/benchmarks/geometry_twins.py build/sagrid DATASET [DATASET ...] [--json OUT]
 
@@ -52,48 +51,66 @@ def main():
         if not dataset.is_dir():
             sys.exit(f"{dataset}: not a folder")
 
-    by_shape = collections.defaultdict(list)
-    by_outline = collections.defaultdict(list)
+    objects = []  # (name, mesh, triangles, sorted box sizes)
     failed = []
     folders = [(dataset, folder) for dataset in args.datasets for folder in object_folders(dataset)]
     names = collections.Counter(folder.name for _, folder in folders)
     for dataset, folder in folders:
         name = folder.name if names[folder.name] == 1 else f"{dataset.name}/{folder.name}"
         mesh = mesh_of(folder)
-        run = subprocess.run([args.sagrid, "info", str(mesh), "--geometry-id", "--json", "--resolution", "8"],
+        run = subprocess.run([args.sagrid, "info", str(mesh), "--json", "--resolution", "8"],
                              capture_output=True, text=True)
         if run.returncode != 0:
             failed.append(f"{mesh}: {run.stderr.strip() or run.stdout.strip()}")
             continue
         info = json.loads(run.stdout)
-        identity = info.get("geometry_id")
-        if identity:
-            by_shape[identity["shape"]].append((name, identity["triangle_order"], mesh.name))
-            sizes = [hi - lo for lo, hi in zip(info["bounds"]["min"], info["bounds"]["max"])]
-            step = max(sizes) / 1000
-            outline = (info["triangles"], tuple(round(size / step) for size in sizes))
-            by_outline[outline].append((name, identity["shape"], mesh.name))
-    groups = [sorted(members) for members in by_shape.values() if len(members) > 1]
+        sizes = sorted(hi - lo for lo, hi in zip(info["bounds"]["min"], info["bounds"]["max"]))
+        if info["triangles"] > 0 and sizes[-1] > 0:
+            objects.append((name, mesh, info["triangles"], sizes))
+
+    group_of = {}  # name -> representative (union-find)
+    def root(name):
+        while group_of.get(name, name) != name:
+            name = group_of[name]
+        return name
+    candidates, near = 0, []
+    for i, (name_a, mesh_a, count_a, sizes_a) in enumerate(objects):
+        for name_b, mesh_b, count_b, sizes_b in objects[i + 1:]:
+            within = 1e-3 * max(sizes_a[-1], sizes_b[-1])
+            if count_a != count_b or any(abs(x - y) > within for x, y in zip(sizes_a, sizes_b)):
+                continue
+            candidates += 1
+            run = subprocess.run([args.sagrid, "info", str(mesh_a), "--json", "--resolution", "8",
+                                  "--same-geometry-as", str(mesh_b)], capture_output=True, text=True)
+            if run.returncode != 0:
+                failed.append(f"{mesh_a} against {mesh_b}: {run.stderr.strip() or run.stdout.strip()}")
+                continue
+            same = json.loads(run.stdout)["same_geometry"]
+            if same["same"]:
+                group_of[root(name_b)] = root(name_a)
+                offset = " ".join(f"{x:g}" for x in same["offset"])
+                print(f"twins: {name_a} ({mesh_a.name}), {name_b} ({mesh_b.name}), offset {offset}, "
+                      f"{'same' if same['same_triangle_order'] else 'other'} triangle order")
+            else:
+                near.append([name_a, name_b])
+    members = collections.defaultdict(list)
+    for name, *_ in objects:
+        members[root(name)].append(name)
+    groups = sorted(sorted(g) for g in members.values() if len(g) > 1)
     twins = sum(len(g) for g in groups)
-    for g in sorted(groups):
-        same_order = len({order for _, order, _ in g}) == 1
-        print(f"{len(g)} of one geometry ({'same' if same_order else 'other'} triangle order): " +
-              ", ".join(f"{name} ({mesh})" for name, _, mesh in g))
-    near = [sorted(m) for m in by_outline.values() if len({shape for _, shape, _ in m}) > 1]
-    for g in sorted(near):
-        print(f"{len(g)} of one triangle count and box, {len({s for _, s, _ in g})} shapes: " +
-              ", ".join(f"{name} ({mesh}, {shape[:8]})" for name, shape, mesh in g))
+    for g in groups:
+        print(f"{len(g)} of one geometry: " + ", ".join(g))
+    for a, b in near:
+        print(f"same triangle count and box, other geometry: {a}, {b}")
     for line in failed:
         print(f"not read: {line}")
-    print(f"{len(folders)} objects, {len(folders) - len(failed)} read: {twins} have a same-geometry twin "
-          f"({len(groups)} groups); {sum(len(g) for g in near)} share a triangle count and box with "
-          f"an object of another shape ({len(near)} groups)")
+    print(f"{len(folders)} objects, {len(objects)} read with an extent: {twins} have a same-geometry twin "
+          f"({len(groups)} groups); {candidates} pairs share a triangle count and box, {len(near)} of "
+          f"them not the same geometry")
     if args.json:
-        args.json.write_text(json.dumps({"objects": len(folders), "read": len(folders) - len(failed),
-                                         "with_twin": twins,
-                                         "near_twin_groups": [[name for name, _, _ in g] for g in sorted(near)],
-                                         "groups": [[name for name, _, _ in g] for g in sorted(groups)]},
-                                        indent=2) + "\n")
+        args.json.write_text(json.dumps({"objects": len(folders), "read": len(objects),
+                                         "with_twin": twins, "candidate_pairs": candidates,
+                                         "near_pairs": near, "groups": groups}, indent=2) + "\n")
 
 
 if __name__ == "__main__":
