@@ -2,12 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
-#include <sstream>
 #include <utility>
 
 #include "core/common/atomic_file.h"
 #include "core/common/error.h"
+#include "core/io/json_file.h"
 
 namespace sagrid {
 
@@ -121,16 +120,7 @@ SizeMemory SizeMemory::fromJson(const nlohmann::json& j, const std::filesystem::
 std::optional<SizeMemory> readSizeMemory(const std::filesystem::path& modelsDir) {
   const auto file = modelsDir / kSizeMemoryFile;
   if (!std::filesystem::exists(file)) return std::nullopt;
-  std::ifstream in(file);
-  std::stringstream text;
-  text << in.rdbuf();
-  nlohmann::json j;
-  try {
-    j = nlohmann::json::parse(text.str());
-  } catch (const nlohmann::json::exception& e) {
-    throw FileError(file, std::string("not JSON: ") + e.what());
-  }
-  return SizeMemory::fromJson(j, file);
+  return SizeMemory::fromJson(readJsonFile(file), file);
 }
 
 void writeSizeMemory(const SizeMemory& memory, const std::filesystem::path& modelsDir) {

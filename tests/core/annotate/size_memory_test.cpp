@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
 
 #include "core/common/error.h"
 #include "support/test_paths.h"
@@ -100,6 +101,14 @@ TEST(SizeMemory, MalformedFilesAreClearErrorsNamingTheFile) {
   j = good;
   j["entries"][2]["descriptor"] = {1.0};
   expectError(j, "descriptor has 1 values");
+  // A file that is not JSON, read from a models folder.
+  std::ofstream(file) << "{\"schema\": ";
+  try {
+    readSizeMemory(file.parent_path());
+    ADD_FAILURE() << "no error for a truncated file";
+  } catch (const FileError& e) {
+    EXPECT_NE(std::string(e.what()).find(file.string()), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace
