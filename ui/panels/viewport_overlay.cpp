@@ -58,7 +58,10 @@ void pointLabels(const Session& session, ImDrawList* draw) {
     const ImVec2 full = ImGui::CalcTextSize(s.full.c_str()), number = ImGui::CalcTextSize(s.number.c_str());
     // Labels placed so that a row of knobs' do not pile up: the selected point's first, then the
     // points the eye sees; a label with no room left is its number alone.
-    requests.push_back({{at.x, at.y}, {full.x + 6, full.y + 2}, {number.x + 6, number.y + 2},
+    // Centred so that the right-hand spot puts the text where it always was (8 px above the
+    // marker's centre).
+    const float centreY = at.y - 9.0f + (full.y + 2) / 2;
+    requests.push_back({{at.x, centreY}, {full.x + 6, full.y + 2}, {number.x + 6, number.y + 2},
                         doc->selected() == i ? 0 : hidden ? 2 : 1});
     shown.push_back(std::move(s));
   }
