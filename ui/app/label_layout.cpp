@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <numeric>
+#include <optional>
 
 namespace sagrid::ui {
 
@@ -32,28 +33,33 @@ std::vector<PlacedLabel> layOutLabels(const std::vector<LabelRequest>& requests,
     return requests[a].priority < requests[b].priority;
   });
   std::vector<PlacedLabel> placed(requests.size());
-  std::vector<Box> taken;
-  for (std::size_t i : order) {
-    const LabelRequest& r = requests[i];
-    bool found = false;
-    for (bool shortened : {false, true}) {
-      const Eigen::Vector2f size = shortened ? r.shortSize : r.fullSize;
-      for (const Eigen::Vector2f& at : spots(r.anchor, size, gap)) {
-        const Box box{at, at + size};
-        if (std::any_of(taken.begin(), taken.end(),
-                        [&](const Box& other) { return box.overlaps(other, kPadding); }))
-          continue;
-        placed[i] = {at, shortened};
-        taken.push_back(box);
-        found = true;
-        break;
-      }
-      if (found) break;
+  std::vector<Box> taken(requests.size());
+  std::vector<bool> hasBox(requests.size(), false);
+  // The first spot of `size` around request i free of every other label placed so far.
+  auto freeSpot = [&](std::size_t i, const Eigen::Vector2f& size) -> std::optional<Eigen::Vector2f> {
+    for (const Eigen::Vector2f& at : spots(requests[i].anchor, size, gap)) {
+      const Box box{at, at + size};
+      bool free = true;
+      for (std::size_t j = 0; j < requests.size() && free; ++j)
+        free = j == i || !hasBox[j] || !box.overlaps(taken[j], kPadding);
+      if (free) return at;
     }
-    if (!found) {
-      const Eigen::Vector2f at = spots(r.anchor, r.shortSize, gap).front();
-      placed[i] = {at, true};
-      taken.push_back({at, at + r.shortSize});
+    return std::nullopt;
+  };
+  // Every point gets its number first (a row of knobs keeps all its numbers), then a label grows
+  // to its full text where that fits.
+  for (std::size_t i : order) {
+    const Eigen::Vector2f& size = requests[i].shortSize;
+    const Eigen::Vector2f at = freeSpot(i, size).value_or(spots(requests[i].anchor, size, gap).front());
+    placed[i] = {at, true};
+    taken[i] = {at, at + size};
+    hasBox[i] = true;
+  }
+  for (std::size_t i : order) {
+    const Eigen::Vector2f& size = requests[i].fullSize;
+    if (const auto at = freeSpot(i, size)) {
+      placed[i] = {*at, false};
+      taken[i] = {*at, *at + size};
     }
   }
   return placed;

@@ -1,9 +1,10 @@
 // Where the viewport's point labels go, so that the labels of a row of knobs do not pile on each
-// other (a curator's complaint: "1 togglebutton ?" over "2 togglebutton ?" over ...). Each label
-// tries a few spots around its marker (right, left, above, below) in full, then as its number
-// alone; the first spot free of every label placed before it wins, and labels are placed in
-// priority order (the selected point, then points the eye sees, then hidden ones). A label with
-// no free spot takes its number alone on the right, overlapping.
+// other (a curator's complaint: "1 togglebutton ?" over "2 togglebutton ?" over ...). Every
+// label first takes the first free spot around its marker (right, left, above, below) as its
+// number alone, so a dense row keeps all its numbers; then, in the same order, a label grows to its
+// full text at the first spot where the full text overlaps no other label. Labels go in priority
+// order (the selected point, then points the eye sees, then hidden ones). A number with no free
+// spot sits on the right, overlapping.
 #pragma once
 
 #include <Eigen/Core>

@@ -33,6 +33,23 @@ TEST(LabelLayout, ARowOfKnobsGetsLabelsThatDoNotOverlap) {
   EXPECT_FALSE(placed[0].shortened);  // the first keeps its full label
 }
 
+TEST(LabelLayout, ADenseRowKeepsEveryNumberAndGrowsTheLabelsThatFit) {
+  // A ceramic hob's twelve printed keys 25 px apart: every key keeps a label of its own (its number
+  // at least), none over another, and some have room for the full text above or below the row.
+  std::vector<LabelRequest> row;
+  for (int k = 0; k < 12; ++k) row.push_back({{100.0f + 25.0f * float(k), 300.0f}, {110, 16}, {14, 16}, 1});
+  const auto placed = layOutLabels(row, 8);
+  auto sizeOf = [&](std::size_t i) { return placed[i].shortened ? row[i].shortSize : row[i].fullSize; };
+  int overlapping = 0, full = 0;
+  for (std::size_t a = 0; a < row.size(); ++a) {
+    full += !placed[a].shortened;
+    for (std::size_t b = a + 1; b < row.size(); ++b) overlapping += overlap(placed[a], sizeOf(a), placed[b], sizeOf(b));
+  }
+  EXPECT_EQ(overlapping, 0);
+  EXPECT_GE(full, 2);
+  EXPECT_LT(full, 12);
+}
+
 TEST(LabelLayout, TheSelectedPointsLabelIsPlacedFirstAndKeepsItsSpot) {
   // Two markers on top of each other: the selected one (priority 0, listed second) keeps the
   // right-hand spot in full; the other moves elsewhere.
