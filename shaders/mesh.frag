@@ -8,12 +8,13 @@ uniform vec3 uBaseColor;
 uniform int uHasTexture;
 uniform sampler2D uTexture;
 uniform int uFlatColor;      // 1: draw uBaseColor unlit (wireframe overlay)
-uniform int uPlain;          // 1: one light grey, no texture, material or vertex colour
+uniform int uPlain;          // 1: one light grey, no texture, material or vertex colour;
+                             // 2: uBaseColor alone (a colour per material), no texture or vertex colour
 uniform float uAlpha;
 out vec4 fragColor;
 void main() {
   if (uFlatColor == 1) { fragColor = vec4(uBaseColor, uAlpha); return; }
-  vec3 albedo = uPlain == 1 ? vec3(0.72) : uBaseColor * vColor;
+  vec3 albedo = uPlain == 1 ? vec3(0.72) : uPlain == 2 ? uBaseColor : uBaseColor * vColor;
   if (uPlain == 0 && uHasTexture == 1) albedo *= texture(uTexture, vec2(vUv.x, 1.0 - vUv.y)).rgb;
   vec3 n = normalize(vNormal);
   if (length(vNormal) < 1e-6) n = normalize(cross(dFdx(vWorld), dFdy(vWorld)));

@@ -28,6 +28,7 @@ const std::vector<ShortcutHelp>& shortcutHelp() {
       {"Keypad 7 / 1 / 3", "the whole object from above / the front / the right"},
       {"W", "wireframe"},
       {"G", "plain grey: the mesh without its colours (a black model's shape)"},
+      {"M", "a colour per material: parts that differ only by material (dark keys on dark glass) stand out"},
       {"T", "controls turned as the exports turn them (a knob's part seen moving) / as modelled"},
       {"V", "distance field on/off"},
       {"Ctrl+Z", "undo"},
@@ -119,6 +120,11 @@ bool handleShortcuts(const std::vector<InputEvent>& events, Session& session,
         break;
       case GLFW_KEY_G:
         session.view().plainShading = !session.view().plainShading;
+        if (session.view().plainShading) session.view().materialColours = false;
+        break;
+      case GLFW_KEY_M:
+        session.view().materialColours = !session.view().materialColours;
+        if (session.view().materialColours) session.view().plainShading = false;
         break;
       case GLFW_KEY_T:
         session.view().controlTurn = session.view().controlTurn != 0.0f ? 0.0f : kPreviewTurn;

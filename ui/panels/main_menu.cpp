@@ -49,7 +49,9 @@ bool drawMainMenu(Session& session, FileBrowser& browser) {
     ViewSettings& v = session.view();
     ImGui::MenuItem("Mesh", nullptr, &v.showMesh);
     ImGui::MenuItem("Wireframe", "W", &v.wireframe);
-    ImGui::MenuItem("Plain grey", "G", &v.plainShading);
+    if (ImGui::MenuItem("Plain grey", "G", &v.plainShading) && v.plainShading) v.materialColours = false;
+    if (ImGui::MenuItem("Colour by material", "M", &v.materialColours) && v.materialColours)
+      v.plainShading = false;
     if (ImGui::MenuItem("From above", "Keypad 7")) session.viewFrom(Session::ViewSide::Top);
     if (ImGui::MenuItem("From the front", "Keypad 1")) session.viewFrom(Session::ViewSide::Front);
     if (ImGui::MenuItem("From the right", "Keypad 3")) session.viewFrom(Session::ViewSide::Right);

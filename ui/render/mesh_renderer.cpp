@@ -1,6 +1,7 @@
 #include "ui/render/mesh_renderer.h"
 
 #include <algorithm>
+#include <cmath>
 #include <numeric>
 
 #include "core/mesh/mesh.h"
@@ -14,6 +15,23 @@ struct Vertex {
   float color[3];
   float uv[2];
 };
+
+// Well-separated colours for material indices (hues a golden angle apart); -1, no material, grey.
+Eigen::Vector3f materialColour(int material) {
+  if (material < 0) return Eigen::Vector3f::Constant(0.6f);
+  const float hue = std::fmod(0.13f + 0.618034f * float(material), 1.0f) * 6.0f;
+  const float x = 1.0f - std::fabs(std::fmod(hue, 2.0f) - 1.0f);
+  Eigen::Vector3f rgb;
+  switch (int(hue)) {
+    case 0: rgb = {1, x, 0}; break;
+    case 1: rgb = {x, 1, 0}; break;
+    case 2: rgb = {0, 1, x}; break;
+    case 3: rgb = {0, x, 1}; break;
+    case 4: rgb = {x, 0, 1}; break;
+    default: rgb = {1, 0, x}; break;
+  }
+  return 0.25f * Eigen::Vector3f::Ones() + 0.7f * rgb;  // bright, not saturated to white
+}
 }  // namespace
 
 MeshRenderer::MeshRenderer() : m_program("mesh.vert", "mesh.frag") {
@@ -58,6 +76,7 @@ void MeshRenderer::upload(const Mesh& mesh) {
       currentMaterial = material;
       Range range;
       range.first = static_cast<GLsizei>(indices.size());
+      range.material = material;
       if (material >= 0 && material < static_cast<int>(mesh.materials.size())) {
         range.baseColor = mesh.materials[std::size_t(material)].baseColor;
         range.texture = mesh.materials[std::size_t(material)].texture;
@@ -112,7 +131,7 @@ void MeshRenderer::upload(const Mesh& mesh) {
   }
 }
 
-void MeshRenderer::draw(const Camera& camera, bool wireframe, bool plain) const {
+void MeshRenderer::draw(const Camera& camera, bool wireframe, Colouring colouring) const {
   if (!m_indexCount) return;
   m_program.use();
   setUniform(m_uViewProj, camera.viewProjection());
@@ -120,13 +139,13 @@ void MeshRenderer::draw(const Camera& camera, bool wireframe, bool plain) const 
   setUniform(m_uTexture, 0);
   setUniform(m_uAlpha, 1.0f);
   setUniform(m_uFlatColor, 0);
-  setUniform(m_uPlain, plain ? 1 : 0);
+  setUniform(m_uPlain, colouring == Colouring::Plain ? 1 : colouring == Colouring::ByMaterial ? 2 : 0);
   glBindVertexArray(m_vao.id());
   glEnable(GL_POLYGON_OFFSET_FILL);
   glPolygonOffset(1.0f, 1.0f);  // keeps the wireframe overlay and markers on top
   for (const Range& r : m_ranges) {
     const bool textured = r.texture >= 0 && r.texture < static_cast<int>(m_textures.size());
-    setUniform(m_uBaseColor, r.baseColor);
+    setUniform(m_uBaseColor, colouring == Colouring::ByMaterial ? materialColour(r.material) : r.baseColor);
     setUniform(m_uHasTexture, textured ? 1 : 0);
     if (textured) {
       glActiveTexture(GL_TEXTURE0);

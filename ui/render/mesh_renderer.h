@@ -20,14 +20,19 @@ class MeshRenderer {
   void upload(const Mesh& mesh);
   bool hasMesh() const { return m_indexCount > 0; }
   GLsizei indexCount() const { return m_indexCount; }  // three per uploaded triangle
-  // `plain`: one light grey for every material (ViewSettings::plainShading).
-  void draw(const Camera& camera, bool wireframe, bool plain = false) const;
+  enum class Colouring {
+    Modelled,    // materials, textures and vertex colours
+    Plain,       // one light grey (ViewSettings::plainShading)
+    ByMaterial,  // each material in a colour of its own (ViewSettings::materialColours)
+  };
+  void draw(const Camera& camera, bool wireframe, Colouring colouring = Colouring::Modelled) const;
 
  private:
   struct Range {
     GLsizei first = 0, count = 0;
     Eigen::Vector3f baseColor = Eigen::Vector3f::Ones();
     int texture = -1;
+    int material = -1;
   };
   ShaderProgram m_program;
   GLint m_uViewProj, m_uEye, m_uBaseColor, m_uHasTexture, m_uTexture, m_uFlatColor, m_uPlain, m_uAlpha;

@@ -26,6 +26,10 @@ struct ViewSettings {
   // The mesh in one light grey, without its textures, materials or vertex colours: the shape of a
   // model whose materials are black (its wireframe shows on it too).
   bool plainShading = false;
+  // Each material in a colour of its own, without textures or vertex colours: parts that differ
+  // from their surroundings only by material (touch keys of their own material on a black glass
+  // top, a knob of another plastic) stand out; marks only in a texture do not. Plain grey and this are exclusive (G, M).
+  bool materialColours = false;
   bool showGrid = true;
   bool showAxes = true;
   bool showPoints = true;

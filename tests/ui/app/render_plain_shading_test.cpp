@@ -5,6 +5,8 @@
 
 #include <fstream>
 
+#include <Eigen/Core>
+
 #include "support/test_paths.h"
 #include "tests/ui/app/scripted_scene.h"
 
@@ -44,6 +46,51 @@ TEST(RenderPlainShading, GShowsTheShapeOfABlackModel) {
   s.frame({});
   const double plain = middleBrightness(s.app->capture());
   EXPECT_GT(plain, black + 60.0) << "black " << black << ", plain " << plain;
+}
+
+// Mean colour over a vertical band of the image's middle rows, from x0 to x1 (fractions of the width).
+Eigen::Vector3d bandColour(const RgbaImage& image, double x0, double x1) {
+  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+  int count = 0;
+  for (int y = 2 * image.height / 5; y < 3 * image.height / 5; ++y)
+    for (int x = int(x0 * image.width); x < int(x1 * image.width); ++x, ++count)
+      for (int c = 0; c < 3; ++c) sum[c] += image.at(x, y)[c];
+  return sum / count;
+}
+
+TEST(RenderPlainShading, MShowsPartsThatDifferOnlyByMaterial) {
+  // Two halves of a plate in two materials of almost the same black (keys of their own material
+  // on a glass top): alike as modelled, two colours with M; G then turns M off.
+  const fs::path dir = sagrid::test::freshTempDir();
+  test::ScriptedApp s(dir);
+  fs::create_directories(dir / "hob");
+  std::ofstream(dir / "hob" / "mesh.mtl") << "newmtl glass\nKd 0.02 0.02 0.02\nnewmtl print\nKd 0.03 0.03 0.03\n";
+  {
+    std::ofstream obj(dir / "hob" / "mesh.obj");
+    obj << "mtllib mesh.mtl\n";
+    obj << "v -0.5 -0.5 0\nv 0 -0.5 0\nv 0 0.5 0\nv -0.5 0.5 0\nv 0.5 -0.5 0\nv 0.5 0.5 0\n";
+    obj << "usemtl glass\nf 1 2 3\nf 1 3 4\nusemtl print\nf 2 5 6\nf 2 6 3\n";
+  }
+  s.app->session().openObject(dir / "hob" / "mesh.obj", dir / "hob" / "labels.json");
+  s.app->session().view().showGrid = false;
+  s.app->session().view().showAxes = false;
+  s.app->session().view().showPanels = false;
+  s.frame({});
+  s.app->session().camera().set({0, 0, 0}, 2.5f, -1.5707963f, 1.5f);  // straight down on it
+  s.frame({});
+  auto halvesApart = [&] {
+    const RgbaImage image = s.app->capture();
+    return (bandColour(image, 0.30, 0.45) - bandColour(image, 0.55, 0.70)).norm();
+  };
+  const double modelled = halvesApart();
+  s.key(GLFW_KEY_M);
+  EXPECT_TRUE(s.app->session().view().materialColours);
+  s.frame({});
+  const double byMaterial = halvesApart();
+  EXPECT_GT(byMaterial, modelled + 60.0) << "modelled " << modelled << ", by material " << byMaterial;
+  s.key(GLFW_KEY_G);
+  EXPECT_TRUE(s.app->session().view().plainShading);
+  EXPECT_FALSE(s.app->session().view().materialColours);
 }
 
 }  // namespace
