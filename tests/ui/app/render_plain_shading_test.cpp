@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <string>
 
 #include <Eigen/Core>
 
@@ -24,22 +25,27 @@ double middleBrightness(const RgbaImage& image) {
   return sum / count;
 }
 
-TEST(RenderPlainShading, GShowsTheShapeOfABlackModel) {
-  const fs::path dir = sagrid::test::freshTempDir();
-  test::ScriptedApp s(dir);
-  fs::create_directories(dir / "black");
-  std::ofstream(dir / "black" / "mesh.mtl") << "newmtl black\nKd 0 0 0\n";
-  {
-    std::ofstream obj(dir / "black" / "mesh.obj");
-    obj << "mtllib mesh.mtl\nusemtl black\n";
-    obj << "v -0.5 -0.5 0\nv 0.5 -0.5 0\nv 0.5 0.5 0\nv -0.5 0.5 0\nf 1 2 3\nf 1 3 4\n";
-  }
-  s.app->session().openObject(dir / "black" / "mesh.obj", dir / "black" / "labels.json");
+// A flat model at z = 0 written as DIR/NAME/mesh.obj with its .mtl, opened in `s` and seen
+// straight from above with nothing else drawn.
+void openFlatFromAbove(test::ScriptedApp& s, const fs::path& dir, const std::string& name,
+                       const std::string& mtl, const std::string& obj) {
+  fs::create_directories(dir / name);
+  std::ofstream(dir / name / "mesh.mtl") << mtl;
+  std::ofstream(dir / name / "mesh.obj") << "mtllib mesh.mtl\n" << obj;
+  s.app->session().openObject(dir / name / "mesh.obj", dir / name / "labels.json");
   s.app->session().view().showGrid = false;
   s.app->session().view().showAxes = false;
+  s.app->session().view().showPanels = false;
   s.frame({});
   s.app->session().camera().set({0, 0, 0}, 2.5f, -1.5707963f, 1.5f);  // straight down on it
   s.frame({});
+}
+
+TEST(RenderPlainShading, GShowsTheShapeOfABlackModel) {
+  const fs::path dir = sagrid::test::freshTempDir();
+  test::ScriptedApp s(dir);
+  openFlatFromAbove(s, dir, "black", "newmtl black\nKd 0 0 0\n",
+                    "usemtl black\nv -0.5 -0.5 0\nv 0.5 -0.5 0\nv 0.5 0.5 0\nv -0.5 0.5 0\nf 1 2 3\nf 1 3 4\n");
   const double black = middleBrightness(s.app->capture());
   s.key(GLFW_KEY_G);
   EXPECT_TRUE(s.app->session().view().plainShading);
@@ -63,21 +69,9 @@ TEST(RenderPlainShading, MShowsPartsThatDifferOnlyByMaterial) {
   // on a glass top): alike as modelled, two colours with M; G then turns M off.
   const fs::path dir = sagrid::test::freshTempDir();
   test::ScriptedApp s(dir);
-  fs::create_directories(dir / "hob");
-  std::ofstream(dir / "hob" / "mesh.mtl") << "newmtl glass\nKd 0.02 0.02 0.02\nnewmtl print\nKd 0.03 0.03 0.03\n";
-  {
-    std::ofstream obj(dir / "hob" / "mesh.obj");
-    obj << "mtllib mesh.mtl\n";
-    obj << "v -0.5 -0.5 0\nv 0 -0.5 0\nv 0 0.5 0\nv -0.5 0.5 0\nv 0.5 -0.5 0\nv 0.5 0.5 0\n";
-    obj << "usemtl glass\nf 1 2 3\nf 1 3 4\nusemtl print\nf 2 5 6\nf 2 6 3\n";
-  }
-  s.app->session().openObject(dir / "hob" / "mesh.obj", dir / "hob" / "labels.json");
-  s.app->session().view().showGrid = false;
-  s.app->session().view().showAxes = false;
-  s.app->session().view().showPanels = false;
-  s.frame({});
-  s.app->session().camera().set({0, 0, 0}, 2.5f, -1.5707963f, 1.5f);  // straight down on it
-  s.frame({});
+  openFlatFromAbove(s, dir, "hob", "newmtl glass\nKd 0.02 0.02 0.02\nnewmtl keys\nKd 0.03 0.03 0.03\n",
+                    "v -0.5 -0.5 0\nv 0 -0.5 0\nv 0 0.5 0\nv -0.5 0.5 0\nv 0.5 -0.5 0\nv 0.5 0.5 0\n"
+                    "usemtl glass\nf 1 2 3\nf 1 3 4\nusemtl keys\nf 2 5 6\nf 2 6 3\n");
   auto halvesApart = [&] {
     const RgbaImage image = s.app->capture();
     return (bandColour(image, 0.30, 0.45) - bandColour(image, 0.55, 0.70)).norm();
