@@ -26,7 +26,7 @@ namespace {
 
 struct MemoryOptions {
   std::vector<std::string> data;
-  std::string models, out, cache, report;
+  std::string models, out, cache, report, into;
   std::vector<double> factors{1.5, 2, 3, 4, 5, 8};
 };
 
@@ -39,11 +39,15 @@ void setupUnits(CLI::App& root) {
                 "for the units guess; evaluate it leaving each source out, choose its far factor "
                 "so, and write units_memory.json into --out only where it guesses more units "
                 "right than the named units alone");
-  memory->add_option("--data", o->data, "Curated dataset folder (repeatable)")->required();
+  memory->add_option("--data", o->data, "Curated dataset folder (repeatable)");
+  memory->add_option("--into", o->into,
+                     "Grow the memory of this models folder: its objects join --data's (an object "
+                     "curated again replaces its earlier entry); --out defaults to it");
   memory->add_option("--models", o->models,
                      "Models folder whose feature configuration the descriptors use (default "
                      "resources/models)");
-  memory->add_option("--out", o->out, "Folder to write units_memory.json into (default --models)");
+  memory->add_option("--out", o->out,
+                     "Folder to write units_memory.json into (default --into, else --models)");
   memory->add_option("--cache", o->cache, "Feature cache folder");
   memory->add_option("--report", o->report, "Also write the evaluation to REPORT/units_memory.md");
   memory->add_option("--factors", o->factors, "Candidate far factors (>= 1)")
@@ -56,14 +60,27 @@ void setupUnits(CLI::App& root) {
     const std::string hash = models.models().empty()
                                  ? sagrid::featureConfigHash(features)
                                  : models.models().front().card().featureConfigHash;
+    if (o->data.empty() && o->into.empty())
+      throw sagrid::InvalidArgument("units memory needs --data DIR, --into MODELS or both");
+    std::vector<sagrid::UnitsCase> earlier;
+    if (!o->into.empty()) {
+      const auto grown = sagrid::readSizeMemory(o->into);
+      if (!grown)
+        throw sagrid::InvalidArgument("--into " + o->into + ": no " + sagrid::kSizeMemoryFile + " there");
+      if (grown->featureConfigHash() != hash)
+        throw sagrid::InvalidArgument("--into " + o->into + ": its memory was built with other "
+                                      "features than the models of --models");
+      earlier = sagrid::casesOfMemory(*grown, fs::path(o->into) / sagrid::kSizeMemoryFile);
+    }
     std::vector<fs::path> folders(o->data.begin(), o->data.end());
     std::unique_ptr<sagrid::app::ProgressBar> bar;
-    const auto cases = sagrid::readUnitsCases(
+    const auto curated = sagrid::readUnitsCases(
         folders, features, [&](std::size_t done, std::size_t total, const std::string& id) {
           if (!bar) bar = std::make_unique<sagrid::app::ProgressBar>("units", total);
           bar->update(done, id);
           if (done == total) bar.reset();
         });
+    const auto cases = sagrid::mergeCases(earlier, curated);
     if (cases.empty()) throw sagrid::InvalidArgument("units memory: no curated objects in --data");
     std::vector<double> factors = o->factors;
     factors.push_back(std::numeric_limits<double>::infinity());
@@ -76,7 +93,7 @@ void setupUnits(CLI::App& root) {
     }
     const std::size_t withMemory = report.chosenLeavingSourceOut.back().right;
     const std::size_t namedOnly = report.byFactor.back().back().right;
-    const fs::path out = o->out.empty() ? modelsDir : fs::path(o->out);
+    const fs::path out = !o->out.empty() ? fs::path(o->out) : !o->into.empty() ? fs::path(o->into) : modelsDir;
     if (withMemory <= namedOnly || !std::isfinite(report.chosenOnAll)) {
       std::fprintf(stderr,
                    "units memory: not written: left out by source it guesses %zu of %zu right, the "

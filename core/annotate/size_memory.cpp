@@ -77,6 +77,8 @@ nlohmann::json SizeMemory::toJson() const {
                        {"source", e.source},
                        {"category", e.category},
                        {"largest_extent_m", e.largestExtentMeters},
+                       {"extent_units", e.extentUnits},
+                       {"meters_per_unit", e.metersPerUnit},
                        {"descriptor", e.descriptor}});
   return {{"schema", kSchema},
           {"feature_config_hash", m_featureConfigHash},
@@ -100,6 +102,8 @@ SizeMemory SizeMemory::fromJson(const nlohmann::json& j, const std::filesystem::
       r.category = e.at("category").get<std::string>();
       r.largestExtentMeters = e.at("largest_extent_m").get<double>();
       r.descriptor = e.at("descriptor").get<std::vector<float>>();
+      r.extentUnits = e.value("extent_units", 0.0);
+      r.metersPerUnit = e.value("meters_per_unit", 0.0);
       if (!(r.largestExtentMeters > 0) || !std::isfinite(r.largestExtentMeters))
         throw FileError(file, "entry " + r.id + ": largest_extent_m must be a positive number");
       if (!entries.empty() && r.descriptor.size() != entries.front().descriptor.size())

@@ -7,6 +7,8 @@
 #include <map>
 #include <set>
 
+#include "core/common/error.h"
+
 namespace sagrid {
 
 namespace {
@@ -33,6 +35,29 @@ std::string cell(std::size_t right, std::size_t of) {
 
 }  // namespace
 
+std::vector<UnitsCase> casesOfMemory(const SizeMemory& memory, const std::filesystem::path& file) {
+  std::vector<UnitsCase> cases;
+  for (const auto& e : memory.entries()) {
+    if (!(e.extentUnits > 0) || !(e.metersPerUnit > 0))
+      throw FileError(file, "entry " + e.id + " has no extent_units or meters_per_unit (written " +
+                                "before they were kept): build the memory again from its datasets");
+    cases.push_back({e, "memory"});
+  }
+  return cases;
+}
+
+std::vector<UnitsCase> mergeCases(std::vector<UnitsCase> earlier, const std::vector<UnitsCase>& more) {
+  for (const auto& c : more) {
+    earlier.erase(std::remove_if(earlier.begin(), earlier.end(),
+                                 [&](const UnitsCase& e) {
+                                   return e.object.id == c.object.id && e.object.source == c.object.source;
+                                 }),
+                  earlier.end());
+    earlier.push_back(c);
+  }
+  return earlier;
+}
+
 UnitsLosoReport evaluateSizeMemory(const std::vector<UnitsCase>& cases,
                                    const std::vector<double>& factors,
                                    const std::string& featureConfigHash, double tolerance) {
@@ -56,15 +81,15 @@ UnitsLosoReport evaluateSizeMemory(const std::vector<UnitsCase>& cases,
   report.byFactor.assign(factors.size(), std::vector<UnitsScore>(report.groups.size() + 1));
   for (std::size_t i = 0; i < cases.size(); ++i) {
     const UnitsCase& c = cases[i];
-    const UnitGuess named = guessMetersPerUnit(c.extentUnits, c.object.category);
-    const bool notMetres = ratio(c.curatedMetersPerUnit, 1.0) > tolerance;
+    const UnitGuess named = guessMetersPerUnit(c.object.extentUnits, c.object.category);
+    const bool notMetres = ratio(c.object.metersPerUnit, 1.0) > tolerance;
     for (std::size_t f = 0; f < factors.size(); ++f) {
       const UnitGuess guess =
-          std::isfinite(factors[f]) ? memory.refine(named, c.extentUnits, c.object.descriptor,
+          std::isfinite(factors[f]) ? memory.refine(named, c.object.extentUnits, c.object.descriptor,
                                                     c.object.category, c.object.source, factors[f])
                                     : named;
       guessed[f][i] = guess.metersPerUnit;
-      right[f][i] = ratio(guess.metersPerUnit, c.curatedMetersPerUnit) <= tolerance;
+      right[f][i] = ratio(guess.metersPerUnit, c.object.metersPerUnit) <= tolerance;
       count(report.byFactor[f][groupIndex(c.group)], right[f][i], notMetres);
       count(report.byFactor[f].back(), right[f][i], notMetres);
     }
@@ -90,14 +115,14 @@ UnitsLosoReport evaluateSizeMemory(const std::vector<UnitsCase>& cases,
     report.chosenBySource.emplace_back(source, factors[f]);
     for (std::size_t i = 0; i < cases.size(); ++i) {
       if (cases[i].object.source != source) continue;
-      const bool notMetres = ratio(cases[i].curatedMetersPerUnit, 1.0) > tolerance;
+      const bool notMetres = ratio(cases[i].object.metersPerUnit, 1.0) > tolerance;
       count(report.chosenLeavingSourceOut[groupIndex(cases[i].group)], right[f][i], notMetres);
       count(report.chosenLeavingSourceOut.back(), right[f][i], notMetres);
       if (!right[f][i]) {
         char line[300];
         std::snprintf(line, sizeof line, "%s (%s, %s): guessed %.3g, curated %.3g m per unit",
                       cases[i].object.id.c_str(), source.c_str(), cases[i].object.category.c_str(),
-                      guessed[f][i], cases[i].curatedMetersPerUnit);
+                      guessed[f][i], cases[i].object.metersPerUnit);
         report.wrongChosen.push_back(line);
       }
     }

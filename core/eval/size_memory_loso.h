@@ -5,6 +5,7 @@
 // is chosen for each source on the other sources alone. `sagrid units memory` prints it.
 #pragma once
 
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -13,10 +14,8 @@
 namespace sagrid {
 
 struct UnitsCase {
-  RememberedSize object;      // its largest extent in metres from the curated units
-  double extentUnits = 0;     // in the file's units
-  double curatedMetersPerUnit = 1;
-  std::string group;          // the dataset folder it was read from, for the report
+  RememberedSize object;  // its extent in file units, curated units and size in metres
+  std::string group;      // the dataset folder it was read from (or "memory"), for the report
 };
 
 struct UnitsScore {
@@ -33,6 +32,14 @@ struct UnitsLosoReport {
   double chosenOnAll = 0;                              // the factor the shipped memory keeps
   double tolerance = 1.5;
 };
+
+// The objects a memory holds as cases (group "memory"), so that a memory grows with newly curated
+// objects without the datasets it was built from. Throws FileError naming `file` for an entry
+// without its file extent or units (a memory written before they were kept).
+std::vector<UnitsCase> casesOfMemory(const SizeMemory& memory, const std::filesystem::path& file);
+// `earlier` and then `more`, an object of `more` replacing the one of `earlier` with its id and
+// source (curated again).
+std::vector<UnitsCase> mergeCases(std::vector<UnitsCase> earlier, const std::vector<UnitsCase>& more);
 
 // Right: the guess within `tolerance` of the curated units; not in metres: the curated units
 // more than `tolerance` from 1.

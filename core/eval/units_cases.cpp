@@ -25,15 +25,15 @@ std::vector<UnitsCase> readUnitsCases(
     framed.up = mesh.fileUp;
     UnitsCase c;
     c.group = folderName;
-    c.extentUnits = mesh.bounds().sizes().maxCoeff();
-    c.curatedMetersPerUnit = metersPerUnit(labels);
+    c.object.extentUnits = mesh.bounds().sizes().maxCoeff();
+    c.object.metersPerUnit = metersPerUnit(labels);
     c.object.id = entry.id;
     c.object.source = objectSource(labels, entry.mesh, folderName);
     const std::string category = entry.category.empty() ? labels.object.category : entry.category;
     c.object.category = category == "stove" || category == "sink" ? category : "none";
     c.object.descriptor = framed.cacheDir.empty() ? computeFeatures(mesh, framed).descriptor
                                                    : extractFeatures(entry.mesh, framed).descriptor;
-    c.object.largestExtentMeters = c.extentUnits * c.curatedMetersPerUnit;
+    c.object.largestExtentMeters = c.object.extentUnits * c.object.metersPerUnit;
     if (c.object.largestExtentMeters > 0) cases.push_back(std::move(c));
     if (progress) progress(++done, entries.size(), entry.id);
   }

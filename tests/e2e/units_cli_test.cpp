@@ -35,6 +35,13 @@ TEST(UnitsCli, OneSourceCannotBeatTheNamedUnitsSoNothingIsWritten) {
   EXPECT_NE(r.exitCode, 0);
   EXPECT_THAT(r.output, HasSubstr("no curated objects"));
   EXPECT_FALSE(fs::exists(dir / "out" / kSizeMemoryFile));
+  // Growing a memory needs one there; one of nothing needs --data or --into.
+  r = runSagrid("units memory --into " + quotedPath(dir / "empty"));
+  EXPECT_NE(r.exitCode, 0);
+  EXPECT_THAT(r.output, HasSubstr("no units_memory.json there"));
+  r = runSagrid("units memory --out " + quotedPath(dir / "out"));
+  EXPECT_NE(r.exitCode, 0);
+  EXPECT_THAT(r.output, HasSubstr("needs --data DIR, --into MODELS or both"));
 }
 
 }  // namespace

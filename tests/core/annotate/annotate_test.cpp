@@ -167,7 +167,13 @@ TEST_F(AnnotateTest, AFolderRememberingSizesScalesAFileFarFromObjectsLikeIt) {
   ASSERT_TRUE(namedGuess);
   // Curated stoves that look exactly like it are 20 times the size its named unit gives.
   const double remembered = 20.0 * extent * namedGuess->metersPerUnit;
-  set->setSizeMemory(SizeMemory({{"curated", "elsewhere", "stove", stoveFeatures.descriptor, remembered}},
+  RememberedSize curated;
+  curated.id = "curated";
+  curated.source = "elsewhere";
+  curated.category = "stove";
+  curated.descriptor = stoveFeatures.descriptor;
+  curated.largestExtentMeters = remembered;
+  set->setSizeMemory(SizeMemory({curated},
                                 set->models().front().card().featureConfigHash, 4.0),
                      dir / kSizeMemoryFile);
   const AnnotationResult r = annotateMeshFile(entries[0].mesh, "s", *set, annotate, dir);

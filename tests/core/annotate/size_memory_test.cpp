@@ -13,7 +13,13 @@ namespace {
 
 RememberedSize remembered(const std::string& id, const std::string& source, const std::string& category,
                           std::vector<float> descriptor, double meters) {
-  return {id, source, category, std::move(descriptor), meters};
+  RememberedSize r;
+  r.id = id;
+  r.source = source;
+  r.category = category;
+  r.descriptor = std::move(descriptor);
+  r.largestExtentMeters = meters;
+  return r;
 }
 
 // Two shapes: tall boxes (fridges, 1.8 m) and squat ones (microwaves, 0.5 m), from two sources.

@@ -2,8 +2,11 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
+
+#include "core/common/error.h"
 
 namespace sagrid {
 namespace {
@@ -15,11 +18,14 @@ std::vector<UnitsCase> appliances() {
   auto add = [&](const std::string& source, bool fridge, double metersPerUnit, float jitter) {
     UnitsCase c;
     const double meters = fridge ? 1.8 : 0.5;
-    c.object = {source + (fridge ? "/fridge" : "/microwave"), source, "none",
-                fridge ? std::vector<float>{1.0f + jitter, 0.3f} : std::vector<float>{0.4f, 0.9f + jitter},
-                meters};
-    c.extentUnits = meters / metersPerUnit;
-    c.curatedMetersPerUnit = metersPerUnit;
+    c.object.id = source + (fridge ? "/fridge" : "/microwave");
+    c.object.source = source;
+    c.object.category = "none";
+    c.object.descriptor =
+        fridge ? std::vector<float>{1.0f + jitter, 0.3f} : std::vector<float>{0.4f, 0.9f + jitter};
+    c.object.largestExtentMeters = meters;
+    c.object.extentUnits = meters / metersPerUnit;
+    c.object.metersPerUnit = metersPerUnit;
     c.group = metersPerUnit == 1.0 ? "metres" : "game";
     cases.push_back(c);
   };
@@ -61,12 +67,43 @@ TEST(SizeMemoryLoso, AnObjectIsNeverRecalledFromItsOwnSource) {
   // One source alone: with it left out the memory holds nothing, so the named units decide.
   std::vector<UnitsCase> cases = appliances();
   cases.resize(2);  // real-a's fridge and microwave
-  cases[0].curatedMetersPerUnit = 0.25;
-  cases[0].extentUnits = 1.8 / 0.25;
+  cases[0].object.metersPerUnit = 0.25;
+  cases[0].object.extentUnits = 1.8 / 0.25;
   const auto report = evaluateSizeMemory(cases, {1.5}, "hash");
   EXPECT_EQ(report.byFactor[0].back().notMetresRight, 0u);
   ASSERT_EQ(report.wrongChosen.size(), 1u);
   EXPECT_NE(report.wrongChosen[0].find("real-a/fridge (real-a, none)"), std::string::npos) << report.wrongChosen[0];
+}
+
+TEST(SizeMemoryLoso, AMemoryGrowsWithNewlyCuratedObjects) {
+  const std::vector<UnitsCase> cases = appliances();
+  std::vector<RememberedSize> entries;
+  for (const auto& c : cases) entries.push_back(c.object);
+  const SizeMemory memory(entries, "hash", 4.0);
+  const auto again = casesOfMemory(memory, "units_memory.json");
+  ASSERT_EQ(again.size(), cases.size());
+  EXPECT_EQ(again[8].group, "memory");
+  EXPECT_DOUBLE_EQ(again[8].object.extentUnits, cases[8].object.extentUnits);
+  // A game fridge curated again (other units) replaces its entry; a new object joins.
+  UnitsCase recurated = cases[8];
+  recurated.object.metersPerUnit = 0.3;
+  UnitsCase added = cases[0];
+  added.object.id = "real-e/fridge";
+  added.object.source = "real-e";
+  const auto merged = mergeCases(again, {recurated, added});
+  ASSERT_EQ(merged.size(), cases.size() + 1);
+  EXPECT_EQ(std::count_if(merged.begin(), merged.end(),
+                          [](const UnitsCase& c) { return c.object.id == "game-a/fridge"; }),
+            1);
+  EXPECT_DOUBLE_EQ(merged[merged.size() - 2].object.metersPerUnit, 0.3);
+  // An entry written before the file extent and units were kept cannot be evaluated again.
+  entries[0].extentUnits = 0;
+  try {
+    casesOfMemory(SizeMemory(entries, "hash", 4.0), "old/units_memory.json");
+    ADD_FAILURE() << "an entry without its file extent was taken";
+  } catch (const FileError& e) {
+    EXPECT_NE(std::string(e.what()).find("old/units_memory.json"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace
