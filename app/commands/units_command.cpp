@@ -28,6 +28,7 @@ struct MemoryOptions {
   std::vector<std::string> data;
   std::string models, out, cache, report, into;
   std::vector<double> factors{1.5, 2, 3, 4, 5, 8};
+  int neighbours = 5;
 };
 
 void setupUnits(CLI::App& root) {
@@ -52,14 +53,16 @@ void setupUnits(CLI::App& root) {
   memory->add_option("--report", o->report, "Also write the evaluation to REPORT/units_memory.md");
   memory->add_option("--factors", o->factors, "Candidate far factors (>= 1)")
       ->check(CLI::Range(1.0, 1e9));
+  memory->add_option("--neighbours", o->neighbours,
+                     "How many curated objects of the category the memory recalls (median size)")
+      ->check(CLI::Range(1, 1000))
+      ->capture_default_str();
   memory->callback([o] {
     const fs::path modelsDir = o->models.empty() ? sagrid::defaultModelsDir() : fs::path(o->models);
     const auto models = sagrid::ModelSet::load(modelsDir);
     sagrid::FeatureOptions features = models.featureOptions();
     features.cacheDir = o->cache;
-    const std::string hash = models.models().empty()
-                                 ? sagrid::featureConfigHash(features)
-                                 : models.models().front().card().featureConfigHash;
+    const std::string hash = models.featureConfigHash();
     if (o->data.empty() && o->into.empty())
       throw sagrid::InvalidArgument("units memory needs --data DIR, --into MODELS or both");
     std::vector<sagrid::UnitsCase> earlier;
@@ -70,7 +73,7 @@ void setupUnits(CLI::App& root) {
       if (grown->featureConfigHash() != hash)
         throw sagrid::InvalidArgument("--into " + o->into + ": its memory was built with other "
                                       "features than the models of --models");
-      earlier = sagrid::casesOfMemory(*grown, fs::path(o->into) / sagrid::kSizeMemoryFile);
+      earlier = sagrid::casesOfMemory(*grown);
     }
     std::vector<fs::path> folders(o->data.begin(), o->data.end());
     std::unique_ptr<sagrid::app::ProgressBar> bar;
@@ -84,7 +87,7 @@ void setupUnits(CLI::App& root) {
     if (cases.empty()) throw sagrid::InvalidArgument("units memory: no curated objects in --data");
     std::vector<double> factors = o->factors;
     factors.push_back(std::numeric_limits<double>::infinity());
-    const auto report = sagrid::evaluateSizeMemory(cases, factors, hash);
+    const auto report = sagrid::evaluateSizeMemory(cases, factors, hash, o->neighbours);
     const std::string md = sagrid::unitsLosoMarkdown(report);
     std::cout << md;
     if (!o->report.empty()) {
@@ -104,7 +107,7 @@ void setupUnits(CLI::App& root) {
     std::vector<sagrid::RememberedSize> entries;
     for (const auto& c : cases) entries.push_back(c.object);
     fs::create_directories(out);
-    sagrid::writeSizeMemory(sagrid::SizeMemory(entries, hash, report.chosenOnAll), out);
+    sagrid::writeSizeMemory(sagrid::SizeMemory(entries, hash, report.chosenOnAll, o->neighbours), out);
     std::fprintf(stderr,
                  "units memory: %zu objects, far factor %.3g -> %s (left out by source %zu of %zu "
                  "right, named units alone %zu)\n",

@@ -253,13 +253,16 @@ std::vector<CategoryScore> ModelSet::rankCategories(const std::vector<float>& de
 }
 
 void ModelSet::setSizeMemory(SizeMemory memory, const std::filesystem::path& file) {
-  const std::string cards = m_models.empty() ? memory.featureConfigHash()
-                                             : m_models.front().card().featureConfigHash;
-  if (memory.featureConfigHash() != cards)
+  if (!m_models.empty() && memory.featureConfigHash() != featureConfigHash())
     throw ModelError(file.string() + ": its descriptors were computed with other features (" +
-                     memory.featureConfigHash() + ") than the models' (" + cards +
+                     memory.featureConfigHash() + ") than the models' (" + featureConfigHash() +
                      "): build it again (sagrid units memory)");
   m_sizeMemory = std::move(memory);
+}
+
+std::string ModelSet::featureConfigHash() const {
+  return m_models.empty() ? sagrid::featureConfigHash(featureOptions())
+                          : m_models.front().card().featureConfigHash;
 }
 
 FeatureOptions ModelSet::featureOptions() const {

@@ -80,6 +80,9 @@ class ModelSet {
 
   // Feature options matching the cards (backend, grid size); the cache folder is the caller's.
   FeatureOptions featureOptions() const;
+  // The cards' feature configuration hash (that of featureOptions() for a folder without cards):
+  // what files of descriptors made for these models record.
+  std::string featureConfigHash() const;
 
   // The sizes of curated objects the units guess recalls (units_memory.json); nullptr without.
   const SizeMemory* sizeMemory() const { return m_sizeMemory ? &*m_sizeMemory : nullptr; }

@@ -51,7 +51,7 @@ std::optional<double> SizeMemory::expectedMeters(const std::vector<float>& descr
       const double z = (double(descriptor[i]) - e.descriptor[i]) / m_scale[i];
       d2 += z * z;
     }
-    byDistance.emplace_back(d2, std::log(e.largestExtentMeters));
+    byDistance.emplace_back(d2, std::log(e.largestExtentMeters()));
   }
   if (byDistance.empty()) return std::nullopt;
   const std::size_t k = std::min<std::size_t>(std::size_t(m_neighbours), byDistance.size());
@@ -76,7 +76,6 @@ nlohmann::json SizeMemory::toJson() const {
     entries.push_back({{"id", e.id},
                        {"source", e.source},
                        {"category", e.category},
-                       {"largest_extent_m", e.largestExtentMeters},
                        {"extent_units", e.extentUnits},
                        {"meters_per_unit", e.metersPerUnit},
                        {"descriptor", e.descriptor}});
@@ -100,12 +99,12 @@ SizeMemory SizeMemory::fromJson(const nlohmann::json& j, const std::filesystem::
       r.id = e.at("id").get<std::string>();
       r.source = e.at("source").get<std::string>();
       r.category = e.at("category").get<std::string>();
-      r.largestExtentMeters = e.at("largest_extent_m").get<double>();
       r.descriptor = e.at("descriptor").get<std::vector<float>>();
-      r.extentUnits = e.value("extent_units", 0.0);
-      r.metersPerUnit = e.value("meters_per_unit", 0.0);
-      if (!(r.largestExtentMeters > 0) || !std::isfinite(r.largestExtentMeters))
-        throw FileError(file, "entry " + r.id + ": largest_extent_m must be a positive number");
+      r.extentUnits = e.at("extent_units").get<double>();
+      r.metersPerUnit = e.at("meters_per_unit").get<double>();
+      for (const double v : {r.extentUnits, r.metersPerUnit})
+        if (!(v > 0) || !std::isfinite(v))
+          throw FileError(file, "entry " + r.id + ": extent_units and meters_per_unit must be positive numbers");
       if (!entries.empty() && r.descriptor.size() != entries.front().descriptor.size())
         throw FileError(file, "entry " + r.id + ": its descriptor has " +
                                   std::to_string(r.descriptor.size()) + " values, the first entry's " +

@@ -24,11 +24,10 @@ inline constexpr const char* kSizeMemoryFile = "units_memory.json";
 struct RememberedSize {
   std::string id, source, category;  // category "stove", "sink" or "none"
   std::vector<float> descriptor;
-  double largestExtentMeters = 0;
-  // The file's largest extent in its own units and the curated metres per unit (their product is
-  // largestExtentMeters): what evaluating the memory again with more objects needs. 0 in files
-  // written before they were kept.
+  // The file's largest extent in its own units and the curated metres per unit: the size it is
+  // remembered by, and what evaluating the memory again with more objects needs.
   double extentUnits = 0, metersPerUnit = 0;
+  double largestExtentMeters() const { return extentUnits * metersPerUnit; }
 };
 
 class SizeMemory {

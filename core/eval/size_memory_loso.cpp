@@ -7,13 +7,9 @@
 #include <map>
 #include <set>
 
-#include "core/common/error.h"
-
 namespace sagrid {
 
 namespace {
-
-double ratio(double a, double b) { return std::max(a, b) / std::min(a, b); }
 
 void count(UnitsScore& score, bool right, bool notMetres) {
   ++score.objects;
@@ -35,14 +31,9 @@ std::string cell(std::size_t right, std::size_t of) {
 
 }  // namespace
 
-std::vector<UnitsCase> casesOfMemory(const SizeMemory& memory, const std::filesystem::path& file) {
+std::vector<UnitsCase> casesOfMemory(const SizeMemory& memory) {
   std::vector<UnitsCase> cases;
-  for (const auto& e : memory.entries()) {
-    if (!(e.extentUnits > 0) || !(e.metersPerUnit > 0))
-      throw FileError(file, "entry " + e.id + " has no extent_units or meters_per_unit (written " +
-                                "before they were kept): build the memory again from its datasets");
-    cases.push_back({e, "memory"});
-  }
+  for (const auto& e : memory.entries()) cases.push_back({e, "memory"});
   return cases;
 }
 
@@ -60,7 +51,8 @@ std::vector<UnitsCase> mergeCases(std::vector<UnitsCase> earlier, const std::vec
 
 UnitsLosoReport evaluateSizeMemory(const std::vector<UnitsCase>& cases,
                                    const std::vector<double>& factors,
-                                   const std::string& featureConfigHash, double tolerance) {
+                                   const std::string& featureConfigHash, int neighbours,
+                                   double tolerance) {
   UnitsLosoReport report;
   report.factors = factors;
   report.tolerance = tolerance;
@@ -71,7 +63,7 @@ UnitsLosoReport evaluateSizeMemory(const std::vector<UnitsCase>& cases,
     groups.insert(c.group);
   }
   report.groups.assign(groups.begin(), groups.end());
-  const SizeMemory memory(entries, featureConfigHash, 1.0);
+  const SizeMemory memory(entries, featureConfigHash, 1.0, neighbours);
   auto groupIndex = [&](const std::string& g) {
     return std::size_t(std::find(report.groups.begin(), report.groups.end(), g) - report.groups.begin());
   };
@@ -82,14 +74,16 @@ UnitsLosoReport evaluateSizeMemory(const std::vector<UnitsCase>& cases,
   for (std::size_t i = 0; i < cases.size(); ++i) {
     const UnitsCase& c = cases[i];
     const UnitGuess named = guessMetersPerUnit(c.object.extentUnits, c.object.category);
-    const bool notMetres = ratio(c.object.metersPerUnit, 1.0) > tolerance;
+    const bool notMetres = scaleRatio(c.object.metersPerUnit, 1.0) > tolerance;
+    // Recalled once, judged with every factor.
+    const auto expected = memory.expectedMeters(c.object.descriptor, c.object.category, c.object.source);
     for (std::size_t f = 0; f < factors.size(); ++f) {
       const UnitGuess guess =
-          std::isfinite(factors[f]) ? memory.refine(named, c.object.extentUnits, c.object.descriptor,
-                                                    c.object.category, c.object.source, factors[f])
-                                    : named;
+          std::isfinite(factors[f]) && expected
+              ? unlessFarFromExpectedSize(named, c.object.extentUnits, *expected, factors[f])
+              : named;
       guessed[f][i] = guess.metersPerUnit;
-      right[f][i] = ratio(guess.metersPerUnit, c.object.metersPerUnit) <= tolerance;
+      right[f][i] = scaleRatio(guess.metersPerUnit, c.object.metersPerUnit) <= tolerance;
       count(report.byFactor[f][groupIndex(c.group)], right[f][i], notMetres);
       count(report.byFactor[f].back(), right[f][i], notMetres);
     }
@@ -115,7 +109,7 @@ UnitsLosoReport evaluateSizeMemory(const std::vector<UnitsCase>& cases,
     report.chosenBySource.emplace_back(source, factors[f]);
     for (std::size_t i = 0; i < cases.size(); ++i) {
       if (cases[i].object.source != source) continue;
-      const bool notMetres = ratio(cases[i].object.metersPerUnit, 1.0) > tolerance;
+      const bool notMetres = scaleRatio(cases[i].object.metersPerUnit, 1.0) > tolerance;
       count(report.chosenLeavingSourceOut[groupIndex(cases[i].group)], right[f][i], notMetres);
       count(report.chosenLeavingSourceOut.back(), right[f][i], notMetres);
       if (!right[f][i]) {

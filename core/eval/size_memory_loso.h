@@ -5,7 +5,6 @@
 // is chosen for each source on the other sources alone. `sagrid units memory` prints it.
 #pragma once
 
-#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -34,18 +33,18 @@ struct UnitsLosoReport {
 };
 
 // The objects a memory holds as cases (group "memory"), so that a memory grows with newly curated
-// objects without the datasets it was built from. Throws FileError naming `file` for an entry
-// without its file extent or units (a memory written before they were kept).
-std::vector<UnitsCase> casesOfMemory(const SizeMemory& memory, const std::filesystem::path& file);
+// objects without the datasets it was built from.
+std::vector<UnitsCase> casesOfMemory(const SizeMemory& memory);
 // `earlier` and then `more`, an object of `more` replacing the one of `earlier` with its id and
 // source (curated again).
 std::vector<UnitsCase> mergeCases(std::vector<UnitsCase> earlier, const std::vector<UnitsCase>& more);
 
 // Right: the guess within `tolerance` of the curated units; not in metres: the curated units
-// more than `tolerance` from 1.
+// more than `tolerance` from 1. `neighbours`: how many curated objects the memory recalls.
 UnitsLosoReport evaluateSizeMemory(const std::vector<UnitsCase>& cases,
                                    const std::vector<double>& factors,
-                                   const std::string& featureConfigHash, double tolerance = 1.5);
+                                   const std::string& featureConfigHash, int neighbours = 5,
+                                   double tolerance = 1.5);
 
 std::string unitsLosoMarkdown(const UnitsLosoReport& report);
 

@@ -1,15 +1,11 @@
 #include "core/eval/unit_guess_score.h"
 
-#include <algorithm>
 #include <cstdio>
 
 #include "core/annotate/units_record.h"
+#include "core/mesh/unit_guess.h"
 
 namespace sagrid {
-
-namespace {
-double ratio(double a, double b) { return std::max(a, b) / std::min(a, b); }
-}  // namespace
 
 UnitGuessScore scoreUnitGuesses(const std::vector<std::pair<ObjectLabels, ObjectLabels>>& predictedAndCurated,
                                 double factor) {
@@ -22,8 +18,8 @@ UnitGuessScore scoreUnitGuesses(const std::vector<std::pair<ObjectLabels, Object
                  : recordedUnitGuess(predicted.object).value_or(UnitGuess{}).metersPerUnit;
     const double truth = metersPerUnit(curated);
     score.declared += declared;
-    const bool right = ratio(guessed, truth) <= factor;
-    const bool notMetres = ratio(truth, 1.0) > factor;
+    const bool right = scaleRatio(guessed, truth) <= factor;
+    const bool notMetres = scaleRatio(truth, 1.0) > factor;
     ++score.objects;
     score.right += right;
     score.notMetres += notMetres;

@@ -33,8 +33,7 @@ std::vector<UnitsCase> readUnitsCases(
     c.object.category = category == "stove" || category == "sink" ? category : "none";
     c.object.descriptor = framed.cacheDir.empty() ? computeFeatures(mesh, framed).descriptor
                                                    : extractFeatures(entry.mesh, framed).descriptor;
-    c.object.largestExtentMeters = c.object.extentUnits * c.object.metersPerUnit;
-    if (c.object.largestExtentMeters > 0) cases.push_back(std::move(c));
+    if (c.object.largestExtentMeters() > 0) cases.push_back(std::move(c));
     if (progress) progress(++done, entries.size(), entry.id);
   }
   return cases;

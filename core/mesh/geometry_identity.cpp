@@ -45,7 +45,6 @@ std::optional<GeometryOutline> outlineOf(const FileCorners& corners) {
   if (corners.corners.empty()) return std::nullopt;
   GeometryOutline outline;
   outline.triangles = corners.corners.size() / 3;
-  outline.origin = corners.box.min();
   outline.size = corners.box.sizes();
   if (!(outline.extent() > 0)) return std::nullopt;
   return outline;
@@ -128,10 +127,6 @@ bool sameOutline(const GeometryOutline& a, const GeometryOutline& b, double rela
   return a.triangles == b.triangles && (a.size - b.size).cwiseAbs().maxCoeff() <= within;
 }
 
-Eigen::Vector3d twinOffset(const GeometryOutline& from, const GeometryOutline& to) {
-  return to.origin - from.origin;
-}
-
 std::optional<GeometryMatch> matchGeometry(const Mesh& from, const Mesh& to,
                                            double relativeTolerance) {
   if (!(relativeTolerance > 0 && relativeTolerance < 1))
@@ -151,7 +146,7 @@ std::optional<GeometryMatch> matchGeometry(const Mesh& from, const Mesh& to,
     if (!gridA.holds(gridB, t)) return std::nullopt;
 
   GeometryMatch match;
-  match.offset = twinOffset(*outlineA, *outlineB);
+  match.offset = b.box.min() - a.box.min();
   match.sameTriangleOrder = true;
   for (std::size_t t = 0; t < gridA.triangles() && match.sameTriangleOrder; ++t)
     match.sameTriangleOrder = gridB.same(gridA, t, t);

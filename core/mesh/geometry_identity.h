@@ -5,8 +5,8 @@
 // (ui/app/session_twin.cpp); `sagrid info A --same-geometry-as B` says whether two files are.
 //
 // Two steps, so the usual open costs nothing more than one pass over the mesh:
-//   - `GeometryOutline`: triangle count, box size and box origin (lowest corner) in the file's
-//     frame, a few numbers the review queue keeps per object. Outlines within the tolerance make
+//   - `GeometryOutline`: triangle count and box size in the file's frame, four numbers the
+//     review queue keeps per object. Outlines within the tolerance make
 //     a candidate (`sameOutline`); any match implies it.
 //   - `matchGeometry`: the candidate's triangles against the object's, each within the tolerance
 //     of one of the other's (the same corners, the same winding, from any first corner), both
@@ -14,7 +14,7 @@
 //     its points move by the origins' offset. A scaled, rotated or mirrored copy does not (labels
 //     are in the file's frame: a twin's points carry by a translation alone).
 // Tolerant, not exact: files that print coordinates to a few decimals after moving the model
-// (Sweet Home 3D's LucaPresidente washbasins: 4 decimals, ~87 coordinates 1e-4 apart) are still
+// (Sweet Home 3D's LucaPresidente washbasins: 4 decimals, coordinates up to 1e-4 apart) are still
 // twins, where rounding to a hash's cells split them.
 #pragma once
 
@@ -34,13 +34,13 @@ inline constexpr double kSameGeometryTolerance = 1e-4;
 
 struct GeometryOutline {
   std::size_t triangles = 0;
-  // The triangles' box in the file's frame and units: where this copy lies and its size.
-  Eigen::Vector3d origin = Eigen::Vector3d::Zero();
+  // The size of the triangles' box in the file's frame and units (not where it lies: a copy
+  // placed elsewhere has the same outline).
   Eigen::Vector3d size = Eigen::Vector3d::Zero();
 
   double extent() const { return size.maxCoeff(); }
   bool operator==(const GeometryOutline& other) const {
-    return triangles == other.triangles && origin == other.origin && size == other.size;
+    return triangles == other.triangles && size == other.size;
   }
 };
 
@@ -53,11 +53,10 @@ std::optional<GeometryOutline> geometryOutline(const Mesh& mesh);
 bool sameOutline(const GeometryOutline& a, const GeometryOutline& b,
                  double relativeTolerance = kSameGeometryTolerance);
 
-// What moves a twin's label coordinates (file frame) onto `to`: to.origin - from.origin.
-Eigen::Vector3d twinOffset(const GeometryOutline& from, const GeometryOutline& to);
-
 struct GeometryMatch {
-  Eigen::Vector3d offset = Eigen::Vector3d::Zero();  // twinOffset(from, to)
+  // What moves `from`'s label coordinates (file frame) onto `to`: the lowest corner of `to`'s
+  // box less `from`'s.
+  Eigen::Vector3d offset = Eigen::Vector3d::Zero();
   // Triangle i of one is triangle i of the other: triangle indices (a control's part in
   // labels.json) mean the same faces in both.
   bool sameTriangleOrder = false;

@@ -63,13 +63,15 @@ UnitGuess guessMetersPerUnit(double largestExtent, const std::string& category) 
   return guess;
 }
 
+double scaleRatio(double a, double b) { return std::max(a, b) / std::min(a, b); }
+
 UnitGuess unlessFarFromExpectedSize(const UnitGuess& guess, double largestExtent,
                                     double expectedMeters, double farFactor) {
   if (!(largestExtent > 0) || !std::isfinite(largestExtent) || !(expectedMeters > 0) ||
       !std::isfinite(expectedMeters) || !(farFactor >= 1))
     return guess;
   const double meters = largestExtent * guess.metersPerUnit;
-  if (std::max(meters, expectedMeters) <= farFactor * std::min(meters, expectedMeters)) return guess;
+  if (scaleRatio(meters, expectedMeters) <= farFactor) return guess;
   UnitGuess scaled;
   scaled.metersPerUnit = expectedMeters / largestExtent;
   scaled.unit = unitName(scaled.metersPerUnit);

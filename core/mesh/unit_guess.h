@@ -40,6 +40,10 @@ PlausibleSize plausibleSize(const std::string& category);
 // `largestExtent` in file units (> 0).
 UnitGuess guessMetersPerUnit(double largestExtent, const std::string& category);
 
+// How many times the larger of two positive scales or sizes is the smaller (>= 1): how far a
+// guess is from the curated units, or a size from the one expected.
+double scaleRatio(double a, double b);
+
 // Game files are in no real unit (a kit scaled so its counters are 1.3 units high, a fridge 448
 // units tall), and many are plausible in metres, so no size range tells. Where the sizes of
 // curated objects that look alike (core/annotate/size_memory.h) put the object at

@@ -1,6 +1,7 @@
 #include "ui/app/label_layout.h"
 
 #include <algorithm>
+#include <array>
 #include <numeric>
 #include <optional>
 
@@ -8,61 +9,59 @@ namespace sagrid::ui {
 
 namespace {
 
-struct Box {
-  Eigen::Vector2f min, max;
-  bool overlaps(const Box& other, float padding) const {
-    return min.x() < other.max.x() + padding && other.min.x() < max.x() + padding &&
-           min.y() < other.max.y() + padding && other.min.y() < max.y() + padding;
-  }
-};
+constexpr float kPadding = 2.0f;
+
+bool overlap(const Eigen::Vector2f& minA, const Eigen::Vector2f& maxA, const Eigen::Vector2f& minB,
+             const Eigen::Vector2f& maxB) {
+  return minA.x() < maxB.x() + kPadding && minB.x() < maxA.x() + kPadding &&
+         minA.y() < maxB.y() + kPadding && minB.y() < maxA.y() + kPadding;
+}
 
 // Spots around the marker for a label of `size`: right, left, above right, below right.
-std::vector<Eigen::Vector2f> spots(const Eigen::Vector2f& anchor, const Eigen::Vector2f& size, float gap) {
+std::array<Eigen::Vector2f, 4> spots(const Eigen::Vector2f& anchor, const Eigen::Vector2f& size,
+                                     float gap) {
   const float x = anchor.x(), y = anchor.y(), w = size.x(), h = size.y();
-  return {{x + gap, y - h / 2}, {x - gap - w, y - h / 2}, {x + gap, y - h / 2 - h - 2},
-          {x + gap, y + h / 2 + 2}};
+  return {Eigen::Vector2f(x + gap, y - h / 2), Eigen::Vector2f(x - gap - w, y - h / 2),
+          Eigen::Vector2f(x + gap, y - h / 2 - h - 2), Eigen::Vector2f(x + gap, y + h / 2 + 2)};
 }
 
 }  // namespace
 
-std::vector<PlacedLabel> layOutLabels(const std::vector<LabelRequest>& requests, float gap) {
-  constexpr float kPadding = 2.0f;
-  std::vector<std::size_t> order(requests.size());
-  std::iota(order.begin(), order.end(), std::size_t(0));
-  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+const std::vector<PlacedLabel>& LabelLayout::place(const std::vector<LabelRequest>& requests,
+                                                   float gap) {
+  const std::size_t n = requests.size();
+  m_order.resize(n);
+  std::iota(m_order.begin(), m_order.end(), std::size_t(0));
+  std::stable_sort(m_order.begin(), m_order.end(), [&](std::size_t a, std::size_t b) {
     return requests[a].priority < requests[b].priority;
   });
-  std::vector<PlacedLabel> placed(requests.size());
-  std::vector<Box> taken(requests.size());
-  std::vector<bool> hasBox(requests.size(), false);
+  m_placed.assign(n, PlacedLabel{});
+  m_taken.resize(n);
+  m_placedYet.assign(n, 0);
   // The first spot of `size` around request i free of every other label placed so far.
   auto freeSpot = [&](std::size_t i, const Eigen::Vector2f& size) -> std::optional<Eigen::Vector2f> {
     for (const Eigen::Vector2f& at : spots(requests[i].anchor, size, gap)) {
-      const Box box{at, at + size};
       bool free = true;
-      for (std::size_t j = 0; j < requests.size() && free; ++j)
-        free = j == i || !hasBox[j] || !box.overlaps(taken[j], kPadding);
+      for (std::size_t j = 0; j < n && free; ++j)
+        free = j == i || !m_placedYet[j] || !overlap(at, at + size, m_taken[j].min, m_taken[j].max);
       if (free) return at;
     }
     return std::nullopt;
   };
+  auto put = [&](std::size_t i, const Eigen::Vector2f& at, const Eigen::Vector2f& size, bool shortened) {
+    m_placed[i] = {at, shortened};
+    m_taken[i] = {at, at + size};
+    m_placedYet[i] = 1;
+  };
   // Every point gets its number first (a row of knobs keeps all its numbers), then a label grows
   // to its full text where that fits.
-  for (std::size_t i : order) {
+  for (std::size_t i : m_order) {
     const Eigen::Vector2f& size = requests[i].shortSize;
-    const Eigen::Vector2f at = freeSpot(i, size).value_or(spots(requests[i].anchor, size, gap).front());
-    placed[i] = {at, true};
-    taken[i] = {at, at + size};
-    hasBox[i] = true;
+    put(i, freeSpot(i, size).value_or(spots(requests[i].anchor, size, gap).front()), size, true);
   }
-  for (std::size_t i : order) {
-    const Eigen::Vector2f& size = requests[i].fullSize;
-    if (const auto at = freeSpot(i, size)) {
-      placed[i] = {*at, false};
-      taken[i] = {*at, *at + size};
-    }
-  }
-  return placed;
+  for (std::size_t i : m_order)
+    if (const auto at = freeSpot(i, requests[i].fullSize)) put(i, *at, requests[i].fullSize, false);
+  return m_placed;
 }
 
 }  // namespace sagrid::ui

@@ -8,6 +8,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <cstddef>
 #include <vector>
 
 namespace sagrid::ui {
@@ -24,7 +25,20 @@ struct PlacedLabel {
   bool shortened = false;
 };
 
-// One placement per request, in the requests' order. `gap`: pixels between marker and label.
-std::vector<PlacedLabel> layOutLabels(const std::vector<LabelRequest>& requests, float gap);
+// Lays out the viewport's labels every frame; keeps its buffers from one frame to the next.
+class LabelLayout {
+ public:
+  // One placement per request, in the requests' order. `gap`: pixels between marker and label.
+  const std::vector<PlacedLabel>& place(const std::vector<LabelRequest>& requests, float gap);
+
+ private:
+  struct Box {
+    Eigen::Vector2f min, max;
+  };
+  std::vector<std::size_t> m_order;
+  std::vector<PlacedLabel> m_placed;
+  std::vector<Box> m_taken;  // each request's label box once placed (m_placedYet)
+  std::vector<char> m_placedYet;
+};
 
 }  // namespace sagrid::ui

@@ -78,23 +78,18 @@ std::vector<fs::path> meshesIn(const fs::path& dir) {
 }
 
 // An entry's "geometry" in the state file; none where absent or damaged (an outline is only
-// compared, so a damaged one just finds no twin) or without "triangles" (an older build's exact
-// hash, which this build cannot compare).
+// compared, so a damaged one just finds no twin; the object gets its outline again when opened).
 std::optional<GeometryOutline> geometryIn(const nlohmann::json& item) {
   const auto it = item.find("geometry");
   if (it == item.end() || !it->is_object()) return std::nullopt;
-  const auto triangles = it->find("triangles"), origin = it->find("origin"),
-             size = it->find("size");
+  const auto triangles = it->find("triangles"), size = it->find("size");
   if (triangles == it->end() || !triangles->is_number_unsigned()) return std::nullopt;
+  if (size == it->end() || !size->is_array() || size->size() != 3) return std::nullopt;
   GeometryOutline outline;
   outline.triangles = triangles->get<std::size_t>();
-  for (const auto& [field, into] :
-       {std::pair{origin, &outline.origin}, std::pair{size, &outline.size}}) {
-    if (field == it->end() || !field->is_array() || field->size() != 3) return std::nullopt;
-    for (int a = 0; a < 3; ++a) {
-      if (!(*field)[std::size_t(a)].is_number()) return std::nullopt;
-      (*into)[a] = (*field)[std::size_t(a)].get<double>();
-    }
+  for (int a = 0; a < 3; ++a) {
+    if (!(*size)[std::size_t(a)].is_number()) return std::nullopt;
+    outline.size[a] = (*size)[std::size_t(a)].get<double>();
   }
   return outline;
 }
@@ -220,8 +215,6 @@ void ReviewQueue::save() const {
     if (entry.geometry)
       objects.back()["geometry"] = {
           {"triangles", entry.geometry->triangles},
-          {"origin",
-           {entry.geometry->origin.x(), entry.geometry->origin.y(), entry.geometry->origin.z()}},
           {"size", {entry.geometry->size.x(), entry.geometry->size.y(), entry.geometry->size.z()}}};
   }
   nlohmann::json json = {{"schema", "sagrid.review-queue/1"}, {"objects", objects}};

@@ -25,7 +25,7 @@ struct QueueEntry {
   std::string error;  // last load error, shown in the queue (the queue goes on)
   // P(right with one key) of its prediction (labels' prediction.object_confidence), when predicted.
   std::optional<double> confidence;
-  // Its mesh's geometry outline (triangle count, box size and origin), known once the object was
+  // Its mesh's geometry outline (triangle count and box size), known once the object was
   // opened (kept in the state file), so an object opened later finds its curated twins'
   // candidates without importing anything; only a candidate's mesh is imported, to confirm it.
   std::optional<GeometryOutline> geometry;

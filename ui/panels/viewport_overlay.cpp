@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <string>
 #include <vector>
 
 #include "core/controls/control_turn.h"
@@ -29,12 +28,16 @@ void pointLabels(const Session& session, ImDrawList* draw) {
   const ViewportRect& vp = session.viewport();
   struct Shown {
     int index;
-    ImVec2 at;
     bool hidden;
-    std::string full, number;
+    char full[96], number[16];
+    ImVec2 fullSize, numberSize;
   };
-  std::vector<Shown> shown;
-  std::vector<LabelRequest> requests;
+  // Drawn every frame: the buffers and the layout's are kept from one frame to the next.
+  static std::vector<Shown> shown;
+  static std::vector<LabelRequest> requests;
+  static LabelLayout layout;
+  shown.clear();
+  requests.clear();
   for (int i = 0; i < static_cast<int>(doc->points().size()); ++i) {
     Eigen::Vector2f pixel;
     if (!session.camera().project(doc->pointInView(i), pixel)) continue;
@@ -49,33 +52,35 @@ void pointLabels(const Session& session, ImDrawList* draw) {
       draw->AddCircle(at, session.view().markerPixels * 1.35f + 4, IM_COL32(255, 255, 255, 230), 24,
                       2.0f);
     if (!session.view().showPointLabels) continue;
-    char text[96];
-    std::snprintf(text, sizeof text, "%d %s%s", i + 1, p.type.c_str(),
-                  p.status == AffordanceStatus::Predicted ? " ?" : "");
+    Shown& s = shown.emplace_back();
+    s.index = i;
     // A point the surface hides keeps a faint label: the near ones of a row of knobs stay legible.
-    const bool hidden = pointHiddenFromEye(*doc, session.camera().eye(), i);
-    Shown s{i, at, hidden, text, std::to_string(i + 1)};
-    const ImVec2 full = ImGui::CalcTextSize(s.full.c_str()), number = ImGui::CalcTextSize(s.number.c_str());
+    s.hidden = pointHiddenFromEye(*doc, session.camera().eye(), i);
+    std::snprintf(s.full, sizeof s.full, "%d %s%s", i + 1, p.type.c_str(),
+                  p.status == AffordanceStatus::Predicted ? " ?" : "");
+    std::snprintf(s.number, sizeof s.number, "%d", i + 1);
+    s.fullSize = ImGui::CalcTextSize(s.full);
+    s.numberSize = ImGui::CalcTextSize(s.number);
     // Labels placed so that a row of knobs' do not pile up: the selected point's first, then the
-    // points the eye sees; a label with no room left is its number alone.
-    // Centred so that the right-hand spot puts the text where it always was (8 px above the
-    // marker's centre).
-    const float centreY = at.y - 9.0f + (full.y + 2) / 2;
-    requests.push_back({{at.x, centreY}, {full.x + 6, full.y + 2}, {number.x + 6, number.y + 2},
-                        doc->selected() == i ? 0 : hidden ? 2 : 1});
-    shown.push_back(std::move(s));
+    // points the eye sees; centred so that the right-hand spot puts the text where it always was
+    // (8 px above the marker's centre).
+    const float centreY = at.y - 9.0f + (s.fullSize.y + 2) / 2;
+    requests.push_back({{at.x, centreY},
+                        {s.fullSize.x + 6, s.fullSize.y + 2},
+                        {s.numberSize.x + 6, s.numberSize.y + 2},
+                        doc->selected() == i ? 0 : s.hidden ? 2 : 1});
   }
-  const auto placed = layOutLabels(requests, session.view().markerPixels + 1);
+  const auto& placed = layout.place(requests, session.view().markerPixels + 1);
   for (std::size_t k = 0; k < shown.size(); ++k) {
     const Shown& s = shown[k];
-    const std::string& text = placed[k].shortened ? s.number : s.full;
+    const char* text = placed[k].shortened ? s.number : s.full;
+    const ImVec2 size = placed[k].shortened ? s.numberSize : s.fullSize;
     const ImVec2 box(placed[k].topLeft.x(), placed[k].topLeft.y());
-    const ImVec2 size = ImGui::CalcTextSize(text.c_str());
     draw->AddRectFilled(box, ImVec2(box.x + size.x + 6, box.y + size.y + 2),
                         IM_COL32(15, 17, 20, s.hidden ? 60 : 190), 3.0f);
     draw->AddText(ImVec2(box.x + 3, box.y + 1),
                   toU32(typeColor(doc->points()[std::size_t(s.index)].type), s.hidden ? 0.35f : 1.0f),
-                  text.c_str());
+                  text);
   }
 }
 

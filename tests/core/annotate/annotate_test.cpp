@@ -172,7 +172,8 @@ TEST_F(AnnotateTest, AFolderRememberingSizesScalesAFileFarFromObjectsLikeIt) {
   curated.source = "elsewhere";
   curated.category = "stove";
   curated.descriptor = stoveFeatures.descriptor;
-  curated.largestExtentMeters = remembered;
+  curated.extentUnits = remembered;
+  curated.metersPerUnit = 1.0;
   set->setSizeMemory(SizeMemory({curated},
                                 set->models().front().card().featureConfigHash, 4.0),
                      dir / kSizeMemoryFile);

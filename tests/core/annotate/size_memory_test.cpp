@@ -18,7 +18,8 @@ RememberedSize remembered(const std::string& id, const std::string& source, cons
   r.source = source;
   r.category = category;
   r.descriptor = std::move(descriptor);
-  r.largestExtentMeters = meters;
+  r.extentUnits = meters * 100;  // a file in centimetres
+  r.metersPerUnit = 0.01;
   return r;
 }
 
@@ -102,8 +103,11 @@ TEST(SizeMemory, MalformedFilesAreClearErrorsNamingTheFile) {
   j["far_factor"] = 0.5;
   expectError(j, "far_factor");
   j = good;
-  j["entries"][1]["largest_extent_m"] = -1.0;
+  j["entries"][1]["extent_units"] = -1.0;
   expectError(j, "positive");
+  j = good;
+  j["entries"][3].erase("meters_per_unit");
+  expectError(j, "malformed");
   j = good;
   j["entries"][2]["descriptor"] = {1.0};
   expectError(j, "descriptor has 1 values");

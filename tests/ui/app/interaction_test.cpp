@@ -336,7 +336,7 @@ TEST(Interaction, KeypadKeysShowTheWholeObjectFromAboveTheFrontAndTheRight) {
   // Each shows the whole object: the plate's corners are on screen.
   Eigen::Vector2f pixel;
   s.key(GLFW_KEY_KP_7);
-  for (const Eigen::Vector3f corner : {Eigen::Vector3f(-0.5f, -0.5f, 0), Eigen::Vector3f(0.5f, 0.5f, 0)}) {
+  for (const Eigen::Vector3f& corner : {Eigen::Vector3f(-0.5f, -0.5f, 0), Eigen::Vector3f(0.5f, 0.5f, 0)}) {
     ASSERT_TRUE(s.app->session().camera().project(corner, pixel));
     EXPECT_GE(pixel.x(), 0.0f);
     EXPECT_LE(pixel.x(), float(s.app->session().camera().width()));

@@ -12,7 +12,10 @@ bool overlap(const PlacedLabel& a, const Eigen::Vector2f& sizeA, const PlacedLab
 }
 
 TEST(LabelLayout, ALoneLabelSitsRightOfItsMarkerInFull) {
-  const auto placed = layOutLabels({{{100, 100}, {120, 16}, {10, 16}, 1}}, 8);
+  // The viewport keeps one layout from frame to frame: a crowded frame before leaves nothing behind.
+  LabelLayout layout;
+  layout.place(std::vector<LabelRequest>(12, LabelRequest{{100, 100}, {120, 16}, {10, 16}, 1}), 8);
+  const auto placed = layout.place({{{100, 100}, {120, 16}, {10, 16}, 1}}, 8);
   ASSERT_EQ(placed.size(), 1u);
   EXPECT_FALSE(placed[0].shortened);
   EXPECT_FLOAT_EQ(placed[0].topLeft.x(), 108);
@@ -23,7 +26,7 @@ TEST(LabelLayout, ARowOfKnobsGetsLabelsThatDoNotOverlap) {
   // Four knobs 12 px apart in a row: full labels 120 x 16 px cannot all sit to the right.
   std::vector<LabelRequest> row;
   for (int k = 0; k < 4; ++k) row.push_back({{100.0f + 12.0f * float(k), 200.0f}, {120, 16}, {10, 16}, 1});
-  const auto placed = layOutLabels(row, 8);
+  const auto placed = LabelLayout().place(row, 8);
   ASSERT_EQ(placed.size(), 4u);
   auto sizeOf = [&](std::size_t i) { return placed[i].shortened ? row[i].shortSize : row[i].fullSize; };
   int overlapping = 0;
@@ -38,7 +41,7 @@ TEST(LabelLayout, ADenseRowKeepsEveryNumberAndGrowsTheLabelsThatFit) {
   // at least), none over another, and some have room for the full text above or below the row.
   std::vector<LabelRequest> row;
   for (int k = 0; k < 12; ++k) row.push_back({{100.0f + 25.0f * float(k), 300.0f}, {110, 16}, {14, 16}, 1});
-  const auto placed = layOutLabels(row, 8);
+  const auto placed = LabelLayout().place(row, 8);
   auto sizeOf = [&](std::size_t i) { return placed[i].shortened ? row[i].shortSize : row[i].fullSize; };
   int overlapping = 0, full = 0;
   for (std::size_t a = 0; a < row.size(); ++a) {
@@ -55,7 +58,7 @@ TEST(LabelLayout, TheSelectedPointsLabelIsPlacedFirstAndKeepsItsSpot) {
   // right-hand spot in full; the other moves elsewhere.
   const std::vector<LabelRequest> two{{{100, 100}, {120, 16}, {10, 16}, 1},
                                       {{100, 100}, {120, 16}, {10, 16}, 0}};
-  const auto placed = layOutLabels(two, 8);
+  const auto placed = LabelLayout().place(two, 8);
   EXPECT_FLOAT_EQ(placed[1].topLeft.x(), 108);
   EXPECT_FALSE(placed[1].shortened);
   EXPECT_FALSE(placed[0].topLeft.isApprox(placed[1].topLeft));
@@ -63,7 +66,7 @@ TEST(LabelLayout, TheSelectedPointsLabelIsPlacedFirstAndKeepsItsSpot) {
 
 TEST(LabelLayout, WithNoFreeSpotTheNumberAloneOverlaps) {
   std::vector<LabelRequest> pile(12, LabelRequest{{100, 100}, {120, 16}, {10, 16}, 1});
-  const auto placed = layOutLabels(pile, 8);
+  const auto placed = LabelLayout().place(pile, 8);
   EXPECT_TRUE(placed.back().shortened);
   EXPECT_FLOAT_EQ(placed.back().topLeft.x(), 108);
 }

@@ -37,7 +37,7 @@ inline std::vector<ui::QueueEntry> reviewQueue(const std::filesystem::path& dir,
     l.object.id = toString(state);
     l.object.category = category;
     writeLabels(labels, l);
-    queue.push_back({mesh, labels, state, {}, {}});
+    queue.push_back({mesh, labels, state, {}, {}, {}});
   }
   return queue;
 }
