@@ -1,14 +1,15 @@
 // `sagrid units memory --data DIR...`: the size memory the units guess recalls
-// (core/annotate/size_memory.h) built from curated real objects, its far factor chosen leaving
-// each source out, and written into the models folder only where that beats the named units
-// alone. Parsing and progress display only.
+// (core/annotate/size_memory.h) built from curated real objects, the measures it recalls and its
+// far factor chosen leaving each source out, and written into the models folder only where that
+// beats the named units alone. Parsing and progress display only.
 #include <CLI/CLI.hpp>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
-#include <limits>
+#include <algorithm>
 #include <memory>
+#include <optional>
 
 #include "app/command_registry.h"
 #include "app/progress_bar.h"
@@ -17,7 +18,7 @@
 #include "core/common/atomic_file.h"
 #include "core/common/error.h"
 #include "core/common/resource_paths.h"
-#include "core/eval/size_memory_loso.h"
+#include "core/eval/size_memory_update.h"
 #include "core/eval/units_cases.h"
 
 namespace fs = std::filesystem;
@@ -28,8 +29,26 @@ struct MemoryOptions {
   std::vector<std::string> data;
   std::string models, out, cache, report, into;
   std::vector<double> factors{1.5, 2, 3, 4, 5, 8};
+  // Each a set of measures (comma-separated) a memory may recall, the most agreed of them.
+  std::vector<std::string> measureSets{"largest_extent", "height", "work_surface",
+                                       "largest_extent,height,work_surface"};
   int neighbours = 5;
 };
+
+std::vector<std::vector<sagrid::SizeMeasure>> parseMeasureSets(const std::vector<std::string>& sets) {
+  std::vector<std::vector<sagrid::SizeMeasure>> parsed;
+  for (const auto& set : sets) {
+    std::vector<sagrid::SizeMeasure> measures;
+    std::size_t start = 0;
+    while (start <= set.size()) {
+      const std::size_t comma = std::min(set.find(',', start), set.size());
+      measures.push_back(sagrid::sizeMeasureNamed(set.substr(start, comma - start)));
+      start = comma + 1;
+    }
+    parsed.push_back(std::move(measures));
+  }
+  return parsed;
+}
 
 void setupUnits(CLI::App& root) {
   auto* cmd = root.add_subcommand("units", "Units of files that do not state them");
@@ -53,11 +72,17 @@ void setupUnits(CLI::App& root) {
   memory->add_option("--report", o->report, "Also write the evaluation to REPORT/units_memory.md");
   memory->add_option("--factors", o->factors, "Candidate far factors (>= 1)")
       ->check(CLI::Range(1.0, 1e9));
+  memory->add_option("--measures", o->measureSets,
+                     "Candidate sets of measures the memory may recall, comma-separated, the one "
+                     "its recalled objects agree on most (largest_extent, height, work_surface; "
+                     "repeatable)")
+      ->capture_default_str();
   memory->add_option("--neighbours", o->neighbours,
                      "How many curated objects of the category the memory recalls (median size)")
       ->check(CLI::Range(1, 1000))
       ->capture_default_str();
   memory->callback([o] {
+    const auto measureSets = parseMeasureSets(o->measureSets);
     const fs::path modelsDir = o->models.empty() ? sagrid::defaultModelsDir() : fs::path(o->models);
     const auto models = sagrid::ModelSet::load(modelsDir);
     sagrid::FeatureOptions features = models.featureOptions();
@@ -65,15 +90,14 @@ void setupUnits(CLI::App& root) {
     const std::string hash = models.featureConfigHash();
     if (o->data.empty() && o->into.empty())
       throw sagrid::InvalidArgument("units memory needs --data DIR, --into MODELS or both");
-    std::vector<sagrid::UnitsCase> earlier;
+    std::optional<sagrid::SizeMemory> grown;
     if (!o->into.empty()) {
-      const auto grown = sagrid::readSizeMemory(o->into);
+      grown = sagrid::readSizeMemory(o->into);
       if (!grown)
         throw sagrid::InvalidArgument("--into " + o->into + ": no " + sagrid::kSizeMemoryFile + " there");
       if (grown->featureConfigHash() != hash)
         throw sagrid::InvalidArgument("--into " + o->into + ": its memory was built with other "
                                       "features than the models of --models");
-      earlier = sagrid::casesOfMemory(*grown);
     }
     std::vector<fs::path> folders(o->data.begin(), o->data.end());
     std::unique_ptr<sagrid::app::ProgressBar> bar;
@@ -83,36 +107,23 @@ void setupUnits(CLI::App& root) {
           bar->update(done, id);
           if (done == total) bar.reset();
         });
-    const auto cases = sagrid::mergeCases(earlier, curated);
-    if (cases.empty()) throw sagrid::InvalidArgument("units memory: no curated objects in --data");
-    std::vector<double> factors = o->factors;
-    factors.push_back(std::numeric_limits<double>::infinity());
-    const auto report = sagrid::evaluateSizeMemory(cases, factors, hash, o->neighbours);
-    const std::string md = sagrid::unitsLosoMarkdown(report);
+    const auto update = sagrid::updateSizeMemory(grown ? &*grown : nullptr, curated,
+                                                 sagrid::recallCandidates(measureSets, o->factors),
+                                                 hash, o->neighbours);
+    const std::string md = sagrid::unitsLosoMarkdown(update.report);
     std::cout << md;
     if (!o->report.empty()) {
       fs::create_directories(o->report);
       sagrid::writeFileAtomic(fs::path(o->report) / "units_memory.md", md);
     }
-    const std::size_t withMemory = report.chosenLeavingSourceOut.back().right;
-    const std::size_t namedOnly = report.byFactor.back().back().right;
     const fs::path out = !o->out.empty() ? fs::path(o->out) : !o->into.empty() ? fs::path(o->into) : modelsDir;
-    if (withMemory <= namedOnly || !std::isfinite(report.chosenOnAll)) {
-      std::fprintf(stderr,
-                   "units memory: not written: left out by source it guesses %zu of %zu right, the "
-                   "named units alone %zu\n",
-                   withMemory, cases.size(), namedOnly);
+    if (!update.memory) {
+      std::fprintf(stderr, "%s; nothing written\n", update.verdict.c_str());
       return;
     }
-    std::vector<sagrid::RememberedSize> entries;
-    for (const auto& c : cases) entries.push_back(c.object);
     fs::create_directories(out);
-    sagrid::writeSizeMemory(sagrid::SizeMemory(entries, hash, report.chosenOnAll, o->neighbours), out);
-    std::fprintf(stderr,
-                 "units memory: %zu objects, far factor %.3g -> %s (left out by source %zu of %zu "
-                 "right, named units alone %zu)\n",
-                 cases.size(), report.chosenOnAll, (out / sagrid::kSizeMemoryFile).c_str(),
-                 withMemory, cases.size(), namedOnly);
+    sagrid::writeSizeMemory(*update.memory, out);
+    std::fprintf(stderr, "%s -> %s\n", update.verdict.c_str(), (out / sagrid::kSizeMemoryFile).c_str());
   });
 }
 

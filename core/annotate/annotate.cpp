@@ -72,10 +72,10 @@ void appendPredictedPoints(ObjectLabels& labels, const std::vector<ModelPredicti
 // objects as "none".
 UnitGuess unitGuessOf(const Mesh& mesh, const FeatureGrid& features, const std::string& category,
                       const ModelSet& models) {
-  const double extent = mesh.bounds().sizes().maxCoeff();
-  const UnitGuess guess = guessMetersPerUnit(extent, category);
+  const SizeMeasures sizes = measureSizes(mesh);
+  const UnitGuess guess = guessMetersPerUnit(sizes.largestExtent, category);
   const SizeMemory* memory = models.sizeMemory();
-  return memory ? memory->refine(guess, extent, features.descriptor, category) : guess;
+  return memory ? memory->refine(guess, sizes, features.descriptor, category) : guess;
 }
 
 }  // namespace

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <limits>
 #include <map>
+#include <optional>
 #include <set>
 
 namespace sagrid {
@@ -18,18 +19,30 @@ void count(UnitsScore& score, bool right, bool notMetres) {
   score.notMetresRight += right && notMetres;
 }
 
-std::string factorName(double factor) {
-  if (!std::isfinite(factor)) return "named units only (no memory)";
-  char text[40];
-  std::snprintf(text, sizeof text, "memory, far factor %.3g", factor);
-  return text;
-}
-
 std::string cell(std::size_t right, std::size_t of) {
   return std::to_string(right) + " / " + std::to_string(of);
 }
 
 }  // namespace
+
+std::vector<MemoryRecall> recallCandidates(const std::vector<std::vector<SizeMeasure>>& measureSets,
+                                           const std::vector<double>& factors) {
+  std::vector<MemoryRecall> candidates;
+  for (const auto& measures : measureSets)
+    for (const double factor : factors) candidates.push_back({measures, factor});
+  candidates.push_back({});
+  return candidates;
+}
+
+std::string recallName(const MemoryRecall& recall) {
+  if (recall.namedUnitsOnly()) return "named units only (no memory)";
+  std::string name = recall.measures.size() > 1 ? "memory (most agreed of " : "memory (";
+  for (std::size_t i = 0; i < recall.measures.size(); ++i)
+    name += (i ? ", " : "") + std::string(sizeMeasureWords(recall.measures[i]));
+  char factor[40];
+  std::snprintf(factor, sizeof factor, "), far factor %.3g", recall.farFactor);
+  return name + factor;
+}
 
 std::vector<UnitsCase> casesOfMemory(const SizeMemory& memory) {
   std::vector<UnitsCase> cases;
@@ -50,11 +63,11 @@ std::vector<UnitsCase> mergeCases(std::vector<UnitsCase> earlier, const std::vec
 }
 
 UnitsLosoReport evaluateSizeMemory(const std::vector<UnitsCase>& cases,
-                                   const std::vector<double>& factors,
+                                   const std::vector<MemoryRecall>& candidates,
                                    const std::string& featureConfigHash, int neighbours,
                                    double tolerance) {
   UnitsLosoReport report;
-  report.factors = factors;
+  report.candidates = candidates;
   report.tolerance = tolerance;
   std::vector<RememberedSize> entries;
   std::set<std::string> groups;
@@ -63,40 +76,52 @@ UnitsLosoReport evaluateSizeMemory(const std::vector<UnitsCase>& cases,
     groups.insert(c.group);
   }
   report.groups.assign(groups.begin(), groups.end());
-  const SizeMemory memory(entries, featureConfigHash, 1.0, neighbours);
+  // One memory per set of measures the candidates recall.
+  std::map<std::vector<SizeMeasure>, SizeMemory> memories;
+  for (const auto& candidate : candidates)
+    if (!candidate.namedUnitsOnly() && !memories.count(candidate.measures))
+      memories.emplace(candidate.measures,
+                       SizeMemory(entries, featureConfigHash, 1.0, neighbours, candidate.measures));
   auto groupIndex = [&](const std::string& g) {
     return std::size_t(std::find(report.groups.begin(), report.groups.end(), g) - report.groups.begin());
   };
-  // right[f][i]: case i's guess with factor f, its own source left out of the memory.
-  std::vector<std::vector<bool>> right(factors.size(), std::vector<bool>(cases.size()));
-  std::vector<std::vector<double>> guessed(factors.size(), std::vector<double>(cases.size()));
-  report.byFactor.assign(factors.size(), std::vector<UnitsScore>(report.groups.size() + 1));
+  const std::size_t n = candidates.size();
+  // right[k][i]: case i's guess with candidate k, its own source left out of the memory.
+  std::vector<std::vector<bool>> right(n, std::vector<bool>(cases.size()));
+  std::vector<std::vector<double>> guessed(n, std::vector<double>(cases.size()));
+  report.byCandidate.assign(n, std::vector<UnitsScore>(report.groups.size() + 1));
   for (std::size_t i = 0; i < cases.size(); ++i) {
     const UnitsCase& c = cases[i];
-    const UnitGuess named = guessMetersPerUnit(c.object.extentUnits, c.object.category);
+    const UnitGuess named = guessMetersPerUnit(c.object.units.largestExtent, c.object.category);
     const bool notMetres = scaleRatio(c.object.metersPerUnit, 1.0) > tolerance;
-    // Recalled once, judged with every factor.
-    const auto expected = memory.expectedMeters(c.object.descriptor, c.object.category, c.object.source);
-    for (std::size_t f = 0; f < factors.size(); ++f) {
+    // Recalled once per memory, judged with every factor.
+    std::map<std::vector<SizeMeasure>, std::optional<ExpectedSize>> expected;
+    for (const auto& [measures, memory] : memories)
+      expected[measures] = memory.expectedSize(c.object.descriptor, c.object.category, c.object.units,
+                                               c.object.source);
+    for (std::size_t k = 0; k < n; ++k) {
+      const MemoryRecall& recall = candidates[k];
+      const std::optional<ExpectedSize> e =
+          recall.namedUnitsOnly() ? std::nullopt : expected.at(recall.measures);
       const UnitGuess guess =
-          std::isfinite(factors[f]) && expected
-              ? unlessFarFromExpectedSize(named, c.object.extentUnits, *expected, factors[f])
-              : named;
-      guessed[f][i] = guess.metersPerUnit;
-      right[f][i] = scaleRatio(guess.metersPerUnit, c.object.metersPerUnit) <= tolerance;
-      count(report.byFactor[f][groupIndex(c.group)], right[f][i], notMetres);
-      count(report.byFactor[f].back(), right[f][i], notMetres);
+          e ? unlessFarFromExpectedSize(named, c.object.units[e->measure], e->meters, recall.farFactor)
+            : named;
+      guessed[k][i] = guess.metersPerUnit;
+      right[k][i] = scaleRatio(guess.metersPerUnit, c.object.metersPerUnit) <= tolerance;
+      count(report.byCandidate[k][groupIndex(c.group)], right[k][i], notMetres);
+      count(report.byCandidate[k].back(), right[k][i], notMetres);
     }
   }
-  // The factor with the most right among `among`; ties go to the larger (fewer scaled files).
+  // The candidate with the most right among `among`; ties go to the larger factor (fewer scaled
+  // files), then to the earlier candidate.
   auto choose = [&](auto among) {
     std::size_t best = 0, bestRight = 0;
-    for (std::size_t f = 0; f < factors.size(); ++f) {
-      std::size_t n = 0;
-      for (std::size_t i = 0; i < cases.size(); ++i) n += among(i) && right[f][i];
-      if (n > bestRight || (n == bestRight && factors[f] > factors[best])) {
-        best = f;
-        bestRight = n;
+    for (std::size_t k = 0; k < n; ++k) {
+      std::size_t r = 0;
+      for (std::size_t i = 0; i < cases.size(); ++i) r += among(i) && right[k][i];
+      if (r > bestRight || (r == bestRight && candidates[k].farFactor > candidates[best].farFactor)) {
+        best = k;
+        bestRight = r;
       }
     }
     return best;
@@ -105,23 +130,23 @@ UnitsLosoReport evaluateSizeMemory(const std::vector<UnitsCase>& cases,
   for (const auto& c : cases) sources.insert(c.object.source);
   report.chosenLeavingSourceOut.assign(report.groups.size() + 1, UnitsScore{});
   for (const auto& source : sources) {
-    const std::size_t f = choose([&](std::size_t i) { return cases[i].object.source != source; });
-    report.chosenBySource.emplace_back(source, factors[f]);
+    const std::size_t k = choose([&](std::size_t i) { return cases[i].object.source != source; });
+    report.chosenBySource.emplace_back(source, k);
     for (std::size_t i = 0; i < cases.size(); ++i) {
       if (cases[i].object.source != source) continue;
       const bool notMetres = scaleRatio(cases[i].object.metersPerUnit, 1.0) > tolerance;
-      count(report.chosenLeavingSourceOut[groupIndex(cases[i].group)], right[f][i], notMetres);
-      count(report.chosenLeavingSourceOut.back(), right[f][i], notMetres);
-      if (!right[f][i]) {
+      count(report.chosenLeavingSourceOut[groupIndex(cases[i].group)], right[k][i], notMetres);
+      count(report.chosenLeavingSourceOut.back(), right[k][i], notMetres);
+      if (!right[k][i]) {
         char line[300];
         std::snprintf(line, sizeof line, "%s (%s, %s): guessed %.3g, curated %.3g m per unit",
                       cases[i].object.id.c_str(), source.c_str(), cases[i].object.category.c_str(),
-                      guessed[f][i], cases[i].object.metersPerUnit);
+                      guessed[k][i], cases[i].object.metersPerUnit);
         report.wrongChosen.push_back(line);
       }
     }
   }
-  report.chosenOnAll = factors.empty() ? 1.0 : factors[choose([](std::size_t) { return true; })];
+  report.chosenOnAll = choose([](std::size_t) { return true; });
   return report;
 }
 
@@ -144,20 +169,20 @@ std::string unitsLosoMarkdown(const UnitsLosoReport& report) {
       md += " " + cell(s.right, s.objects) + "; " + cell(s.notMetresRight, s.notMetres) + " |";
     md += "\n";
   };
-  for (std::size_t f = 0; f < report.factors.size(); ++f)
-    row(factorName(report.factors[f]), report.byFactor[f]);
-  row("**memory, far factor chosen leaving each source out**", report.chosenLeavingSourceOut);
-  md += "\nFactor chosen without each source:";
-  std::map<double, std::size_t> chosen;
-  for (const auto& [source, factor] : report.chosenBySource) ++chosen[factor];
-  for (const auto& [factor, n] : chosen) {
-    std::snprintf(line, sizeof line, " %.3g (%zu source%s)", factor, n, n == 1 ? "" : "s");
+  for (std::size_t k = 0; k < report.candidates.size(); ++k)
+    row(recallName(report.candidates[k]), report.byCandidate[k]);
+  row("**chosen leaving each source out**", report.chosenLeavingSourceOut);
+  md += "\nChosen without each source:";
+  std::map<std::size_t, std::size_t> chosen;
+  for (const auto& [source, k] : report.chosenBySource) ++chosen[k];
+  for (const auto& [k, n] : chosen) {
+    std::snprintf(line, sizeof line, " %s (%zu source%s);", recallName(report.candidates[k]).c_str(), n,
+                  n == 1 ? "" : "s");
     md += line;
   }
-  std::snprintf(line, sizeof line, "; on all of them: %.3g (kept in units_memory.json).\n",
-                report.chosenOnAll);
-  md += line;
-  if (!report.wrongChosen.empty()) md += "\nWrong with the factor chosen leaving the source out:\n\n";
+  md += " on all of them: " + recallName(report.candidates[report.chosenOnAll]) +
+        " (kept in units_memory.json).\n";
+  if (!report.wrongChosen.empty()) md += "\nWrong with the recall chosen leaving the source out:\n\n";
   for (const auto& wrong : report.wrongChosen) md += "- " + wrong + "\n";
   return md;
 }

@@ -1,10 +1,12 @@
 // Leave-one-source-out evaluation of the units guess with the size memory
-// (core/annotate/size_memory.h), and the choice of its far factor: every curated object's units
-// guessed as `annotate` would (its decided category, its file's largest extent, its descriptor)
-// with a memory that holds no object of its source, scored against its curated units; the factor
-// is chosen for each source on the other sources alone. `sagrid units memory` prints it.
+// (core/annotate/size_memory.h), and the choice of how it recalls: every curated object's units
+// guessed as `annotate` would (its decided category, its file's sizes, its descriptor) with a
+// memory that holds no object of its source, scored against its curated units; the measures the
+// memory may recall and its far factor are chosen for each source on the other sources alone.
+// `sagrid units memory` prints it.
 #pragma once
 
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -21,14 +23,28 @@ struct UnitsScore {
   std::size_t objects = 0, right = 0, notMetres = 0, notMetresRight = 0;
 };
 
+// One way of recalling sizes: the measures a memory may recall and its far factor (infinity: no
+// memory, the named units alone).
+struct MemoryRecall {
+  std::vector<SizeMeasure> measures;
+  double farFactor = std::numeric_limits<double>::infinity();
+  bool namedUnitsOnly() const { return !(farFactor < std::numeric_limits<double>::infinity()); }
+};
+// Each set of measures with each factor, then the named units alone (last).
+std::vector<MemoryRecall> recallCandidates(const std::vector<std::vector<SizeMeasure>>& measureSets,
+                                           const std::vector<double>& factors);
+// "memory (largest extent), far factor 4", "memory (most agreed of largest extent, height),
+// ...", "named units only (no memory)".
+std::string recallName(const MemoryRecall& recall);
+
 struct UnitsLosoReport {
-  std::vector<double> factors;                         // candidates; infinity = named units only
-  std::vector<std::vector<UnitsScore>> byFactor;       // [factor][group], the last group all
+  std::vector<MemoryRecall> candidates;
+  std::vector<std::vector<UnitsScore>> byCandidate;    // [candidate][group], the last group all
   std::vector<UnitsScore> chosenLeavingSourceOut;      // [group], the last all
   std::vector<std::string> groups;                     // without "all"
-  std::vector<std::pair<std::string, double>> chosenBySource;
-  std::vector<std::string> wrongChosen;  // "id (source): guessed X, curated Y" with the chosen factor
-  double chosenOnAll = 0;                              // the factor the shipped memory keeps
+  std::vector<std::pair<std::string, std::size_t>> chosenBySource;  // source -> candidate
+  std::vector<std::string> wrongChosen;  // "id (source): guessed X, curated Y" with the chosen recall
+  std::size_t chosenOnAll = 0;           // the candidate the shipped memory keeps
   double tolerance = 1.5;
 };
 
@@ -40,9 +56,11 @@ std::vector<UnitsCase> casesOfMemory(const SizeMemory& memory);
 std::vector<UnitsCase> mergeCases(std::vector<UnitsCase> earlier, const std::vector<UnitsCase>& more);
 
 // Right: the guess within `tolerance` of the curated units; not in metres: the curated units
-// more than `tolerance` from 1. `neighbours`: how many curated objects the memory recalls.
+// more than `tolerance` from 1. `neighbours`: how many curated objects the memory recalls. For
+// each source, the candidate with the most right on the other sources (ties: the larger factor,
+// then the earlier candidate).
 UnitsLosoReport evaluateSizeMemory(const std::vector<UnitsCase>& cases,
-                                   const std::vector<double>& factors,
+                                   const std::vector<MemoryRecall>& candidates,
                                    const std::string& featureConfigHash, int neighbours = 5,
                                    double tolerance = 1.5);
 

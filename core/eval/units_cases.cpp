@@ -6,6 +6,7 @@
 #include "core/dataset/object_source.h"
 #include "core/labels/labels.h"
 #include "core/mesh/mesh_import.h"
+#include "core/mesh/size_measures.h"
 
 namespace sagrid {
 
@@ -25,7 +26,7 @@ std::vector<UnitsCase> readUnitsCases(
     framed.up = mesh.fileUp;
     UnitsCase c;
     c.group = folderName;
-    c.object.extentUnits = mesh.bounds().sizes().maxCoeff();
+    c.object.units = measureSizes(mesh);
     c.object.metersPerUnit = metersPerUnit(labels);
     c.object.id = entry.id;
     c.object.source = objectSource(labels, entry.mesh, folderName);
@@ -33,7 +34,7 @@ std::vector<UnitsCase> readUnitsCases(
     c.object.category = category == "stove" || category == "sink" ? category : "none";
     c.object.descriptor = framed.cacheDir.empty() ? computeFeatures(mesh, framed).descriptor
                                                    : extractFeatures(entry.mesh, framed).descriptor;
-    if (c.object.largestExtentMeters() > 0) cases.push_back(std::move(c));
+    if (c.object.meters(SizeMeasure::LargestExtent) > 0) cases.push_back(std::move(c));
     if (progress) progress(++done, entries.size(), entry.id);
   }
   return cases;

@@ -65,22 +65,22 @@ UnitGuess guessMetersPerUnit(double largestExtent, const std::string& category) 
 
 double scaleRatio(double a, double b) { return std::max(a, b) / std::min(a, b); }
 
-UnitGuess unlessFarFromExpectedSize(const UnitGuess& guess, double largestExtent,
-                                    double expectedMeters, double farFactor) {
-  if (!(largestExtent > 0) || !std::isfinite(largestExtent) || !(expectedMeters > 0) ||
+UnitGuess unlessFarFromExpectedSize(const UnitGuess& guess, double size, double expectedMeters,
+                                    double farFactor, const char* measure) {
+  if (!(size > 0) || !std::isfinite(size) || !(expectedMeters > 0) ||
       !std::isfinite(expectedMeters) || !(farFactor >= 1))
     return guess;
-  const double meters = largestExtent * guess.metersPerUnit;
+  const double meters = size * guess.metersPerUnit;
   if (scaleRatio(meters, expectedMeters) <= farFactor) return guess;
   UnitGuess scaled;
-  scaled.metersPerUnit = expectedMeters / largestExtent;
+  scaled.metersPerUnit = expectedMeters / size;
   scaled.unit = unitName(scaled.metersPerUnit);
   scaled.sure = false;
   char line[240];
   std::snprintf(line, sizeof line,
-                "largest extent %.4g units: %.3g m in %s, more than %.3gx from the %.3g m of curated "
+                "%s %.4g units: %.3g m in %s, more than %.3gx from the %.3g m of curated "
                 "objects like it; scaled to that",
-                largestExtent, meters, guess.unit.c_str(), farFactor, expectedMeters);
+                measure, size, meters, guess.unit.c_str(), farFactor, expectedMeters);
   scaled.reason = line;
   return scaled;
 }

@@ -49,8 +49,10 @@ double scaleRatio(double a, double b);
 // curated objects that look alike (core/annotate/size_memory.h) put the object at
 // `expectedMeters`, a named unit that makes it more than `farFactor` times larger or smaller gives
 // way to the scale that makes it that size (unit "custom", not sure: a curator's units for the
-// source replace it). Otherwise, and for expectations or extents that are not positive, `guess`.
-UnitGuess unlessFarFromExpectedSize(const UnitGuess& guess, double largestExtent,
-                                    double expectedMeters, double farFactor);
+// source replace it). `size` is the object's size in file units in the measure expected (`measure`
+// names it in the reason: "largest extent", "height", ...). Otherwise, and for expectations or
+// sizes that are not positive, `guess`.
+UnitGuess unlessFarFromExpectedSize(const UnitGuess& guess, double size, double expectedMeters,
+                                    double farFactor, const char* measure = "largest extent");
 
 }  // namespace sagrid

@@ -23,7 +23,8 @@ TEST(UnitsCli, OneSourceCannotBeatTheNamedUnitsSoNothingIsWritten) {
                      quotedPath(dir / "out") + " --report " + quotedPath(dir / "report"));
   ASSERT_EQ(r.exitCode, 0) << r.output;
   EXPECT_THAT(r.output, HasSubstr("| named units only (no memory) |"));
-  EXPECT_THAT(r.output, HasSubstr("not written"));
+  EXPECT_THAT(r.output, HasSubstr("units memory refused"));
+  EXPECT_THAT(r.output, HasSubstr("nothing written"));
   EXPECT_FALSE(fs::exists(dir / "out" / kSizeMemoryFile));
   EXPECT_TRUE(fs::exists(dir / "report" / "units_memory.md"));
 
@@ -39,6 +40,9 @@ TEST(UnitsCli, OneSourceCannotBeatTheNamedUnitsSoNothingIsWritten) {
   r = runSagrid("units memory --into " + quotedPath(dir / "empty"));
   EXPECT_NE(r.exitCode, 0);
   EXPECT_THAT(r.output, HasSubstr("no units_memory.json there"));
+  r = runSagrid("units memory --data " + quotedPath(dir / "one-source") + " --measures height,width");
+  EXPECT_NE(r.exitCode, 0);
+  EXPECT_THAT(r.output, HasSubstr("unknown size measure 'width'"));
   r = runSagrid("units memory --out " + quotedPath(dir / "out"));
   EXPECT_NE(r.exitCode, 0);
   EXPECT_THAT(r.output, HasSubstr("needs --data DIR, --into MODELS or both"));

@@ -172,7 +172,7 @@ TEST_F(AnnotateTest, AFolderRememberingSizesScalesAFileFarFromObjectsLikeIt) {
   curated.source = "elsewhere";
   curated.category = "stove";
   curated.descriptor = stoveFeatures.descriptor;
-  curated.extentUnits = remembered;
+  curated.units.largestExtent = remembered;
   curated.metersPerUnit = 1.0;
   set->setSizeMemory(SizeMemory({curated},
                                 set->models().front().card().featureConfigHash, 4.0),

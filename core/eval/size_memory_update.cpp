@@ -1,0 +1,43 @@
+#include "core/eval/size_memory_update.h"
+
+#include <cstdio>
+
+#include "core/common/error.h"
+
+namespace sagrid {
+
+SizeMemoryUpdate updateSizeMemory(const SizeMemory* earlier, const std::vector<UnitsCase>& curated,
+                                  const std::vector<MemoryRecall>& candidates,
+                                  const std::string& featureConfigHash, int neighbours) {
+  if (earlier && earlier->featureConfigHash() != featureConfigHash)
+    throw InvalidArgument("the units memory was built with other features than the models'");
+  const auto cases = mergeCases(earlier ? casesOfMemory(*earlier) : std::vector<UnitsCase>{}, curated);
+  if (cases.empty()) throw InvalidArgument("units memory: no curated objects to remember");
+  SizeMemoryUpdate update;
+  update.report = evaluateSizeMemory(cases, candidates, featureConfigHash, neighbours);
+  update.objects = cases.size();
+  update.rightWithMemory = update.report.chosenLeavingSourceOut.back().right;
+  update.rightNamedOnly = update.report.byCandidate.back().back().right;
+  const MemoryRecall& chosen = update.report.candidates[update.report.chosenOnAll];
+  char line[400];
+  if (update.rightWithMemory <= update.rightNamedOnly || chosen.namedUnitsOnly()) {
+    std::snprintf(line, sizeof line,
+                  "units memory refused: left out by source it guesses %zu of %zu right, the named "
+                  "units alone %zu",
+                  update.rightWithMemory, update.objects, update.rightNamedOnly);
+    update.verdict = line;
+    return update;
+  }
+  std::vector<RememberedSize> entries;
+  for (const auto& c : cases) entries.push_back(c.object);
+  update.memory.emplace(std::move(entries), featureConfigHash, chosen.farFactor, neighbours, chosen.measures);
+  std::snprintf(line, sizeof line,
+                "units memory adopted: %zu objects, %s (left out by source %zu of %zu right, named "
+                "units alone %zu)",
+                update.objects, recallName(chosen).c_str(), update.rightWithMemory, update.objects,
+                update.rightNamedOnly);
+  update.verdict = line;
+  return update;
+}
+
+}  // namespace sagrid

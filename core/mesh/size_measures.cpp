@@ -1,0 +1,92 @@
+#include "core/mesh/size_measures.h"
+
+#include <cmath>
+#include <map>
+
+#include "core/common/error.h"
+#include "core/mesh/mesh.h"
+
+namespace sagrid {
+
+namespace {
+constexpr double kHorizontalCosine = 0.9;  // |normal . z| of a face taken as horizontal
+constexpr double kBaseShare = 0.1;         // faces this low (share of the height) are a base
+constexpr double kBinShare = 0.02;         // height bins, share of the height
+}  // namespace
+
+const char* sizeMeasureName(SizeMeasure measure) {
+  switch (measure) {
+    case SizeMeasure::Height: return "height";
+    case SizeMeasure::WorkSurface: return "work_surface";
+    case SizeMeasure::LargestExtent: break;
+  }
+  return "largest_extent";
+}
+
+SizeMeasure sizeMeasureNamed(const std::string& name) {
+  for (const SizeMeasure m : kSizeMeasures)
+    if (name == sizeMeasureName(m)) return m;
+  throw InvalidArgument("unknown size measure '" + name +
+                        "' (largest_extent, height or work_surface)");
+}
+
+const char* sizeMeasureWords(SizeMeasure measure) {
+  switch (measure) {
+    case SizeMeasure::Height: return "height";
+    case SizeMeasure::WorkSurface: return "work surface height";
+    case SizeMeasure::LargestExtent: break;
+  }
+  return "largest extent";
+}
+
+double SizeMeasures::operator[](SizeMeasure measure) const {
+  switch (measure) {
+    case SizeMeasure::Height: return height;
+    case SizeMeasure::WorkSurface: return workSurface;
+    case SizeMeasure::LargestExtent: break;
+  }
+  return largestExtent;
+}
+
+double& SizeMeasures::operator[](SizeMeasure measure) {
+  switch (measure) {
+    case SizeMeasure::Height: return height;
+    case SizeMeasure::WorkSurface: return workSurface;
+    case SizeMeasure::LargestExtent: break;
+  }
+  return largestExtent;
+}
+
+SizeMeasures measureSizes(const Mesh& mesh) {
+  SizeMeasures sizes;
+  if (mesh.positions.empty() || mesh.triangles.empty()) return sizes;
+  const auto box = mesh.bounds();
+  sizes.largestExtent = box.sizes().maxCoeff();
+  sizes.height = box.sizes().z();
+  if (!(sizes.height > 0)) return sizes;
+  const double bottom = box.min().z(), bin = kBinShare * sizes.height;
+  std::map<long, std::pair<double, double>> bins;  // bin -> (area, area-weighted height)
+  const int n = int(mesh.positions.size());
+  for (const auto& t : mesh.triangles) {
+    if (t.minCoeff() < 0 || t.maxCoeff() >= n) continue;
+    const Eigen::Vector3d a = mesh.positions[t[0]].cast<double>(), b = mesh.positions[t[1]].cast<double>(),
+                          c = mesh.positions[t[2]].cast<double>();
+    const Eigen::Vector3d cross = (b - a).cross(c - a);
+    const double twiceArea = cross.norm();
+    if (!(twiceArea > 0) || std::abs(cross.z()) < kHorizontalCosine * twiceArea) continue;
+    const double h = (a.z() + b.z() + c.z()) / 3.0 - bottom;
+    if (!(h >= kBaseShare * sizes.height)) continue;
+    auto& [area, weighted] = bins[long(std::floor(h / bin))];
+    area += 0.5 * twiceArea;
+    weighted += 0.5 * twiceArea * h;
+  }
+  double most = 0;
+  for (const auto& [index, value] : bins)
+    if (value.first > most) {
+      most = value.first;
+      sizes.workSurface = value.second / value.first;
+    }
+  return sizes;
+}
+
+}  // namespace sagrid
