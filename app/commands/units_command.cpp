@@ -25,13 +25,22 @@ namespace fs = std::filesystem;
 
 namespace {
 
+std::vector<std::string> defaultMeasureSetNames() {
+  std::vector<std::string> names;
+  for (const auto& set : sagrid::defaultMeasureSets()) {
+    std::string name;
+    for (const sagrid::SizeMeasure m : set) name += (name.empty() ? "" : ",") + std::string(sagrid::sizeMeasureName(m));
+    names.push_back(name);
+  }
+  return names;
+}
+
 struct MemoryOptions {
   std::vector<std::string> data;
   std::string models, out, cache, report, into;
-  std::vector<double> factors{1.5, 2, 3, 4, 5, 8};
+  std::vector<double> factors = sagrid::defaultFarFactors();
   // Each a set of measures (comma-separated) a memory may recall, the most agreed of them.
-  std::vector<std::string> measureSets{"largest_extent", "height", "work_surface",
-                                       "largest_extent,height,work_surface"};
+  std::vector<std::string> measureSets = defaultMeasureSetNames();
   int neighbours = 5;
 };
 

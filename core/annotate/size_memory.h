@@ -67,6 +67,7 @@ class SizeMemory {
   const std::string& featureConfigHash() const { return m_featureConfigHash; }
   double farFactor() const { return m_farFactor; }
   const std::vector<SizeMeasure>& measures() const { return m_measures; }
+  int neighbours() const { return m_neighbours; }
 
   nlohmann::json toJson() const;
   // Throws FileError naming `file` for another schema, missing or non-finite values, descriptors

@@ -25,6 +25,15 @@ std::string cell(std::size_t right, std::size_t of) {
 
 }  // namespace
 
+std::vector<std::vector<SizeMeasure>> defaultMeasureSets() {
+  return {{SizeMeasure::LargestExtent},
+          {SizeMeasure::Height},
+          {SizeMeasure::WorkSurface},
+          {SizeMeasure::LargestExtent, SizeMeasure::Height, SizeMeasure::WorkSurface}};
+}
+
+std::vector<double> defaultFarFactors() { return {1.5, 2, 3, 4, 5, 8}; }
+
 std::vector<MemoryRecall> recallCandidates(const std::vector<std::vector<SizeMeasure>>& measureSets,
                                            const std::vector<double>& factors) {
   std::vector<MemoryRecall> candidates;

@@ -30,6 +30,11 @@ struct MemoryRecall {
   double farFactor = std::numeric_limits<double>::infinity();
   bool namedUnitsOnly() const { return !(farFactor < std::numeric_limits<double>::infinity()); }
 };
+// What `sagrid units memory` and the GUI's Train panel judge unless told otherwise: each measure
+// alone and the most agreed of all three, at far factors 1.5, 2, 3, 4, 5 and 8.
+std::vector<std::vector<SizeMeasure>> defaultMeasureSets();
+std::vector<double> defaultFarFactors();
+
 // Each set of measures with each factor, then the named units alone (last).
 std::vector<MemoryRecall> recallCandidates(const std::vector<std::vector<SizeMeasure>>& measureSets,
                                            const std::vector<double>& factors);

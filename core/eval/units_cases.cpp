@@ -2,6 +2,7 @@
 
 #include <utility>
 
+#include "core/annotate/units_record.h"
 #include "core/dataset/dataset.h"
 #include "core/dataset/object_source.h"
 #include "core/labels/labels.h"
@@ -12,7 +13,8 @@ namespace sagrid {
 
 std::vector<UnitsCase> readUnitsCases(
     const std::vector<std::filesystem::path>& dataFolders, const FeatureOptions& options,
-    const std::function<void(std::size_t, std::size_t, const std::string&)>& progress) {
+    const std::function<void(std::size_t, std::size_t, const std::string&)>& progress,
+    std::size_t* unconfirmed) {
   std::vector<std::pair<DatasetEntry, std::string>> entries;
   for (const auto& folder : dataFolders)
     for (auto& entry : readDataset(folder)) entries.emplace_back(std::move(entry), folder.filename().string());
@@ -20,6 +22,11 @@ std::vector<UnitsCase> readUnitsCases(
   std::size_t done = 0;
   for (const auto& [entry, folderName] : entries) {
     const ObjectLabels labels = readLabels(entry.labels);
+    if (recordedUnitGuess(labels.object)) {
+      if (unconfirmed) ++*unconfirmed;
+      if (progress) progress(++done, entries.size(), entry.id);
+      continue;
+    }
     const std::optional<UpAxis> up = options.up ? options.up : declaredUpAxis(entry.mesh);
     const Mesh mesh = importMesh(entry.mesh, ImportOptions(up, /*detect=*/true));
     FeatureOptions framed = options;

@@ -14,10 +14,13 @@
 
 namespace sagrid {
 
-// `progress(done, total, id)` after each object. Throws FileError naming the object whose mesh
-// or labels cannot be read; a folder with no objects gives none.
+// `progress(done, total, id)` after each object. An object whose labels still hold an unconfirmed
+// units guess (core/annotate/units_record.h: nobody set or confirmed its units) is no curated size
+// and is left out, counted in `unconfirmed` where given. Throws FileError naming the object whose
+// mesh or labels cannot be read; a folder with no objects gives none.
 std::vector<UnitsCase> readUnitsCases(
     const std::vector<std::filesystem::path>& dataFolders, const FeatureOptions& options,
-    const std::function<void(std::size_t, std::size_t, const std::string&)>& progress = {});
+    const std::function<void(std::size_t, std::size_t, const std::string&)>& progress = {},
+    std::size_t* unconfirmed = nullptr);
 
 }  // namespace sagrid

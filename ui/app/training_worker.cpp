@@ -16,6 +16,8 @@
 #include "core/common/log.h"
 #include "core/dataset/labels_mesh.h"
 #include "core/eval/point_scorer_update.h"
+#include "core/eval/size_memory_update.h"
+#include "core/eval/units_cases.h"
 #include "core/labels/labels.h"
 #include "core/training/dataset_training.h"
 
@@ -79,6 +81,7 @@ void TrainingWorker::run(TrainingRequest request) {
   try {
     if (request.categoryClassifier) runCategoryClassifier(request);
     else if (request.pointScorer) runPointScorer(request);
+    else if (request.unitsMemory) runUnitsMemory(request);
     else runPointModels(request);
     std::lock_guard<std::mutex> lock(m_mutex);
     m_finishedFlag = true;
@@ -150,6 +153,48 @@ void TrainingWorker::runCategoryClassifier(const TrainingRequest& request) {
                                   : " (" + std::to_string(missing.size()) +
                                         " of its training folders are not on this machine)") +
                  (adopted ? "; adopted" : "; refused: " + file.string()) + requeued;
+  });
+}
+
+void TrainingWorker::runUnitsMemory(const TrainingRequest& request) {
+  const fs::path from = request.initDir.empty() ? request.outDir : request.initDir;
+  const ModelSet models = ModelSet::load(from);
+  const std::optional<SizeMemory> earlier = readSizeMemory(from);
+  std::size_t unconfirmed = 0;
+  const std::vector<UnitsCase> curated = readUnitsCases(
+      {request.dataset}, models.featureOptions(),
+      [&](std::size_t done, std::size_t total, const std::string& id) {
+        if (m_cancel) throw Cancelled();
+        update([&](TrainingStatus& s) {
+          s.phase = "units: " + std::to_string(done) + "/" + std::to_string(total) + " " + id;
+          s.fraction = total ? 0.8f * float(done) / float(total) : 0.0f;
+        });
+      },
+      &unconfirmed);
+  update([&](TrainingStatus& s) {
+    s.phase = "guard: the units guess left out by source";
+    s.fraction = 0.9f;
+  });
+  const SizeMemoryUpdate grown = updateSizeMemory(
+      earlier ? &*earlier : nullptr, curated,
+      recallCandidates(defaultMeasureSets(), defaultFarFactors()),
+      models.featureConfigHash(), earlier ? earlier->neighbours() : 5);
+  const fs::path dir = grown.memory ? request.outDir : request.outDir / "refused";
+  fs::create_directories(dir);
+  if (grown.memory) writeSizeMemory(*grown.memory, dir);
+  writeFileAtomic(dir / "units_memory.md", unitsLosoMarkdown(grown.report));
+  logger()->info("{}; report {}", grown.verdict, (dir / "units_memory.md").string());
+  completeModelsFolder(from, request.outDir);
+  update([&](TrainingStatus& s) {
+    s.fraction = 1.0f;
+    s.phase = "done";
+    s.verdicts.push_back(grown.verdict);
+    s.finished = "units memory grown with " + std::to_string(curated.size()) + " object(s) of " +
+                 request.dataset.string() +
+                 (unconfirmed ? " (" + std::to_string(unconfirmed) +
+                                    " left out: their units are a guess nobody confirmed)"
+                              : std::string()) +
+                 (grown.memory ? "; adopted" : "; refused: " + (dir / "units_memory.md").string());
   });
 }
 

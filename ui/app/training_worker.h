@@ -42,6 +42,11 @@ struct TrainingRequest {
   // scorer goes to outDir/refused/ where any model's new decision was not taken.
   bool pointScorer = false;
   std::filesystem::path generated;  // empty: the bench's val split (generated when missing)
+  // Instead of point models: grow the units memory of initDir (else outDir; none there: a new one)
+  // with the training set's objects and their curated units (core/eval/size_memory_update.h),
+  // guarded leaving each source out against the named units; written to outDir when adopted,
+  // else to outDir/refused/.
+  bool unitsMemory = false;
 };
 
 struct TrainingStatus {
@@ -78,6 +83,7 @@ class TrainingWorker {
   void runPointModels(const TrainingRequest& request);
   void runCategoryClassifier(const TrainingRequest& request);
   void runPointScorer(const TrainingRequest& request);
+  void runUnitsMemory(const TrainingRequest& request);
   // After an adopted update: the queue's unreviewed objects predicted again with the models in
   // request.outDir; the summary's clause.
   std::string predictQueueAgainClause(const TrainingRequest& request);

@@ -75,6 +75,11 @@ void drawTrainPanel(Session& session, TrainingWorker& worker,
                   "again from the training set's curated points and generated objects (the "
                   "bench's val split, made once); with a held-out folder, each model's is kept "
                   "only where it needs fewer edits on that model's held-out objects");
+    // The units the curator set or confirmed teach the units guess's memory of real sizes.
+    retrainButton("Grow units memory", &TrainingRequest::unitsMemory,
+                  "The real sizes of the training set's objects (their curated units) join the "
+                  "units guess's memory of curated objects; kept only where, each source left "
+                  "out, it guesses more units right than the named units alone");
   } else {
     ImGui::ProgressBar(status.fraction, ImVec2(-70, 0));
     ImGui::SameLine();
