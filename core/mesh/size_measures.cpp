@@ -14,14 +14,22 @@ constexpr double kBaseShare = 0.1;         // faces this low (share of the heigh
 constexpr double kBinShare = 0.02;         // height bins, share of the height
 }  // namespace
 
-const char* sizeMeasureName(SizeMeasure measure) {
-  switch (measure) {
-    case SizeMeasure::Height: return "height";
-    case SizeMeasure::WorkSurface: return "work_surface";
-    case SizeMeasure::LargestExtent: break;
-  }
-  return "largest_extent";
-}
+namespace {
+// Each measure's file name, words and member, in kSizeMeasures order.
+struct MeasureEntry {
+  const char* name;
+  const char* words;
+  double SizeMeasures::*member;
+};
+constexpr MeasureEntry kEntries[] = {
+    {"largest_extent", "largest extent", &SizeMeasures::largestExtent},
+    {"height", "height", &SizeMeasures::height},
+    {"work_surface", "work surface height", &SizeMeasures::workSurface},
+};
+const MeasureEntry& entry(SizeMeasure measure) { return kEntries[int(measure)]; }
+}  // namespace
+
+const char* sizeMeasureName(SizeMeasure measure) { return entry(measure).name; }
 
 SizeMeasure sizeMeasureNamed(const std::string& name) {
   for (const SizeMeasure m : kSizeMeasures)
@@ -30,32 +38,11 @@ SizeMeasure sizeMeasureNamed(const std::string& name) {
                         "' (largest_extent, height or work_surface)");
 }
 
-const char* sizeMeasureWords(SizeMeasure measure) {
-  switch (measure) {
-    case SizeMeasure::Height: return "height";
-    case SizeMeasure::WorkSurface: return "work surface height";
-    case SizeMeasure::LargestExtent: break;
-  }
-  return "largest extent";
-}
+const char* sizeMeasureWords(SizeMeasure measure) { return entry(measure).words; }
 
-double SizeMeasures::operator[](SizeMeasure measure) const {
-  switch (measure) {
-    case SizeMeasure::Height: return height;
-    case SizeMeasure::WorkSurface: return workSurface;
-    case SizeMeasure::LargestExtent: break;
-  }
-  return largestExtent;
-}
+double SizeMeasures::operator[](SizeMeasure measure) const { return this->*entry(measure).member; }
 
-double& SizeMeasures::operator[](SizeMeasure measure) {
-  switch (measure) {
-    case SizeMeasure::Height: return height;
-    case SizeMeasure::WorkSurface: return workSurface;
-    case SizeMeasure::LargestExtent: break;
-  }
-  return largestExtent;
-}
+double& SizeMeasures::operator[](SizeMeasure measure) { return this->*entry(measure).member; }
 
 SizeMeasures measureSizes(const Mesh& mesh) {
   SizeMeasures sizes;
