@@ -1,6 +1,7 @@
 // `sagrid gui [PATHS...]` (the annotation GUI) and `sagrid render MESH --screenshot out.png`
 // (the same frame, headless). Parsing only; the work is in ui/app.
 #include <CLI/CLI.hpp>
+#include <map>
 
 #include "app/command_registry.h"
 #include "core/mesh/import_time_limit.h"
@@ -93,6 +94,16 @@ void setupRender(CLI::App& root) {
                   "Draw every toggle button's control turned by this many radians (buttons "
                   "pressed), as the exports move them and View > Controls turned (T) shows")
       ->check(CLI::Range(-6.3, 6.3));
+  cmd->add_option("--surface", o->render.surface,
+                  "How the mesh is coloured: modelled, plain (View > Plain grey, G), material "
+                  "(a colour per material, M) or contrast (each texture's contrast stretched, B)")
+      ->transform(CLI::CheckedTransformer(
+          std::map<std::string, sagrid::ui::SurfaceColouring>{
+              {"modelled", sagrid::ui::SurfaceColouring::Modelled},
+              {"plain", sagrid::ui::SurfaceColouring::PlainGrey},
+              {"material", sagrid::ui::SurfaceColouring::ByMaterial},
+              {"contrast", sagrid::ui::SurfaceColouring::TextureContrast}},
+          CLI::ignore_case));
   cmd->add_option("--models", o->models,
                   "Run SAGrid with the models in this folder first (predicted points and field)");
   auto* yaw = cmd->add_option("--yaw", o->yaw, "Camera azimuth in degrees about +z");

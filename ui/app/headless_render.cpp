@@ -58,6 +58,7 @@ void renderScreenshot(const RenderOptions& options) {
   view.showPanels = options.showPanels;
   view.wireframe = options.wireframe;
   view.controlTurn = options.controlTurn;
+  view.surface = options.surface;
   // Two frames let ImGui settle its window sizes (auto-fit happens on the second frame).
   app.frame({});
   app.frame({});

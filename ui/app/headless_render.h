@@ -7,6 +7,7 @@
 #include <string>
 
 #include "ui/gl/gl_context.h"
+#include "ui/render/view_settings.h"
 
 namespace sagrid::ui {
 
@@ -27,6 +28,7 @@ struct RenderOptions {
   // Every toggle button's control moved as the exports move it, knobs and levers by this many
   // radians (View > Controls turned in the GUI); 0: as modelled.
   float controlTurn = 0.0f;
+  SurfaceColouring surface = SurfaceColouring::Modelled;  // View > Plain grey / by material / texture contrast
 };
 
 // Throws sagrid::Error when the context, the mesh or the output cannot be used.

@@ -29,6 +29,7 @@ const std::vector<ShortcutHelp>& shortcutHelp() {
       {"W", "wireframe"},
       {"G", "plain grey: the mesh without its colours (a black model's shape)"},
       {"M", "a colour per material: parts that differ only by material (dark keys on dark glass) stand out"},
+      {"B", "texture contrast: marks printed faintly in a texture (a ceramic hob's keys) stand out"},
       {"T", "controls turned as the exports turn them (a knob's part seen moving) / as modelled"},
       {"V", "distance field on/off"},
       {"Ctrl+Z", "undo"},
@@ -119,12 +120,13 @@ bool handleShortcuts(const std::vector<InputEvent>& events, Session& session,
         session.viewFrom(Session::ViewSide::Right);
         break;
       case GLFW_KEY_G:
-        session.view().plainShading = !session.view().plainShading;
-        if (session.view().plainShading) session.view().materialColours = false;
+        toggleSurfaceColouring(session.view().surface, SurfaceColouring::PlainGrey);
         break;
       case GLFW_KEY_M:
-        session.view().materialColours = !session.view().materialColours;
-        if (session.view().materialColours) session.view().plainShading = false;
+        toggleSurfaceColouring(session.view().surface, SurfaceColouring::ByMaterial);
+        break;
+      case GLFW_KEY_B:
+        toggleSurfaceColouring(session.view().surface, SurfaceColouring::TextureContrast);
         break;
       case GLFW_KEY_T:
         session.view().controlTurn = session.view().controlTurn != 0.0f ? 0.0f : kPreviewTurn;

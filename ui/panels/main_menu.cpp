@@ -1,5 +1,7 @@
 #include <imgui.h>
 
+#include <tuple>
+
 #include "ui/app/session.h"
 #include "ui/panels/file_browser.h"
 #include "ui/panels/panels.h"
@@ -49,9 +51,11 @@ bool drawMainMenu(Session& session, FileBrowser& browser) {
     ViewSettings& v = session.view();
     ImGui::MenuItem("Mesh", nullptr, &v.showMesh);
     ImGui::MenuItem("Wireframe", "W", &v.wireframe);
-    if (ImGui::MenuItem("Plain grey", "G", &v.plainShading) && v.plainShading) v.materialColours = false;
-    if (ImGui::MenuItem("Colour by material", "M", &v.materialColours) && v.materialColours)
-      v.plainShading = false;
+    for (const auto& [name, key, colouring] :
+         {std::tuple{"Plain grey", "G", SurfaceColouring::PlainGrey},
+          std::tuple{"Colour by material", "M", SurfaceColouring::ByMaterial},
+          std::tuple{"Texture contrast", "B", SurfaceColouring::TextureContrast}})
+      if (ImGui::MenuItem(name, key, v.surface == colouring)) toggleSurfaceColouring(v.surface, colouring);
     if (ImGui::MenuItem("From above", "Keypad 7")) session.viewFrom(Session::ViewSide::Top);
     if (ImGui::MenuItem("From the front", "Keypad 1")) session.viewFrom(Session::ViewSide::Front);
     if (ImGui::MenuItem("From the right", "Keypad 3")) session.viewFrom(Session::ViewSide::Right);

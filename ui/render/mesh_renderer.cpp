@@ -43,6 +43,7 @@ MeshRenderer::MeshRenderer() : m_program("mesh.vert", "mesh.frag") {
   m_uFlatColor = m_program.uniform("uFlatColor");
   m_uAlpha = m_program.uniform("uAlpha");
   m_uPlain = m_program.uniform("uPlain");
+  m_uContrast = m_program.uniform("uContrast");
 }
 
 void MeshRenderer::upload(const Mesh& mesh) {
@@ -114,7 +115,9 @@ void MeshRenderer::upload(const Mesh& mesh) {
   m_indexCount = static_cast<GLsizei>(indices.size());
 
   m_textures.clear();
+  m_textureRanges.clear();
   for (const auto& texture : mesh.textures) {
+    m_textureRanges.push_back(luminanceRange(texture));
     GlTexture t = makeTexture();
     glBindTexture(GL_TEXTURE_2D, t.id());
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
@@ -131,7 +134,7 @@ void MeshRenderer::upload(const Mesh& mesh) {
   }
 }
 
-void MeshRenderer::draw(const Camera& camera, bool wireframe, Colouring colouring) const {
+void MeshRenderer::draw(const Camera& camera, bool wireframe, SurfaceColouring colouring) const {
   if (!m_indexCount) return;
   m_program.use();
   setUniform(m_uViewProj, camera.viewProjection());
@@ -139,15 +142,18 @@ void MeshRenderer::draw(const Camera& camera, bool wireframe, Colouring colourin
   setUniform(m_uTexture, 0);
   setUniform(m_uAlpha, 1.0f);
   setUniform(m_uFlatColor, 0);
-  setUniform(m_uPlain, colouring == Colouring::Plain ? 1 : colouring == Colouring::ByMaterial ? 2 : 0);
+  // mesh.frag's uPlain: 0 as modelled, 1 plain grey, 2 by material, 3 texture contrast.
+  setUniform(m_uPlain, int(colouring));
   glBindVertexArray(m_vao.id());
   glEnable(GL_POLYGON_OFFSET_FILL);
   glPolygonOffset(1.0f, 1.0f);  // keeps the wireframe overlay and markers on top
   for (const Range& r : m_ranges) {
     const bool textured = r.texture >= 0 && r.texture < static_cast<int>(m_textures.size());
-    setUniform(m_uBaseColor, colouring == Colouring::ByMaterial ? materialColour(r.material) : r.baseColor);
+    setUniform(m_uBaseColor, colouring == SurfaceColouring::ByMaterial ? materialColour(r.material) : r.baseColor);
     setUniform(m_uHasTexture, textured ? 1 : 0);
     if (textured) {
+      const LuminanceRange& range = m_textureRanges[std::size_t(r.texture)];
+      setUniform(m_uContrast, Eigen::Vector2f(range.low, range.high));
       glActiveTexture(GL_TEXTURE0);
       glBindTexture(GL_TEXTURE_2D, m_textures[std::size_t(r.texture)].id());
     }

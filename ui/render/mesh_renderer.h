@@ -7,6 +7,8 @@
 #include "ui/gl/gl_objects.h"
 #include "ui/render/camera.h"
 #include "ui/render/shader_program.h"
+#include "ui/render/texture_contrast.h"
+#include "ui/render/view_settings.h"
 
 namespace sagrid {
 struct Mesh;
@@ -20,12 +22,8 @@ class MeshRenderer {
   void upload(const Mesh& mesh);
   bool hasMesh() const { return m_indexCount > 0; }
   GLsizei indexCount() const { return m_indexCount; }  // three per uploaded triangle
-  enum class Colouring {
-    Modelled,    // materials, textures and vertex colours
-    Plain,       // one light grey (ViewSettings::plainShading)
-    ByMaterial,  // each material in a colour of its own (ViewSettings::materialColours)
-  };
-  void draw(const Camera& camera, bool wireframe, Colouring colouring = Colouring::Modelled) const;
+  void draw(const Camera& camera, bool wireframe,
+            SurfaceColouring colouring = SurfaceColouring::Modelled) const;
 
  private:
   struct Range {
@@ -35,10 +33,12 @@ class MeshRenderer {
     int material = -1;
   };
   ShaderProgram m_program;
-  GLint m_uViewProj, m_uEye, m_uBaseColor, m_uHasTexture, m_uTexture, m_uFlatColor, m_uPlain, m_uAlpha;
+  GLint m_uViewProj, m_uEye, m_uBaseColor, m_uHasTexture, m_uTexture, m_uFlatColor, m_uPlain, m_uAlpha,
+      m_uContrast;
   GlVertexArray m_vao;
   GlBuffer m_vertices, m_indices;
   std::vector<GlTexture> m_textures;
+  std::vector<LuminanceRange> m_textureRanges;  // per texture, for SurfaceColouring::TextureContrast
   std::vector<Range> m_ranges;
   GLsizei m_indexCount = 0;
 };

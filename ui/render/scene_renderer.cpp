@@ -84,10 +84,7 @@ void SceneRenderer::draw(const Camera& camera, const ViewSettings& settings) con
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
   if (settings.showMesh)
-    m_mesh.draw(camera, settings.wireframe,
-                settings.materialColours ? MeshRenderer::Colouring::ByMaterial
-                : settings.plainShading  ? MeshRenderer::Colouring::Plain
-                                         : MeshRenderer::Colouring::Modelled);
+    m_mesh.draw(camera, settings.wireframe, settings.surface);
   m_field.draw(camera, settings.field);
   m_grid.draw(camera, settings.showGrid, settings.showAxes);
   if (settings.showPoints) m_markers.draw(camera);

@@ -33,6 +33,7 @@ class ShaderProgram {
 inline void setUniform(GLint loc, const Eigen::Matrix4f& m) {
   glUniformMatrix4fv(loc, 1, GL_FALSE, m.data());
 }
+inline void setUniform(GLint loc, const Eigen::Vector2f& v) { glUniform2f(loc, v.x(), v.y()); }
 inline void setUniform(GLint loc, const Eigen::Vector3f& v) {
   glUniform3f(loc, v.x(), v.y(), v.z());
 }

@@ -20,16 +20,30 @@ struct FieldSettings {
 // exports' tests turn 0.6.
 inline constexpr float kPreviewTurn = 0.6f;
 
+// How the mesh's surface is coloured: one view at a time (G, M and B each toggle theirs).
+enum class SurfaceColouring {
+  Modelled,    // materials, textures and vertex colours, lit
+  // One light grey, without textures, materials or vertex colours: the shape of a model whose
+  // materials are black (its wireframe shows on it too).
+  PlainGrey,
+  // Each material in a colour of its own, without textures or vertex colours: parts that differ
+  // from their surroundings only by material (touch keys of their own material on a black glass
+  // top, a knob of another plastic) stand out; marks only in a texture do not.
+  ByMaterial,
+  // Each texture nearly unlit with its own luminance range stretched (texture_contrast.h): marks
+  // printed faintly in a texture (a ceramic hob's touch keys) stand out.
+  TextureContrast,
+};
+
+// `colouring`, or back to as modelled where it is the one shown (what its key or menu item does).
+inline void toggleSurfaceColouring(SurfaceColouring& shown, SurfaceColouring colouring) {
+  shown = shown == colouring ? SurfaceColouring::Modelled : colouring;
+}
+
 struct ViewSettings {
   bool showMesh = true;
   bool wireframe = false;
-  // The mesh in one light grey, without its textures, materials or vertex colours: the shape of a
-  // model whose materials are black (its wireframe shows on it too).
-  bool plainShading = false;
-  // Each material in a colour of its own, without textures or vertex colours: parts that differ
-  // from their surroundings only by material (touch keys of their own material on a black glass
-  // top, a knob of another plastic) stand out; marks only in a texture do not. Plain grey and this are exclusive (G, M).
-  bool materialColours = false;
+  SurfaceColouring surface = SurfaceColouring::Modelled;
   bool showGrid = true;
   bool showAxes = true;
   bool showPoints = true;

@@ -1,6 +1,8 @@
 // G (View > Plain grey) draws a model whose materials are black in one light grey, so its shape
 // shows (seen curating the wild pool in the window: an electric stove rendered black, wireframe
-// included, and its points were accepted unseen).
+// included, and its points were accepted unseen); M a colour per material; B stretches each
+// texture's own contrast, so marks printed faintly in it show (a ceramic hob's touch keys, grey on
+// black glass, that neither of the others shows).
 #include <gtest/gtest.h>
 
 #include <fstream>
@@ -48,7 +50,7 @@ TEST(RenderPlainShading, GShowsTheShapeOfABlackModel) {
                     "usemtl black\nv -0.5 -0.5 0\nv 0.5 -0.5 0\nv 0.5 0.5 0\nv -0.5 0.5 0\nf 1 2 3\nf 1 3 4\n");
   const double black = middleBrightness(s.app->capture());
   s.key(GLFW_KEY_G);
-  EXPECT_TRUE(s.app->session().view().plainShading);
+  EXPECT_EQ(s.app->session().view().surface, SurfaceColouring::PlainGrey);
   s.frame({});
   const double plain = middleBrightness(s.app->capture());
   EXPECT_GT(plain, black + 60.0) << "black " << black << ", plain " << plain;
@@ -78,13 +80,47 @@ TEST(RenderPlainShading, MShowsPartsThatDifferOnlyByMaterial) {
   };
   const double modelled = halvesApart();
   s.key(GLFW_KEY_M);
-  EXPECT_TRUE(s.app->session().view().materialColours);
+  EXPECT_EQ(s.app->session().view().surface, SurfaceColouring::ByMaterial);
   s.frame({});
   const double byMaterial = halvesApart();
   EXPECT_GT(byMaterial, modelled + 60.0) << "modelled " << modelled << ", by material " << byMaterial;
   s.key(GLFW_KEY_G);
-  EXPECT_TRUE(s.app->session().view().plainShading);
-  EXPECT_FALSE(s.app->session().view().materialColours);
+  EXPECT_EQ(s.app->session().view().surface, SurfaceColouring::PlainGrey);
+  s.key(GLFW_KEY_G);
+  EXPECT_EQ(s.app->session().view().surface, SurfaceColouring::Modelled);
+}
+
+TEST(RenderPlainShading, BShowsMarksPrintedFaintlyInATexture) {
+  // A black glass texture whose right half holds a printed mark 12 levels brighter (out of 255),
+  // on one material: alike as modelled, by material and in plain grey; far apart with B.
+  const fs::path dir = sagrid::test::freshTempDir();
+  fs::create_directories(dir / "hob");
+  RgbaImage glass;
+  glass.width = glass.height = 32;
+  glass.pixels.assign(32 * 32 * 4, 255);
+  for (int y = 0; y < 32; ++y)
+    for (int x = 0; x < 32; ++x)
+      for (int c = 0; c < 3; ++c) glass.at(x, y)[c] = x < 16 ? 8 : 20;
+  writePng(dir / "hob" / "glass.png", glass);
+  test::ScriptedApp s(dir);
+  openFlatFromAbove(s, dir, "hob", "newmtl glass\nKd 1 1 1\nmap_Kd glass.png\n",
+                    "v -0.5 -0.5 0\nv 0.5 -0.5 0\nv 0.5 0.5 0\nv -0.5 0.5 0\n"
+                    "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\nusemtl glass\nf 1/1 2/2 3/3\nf 1/1 3/3 4/4\n");
+  auto halvesApart = [&] {
+    s.frame({});
+    const RgbaImage image = s.app->capture();
+    return (bandColour(image, 0.30, 0.45) - bandColour(image, 0.55, 0.70)).norm();
+  };
+  const double modelled = halvesApart();
+  s.key(GLFW_KEY_B);
+  EXPECT_EQ(s.app->session().view().surface, SurfaceColouring::TextureContrast);
+  const double contrast = halvesApart();
+  EXPECT_GT(contrast, modelled + 150.0) << "modelled " << modelled << ", texture contrast " << contrast;
+  // The other views do not show it (their halves differ by the light's fall across the plate).
+  s.key(GLFW_KEY_M);
+  EXPECT_LT(halvesApart(), contrast / 4);
+  s.key(GLFW_KEY_G);
+  EXPECT_LT(halvesApart(), contrast / 4);
 }
 
 }  // namespace
