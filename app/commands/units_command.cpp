@@ -41,7 +41,7 @@ struct MemoryOptions {
   std::vector<double> factors = sagrid::defaultFarFactors();
   // Each a set of measures (comma-separated) a memory may recall, the most agreed of them.
   std::vector<std::string> measureSets = defaultMeasureSetNames();
-  int neighbours = 5;
+  std::vector<int> neighbours = sagrid::defaultNeighbourCounts();
 };
 
 std::vector<std::vector<sagrid::SizeMeasure>> parseMeasureSets(const std::vector<std::string>& sets) {
@@ -87,7 +87,8 @@ void setupUnits(CLI::App& root) {
                      "repeatable)")
       ->capture_default_str();
   memory->add_option("--neighbours", o->neighbours,
-                     "How many curated objects of the category the memory recalls (median size)")
+                     "Candidate numbers of curated objects of the category the memory recalls "
+                     "(their median size), each judged leaving sources out (repeatable)")
       ->check(CLI::Range(1, 1000))
       ->capture_default_str();
   memory->callback([o] {
@@ -117,8 +118,8 @@ void setupUnits(CLI::App& root) {
           if (done == total) bar.reset();
         });
     const auto update = sagrid::updateSizeMemory(grown ? &*grown : nullptr, curated,
-                                                 sagrid::recallCandidates(measureSets, o->factors),
-                                                 hash, o->neighbours);
+                                                 sagrid::recallCandidates(measureSets, o->neighbours, o->factors),
+                                                 hash);
     const std::string md = sagrid::unitsLosoMarkdown(update.report);
     std::cout << md;
     if (!o->report.empty()) {

@@ -32,13 +32,17 @@ std::vector<std::vector<SizeMeasure>> defaultMeasureSets() {
           {SizeMeasure::LargestExtent, SizeMeasure::Height, SizeMeasure::WorkSurface}};
 }
 
+std::vector<int> defaultNeighbourCounts() { return {1, 3, 5, 9}; }
+
 std::vector<double> defaultFarFactors() { return {1.5, 2, 3, 4, 5, 8}; }
 
 std::vector<MemoryRecall> recallCandidates(const std::vector<std::vector<SizeMeasure>>& measureSets,
+                                           const std::vector<int>& neighbourCounts,
                                            const std::vector<double>& factors) {
   std::vector<MemoryRecall> candidates;
   for (const auto& measures : measureSets)
-    for (const double factor : factors) candidates.push_back({measures, factor});
+    for (const int k : neighbourCounts)
+      for (const double factor : factors) candidates.push_back({measures, factor, k});
   candidates.push_back({});
   return candidates;
 }
@@ -48,9 +52,9 @@ std::string recallName(const MemoryRecall& recall) {
   std::string name = recall.measures.size() > 1 ? "memory (most agreed of " : "memory (";
   for (std::size_t i = 0; i < recall.measures.size(); ++i)
     name += (i ? ", " : "") + std::string(sizeMeasureWords(recall.measures[i]));
-  char factor[40];
-  std::snprintf(factor, sizeof factor, "), far factor %.3g", recall.farFactor);
-  return name + factor;
+  char rest[60];
+  std::snprintf(rest, sizeof rest, ", %d nearest), far factor %.3g", recall.neighbours, recall.farFactor);
+  return name + rest;
 }
 
 std::vector<UnitsCase> casesOfMemory(const SizeMemory& memory) {
@@ -73,8 +77,7 @@ std::vector<UnitsCase> mergeCases(std::vector<UnitsCase> earlier, const std::vec
 
 UnitsLosoReport evaluateSizeMemory(const std::vector<UnitsCase>& cases,
                                    const std::vector<MemoryRecall>& candidates,
-                                   const std::string& featureConfigHash, int neighbours,
-                                   double tolerance) {
+                                   const std::string& featureConfigHash, double tolerance) {
   UnitsLosoReport report;
   report.candidates = candidates;
   report.tolerance = tolerance;
@@ -85,12 +88,15 @@ UnitsLosoReport evaluateSizeMemory(const std::vector<UnitsCase>& cases,
     groups.insert(c.group);
   }
   report.groups.assign(groups.begin(), groups.end());
-  // One memory per set of measures the candidates recall.
-  std::map<std::vector<SizeMeasure>, SizeMemory> memories;
-  for (const auto& candidate : candidates)
-    if (!candidate.namedUnitsOnly() && !memories.count(candidate.measures))
-      memories.emplace(candidate.measures,
-                       SizeMemory(entries, featureConfigHash, 1.0, neighbours, candidate.measures));
+  // One memory per set of measures and number of objects recalled.
+  using MemoryKey = std::pair<std::vector<SizeMeasure>, int>;
+  std::map<MemoryKey, SizeMemory> memories;
+  for (const auto& candidate : candidates) {
+    const MemoryKey key{candidate.measures, candidate.neighbours};
+    if (!candidate.namedUnitsOnly() && !memories.count(key))
+      memories.emplace(key, SizeMemory(entries, featureConfigHash, 1.0, candidate.neighbours,
+                                       candidate.measures));
+  }
   auto groupIndex = [&](const std::string& g) {
     return std::size_t(std::find(report.groups.begin(), report.groups.end(), g) - report.groups.begin());
   };
@@ -104,14 +110,14 @@ UnitsLosoReport evaluateSizeMemory(const std::vector<UnitsCase>& cases,
     const UnitGuess named = guessMetersPerUnit(c.object.units.largestExtent, c.object.category);
     const bool notMetres = scaleRatio(c.object.metersPerUnit, 1.0) > tolerance;
     // Recalled once per memory, judged with every factor.
-    std::map<std::vector<SizeMeasure>, std::optional<ExpectedSize>> expected;
-    for (const auto& [measures, memory] : memories)
-      expected[measures] = memory.expectedSize(c.object.descriptor, c.object.category, c.object.units,
-                                               c.object.source);
+    std::map<MemoryKey, std::optional<ExpectedSize>> expected;
+    for (const auto& [key, memory] : memories)
+      expected[key] = memory.expectedSize(c.object.descriptor, c.object.category, c.object.units,
+                                          c.object.source);
     for (std::size_t k = 0; k < n; ++k) {
       const MemoryRecall& recall = candidates[k];
       const std::optional<ExpectedSize> e =
-          recall.namedUnitsOnly() ? std::nullopt : expected.at(recall.measures);
+          recall.namedUnitsOnly() ? std::nullopt : expected.at({recall.measures, recall.neighbours});
       const UnitGuess guess =
           e ? unlessFarFromExpectedSize(named, c.object.units[e->measure], e->meters, recall.farFactor)
             : named;

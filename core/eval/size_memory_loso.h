@@ -23,23 +23,28 @@ struct UnitsScore {
   std::size_t objects = 0, right = 0, notMetres = 0, notMetresRight = 0;
 };
 
-// One way of recalling sizes: the measures a memory may recall and its far factor (infinity: no
-// memory, the named units alone).
+// One way of recalling sizes: the measures a memory may recall, how many curated objects it
+// recalls, and its far factor (infinity: no memory, the named units alone).
 struct MemoryRecall {
   std::vector<SizeMeasure> measures;
   double farFactor = std::numeric_limits<double>::infinity();
+  int neighbours = 5;
   bool namedUnitsOnly() const { return !(farFactor < std::numeric_limits<double>::infinity()); }
 };
 // What `sagrid units memory` and the GUI's Train panel judge unless told otherwise: each measure
-// alone and the most agreed of all three, at far factors 1.5, 2, 3, 4, 5 and 8.
+// alone and the most agreed of all three, recalling 1, 3, 5 or 9 objects, at far factors 1.5, 2,
+// 3, 4, 5 and 8.
 std::vector<std::vector<SizeMeasure>> defaultMeasureSets();
+std::vector<int> defaultNeighbourCounts();
 std::vector<double> defaultFarFactors();
 
-// Each set of measures with each factor, then the named units alone (last).
+// Each set of measures with each number of objects recalled and each factor, then the named units
+// alone (last).
 std::vector<MemoryRecall> recallCandidates(const std::vector<std::vector<SizeMeasure>>& measureSets,
+                                           const std::vector<int>& neighbourCounts,
                                            const std::vector<double>& factors);
-// "memory (largest extent), far factor 4", "memory (most agreed of largest extent, height),
-// ...", "named units only (no memory)".
+// "memory (largest extent, 5 nearest), far factor 4", "memory (most agreed of largest extent,
+// height, 5 nearest), ...", "named units only (no memory)".
 std::string recallName(const MemoryRecall& recall);
 
 struct UnitsLosoReport {
@@ -61,13 +66,11 @@ std::vector<UnitsCase> casesOfMemory(const SizeMemory& memory);
 std::vector<UnitsCase> mergeCases(std::vector<UnitsCase> earlier, const std::vector<UnitsCase>& more);
 
 // Right: the guess within `tolerance` of the curated units; not in metres: the curated units
-// more than `tolerance` from 1. `neighbours`: how many curated objects the memory recalls. For
-// each source, the candidate with the most right on the other sources (ties: the larger factor,
-// then the earlier candidate).
+// more than `tolerance` from 1. For each source, the candidate with the most right on the other
+// sources (ties: the larger factor, then the earlier candidate).
 UnitsLosoReport evaluateSizeMemory(const std::vector<UnitsCase>& cases,
                                    const std::vector<MemoryRecall>& candidates,
-                                   const std::string& featureConfigHash, int neighbours = 5,
-                                   double tolerance = 1.5);
+                                   const std::string& featureConfigHash, double tolerance = 1.5);
 
 std::string unitsLosoMarkdown(const UnitsLosoReport& report);
 

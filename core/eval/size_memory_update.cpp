@@ -8,13 +8,13 @@ namespace sagrid {
 
 SizeMemoryUpdate updateSizeMemory(const SizeMemory* earlier, const std::vector<UnitsCase>& curated,
                                   const std::vector<MemoryRecall>& candidates,
-                                  const std::string& featureConfigHash, int neighbours) {
+                                  const std::string& featureConfigHash) {
   if (earlier && earlier->featureConfigHash() != featureConfigHash)
     throw InvalidArgument("the units memory was built with other features than the models'");
   const auto cases = mergeCases(earlier ? casesOfMemory(*earlier) : std::vector<UnitsCase>{}, curated);
   if (cases.empty()) throw InvalidArgument("units memory: no curated objects to remember");
   SizeMemoryUpdate update;
-  update.report = evaluateSizeMemory(cases, candidates, featureConfigHash, neighbours);
+  update.report = evaluateSizeMemory(cases, candidates, featureConfigHash);
   update.objects = cases.size();
   update.rightWithMemory = update.report.chosenLeavingSourceOut.back().right;
   update.rightNamedOnly = update.report.byCandidate.back().back().right;
@@ -30,7 +30,8 @@ SizeMemoryUpdate updateSizeMemory(const SizeMemory* earlier, const std::vector<U
   }
   std::vector<RememberedSize> entries;
   for (const auto& c : cases) entries.push_back(c.object);
-  update.memory.emplace(std::move(entries), featureConfigHash, chosen.farFactor, neighbours, chosen.measures);
+  update.memory.emplace(std::move(entries), featureConfigHash, chosen.farFactor, chosen.neighbours,
+                        chosen.measures);
   std::snprintf(line, sizeof line,
                 "units memory adopted: %zu objects, %s (left out by source %zu of %zu right, named "
                 "units alone %zu)",

@@ -27,6 +27,6 @@ struct SizeMemoryUpdate {
 // `featureConfigHash`.
 SizeMemoryUpdate updateSizeMemory(const SizeMemory* earlier, const std::vector<UnitsCase>& curated,
                                   const std::vector<MemoryRecall>& candidates,
-                                  const std::string& featureConfigHash, int neighbours = 5);
+                                  const std::string& featureConfigHash);
 
 }  // namespace sagrid

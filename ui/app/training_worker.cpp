@@ -177,8 +177,8 @@ void TrainingWorker::runUnitsMemory(const TrainingRequest& request) {
   });
   const SizeMemoryUpdate grown = updateSizeMemory(
       earlier ? &*earlier : nullptr, curated,
-      recallCandidates(defaultMeasureSets(), defaultFarFactors()),
-      models.featureConfigHash(), earlier ? earlier->neighbours() : 5);
+      recallCandidates(defaultMeasureSets(), defaultNeighbourCounts(), defaultFarFactors()),
+      models.featureConfigHash());
   const fs::path dir = grown.memory ? request.outDir : request.outDir / "refused";
   fs::create_directories(dir);
   if (grown.memory) writeSizeMemory(*grown.memory, dir);

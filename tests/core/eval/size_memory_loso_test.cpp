@@ -39,7 +39,7 @@ std::vector<UnitsCase> appliances() {
 
 TEST(SizeMemoryLoso, TheMemoryScalesGameFilesTheNamedUnitsGetWrong) {
   const auto report =
-      evaluateSizeMemory(appliances(), recallCandidates({{SizeMeasure::LargestExtent}}, {2.0}), "hash");
+      evaluateSizeMemory(appliances(), recallCandidates({{SizeMeasure::LargestExtent}}, {5}, {2.0}), "hash");
   ASSERT_EQ(report.groups, (std::vector<std::string>{"game", "metres"}));
   ASSERT_EQ(report.candidates.size(), 2u);
   EXPECT_TRUE(report.candidates[1].namedUnitsOnly());
@@ -59,7 +59,7 @@ TEST(SizeMemoryLoso, TheMemoryScalesGameFilesTheNamedUnitsGetWrong) {
   EXPECT_EQ(report.chosenOnAll, 0u);
   const std::string md = unitsLosoMarkdown(report);
   EXPECT_NE(md.find("| named units only (no memory) |"), std::string::npos) << md;
-  EXPECT_NE(md.find("memory (largest extent), far factor 2 (6 sources)"), std::string::npos) << md;
+  EXPECT_NE(md.find("memory (largest extent, 5 nearest), far factor 2 (6 sources)"), std::string::npos) << md;
 }
 
 TEST(SizeMemoryLoso, AnObjectIsNeverRecalledFromItsOwnSource) {
@@ -69,7 +69,7 @@ TEST(SizeMemoryLoso, AnObjectIsNeverRecalledFromItsOwnSource) {
   cases[0].object.metersPerUnit = 0.25;
   cases[0].object.units.largestExtent = 1.8 / 0.25;
   const auto report =
-      evaluateSizeMemory(cases, recallCandidates({{SizeMeasure::LargestExtent}}, {1.5}), "hash");
+      evaluateSizeMemory(cases, recallCandidates({{SizeMeasure::LargestExtent}}, {5}, {1.5}), "hash");
   EXPECT_EQ(report.byCandidate[0].back().notMetresRight, 0u);
   ASSERT_EQ(report.wrongChosen.size(), 1u);
   EXPECT_NE(report.wrongChosen[0].find("real-a/fridge (real-a, none)"), std::string::npos) << report.wrongChosen[0];
@@ -127,8 +127,8 @@ TEST(SizeMemoryLoso, ChoosesTheMeasuresThatGuessMoreRightLeavingSourcesOut) {
     cases.push_back(game);
   }
   const auto candidates = recallCandidates(
-      {{SizeMeasure::LargestExtent}, {SizeMeasure::WorkSurface}}, {1.5});
-  const auto report = evaluateSizeMemory(cases, candidates, "hash", /*neighbours=*/6);
+      {{SizeMeasure::LargestExtent}, {SizeMeasure::WorkSurface}}, {6}, {1.5});
+  const auto report = evaluateSizeMemory(cases, candidates, "hash");
   // By extent the recalled ranges disagree (0.8 to 1.6 m), and at a factor of 1.5 ranges in metres
   // are scaled away from their units. By work surface they agree at 0.9 m: the metre ranges stay,
   // and the game range's cooktop, 1.8 m in metres, is 2x off and scaled to 0.5, right.

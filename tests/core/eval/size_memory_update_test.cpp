@@ -35,27 +35,28 @@ std::vector<UnitsCase> appliances(int sources, bool withGame) {
   return cases;
 }
 
-const std::vector<MemoryRecall> kCandidates = recallCandidates({{SizeMeasure::LargestExtent}}, {2.0});
+const std::vector<MemoryRecall> kCandidates = recallCandidates({{SizeMeasure::LargestExtent}}, {2}, {2.0});
 
 TEST(SizeMemoryUpdate, AMemoryThatBeatsTheNamedUnitsIsAdoptedOneThatDoesNotIsRefused) {
-  const SizeMemoryUpdate adopted = updateSizeMemory(nullptr, appliances(3, true), kCandidates, "hash", 2);
+  const SizeMemoryUpdate adopted = updateSizeMemory(nullptr, appliances(3, true), kCandidates, "hash");
   ASSERT_TRUE(adopted.memory);
   EXPECT_EQ(adopted.objects, 8u);
   EXPECT_GT(adopted.rightWithMemory, adopted.rightNamedOnly);
   EXPECT_DOUBLE_EQ(adopted.memory->farFactor(), 2.0);
+  EXPECT_EQ(adopted.memory->neighbours(), 2);
   EXPECT_NE(adopted.verdict.find("adopted"), std::string::npos) << adopted.verdict;
   // Objects all in metres: the named units are right on all of them, a memory can only tie.
-  const SizeMemoryUpdate refused = updateSizeMemory(nullptr, appliances(3, false), kCandidates, "hash", 2);
+  const SizeMemoryUpdate refused = updateSizeMemory(nullptr, appliances(3, false), kCandidates, "hash");
   EXPECT_FALSE(refused.memory);
   EXPECT_NE(refused.verdict.find("refused"), std::string::npos) << refused.verdict;
 }
 
 TEST(SizeMemoryUpdate, GrowsAMemoryWithNewObjectsAndRefusesOneOfOtherFeatures) {
-  const SizeMemoryUpdate first = updateSizeMemory(nullptr, appliances(3, true), kCandidates, "hash", 2);
+  const SizeMemoryUpdate first = updateSizeMemory(nullptr, appliances(3, true), kCandidates, "hash");
   ASSERT_TRUE(first.memory);
   auto more = appliances(5, false);
   more.erase(more.begin(), more.begin() + 6);  // sources real-3 and real-4 only
-  const SizeMemoryUpdate grown = updateSizeMemory(&*first.memory, more, kCandidates, "hash", 2);
+  const SizeMemoryUpdate grown = updateSizeMemory(&*first.memory, more, kCandidates, "hash");
   ASSERT_TRUE(grown.memory);
   EXPECT_EQ(grown.memory->entries().size(), 12u);
   EXPECT_THROW(updateSizeMemory(&*first.memory, more, kCandidates, "other"), InvalidArgument);
