@@ -25,11 +25,8 @@ namespace fs = std::filesystem;
 
 TrainingStatus retrain(const fs::path& dir, const fs::path& heldOut,
                        std::vector<QueueEntry> requeue = {}) {
-  TrainingRequest request;
+  TrainingRequest request = test::requestIn(dir);
   request.requeue = std::move(requeue);
-  request.dataset = dir / "curated";
-  request.outDir = dir / "out";
-  request.initDir = dir / "loaded";
   request.heldOut = heldOut;
   request.categoryClassifier = true;
   return test::runToEnd(std::move(request), 300);

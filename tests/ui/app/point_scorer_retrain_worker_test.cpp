@@ -28,11 +28,9 @@ const fs::path kShipped = fs::path(SAGRID_SOURCE_DIR) / "resources" / "models";
 
 TrainingStatus retrainDecision(const fs::path& dir, const fs::path& curated,
                                std::vector<QueueEntry> requeue = {}) {
-  TrainingRequest request;
+  TrainingRequest request = test::requestIn(dir);
   request.requeue = std::move(requeue);
   request.dataset = curated;
-  request.outDir = dir / "out";
-  request.initDir = dir / "loaded";
   request.heldOut = dir / "held-out";
   request.generated = dir / "generated";
   request.pointScorer = true;

@@ -12,6 +12,16 @@
 
 namespace sagrid::test {
 
+// A request over the folders the worker tests lay out in `dir`: the curator's training set
+// dir/curated, the loaded models dir/loaded, the models written to dir/out.
+inline ui::TrainingRequest requestIn(const std::filesystem::path& dir) {
+  ui::TrainingRequest request;
+  request.dataset = dir / "curated";
+  request.outDir = dir / "out";
+  request.initDir = dir / "loaded";
+  return request;
+}
+
 // The status once the worker stopped (a failure is recorded when it did not within `seconds`, or
 // when "finished" disagrees with the error).
 inline ui::TrainingStatus runToEnd(ui::TrainingRequest request, int seconds) {

@@ -21,10 +21,7 @@ namespace fs = std::filesystem;
 const fs::path kShipped = fs::path(SAGRID_SOURCE_DIR) / "resources" / "models";
 
 TrainingStatus grow(const fs::path& dir) {
-  TrainingRequest request;
-  request.dataset = dir / "curated";
-  request.outDir = dir / "out";
-  request.initDir = dir / "loaded";
+  TrainingRequest request = test::requestIn(dir);
   request.unitsMemory = true;
   return test::runToEnd(std::move(request), 300);
 }
