@@ -18,7 +18,7 @@ std::string textOf(const nlohmann::json& object, const char* key) {
 
 // The provenance.json beside `mesh` as an object; an absent or unreadable record is none.
 std::optional<nlohmann::json> provenanceRecord(const fs::path& mesh) {
-  const fs::path beside = mesh.parent_path() / "provenance.json";
+  const fs::path beside = mesh.parent_path() / kProvenanceRecordFile;
   std::error_code ec;
   if (!fs::is_regular_file(beside, ec)) return std::nullopt;
   try {

@@ -12,6 +12,9 @@
 
 namespace sagrid {
 
+// The record of where a mesh comes from, beside it (the corpora write one per object).
+inline constexpr const char* kProvenanceRecordFile = "provenance.json";
+
 // labels' object.provenance.repo, else the "repo" or "library" of a provenance.json beside the
 // mesh (the corpora write one), else `fallback`.
 std::string objectSource(const ObjectLabels& labels, const std::filesystem::path& mesh, const std::string& fallback);

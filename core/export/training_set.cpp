@@ -8,6 +8,7 @@
 #include "core/common/atomic_file.h"
 #include "core/common/contained_paths.h"
 #include "core/common/error.h"
+#include "core/dataset/object_source.h"
 #include "core/export/export_frame.h"
 
 namespace sagrid {
@@ -40,6 +41,14 @@ TrainingSetEntry addToTrainingSet(const ObjectLabels& labels, const fs::path& me
   std::string ext = meshPath.extension().string();
   for (auto& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   entry.mesh = exportdetail::copyMeshWithDependencies(meshPath, objectDir, "mesh" + ext);
+  // The record of where the mesh comes from goes with it: its source (leave-one-source-out guards
+  // fold by it) and what it declares (units, up axis) stay the object's.
+  const fs::path record = meshPath.parent_path() / kProvenanceRecordFile;
+  std::error_code copied;
+  if (fs::is_regular_file(record, copied) &&
+      !fs::copy_file(record, objectDir / kProvenanceRecordFile, fs::copy_options::overwrite_existing, copied) &&
+      copied)
+    throw FileError(objectDir / kProvenanceRecordFile, "cannot copy the provenance record: " + copied.message());
 
   ObjectLabels copy = labels;
   copy.object.id = entry.id;

@@ -9,6 +9,7 @@
 
 #include "core/common/atomic_file.h"
 #include "core/common/error.h"
+#include "core/dataset/object_source.h"
 #include "core/export/export_objects.h"
 #include "core/export/mjcf_export.h"
 #include "core/export/omnigibson_export.h"
@@ -253,6 +254,24 @@ TEST(TrainingSet, CopiesWithProvenanceAndReplacesManifestLine) {
   EXPECT_EQ(line["category"], "stove");
   EXPECT_EQ(line["mesh"], "my_stove_01/mesh.obj");
   EXPECT_EQ(line["labels"], "my_stove_01/labels.json");
+}
+
+// A Sweet Home 3D object names its library and declares its units in a provenance.json beside its
+// mesh: in the training set it keeps both, so guards that leave its source out still do.
+TEST(TrainingSet, TheMeshsProvenanceRecordGoesWithIt) {
+  const auto dir = test::freshTempDir();
+  const auto labelsPath = writeObject(dir / "in");
+  std::ofstream(dir / "in" / kProvenanceRecordFile) << R"({"library": "Contributions", "meters_per_unit": 0.01})";
+  const ObjectLabels labels = readLabels(labelsPath);
+  EXPECT_EQ(objectSource(labels, dir / "in" / "mesh.obj", "in"), "Contributions");
+  const auto entry = addToTrainingSet(labels, dir / "in" / "mesh.obj", labelsPath, dir / "set");
+  EXPECT_EQ(objectSource(readLabels(entry.labels), entry.mesh, "set"), "Contributions");
+  ASSERT_TRUE(declaredMetersPerUnit(entry.mesh));
+  EXPECT_DOUBLE_EQ(*declaredMetersPerUnit(entry.mesh), 0.01);
+  // An object without a record gets none (the training set's folder is then its source).
+  const auto bare = addToTrainingSet(labels, writeObject(dir / "bare").parent_path() / "mesh.obj",
+                                     dir / "bare" / "labels.json", dir / "other-set");
+  EXPECT_FALSE(fs::exists(bare.mesh.parent_path() / kProvenanceRecordFile));
 }
 
 TEST(TrainingSet, RefusesObjectsWithoutCategory) {
