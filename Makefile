@@ -31,7 +31,8 @@ run: build
 # decision on these networks' candidates (curated wild-pool, Sweet Home 3D and real-dev objects and
 # the bench val split; the preset sets the stove cards' crease-patch candidates) and the object
 # confidence fitted on its points left out by source, then the units memory (the sizes of the
-# curated real objects, its far factor chosen leaving each source out). The stove models are not fine-tuned: on the five real-train stoves it made the
+# curated real objects; the size it recalls, how many objects and its far factor chosen leaving each
+# source out). The stove models are not fine-tuned: on the five real-train stoves it made the
 # held-out real stoves worse (resources/models/README.md).
 SAGRID_CACHE ?= $(if $(XDG_CACHE_HOME),$(XDG_CACHE_HOME),$(HOME)/.cache)/sagrid
 BENCH_DIR ?= $(SAGRID_CACHE)/bench
