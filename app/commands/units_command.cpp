@@ -1,13 +1,12 @@
 // `sagrid units memory --data DIR...`: the size memory the units guess recalls
-// (core/annotate/size_memory.h) built from curated real objects, the measures it recalls and its
-// far factor chosen leaving each source out, and written into the models folder only where that
-// beats the named units alone. Parsing and progress display only.
+// (core/annotate/size_memory.h) built from curated real objects, the size it recalls, how many
+// objects and its far factor chosen leaving each source out, and written into the models folder
+// only where that beats the named units alone. Parsing and progress display only.
 #include <CLI/CLI.hpp>
-#include <cmath>
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
-#include <algorithm>
 #include <memory>
 #include <optional>
 
@@ -65,9 +64,10 @@ void setupUnits(CLI::App& root) {
   auto o = std::make_shared<MemoryOptions>();
   auto* memory = cmd->add_subcommand(
       "memory", "Remember the real sizes of the curated objects of --data (their labels' units) "
-                "for the units guess; evaluate it leaving each source out, choose its far factor "
-                "so, and write units_memory.json into --out only where it guesses more units "
-                "right than the named units alone");
+                "for the units guess; evaluate it leaving each source out, choose so what it "
+                "recalls (--measures, --neighbours) and its far factor (--factors), and write "
+                "units_memory.json into --out only where it guesses more units right than the "
+                "named units alone");
   memory->add_option("--data", o->data, "Curated dataset folder (repeatable)");
   memory->add_option("--into", o->into,
                      "Grow the memory of this models folder: its objects join --data's (an object "

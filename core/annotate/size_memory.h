@@ -5,8 +5,8 @@
 // is expected at the median size of the curated objects of its category whose descriptors are
 // nearest (z-scored over the memory), in the measure of the memory's that those neighbours agree
 // on most; the units guess (core/mesh/unit_guess.h) gives way to that size where its named unit is
-// more than the memory's far factor from it. The measures a memory may recall and the factor are
-// chosen leaving each source out (`sagrid units memory`). resources/models/units_memory.json; a
+// more than the memory's far factor from it. The measures a memory may recall, how many objects and
+// the factor are chosen leaving each source out (`sagrid units memory`). resources/models/units_memory.json; a
 // folder without it keeps the named-unit guess.
 #pragma once
 

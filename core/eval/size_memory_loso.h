@@ -2,7 +2,8 @@
 // (core/annotate/size_memory.h), and the choice of how it recalls: every curated object's units
 // guessed as `annotate` would (its decided category, its file's sizes, its descriptor) with a
 // memory that holds no object of its source, scored against its curated units; the measures the
-// memory may recall and its far factor are chosen for each source on the other sources alone.
+// memory may recall, how many objects and its far factor are chosen for each source on the other
+// sources alone.
 // `sagrid units memory` prints it.
 #pragma once
 

@@ -44,11 +44,10 @@ TrainingSetEntry addToTrainingSet(const ObjectLabels& labels, const fs::path& me
   // The record of where the mesh comes from goes with it: its source (leave-one-source-out guards
   // fold by it) and what it declares (units, up axis) stay the object's.
   const fs::path record = meshPath.parent_path() / kProvenanceRecordFile;
-  std::error_code copied;
-  if (fs::is_regular_file(record, copied) &&
-      !fs::copy_file(record, objectDir / kProvenanceRecordFile, fs::copy_options::overwrite_existing, copied) &&
-      copied)
-    throw FileError(objectDir / kProvenanceRecordFile, "cannot copy the provenance record: " + copied.message());
+  if (fs::is_regular_file(record, ec)) {
+    fs::copy_file(record, objectDir / kProvenanceRecordFile, fs::copy_options::overwrite_existing, ec);
+    if (ec) throw FileError(objectDir / kProvenanceRecordFile, "cannot copy the provenance record: " + ec.message());
+  }
 
   ObjectLabels copy = labels;
   copy.object.id = entry.id;

@@ -158,8 +158,7 @@ void TrainingWorker::runCategoryClassifier(const TrainingRequest& request) {
 
 void TrainingWorker::runUnitsMemory(const TrainingRequest& request) {
   const fs::path from = request.initDir.empty() ? request.outDir : request.initDir;
-  const ModelSet models = ModelSet::load(from);
-  const std::optional<SizeMemory> earlier = readSizeMemory(from);
+  const ModelSet models = ModelSet::load(from);  // with its units memory, checked against the cards
   std::size_t unconfirmed = 0;
   const std::vector<UnitsCase> curated = readUnitsCases(
       {request.dataset}, models.featureOptions(),
@@ -176,7 +175,7 @@ void TrainingWorker::runUnitsMemory(const TrainingRequest& request) {
     s.fraction = 0.9f;
   });
   const SizeMemoryUpdate grown = updateSizeMemory(
-      earlier ? &*earlier : nullptr, curated,
+      models.sizeMemory(), curated,
       recallCandidates(defaultMeasureSets(), defaultNeighbourCounts(), defaultFarFactors()),
       models.featureConfigHash());
   const fs::path dir = grown.memory ? request.outDir : request.outDir / "refused";

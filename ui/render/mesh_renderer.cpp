@@ -142,7 +142,9 @@ void MeshRenderer::draw(const Camera& camera, bool wireframe, SurfaceColouring c
   setUniform(m_uTexture, 0);
   setUniform(m_uAlpha, 1.0f);
   setUniform(m_uFlatColor, 0);
-  // mesh.frag's uPlain: 0 as modelled, 1 plain grey, 2 by material, 3 texture contrast.
+  // mesh.frag's uPlain numbers the colourings as SurfaceColouring does.
+  static_assert(int(SurfaceColouring::Modelled) == 0 && int(SurfaceColouring::PlainGrey) == 1 &&
+                int(SurfaceColouring::ByMaterial) == 2 && int(SurfaceColouring::TextureContrast) == 3);
   setUniform(m_uPlain, int(colouring));
   glBindVertexArray(m_vao.id());
   glEnable(GL_POLYGON_OFFSET_FILL);

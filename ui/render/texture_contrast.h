@@ -15,8 +15,8 @@ struct LuminanceRange {
   float low = 0.0f, high = 1.0f;  // linear luminance, high > low
 };
 
-// The `lowShare` and `highShare` quantiles of the texture's luminance, in the linear light the GPU
-// samples an sRGB texture in; widened to at least 1/255 around them for a texture of one colour
+// The `lowShare` and `highShare` quantiles of the texture's luminance (of at most 65,536 texels
+// taken at an even stride), in the linear light the GPU samples an sRGB texture in; widened to at least 1/255 around them for a texture of one colour
 // (nothing to stretch), and the whole range for an empty one.
 LuminanceRange luminanceRange(const Texture& texture, float lowShare = 0.02f, float highShare = 0.98f);
 

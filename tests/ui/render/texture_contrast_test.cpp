@@ -29,6 +29,18 @@ TEST(TextureContrast, TheRangeSpansTheTexturesOwnGreysInLinearLight) {
   EXPECT_NEAR(few.high - few.low, 1.0f / 255.0f, 1e-6);
 }
 
+TEST(TextureContrast, ALargeTextureIsReadAtAStrideWithTheSameRange) {
+  // 1024 x 1024 texels (16 times the most read): black glass, marks in its first 100 columns.
+  Texture t;
+  t.width = t.height = 1024;
+  t.rgba.assign(std::size_t(1024) * 1024 * 4, 255);
+  for (std::size_t i = 0; i < std::size_t(1024) * 1024; ++i)
+    for (std::size_t c = 0; c < 3; ++c) t.rgba[4 * i + c] = i % 1024 < 100 ? 40 : 8;
+  const LuminanceRange range = luminanceRange(t);
+  EXPECT_NEAR(range.low, 8.0 / 255.0 / 12.92, 1e-5);
+  EXPECT_NEAR(range.high, 0.0212, 2e-4);
+}
+
 TEST(TextureContrast, OneColourOrNothingGivesAUsableRange) {
   const LuminanceRange flat = luminanceRange(greys(128, 128, 0));
   EXPECT_GT(flat.high, flat.low);
