@@ -77,6 +77,7 @@ struct Options {
   std::string out, models, exclude, split, splitOut, up, cache;
   double threshold = -1, l2 = 1e-2, keep = 0.98, sureAbove = 0;
   int iterations = 20000, treeRounds = 100, treeDepth = 3;
+  float treeRowShare = 1.0f, treeFeatureShare = 1.0f;
   bool trees = false;
   bool retrieval = false, linear = false, evidence = false;
   sagrid::CategoryInputSet inputs;
@@ -146,6 +147,14 @@ void addTrainingFlags(CLI::App* cmd, Options& o) {
       ->check(CLI::PositiveNumber);
   cmd->add_option("--tree-depth", o.treeDepth, "With --trees: depth of each tree")
       ->check(CLI::Range(1, 8));
+  cmd->add_option("--tree-row-share", o.treeRowShare,
+                  "With --trees: share of the objects each tree is grown on, drawn per tree "
+                  "(stochastic boosting; default 1, all)")
+      ->check(CLI::Range(0.01, 1.0));
+  cmd->add_option("--tree-feature-share", o.treeFeatureShare,
+                  "With --trees: share of the inputs each tree may split on, drawn per tree "
+                  "(default 1, all)")
+      ->check(CLI::Range(0.01, 1.0));
   cmd->add_flag("--top-relief", o.inputs.topRelief,
                 "Also read the relief of the object's top from its voxels (basins, burner spots, "
                 "flat lids), beside the descriptor");
@@ -164,6 +173,8 @@ sagrid::CategoryTrainingOptions trainingOptions(const Options& o) {
   options.trees = o.trees;
   options.boosting.rounds = o.treeRounds;
   options.boosting.depth = o.treeDepth;
+  options.boosting.rowShare = o.treeRowShare;
+  options.boosting.featureShare = o.treeFeatureShare;
   if (o.threshold >= 0) options.threshold = o.threshold;
   return options;
 }
@@ -230,7 +241,9 @@ void setupCategory(CLI::App& root) {
                (o->linear ? " --linear" : "") + (o->inputs.topRelief ? " --top-relief" : "") +
                (o->inputs.partStatistics ? " --part-statistics" : "") +
                (o->trees ? " --trees --tree-rounds " + std::to_string(o->treeRounds) +
-                               " --tree-depth " + std::to_string(o->treeDepth)
+                               " --tree-depth " + std::to_string(o->treeDepth) +
+                               " --tree-row-share " + std::to_string(o->treeRowShare) +
+                               " --tree-feature-share " + std::to_string(o->treeFeatureShare)
                          : "");
     classifier.training["command"] = command;
     const auto ev = sagrid::evaluateCategories(

@@ -108,6 +108,13 @@ void addTrainingOptions(CLI::App& cmd, std::vector<std::string>& candidates,
       ->check(CLI::PositiveNumber);
   cmd.add_option("--leaf-ridge", o.boosting.lambda, "Ridge on the trees' leaf values (default 1)")
       ->check(CLI::NonNegativeNumber);
+  cmd.add_option("--row-share", o.boosting.rowShare,
+                 "Share of the candidates each tree is grown on, drawn per tree (stochastic "
+                 "boosting; default 1, all)")
+      ->check(CLI::Range(0.01, 1.0));
+  cmd.add_option("--feature-share", o.boosting.featureShare,
+                 "Share of the features each tree may split on, drawn per tree (default 1, all)")
+      ->check(CLI::Range(0.01, 1.0));
 }
 
 void setupScorer(CLI::App& root) {

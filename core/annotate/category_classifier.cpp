@@ -147,6 +147,11 @@ CategoryClassifier CategoryClassifier::train(const std::vector<CategorySample>& 
       c.m_trees.push_back(fitBoostedTrees(rows, positive, weight, options.boosting));
     }
     c.training["trees"] = {{"rounds", options.boosting.rounds}, {"depth", options.boosting.depth}};
+    if (options.boosting.rowShare < 1 || options.boosting.featureShare < 1) {
+      c.training["trees"]["row_share"] = options.boosting.rowShare;
+      c.training["trees"]["feature_share"] = options.boosting.featureShare;
+      c.training["trees"]["seed"] = options.boosting.seed;
+    }
     return c;
   }
   // Step size from the curvature bound of the weighted softmax loss (0.5 lambda_max(X^T W X)),

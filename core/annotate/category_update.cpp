@@ -142,6 +142,10 @@ CategoryClassifier retrainCategoryClassifier(const CategoryClassifier& current,
     options.trees = true;
     options.boosting.rounds = record.at("trees").value("rounds", options.boosting.rounds);
     options.boosting.depth = record.at("trees").value("depth", options.boosting.depth);
+    options.boosting.rowShare = record.at("trees").value("row_share", options.boosting.rowShare);
+    options.boosting.featureShare =
+        record.at("trees").value("feature_share", options.boosting.featureShare);
+    options.boosting.seed = record.at("trees").value("seed", options.boosting.seed);
   }
   const auto samples = collectWeightedSamples(folders, features, {}, options.inputs, onProgress);
   if (samples.empty())

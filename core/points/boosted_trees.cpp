@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <numeric>
+#include <random>
 
 #include "core/common/error.h"
 
@@ -22,6 +23,7 @@ struct Grower {
   const std::vector<double>& g;  // weighted gradient per row
   const std::vector<double>& h;  // weighted hessian per row
   const BoostingOptions& options;
+  const std::vector<char>& usable;  // per feature: may this tree split on it
   std::vector<TreeNode> nodes;
   std::vector<char> goesLeft;  // per row, for the split being made
 
@@ -47,6 +49,7 @@ struct Grower {
     int bestFeature = -1;
     float bestThreshold = 0;
     for (std::size_t f = 0; f < sorted.size(); ++f) {
+      if (!usable[f]) continue;
       const std::vector<std::size_t>& order = sorted[f];
       double GL = 0, HL = 0;
       for (std::size_t k = 0; k + 1 < order.size(); ++k) {
@@ -103,6 +106,20 @@ double compact(float value) {
   return std::strtod(text, nullptr);
 }
 
+// A uniform draw in [0, 1) from the engine's raw output (the standard fixes mt19937's sequence,
+// not its distributions', so the trees are the same on every platform).
+double uniform(std::mt19937& engine) { return static_cast<double>(engine()) / 4294967296.0; }
+
+// Per item, whether this tree takes it: a share of `count` (at least one), all for a share >= 1.
+std::vector<char> drawShare(std::size_t count, float share, std::mt19937& engine) {
+  std::vector<char> taken(count, 1);
+  if (share >= 1.0f) return taken;
+  bool any = false;
+  for (auto& t : taken) any |= (t = uniform(engine) < share) != 0;
+  if (!any) taken[static_cast<std::size_t>(uniform(engine) * count)] = 1;
+  return taken;
+}
+
 float treeValue(const std::vector<TreeNode>& tree, const std::vector<float>& x) {
   int n = 0;
   while (tree[n].feature >= 0)
@@ -149,13 +166,21 @@ BoostedTrees fitBoostedTrees(const std::vector<std::vector<float>>& rows,
     std::stable_sort(sorted[f].begin(), sorted[f].end(),
                      [&](std::size_t a, std::size_t b) { return rows[a][f] < rows[b][f]; });
   }
+  if (!(options.rowShare > 0 && options.rowShare <= 1) ||
+      !(options.featureShare > 0 && options.featureShare <= 1))
+    throw InvalidArgument("boosted trees: the shares of rows and features must lie in (0, 1]");
+  std::mt19937 engine(options.seed);
   for (int round = 0; round < options.rounds; ++round) {
+    // A row left out of this tree weighs nothing in it: no gradient, no hessian.
+    const std::vector<char> inTree = drawShare(n, options.rowShare, engine);
+    const std::vector<char> usable = drawShare(model.features, options.featureShare, engine);
     for (std::size_t r = 0; r < n; ++r) {
       const double p = sigmoid(score[r]);
-      g[r] = w[r] * (p - (positive[r] ? 1.0 : 0.0));
-      h[r] = w[r] * std::max(p * (1 - p), 1e-6);
+      const double take = inTree[r] ? w[r] : 0.0;
+      g[r] = take * (p - (positive[r] ? 1.0 : 0.0));
+      h[r] = inTree[r] ? w[r] * std::max(p * (1 - p), 1e-6) : 0.0;
     }
-    Grower grower{rows, g, h, options, {}, std::vector<char>(n, 0)};
+    Grower grower{rows, g, h, options, usable, {}, std::vector<char>(n, 0)};
     grower.grow(sorted, 0);
     for (auto& node : grower.nodes) node.value *= options.learningRate;
     for (std::size_t r = 0; r < n; ++r) score[r] += treeValue(grower.nodes, rows[r]);

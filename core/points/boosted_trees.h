@@ -33,6 +33,13 @@ struct BoostingOptions {
   // (XGBoost's monotone constraints: a split against the direction is not made, and each
   // subtree's leaves stay within the bounds its splits set).
   std::vector<int> monotone;
+  // Stochastic gradient boosting (Friedman 2002): each tree is grown on a share of the rows and
+  // may split on a share of the features, drawn anew per tree from `seed` (1 and 1: every row and
+  // feature, the trees as before). Fewer rows and features per tree make the trees differ, so
+  // their sum leans less on a few objects or one feature: a regularizer for small data.
+  float rowShare = 1.0f;
+  float featureShare = 1.0f;
+  unsigned seed = 1;
 };
 
 // Throws InvalidArgument for no rows, rows of different lengths or a class without weight.

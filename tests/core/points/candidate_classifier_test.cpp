@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <random>
+#include <set>
 
 #include "core/common/error.h"
 #include "core/points/boosted_trees.h"
@@ -79,6 +80,40 @@ TEST(CandidateClassifier, BoostedTreesKeepAMonotoneFeaturesDirection) {
   const BoostedTrees trees = fitBoostedTrees(r.x, r.y, r.w, monotone);
   EXPECT_EQ(rises(trees), 0);
   EXPECT_GT(trees.score({0.1f, 0.5f}), trees.score({0.5f, 0.5f}));  // it still learns the low end
+}
+
+// Stochastic boosting: each tree grown on half of the rows still learns the checkerboard; the
+// draws come from the seed alone (the same seed, the same trees; another, other trees); a tree
+// allowed the least share of the features splits on one feature only.
+TEST(CandidateClassifier, StochasticBoostingDrawsRowsAndFeaturesPerTreeFromItsSeed) {
+  auto rule = [](float a, float b) { return (a < 0.5f) != (b < 0.5f); };
+  const Rows train = rowsBy(rule, 800, 3), test = rowsBy(rule, 400, 4);
+  BoostingOptions half;
+  half.rowShare = 0.5f;
+  const BoostedTrees trees = fitBoostedTrees(train.x, train.y, train.w, half);
+  EXPECT_GT(accuracy(test, [&](const auto& x) { return 1.0 / (1.0 + std::exp(-trees.score(x))); }),
+            0.9);
+  EXPECT_EQ(toJson(fitBoostedTrees(train.x, train.y, train.w, half)), toJson(trees));
+  half.seed = 2;
+  EXPECT_NE(toJson(fitBoostedTrees(train.x, train.y, train.w, half)), toJson(trees));
+  EXPECT_NE(toJson(fitBoostedTrees(train.x, train.y, train.w)), toJson(trees));
+
+  BoostingOptions oneFeature;
+  oneFeature.featureShare = 0.01f;
+  int splitOnBoth = 0, splitOnOne = 0;
+  for (const auto& tree : fitBoostedTrees(train.x, train.y, train.w, oneFeature).trees) {
+    std::set<int> features;
+    for (const auto& node : tree)
+      if (node.feature >= 0) features.insert(node.feature);
+    splitOnBoth += features.size() > 1;
+    splitOnOne += features.size() == 1;
+  }
+  EXPECT_EQ(splitOnBoth, 0);
+  EXPECT_GT(splitOnOne, 0);
+
+  BoostingOptions none;
+  none.rowShare = 0.0f;
+  EXPECT_THROW(fitBoostedTrees(train.x, train.y, train.w, none), InvalidArgument);
 }
 
 TEST(CandidateClassifier, BadTreesAndBadRowsAreRefusedWithTheirReason) {

@@ -121,6 +121,13 @@ TEST(CategoryRetrainWorker, ABetterRetrainingIsAdopted) {
   EXPECT_EQ(retrainCategoryClassifier(trees, dir / "curated", kCuratedCategoryWeight, features, missing)
                 .training.at("trees"),
             shipped.training.at("trees"));
+  // Trees grown on shares of the objects and inputs retrain with the same shares and seed.
+  trees.training["trees"]["row_share"] = 0.5;
+  trees.training["trees"]["feature_share"] = 0.25;
+  trees.training["trees"]["seed"] = 7;
+  EXPECT_EQ(retrainCategoryClassifier(trees, dir / "curated", kCuratedCategoryWeight, features, missing)
+                .training.at("trees"),
+            trees.training.at("trees"));
   // A softmax classifier of one gradient step.
   CategoryClassifier oneStep = shipped;
   oneStep.training.erase("trees");
