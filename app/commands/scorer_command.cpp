@@ -113,7 +113,7 @@ void addTrainingOptions(CLI::App& cmd, std::vector<std::string>& candidates,
                  "boosting; default 1, all)")
       ->check(CLI::Range(0.01, 1.0));
   cmd.add_option("--feature-share", o.boosting.featureShare,
-                 "Share of the features each tree may split on, drawn per tree (default 1, all)")
+                 "Share of the features each tree may split on, drawn per tree (default 0.5)")
       ->check(CLI::Range(0.01, 1.0));
 }
 
