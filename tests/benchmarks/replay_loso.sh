@@ -14,6 +14,8 @@
 # POOL (../shared/data/wild-pool), WILD (`sagrid corpus wild` with the curated labels), SH (`sagrid
 # corpus sweethome3d`), BENCH, DIST and GEN (generated data, "Category classifier"), CANDIDATES_REAL,
 # CANDIDATES_SH, CANDIDATES_BENCH (`sagrid scorer candidates` files, "point_scorer.json").
+# SCORER_OPTIONS (optional): more options for each repository's `scorer train` (e.g.
+# "--feature-share 1", the decision before session 53), to replay two decisions side by side.
 # About 6 minutes on 2 cores with cached features (IN_SAMPLE=1: 2).
 set -euo pipefail
 
@@ -59,7 +61,7 @@ for d in "$work"/sources/*/; do
     models=$d/models
     rm -rf "$models"
     "$sagrid" scorer train --candidates "$d/candidates.json" --candidates "$CANDIDATES_SH" \
-      --candidates "$CANDIDATES_BENCH" --out "$models" > "$d/scorer.log" 2>&1
+      --candidates "$CANDIDATES_BENCH" ${SCORER_OPTIONS:-} --out "$models" > "$d/scorer.log" 2>&1
     "$sagrid" category train --data "$BENCH/train" --data "$DIST/train" --data "$GEN/stoves" \
       --data "$GEN/sinks" --data "$GEN/none" --data "$WILD/wild-train@3" --data "$WILD/wild-val@3" \
       --data "$SH/real-train@3" --data "$SH/real-val@3" --data "$SH/distractors@3" \
