@@ -242,8 +242,8 @@ void setupCategory(CLI::App& root) {
                (o->inputs.partStatistics ? " --part-statistics" : "") +
                (o->trees ? " --trees --tree-rounds " + std::to_string(o->treeRounds) +
                                " --tree-depth " + std::to_string(o->treeDepth) +
-                               " --tree-row-share " + std::to_string(o->treeRowShare) +
-                               " --tree-feature-share " + std::to_string(o->treeFeatureShare)
+                               (o->treeRowShare < 1 ? " --tree-row-share " + std::to_string(o->treeRowShare) : "") +
+                               (o->treeFeatureShare < 1 ? " --tree-feature-share " + std::to_string(o->treeFeatureShare) : "")
                          : "");
     classifier.training["command"] = command;
     const auto ev = sagrid::evaluateCategories(

@@ -12,9 +12,7 @@ namespace {
 constexpr double kHorizontalCosine = 0.9;  // |normal . z| of a face taken as horizontal
 constexpr double kBaseShare = 0.1;         // faces this low (share of the height) are a base
 constexpr double kBinShare = 0.02;         // height bins, share of the height
-}  // namespace
 
-namespace {
 // Each measure's file name, words and member, in kSizeMeasures order.
 struct MeasureEntry {
   const char* name;

@@ -175,10 +175,9 @@ BoostedTrees fitBoostedTrees(const std::vector<std::vector<float>>& rows,
     const std::vector<char> inTree = drawShare(n, options.rowShare, engine);
     const std::vector<char> usable = drawShare(model.features, options.featureShare, engine);
     for (std::size_t r = 0; r < n; ++r) {
-      const double p = sigmoid(score[r]);
-      const double take = inTree[r] ? w[r] : 0.0;
+      const double p = sigmoid(score[r]), take = inTree[r] ? w[r] : 0.0;
       g[r] = take * (p - (positive[r] ? 1.0 : 0.0));
-      h[r] = inTree[r] ? w[r] * std::max(p * (1 - p), 1e-6) : 0.0;
+      h[r] = take * std::max(p * (1 - p), 1e-6);
     }
     Grower grower{rows, g, h, options, usable, {}, std::vector<char>(n, 0)};
     grower.grow(sorted, 0);
