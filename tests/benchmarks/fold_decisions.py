@@ -1,0 +1,53 @@
+"""The point decision's held-out figures when each fold of objects has its own networks: every
+object's decisions are read from the `scorer cv` run of its fold (candidate files made with the
+networks fine-tuned without that fold), and the figures are pooled over the folds as `scorer cv`
+pools its sources.
+
+    python3 tests/benchmarks/fold_decisions.py --lc LC/learning_curve.json [--lc ...]
+        [--baseline CV/scorer_cv.json] CV1/scorer_cv.json CV2/scorer_cv.json ...
+        --lc: learning curves whose "folds" say which objects each fold holds (fold n of every
+        --lc is the n-th CV file's); --baseline: one run over the same objects, beside.
+        Prints objects, edits per hand point, one key and the single-point error (cm).
+"""
+import json
+import sys
+from collections import defaultdict
+
+
+def figures(decisions):
+    edits, hand, errors = defaultdict(int), 0, []
+    for d in decisions:
+        edits[d['object']] += d['drags'] + d['additions'] + d['deletions']
+        hand += d['truth_points']
+        if d['truth_points'] > 0 and d['best_point_error_m'] is not None:
+            errors.append(d['best_point_error_m'] * 100)
+    one_key = sum(1 for e in edits.values() if e == 0)
+    return (f"{len(edits)} objects: {sum(edits.values()) / hand:.2f} edits per hand point, "
+            f"{100 * one_key / len(edits):.0f} % one key, "
+            f"{sum(errors) / len(errors):.1f} cm")
+
+
+def main(argv):
+    curves, runs, baseline = [], [], None
+    rest = iter(argv)
+    for arg in rest:
+        if arg == '--lc':
+            curves.append(json.load(open(next(rest)))['folds'])
+        elif arg == '--baseline':
+            baseline = json.load(open(next(rest)))['held_out_decisions']
+        else:
+            runs.append(json.load(open(arg))['held_out_decisions'])
+    fold_of = {}
+    for folds in curves:
+        for n, objects in enumerate(folds):
+            for o in objects:
+                fold_of[o] = n
+    pooled = [d for n, run in enumerate(runs) for d in run if fold_of.get(d['object']) == n]
+    print('each fold its own networks:', figures(pooled))
+    if baseline is not None:
+        kept = {d['object'] for d in pooled}
+        print('baseline, the same objects:', figures([d for d in baseline if d['object'] in kept]))
+
+
+if __name__ == '__main__':
+    main(sys.argv[1:])
