@@ -6,18 +6,21 @@ pools its sources.
     python3 tests/benchmarks/fold_decisions.py --lc LC/learning_curve.json [--lc ...]
         [--baseline CV/scorer_cv.json] CV1/scorer_cv.json CV2/scorer_cv.json ...
         --lc: learning curves whose "folds" say which objects each fold holds (fold n of every
-        --lc is the n-th CV file's); --baseline: one run over the same objects, beside.
+        --lc is the n-th CV file's; objects of no --lc fold are left out, so one --lc alone gives
+        that curve's objects, e.g. the sinks); --baseline: one run over the same objects, beside.
         Prints objects, edits per hand point, one key and the single-point error (cm).
 """
 import json
 import sys
 from collections import defaultdict
 
+from scorer_cv_pairs import edits as decision_edits
+
 
 def figures(decisions):
     edits, hand, errors = defaultdict(int), 0, []
     for d in decisions:
-        edits[d['object']] += d['drags'] + d['additions'] + d['deletions']
+        edits[d['object']] += decision_edits(d)
         hand += d['truth_points']
         if d['truth_points'] > 0 and d['best_point_error_m'] is not None:
             errors.append(d['best_point_error_m'] * 100)
@@ -37,12 +40,16 @@ def main(argv):
             baseline = json.load(open(next(rest)))['held_out_decisions']
         else:
             runs.append(json.load(open(arg))['held_out_decisions'])
+    if not curves or not runs:
+        sys.exit(__doc__)
     fold_of = {}
     for folds in curves:
         for n, objects in enumerate(folds):
             for o in objects:
                 fold_of[o] = n
     pooled = [d for n, run in enumerate(runs) for d in run if fold_of.get(d['object']) == n]
+    if not pooled:
+        sys.exit('no decision of a --lc fold in its CV file: are the files in fold order?')
     print('each fold its own networks:', figures(pooled))
     if baseline is not None:
         kept = {d['object'] for d in pooled}
