@@ -37,6 +37,9 @@ std::shared_ptr<LearningCurveCli> addLearningCurveOptions(CLI::App& eval) {
                   "With --learning-curve: what each fine-tune changes: everything (default) or "
                   "head (the last layer and the output head; batch-norm statistics kept)")
       ->check(CLI::IsMember({"everything", "head"}));
+  eval.add_flag("--keep-init", o->keepInit,
+                "With --learning-curve: each fine-tune keeps the init model's networks beside "
+                "the fine-tuned one, as `train --keep-init` does");
   eval.add_flag("--guard", o->guard,
                 "With --learning-curve: guard every fine-tune as `train --guard` does, on a "
                 "quarter of the training folds' sources held out of the fine-tunes; where the "
@@ -64,6 +67,7 @@ bool runLearningCurveIfAsked(const LearningCurveCli& cli, CLI::App& eval, const 
   o.replay = cli.replay != "none";
   o.adapted = sagrid::model::parseAdaptedPart(cli.adapt);
   o.guarded = cli.guard;
+  o.keepInitNetworks = cli.keepInit;
   if (o.replay && !cli.replay.empty()) o.replayDir = cli.replay;
   o.cacheDir = cache;
   o.outDir = out;

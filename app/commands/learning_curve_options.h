@@ -15,14 +15,14 @@ namespace sagrid::app {
 struct LearningCurveCli {
   bool enabled = false;
   std::string init, ks = "0,2,5,10,all", replay, adapt = "everything";
-  bool guard = false;
+  bool guard = false, keepInit = false;
   std::vector<std::string> models;
   int folds = 3;
   bool bySource = false;
   unsigned seed = 1;
 };
 
-// Adds --learning-curve, --init, --model, --folds, --by-source, --ks, --seed, --replay, --adapt, --guard to
+// Adds --learning-curve, --init, --model, --folds, --by-source, --ks, --seed, --replay, --adapt, --keep-init, --guard to
 // `eval`.
 std::shared_ptr<LearningCurveCli> addLearningCurveOptions(CLI::App& eval);
 

@@ -36,6 +36,7 @@ struct TrainCommandOptions {
   double targetCap = 0;
   double nearWeight = 0;
   bool resume = false;
+  bool keepInit = false;  // with --init: the init's networks stay beside the fine-tuned one
   std::optional<bool> coarseToFine;  // unset: from --init's card
   std::optional<bool> creasePatches;  // unset: from --init's card (--preset: on for the stoves)
   std::string guard;  // held-out curated objects: the update is adopted only where better
@@ -91,6 +92,7 @@ std::string commandLine(const TrainCommandOptions& o, const std::vector<std::str
   if (o.minutes > 0) s << " --minutes " << o.minutes;
   s << " --batch " << o.batch << " --lr " << learningRate(o) << " --seed " << o.seed;
   if (o.adapt != "everything") s << " --adapt " << o.adapt;
+  if (o.keepInit) s << " --keep-init";
   if (o.targetCap > 0) s << " --target-cap " << o.targetCap;
   if (o.nearWeight > 0) s << " --near-weight " << o.nearWeight;
   if (o.coarseToFine) s << (*o.coarseToFine ? " --coarse-to-fine" : " --no-coarse-to-fine");
@@ -132,6 +134,7 @@ sagrid::DatasetTrainingResult trainOne(const TrainCommandOptions& o,
   sagrid::DatasetTrainingOptions t;
   t.datasets = data;
   t.init = o.init;
+  t.keepInitNetworks = o.keepInit;
   t.lossFromInit = !o.lossGiven;
   t.coarseToFine = o.coarseToFine;
   t.creasePatches = o.creasePatches;
@@ -229,6 +232,11 @@ void setupTrain(CLI::App& root) {
                   "last layer and the output head; earlier layers and batch-norm statistics stay "
                   "the init model's)")
       ->check(CLI::IsMember({"everything", "head"}));
+  cmd->add_flag("--keep-init", o->keepInit,
+                "With --init: keep the init model's networks and add the fine-tuned one beside "
+                "them (the model predicts the mean of their fields, with the init's point "
+                "extraction; a network an earlier --keep-init added is replaced): what the init "
+                "knew stays in every prediction");
   cmd->add_option("--lr", o->lr,
                   "Peak learning rate of AdamW (cosine schedule; default 3e-3, 1e-3 with --init)")
       ->check(CLI::PositiveNumber);

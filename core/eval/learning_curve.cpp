@@ -243,6 +243,7 @@ LearningCurveReport runLearningCurve(const LearningCurveOptions& options) {
   report.ks = options.ks;
   report.replay = options.replay;
   report.adapted = options.adapted;
+  report.keepInitNetworks = options.keepInitNetworks;
   report.guarded = options.guarded;
   report.epochs = options.epochs > 0 || options.minutes > 0 ? options.epochs : kDefaultEpochs;
   report.minutes = options.minutes;
@@ -361,6 +362,7 @@ LearningCurveReport runLearningCurve(const LearningCurveOptions& options) {
         t.training.minutes = options.minutes;
         t.training.learningRate = kFineTuneLearningRate;
         t.training.adapted = options.adapted;
+        t.keepInitNetworks = options.keepInitNetworks;
         t.training.seed = options.seed;
         t.command = "sagrid eval --learning-curve (fold " + std::to_string(foldNumber) + ", k " +
                     std::to_string(used) + ")";
@@ -440,6 +442,7 @@ std::string learningCurveMarkdown(const LearningCurveReport& r) {
                                         : std::to_string(r.epochs) + " epoch(s)")
      << " per fine-tune, " << (r.replay ? "with" : "without")
      << " bench replay, adapting " << (r.adapted == model::AdaptedPart::Head ? "the last layer and head only, batch-norm statistics kept" : "every weight")
+     << (r.keepInitNetworks ? ", the init model's networks kept beside the fine-tuned one" : "")
      << "). Error: the paper's metric (distance from the single predicted point to "
         "the nearest ground truth) on the held-out fold, mean ± sd across folds, in cm. k = 0 "
         "is the init model.\n";
@@ -494,6 +497,7 @@ json learningCurveJson(const LearningCurveReport& r) {
   j["minutes"] = r.minutes;
   j["replay"] = r.replay;
   j["adapted"] = model::toString(r.adapted);
+  j["keep_init"] = r.keepInitNetworks;
   j["guarded"] = r.guarded;
   j["ks"] = json::array();
   for (int k : r.ks) j["ks"].push_back(kLabel(k));

@@ -33,6 +33,8 @@ struct LearningCurveOptions {
   double minutes = 0;   // per fine-tune; both 0 = 5 epochs
   bool replay = true;   // replay beside the k objects (weighted 1:1)
   model::AdaptedPart adapted = model::AdaptedPart::Everything;  // what each fine-tune changes
+  // Each fine-tune keeps the init model's networks beside the fine-tuned one (`train --keep-init`).
+  bool keepInitNetworks = false;
   // Each fine-tune guarded as `train --guard` guards it (core/training/guarded_update.h): a
   // quarter of the training folds' sources (at least one, seeded) is the guard set and the k
   // objects come from the rest; the fine-tuned model is kept only where its error on the guard
@@ -64,6 +66,7 @@ struct LearningCurveReport {
   std::vector<LearningCurvePoint> points;
   bool replay = true;
   model::AdaptedPart adapted = model::AdaptedPart::Everything;
+  bool keepInitNetworks = false;
   bool guarded = false;
   int epochs = 0;
   double minutes = 0;

@@ -32,7 +32,8 @@ std::string freeMemberFile(const ModelCard& card, const fs::path& dir) {
 }
 }  // namespace
 
-fs::path addEnsembleMember(const fs::path& cardFile, const fs::path& memberCardFile) {
+fs::path addEnsembleMember(const fs::path& cardFile, const fs::path& memberCardFile,
+                           const std::string& role) {
   ModelCard card = readModelCard(cardFile);
   const ModelCard member = readModelCard(memberCardFile);
   requireSame(card, member, memberCardFile);
@@ -53,9 +54,57 @@ fs::path addEnsembleMember(const fs::path& cardFile, const fs::path& memberCardF
   nlohmann::json record = member.training;
   record["file"] = file;
   record["final_train_loss"] = member.metrics.value("final_train_loss", nlohmann::json());
+  if (!role.empty()) record["role"] = role;
   card.training["ensemble"].push_back(record);
   writeModelCard(cardFile, card);
   return copied;
+}
+
+fs::path keepInitNetworks(const fs::path& initCardFile, const fs::path& fineTunedCardFile,
+                          const fs::path& outDir) {
+  ModelCard card = readModelCard(initCardFile);
+  const ModelCard fineTuned = readModelCard(fineTunedCardFile);
+  requireSame(card, fineTuned, fineTunedCardFile);
+  AffordanceModel::load(fineTunedCardFile);  // its weights against its card, before any write
+  // The init's networks but an earlier fine-tune's (its record names it by file and role).
+  const nlohmann::json records = card.training.value("ensemble", nlohmann::json::array());
+  auto roleOf = [&](const std::string& file) {
+    for (const auto& r : records)
+      if (r.value("file", "") == file) return r.value("role", "");
+    return std::string();
+  };
+  std::vector<WeightsFile> kept, dropped;
+  for (const auto& m : card.ensemble) (roleOf(m.file) == kFineTuneRole ? dropped : kept).push_back(m);
+  nlohmann::json keptRecords = nlohmann::json::array();
+  for (const auto& r : records)
+    if (r.value("role", "") != kFineTuneRole) keptRecords.push_back(r);
+  card.ensemble = kept;
+  if (card.training.contains("ensemble")) card.training["ensemble"] = keptRecords;
+
+  const fs::path fromDir = fs::absolute(initCardFile).parent_path();
+  const std::string sha = sha256Hex(readFileBytes(fineTunedCardFile.parent_path() / fineTuned.weightsFile));
+  bool known = sha == card.weightsSha256;
+  for (const auto& m : kept) known = known || m.sha256 == sha;
+  if (known)
+    throw ModelError(fineTunedCardFile.string() + ": its weights are the init model's own (" +
+                     initCardFile.string() + "): nothing was fine-tuned");
+
+  fs::create_directories(outDir);
+  const bool inPlace = fs::equivalent(fromDir, outDir);
+  if (!inPlace) {
+    std::vector<std::string> files{card.weightsFile};
+    for (const auto& m : kept) files.push_back(m.file);
+    for (const auto& f : files) writeFileAtomic(outDir / f, readFileBytes(fromDir / f));
+  }
+  // The dropped fine-tune's weights (or a copy of them) would only be mistaken for a member.
+  for (const auto& m : dropped) {
+    std::error_code ignored;
+    fs::remove(outDir / m.file, ignored);
+  }
+  const fs::path outCard = outDir / (card.name + ".json");
+  writeModelCard(outCard, card);
+  addEnsembleMember(outCard, fineTunedCardFile, kFineTuneRole);
+  return outCard;
 }
 
 }  // namespace sagrid::model

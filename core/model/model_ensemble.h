@@ -5,6 +5,7 @@
 #pragma once
 
 #include <filesystem>
+#include <string>
 
 namespace sagrid::model {
 
@@ -17,7 +18,23 @@ namespace sagrid::model {
 // differs when the member is not the same model (name, architecture, mode, feature backend,
 // config or channels, descriptor or grid size), is itself an ensemble, or has the model's own or
 // a member's weights. Nothing is written when it throws.
+// `role`, when given, is recorded with the member's training record (training.ensemble[i].role).
 std::filesystem::path addEnsembleMember(const std::filesystem::path& card,
-                                        const std::filesystem::path& memberCard);
+                                        const std::filesystem::path& memberCard,
+                                        const std::string& role = {});
+
+// The role of a member a fine-tune added beside the networks it started from.
+inline constexpr const char* kFineTuneRole = "fine-tune";
+
+// A fine-tune that keeps what its init model knew (`train --keep-init`): writes into `outDir` the
+// init model of `initCard` (its card, point extraction and networks) with the network of
+// `fineTunedCard` added as a member of role kFineTuneRole, so the model predicts the mean of the
+// init's fields and the fine-tuned one's. A member of that role the init already has (an earlier
+// such fine-tune, trained on less of the curated data) is dropped first. `outDir` may be the
+// init's own folder. Returns the written card. Throws as addEnsembleMember does; nothing in
+// `outDir` changes when the fine-tuned network is refused.
+std::filesystem::path keepInitNetworks(const std::filesystem::path& initCard,
+                                       const std::filesystem::path& fineTunedCard,
+                                       const std::filesystem::path& outDir);
 
 }  // namespace sagrid::model

@@ -16,6 +16,7 @@
 #include "core/mesh/mesh_import.h"
 #include "core/model/affordance_model.h"
 #include "core/model/architecture.h"
+#include "core/model/model_ensemble.h"
 #include "core/plot/plot.h"
 #include "core/training/sample_mixing.h"
 
@@ -142,6 +143,8 @@ DatasetTrainingResult trainFromDataset(const DatasetTrainingOptions& options) {
     initCard = resolveInitCard(options.init, options.modelName);
     init = model::readModelCard(initCard);
   }
+  if (options.keepInitNetworks && !init)
+    throw InvalidArgument("keeping the init model's networks needs an init model (--init)");
 
   // Read every manifest first, so feature progress counts over all datasets.
   std::vector<std::vector<DatasetEntry>> entries;
@@ -249,8 +252,12 @@ DatasetTrainingResult trainFromDataset(const DatasetTrainingOptions& options) {
   for (double v : featureSum)
     card.affordanceFeatureMean.push_back(static_cast<float>(v / featureCount));
 
-  fs::create_directories(options.outDir);
-  result.cardFile = options.outDir / (options.modelName + ".json");
+  // Kept beside the init's networks, the fine-tuned network is saved apart first.
+  const fs::path saveDir = options.keepInitNetworks
+                               ? options.outDir / ("." + options.modelName + ".fine-tune")
+                               : options.outDir;
+  fs::create_directories(saveDir);
+  result.cardFile = saveDir / (options.modelName + ".json");
   model::TrainingOptions training = options.training;
   training.vectorChannels = vectorChannels;
   if (sources.size() > 1) training.sampleWeights = mixedSampleWeights(sizes, weights);
@@ -372,9 +379,15 @@ DatasetTrainingResult trainFromDataset(const DatasetTrainingOptions& options) {
   writeLossCurve(options.outDir / (options.modelName + ".loss.csv"),
                  options.outDir / (options.modelName + ".loss.png"), options.modelName,
                  result.curve);
+  result.card = net.card();
+  if (options.keepInitNetworks) {
+    result.cardFile = model::keepInitNetworks(initCard, result.cardFile, options.outDir);
+    result.card = model::readModelCard(result.cardFile);
+    result.recalibrated = false;  // the init's point extraction
+    fs::remove_all(saveDir);
+  }
   std::error_code ignored;
   fs::remove(training.checkpointFile, ignored);  // finished: the weights are saved
-  result.card = net.card();
   result.objectsUsed = samples.size();
   return result;
 }

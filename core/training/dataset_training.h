@@ -44,6 +44,11 @@ struct DatasetTrainingOptions {
   // With `init`: train with the init card's loss settings (near weight and radius, target cap)
   // instead of those in `training`, so the fine-tune optimizes what the model was trained for.
   bool lossFromInit = true;
+  // With `init`: the result keeps the init model's networks and adds the fine-tuned one beside
+  // them (core/model/model_ensemble.h keepInitNetworks: the mean of their fields, the init's card
+  // and point extraction, an earlier such fine-tune's network replaced), so what the init knew
+  // stays in every prediction (`train --keep-init`).
+  bool keepInitNetworks = false;
   // The card's point_extraction.coarse_to_fine (annotate's second pass for this model); unset:
   // the init card's, false without one.
   std::optional<bool> coarseToFine;

@@ -277,6 +277,7 @@ void TrainingWorker::runPointModels(const TrainingRequest& request) {
     if (!request.initDir.empty() &&
         fs::is_regular_file(request.initDir / (options.modelName + ".json"))) {
       options.init = request.initDir;
+      options.keepInitNetworks = request.keepInitNetworks;
       options.training.learningRate = kFineTuneLearningRate;
       if (request.replay) {
         update([&](TrainingStatus& s) {

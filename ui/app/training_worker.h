@@ -28,6 +28,9 @@ struct TrainingRequest {
   // `sagrid train --init DIR` does; a type without a model there is trained from scratch.
   std::filesystem::path initDir;
   bool replay = true;  // with initDir: the bench split's train half replayed 1:1 beside the set
+  // With initDir: each fine-tuned network joins the init model's networks instead of replacing
+  // them, as `sagrid train --keep-init` does.
+  bool keepInitNetworks = false;
   // With initDir: curated objects of other sources; each fine-tuned model replaces the init one
   // only where it is better there (core/training/guarded_update.h). Empty: unguarded.
   std::filesystem::path heldOut;

@@ -14,6 +14,7 @@ void drawTrainPanel(Session& session, TrainingWorker& worker,
   if (!ImGui::CollapsingHeader("Train")) return;
   static float minutes = 1.0f;  // UI preference only, not document state
   static char heldOut[512] = "";  // curated objects of other sources: the guard's
+  static bool keepInit = false;   // the fine-tuned network joins the loaded ones
   const AnnotationDocument* doc = session.document();
   const std::string category = doc ? doc->labels().object.category : std::string();
   ImGui::TextWrapped("Training set: %s", session.trainingSetDir.string().c_str());
@@ -31,6 +32,11 @@ void drawTrainPanel(Session& session, TrainingWorker& worker,
                           "each fine-tuned model is adopted only where it is better there");
       if (heldOut[0] == '\0')
         ImGui::TextDisabled("Unguarded: every fine-tuned model is kept, better or not");
+      ImGui::Checkbox("keep the loaded networks", &keepInit);
+      if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("Each fine-tuned network joins the loaded model's networks (their "
+                          "fields averaged) instead of replacing them, so what they knew stays; "
+                          "a network an earlier such fine-tune added is replaced");
     }
     ImGui::BeginDisabled(category.empty());
     const std::string label = category.empty()        ? "Train (set a category)"
@@ -44,6 +50,7 @@ void drawTrainPanel(Session& session, TrainingWorker& worker,
       r.outDir = modelsOut;
       r.initDir = initModels;
       r.heldOut = heldOut;
+      r.keepInitNetworks = keepInit;
       r.requeue = session.queue().entries();
       return r;
     };

@@ -1,6 +1,7 @@
 // Ensembles (core/model/model_ensemble.h): a card that lists more networks predicts the mean of
 // their fields; members of another model, replaced member weights and ensembles that training
-// would overwrite are refused with the file named.
+// would overwrite are refused with the file named. A fine-tune kept beside its init's networks
+// replaces an earlier fine-tune and keeps the init's other members and card.
 #include "core/model/model_ensemble.h"
 
 #include <gmock/gmock.h>
@@ -143,6 +144,68 @@ TEST(ModelEnsemble, TrainingDoesNotSaveAnEnsemble) {
   ensemble.card().ensemble.clear();
   EXPECT_EQ(ensemble.networkCount(), 1u);
   EXPECT_EQ(ensemble.predictDistances(smallGrid()), single);
+}
+
+// What keepInitNetworks writes: the init's networks (its members but an earlier fine-tune) and
+// the fine-tuned one, under the init's card.
+TEST(ModelEnsemble, AFineTuneKeptBesideItsInitReplacesTheEarlierFineTune) {
+  const fs::path init = savedNetwork("stove.togglebutton", 1);
+  addEnsembleMember(init, savedNetwork("stove.togglebutton", 2));  // trained apart: stays
+  ModelCard initCard = readModelCard(init);
+  initCard.extraction.maxDistance = 0.123f;  // a calibration of the init's own
+  writeModelCard(init, initCard);
+  const FeatureGrid grid = smallGrid();
+  const std::vector<float> initField = AffordanceModel::load(init).predictDistances(grid);
+  const fs::path tuned = savedNetwork("stove.togglebutton", 3);
+  const std::vector<float> tunedField = AffordanceModel::load(tuned).predictDistances(grid);
+
+  const fs::path out = test::freshTempDir("kept") / "models";
+  const fs::path card = keepInitNetworks(init, tuned, out);
+  EXPECT_EQ(card, out / "stove.togglebutton.json");
+  const ModelCard first = readModelCard(card);
+  EXPECT_EQ(first.weightsSha256, initCard.weightsSha256);
+  EXPECT_FLOAT_EQ(first.extraction.maxDistance, 0.123f);
+  ASSERT_EQ(first.ensemble.size(), 2u);
+  EXPECT_EQ(first.ensemble[1].sha256, readModelCard(tuned).weightsSha256);
+  EXPECT_EQ(first.training["ensemble"][1]["role"], kFineTuneRole);
+  EXPECT_FALSE(first.training["ensemble"][0].contains("role"));
+  // Three networks, equally weighted: two thirds the init's mean field, a third the fine-tune's.
+  const std::vector<float> mean = AffordanceModel::load(card).predictDistances(grid);
+  for (std::size_t i = 0; i < mean.size(); ++i)
+    EXPECT_NEAR(mean[i], (2.0f * initField[i] + tunedField[i]) / 3.0f, 1e-5f);
+
+  // The next fine-tune from this model, in its own folder: the earlier fine-tune goes, file too.
+  const fs::path again = savedNetwork("stove.togglebutton", 4);
+  keepInitNetworks(card, again, out);
+  const ModelCard second = readModelCard(card);
+  ASSERT_EQ(second.ensemble.size(), 2u);
+  EXPECT_EQ(second.ensemble[0].sha256, first.ensemble[0].sha256);
+  EXPECT_EQ(second.ensemble[1].sha256, readModelCard(again).weightsSha256);
+  EXPECT_EQ(second.training["ensemble"].size(), 2u);
+  EXPECT_FALSE(fs::exists(out / "stove.togglebutton.member3.pt"));
+  EXPECT_EQ(AffordanceModel::load(card).networkCount(), 3u);
+}
+
+TEST(ModelEnsemble, AFineTuneOfAnotherModelOrNoneAtAllLeavesTheFolderAlone) {
+  const fs::path init = savedNetwork("sink.togglebutton", 1);
+  const fs::path out = test::freshTempDir("refused") / "models";
+  try {
+    keepInitNetworks(init, savedNetwork("sink.fluidsource", 2), out);
+    ADD_FAILURE() << "another model's network was kept";
+  } catch (const ModelError& e) {
+    EXPECT_THAT(e.what(), HasSubstr("sink.fluidsource"));
+  }
+  // Weights that are the init's own: nothing was fine-tuned.
+  const fs::path same = test::freshTempDir("same") / "sink.togglebutton.json";
+  fs::copy_file(init, same);
+  fs::copy_file(init.parent_path() / "sink.togglebutton.pt", same.parent_path() / "sink.togglebutton.pt");
+  try {
+    keepInitNetworks(init, same, out);
+    ADD_FAILURE() << "the init's own weights were added as a fine-tune";
+  } catch (const ModelError& e) {
+    EXPECT_THAT(e.what(), HasSubstr("nothing was fine-tuned"));
+  }
+  EXPECT_FALSE(fs::exists(out));
 }
 
 }  // namespace

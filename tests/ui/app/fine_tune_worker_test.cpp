@@ -24,7 +24,8 @@ void generateStove(const fs::path& out, int seed) {
 
 // A one-epoch fine-tune of the shipped stove models on `dir`/train into `dir`/models, without the
 // bench replay (the CLI exercises it; this keeps the test fast), to its end.
-TrainingStatus fineTune(const fs::path& dir, const fs::path& heldOut, int seconds) {
+TrainingStatus fineTune(const fs::path& dir, const fs::path& heldOut, int seconds,
+                        bool keepInit = false) {
   TrainingWorker worker;
   TrainingRequest request;
   request.dataset = dir / "train";
@@ -34,6 +35,7 @@ TrainingStatus fineTune(const fs::path& dir, const fs::path& heldOut, int second
   request.initDir = kShipped;
   request.replay = false;
   request.heldOut = heldOut;
+  request.keepInitNetworks = keepInit;
   worker.start(request);
   for (int i = 0; i < 20 * seconds && worker.running(); ++i)
     std::this_thread::sleep_for(std::chrono::milliseconds(50));
@@ -54,6 +56,24 @@ TEST(FineTuneWorker, InitsFromTheLoadedModels) {
     EXPECT_EQ(card.training.at("init").at("weights_sha256"), init.weightsSha256);
     EXPECT_DOUBLE_EQ(card.training.at("learning_rate").get<double>(), 1e-3);
     EXPECT_EQ(card.architecture, init.architecture);
+  }
+}
+
+// "keep the loaded networks": each fine-tuned network joins the loaded model's networks (the
+// knob model's member trained apart stays), under the loaded card.
+TEST(FineTuneWorker, KeepsTheLoadedNetworksBesideTheFineTune) {
+  const auto dir = sagrid::test::freshTempDir();
+  generateStove(dir / "train", 31);
+  const TrainingStatus status = fineTune(dir, {}, 60, true);
+  ASSERT_TRUE(status.error.empty()) << status.error;
+  for (const char* name : {"stove.heatsource", "stove.togglebutton"}) {
+    const auto card = model::readModelCard(dir / "models" / (std::string(name) + ".json"));
+    const auto init = model::readModelCard(kShipped / (std::string(name) + ".json"));
+    EXPECT_EQ(card.weightsSha256, init.weightsSha256) << name;
+    ASSERT_EQ(card.ensemble.size(), init.ensemble.size() + 1) << name;
+    for (std::size_t i = 0; i < init.ensemble.size(); ++i)
+      EXPECT_EQ(card.ensemble[i].sha256, init.ensemble[i].sha256) << name;
+    EXPECT_EQ(card.training["ensemble"].back()["role"], "fine-tune") << name;
   }
 }
 
