@@ -5,10 +5,12 @@ pools its sources.
 
     python3 tests/benchmarks/fold_decisions.py --lc LC/learning_curve.json [--lc ...]
         [--baseline CV/scorer_cv.json] CV1/scorer_cv.json CV2/scorer_cv.json ...
+        [--per-model]
         --lc: learning curves whose "folds" say which objects each fold holds (fold n of every
         --lc is the n-th CV file's; objects of no --lc fold are left out, so one --lc alone gives
         that curve's objects, e.g. the sinks); --baseline: one run over the same objects, beside.
-        Prints objects, edits per hand point, one key and the single-point error (cm).
+        Prints objects, edits per hand point, one key and the single-point error (cm); with
+        --per-model also each model's edits and the mean error of its first point (cm).
 """
 import json
 import sys
@@ -30,12 +32,27 @@ def figures(decisions):
             f"{sum(errors) / len(errors):.1f} cm")
 
 
+def per_model(decisions):
+    by_model = defaultdict(list)
+    for d in decisions:
+        by_model[d['model']].append(d)
+    lines = []
+    for model, ds in sorted(by_model.items()):
+        errors = [d['best_point_error_m'] * 100 for d in ds
+                  if d['truth_points'] > 0 and d['best_point_error_m'] is not None]
+        lines.append(f"  {model}: {sum(decision_edits(d) for d in ds)} edits, first point "
+                     f"{sum(errors) / len(errors):.1f} cm" if errors else f"  {model}: no points")
+    return '\n'.join(lines)
+
+
 def main(argv):
-    curves, runs, baseline = [], [], None
+    curves, runs, baseline, models = [], [], None, False
     rest = iter(argv)
     for arg in rest:
         if arg == '--lc':
             curves.append(json.load(open(next(rest)))['folds'])
+        elif arg == '--per-model':
+            models = True
         elif arg == '--baseline':
             baseline = json.load(open(next(rest)))['held_out_decisions']
         else:
@@ -51,9 +68,14 @@ def main(argv):
     if not pooled:
         sys.exit('no decision of a --lc fold in its CV file: are the files in fold order?')
     print('each fold its own networks:', figures(pooled))
+    if models:
+        print(per_model(pooled))
     if baseline is not None:
         kept = {d['object'] for d in pooled}
-        print('baseline, the same objects:', figures([d for d in baseline if d['object'] in kept]))
+        same = [d for d in baseline if d['object'] in kept]
+        print('baseline, the same objects:', figures(same))
+        if models:
+            print(per_model(same))
 
 
 if __name__ == '__main__':
