@@ -48,6 +48,34 @@ TEST(FineTuneCli, InitFromShippedModelsOnARealDevStyleFolder) {
   EXPECT_NE(card.at("weights").at("sha256"), shipped.at("weights").at("sha256"));
 }
 
+// --keep-init: the shipped network and card stay, the fine-tuned network joins them; without
+// --init there is nothing to keep, and it says so before training.
+TEST(FineTuneCli, KeepInitAddsTheFineTuneBesideTheShippedNetwork) {
+  const fs::path dir = test::freshTempDir();
+  gen::generateDataset({{"stove", 1, 23}}, gen::MeshFormat::Obj, dir / "real");
+  gen::generateDataset({{"stove", 1, 24}}, gen::MeshFormat::Obj, dir / "replay");
+  const std::string data = " --data " + shellQuote((dir / "real").string()) +
+                           " --model stove.heatsource --epochs 1 --keep-init --out " +
+                           shellQuote((dir / "out").string());
+  const auto r = test::runSagridInSource("train" + data + " --init resources/models --replay " +
+                                         shellQuote((dir / "replay").string()));
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  const auto card = nlohmann::json::parse(readFileBytes(dir / "out" / "stove.heatsource.json"));
+  const auto shipped = nlohmann::json::parse(
+      readFileBytes(fs::path(SAGRID_SOURCE_DIR) / "resources/models/stove.heatsource.json"));
+  EXPECT_EQ(card.at("weights").at("sha256"), shipped.at("weights").at("sha256"));
+  EXPECT_EQ(card.at("point_extraction"), shipped.at("point_extraction"));
+  ASSERT_EQ(card.at("weights").at("ensemble").size(), 1u);
+  const auto& member = card.at("training").at("ensemble").back();
+  EXPECT_EQ(member.at("role"), "fine-tune");
+  EXPECT_THAT(member.at("command").get<std::string>(), HasSubstr("--keep-init"));
+  EXPECT_TRUE(fs::exists(dir / "out" / card.at("weights").at("ensemble")[0].at("file").get<std::string>()));
+
+  const auto refused = test::runSagridInSource("train" + data);
+  EXPECT_NE(refused.exitCode, 0);
+  EXPECT_THAT(refused.output, HasSubstr("--init"));
+}
+
 TEST(FineTuneCli, ReplayWithoutInitAndMismatchedArchitectureAreClearErrors) {
   const fs::path dir = test::freshTempDir();
   gen::generateDataset({{"stove", 1, 23}}, gen::MeshFormat::Obj, dir / "real");
