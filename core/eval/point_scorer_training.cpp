@@ -966,17 +966,9 @@ std::string scorerCrossValidationMarkdown(const ScorerCrossValidation& cv) {
   return md.str();
 }
 
-nlohmann::json toJson(const ScorerCrossValidation& cv) {
-  nlohmann::json folds = nlohmann::json::array();
-  for (const auto& f : cv.folds)
-    folds.push_back({{"source", f.source},
-                     {"objects", f.objects},
-                     {"count", toJson(f.count)},
-                     {"generated_only", toJson(f.generatedOnly)},
-                     {"with_curated", toJson(f.withCurated)},
-                     {"true_count", toJson(f.trueCount)}});
+nlohmann::json toJson(const std::vector<HeldOutDecision>& held) {
   nlohmann::json decisions = nlohmann::json::array();
-  for (const auto& d : cv.decisions)
+  for (const auto& d : held)
     decisions.push_back({{"source", d.source},
                          {"object", d.object},
                          {"model", d.model},
@@ -988,6 +980,19 @@ nlohmann::json toJson(const ScorerCrossValidation& cv) {
                          {"deletions", d.edits.deletions},
                          {"best_point_error_m", d.bestPointError},
                          {"nearest_candidate_error_m", d.nearestCandidateError}});
+  return decisions;
+}
+
+nlohmann::json toJson(const ScorerCrossValidation& cv) {
+  nlohmann::json folds = nlohmann::json::array();
+  for (const auto& f : cv.folds)
+    folds.push_back({{"source", f.source},
+                     {"objects", f.objects},
+                     {"count", toJson(f.count)},
+                     {"generated_only", toJson(f.generatedOnly)},
+                     {"with_curated", toJson(f.withCurated)},
+                     {"true_count", toJson(f.trueCount)}});
+  const nlohmann::json decisions = toJson(cv.decisions);
   nlohmann::json maps = nlohmann::json::array();
   for (const auto& c : cv.unseenConfidence)
     maps.push_back({{"map", c.map},

@@ -224,6 +224,8 @@ std::string toString(const ScorerVerdict& verdict);
 double signalAuc(const ScorerCrossValidation& cv);
 
 std::string scorerCrossValidationMarkdown(const ScorerCrossValidation& cv);
+// scorer_cv.json's `held_out_decisions`: one object per decision.
+nlohmann::json toJson(const std::vector<HeldOutDecision>& decisions);
 nlohmann::json toJson(const ScorerCrossValidation& cv);
 
 }  // namespace sagrid

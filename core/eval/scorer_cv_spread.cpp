@@ -63,6 +63,7 @@ ScorerCvSpread scorerCvSpread(const std::vector<CandidateSet>& sets,
                                              training, noCurve);
     spread.all.push_back(cv.withCurated);
     spread.unseen.push_back(cv.unseenWithCurated);
+    spread.decisions.push_back(cv.decisions);
   }
   return spread;
 }
@@ -105,7 +106,10 @@ nlohmann::json toJson(const ScorerCvSpread& spread) {
   for (std::size_t r = 0; r < spread.all.size(); ++r)
     repeats.push_back({{"seed", spread.firstSeed + r},
                        {"with_curated", toJson(spread.all[r])},
-                       {"unseen_with_curated", toJson(spread.unseen[r])}});
+                       {"unseen_with_curated", toJson(spread.unseen[r])},
+                       {"held_out_decisions", r < spread.decisions.size()
+                                                  ? toJson(spread.decisions[r])
+                                                  : nlohmann::json::array()}});
   return {{"left_out_generated_share", spread.leftOutShare}, {"repeats", repeats}};
 }
 

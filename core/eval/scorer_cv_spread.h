@@ -27,6 +27,9 @@ struct ScorerCvSpread {
   // Per repeat, the decision fitted with the curated objects of the other sources: over every
   // fold, and over the folds of sources not tuned on (ScorerCurveOptions::tunedOn).
   std::vector<PointChoiceFigures> all, unseen;
+  // Per repeat, every held-out decision (object by object, so runs on other candidate files of
+  // the same objects pair repeat by repeat and object by object).
+  std::vector<std::vector<HeldOutDecision>> decisions;
 };
 
 // `repeats` cross-validations (crossValidatePointScorer, without a learning curve) of `sets`

@@ -5,12 +5,14 @@ pools its sources.
 
     python3 tests/benchmarks/fold_decisions.py --lc LC/learning_curve.json [--lc ...]
         [--baseline CV/scorer_cv.json] CV1/scorer_cv.json CV2/scorer_cv.json ...
-        [--per-model]
+        [--per-model] [--repeat SEED]
         --lc: learning curves whose "folds" say which objects each fold holds (fold n of every
         --lc is the n-th CV file's; objects of no --lc fold are left out, so one --lc alone gives
         that curve's objects, e.g. the sinks); --baseline: one run over the same objects, beside.
         Prints objects, edits per hand point, one key and the single-point error (cm); with
-        --per-model also each model's edits and the mean error of its first point (cm).
+        --per-model also each model's edits and the mean error of its first point (cm). With
+        --repeat, every file's decisions are those of its `scorer cv --repeats` repeat of that
+        seed (the same generated objects left out in each run), not its full run's.
 """
 import json
 import sys
@@ -45,18 +47,33 @@ def per_model(decisions):
     return '\n'.join(lines)
 
 
+def decisions_of(path, seed):
+    report = json.load(open(path))
+    if seed is None:
+        return report['held_out_decisions']
+    for r in report.get('spread', {}).get('repeats', []):
+        if r['seed'] == seed:
+            return r['held_out_decisions']
+    sys.exit(f'{path}: no repeat of seed {seed}')
+
+
 def main(argv):
-    curves, runs, baseline, models = [], [], None, False
+    curves, runs, baseline, models, seed = [], [], None, False, None
+    for i, arg in enumerate(argv):
+        if arg == '--repeat':
+            seed = int(argv[i + 1])
     rest = iter(argv)
     for arg in rest:
         if arg == '--lc':
             curves.append(json.load(open(next(rest)))['folds'])
         elif arg == '--per-model':
             models = True
+        elif arg == '--repeat':
+            next(rest)
         elif arg == '--baseline':
-            baseline = json.load(open(next(rest)))['held_out_decisions']
+            baseline = decisions_of(next(rest), seed)
         else:
-            runs.append(json.load(open(arg))['held_out_decisions'])
+            runs.append(decisions_of(arg, seed))
     if not curves or not runs:
         sys.exit(__doc__)
     fold_of = {}

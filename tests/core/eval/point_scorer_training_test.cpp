@@ -404,6 +404,8 @@ TEST(ScorerCvSpread, RepeatsWithNothingLeftOutReadAsTheFullCrossValidation) {
   for (std::size_t r = 0; r < 2; ++r) {
     EXPECT_EQ(same.all[r].edits.total(), full.withCurated.edits.total());
     EXPECT_EQ(same.unseen[r].edits.total(), full.unseenWithCurated.edits.total());
+    // Each repeat lists its decisions object by object, as the full run does.
+    EXPECT_EQ(toJson(same)["repeats"][r]["held_out_decisions"], toJson(full)["held_out_decisions"]);
   }
   // Most generated objects left out: every repeat still decides every unseen source's objects.
   const ScorerCvSpread fewer = scorerCvSpread(sets, {}, curve, 3, 0.9, 1);
