@@ -5,14 +5,16 @@ pools its sources.
 
     python3 tests/benchmarks/fold_decisions.py --lc LC/learning_curve.json [--lc ...]
         [--baseline CV/scorer_cv.json] CV1/scorer_cv.json CV2/scorer_cv.json ...
-        [--per-model] [--repeat SEED]
+        [--per-model] [--repeats SEED,SEED,...]
         --lc: learning curves whose "folds" say which objects each fold holds (fold n of every
         --lc is the n-th CV file's; objects of no --lc fold are left out, so one --lc alone gives
         that curve's objects, e.g. the sinks); --baseline: one run over the same objects, beside.
         Prints objects, edits per hand point, one key and the single-point error (cm); with
         --per-model also each model's edits and the mean error of its first point (cm). With
-        --repeat, every file's decisions are those of its `scorer cv --repeats` repeat of that
-        seed (the same generated objects left out in each run), not its full run's.
+        --repeats, the same for each of those `scorer cv --repeats` repeats of every file (the
+        same generated objects left out in each run) instead of the full runs, then the means
+        over them and, with --baseline, the mean paired difference and how many repeats are
+        lower / higher than the baseline's.
 """
 import json
 import sys
@@ -21,7 +23,8 @@ from collections import defaultdict
 from scorer_cv_pairs import edits as decision_edits
 
 
-def figures(decisions):
+def numbers(decisions):
+    """Edits per hand point, one key (%) and the mean single-point error (cm) of the decisions."""
     edits, hand, errors = defaultdict(int), 0, []
     for d in decisions:
         edits[d['object']] += decision_edits(d)
@@ -29,9 +32,13 @@ def figures(decisions):
         if d['truth_points'] > 0 and d['best_point_error_m'] is not None:
             errors.append(d['best_point_error_m'] * 100)
     one_key = sum(1 for e in edits.values() if e == 0)
-    return (f"{len(edits)} objects: {sum(edits.values()) / hand:.2f} edits per hand point, "
-            f"{100 * one_key / len(edits):.0f} % one key, "
-            f"{sum(errors) / len(errors):.1f} cm")
+    return len(edits), sum(edits.values()) / hand, 100 * one_key / len(edits), sum(errors) / len(errors)
+
+
+def figures(decisions):
+    objects, edits, one_key, error = numbers(decisions)
+    return (f"{objects} objects: {edits:.2f} edits per hand point, {one_key:.0f} % one key, "
+            f"{error:.1f} cm")
 
 
 def per_model(decisions):
@@ -57,25 +64,9 @@ def decisions_of(path, seed):
     sys.exit(f'{path}: no repeat of seed {seed}')
 
 
-def main(argv):
-    curves, runs, baseline, models, seed = [], [], None, False, None
-    for i, arg in enumerate(argv):
-        if arg == '--repeat':
-            seed = int(argv[i + 1])
-    rest = iter(argv)
-    for arg in rest:
-        if arg == '--lc':
-            curves.append(json.load(open(next(rest)))['folds'])
-        elif arg == '--per-model':
-            models = True
-        elif arg == '--repeat':
-            next(rest)
-        elif arg == '--baseline':
-            baseline = decisions_of(next(rest), seed)
-        else:
-            runs.append(decisions_of(arg, seed))
-    if not curves or not runs:
-        sys.exit(__doc__)
+def read_off(curves, runs, baseline, models, label=''):
+    """Prints the figures of each object's own fold's run (and the baseline's on the same
+    objects); returns both as numbers()."""
     fold_of = {}
     for folds in curves:
         for n, objects in enumerate(folds):
@@ -84,15 +75,53 @@ def main(argv):
     pooled = [d for n, run in enumerate(runs) for d in run if fold_of.get(d['object']) == n]
     if not pooled:
         sys.exit('no decision of a --lc fold in its CV file: are the files in fold order?')
-    print('each fold its own networks:', figures(pooled))
+    print(f'{label}each fold its own networks:', figures(pooled))
     if models:
         print(per_model(pooled))
-    if baseline is not None:
-        kept = {d['object'] for d in pooled}
-        same = [d for d in baseline if d['object'] in kept]
-        print('baseline, the same objects:', figures(same))
-        if models:
-            print(per_model(same))
+    if baseline is None:
+        return numbers(pooled), None
+    kept = {d['object'] for d in pooled}
+    same = [d for d in baseline if d['object'] in kept]
+    print(f'{label}baseline, the same objects:', figures(same))
+    if models:
+        print(per_model(same))
+    return numbers(pooled), numbers(same)
+
+
+def main(argv):
+    curves, files, baseline, models, seeds = [], [], None, False, None
+    rest = iter(argv)
+    for arg in rest:
+        if arg == '--lc':
+            curves.append(json.load(open(next(rest)))['folds'])
+        elif arg == '--per-model':
+            models = True
+        elif arg == '--repeats':
+            seeds = [int(s) for s in next(rest).split(',')]
+        elif arg == '--baseline':
+            baseline = next(rest)
+        else:
+            files.append(arg)
+    if not curves or not files:
+        sys.exit(__doc__)
+    if seeds is None:
+        read_off(curves, [decisions_of(f, None) for f in files],
+                 baseline and decisions_of(baseline, None), models)
+        return
+    pairs = [read_off(curves, [decisions_of(f, seed) for f in files],
+                      baseline and decisions_of(baseline, seed), models, f'repeat {seed}: ')
+             for seed in seeds]
+    names = ('edits per hand point', 'one key (%)', 'single-point error (cm)')
+    for i, name in enumerate(names, 1):
+        mine = [p[0][i] for p in pairs]
+        line = f'mean of {len(seeds)} repeats, {name}: {sum(mine) / len(mine):.3f}'
+        if baseline:
+            theirs = [p[1][i] for p in pairs]
+            diffs = [a - b for a, b in zip(mine, theirs)]
+            line += (f' against {sum(theirs) / len(theirs):.3f} (difference '
+                     f'{sum(diffs) / len(diffs):+.3f}; lower in {sum(d < 0 for d in diffs)}, '
+                     f'higher in {sum(d > 0 for d in diffs)})')
+        print(line)
 
 
 if __name__ == '__main__':
