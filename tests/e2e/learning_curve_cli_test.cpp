@@ -36,6 +36,32 @@ TEST(LearningCurveCli, FoldsReachObjectFoldersLinkedFromElsewhere) {
   EXPECT_EQ(report.at("folds")[0].size() + report.at("folds")[1].size(), 2u);
 }
 
+// --keep-init: each fold's fine-tune joins the shipped network (one member of role "fine-tune"
+// under the shipped card), and the report says so.
+TEST(LearningCurveCli, KeepInitEvaluatesEachFineTuneBesideTheShippedNetwork) {
+  const fs::path dir = test::freshTempDir();
+  gen::generateDataset({{"stove", 2, 33}}, gen::MeshFormat::Obj, dir / "data");
+  gen::generateDataset({{"stove", 1, 34}}, gen::MeshFormat::Obj, dir / "replay");
+  const auto r = test::runSagridInSource(
+      "eval --learning-curve --data " + shellQuote((dir / "data").string()) +
+      " --init resources/models --model stove.heatsource --ks 0,1 --folds 2 --epochs 1 --keep-init"
+      " --replay " + shellQuote((dir / "replay").string()) + " --out " + shellQuote((dir / "lc").string()));
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  const auto report = nlohmann::json::parse(readFileBytes(dir / "lc" / "learning_curve.json"));
+  EXPECT_EQ(report.at("keep_init"), true);
+  EXPECT_THAT(readFileBytes(dir / "lc" / "learning_curve.md"),
+              HasSubstr("the init model's networks kept beside the fine-tuned one"));
+  const auto shipped = nlohmann::json::parse(
+      readFileBytes(fs::path(SAGRID_SOURCE_DIR) / "resources/models/stove.heatsource.json"));
+  for (const char* fold : {"fold1", "fold2"}) {
+    const auto card = nlohmann::json::parse(
+        readFileBytes(dir / "lc" / "work" / fold / "k1" / "models" / "stove.heatsource.json"));
+    EXPECT_EQ(card.at("weights").at("sha256"), shipped.at("weights").at("sha256")) << fold;
+    ASSERT_EQ(card.at("weights").at("ensemble").size(), 1u) << fold;
+    EXPECT_EQ(card.at("training").at("ensemble")[0].at("role"), "fine-tune") << fold;
+  }
+}
+
 // --guard: each fold's training sources are split into the fine-tune pool and a guard set of
 // other sources, every fine-tune is judged there, and the report says which were kept.
 TEST(LearningCurveCli, AGuardedCurveJudgesEveryFineTuneOnSourcesItDidNotTrainOn) {
