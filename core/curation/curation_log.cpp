@@ -26,6 +26,7 @@ constexpr Name kNames[] = {
     {CurationAction::Retype, "retype"},
     {CurationAction::Category, "category"}, {CurationAction::ConfirmCategory, "confirm_category"},
     {CurationAction::Units, "units"},       {CurationAction::Copies, "copies"},
+    {CurationAction::Extend, "extend"},
     {CurationAction::Edit, "edit"},         {CurationAction::Undo, "undo"},
     {CurationAction::Redo, "redo"},         {CurationAction::Skip, "skip"},
     {CurationAction::Navigate, "navigate"},

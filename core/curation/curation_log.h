@@ -22,6 +22,7 @@ enum class CurationAction {
   Delete,     // a point deleted
   DeleteRest,  // the selected point and every point of its type after it deleted (one key)
   Copies,     // the selected point carried onto every copy of its part (core/geometry/points_on_copies.h)
+  Extend,     // a point one step past the selected one along its row (ui/document/point_row.h)
   Retype,     // a point's type changed
   Category,   // the object's category switched
   ConfirmCategory,  // the suggested category of a rejected object taken, with its points (one key)

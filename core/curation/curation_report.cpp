@@ -17,6 +17,8 @@ std::string klmSequence(CurationAction action) {
     case CurationAction::Delete: return "MPBBK";    // select, Del
     case CurationAction::DeleteRest: return "MPBBKK";  // select the first to go, Shift+Del
     case CurationAction::Copies: return "MPBBK";    // select, key R
+    // Key E on the point just placed or extended (the selection it leaves): no pointing.
+    case CurationAction::Extend: return "MK";
     case CurationAction::Retype: return "MPBBK";    // select, digit
     case CurationAction::Category: return "MPBBPBB";  // open the list, pick
     case CurationAction::ConfirmCategory: return "MK";  // key C
@@ -43,7 +45,7 @@ bool isEdit(CurationAction a) {
   switch (a) {
     case CurationAction::Drag: case CurationAction::Add: case CurationAction::Delete: case CurationAction::Retype:
     case CurationAction::DeleteRest:
-    case CurationAction::Copies:
+    case CurationAction::Copies: case CurationAction::Extend:
     case CurationAction::Category: case CurationAction::ConfirmCategory: case CurationAction::Units:
     case CurationAction::Edit:
       return true;

@@ -1,5 +1,6 @@
 #include "ui/app/curation_replay.h"
 
+#include <algorithm>
 #include <chrono>
 #include <map>
 #include <memory>
@@ -10,6 +11,7 @@
 #include "ui/app/session.h"
 #include "ui/document/point_commands.h"
 #include "ui/document/point_copies.h"
+#include "ui/document/point_row.h"
 #include "ui/document/units_commands.h"
 
 namespace sagrid::ui {
@@ -96,6 +98,69 @@ bool takeCopies(Session& session, const ObjectLabels& truth, std::vector<Curatio
   return false;
 }
 
+// How many extensions (E) follow point `index` of `labels` while each is a right point the plan
+// would add (`stepsLeft`: the plan's length for `labels`).
+int extensionsAfter(const AnnotationDocument& doc, ObjectLabels labels, int index,
+                    const ObjectLabels& truth, std::size_t stepsLeft) {
+  int extensions = 0;
+  while (const std::optional<AffordancePoint> next = nextPointInRow(doc, labels.affordances, index)) {
+    labels.affordances.push_back(*next);
+    const std::size_t left = curationPlan(labels, truth).size();
+    if (left >= stepsLeft) break;
+    stepsLeft = left;
+    index = static_cast<int>(labels.affordances.size()) - 1;
+    ++extensions;
+  }
+  return extensions;
+}
+
+// Which of the plan's additions (`steps` holds only additions now) the curator places next: the
+// one that starts the longest row of extensions, alone or followed by one more addition (two
+// points of a row placed by hand, then E); the plan's first when none starts a row.
+std::size_t nextAddition(const AnnotationDocument& doc, const std::vector<CurationStep>& steps,
+                         const ObjectLabels& truth) {
+  std::size_t best = 0;
+  int longest = 0;
+  const std::size_t n = steps.size();
+  for (std::size_t a = 0; a < n; ++a) {
+    ObjectLabels one = doc.labels();
+    one.affordances.push_back(steps[a].point);
+    const int last = static_cast<int>(one.affordances.size()) - 1;
+    int rowFromA = extensionsAfter(doc, one, last, truth, n - 1);
+    for (std::size_t b = 0; b < n; ++b) {
+      if (b == a || steps[b].point.type != steps[a].point.type) continue;
+      ObjectLabels two = one;
+      two.affordances.push_back(steps[b].point);
+      rowFromA = std::max(rowFromA, extensionsAfter(doc, two, last + 1, truth, n - 2));
+    }
+    if (rowFromA > longest) {
+      longest = rowFromA;
+      best = a;
+    }
+  }
+  return best;
+}
+
+// The plan's additions, each followed by the extensions of its row (E) while the row's next point
+// is a right point the plan would add: each extension replaces an addition.
+void takeAdditions(Session& session, const ObjectLabels& truth, std::vector<CurationStep> steps,
+                   bool repredict) {
+  const auto isAdd = [](const CurationStep& s) { return s.action == CurationAction::Add; };
+  while (!steps.empty()) {
+    if (!std::all_of(steps.begin(), steps.end(), isAdd)) {  // not a plan's tail: as planned
+      for (const CurationStep& step : steps) takeStep(session, step, repredict);
+      return;
+    }
+    const AnnotationDocument& doc = *session.document();
+    takeStep(session, steps[nextAddition(doc, steps, truth)], repredict);
+    while (extensionsAfter(doc, doc.labels(), doc.selected(), truth,
+                           curationPlan(doc.labels(), truth).size()) > 0 &&
+           session.extendRowOfSelected()) {
+    }
+    steps = curationPlan(doc.labels(), truth);
+  }
+}
+
 // A category switch predicts again for the new category (when the session has models): wait for
 // it and apply it, as the GUI's frame loop does.
 void awaitPrediction(Session& session) {
@@ -133,7 +198,12 @@ CurationReplaySummary replayCuration(Session& session,
     }
     while (takeCopies(session, *truth, steps)) {
     }
-    for (const CurationStep& step : steps) takeStep(session, step, repredict);
+    // Additions come last in a plan: the rest go in the order that lets rows be extended.
+    const auto firstAdd = std::find_if(steps.begin(), steps.end(), [](const CurationStep& s) {
+      return s.action == CurationAction::Add;
+    });
+    for (auto step = steps.begin(); step != firstAdd; ++step) takeStep(session, *step, repredict);
+    takeAdditions(session, *truth, std::vector<CurationStep>(firstAdd, steps.end()), repredict);
     session.document()->select(-1);
     session.accept();
     ++summary.objects;

@@ -1,9 +1,10 @@
 // A curator who knows the right labels, replayed through the GUI's own session (issue 41): each
 // object of the session's queue is opened, the steps of core/curation/curation_plan.h are taken
 // with the same calls the GUI's keys and panels make (category list, units list, point drag,
-// Del, add), and the object is accepted with A. The session's curation log then records exactly
-// the actions a person would need, so `sagrid eval --curation` measures the GUI's throughput on
-// real objects from the models' predictions, the same whoever runs it.
+// Del, add, R where a row of equal parts holds the points to add, E after an addition while the
+// row's next point is one to add), and the object is accepted with A. The session's curation
+// log then records exactly the actions a person would need, so `sagrid eval --curation` measures
+// the GUI's throughput on real objects from the models' predictions, the same whoever runs it.
 #pragma once
 
 #include <functional>

@@ -14,6 +14,7 @@
 #include "ui/document/object_loader.h"
 #include "ui/document/point_commands.h"
 #include "ui/document/point_copies.h"
+#include "ui/document/point_row.h"
 #include "ui/document/twin_points.h"
 #include "ui/document/up_axis_commands.h"
 #include "ui/render/type_colors.h"
@@ -326,6 +327,21 @@ int Session::addOnCopiesOfSelected() {
       "Copy " + source.type + " to " + std::to_string(added) + " alike parts";
   execute(std::make_unique<CommandGroup>(what, std::move(adds), CurationAction::Copies));
   return added;
+}
+
+bool Session::extendRowOfSelected() {
+  if (!m_document || m_document->selected() < 0) return false;
+  const int selected = m_document->selected();
+  std::optional<AffordancePoint> next = nextPointInRow(*m_document, selected);
+  if (!next) {
+    reportError("no row to extend: the step from the nearest other " +
+                m_document->points()[std::size_t(selected)].type +
+                " point to the selected one must land on the object, where no point of its "
+                "type is");
+    return false;
+  }
+  execute(std::make_unique<AddPointCommand>(std::move(*next), CurationAction::Extend));
+  return true;
 }
 
 namespace {

@@ -79,6 +79,10 @@ class Session {
   // Adds the selected point's type on every copy of the part it lies on where no point of that
   // type is yet (pointsOnCopies): one undoable step, logged as "copies". Returns how many.
   int addOnCopiesOfSelected();
+  // Adds the point one step past the selected one along its row (nextPointInRow: the step from
+  // its nearest point of the type) and selects it, so E again goes on: one undoable step, logged
+  // as "extend". Returns whether a point was added (else one error saying why not).
+  bool extendRowOfSelected();
   void changeSelectedType(const std::string& type);
   // The types keys 1..9 choose, in order: the open object's category's own (its default models':
   // a stove's heatsource and togglebutton, a sink's fluidsource and togglebutton), then the other

@@ -21,6 +21,7 @@ const std::vector<ShortcutHelp>& shortcutHelp() {
       {"Del / Backspace", "delete the selected point"},
       {"Shift+Del", "delete the selected point and every later one of its type"},
       {"R", "copies: the selected point's type on every copy of its part (a row of knobs, burners)"},
+      {"E", "extend the row: a point one step past the selected one, from its nearest of its type"},
       {"1-9", "current type, the category's own first (and the selected point's type)"},
       {"N / P", "next / previous object"},
       {"S", "skip object"},
@@ -102,6 +103,9 @@ bool handleShortcuts(const std::vector<InputEvent>& events, Session& session,
         break;
       case GLFW_KEY_R:
         session.addOnCopiesOfSelected();
+        break;
+      case GLFW_KEY_E:
+        session.extendRowOfSelected();
         break;
       case GLFW_KEY_F:
         session.frameSelection();

@@ -38,7 +38,8 @@ std::unique_ptr<Command> makeSetCoordinatesCommand(int index, const Eigen::Vecto
   return std::make_unique<MovePointCommand>(index, position, std::nullopt, "Set coordinates");
 }
 
-AddPointCommand::AddPointCommand(AffordancePoint point) : m_point(std::move(point)) {
+AddPointCommand::AddPointCommand(AffordancePoint point, CurationAction action)
+    : m_point(std::move(point)), m_action(action) {
   m_point.status = AffordanceStatus::Added;
   m_point.source = "human";
   m_point.confidence.reset();

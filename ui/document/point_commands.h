@@ -38,15 +38,20 @@ std::unique_ptr<Command> makeSetCoordinatesCommand(int index, const Eigen::Vecto
 // Appends a point placed by hand (status "added", source "human").
 class AddPointCommand final : public Command {
  public:
-  explicit AddPointCommand(AffordancePoint point);
+  // `action`: what the curation log calls it (Extend: the point one step past a row's end,
+  // ui/document/point_row.h).
+  explicit AddPointCommand(AffordancePoint point, CurationAction action = CurationAction::Add);
   void apply(ObjectLabels& labels) override;
   void revert(ObjectLabels& labels) override;
-  std::string description() const override { return "Add " + m_point.type; }
-  CurationAction curationAction() const override { return CurationAction::Add; }
+  std::string description() const override {
+    return (m_action == CurationAction::Extend ? "Extend the row of " : "Add ") + m_point.type;
+  }
+  CurationAction curationAction() const override { return m_action; }
   int selectionAfterApply() const override { return m_index; }
 
  private:
   AffordancePoint m_point;
+  CurationAction m_action;
   int m_index = -1;
 };
 

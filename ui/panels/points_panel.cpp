@@ -132,6 +132,12 @@ void drawPointsPanel(Session& session) {
     if (ImGui::Button("Delete rest (Shift+Del)")) session.deleteRestOfSelected();
     if (ImGui::IsItemHovered())
       ImGui::SetTooltip("Delete this point and every point of its type listed after it");
+    ImGui::SameLine();
+    if (ImGui::Button("Extend (E)")) session.extendRowOfSelected();
+    if (ImGui::IsItemHovered())
+      ImGui::SetTooltip(
+          "Add a point one step past this one, the step from its nearest point of its type\n"
+          "(keys printed on a glass top, knobs fused into the panel)");
     if (points[std::size_t(selected)].type == "togglebutton") drawControlEditor(session, selected);
   } else if (!points.empty()) {
     if (ImGui::Button("Accept all and next (A)", ImVec2(-1, 0))) session.accept();

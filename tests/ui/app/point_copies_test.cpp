@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "core/curation/curation_report.h"
+#include "support/curation_counts.h"
 #include "support/labelled_objects.h"
 #include "support/test_paths.h"
 #include "ui/app/curation_replay.h"
@@ -25,11 +26,6 @@ ObjectLabels stoveWithOneKnob(const fs::path& dir, ObjectLabels* truth) {
   return one;
 }
 
-std::size_t countOf(const std::vector<AffordancePoint>& points, const std::string& type) {
-  return static_cast<std::size_t>(std::count_if(
-      points.begin(), points.end(), [&](const AffordancePoint& p) { return p.type == type; }));
-}
-
 // The stove opened in a session that logs to dir/curation.jsonl; `truth` its right labels.
 class PointCopies : public ::testing::Test {
  protected:
@@ -40,11 +36,8 @@ class PointCopies : public ::testing::Test {
     session.setCurationLog(dir / "curation.jsonl");
     session.openPaths({dir / "queue"});
   }
-  // How many times the log holds `action`.
   std::ptrdiff_t logged(CurationAction action) const {
-    const auto events = readCurationLog(dir / "curation.jsonl");
-    return std::count_if(events.begin(), events.end(),
-                         [&](const CurationEvent& e) { return e.action == action; });
+    return test::loggedActions(dir / "curation.jsonl", action);
   }
   const fs::path dir = test::freshTempDir();
   ObjectLabels truth;
@@ -59,7 +52,7 @@ TEST_F(PointCopies, OneKnobsPointGoesOntoEveryOtherKnobInOneUndoableStep) {
   ASSERT_EQ(session.addOnCopiesOfSelected(), 3);
   EXPECT_EQ(session.document()->historySize(), steps + 1);
   const auto& points = session.document()->points();
-  ASSERT_EQ(countOf(points, "togglebutton"), 4u);
+  ASSERT_EQ(test::countOfType(points, "togglebutton"), 4u);
   // Each truth knob has a point within a millimetre, each added "added".
   for (const auto& t : truth.affordances) {
     if (t.type != "togglebutton") continue;
@@ -74,7 +67,7 @@ TEST_F(PointCopies, OneKnobsPointGoesOntoEveryOtherKnobInOneUndoableStep) {
   EXPECT_EQ(session.addOnCopiesOfSelected(), 0);
   EXPECT_FALSE(session.pendingErrors().empty());
   session.undo();
-  EXPECT_EQ(countOf(session.document()->points(), "togglebutton"), 1u);
+  EXPECT_EQ(test::countOfType(session.document()->points(), "togglebutton"), 1u);
   EXPECT_EQ(logged(CurationAction::Copies), 1);
   // A burner has no copy on this mesh (burners are drawn, not modelled): nothing, one message.
   session.document()->select(0);
@@ -87,14 +80,14 @@ TEST_F(PointCopies, DeleteRestTakesTheSelectedPointAndItsTypesLaterOnesInOneStep
   ASSERT_TRUE(session.document());
   EXPECT_EQ(session.deleteRestOfSelected(), 0);  // nothing selected
   const std::vector<AffordancePoint> before = session.document()->points();
-  ASSERT_EQ(countOf(before, "heatsource"), 4u);
+  ASSERT_EQ(test::countOfType(before, "heatsource"), 4u);
   session.document()->select(1);  // the second burner: it and the two after it go
   const std::size_t steps = session.document()->historySize();
   EXPECT_EQ(session.deleteRestOfSelected(), 3);
   EXPECT_EQ(session.document()->historySize(), steps + 1);
   const auto& after = session.document()->points();
-  EXPECT_EQ(countOf(after, "heatsource"), 1u);
-  EXPECT_EQ(countOf(after, "togglebutton"), 1u);
+  EXPECT_EQ(test::countOfType(after, "heatsource"), 1u);
+  EXPECT_EQ(test::countOfType(after, "togglebutton"), 1u);
   EXPECT_EQ(after.front().position, before.front().position);
   session.undo();
   ASSERT_EQ(session.document()->points().size(), before.size());
@@ -108,7 +101,7 @@ TEST_F(PointCopies, TheReplayedCuratorTakesCopiesWhereTheyReplaceAdds) {
       session, [&](const std::string&) -> std::optional<ObjectLabels> { return truth; });
   EXPECT_EQ(summary.objects, 1u);
   const ObjectLabels done = readLabels(dir / "queue" / "stove" / "labels.json");
-  EXPECT_EQ(countOf(done.affordances, "togglebutton"), 4u);
+  EXPECT_EQ(test::countOfType(done.affordances, "togglebutton"), 4u);
   const CurationReport report = curationReport(readCurationLog(dir / "curation.jsonl"));
   ASSERT_EQ(report.objects.size(), 1u);
   EXPECT_EQ(report.objects[0].edits, 1);  // one copies action instead of three adds
