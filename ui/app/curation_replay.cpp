@@ -157,7 +157,12 @@ void takeAdditions(Session& session, const ObjectLabels& truth, std::vector<Cura
                            curationPlan(doc.labels(), truth).size()) > 0 &&
            session.extendRowOfSelected()) {
     }
-    steps = curationPlan(doc.labels(), truth);
+    std::vector<CurationStep> left = curationPlan(doc.labels(), truth);
+    if (left.size() >= steps.size()) {  // the addition did not take: the rest as planned, once
+      for (const CurationStep& step : left) takeStep(session, step, repredict);
+      return;
+    }
+    steps = std::move(left);
   }
 }
 
