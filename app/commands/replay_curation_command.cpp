@@ -58,7 +58,8 @@ void setupReplayCuration(CLI::App& root) {
       "replay-curation",
       "Review PATHS (folders of objects whose labels.json hold the predictions) in the GUI's "
       "session as a curator who knows the right labels in --truth would: switch the category, set "
-      "the units, drag, delete and add points, accept; every action goes to the curation log. "
+      "the units, drag, delete and add points (a row of them with copies or extend where that "
+      "saves additions), accept; every action goes to the curation log. "
       "Changes the labels.json files of PATHS: run it on a copy.");
   auto o = std::make_shared<ReplayOptions>();
   cmd->add_option("paths", o->paths, "Folders or mesh files, as for sagrid gui")->required();
