@@ -107,9 +107,7 @@ nlohmann::json toJson(const ScorerCvSpread& spread) {
     repeats.push_back({{"seed", spread.firstSeed + r},
                        {"with_curated", toJson(spread.all[r])},
                        {"unseen_with_curated", toJson(spread.unseen[r])},
-                       {"held_out_decisions", r < spread.decisions.size()
-                                                  ? toJson(spread.decisions[r])
-                                                  : nlohmann::json::array()}});
+                       {"held_out_decisions", toJson(spread.decisions[r])}});
   return {{"left_out_generated_share", spread.leftOutShare}, {"repeats", repeats}};
 }
 

@@ -153,9 +153,10 @@ void takeAdditions(Session& session, const ObjectLabels& truth, std::vector<Cura
     }
     const AnnotationDocument& doc = *session.document();
     takeStep(session, steps[nextAddition(doc, steps, truth)], repredict);
-    while (extensionsAfter(doc, doc.labels(), doc.selected(), truth,
-                           curationPlan(doc.labels(), truth).size()) > 0 &&
-           session.extendRowOfSelected()) {
+    // The row the simulation found is the one E walks: the same steps from the same points.
+    for (int row = extensionsAfter(doc, doc.labels(), doc.selected(), truth,
+                                   curationPlan(doc.labels(), truth).size());
+         row > 0 && session.extendRowOfSelected(); --row) {
     }
     std::vector<CurationStep> left = curationPlan(doc.labels(), truth);
     if (left.size() >= steps.size()) {  // the addition did not take: the rest as planned, once
