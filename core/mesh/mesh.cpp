@@ -169,4 +169,14 @@ void Mesh::append(const Mesh& part) {
   }
 }
 
+Mesh Mesh::withoutGeometry() const {
+  Mesh out;
+  out.materials = materials;
+  out.textures = textures;
+  out.fileUp = fileUp;
+  out.fileUpConfidence = fileUpConfidence;
+  out.fileUpDetected = fileUpDetected;
+  return out;
+}
+
 }  // namespace sagrid

@@ -69,6 +69,10 @@ struct Mesh {
   // shifted; a per-vertex attribute only one side has is filled with white colours or zero UVs).
   // Frames must already agree: fileUp and the other file bookkeeping stay this mesh's.
   void append(const Mesh& part);
+
+  // Its materials, textures and file-frame bookkeeping without vertices, triangles or sha256:
+  // the start of a mesh cut from this one (a crop, a subset of its triangles).
+  Mesh withoutGeometry() const;
 };
 
 // The area of each triangle (0 for one with a corner the mesh lacks).

@@ -31,12 +31,7 @@ std::vector<CropVertex> clip(const std::vector<CropVertex>& polygon, int axis, f
 }  // namespace
 
 Mesh cropMesh(const Mesh& mesh, const Eigen::AlignedBox3f& box) {
-  Mesh crop;
-  crop.materials = mesh.materials;
-  crop.textures = mesh.textures;
-  crop.fileUp = mesh.fileUp;
-  crop.fileUpConfidence = mesh.fileUpConfidence;
-  crop.fileUpDetected = mesh.fileUpDetected;
+  Mesh crop = mesh.withoutGeometry();
   const bool normals = mesh.normals.size() == mesh.positions.size();
   const bool uvs = mesh.uvs.size() == mesh.positions.size();
   const bool colors = mesh.colors.size() == mesh.positions.size();

@@ -3,12 +3,7 @@
 namespace sagrid {
 
 Mesh triangleSubset(const Mesh& mesh, const std::vector<bool>& keep) {
-  Mesh out;
-  out.materials = mesh.materials;
-  out.textures = mesh.textures;
-  out.fileUp = mesh.fileUp;
-  out.fileUpConfidence = mesh.fileUpConfidence;
-  out.fileUpDetected = mesh.fileUpDetected;
+  Mesh out = mesh.withoutGeometry();
   out.sha256 = mesh.sha256;
   const std::size_t vertices = mesh.positions.size();
   std::vector<int> renumbered(vertices, -1);
