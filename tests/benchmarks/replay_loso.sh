@@ -12,7 +12,8 @@
 #
 # Environment (the inputs of resources/models/README.md's recipes, all required but IN_SAMPLE):
 # POOL (../shared/data/wild-pool), WILD (`sagrid corpus wild` with the curated labels), SH (`sagrid
-# corpus sweethome3d`), BENCH, DIST and GEN (generated data, "Category classifier"), CANDIDATES_REAL,
+# corpus sweethome3d`), BENCH, DIST and GEN (generated data, "Category classifier": GEN/stoves,
+# GEN/sinks, GEN/none and, since session 60, GEN/glass-stoves), CANDIDATES_REAL,
 # CANDIDATES_SH, CANDIDATES_BENCH (`sagrid scorer candidates` files, "point_scorer.json").
 # SCORER_OPTIONS (optional): more options for each repository's `scorer train` (e.g.
 # "--feature-share 1", the decision before session 53), to replay two decisions side by side.
@@ -63,7 +64,8 @@ for d in "$work"/sources/*/; do
     "$sagrid" scorer train --candidates "$d/candidates.json" --candidates "$CANDIDATES_SH" \
       --candidates "$CANDIDATES_BENCH" ${SCORER_OPTIONS:-} --out "$models" > "$d/scorer.log" 2>&1
     "$sagrid" category train --data "$BENCH/train" --data "$DIST/train" --data "$GEN/stoves" \
-      --data "$GEN/sinks" --data "$GEN/none" --data "$WILD/wild-train@3" --data "$WILD/wild-val@3" \
+      --data "$GEN/sinks" --data "$GEN/none" --data "$GEN/glass-stoves" \
+      --data "$WILD/wild-train@3" --data "$WILD/wild-val@3" \
       --data "$SH/real-train@3" --data "$SH/real-val@3" --data "$SH/distractors@3" \
       --data "$root/../shared/data/real-dev@3" --top-relief --part-statistics --trees \
       --tree-depth 2 --threshold 0.5 --exclude-split "$d/split.json" --out "$models" \
