@@ -25,6 +25,7 @@ constexpr Name kNames[] = {
     {CurationAction::Delete, "delete"},     {CurationAction::DeleteRest, "delete_rest"},
     {CurationAction::Retype, "retype"},
     {CurationAction::Category, "category"}, {CurationAction::ConfirmCategory, "confirm_category"},
+    {CurationAction::CategoryKey, "category_key"},
     {CurationAction::Units, "units"},       {CurationAction::Copies, "copies"},
     {CurationAction::Extend, "extend"},
     {CurationAction::Edit, "edit"},         {CurationAction::Undo, "undo"},

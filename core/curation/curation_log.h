@@ -24,7 +24,8 @@ enum class CurationAction {
   Copies,     // the selected point carried onto every copy of its part (core/geometry/points_on_copies.h)
   Extend,     // a point one step past the selected one along its row (ui/document/point_row.h)
   Retype,     // a point's type changed
-  Category,   // the object's category switched
+  Category,   // the object's category switched from the Object panel's list
+  CategoryKey,  // the object's category switched by its key (Shift+1 stove, Shift+2 sink, Shift+3 none)
   ConfirmCategory,  // the suggested category of a rejected object taken, with its points (one key)
   Units,      // the object's units set
   Edit,       // another edit (mass, up axis)

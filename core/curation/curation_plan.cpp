@@ -4,10 +4,20 @@
 #include <cmath>
 #include <set>
 
+#include "core/annotate/category_classifier.h"
 #include "core/annotate/suggested_points.h"
 #include "core/eval/hungarian.h"
 
 namespace sagrid {
+
+const std::vector<std::string>& categoriesWithKeys() {
+  static const std::vector<std::string> categories = {"stove", "sink", kRejectedCategory};
+  return categories;
+}
+
+bool isCategorySwitch(CurationAction action) {
+  return action == CurationAction::Category || action == CurationAction::CategoryKey;
+}
 
 std::vector<CurationStep> curationPlan(const ObjectLabels& opened, const ObjectLabels& truth,
                                        double radiusMeters) {
@@ -26,7 +36,9 @@ std::vector<CurationStep> curationPlan(const ObjectLabels& opened, const ObjectL
   }
   if (opened.object.category != truth.object.category && !(suggested && *suggested == truth.object.category)) {
     CurationStep s;
-    s.action = CurationAction::Category;
+    const auto& keyed = categoriesWithKeys();
+    const bool hasKey = std::find(keyed.begin(), keyed.end(), truth.object.category) != keyed.end();
+    s.action = hasKey ? CurationAction::CategoryKey : CurationAction::Category;
     s.category = truth.object.category;
     steps.push_back(s);
     // The GUI drops points that are all still predicted when the category switches.

@@ -22,6 +22,7 @@ std::string klmSequence(CurationAction action) {
     case CurationAction::Retype: return "MPBBK";    // select, digit
     case CurationAction::Category: return "MPBBPBB";  // open the list, pick
     case CurationAction::ConfirmCategory: return "MK";  // key C
+    case CurationAction::CategoryKey: return "MKK";     // Shift and the category's digit
     case CurationAction::Units: return "MPBBPBB";
     case CurationAction::Edit: return "MPBBPBB";
     case CurationAction::Undo: return "MKK";        // Ctrl+Z
@@ -46,7 +47,8 @@ bool isEdit(CurationAction a) {
     case CurationAction::Drag: case CurationAction::Add: case CurationAction::Delete: case CurationAction::Retype:
     case CurationAction::DeleteRest:
     case CurationAction::Copies: case CurationAction::Extend:
-    case CurationAction::Category: case CurationAction::ConfirmCategory: case CurationAction::Units:
+    case CurationAction::Category: case CurationAction::ConfirmCategory: case CurationAction::CategoryKey:
+    case CurationAction::Units:
     case CurationAction::Edit:
       return true;
     default:

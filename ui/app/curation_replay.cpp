@@ -23,8 +23,9 @@ void takeStep(Session& session, const CurationStep& step, bool repredict) {
       session.confirmSuggestedCategory();
       break;
     case CurationAction::Category:
+    case CurationAction::CategoryKey:
       session.autoPredict = repredict;
-      session.switchCategory(step.category);
+      session.switchCategory(step.category, step.action);
       session.autoPredict = false;
       break;
     case CurationAction::Units:
@@ -197,7 +198,7 @@ CurationReplaySummary replayCuration(Session& session,
       continue;
     }
     std::vector<CurationStep> steps = curationPlan(doc->labels(), *truth);
-    if (!steps.empty() && steps.front().action == CurationAction::Category) {
+    if (!steps.empty() && isCategorySwitch(steps.front().action)) {
       takeStep(session, steps.front(), repredict);
       awaitPrediction(session);
       steps = curationPlan(session.document()->labels(), *truth);  // from what the switch left

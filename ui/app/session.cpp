@@ -196,7 +196,7 @@ void Session::confirmSuggestedCategory() {
   chooseNewPointType();
 }
 
-void Session::switchCategory(const std::string& category) {
+void Session::switchCategory(const std::string& category, CurationAction how) {
   if (!m_document || m_document->labels().object.category == category) return;
   if (suggestedCategory(m_document->labels()) == category) {
     confirmSuggestedCategory();
@@ -206,7 +206,7 @@ void Session::switchCategory(const std::string& category) {
                                         [](const AffordancePoint& p) { return p.status == AffordanceStatus::Predicted; });
   const bool dropsPoints = allPredicted && !m_document->points().empty();
   std::vector<std::unique_ptr<Command>> steps;
-  steps.push_back(std::make_unique<SetCategoryCommand>(category));
+  steps.push_back(std::make_unique<SetCategoryCommand>(category, how));
   if (dropsPoints) {
     steps.push_back(std::make_unique<ReplacePointsCommand>(std::vector<AffordancePoint>{},
                                                            "drop the points of the old category"));

@@ -89,8 +89,10 @@ class Session {
   // known types; so 2 is a knob on a stove and on a sink alike.
   std::vector<std::string> typesForKeys() const;
   // Switches the open object's category (one undoable step) and, when its points are all still
-  // predicted, drops them and predicts again for the new category.
-  void switchCategory(const std::string& category);
+  // predicted, drops them and predicts again for the new category. `how`: what the curation log
+  // records (Category: the Object panel's list; CategoryKey: Shift+1..3). The suggested category
+  // of a rejected object is taken as C takes it, with its points.
+  void switchCategory(const std::string& category, CurationAction how = CurationAction::Category);
   // C: a rejected object's suggested category, taken with its suggested points (one undoable
   // step); nothing when the object has no suggestions.
   void confirmSuggestedCategory();

@@ -3,6 +3,7 @@
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 
+#include "core/curation/curation_plan.h"
 #include "ui/app/session.h"
 
 namespace sagrid::ui {
@@ -23,6 +24,7 @@ const std::vector<ShortcutHelp>& shortcutHelp() {
       {"R", "copies: the selected point's type on every copy of its part (a row of knobs, burners)"},
       {"E", "extend the row: a point one step past the selected one, from its nearest of its type"},
       {"1-9", "current type, the category's own first (and the selected point's type)"},
+      {"Shift+1 / 2 / 3", "category stove / sink / none (points predicted again for it)"},
       {"N / P", "next / previous object"},
       {"S", "skip object"},
       {"F", "close-up of the selected point; again (or none selected): the whole object"},
@@ -74,6 +76,11 @@ bool handleShortcuts(const std::vector<InputEvent>& events, Session& session,
     }
     if (e.key >= GLFW_KEY_1 && e.key <= GLFW_KEY_9) {
       const std::size_t index = std::size_t(e.key - GLFW_KEY_1);
+      if (shift) {
+        const std::vector<std::string>& categories = categoriesWithKeys();
+        if (index < categories.size()) session.switchCategory(categories[index], CurationAction::CategoryKey);
+        continue;
+      }
       const std::vector<std::string> types = session.typesForKeys();
       if (index < types.size()) session.changeSelectedType(types[index]);
       continue;

@@ -15,17 +15,20 @@ namespace sagrid::ui {
 
 class SetCategoryCommand final : public Command {
  public:
-  explicit SetCategoryCommand(std::string category) : m_category(std::move(category)) {}
+  // `action`: how the curation log counts it (the list, or the category's key).
+  explicit SetCategoryCommand(std::string category, CurationAction action = CurationAction::Category)
+      : m_category(std::move(category)), m_action(action) {}
   void apply(ObjectLabels& labels) override {
     m_before = labels.object.category;
     labels.object.category = m_category;
   }
   void revert(ObjectLabels& labels) override { labels.object.category = m_before; }
   std::string description() const override { return "Category " + m_category; }
-  CurationAction curationAction() const override { return CurationAction::Category; }
+  CurationAction curationAction() const override { return m_action; }
 
  private:
   std::string m_category;
+  CurationAction m_action;
   std::string m_before;
 };
 

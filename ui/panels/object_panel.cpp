@@ -3,9 +3,11 @@
 #include <cmath>
 #include <cstdio>
 #include <memory>
+#include <string>
 
 #include "core/annotate/suggested_points.h"
 #include "core/annotate/units_record.h"
+#include "core/curation/curation_plan.h"
 #include "core/mesh/mesh_import.h"
 #include "ui/app/session.h"
 #include "ui/document/mass_commands.h"
@@ -125,6 +127,11 @@ void drawObjectPanel(Session& session) {
     }
     ImGui::EndCombo();
   }
+  std::string keys;
+  const std::vector<std::string>& keyed = categoriesWithKeys();
+  for (std::size_t i = 0; i < keyed.size(); ++i)
+    keys += (i ? "  Shift+" : "Shift+") + std::to_string(i + 1) + " " + keyed[i];
+  ImGui::TextDisabled("%s", keys.c_str());
   if (const auto suggested = suggestedCategory(doc->labels())) {
     // A rejected object's points are its likeliest category's: one key takes them.
     if (ImGui::Button(("take suggested: " + *suggested + " (C)").c_str(), ImVec2(-1, 0)))

@@ -42,7 +42,7 @@ TEST(CurationPlan, AWrongCategoryDropsThePredictedPointsAndWrongUnitsAreSetFirst
   const ObjectLabels truth = labels("sink", {point("fluidsource", 10, 0)}, 0.01);
   const std::vector<CurationStep> steps = curationPlan(predicted, truth);
   ASSERT_EQ(steps.size(), 3u);
-  EXPECT_EQ(steps[0].action, CurationAction::Category);
+  EXPECT_EQ(steps[0].action, CurationAction::CategoryKey);  // Shift+2
   EXPECT_EQ(steps[0].category, "sink");
   EXPECT_EQ(steps[1].action, CurationAction::Units);
   EXPECT_DOUBLE_EQ(steps[1].metersPerUnit, 0.01);
