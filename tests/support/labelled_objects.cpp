@@ -1,5 +1,8 @@
 #include "support/labelled_objects.h"
 
+#include <fstream>
+
+#include "core/annotate/suggested_points.h"
 #include "core/mesh/mesh_export.h"
 
 namespace sagrid::test {
@@ -33,6 +36,21 @@ fs::path writeGeneratedObject(const fs::path& dir, const gen::GeneratedObject& o
   std::vector<AffordancePoint> points;
   for (const auto& p : object.points) points.push_back(affordance(p.type, p.position));
   return writeLabelledObject(dir, object.mesh, points, id, object.category);
+}
+
+fs::path writeTinyStove(const fs::path& dir, bool rejected) {
+  fs::create_directories(dir);
+  std::ofstream(dir / "mesh.obj") << "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3\nf 1 3 4\n";
+  ObjectLabels labels;
+  labels.object.id = "stove";
+  labels.object.mesh = "mesh.obj";
+  labels.object.category = rejected ? "none" : "stove";
+  labels.object.up = "z";
+  labels.affordances = {affordance("heatsource", {0.5f, 0.5f, 0.0f}),
+                        affordance("togglebutton", {0.5f, 0.5f, 0.0f})};
+  if (rejected) markSuggestions(labels, "stove");
+  writeLabels(dir / "labels.json", labels);
+  return dir / "labels.json";
 }
 
 }  // namespace sagrid::test

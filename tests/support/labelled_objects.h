@@ -26,6 +26,10 @@ std::filesystem::path writeGeneratedObject(const std::filesystem::path& dir,
                                            const gen::GeneratedObject& object,
                                            const std::string& id);
 
+// A one-square "stove" (dir/mesh.obj, z up) with a predicted heatsource and togglebutton, or
+// (rejected) the same filed as "none" with them suggested as a stove's. Returns the labels path.
+std::filesystem::path writeTinyStove(const std::filesystem::path& dir, bool rejected);
+
 }  // namespace sagrid::test
 
 namespace sagrid::test {

@@ -6,12 +6,11 @@
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 
-#include <fstream>
-
 #include "core/annotate/suggested_points.h"
 #include "core/curation/curation_plan.h"
 #include "core/curation/curation_report.h"
 #include "support/curation_counts.h"
+#include "support/labelled_objects.h"
 #include "support/test_paths.h"
 #include "ui/app/session.h"
 #include "ui/app/shortcuts.h"
@@ -20,76 +19,58 @@ namespace sagrid::ui {
 namespace {
 namespace fs = std::filesystem;
 
-// A stove with two predicted points, or (rejected) the same filed as "none" with them suggested.
-fs::path writeStove(const fs::path& dir, bool rejected) {
-  fs::create_directories(dir);
-  std::ofstream(dir / "mesh.obj") << "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3\nf 1 3 4\n";
-  ObjectLabels labels;
-  labels.object.id = "stove";
-  labels.object.mesh = "mesh.obj";
-  labels.object.category = rejected ? "none" : "stove";
-  labels.object.up = "z";
-  AffordancePoint p;
-  p.type = "heatsource";
-  p.position = {0.5f, 0.5f, 0.0f};
-  labels.affordances = {p, p};
-  labels.affordances[1].type = "togglebutton";
-  if (rejected) markSuggestions(labels, "stove");
-  writeLabels(dir / "labels.json", labels);
-  return dir / "labels.json";
-}
+// The tiny stove (or, rejected, filed as "none" with its points suggested) open in a session that
+// logs its curation.
+struct OpenStove {
+  explicit OpenStove(bool rejected)
+      : dir(test::freshTempDir()), labels(test::writeTinyStove(dir / "stove", rejected)) {
+    session.autoPredict = false;
+    session.setCurationLog(dir / "curation.jsonl");
+    session.openPaths({labels.parent_path()});
+  }
+  void press(int key, int mods) { handleShortcuts({InputEvent::keyEvent(key, true, mods)}, session, false); }
+  std::ptrdiff_t logged(CurationAction action) const { return test::loggedActions(dir / "curation.jsonl", action); }
 
-void press(Session& session, int key, int mods) {
-  handleShortcuts({InputEvent::keyEvent(key, true, mods)}, session, false);
-}
+  fs::path dir;
+  fs::path labels;
+  Session session;
+};
 
 TEST(CategoryKeys, ShiftTwoFilesAStoveAsASinkInOneUndoableStepLoggedAsTheKey) {
-  const fs::path dir = test::freshTempDir();
-  const fs::path labels = writeStove(dir / "stove", false);
-  Session session;
-  session.autoPredict = false;
-  session.setCurationLog(dir / "curation.jsonl");
-  session.openPaths({labels.parent_path()});
-  press(session, GLFW_KEY_2, GLFW_MOD_SHIFT);
-  const ObjectLabels switched = readLabels(labels);
+  OpenStove open(false);
+  open.press(GLFW_KEY_2, GLFW_MOD_SHIFT);
+  const ObjectLabels switched = readLabels(open.labels);
   EXPECT_EQ(switched.object.category, "sink");
   EXPECT_TRUE(switched.affordances.empty());  // the stove's predicted points go with its category
-  EXPECT_EQ(test::loggedActions(dir / "curation.jsonl", CurationAction::CategoryKey), 1);
-  EXPECT_EQ(test::loggedActions(dir / "curation.jsonl", CurationAction::Category), 0);
-  session.undo();
-  const ObjectLabels back = readLabels(labels);
+  EXPECT_EQ(open.logged(CurationAction::CategoryKey), 1);
+  EXPECT_EQ(open.logged(CurationAction::Category), 0);
+  open.session.undo();
+  const ObjectLabels back = readLabels(open.labels);
   EXPECT_EQ(back.object.category, "stove");
   EXPECT_EQ(back.affordances.size(), 2u);
-  press(session, GLFW_KEY_3, GLFW_MOD_SHIFT);
-  EXPECT_EQ(readLabels(labels).object.category, "none");
+  open.press(GLFW_KEY_3, GLFW_MOD_SHIFT);
+  EXPECT_EQ(readLabels(open.labels).object.category, "none");
 }
 
 TEST(CategoryKeys, OnlyShiftWithTheFirstThreeDigitsSwitches) {
-  const fs::path labels = writeStove(test::freshTempDir() / "stove", false);
-  Session session;
-  session.autoPredict = false;
-  session.openPaths({labels.parent_path()});
-  press(session, GLFW_KEY_4, GLFW_MOD_SHIFT);  // no fourth category with a key
-  press(session, GLFW_KEY_2, 0);               // a type, not a category
-  const ObjectLabels kept = readLabels(labels);
+  OpenStove open(false);
+  open.press(GLFW_KEY_4, GLFW_MOD_SHIFT);  // no fourth category with a key
+  open.press(GLFW_KEY_2, 0);               // a type, not a category
+  const ObjectLabels kept = readLabels(open.labels);
   EXPECT_EQ(kept.object.category, "stove");
   EXPECT_EQ(kept.affordances.size(), 2u);
-  EXPECT_EQ(session.currentType(), "togglebutton");
+  EXPECT_EQ(open.session.currentType(), "togglebutton");
+  EXPECT_EQ(open.logged(CurationAction::CategoryKey), 0);
 }
 
 TEST(CategoryKeys, TheSuggestedCategorysKeyTakesItWithItsPointsAsCDoes) {
-  const fs::path dir = test::freshTempDir();
-  const fs::path labels = writeStove(dir / "stove", true);
-  Session session;
-  session.autoPredict = false;
-  session.setCurationLog(dir / "curation.jsonl");
-  session.openPaths({labels.parent_path()});
-  press(session, GLFW_KEY_1, GLFW_MOD_SHIFT);
-  const ObjectLabels taken = readLabels(labels);
+  OpenStove open(true);
+  open.press(GLFW_KEY_1, GLFW_MOD_SHIFT);
+  const ObjectLabels taken = readLabels(open.labels);
   EXPECT_EQ(taken.object.category, "stove");
   ASSERT_EQ(taken.affordances.size(), 2u);
   EXPECT_FALSE(isSuggestion(taken.affordances[0]));
-  EXPECT_EQ(test::loggedActions(dir / "curation.jsonl", CurationAction::ConfirmCategory), 1);
+  EXPECT_EQ(open.logged(CurationAction::ConfirmCategory), 1);
 }
 
 TEST(CategoryKeys, TheCuratorsPlanSwitchesByKeyWhereTheCategoryHasOneAndTheKeyCostsLess) {

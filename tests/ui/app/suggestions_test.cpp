@@ -3,10 +3,9 @@
 // same.
 #include <gtest/gtest.h>
 
-#include <fstream>
-
 #include "core/annotate/suggested_points.h"
 #include "core/curation/curation_plan.h"
+#include "support/labelled_objects.h"
 #include "support/test_paths.h"
 #include "ui/app/session.h"
 
@@ -14,23 +13,7 @@ namespace sagrid::ui {
 namespace {
 namespace fs = std::filesystem;
 
-fs::path rejectedStove(const fs::path& dir) {
-  fs::create_directories(dir);
-  std::ofstream(dir / "mesh.obj") << "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3\nf 1 3 4\n";
-  ObjectLabels labels;
-  labels.object.id = "stove";
-  labels.object.mesh = "mesh.obj";
-  labels.object.category = "none";
-  labels.object.up = "z";
-  AffordancePoint p;
-  p.type = "heatsource";
-  p.position = {0.5f, 0.5f, 0.0f};
-  labels.affordances = {p, p};
-  labels.affordances[1].type = "togglebutton";
-  markSuggestions(labels, "stove");
-  writeLabels(dir / "labels.json", labels);
-  return dir / "labels.json";
-}
+fs::path rejectedStove(const fs::path& dir) { return test::writeTinyStove(dir, true); }
 
 TEST(Suggestions, CTakesTheSuggestedCategoryWithItsPointsAndUndoGivesThemBack) {
   const fs::path labels = rejectedStove(test::freshTempDir() / "stove");
