@@ -127,11 +127,14 @@ void drawObjectPanel(Session& session) {
     }
     ImGui::EndCombo();
   }
-  std::string keys;
-  const std::vector<std::string>& keyed = categoriesWithKeys();
-  for (std::size_t i = 0; i < keyed.size(); ++i)
-    keys += (i ? "  Shift+" : "Shift+") + std::to_string(i + 1) + " " + keyed[i];
-  ImGui::TextDisabled("%s", keys.c_str());
+  static const std::string kKeys = [] {  // built once, not every frame
+    std::string keys;
+    const std::vector<std::string>& keyed = categoriesWithKeys();
+    for (std::size_t i = 0; i < keyed.size(); ++i)
+      keys += (i ? "  Shift+" : "Shift+") + std::to_string(i + 1) + " " + keyed[i];
+    return keys;
+  }();
+  ImGui::TextDisabled("%s", kKeys.c_str());
   if (const auto suggested = suggestedCategory(doc->labels())) {
     // A rejected object's points are its likeliest category's: one key takes them.
     if (ImGui::Button(("take suggested: " + *suggested + " (C)").c_str(), ImVec2(-1, 0)))
