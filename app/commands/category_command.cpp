@@ -71,7 +71,7 @@ sagrid::FeatureOptions featuresFor(const fs::path& modelsDir) {
 }
 
 struct Options {
-  std::vector<std::string> data, validate, gated, guard;
+  std::vector<std::string> data, validate, gated, guard, guardBySource;
   int folds = 5;
   bool bySource = false;  // category cv: leave one source out
   std::string out, models, exclude, split, splitOut, up, cache;
@@ -192,6 +192,26 @@ bool guardAdopts(const sagrid::CategoryClassifier& candidate, const fs::path& cu
   return verdict.adopted;
 }
 
+// The guard judged by source (judgeCategoryUpdateBySource): the recipe of --data and `options`
+// against the current file; the verdict goes to stdout and OUT/guard.jsonl. Adopted without a
+// current file.
+bool guardBySourceAdopts(const Options& o, const sagrid::CategoryTrainingOptions& options,
+                         const fs::path& current, const sagrid::FeatureOptions& features) {
+  std::error_code ec;
+  if (!fs::exists(current, ec)) return true;
+  sagrid::CategoryRecipe candidate{{}, options};
+  for (const auto& arg : o.data) candidate.folders.push_back(sagrid::parseWeightedFolder(arg));
+  std::vector<fs::path> curated(o.guardBySource.begin(), o.guardBySource.end());
+  const sagrid::CategoryVerdict verdict = sagrid::judgeCategoryUpdateBySource(
+      candidate, sagrid::CategoryClassifier::load(current), curated, features, {},
+      [](const std::string& recipe, int k, int folds) {
+        std::fprintf(stderr, "guard: %s recipe, source %d/%d\n", recipe.c_str(), k + 1, folds);
+      });
+  std::printf("%s\n", verdict.reason.c_str());
+  sagrid::recordCategoryVerdict(verdict, current.parent_path(), o.guardBySource);
+  return verdict.adopted;
+}
+
 void setupCategory(CLI::App& root) {
   auto* cmd = root.add_subcommand(
       "category",
@@ -217,6 +237,16 @@ void setupCategory(CLI::App& root) {
                     "repeat): the new classifier replaces OUT's only if its share right there, "
                     "averaged over stoves, sinks and look-alikes, is higher; else it goes to "
                     "OUT/refused/ (OUT/guard.jsonl: the figures)");
+  train->add_option("--guard-by-source", o->guardBySource,
+                    "Curated dataset folders (repeat; usually also among --data): the new "
+                    "classifier's recipe and the current one's (OUT's training record; where a "
+                    "folder of that is not here, the current classifier as it is) are each "
+                    "cross-validated leaving one source of these objects out at a time; the new "
+                    "one replaces OUT's only if its share right, averaged over stoves, sinks and "
+                    "look-alikes, is higher; else it goes to OUT/refused/ (OUT/guard.jsonl: the "
+                    "figures)")
+      ->excludes(train->get_option("--guard"))
+      ->excludes(train->get_option("--exclude-split"));
   addTrainingFlags(train, *o);
   train->callback([o] {
     const fs::path out = o->out.empty() ? defaultModelsDir() : fs::path(o->out);
@@ -256,6 +286,8 @@ void setupCategory(CLI::App& root) {
     // classifier keeps it (as the GUI's retraining does); `category evidence` refits it.
     if (fs::exists(file)) classifier.evidence = sagrid::CategoryClassifier::load(file).evidence;
     if (!o->guard.empty() && !guardAdopts(classifier, file, o->guard, features))
+      file = out / "refused" / sagrid::kCategoryClassifierFile;
+    if (!o->guardBySource.empty() && !guardBySourceAdopts(*o, options, file, features))
       file = out / "refused" / sagrid::kCategoryClassifierFile;
     fs::create_directories(file.parent_path());
     classifier.save(file);

@@ -26,7 +26,12 @@ CategoryEvaluation crossValidate(const std::vector<CategorySample>& always, cons
   for (int k = 0; k < folds; ++k) {
     if (onFold) onFold(k, folds);
     std::vector<CategorySample> train = always, held;
-    for (const auto& s : validated) (fold.at(s.id) == k ? held : train).push_back(s);
+    for (const auto& s : validated) {
+      if (fold.at(s.id) == k)
+        held.push_back(s);
+      else if (s.weight > 0)
+        train.push_back(s);
+    }
     const auto classifier = CategoryClassifier::train(train, options);
     add(total, evaluateCategories(
                    [&](const CategorySample& s) {

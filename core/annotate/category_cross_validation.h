@@ -19,8 +19,10 @@ using CategoryCheck =
 
 // Each fold of `validated` decided by a classifier trained with `options` on `always` plus the
 // other folds (then by `check` when given); the folds' evaluations summed (misses in fold order).
-// `onFold(k, folds)` before each fold's training. Throws InvalidArgument when folds < 2 or there
-// are fewer validated samples than folds, or when an id appears twice among them.
+// `onFold(k, folds)` before each fold's training. A validated sample of weight 0 is decided but
+// never trained on (objects a recipe does not learn from, judged all the same). Throws
+// InvalidArgument when folds < 2 or there are fewer validated samples than folds, or when an id
+// appears twice among them.
 CategoryEvaluation crossValidateCategories(const std::vector<CategorySample>& always,
                                            const std::vector<CategorySample>& validated, int folds,
                                            const CategoryTrainingOptions& options,

@@ -1,10 +1,12 @@
 #include "core/annotate/category_update.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <fstream>
 #include <map>
 #include <nlohmann/json.hpp>
 
+#include "core/annotate/category_cross_validation.h"
 #include "core/annotate/category_training.h"
 #include "core/common/error.h"
 #include "core/labels/labels.h"
@@ -51,17 +53,85 @@ std::vector<CategorySample> collectWeightedSamples(const std::vector<WeightedFol
   return all;
 }
 
-void requireSeveralClasses(const std::vector<CategorySample>& heldOut) {
+void requireSeveralClasses(const std::vector<CategorySample>& samples, const std::string& what) {
   std::set<std::string> classes;
-  for (const auto& s : heldOut) classes.insert(categoryClass(s.category));
+  for (const auto& s : samples) classes.insert(categoryClass(s.category));
   if (classes.size() >= 2) return;
   throw InvalidArgument(
-      "the held-out folders hold " +
+      what + " hold " +
       (classes.empty() ? std::string("no object") : "only " + *classes.begin() + " objects") +
-      ": a classifier that calls everything one class would look best there; give held-out "
+      ": a classifier that calls everything one class would look best there; give "
       "objects of at least two of stove, sink and look-alike (none). Nothing was written; the "
       "current classifier stays");
 }
+
+namespace {
+
+// Adopted without a current classifier or when the candidate's share is higher; the reason names
+// both figures and `judgedOn` (where they were measured).
+void decide(CategoryVerdict& verdict, const std::string& judgedOn) {
+  verdict.adopted = !verdict.before || verdict.after > *verdict.before;
+  char was[32] = "(none)";
+  if (verdict.before) std::snprintf(was, sizeof was, "%.1f %%", 100 * *verdict.before);
+  char figures[96];
+  std::snprintf(figures, sizeof figures, "%s -> %.1f %%", was, 100 * verdict.after);
+  verdict.reason = std::string("category classifier: share right ") + figures + " " + judgedOn +
+                   ": " + (verdict.adopted ? "adopted" : "refused, current classifier kept");
+}
+
+bool sameFolder(const fs::path& a, const fs::path& b) {
+  std::error_code ec;
+  const fs::path ca = fs::weakly_canonical(fs::absolute(a), ec);
+  const fs::path cb = ec ? fs::path() : fs::weakly_canonical(fs::absolute(b), ec);
+  return ec ? a.lexically_normal() == b.lexically_normal() : ca == cb;
+}
+
+// "A, B" of the folders.
+std::string folderList(const std::vector<fs::path>& folders) {
+  std::string list;
+  for (const auto& dir : folders) list += (list.empty() ? "" : ", ") + dir.string();
+  return list;
+}
+
+// `recipe` cross-validated over the sources of the `curated` folders' objects: the balanced
+// share right, and how many objects and sources it was measured on.
+struct SourceFigures {
+  double shareRight = 0;
+  std::size_t objects = 0, sources = 0;
+};
+SourceFigures shareRightBySource(const CategoryRecipe& recipe, const std::vector<fs::path>& curated,
+                                 const FeatureOptions& features, const FolderProgress& onProgress,
+                                 const std::function<void(int, int)>& onFold) {
+  std::vector<WeightedFolder> always, judged;
+  for (const auto& dir : curated) judged.push_back({dir, 0.0});
+  for (const auto& folder : recipe.folders) {
+    const auto same = std::find_if(judged.begin(), judged.end(), [&](const WeightedFolder& j) {
+      return sameFolder(j.dir, folder.dir);
+    });
+    if (same != judged.end())
+      same->weight = folder.weight;
+    else
+      always.push_back(folder);
+  }
+  const auto judgedSamples =
+      collectWeightedSamples(judged, features, {}, recipe.options.inputs, onProgress);
+  requireSeveralClasses(judgedSamples, folderList(curated));
+  std::set<std::string> sources;
+  for (const auto& s : judgedSamples) sources.insert(s.source);
+  if (sources.size() < 2)
+    throw TooFewSources("the curated objects of " + folderList(curated) + " come from " +
+                        (sources.empty() ? std::string("no source")
+                                         : "one source only (" + *sources.begin() + ")") +
+                        ": leaving one source out needs at least two; give held-out objects of "
+                        "other sources instead. Nothing was written; the current classifier stays");
+  const auto alwaysSamples =
+      collectWeightedSamples(always, features, {}, recipe.options.inputs, onProgress);
+  const CategoryEvaluation ev =
+      crossValidateCategoriesBySource(alwaysSamples, judgedSamples, recipe.options, onFold);
+  return {balancedShareRight(ev), judgedSamples.size(), sources.size()};
+}
+
+}  // namespace
 
 CategoryVerdict judgeCategoryUpdate(const CategoryClassifier& candidate, const fs::path& currentFile,
                                     const std::vector<WeightedFolder>& heldOut,
@@ -82,28 +152,105 @@ CategoryVerdict judgeCategoryUpdate(const CategoryClassifier& candidate, const f
   verdict.after = shareRight(candidate);
   std::error_code ec;
   if (fs::exists(currentFile, ec)) verdict.before = shareRight(CategoryClassifier::load(currentFile));
-  verdict.adopted = !verdict.before || verdict.after > *verdict.before;
-  char line[200];
-  char was[32] = "(none)";
-  if (verdict.before) std::snprintf(was, sizeof was, "%.1f %%", 100 * *verdict.before);
-  std::snprintf(line, sizeof line,
-                "category classifier: share right %s -> %.1f %% on the held-out objects: %s", was,
-                100 * verdict.after,
-                verdict.adopted ? "adopted" : "refused, current classifier kept");
-  verdict.reason = line;
+  decide(verdict, "on the held-out objects");
   return verdict;
 }
 
 void recordCategoryVerdict(const CategoryVerdict& verdict, const fs::path& modelsDir,
-                           const std::vector<std::string>& heldOut) {
+                           const std::vector<std::string>& judgedOn) {
   nlohmann::json line = {{"model", "category"},
-                         {"held_out", heldOut},
+                         {verdict.sources ? "judged_by_source" : "held_out", judgedOn},
                          {"adopted", verdict.adopted},
                          {"candidate_share_right", verdict.after},
                          {"time", currentUtcTimestamp()}};
   if (verdict.before) line["current_share_right"] = *verdict.before;
+  if (verdict.sources) line["sources"] = verdict.sources;
   fs::create_directories(modelsDir);
   std::ofstream(modelsDir / "guard.jsonl", std::ios::app) << line.dump() << "\n";
+}
+
+CategoryRecipe recipeOf(const CategoryClassifier& classifier, std::vector<std::string>& missing) {
+  const nlohmann::json& record = classifier.training;
+  CategoryRecipe recipe;
+  if (record.contains("data") && record["data"].is_array()) {
+    for (const auto& entry : record["data"]) {
+      if (!entry.is_string()) continue;
+      const WeightedFolder folder = parseWeightedFolder(entry.get<std::string>());
+      std::error_code ec;
+      if (fs::is_directory(folder.dir, ec))
+        recipe.folders.push_back(folder);
+      else
+        missing.push_back(folder.dir.string());
+    }
+  }
+  CategoryTrainingOptions& options = recipe.options;
+  options.l2 = record.value("l2", options.l2);
+  options.iterations = record.value("iterations", options.iterations);
+  options.quadratic = record.value("quadratic", options.quadratic);
+  options.threshold = classifier.threshold();
+  options.inputs = classifier.inputSet();
+  if (record.contains("trees")) {  // the same kind of classifier
+    const nlohmann::json& trees = record.at("trees");
+    options.trees = true;
+    options.boosting.rounds = trees.value("rounds", options.boosting.rounds);
+    options.boosting.depth = trees.value("depth", options.boosting.depth);
+    options.boosting.rowShare = trees.value("row_share", options.boosting.rowShare);
+    options.boosting.featureShare = trees.value("feature_share", options.boosting.featureShare);
+    options.boosting.seed = trees.value("seed", options.boosting.seed);
+  }
+  return recipe;
+}
+
+std::string weightedFolderText(const WeightedFolder& folder) {
+  if (folder.weight == 1.0) return folder.dir.string();
+  char weighted[32];
+  std::snprintf(weighted, sizeof weighted, "@%g", folder.weight);
+  return folder.dir.string() + weighted;
+}
+
+CategoryRecipe withCuratedFolder(CategoryRecipe recipe, const WeightedFolder& curated) {
+  auto& folders = recipe.folders;
+  folders.erase(std::remove_if(folders.begin(), folders.end(),
+                               [&](const WeightedFolder& f) { return sameFolder(f.dir, curated.dir); }),
+                folders.end());
+  folders.push_back(curated);
+  return recipe;
+}
+
+CategoryVerdict judgeCategoryUpdateBySource(const CategoryRecipe& candidate,
+                                            const CategoryClassifier& current,
+                                            const std::vector<fs::path>& curated,
+                                            const FeatureOptions& features,
+                                            const FolderProgress& onProgress,
+                                            const RecipeFoldProgress& onFold) {
+  const auto figures = [&](const CategoryRecipe& recipe, const std::string& name) {
+    return shareRightBySource(recipe, curated, features, onProgress, [&](int k, int folds) {
+      if (onFold) onFold(name, k, folds);
+    });
+  };
+  CategoryVerdict verdict;
+  const SourceFigures after = figures(candidate, "candidate");
+  verdict.after = after.shareRight;
+  verdict.sources = after.sources;
+  std::vector<std::string> missing;
+  const CategoryRecipe recorded = recipeOf(current, missing);
+  std::string how = "on " + std::to_string(after.objects) + " curated objects, each source of " +
+                    std::to_string(after.sources) + " left out of training in turn";
+  if (missing.empty() && !recorded.folders.empty()) {
+    verdict.before = figures(recorded, "current").shareRight;
+  } else {
+    std::vector<WeightedFolder> judged;
+    for (const auto& dir : curated) judged.push_back({dir, 1.0});
+    const auto samples = collectWeightedSamples(judged, features, {}, current.inputSet(), onProgress);
+    verdict.before = balancedShareRight(evaluateCategories(
+        [&](const CategorySample& s) { return current.classify(s.descriptor); }, samples));
+    how += " (the current classifier as it is: " +
+           (missing.empty() ? std::string("it records no training folders")
+                            : std::to_string(missing.size()) + " of its training folders are not here") +
+           ")";
+  }
+  decide(verdict, how);
+  return verdict;
 }
 
 CategoryClassifier retrainCategoryClassifier(const CategoryClassifier& current,
@@ -111,53 +258,21 @@ CategoryClassifier retrainCategoryClassifier(const CategoryClassifier& current,
                                              const FeatureOptions& features,
                                              std::vector<std::string>& missing,
                                              const FolderProgress& onProgress) {
-  const nlohmann::json& record = current.training;
-  std::vector<WeightedFolder> folders;
-  std::vector<std::string> data;
-  if (record.contains("data") && record["data"].is_array()) {
-    for (const auto& entry : record["data"]) {
-      if (!entry.is_string()) continue;
-      const WeightedFolder folder = parseWeightedFolder(entry.get<std::string>());
-      std::error_code ec;
-      if (fs::is_directory(folder.dir, ec)) {
-        folders.push_back(folder);
-        data.push_back(entry.get<std::string>());
-      } else {
-        missing.push_back(folder.dir.string());
-      }
-    }
-  }
-  folders.push_back({curated, curatedWeight});
-  char weighted[32];
-  std::snprintf(weighted, sizeof weighted, "@%g", curatedWeight);
-  data.push_back(curated.string() + weighted);
-
-  CategoryTrainingOptions options;
-  options.l2 = record.value("l2", options.l2);
-  options.iterations = record.value("iterations", options.iterations);
-  options.quadratic = record.value("quadratic", options.quadratic);
-  options.threshold = current.threshold();
-  options.inputs = current.inputSet();
-  if (record.contains("trees")) {  // the same kind of classifier as the current one
-    options.trees = true;
-    options.boosting.rounds = record.at("trees").value("rounds", options.boosting.rounds);
-    options.boosting.depth = record.at("trees").value("depth", options.boosting.depth);
-    options.boosting.rowShare = record.at("trees").value("row_share", options.boosting.rowShare);
-    options.boosting.featureShare =
-        record.at("trees").value("feature_share", options.boosting.featureShare);
-    options.boosting.seed = record.at("trees").value("seed", options.boosting.seed);
-  }
-  const auto samples = collectWeightedSamples(folders, features, {}, options.inputs, onProgress);
+  CategoryRecipe recipe = withCuratedFolder(recipeOf(current, missing), {curated, curatedWeight});
+  const auto samples =
+      collectWeightedSamples(recipe.folders, features, {}, recipe.options.inputs, onProgress);
   if (samples.empty())
     throw InvalidArgument("no object to retrain the category classifier on: " + curated.string() +
                           " holds none and the classifier's own training folders are missing");
-  CategoryClassifier candidate = CategoryClassifier::train(samples, options);
+  CategoryClassifier candidate = CategoryClassifier::train(samples, recipe.options);
   candidate.featureBackend = current.featureBackend;
   candidate.featureConfigHash = current.featureConfigHash;
   candidate.gridResolution = current.gridResolution;
   candidate.evidence = current.evidence;
+  std::vector<std::string> data;
+  for (const auto& folder : recipe.folders) data.push_back(weightedFolderText(folder));
   candidate.training["data"] = data;
-  candidate.training["retrained_from"] = record.value("command", std::string());
+  candidate.training["retrained_from"] = current.training.value("command", std::string());
   candidate.training["missing_data"] = missing;
   return candidate;
 }

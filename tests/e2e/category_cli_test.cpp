@@ -9,6 +9,7 @@
 #include "core/annotate/category_classifier.h"
 #include "core/common/atomic_file.h"
 #include "core/generate/dataset_generator.h"
+#include "support/labelled_objects.h"
 #include "support/test_paths.h"
 
 namespace sagrid {
@@ -89,6 +90,47 @@ TEST(CategoryCli, TheGuardRefusesAWorseClassifierAndKeepsTheCurrentOne) {
                 " --iterations 1");
   EXPECT_EQ(r.exitCode, 1) << r.output;
   EXPECT_THAT(r.output, HasSubstr("hold only stove objects"));
+  EXPECT_EQ(readFileBytes(models / kCategoryClassifierFile), shipped);
+  EXPECT_FALSE(fs::exists(models / "refused"));
+}
+
+// The guard judged by source (issue 40: folds by source): the curated objects of two repositories
+// judge the one-step recipe against the shipped classifier, whose training folders are not here
+// (judged as it is): refused, logged by source. A curated folder of one source, or both guards at
+// once, are clear errors with nothing written.
+TEST(CategoryCli, TheGuardBySourceRefusesAWorseRecipe) {
+  const fs::path dir = test::freshTempDir();
+  gen::generateDataset({{"stove", 2, 48}, {"sink", 2, 49}, {"none", 2, 50}}, gen::MeshFormat::Obj,
+                       dir / "curated");
+  test::assignSources(dir / "curated", {"repo-a", "repo-b"});
+  const fs::path models = dir / "models";
+  fs::copy(fs::path(SAGRID_SOURCE_DIR) / "resources" / "models", models,
+           fs::copy_options::recursive);
+  const std::string shipped = readFileBytes(models / kCategoryClassifierFile);
+  const std::string train = "category train --data " + quotedPath(dir / "curated") + " --out " +
+                            quotedPath(models) + " --iterations 1";
+  auto r = runSagrid(train + " --guard-by-source " + quotedPath(dir / "curated"));
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("each source of 2 left out of training in turn (the current "
+                                  "classifier as it is"));
+  EXPECT_THAT(r.output, HasSubstr("refused, current classifier kept"));
+  EXPECT_EQ(readFileBytes(models / kCategoryClassifierFile), shipped);
+  EXPECT_TRUE(fs::exists(models / "refused" / kCategoryClassifierFile));
+  std::ifstream log(models / "guard.jsonl");
+  std::string line;
+  ASSERT_TRUE(std::getline(log, line));
+  EXPECT_THAT(line, HasSubstr("\"judged_by_source\""));
+  EXPECT_THAT(line, HasSubstr("\"sources\":2"));
+
+  fs::remove_all(models / "refused");
+  test::assignSources(dir / "curated", {"repo-a"});
+  r = runSagrid(train + " --guard-by-source " + quotedPath(dir / "curated"));
+  EXPECT_EQ(r.exitCode, 1) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("one source only (repo-a)"));
+  r = runSagrid(train + " --guard-by-source " + quotedPath(dir / "curated") + " --guard " +
+                quotedPath(dir / "curated"));
+  EXPECT_NE(r.exitCode, 0) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("excludes"));
   EXPECT_EQ(readFileBytes(models / kCategoryClassifierFile), shipped);
   EXPECT_FALSE(fs::exists(models / "refused"));
 }

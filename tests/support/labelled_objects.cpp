@@ -3,6 +3,9 @@
 #include <fstream>
 
 #include "core/annotate/suggested_points.h"
+#include "core/common/atomic_file.h"
+#include "core/dataset/dataset.h"
+#include "core/dataset/object_source.h"
 #include "core/mesh/mesh_export.h"
 
 namespace sagrid::test {
@@ -36,6 +39,13 @@ fs::path writeGeneratedObject(const fs::path& dir, const gen::GeneratedObject& o
   std::vector<AffordancePoint> points;
   for (const auto& p : object.points) points.push_back(affordance(p.type, p.position));
   return writeLabelledObject(dir, object.mesh, points, id, object.category);
+}
+
+void assignSources(const fs::path& dataset, const std::vector<std::string>& repos) {
+  const auto entries = readDataset(dataset);
+  for (std::size_t i = 0; i < entries.size(); ++i)
+    writeFileAtomic(entries[i].mesh.parent_path() / kProvenanceRecordFile,
+                    "{\"repo\": \"" + repos[i % repos.size()] + "\"}");
 }
 
 fs::path writeTinyStove(const fs::path& dir, bool rejected) {

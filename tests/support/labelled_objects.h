@@ -26,6 +26,11 @@ std::filesystem::path writeGeneratedObject(const std::filesystem::path& dir,
                                            const gen::GeneratedObject& object,
                                            const std::string& id);
 
+// Files the objects of `dataset` under the repositories `repos` in turn (object i under repos[i %
+// size]) with a provenance record beside each mesh, as the corpora write: the sources that
+// leave-one-source-out reads.
+void assignSources(const std::filesystem::path& dataset, const std::vector<std::string>& repos);
+
 // A one-square "stove" (dir/mesh.obj, z up) with a predicted heatsource and togglebutton, or
 // (rejected) the same filed as "none" with them suggested as a stove's. Returns the labels path.
 std::filesystem::path writeTinyStove(const std::filesystem::path& dir, bool rejected);

@@ -125,7 +125,7 @@ void TrainingWorker::runCategoryClassifier(const TrainingRequest& request) {
       });
   for (const auto& dir : missing) logger()->warn("category classifier: {} is not here; retrained without it", dir);
   bool adopted = true;
-  std::string verdictLine = "unguarded: the retrained classifier is kept, better or not";
+  std::string verdictLine;
   if (!request.heldOut.empty()) {
     update([&](TrainingStatus& s) { s.phase = "guard: the category classifier on held-out objects"; s.fraction = 0.9f; });
     const CategoryVerdict verdict =
@@ -133,6 +133,33 @@ void TrainingWorker::runCategoryClassifier(const TrainingRequest& request) {
     recordCategoryVerdict(verdict, request.outDir, {request.heldOut.string()});
     adopted = verdict.adopted;
     verdictLine = verdict.reason;
+  } else {
+    // No held-out folder: the training set's objects judge both recipes, each source left out
+    // in turn (its features are cached by the retraining above).
+    std::vector<std::string> gone;
+    try {
+      const CategoryVerdict verdict = judgeCategoryUpdateBySource(
+          withCuratedFolder(recipeOf(current, gone), {request.dataset, kCuratedCategoryWeight}),
+          current, {request.dataset}, features,
+          [&](const fs::path&, std::size_t, std::size_t) {
+            if (m_cancel) throw Cancelled();
+          },
+          [&](const std::string& recipe, int k, int folds) {
+            if (m_cancel) throw Cancelled();
+            update([&](TrainingStatus& s) {
+              s.phase = "guard: the " + recipe + " classifier without source " + std::to_string(k + 1) +
+                        "/" + std::to_string(folds);
+              s.fraction = 0.8f + 0.1f * (recipe == "current") + 0.1f * float(k) / float(folds);
+            });
+          });
+      recordCategoryVerdict(verdict, request.outDir, {request.dataset.string()});
+      adopted = verdict.adopted;
+      verdictLine = verdict.reason;
+    } catch (const TooFewSources&) {
+      verdictLine = "unguarded: the training set's objects come from one source, so none can be "
+                    "left out to judge the retrained classifier; it is kept, better or not (a "
+                    "held-out folder of other sources guards it)";
+    }
   }
   const fs::path file =
       adopted ? request.outDir / kCategoryClassifierFile : request.outDir / "refused" / kCategoryClassifierFile;

@@ -36,7 +36,8 @@ struct TrainingRequest {
   std::filesystem::path heldOut;
   // Instead of point models: retrain the category classifier of initDir (else outDir) with the
   // training set's objects and their curated categories (core/annotate/category_update.h), guarded
-  // by heldOut when given; written to outDir when adopted, else to outDir/refused/.
+  // by heldOut when given, else leaving each source of the training set out (unguarded when it
+  // holds one source only); written to outDir when adopted, else to outDir/refused/.
   bool categoryClassifier = false;
   // Instead of point models: retrain the learned point decision of initDir (else outDir) on the
   // training set's curated objects and `generated` objects (core/eval/point_scorer_update.h),

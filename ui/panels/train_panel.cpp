@@ -74,8 +74,9 @@ void drawTrainPanel(Session& session, TrainingWorker& worker,
     // The categories the curator confirmed or switched train the classifier too.
     retrainButton("Retrain category classifier", &TrainingRequest::categoryClassifier,
                   "Stove / sink / none, learned again from the training set's curated categories "
-                  "and the classifier's own training data; with a held-out folder, kept only "
-                  "where it decides more of it right");
+                  "and the classifier's own training data; kept only where it decides more "
+                  "right: of the held-out folder when given, else of the training set, each "
+                  "source left out of training in turn");
     // The points the curator accepted, moved, added or deleted teach the point decision too.
     retrainButton("Retrain point decision", &TrainingRequest::pointScorer,
                   "Which of the fields' minima and the mesh's small parts are points, learned "

@@ -89,6 +89,26 @@ TEST(CategoryCrossValidation, TheOtherFoldsTeachEachHeldOutObject) {
   EXPECT_TRUE(ev.misses.empty());
 }
 
+TEST(CategoryCrossValidation, ObjectsOfWeightZeroAreDecidedButNeverTrainedOn) {
+  // The real stoves of TheOtherFoldsTeachEachHeldOutObject, which teach each other when trained
+  // on: at weight 0 (a recipe that does not learn from them) each is decided as by the generated
+  // samples alone.
+  std::vector<CategorySample> real;
+  for (int i = 0; i < 10; ++i) {
+    real.push_back(sample("real" + std::to_string(i), "stove", 0.02f * static_cast<float>(i), -2,
+                          "real"));
+    real.back().weight = 0;
+  }
+  const auto always = generated(20);
+  const auto alone = CategoryClassifier::train(always, quick());
+  int rightAlone = 0;
+  for (const auto& s : real) rightAlone += alone.classify(s.descriptor).category == "stove";
+  const auto ev = crossValidateCategories(always, real, 5, quick());
+  EXPECT_EQ(ev.byClass.at("stove").total, 10);
+  EXPECT_EQ(ev.byClass.at("stove").right, rightAlone);
+  EXPECT_LT(rightAlone, 5);
+}
+
 TEST(CategoryCrossValidation, AnObjectIsNeverDecidedByAClassifierThatSawIt) {
   // A sink that looks exactly like a stove, weighed heavily: a classifier trained on it would
   // learn it, one trained without it calls it a stove.
