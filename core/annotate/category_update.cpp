@@ -5,6 +5,8 @@
 #include <fstream>
 #include <map>
 #include <nlohmann/json.hpp>
+#include <optional>
+#include <utility>
 
 #include "core/annotate/category_cross_validation.h"
 #include "core/annotate/category_training.h"
@@ -67,16 +69,45 @@ void requireSeveralClasses(const std::vector<CategorySample>& samples, const std
 
 namespace {
 
-// Adopted without a current classifier or when the candidate's share is higher; the reason names
-// both figures and `judgedOn` (where they were measured).
-void decide(CategoryVerdict& verdict, const std::string& judgedOn) {
+// "stoves 17/26 -> 21/26, sinks 42/45, look-alikes 84/97 -> 85/97": each class's objects right,
+// before (when there is a current classifier) and after.
+std::string classFigures(const std::optional<CategoryEvaluation>& before, const CategoryEvaluation& after) {
+  std::string text;
+  for (const auto& [cls, name] : {std::pair<const char*, const char*>{"stove", "stoves"},
+                                  {"sink", "sinks"}, {kRejectedCategory, "look-alikes"}}) {
+    const auto count = [&](const CategoryEvaluation& ev) {
+      const auto it = ev.byClass.find(cls);
+      return it == ev.byClass.end() ? CategoryEvaluation::Count{} : it->second;
+    };
+    const CategoryEvaluation::Count a = count(after);
+    if (a.total == 0) continue;
+    const auto fraction = [](const CategoryEvaluation::Count& c) {
+      return std::to_string(c.right) + "/" + std::to_string(c.total);
+    };
+    text += (text.empty() ? "" : ", ") + std::string(name) + " " +
+            (before && count(*before).total ? fraction(count(*before)) + " -> " : std::string()) +
+            fraction(a);
+  }
+  return text;
+}
+
+// The verdict on the candidate's evaluation `after` against the current classifier's `before`
+// (none: adopted): adopted when the share right averaged over the classes is higher; the reason
+// names both shares, each class's figures and `judgedOn` (where they were measured).
+CategoryVerdict decide(const std::optional<CategoryEvaluation>& before, const CategoryEvaluation& after,
+                       const std::string& judgedOn) {
+  CategoryVerdict verdict;
+  verdict.after = balancedShareRight(after);
+  if (before) verdict.before = balancedShareRight(*before);
   verdict.adopted = !verdict.before || verdict.after > *verdict.before;
   char was[32] = "(none)";
   if (verdict.before) std::snprintf(was, sizeof was, "%.1f %%", 100 * *verdict.before);
   char figures[96];
   std::snprintf(figures, sizeof figures, "%s -> %.1f %%", was, 100 * verdict.after);
-  verdict.reason = std::string("category classifier: share right ") + figures + " " + judgedOn +
-                   ": " + (verdict.adopted ? "adopted" : "refused, current classifier kept");
+  verdict.reason = std::string("category classifier: share right ") + figures + " (" +
+                   classFigures(before, after) + ") " + judgedOn + ": " +
+                   (verdict.adopted ? "adopted" : "refused, current classifier kept");
+  return verdict;
 }
 
 bool sameFolder(const fs::path& a, const fs::path& b) {
@@ -93,10 +124,10 @@ std::string folderList(const std::vector<fs::path>& folders) {
   return list;
 }
 
-// `recipe` cross-validated over the sources of the `curated` folders' objects: the balanced
-// share right, and how many objects and sources it was measured on.
+// `recipe` cross-validated over the sources of the `curated` folders' objects: its evaluation
+// over every curated object, and how many sources it was measured on.
 struct SourceFigures {
-  double shareRight = 0;
+  CategoryEvaluation evaluation;
   std::size_t objects = 0, sources = 0;
 };
 SourceFigures shareRightBySource(const CategoryRecipe& recipe, const std::vector<fs::path>& curated,
@@ -128,7 +159,7 @@ SourceFigures shareRightBySource(const CategoryRecipe& recipe, const std::vector
       collectWeightedSamples(always, features, {}, recipe.options.inputs, onProgress);
   const CategoryEvaluation ev =
       crossValidateCategoriesBySource(alwaysSamples, judgedSamples, recipe.options, onFold);
-  return {balancedShareRight(ev), judgedSamples.size(), sources.size()};
+  return {ev, judgedSamples.size(), sources.size()};
 }
 
 }  // namespace
@@ -138,22 +169,21 @@ CategoryVerdict judgeCategoryUpdate(const CategoryClassifier& candidate, const f
                                     const FeatureOptions& features) {
   // The held-out inputs, once per input set (with or without the top relief, the parts).
   std::map<CategoryInputSet, std::vector<CategorySample>> samplesByInputs;
-  const auto shareRight = [&](const CategoryClassifier& c) {
+  const auto evaluate = [&](const CategoryClassifier& c) {
     auto found = samplesByInputs.find(c.inputSet());
     if (found == samplesByInputs.end()) {
       auto samples = collectWeightedSamples(heldOut, features, {}, c.inputSet());
       requireSeveralClasses(samples);
       found = samplesByInputs.emplace(c.inputSet(), std::move(samples)).first;
     }
-    return balancedShareRight(evaluateCategories(
-        [&](const CategorySample& s) { return c.classify(s.descriptor); }, found->second));
+    return evaluateCategories([&](const CategorySample& s) { return c.classify(s.descriptor); },
+                              found->second);
   };
-  CategoryVerdict verdict;
-  verdict.after = shareRight(candidate);
+  const CategoryEvaluation after = evaluate(candidate);
+  std::optional<CategoryEvaluation> before;
   std::error_code ec;
-  if (fs::exists(currentFile, ec)) verdict.before = shareRight(CategoryClassifier::load(currentFile));
-  decide(verdict, "on the held-out objects");
-  return verdict;
+  if (fs::exists(currentFile, ec)) before = evaluate(CategoryClassifier::load(currentFile));
+  return decide(before, after, "on the held-out objects");
 }
 
 void recordCategoryVerdict(const CategoryVerdict& verdict, const fs::path& modelsDir,
@@ -162,6 +192,7 @@ void recordCategoryVerdict(const CategoryVerdict& verdict, const fs::path& model
                          {verdict.sources ? "judged_by_source" : "held_out", judgedOn},
                          {"adopted", verdict.adopted},
                          {"candidate_share_right", verdict.after},
+                         {"reason", verdict.reason},
                          {"time", currentUtcTimestamp()}};
   if (verdict.before) line["current_share_right"] = *verdict.before;
   if (verdict.sources) line["sources"] = verdict.sources;
@@ -228,28 +259,27 @@ CategoryVerdict judgeCategoryUpdateBySource(const CategoryRecipe& candidate,
       if (onFold) onFold(name, k, folds);
     });
   };
-  CategoryVerdict verdict;
   const SourceFigures after = figures(candidate, "candidate");
-  verdict.after = after.shareRight;
-  verdict.sources = after.sources;
   std::vector<std::string> missing;
   const CategoryRecipe recorded = recipeOf(current, missing);
   std::string how = "on " + std::to_string(after.objects) + " curated objects, each source of " +
                     std::to_string(after.sources) + " left out of training in turn";
+  CategoryEvaluation before;
   if (missing.empty() && !recorded.folders.empty()) {
-    verdict.before = figures(recorded, "current").shareRight;
+    before = figures(recorded, "current").evaluation;
   } else {
     std::vector<WeightedFolder> judged;
     for (const auto& dir : curated) judged.push_back({dir, 1.0});
     const auto samples = collectWeightedSamples(judged, features, {}, current.inputSet(), onProgress);
-    verdict.before = balancedShareRight(evaluateCategories(
-        [&](const CategorySample& s) { return current.classify(s.descriptor); }, samples));
+    before = evaluateCategories(
+        [&](const CategorySample& s) { return current.classify(s.descriptor); }, samples);
     how += " (the current classifier as it is: " +
            (missing.empty() ? std::string("it records no training folders")
                             : std::to_string(missing.size()) + " of its training folders are not here") +
            ")";
   }
-  decide(verdict, how);
+  CategoryVerdict verdict = decide(before, after.evaluation, how);
+  verdict.sources = after.sources;
   return verdict;
 }
 

@@ -79,6 +79,8 @@ TEST(CategoryGuardBySource, ARecipeThatLearnsFromTheCuratedSourcesIsAdopted) {
             std::string::npos)
       << verdict;
   EXPECT_EQ(verdict.find("as it is"), std::string::npos) << verdict;
+  // Each class's figures before and after: the current recipe never answers "sink".
+  EXPECT_NE(verdict.find("sinks 0/6 -> "), std::string::npos) << verdict;
   EXPECT_TRUE(fs::exists(dir / "out" / kCategoryClassifierFile));
   EXPECT_FALSE(fs::exists(dir / "out" / "refused"));
   const auto line = nlohmann::json::parse(lastGuardLine(dir / "out"));
