@@ -198,7 +198,11 @@ bool guardAdopts(const sagrid::CategoryClassifier& candidate, const fs::path& cu
 bool guardBySourceAdopts(const Options& o, const sagrid::CategoryTrainingOptions& options,
                          const fs::path& current, const sagrid::FeatureOptions& features) {
   std::error_code ec;
-  if (!fs::exists(current, ec)) return true;
+  if (!fs::exists(current, ec)) {
+    std::printf("category classifier: no current one in %s to judge against: adopted\n",
+                current.parent_path().string().c_str());
+    return true;
+  }
   sagrid::CategoryRecipe candidate{{}, options};
   for (const auto& arg : o.data) candidate.folders.push_back(sagrid::parseWeightedFolder(arg));
   std::vector<fs::path> curated(o.guardBySource.begin(), o.guardBySource.end());
