@@ -1,10 +1,16 @@
 #include "core/eval/point_scorer_update.h"
 
+#include <algorithm>
+#include <map>
+#include <set>
+#include <utility>
+
 #include "core/annotate/model_set.h"
 #include "core/common/atomic_file.h"
 #include "core/common/error.h"
 #include "core/eval/evaluation.h"
 #include "core/generate/dataset_generator.h"
+#include "core/model/model_card.h"
 #include "core/training/training_sources.h"
 
 namespace sagrid {
@@ -34,7 +40,79 @@ std::size_t withTruth(const std::vector<CandidateSet>& sets) {
   return n;
 }
 
+std::string categoryOf(const std::string& modelName) { return model::splitModelName(modelName).first; }
+
+// "a -> b edits on WHERE (the current point decision -> the retrained one): adopted" (or where
+// better, or refused).
+std::string guardVerdict(const ScorerGuard& guard, bool hadCurrent, const std::string& where) {
+  return std::to_string(guard.currentEdits) + " -> " + std::to_string(guard.newEdits) +
+         " edits on " + where + " (" +
+         (hadCurrent ? "the current point decision" : "the count's points") +
+         " -> the retrained one): " +
+         (!guard.adopted         ? "refused, the current decision stays"
+          : guard.adoptedWhole() ? "adopted"
+                                 : "adopted where better (" + std::to_string(guard.adoptedEdits) +
+                                       " edits); kept the decision before for " +
+                                       modelsWhere(guard, false));
+}
+
 }  // namespace
+
+std::optional<ScorerGuard> guardPointScorerBySource(const PointScorer* current,
+                                                    const std::vector<const CandidateSet*>& training,
+                                                    const ScorerTrainingOptions& options,
+                                                    const std::function<void(int, int)>& onFold) {
+  std::set<std::string> sources;
+  for (const CandidateSet* set : training)
+    if (!set->generated) sources.insert(set->source);
+  if (sources.size() < 2) return std::nullopt;
+  std::map<std::string, ScorerVerdict> byModel;  // each model's edits summed over the folds
+  int k = 0;
+  for (const std::string& source : sources) {
+    if (onFold) onFold(k++, static_cast<int>(sources.size()));
+    std::vector<const CandidateSet*> rest;
+    std::vector<CandidateSet> held;
+    for (const CandidateSet* set : training) {
+      if (!set->generated && set->source == source)
+        held.push_back(*set);
+      else
+        rest.push_back(set);
+    }
+    const ScorerGuard fold = guardPointScorer(current, trainPointScorer(rest, options), held, rest);
+    std::set<std::string> judged;
+    for (const auto& set : held) judged.insert(set.model);
+    for (const ScorerVerdict& v : fold.byModel) {
+      if (!judged.count(v.model)) continue;
+      ScorerVerdict& sum = byModel[v.model];
+      sum.model = v.model;
+      sum.currentEdits += v.currentEdits;
+      sum.newEdits += v.newEdits;
+      sum.handPoints += v.handPoints;
+    }
+  }
+  std::map<std::string, std::pair<std::size_t, std::size_t>> byCategory;  // current, new edits
+  std::map<std::string, std::size_t> judgedModels;
+  for (const auto& [model, v] : byModel) {
+    auto& edits = byCategory[categoryOf(model)];
+    edits.first += v.currentEdits;
+    edits.second += v.newEdits;
+    ++judgedModels[categoryOf(model)];
+  }
+  ScorerGuard guard;
+  for (auto& [model, v] : byModel) {
+    const auto& [currentEdits, newEdits] = byCategory.at(categoryOf(model));
+    v.adopted = newEdits < currentEdits;
+    v.categoryCurrentEdits = currentEdits;
+    v.categoryAdoptedEdits = std::min(currentEdits, newEdits);
+    v.categoryJudged = judgedModels.at(categoryOf(model));
+    guard.currentEdits += v.currentEdits;
+    guard.newEdits += v.newEdits;
+    guard.adoptedEdits += v.adopted ? v.newEdits : v.currentEdits;
+    guard.adopted = guard.adopted || v.adopted;
+    guard.byModel.push_back(v);
+  }
+  return guard;
+}
 
 ScorerUpdate judgeScorerUpdate(PointScorer fresh, const std::optional<PointScorer>& current,
                                const std::vector<CandidateSet>& heldOut,
@@ -50,16 +128,7 @@ ScorerUpdate judgeScorerUpdate(PointScorer fresh, const std::optional<PointScore
   const PointScorer* was = current ? &*current : nullptr;
   const ScorerGuard& guard = *(update.guard = guardPointScorer(was, update.scorer, heldOut, training));
   update.adoptedScorer = adoptedScorer(was, update.scorer, guard);
-  update.verdict = std::to_string(guard.currentEdits) + " -> " + std::to_string(guard.newEdits) +
-                   " edits on the held-out objects (" +
-                   (current ? "the current point decision" : "the count's points") +
-                   " -> the retrained one): " +
-                   (!guard.adopted         ? "refused, the current decision stays"
-                    : guard.adoptedWhole() ? "adopted"
-                                           : "adopted where better (" +
-                                                 std::to_string(guard.adoptedEdits) +
-                                                 " edits); kept the decision before for " +
-                                                 modelsWhere(guard, false));
+  update.verdict = guardVerdict(guard, current.has_value(), "the held-out objects");
   return update;
 }
 
@@ -88,8 +157,31 @@ ScorerUpdate updatePointScorer(const ScorerUpdateRequest& request) {
   const auto heldOut = request.heldOut.empty()
                            ? std::vector<CandidateSet>{}
                            : candidatesOf(models, request.heldOut, "held out", request);
-  ScorerUpdate update = judgeScorerUpdate(trainPointScorer(training, request.training),
-                                          readPointScorer(request.models), heldOut, training);
+  const std::optional<PointScorer> current = readPointScorer(request.models);
+  ScorerUpdate update =
+      judgeScorerUpdate(trainPointScorer(training, request.training), current, heldOut, training);
+  if (heldOut.empty()) {
+    // No held-out folder: the curated objects judge, each source left out of the fitting in turn.
+    int folds = 0;
+    const auto guard = guardPointScorerBySource(
+        current ? &*current : nullptr, training, request.training, [&](int k, int n) {
+          if (request.cancel && request.cancel->load()) throw Cancelled();
+          if (request.onProgress) request.onProgress("guard: source left out", k, n, "");
+          folds = n;
+        });
+    if (guard) {
+      update.guard = guard;
+      update.adoptedScorer = adoptedScorer(current ? &*current : nullptr, update.scorer, *guard);
+      update.verdict = guardVerdict(*guard, current.has_value(),
+                                    "the curated objects, each source of " +
+                                        std::to_string(folds) +
+                                        " left out of the fitting in turn");
+    } else {
+      update.verdict = "unguarded: the curated objects come from one source, so none can be left "
+                       "out to judge the retrained point decision; it is kept, better or not (a "
+                       "held-out folder of other sources guards it)";
+    }
+  }
   update.curatedSets = curated.size();
   update.generatedSets = generated.size();
   return update;

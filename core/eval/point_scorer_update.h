@@ -26,7 +26,9 @@ struct ScorerUpdateRequest {
   // (defaultBenchDir(), its val split: objects the networks were not trained on), generated once
   // when missing.
   std::filesystem::path generated;
-  std::filesystem::path heldOut;    // curated objects of other sources: the guard's; empty: unguarded
+  // Curated objects of other sources: the guard's; empty: the curated objects judge, each source
+  // left out in turn (guardPointScorerBySource), unguarded when they are of one source.
+  std::filesystem::path heldOut;
   ScorerTrainingOptions training;
   // Per object while candidates are made: the phase ("curated", "generated", "held out"; "bench"
   // while the bench is generated), done, total and the object.
@@ -39,12 +41,25 @@ struct ScorerUpdate {
   // What the models folder gets: the fresh decisions of the models the guard adopted beside the
   // current ones of the others (adoptedScorer); unguarded, the fresh one.
   PointScorer adoptedScorer;
-  std::optional<ScorerGuard> guard;  // with a held-out folder
+  std::optional<ScorerGuard> guard;  // with a held-out folder, or judged by source
   std::size_t curatedSets = 0, generatedSets = 0, heldOutSets = 0;
   std::string verdict;               // one line: the edits before and after, and the decision
   // For at least one model; unguarded: always.
   bool adopted() const { return !guard || guard->adopted; }
 };
+
+// The guard without held-out objects (issue 40: folds by source). Each source of the curated
+// sets of `training` (the generated ones always train) is decided by a decision fitted with
+// `options` on the other sets, and by `current` as it is (none: the count's points; should it
+// have been fitted on some of these objects, the comparison favours it), each fold judged as
+// guardPointScorer judges a held-out folder and each model's edits summed over the folds. Every
+// fold has its own new decision, so no one mix of a category's decisions is judged: a category's
+// new decisions are adopted together where its summed edits are fewer, else none of them.
+// nullopt for curated sets of fewer than two sources (none can be left out while another
+// teaches). `onFold(k, folds)` before each fold's fitting.
+std::optional<ScorerGuard> guardPointScorerBySource(
+    const PointScorer* current, const std::vector<const CandidateSet*>& training,
+    const ScorerTrainingOptions& options, const std::function<void(int, int)>& onFold = {});
 
 // Throws InvalidArgument when the curated objects give no candidate set with ground truth, or
 // as guardPointScorer does (a held-out object also in training); FileError for unreadable data.

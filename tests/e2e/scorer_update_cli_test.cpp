@@ -11,8 +11,11 @@
 #include <nlohmann/json.hpp>
 
 #include "core/annotate/point_scorer.h"
+#include "core/dataset/dataset.h"
+#include "core/labels/labels.h"
 #include "core/model/model_card.h"
 #include "core/generate/dataset_generator.h"
+#include "support/labelled_objects.h"
 #include "support/test_paths.h"
 
 namespace sagrid {
@@ -61,6 +64,35 @@ TEST(ScorerUpdateCli, WritesTheModelsFolderWithTheVerdictAndRefusesHeldOutTraini
   EXPECT_THAT(r.output, ::testing::ContainsRegex("guard: stove\\.[a-z]+: [0-9]+ -> [0-9]+ edits on "
                                                  "[0-9]+ held-out points: (adopted|the decision "
                                                  "before stays)"));
+}
+
+// Without a held-out folder the curated objects judge, each source left out of the fitting in
+// turn (issue 40: folds by source); curated objects of one source are retrained unguarded, and
+// the verdict says so.
+TEST(ScorerUpdateCli, WithoutAHeldOutFolderTheCuratedSourcesJudge) {
+  const fs::path dir = test::freshTempDir();
+  gen::generateDataset({{"stove", 2, 81}, {"sink", 2, 82}}, gen::MeshFormat::Obj, dir / "curated");
+  gen::generateDataset({{"stove", 1, 83}, {"sink", 1, 84}}, gen::MeshFormat::Obj, dir / "generated");
+  test::assignSources(dir / "curated", {"repo-a", "repo-b"});
+  for (const auto& entry : readDataset(dir / "curated")) {  // curated as real objects are
+    ObjectLabels labels = readLabels(entry.labels);
+    labels.object.extra.erase("generator");
+    writeLabels(entry.labels, labels);
+  }
+  const std::string common = " --data " + quotedPath(dir / "curated") + " --generated " +
+                             quotedPath(dir / "generated") + " --out " + quotedPath(dir / "out");
+  auto r = runSagrid("scorer update" + common);
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_THAT(r.output, ::testing::ContainsRegex(
+                            "[0-9]+ -> [0-9]+ edits on the curated objects, each source of 2 left "
+                            "out of the fitting in turn \\(the current point decision -> the "
+                            "retrained one\\): (adopted|refused)"));
+  EXPECT_TRUE(fs::exists(dir / "out" / "scorer_guard.json"));
+
+  test::assignSources(dir / "curated", {"repo-a"});
+  r = runSagrid("scorer update" + common);
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("unguarded: the curated objects come from one source"));
 }
 
 // Candidates made by other networks than the models folder's: `scorer train` refuses to write a

@@ -42,8 +42,9 @@ struct TrainingRequest {
   // Instead of point models: retrain the learned point decision of initDir (else outDir) on the
   // training set's curated objects and `generated` objects (core/eval/point_scorer_update.h),
   // guarded by heldOut when given (guardPointScorer: each category's best mix of the loaded and
-  // new decisions, judged as a whole, goes into outDir's point_scorer.json), and the whole new
-  // scorer goes to outDir/refused/ where any model's new decision was not taken.
+  // new decisions, judged as a whole, goes into outDir's point_scorer.json), else leaving each
+  // source of the training set out (guardPointScorerBySource; unguarded with one source), and the
+  // whole new scorer goes to outDir/refused/ where any model's new decision was not taken.
   bool pointScorer = false;
   std::filesystem::path generated;  // empty: the bench's val split (generated when missing)
   // Instead of point models: grow the units memory of initDir (else outDir; none there: a new one)

@@ -82,7 +82,9 @@ void drawTrainPanel(Session& session, TrainingWorker& worker,
                   "Which of the fields' minima and the mesh's small parts are points, learned "
                   "again from the training set's curated points and generated objects (the "
                   "bench's val split, made once); with a held-out folder, each model's is kept "
-                  "only where it needs fewer edits on that model's held-out objects");
+                  "only where it needs fewer edits on that model's held-out objects, else each "
+                  "category's only where it needs fewer edits on the training set, each source "
+                  "left out of the fitting in turn");
     // The units the curator set or confirmed teach the units guess's memory of real sizes.
     retrainButton("Grow units memory", &TrainingRequest::unitsMemory,
                   "The real sizes of the training set's objects (their curated units) join the "

@@ -11,6 +11,7 @@
 #include "core/common/error.h"
 #include "core/eval/metrics.h"
 #include "core/eval/point_scorer_training.h"
+#include "core/eval/point_scorer_update.h"
 #include "core/eval/scorer_cv_spread.h"
 #include "support/point_scorers.h"
 
@@ -600,6 +601,40 @@ bool sameDecision(const ModelPointScorer* a, const ModelPointScorer& b) {
   x.byModel["m"] = *a;
   y.byModel["m"] = b;
   return toJson(x).dump() == toJson(y).dump();
+}
+
+// Without held-out objects the curated sources judge (issue 40: folds by source): each source's
+// objects decided by a decision fitted on the other sources and the generated objects, against the
+// current decision as it is, edits summed over the folds.
+TEST(PointScorerTraining, TheGuardBySourceAdoptsABetterDecisionAndKeepsAnEqualOne) {
+  const auto sets = syntheticSets();
+  std::vector<const CandidateSet*> training;
+  for (const auto& s : sets) training.push_back(&s);
+  std::vector<int> folds;
+  const PointScorer poor = onePointScorer();
+  const auto better = guardPointScorerBySource(&poor, training, {}, [&](int k, int n) {
+    folds.push_back(k);
+    EXPECT_EQ(n, 3);
+  });
+  ASSERT_TRUE(better.has_value());
+  EXPECT_EQ(folds, (std::vector<int>{0, 1, 2}));  // one fold per curated source, none generated
+  ASSERT_EQ(better->byModel.size(), 1u);
+  EXPECT_EQ(better->byModel[0].handPoints, 54u);   // 18 curated objects of three knobs each
+  EXPECT_EQ(better->currentEdits, 36u);            // one knob of three: two additions per object
+  EXPECT_EQ(better->newEdits, 0u);
+  EXPECT_TRUE(better->adopted);
+  EXPECT_TRUE(better->adoptedWhole());
+  // A current decision as good as the new ones: nothing is adopted (ties keep the current one).
+  const PointScorer good = trainPointScorer(training, {});
+  const auto equal = guardPointScorerBySource(&good, training, {});
+  ASSERT_TRUE(equal.has_value());
+  EXPECT_EQ(equal->currentEdits, equal->newEdits);
+  EXPECT_FALSE(equal->adopted);
+  // Curated objects of one source cannot be judged by source.
+  std::vector<const CandidateSet*> oneSource;
+  for (const auto& s : sets)
+    if (s.generated || s.source == "repo-a") oneSource.push_back(&s);
+  EXPECT_FALSE(guardPointScorerBySource(&poor, oneSource, {}).has_value());
 }
 
 // Two models of two categories judged apart: the new scorer is better on one and worse on the
