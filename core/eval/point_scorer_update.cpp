@@ -171,8 +171,15 @@ ScorerUpdate updatePointScorer(const ScorerUpdateRequest& request) {
         });
     if (guard) {
       update.guard = guard;
-      update.adoptedScorer = adoptedScorer(current ? &*current : nullptr, update.scorer, *guard);
-      update.verdict = guardVerdict(*guard, current.has_value(),
+      // As on a held-out folder: the new scorer's models no curated object judged are listed,
+      // not adopted.
+      for (const auto& [model, decision] : update.scorer.byModel)
+        if (std::none_of(guard->byModel.begin(), guard->byModel.end(),
+                         [&](const ScorerVerdict& v) { return v.model == model; }))
+          update.guard->byModel.push_back({model, 0, 0, 0, false});
+      update.adoptedScorer =
+          adoptedScorer(current ? &*current : nullptr, update.scorer, *update.guard);
+      update.verdict = guardVerdict(*update.guard, current.has_value(),
                                     "the curated objects, each source of " +
                                         std::to_string(folds) +
                                         " left out of the fitting in turn");
