@@ -241,14 +241,15 @@ void setupCategory(CLI::App& root) {
                     "repeat): the new classifier replaces OUT's only if its share right there, "
                     "averaged over stoves, sinks and look-alikes, is higher; else it goes to "
                     "OUT/refused/ (OUT/guard.jsonl: the figures)");
-  train->add_option("--guard-by-source", o->guardBySource,
-                    "Curated dataset folders (repeat; usually also among --data): the new "
-                    "classifier's recipe and the current one's (OUT's training record; where a "
-                    "folder of that is not here, the current classifier as it is) are each "
-                    "cross-validated leaving one source of these objects out at a time; the new "
-                    "one replaces OUT's only if its share right, averaged over stoves, sinks and "
-                    "look-alikes, is higher; else it goes to OUT/refused/ (OUT/guard.jsonl: the "
-                    "figures)")
+  train
+      ->add_option("--guard-by-source", o->guardBySource,
+                   "Curated dataset folders (repeat; usually also among --data): the new "
+                   "classifier's recipe and the current one's (OUT's training record; where a "
+                   "folder of that is not here, the current classifier as it is) are each "
+                   "cross-validated leaving one source of these objects out at a time; the new "
+                   "one replaces OUT's only if its share right, averaged over stoves, sinks and "
+                   "look-alikes, is higher; else it goes to OUT/refused/ (OUT/guard.jsonl: the "
+                   "figures)")
       ->excludes(train->get_option("--guard"))
       ->excludes(train->get_option("--exclude-split"));
   addTrainingFlags(train, *o);

@@ -71,10 +71,12 @@ namespace {
 
 // "stoves 17/26 -> 21/26, sinks 42/45, look-alikes 84/97 -> 85/97": each class's objects right,
 // before (when there is a current classifier) and after.
-std::string classFigures(const std::optional<CategoryEvaluation>& before, const CategoryEvaluation& after) {
+std::string classFigures(const std::optional<CategoryEvaluation>& before,
+                         const CategoryEvaluation& after) {
   std::string text;
   for (const auto& [cls, name] : {std::pair<const char*, const char*>{"stove", "stoves"},
-                                  {"sink", "sinks"}, {kRejectedCategory, "look-alikes"}}) {
+                                  {"sink", "sinks"},
+                                  {kRejectedCategory, "look-alikes"}}) {
     const auto count = [&](const CategoryEvaluation& ev) {
       const auto it = ev.byClass.find(cls);
       return it == ev.byClass.end() ? CategoryEvaluation::Count{} : it->second;
@@ -94,8 +96,8 @@ std::string classFigures(const std::optional<CategoryEvaluation>& before, const 
 // The verdict on the candidate's evaluation `after` against the current classifier's `before`
 // (none: adopted): adopted when the share right averaged over the classes is higher; the reason
 // names both shares, each class's figures and `judgedOn` (where they were measured).
-CategoryVerdict decide(const std::optional<CategoryEvaluation>& before, const CategoryEvaluation& after,
-                       const std::string& judgedOn) {
+CategoryVerdict decide(const std::optional<CategoryEvaluation>& before,
+                       const CategoryEvaluation& after, const std::string& judgedOn) {
   CategoryVerdict verdict;
   verdict.after = balancedShareRight(after);
   if (before) verdict.before = balancedShareRight(*before);
@@ -188,12 +190,10 @@ CategoryVerdict judgeCategoryUpdate(const CategoryClassifier& candidate, const f
 
 void recordCategoryVerdict(const CategoryVerdict& verdict, const fs::path& modelsDir,
                            const std::vector<std::string>& judgedOn) {
-  nlohmann::json line = {{"model", "category"},
-                         {verdict.sources ? "judged_by_source" : "held_out", judgedOn},
-                         {"adopted", verdict.adopted},
-                         {"candidate_share_right", verdict.after},
-                         {"reason", verdict.reason},
-                         {"time", currentUtcTimestamp()}};
+  nlohmann::json line = {
+      {"model", "category"},        {verdict.sources ? "judged_by_source" : "held_out", judgedOn},
+      {"adopted", verdict.adopted}, {"candidate_share_right", verdict.after},
+      {"reason", verdict.reason},   {"time", currentUtcTimestamp()}};
   if (verdict.before) line["current_share_right"] = *verdict.before;
   if (verdict.sources) line["sources"] = verdict.sources;
   fs::create_directories(modelsDir);
@@ -241,9 +241,10 @@ std::string weightedFolderText(const WeightedFolder& folder) {
 
 CategoryRecipe withCuratedFolder(CategoryRecipe recipe, const WeightedFolder& curated) {
   auto& folders = recipe.folders;
-  folders.erase(std::remove_if(folders.begin(), folders.end(),
-                               [&](const WeightedFolder& f) { return sameFolder(f.dir, curated.dir); }),
-                folders.end());
+  folders.erase(
+      std::remove_if(folders.begin(), folders.end(),
+                     [&](const WeightedFolder& f) { return sameFolder(f.dir, curated.dir); }),
+      folders.end());
   folders.push_back(curated);
   return recipe;
 }
@@ -270,12 +271,14 @@ CategoryVerdict judgeCategoryUpdateBySource(const CategoryRecipe& candidate,
   } else {
     std::vector<WeightedFolder> judged;
     for (const auto& dir : curated) judged.push_back({dir, 1.0});
-    const auto samples = collectWeightedSamples(judged, features, {}, current.inputSet(), onProgress);
+    const auto samples =
+        collectWeightedSamples(judged, features, {}, current.inputSet(), onProgress);
     before = evaluateCategories(
         [&](const CategorySample& s) { return current.classify(s.descriptor); }, samples);
     how += " (the current classifier as it is: " +
-           (missing.empty() ? std::string("it records no training folders")
-                            : std::to_string(missing.size()) + " of its training folders are not here") +
+           (missing.empty()
+                ? std::string("it records no training folders")
+                : std::to_string(missing.size()) + " of its training folders are not here") +
            ")";
   }
   CategoryVerdict verdict = decide(before, after.evaluation, how);

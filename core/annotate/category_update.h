@@ -54,8 +54,8 @@ struct CategoryVerdict {
   std::optional<double> before;  // the current classifier's share right; none without one
   double after = 0;              // the candidate's
   std::string reason;            // one line: both figures and the decision
-  // Judged leaving one source out (judgeCategoryUpdateBySource): over how many sources; 0 when judged on
-  // held-out folders.
+  // Judged leaving one source out (judgeCategoryUpdateBySource): over how many sources; 0 when
+  // judged on held-out folders.
   std::size_t sources = 0;
 };
 
@@ -86,8 +86,8 @@ CategoryRecipe recipeOf(const CategoryClassifier& classifier, std::vector<std::s
 // classifier retrained twice on one curated set counts it once), else last.
 CategoryRecipe withCuratedFolder(CategoryRecipe recipe, const WeightedFolder& curated);
 
-// Thrown by judgeCategoryUpdateBySource when the curated objects come from fewer than two sources: none
-// can be left out while another teaches (the GUI then retrains unguarded and says so).
+// Thrown by judgeCategoryUpdateBySource when the curated objects come from fewer than two sources:
+// none can be left out while another teaches (the GUI then retrains unguarded and says so).
 class TooFewSources : public InvalidArgument {
  public:
   using InvalidArgument::InvalidArgument;

@@ -40,7 +40,9 @@ std::size_t withTruth(const std::vector<CandidateSet>& sets) {
   return n;
 }
 
-std::string categoryOf(const std::string& modelName) { return model::splitModelName(modelName).first; }
+std::string categoryOf(const std::string& modelName) {
+  return model::splitModelName(modelName).first;
+}
 
 // "a -> b edits on WHERE (the current point decision -> the retrained one): adopted" (or where
 // better, or refused).
@@ -49,19 +51,18 @@ std::string guardVerdict(const ScorerGuard& guard, bool hadCurrent, const std::s
          " edits on " + where + " (" +
          (hadCurrent ? "the current point decision" : "the count's points") +
          " -> the retrained one): " +
-         (!guard.adopted         ? "refused, the current decision stays"
-          : guard.adoptedWhole() ? "adopted"
-                                 : "adopted where better (" + std::to_string(guard.adoptedEdits) +
-                                       " edits); kept the decision before for " +
-                                       modelsWhere(guard, false));
+         (!guard.adopted ? "refused, the current decision stays"
+          : guard.adoptedWhole()
+              ? "adopted"
+              : "adopted where better (" + std::to_string(guard.adoptedEdits) +
+                    " edits); kept the decision before for " + modelsWhere(guard, false));
 }
 
 }  // namespace
 
-std::optional<ScorerGuard> guardPointScorerBySource(const PointScorer* current,
-                                                    const std::vector<const CandidateSet*>& training,
-                                                    const ScorerTrainingOptions& options,
-                                                    const std::function<void(int, int)>& onFold) {
+std::optional<ScorerGuard> guardPointScorerBySource(
+    const PointScorer* current, const std::vector<const CandidateSet*>& training,
+    const ScorerTrainingOptions& options, const std::function<void(int, int)>& onFold) {
   std::set<std::string> sources;
   for (const CandidateSet* set : training)
     if (!set->generated) sources.insert(set->source);
@@ -180,13 +181,13 @@ ScorerUpdate updatePointScorer(const ScorerUpdateRequest& request) {
       update.adoptedScorer =
           adoptedScorer(current ? &*current : nullptr, update.scorer, *update.guard);
       update.verdict = guardVerdict(*update.guard, current.has_value(),
-                                    "the curated objects, each source of " +
-                                        std::to_string(folds) +
+                                    "the curated objects, each source of " + std::to_string(folds) +
                                         " left out of the fitting in turn");
     } else {
-      update.verdict = "unguarded: the curated objects come from one source, so none can be left "
-                       "out to judge the retrained point decision; it is kept, better or not (a "
-                       "held-out folder of other sources guards it)";
+      update.verdict =
+          "unguarded: the curated objects come from one source, so none can be left "
+          "out to judge the retrained point decision; it is kept, better or not (a "
+          "held-out folder of other sources guards it)";
     }
   }
   update.curatedSets = curated.size();

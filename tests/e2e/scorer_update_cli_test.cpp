@@ -7,14 +7,13 @@
 
 #include <algorithm>
 #include <fstream>
-
 #include <nlohmann/json.hpp>
 
 #include "core/annotate/point_scorer.h"
 #include "core/dataset/dataset.h"
+#include "core/generate/dataset_generator.h"
 #include "core/labels/labels.h"
 #include "core/model/model_card.h"
-#include "core/generate/dataset_generator.h"
 #include "support/labelled_objects.h"
 #include "support/test_paths.h"
 
@@ -72,7 +71,8 @@ TEST(ScorerUpdateCli, WritesTheModelsFolderWithTheVerdictAndRefusesHeldOutTraini
 TEST(ScorerUpdateCli, WithoutAHeldOutFolderTheCuratedSourcesJudge) {
   const fs::path dir = test::freshTempDir();
   gen::generateDataset({{"stove", 2, 81}, {"sink", 2, 82}}, gen::MeshFormat::Obj, dir / "curated");
-  gen::generateDataset({{"stove", 1, 83}, {"sink", 1, 84}}, gen::MeshFormat::Obj, dir / "generated");
+  gen::generateDataset({{"stove", 1, 83}, {"sink", 1, 84}}, gen::MeshFormat::Obj,
+                       dir / "generated");
   test::assignSources(dir / "curated", {"repo-a", "repo-b"});
   for (const auto& entry : readDataset(dir / "curated")) {  // curated as real objects are
     ObjectLabels labels = readLabels(entry.labels);

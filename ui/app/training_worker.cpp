@@ -147,8 +147,8 @@ void TrainingWorker::runCategoryClassifier(const TrainingRequest& request) {
           [&](const std::string& recipe, int k, int folds) {
             if (m_cancel) throw Cancelled();
             update([&](TrainingStatus& s) {
-              s.phase = "guard: the " + recipe + " classifier without source " + std::to_string(k + 1) +
-                        "/" + std::to_string(folds);
+              s.phase = "guard: the " + recipe + " classifier without source " +
+                        std::to_string(k + 1) + "/" + std::to_string(folds);
               s.fraction = 0.8f + 0.1f * (recipe == "current") + 0.1f * float(k) / float(folds);
             });
           });
@@ -156,9 +156,10 @@ void TrainingWorker::runCategoryClassifier(const TrainingRequest& request) {
       adopted = verdict.adopted;
       verdictLine = verdict.reason;
     } catch (const TooFewSources&) {
-      verdictLine = "unguarded: the training set's objects come from one source, so none can be "
-                    "left out to judge the retrained classifier; it is kept, better or not (a "
-                    "held-out folder of other sources guards it)";
+      verdictLine =
+          "unguarded: the training set's objects come from one source, so none can be "
+          "left out to judge the retrained classifier; it is kept, better or not (a "
+          "held-out folder of other sources guards it)";
     }
   }
   const fs::path file =

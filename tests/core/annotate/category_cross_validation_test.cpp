@@ -95,8 +95,8 @@ TEST(CategoryCrossValidation, ObjectsOfWeightZeroAreDecidedButNeverTrainedOn) {
   // samples alone.
   std::vector<CategorySample> real;
   for (int i = 0; i < 10; ++i) {
-    real.push_back(sample("real" + std::to_string(i), "stove", 0.02f * static_cast<float>(i), -2,
-                          "real"));
+    real.push_back(
+        sample("real" + std::to_string(i), "stove", 0.02f * static_cast<float>(i), -2, "real"));
     real.back().weight = 0;
   }
   const auto always = generated(20);

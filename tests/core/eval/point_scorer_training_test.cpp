@@ -1,5 +1,7 @@
 // The learned point decision fitted and measured leave one source out, on synthetic candidate sets
 // whose true points are known: knobs (low field, one feature apart) among distractors.
+#include "core/eval/point_scorer_training.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -10,7 +12,6 @@
 #include "core/annotate/point_scorer.h"
 #include "core/common/error.h"
 #include "core/eval/metrics.h"
-#include "core/eval/point_scorer_training.h"
 #include "core/eval/point_scorer_update.h"
 #include "core/eval/scorer_cv_spread.h"
 #include "support/point_scorers.h"
@@ -619,8 +620,8 @@ TEST(PointScorerTraining, TheGuardBySourceAdoptsABetterDecisionAndKeepsAnEqualOn
   ASSERT_TRUE(better.has_value());
   EXPECT_EQ(folds, (std::vector<int>{0, 1, 2}));  // one fold per curated source, none generated
   ASSERT_EQ(better->byModel.size(), 1u);
-  EXPECT_EQ(better->byModel[0].handPoints, 54u);   // 18 curated objects of three knobs each
-  EXPECT_EQ(better->currentEdits, 36u);            // one knob of three: two additions per object
+  EXPECT_EQ(better->byModel[0].handPoints, 54u);  // 18 curated objects of three knobs each
+  EXPECT_EQ(better->currentEdits, 36u);           // one knob of three: two additions per object
   EXPECT_EQ(better->newEdits, 0u);
   EXPECT_TRUE(better->adopted);
   EXPECT_TRUE(better->adoptedWhole());

@@ -75,8 +75,9 @@ TEST(CategoryGuardBySource, ARecipeThatLearnsFromTheCuratedSourcesIsAdopted) {
   ASSERT_TRUE(status.error.empty()) << status.error;
   ASSERT_EQ(status.verdicts.size(), 1u);
   const std::string& verdict = status.verdicts[0];
-  EXPECT_NE(verdict.find("on 18 curated objects, each source of 2 left out of training in turn: adopted"),
-            std::string::npos)
+  EXPECT_NE(
+      verdict.find("on 18 curated objects, each source of 2 left out of training in turn: adopted"),
+      std::string::npos)
       << verdict;
   EXPECT_EQ(verdict.find("as it is"), std::string::npos) << verdict;
   // Each class's figures before and after: the current recipe never answers "sink".
@@ -87,7 +88,8 @@ TEST(CategoryGuardBySource, ARecipeThatLearnsFromTheCuratedSourcesIsAdopted) {
   EXPECT_EQ(line.at("judged_by_source").at(0), (dir / "curated").string());
   EXPECT_EQ(line.at("sources"), 2);
   EXPECT_TRUE(line.at("adopted").get<bool>());
-  EXPECT_GT(line.at("candidate_share_right").get<double>(), line.at("current_share_right").get<double>());
+  EXPECT_GT(line.at("candidate_share_right").get<double>(),
+            line.at("current_share_right").get<double>());
 }
 
 // The shipped classifier, whose training folders are not on this machine, is judged as it is on
@@ -124,9 +126,11 @@ TEST(CategoryGuardBySource, ATrainingSetOfOneSourceRetrainsUnguardedAndSaysSo) {
   const TrainingStatus status = retrainWithoutHeldOut(dir);
   ASSERT_TRUE(status.error.empty()) << status.error;
   ASSERT_EQ(status.verdicts.size(), 1u);
-  EXPECT_EQ(status.verdicts[0].rfind("unguarded: the training set's objects come from one source", 0), 0u)
+  EXPECT_EQ(
+      status.verdicts[0].rfind("unguarded: the training set's objects come from one source", 0), 0u)
       << status.verdicts[0];
-  EXPECT_NE(status.verdicts[0].find("a held-out folder of other sources guards it"), std::string::npos);
+  EXPECT_NE(status.verdicts[0].find("a held-out folder of other sources guards it"),
+            std::string::npos);
   EXPECT_TRUE(fs::exists(dir / "out" / kCategoryClassifierFile));
   EXPECT_FALSE(fs::exists(dir / "out" / "guard.jsonl"));
 }
