@@ -314,15 +314,17 @@ void setupScorer(CLI::App& root) {
       "update", "Retrain the models folder's decision from curated objects in one step, as the "
                 "GUI's Train panel does: candidates of --data, of generated objects and of "
                 "--held-out made by --models; each model's new decision goes to OUT where it "
-                "needs fewer edits on that model's held-out objects, the others keep theirs, "
-                "and the new scorer goes to OUT/refused/ where any model refused it (figures in "
-                "OUT/scorer_guard.json)");
+                "needs fewer edits on that model's held-out objects (without --held-out: each "
+                "category's where it needs fewer edits on --data's objects, each source left out "
+                "of the fitting in turn), the others keep theirs, and the new scorer goes to "
+                "OUT/refused/ where any model refused it (figures in OUT/scorer_guard.json)");
   upd->add_option("--data", u->data, "Curated training objects (a dataset)")->required();
   upd->add_option("--generated", u->generated,
                   "Generated objects the networks were not trained on (default: the bench, its "
                   "val split)");
   upd->add_option("--held-out", u->heldOut,
-                  "Curated objects of other sources: the guard's (without: unguarded)");
+                  "Curated objects of other sources: the guard's (without: --data's objects "
+                  "judge, each source left out in turn; unguarded when they are of one source)");
   upd->add_option("--models", u->models, "Models folder (default resources/models)");
   upd->add_option("--out", u->out, "Models folder to write")->required();
   upd->callback([u] {
