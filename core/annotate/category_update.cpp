@@ -112,12 +112,45 @@ CategoryVerdict decide(const std::optional<CategoryEvaluation>& before,
   return verdict;
 }
 
-bool sameFolder(const fs::path& a, const fs::path& b) {
+// A folder's identity however it is spelled (relative, through links).
+std::string folderKey(const fs::path& dir) {
   std::error_code ec;
-  const fs::path ca = fs::weakly_canonical(fs::absolute(a), ec);
-  const fs::path cb = ec ? fs::path() : fs::weakly_canonical(fs::absolute(b), ec);
-  return ec ? a.lexically_normal() == b.lexically_normal() : ca == cb;
+  const fs::path canonical = fs::weakly_canonical(fs::absolute(dir), ec);
+  return (ec ? dir.lexically_normal() : canonical).string();
 }
+
+bool sameFolder(const fs::path& a, const fs::path& b) { return folderKey(a) == folderKey(b); }
+
+// Descriptors of weighted folders, each folder read once per input set however often the guard
+// asks: both recipes share most of their folders and all the curated ones.
+class FolderSamples {
+ public:
+  FolderSamples(const FeatureOptions& features, const FolderProgress& onProgress)
+      : m_features(features), m_onProgress(onProgress) {}
+  std::vector<CategorySample> operator()(const std::vector<WeightedFolder>& folders,
+                                         const CategoryInputSet& inputs) {
+    std::vector<CategorySample> all;
+    for (const WeightedFolder& folder : folders) {
+      auto key = std::make_pair(folderKey(folder.dir), inputs);
+      auto read = m_read.find(key);
+      if (read == m_read.end())
+        read = m_read
+                   .emplace(std::move(key), collectWeightedSamples({{folder.dir, 1.0}}, m_features,
+                                                                   {}, inputs, m_onProgress))
+                   .first;
+      for (CategorySample s : read->second) {
+        s.weight = folder.weight;
+        all.push_back(std::move(s));
+      }
+    }
+    return all;
+  }
+
+ private:
+  const FeatureOptions& m_features;
+  const FolderProgress& m_onProgress;
+  std::map<std::pair<std::string, CategoryInputSet>, std::vector<CategorySample>> m_read;
+};
 
 // "A, B" of the folders.
 std::string folderList(const std::vector<fs::path>& folders) {
@@ -133,7 +166,7 @@ struct SourceFigures {
   std::size_t objects = 0, sources = 0;
 };
 SourceFigures shareRightBySource(const CategoryRecipe& recipe, const std::vector<fs::path>& curated,
-                                 const FeatureOptions& features, const FolderProgress& onProgress,
+                                 FolderSamples& samplesOf,
                                  const std::function<void(int, int)>& onFold) {
   std::vector<WeightedFolder> always, judged;
   for (const auto& dir : curated) judged.push_back({dir, 0.0});
@@ -146,8 +179,7 @@ SourceFigures shareRightBySource(const CategoryRecipe& recipe, const std::vector
     else
       always.push_back(folder);
   }
-  const auto judgedSamples =
-      collectWeightedSamples(judged, features, {}, recipe.options.inputs, onProgress);
+  const auto judgedSamples = samplesOf(judged, recipe.options.inputs);
   requireSeveralClasses(judgedSamples, folderList(curated));
   std::set<std::string> sources;
   for (const auto& s : judgedSamples) sources.insert(s.source);
@@ -157,8 +189,7 @@ SourceFigures shareRightBySource(const CategoryRecipe& recipe, const std::vector
                                          : "one source only (" + *sources.begin() + ")") +
                         ": leaving one source out needs at least two; give held-out objects of "
                         "other sources instead. Nothing was written; the current classifier stays");
-  const auto alwaysSamples =
-      collectWeightedSamples(always, features, {}, recipe.options.inputs, onProgress);
+  const auto alwaysSamples = samplesOf(always, recipe.options.inputs);
   const CategoryEvaluation ev =
       crossValidateCategoriesBySource(alwaysSamples, judgedSamples, recipe.options, onFold);
   return {ev, judgedSamples.size(), sources.size()};
@@ -255,8 +286,9 @@ CategoryVerdict judgeCategoryUpdateBySource(const CategoryRecipe& candidate,
                                             const FeatureOptions& features,
                                             const FolderProgress& onProgress,
                                             const RecipeFoldProgress& onFold) {
+  FolderSamples samplesOf(features, onProgress);
   const auto figures = [&](const CategoryRecipe& recipe, const std::string& name) {
-    return shareRightBySource(recipe, curated, features, onProgress, [&](int k, int folds) {
+    return shareRightBySource(recipe, curated, samplesOf, [&](int k, int folds) {
       if (onFold) onFold(name, k, folds);
     });
   };
@@ -271,8 +303,7 @@ CategoryVerdict judgeCategoryUpdateBySource(const CategoryRecipe& candidate,
   } else {
     std::vector<WeightedFolder> judged;
     for (const auto& dir : curated) judged.push_back({dir, 1.0});
-    const auto samples =
-        collectWeightedSamples(judged, features, {}, current.inputSet(), onProgress);
+    const auto samples = samplesOf(judged, current.inputSet());
     before = evaluateCategories(
         [&](const CategorySample& s) { return current.classify(s.descriptor); }, samples);
     how += " (the current classifier as it is: " +

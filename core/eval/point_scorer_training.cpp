@@ -20,6 +20,8 @@
 
 namespace sagrid {
 
+std::string categoryOfModel(const std::string& model) { return model::splitModelName(model).first; }
+
 namespace {
 
 using Chooser = std::function<std::vector<Eigen::Vector3f>(const CandidateSet&)>;
@@ -47,9 +49,6 @@ std::vector<Eigen::Vector3f> chosenSurface(const CandidateSet& set,
                                            const PointChoice& choice) {
   return surfaceOf(set, chooseCandidates(probability, set.candidates, choice));
 }
-
-// The category of a model's name (stove of stove.heatsource).
-std::string categoryOfModel(const std::string& model) { return model::splitModelName(model).first; }
 
 // Whether two models are of one category (stove.heatsource and stove.togglebutton).
 bool sameCategory(const std::string& a, const std::string& b) {

@@ -211,6 +211,9 @@ nlohmann::json toJson(const ScorerGuard& guard);
 // passes off and record are `fresh`'s, the record naming the models adopted when not all were.
 PointScorer adoptedScorer(const PointScorer* current, const PointScorer& fresh,
                           const ScorerGuard& guard);
+// The category of a model's name (stove of stove.heatsource): a category's decisions are judged
+// together.
+std::string categoryOfModel(const std::string& model);
 // The models of `guard` whose new decision was (`adopted`) or was not adopted, comma-separated.
 std::string modelsWhere(const ScorerGuard& guard, bool adopted);
 // One verdict as the CLI and the GUI show it: "model: a -> b edits on n held-out points: adopted"

@@ -3,14 +3,12 @@
 #include <algorithm>
 #include <map>
 #include <set>
-#include <utility>
 
 #include "core/annotate/model_set.h"
 #include "core/common/atomic_file.h"
 #include "core/common/error.h"
 #include "core/eval/evaluation.h"
 #include "core/generate/dataset_generator.h"
-#include "core/model/model_card.h"
 #include "core/training/training_sources.h"
 
 namespace sagrid {
@@ -38,10 +36,6 @@ std::size_t withTruth(const std::vector<CandidateSet>& sets) {
   std::size_t n = 0;
   for (const auto& s : sets) n += !s.truth.empty();
   return n;
-}
-
-std::string categoryOf(const std::string& modelName) {
-  return model::splitModelName(modelName).first;
 }
 
 // "a -> b edits on WHERE (the current point decision -> the retrained one): adopted" (or where
@@ -91,21 +85,23 @@ std::optional<ScorerGuard> guardPointScorerBySource(
       sum.handPoints += v.handPoints;
     }
   }
-  std::map<std::string, std::pair<std::size_t, std::size_t>> byCategory;  // current, new edits
-  std::map<std::string, std::size_t> judgedModels;
+  struct CategoryEdits {
+    std::size_t current = 0, fresh = 0, models = 0;
+  };
+  std::map<std::string, CategoryEdits> byCategory;
   for (const auto& [model, v] : byModel) {
-    auto& edits = byCategory[categoryOf(model)];
-    edits.first += v.currentEdits;
-    edits.second += v.newEdits;
-    ++judgedModels[categoryOf(model)];
+    CategoryEdits& edits = byCategory[categoryOfModel(model)];
+    edits.current += v.currentEdits;
+    edits.fresh += v.newEdits;
+    ++edits.models;
   }
   ScorerGuard guard;
   for (auto& [model, v] : byModel) {
-    const auto& [currentEdits, newEdits] = byCategory.at(categoryOf(model));
-    v.adopted = newEdits < currentEdits;
-    v.categoryCurrentEdits = currentEdits;
-    v.categoryAdoptedEdits = std::min(currentEdits, newEdits);
-    v.categoryJudged = judgedModels.at(categoryOf(model));
+    const CategoryEdits& category = byCategory.at(categoryOfModel(model));
+    v.adopted = category.fresh < category.current;
+    v.categoryCurrentEdits = category.current;
+    v.categoryAdoptedEdits = std::min(category.current, category.fresh);
+    v.categoryJudged = category.models;
     guard.currentEdits += v.currentEdits;
     guard.newEdits += v.newEdits;
     guard.adoptedEdits += v.adopted ? v.newEdits : v.currentEdits;

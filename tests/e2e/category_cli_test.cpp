@@ -56,6 +56,17 @@ TEST(CategoryCli, EvidenceFitsTheGateOfTheAskedCategoryAndEvalUsesItSlow) {
   EXPECT_THAT(r.output, HasSubstr("| stoves right | 3 |"));
 }
 
+// After a refused classifier update: the shipped file `shipped` untouched in `models`, the
+// candidate in refused/; the first line of the guard's log.
+std::string guardLineOfRefusal(const fs::path& models, const std::string& shipped) {
+  EXPECT_EQ(readFileBytes(models / kCategoryClassifierFile), shipped);
+  EXPECT_TRUE(fs::exists(models / "refused" / kCategoryClassifierFile));
+  std::ifstream log(models / "guard.jsonl");
+  std::string line;
+  EXPECT_TRUE(std::getline(log, line)) << "no guard.jsonl line";
+  return line;
+}
+
 // The guard on classifier updates (issue 40): a classifier trained for one step decides the
 // held-out objects worse than the shipped one and is refused (written to OUT/refused/, the
 // shipped file untouched), and the verdict is logged.
@@ -74,12 +85,7 @@ TEST(CategoryCli, TheGuardRefusesAWorseClassifierAndKeepsTheCurrentOne) {
   auto r = runSagrid(train + " --iterations 1");
   ASSERT_EQ(r.exitCode, 0) << r.output;
   EXPECT_THAT(r.output, HasSubstr("refused, current classifier kept"));
-  EXPECT_EQ(readFileBytes(models / kCategoryClassifierFile), shipped);
-  EXPECT_TRUE(fs::exists(models / "refused" / kCategoryClassifierFile));
-  std::ifstream log(models / "guard.jsonl");
-  std::string line;
-  ASSERT_TRUE(std::getline(log, line));
-  EXPECT_THAT(line, HasSubstr("\"adopted\":false"));
+  EXPECT_THAT(guardLineOfRefusal(models, shipped), HasSubstr("\"adopted\":false"));
 
   // Held-out objects of one class cannot judge a classifier (calling everything a stove would
   // score best there): refused with the reason, nothing written.
@@ -114,11 +120,7 @@ TEST(CategoryCli, TheGuardBySourceRefusesAWorseRecipe) {
   EXPECT_THAT(r.output, HasSubstr("each source of 2 left out of training in turn (the current "
                                   "classifier as it is"));
   EXPECT_THAT(r.output, HasSubstr("refused, current classifier kept"));
-  EXPECT_EQ(readFileBytes(models / kCategoryClassifierFile), shipped);
-  EXPECT_TRUE(fs::exists(models / "refused" / kCategoryClassifierFile));
-  std::ifstream log(models / "guard.jsonl");
-  std::string line;
-  ASSERT_TRUE(std::getline(log, line));
+  const std::string line = guardLineOfRefusal(models, shipped);
   EXPECT_THAT(line, HasSubstr("\"judged_by_source\""));
   EXPECT_THAT(line, HasSubstr("\"sources\":2"));
 
