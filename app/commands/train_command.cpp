@@ -14,12 +14,13 @@
 
 #include "app/cli_switch.h"
 #include "app/command_registry.h"
-#include "core/training/guarded_update.h"
 #include "app/progress_bar.h"
 #include "core/common/error.h"
+#include "core/eval/point_model_guard_by_source.h"
 #include "core/generate/dataset_generator.h"
 #include "core/model/architecture.h"
 #include "core/training/dataset_training.h"
+#include "core/training/guarded_update.h"
 
 namespace {
 namespace fs = std::filesystem;
@@ -40,6 +41,8 @@ struct TrainCommandOptions {
   std::optional<bool> coarseToFine;  // unset: from --init's card
   std::optional<bool> creasePatches;  // unset: from --init's card (--preset: on for the stoves)
   std::string guard;  // held-out curated objects: the update is adopted only where better
+  bool guardBySource = false;  // the curated --data, each fold of sources left out, decides
+  int guardFolds = 3;
   bool lossGiven = false;  // --near-weight or --target-cap on the command line
 };
 
@@ -128,9 +131,9 @@ std::vector<sagrid::TrainingDataSource> dataSources(const TrainCommandOptions& o
   return sources;
 }
 
-sagrid::DatasetTrainingResult trainOne(const TrainCommandOptions& o,
-                                       const std::vector<sagrid::TrainingDataSource>& data,
-                                       const std::string& model, const fs::path& out) {
+sagrid::DatasetTrainingOptions trainingOptions(const TrainCommandOptions& o,
+                                               const std::vector<sagrid::TrainingDataSource>& data,
+                                               const std::string& model, const fs::path& out) {
   sagrid::DatasetTrainingOptions t;
   t.datasets = data;
   t.init = o.init;
@@ -162,22 +165,44 @@ sagrid::DatasetTrainingResult trainOne(const TrainCommandOptions& o,
       dataArgs.push_back(arg.str());
     }
   t.command = commandLine(o, dataArgs, model, out.string());
-  std::unique_ptr<sagrid::app::ProgressBar> featureBar, trainBar;
-  t.onFeatureProgress = [&](std::size_t done, std::size_t total, const std::string& id) {
-    if (!featureBar)
-      featureBar = std::make_unique<sagrid::app::ProgressBar>("features " + model, total);
-    featureBar->update(done, id);
-    if (done == total) featureBar->finish();
-  };
-  t.training.onProgress = [&](const sagrid::model::TrainingProgress& p) {
-    if (!trainBar) trainBar = std::make_unique<sagrid::app::ProgressBar>("train " + model, p.steps);
-    trainBar->setTotal(p.steps);  // a time budget re-plans the steps before every step
-    char status[96];
-    std::snprintf(status, sizeof status, "epoch %d/%d loss %.4f", p.epoch, p.epochs, p.loss);
-    trainBar->update(p.step, status);
-  };
+  return t;
+}
+
+// The console's bars of one training (features, then steps); reset() before the next one.
+struct TrainingBars {
+  std::string model;
+  std::unique_ptr<sagrid::app::ProgressBar> features, steps;
+
+  void install(sagrid::DatasetTrainingOptions& t) {
+    t.onFeatureProgress = [this](std::size_t done, std::size_t total, const std::string& id) {
+      if (!features)
+        features = std::make_unique<sagrid::app::ProgressBar>("features " + model, total);
+      features->update(done, id);
+      if (done == total) features->finish();
+    };
+    t.training.onProgress = [this](const sagrid::model::TrainingProgress& p) {
+      if (!steps) steps = std::make_unique<sagrid::app::ProgressBar>("train " + model, p.steps);
+      steps->setTotal(p.steps);  // a time budget re-plans the steps before every step
+      char status[96];
+      std::snprintf(status, sizeof status, "epoch %d/%d loss %.4f", p.epoch, p.epochs, p.loss);
+      steps->update(p.step, status);
+    };
+  }
+  void reset() {
+    if (steps) steps->finish();
+    features.reset();
+    steps.reset();
+  }
+};
+
+sagrid::DatasetTrainingResult trainOne(const TrainCommandOptions& o,
+                                       const std::vector<sagrid::TrainingDataSource>& data,
+                                       const std::string& model, const fs::path& out) {
+  sagrid::DatasetTrainingOptions t = trainingOptions(o, data, model, out);
+  TrainingBars bars{model, nullptr, nullptr};
+  bars.install(t);
   sagrid::DatasetTrainingResult r = sagrid::trainFromDataset(t);
-  if (trainBar) trainBar->finish();
+  bars.reset();
   std::fprintf(
       stderr,
       "%s: %zu objects (%zu without %s skipped, %zu failed), features %.1f s, training %.1f s, "
@@ -186,6 +211,36 @@ sagrid::DatasetTrainingResult trainOne(const TrainCommandOptions& o,
       r.featureSeconds, r.trainingSeconds, r.curve.empty() ? 0.0 : r.curve.back().loss,
       r.recalibrated ? "" : ", point extraction kept from --init", r.cardFile.string().c_str());
   return r;
+}
+
+// --guard-by-source: the fine-tune repeated with each fold of the curated sources left out decides
+// (core/eval/point_model_guard_by_source.h); only an adopted update is fine-tuned on all of --data.
+sagrid::GuardVerdict fineTuneGuardedBySource(const TrainCommandOptions& o,
+                                             const std::vector<sagrid::TrainingDataSource>& data,
+                                             const sagrid::GuardOptions& guard) {
+  sagrid::PointModelGuardBySource bySource;
+  bySource.currentDir = guard.currentDir;
+  bySource.fineTune = trainingOptions(o, data, o.model, guard.candidateDir);
+  bySource.fineTune.training.resume = false;  // the folds start afresh
+  TrainingBars bars{o.model + " (guard)", nullptr, nullptr};
+  bars.install(bySource.fineTune);
+  bySource.workDir = guard.candidateDir.parent_path() / (".guard-by-source." + o.model);
+  bySource.folds = o.guardFolds;
+  bySource.seed = o.seed;
+  bySource.onFold = [&](int fold, int folds) {
+    bars.reset();
+    std::fprintf(stderr, "guard by source: fold %d/%d, its sources left out of the fine-tune\n",
+                 fold, folds);
+  };
+  const auto verdict = sagrid::judgeUpdateBySource(bySource);
+  bars.reset();
+  if (!verdict)
+    throw sagrid::InvalidArgument(
+        "--guard-by-source: the curated objects of " + o.model +
+        " in --data come from one source, so none can be left out while another teaches; add "
+        "curated objects of another source, or give --guard HELD_OUT instead");
+  if (verdict->adopted) trainOne(o, data, o.model, guard.candidateDir);
+  return *verdict;
 }
 
 void setupTrain(CLI::App& root) {
@@ -201,11 +256,24 @@ void setupTrain(CLI::App& root) {
                   "sampling weight (default 1); repeat to mix datasets: each step picks a dataset "
                   "by weight, then an object uniformly; an epoch is as many draws as all datasets "
                   "hold objects. With --preset: where the bench split is (generated when missing)");
-  cmd->add_option("--guard", o->guard,
-                  "With --init: curated objects of other sources than --data (e.g. another "
-                  "repository's); the fine-tuned model replaces the --init one in --out only if "
-                  "its single-point error there is lower, else the current model is kept and the "
-                  "candidate goes to OUT/refused/ (OUT/guard.jsonl: the figures)");
+  auto* guardOption = cmd->add_option(
+      "--guard", o->guard,
+      "With --init: curated objects of other sources than --data (e.g. another "
+      "repository's); the fine-tuned model replaces the --init one in --out only if "
+      "its single-point error there is lower, else the current model is kept and the "
+      "candidate goes to OUT/refused/ (OUT/guard.jsonl: the figures)");
+  auto* bySourceFlag = cmd->add_flag("--guard-by-source", o->guardBySource,
+                "With --init, without a held-out folder: the fine-tune is repeated with each fold "
+                "of the sources of --data's curated objects left out (a wild-pool repository, a "
+                "Sweet Home 3D library, else the folder; --guard-folds of them), and is adopted "
+                "only if its single-point error on the left-out objects, over all folds, is lower "
+                "than the --init model's; only then is it fine-tuned on all of --data. Else the "
+                "current model is kept (OUT/guard.jsonl: the figures). Costs a fine-tune per fold")
+      ->excludes(guardOption);
+  cmd->add_option("--guard-folds", o->guardFolds,
+                  "With --guard-by-source: folds of sources (default 3; at most the sources)")
+      ->check(CLI::Range(2, 100))
+      ->needs(bySourceFlag);
   cmd->add_option("--init", o->init,
                   "Fine-tune: start from MODEL.pt (card beside it) or a folder holding "
                   "<model>.json, e.g. resources/models. Architecture, mode and features must match");
@@ -301,19 +369,21 @@ void setupTrain(CLI::App& root) {
     if (o->model.empty())
       throw sagrid::InvalidArgument("--model is required, e.g. --model stove.heatsource");
     const fs::path out = o->out.empty() ? fs::path("models") : fs::path(o->out);
-    if (o->guard.empty()) {
+    if (o->guard.empty() && !o->guardBySource) {
       // Unguarded fine-tunes made held-out real objects worse (README "Guarded updates").
       if (!o->init.empty())
         std::fprintf(stderr,
                      "note: an unguarded fine-tune is kept whether or not it is better; give "
-                     "--guard HELD_OUT (curated objects of other sources) to keep it only where "
-                     "it is\n");
+                     "--guard HELD_OUT (curated objects of other sources) or --guard-by-source to "
+                     "keep it only where it is\n");
       trainOne(*o, dataSources(*o), o->model, out);
       return;
     }
     // Guarded: the candidate trains beside the models, and replaces the current one only where
     // the held-out curated objects say it is better.
-    if (o->init.empty()) throw sagrid::InvalidArgument("--guard is for fine-tuning; give --init too");
+    if (o->init.empty())
+      throw sagrid::InvalidArgument(std::string(o->guardBySource ? "--guard-by-source" : "--guard") +
+                                    " is for fine-tuning; give --init too");
     sagrid::GuardOptions guard;
     guard.currentDir = fs::is_directory(o->init) ? fs::path(o->init) : fs::path(o->init).parent_path();
     guard.candidateDir = out / (".candidate." + o->model);
@@ -324,14 +394,22 @@ void setupTrain(CLI::App& root) {
     for (const auto& source : sources)
       if (source.role == "data") curated.push_back(source.dir);
     sagrid::checkGuardedUpdate(guard, curated);
-    // An interrupted guarded fine-tune resumes from the candidate's checkpoint (--resume).
+    // An interrupted guarded fine-tune resumes from the candidate's checkpoint (--resume); a
+    // guard by source runs its folds afresh.
     if (!o->resume) fs::remove_all(guard.candidateDir);
-    trainOne(*o, sources, o->model, guard.candidateDir);
-    const sagrid::GuardVerdict verdict = sagrid::judgeUpdate(guard);
+    sagrid::GuardVerdict verdict;
+    if (o->guardBySource) {
+      verdict = fineTuneGuardedBySource(*o, sources, guard);
+    } else {
+      trainOne(*o, sources, o->model, guard.candidateDir);
+      verdict = sagrid::judgeUpdate(guard);
+    }
     sagrid::applyVerdict(verdict, guard, out);
     fs::remove_all(guard.candidateDir);
     std::printf("%s: %s%s\n", o->model.c_str(), verdict.reason.c_str(),
-                verdict.adopted ? "" : (" (candidate in " + (out / "refused").string() + ")").c_str());
+                verdict.adopted || verdict.judgedBySource
+                    ? ""
+                    : (" (candidate in " + (out / "refused").string() + ")").c_str());
   });
 }
 

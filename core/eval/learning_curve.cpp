@@ -13,6 +13,7 @@
 #include "core/common/atomic_file.h"
 #include "core/common/error.h"
 #include "core/dataset/dataset.h"
+#include "core/dataset/dataset_subset.h"
 #include "core/dataset/object_source.h"
 #include "core/eval/evaluation.h"
 #include "core/eval/report_cell.h"
@@ -41,45 +42,19 @@ struct RealObject {
 
 std::string kLabel(int k) { return k == kAllObjects ? "all" : std::to_string(k); }
 
-// The folder that holds every object of --data where it really is: --data itself, widened to the
-// common ancestor of the objects' files when object folders are symbolic links to elsewhere (a
-// dataset assembled with `ln -s`, which readDataset follows). The subsets are read with it as
-// readDataset's referenceRoot, so they reach exactly the objects --data listed.
+// The folder that holds every object of --data where it really is (folderHoldingFiles); the
+// subsets are read with it as readDataset's referenceRoot, so they reach exactly the objects
+// --data listed.
 fs::path folderHoldingObjects(const fs::path& dataDir, const std::vector<RealObject>& objects) {
-  fs::path root = fs::weakly_canonical(fs::absolute(dataDir));
-  auto widen = [&](const fs::path& file) {
-    const fs::path real = fs::weakly_canonical(fs::absolute(file));
-    fs::path common;
-    for (auto a = root.begin(), b = real.begin(); a != root.end() && b != real.end() && *a == *b;
-         ++a, ++b)
-      common /= *a;
-    root = common;
-  };
-  for (const auto& o : objects) {
-    widen(o.entry.mesh);
-    widen(o.entry.labels);
-  }
-  return root;
+  std::vector<fs::path> files;
+  for (const auto& o : objects) files.push_back(o.entry.mesh), files.push_back(o.entry.labels);
+  return folderHoldingFiles(dataDir, files);
 }
 
-// A dataset folder that lists `objects` where they really are (links resolved), relative to `dir`
-// ("../../..."): manifest paths must not be absolute; it is read with folderHoldingObjects as
-// readDataset's referenceRoot.
 void writeSubsetDataset(const fs::path& dir, const std::vector<const RealObject*>& objects) {
-  const fs::path from = fs::weakly_canonical(fs::absolute(dir));
-  auto relative = [&](const fs::path& file) {
-    return fs::weakly_canonical(fs::absolute(file)).lexically_relative(from).generic_string();
-  };
-  std::string lines;
-  for (const auto* o : objects)
-    lines += json{{"id", o->entry.id},
-                  {"category", o->category},
-                  {"mesh", relative(o->entry.mesh)},
-                  {"labels", relative(o->entry.labels)}}
-                 .dump() +
-             "\n";
-  fs::create_directories(dir);
-  writeFileAtomic(dir / "manifest.jsonl", lines);
+  std::vector<const DatasetEntry*> entries;
+  for (const auto* o : objects) entries.push_back(&o->entry);
+  writeDatasetSubset(dir, entries);
 }
 
 struct Stats {
@@ -232,6 +207,7 @@ LearningCurveReport runLearningCurve(const LearningCurveOptions& options) {
     const ObjectLabels labels = readLabels(e.labels);
     RealObject o{e, e.category, {}, objectSource(labels, e.mesh, options.dataDir.filename().string())};
     if (o.category.empty()) o.category = labels.object.category;
+    o.entry.category = o.category;  // what a subset's manifest says
     for (const auto& a : labels.affordances) o.types.insert(a.type);
     objects.push_back(std::move(o));
   }

@@ -105,18 +105,24 @@ void applyVerdict(const GuardVerdict& v, const GuardOptions& o, const fs::path& 
   if (v.adopted) {
     model::moveModelFiles(o.candidateDir, outDir, o.modelName);
   } else {
-    model::moveModelFiles(o.candidateDir, outDir / "refused", o.modelName);
+    if (fs::is_directory(o.candidateDir))
+      model::moveModelFiles(o.candidateDir, outDir / "refused", o.modelName);
     if (fs::weakly_canonical(o.currentDir) != fs::weakly_canonical(outDir))
       model::copyModelFiles(o.currentDir, outDir, o.modelName);
   }
   const auto number = [](double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(); };
-  const nlohmann::json line = {{"model", v.model},
-                               {"held_out", fs::absolute(o.heldOutDir).lexically_normal().string()},
-                               {"objects", v.objects},
-                               {"current_error_m", number(v.currentError)},
-                               {"candidate_error_m", number(v.candidateError)},
-                               {"adopted", v.adopted},
-                               {"time", currentUtcTimestamp()}};
+  nlohmann::json line = {{"model", v.model}, {"objects", v.objects}};
+  if (v.judgedBySource) {
+    line["judged_by_source"] = true;
+    line["sources"] = v.sources;
+    line["folds"] = v.folds;
+  } else {
+    line["held_out"] = fs::absolute(o.heldOutDir).lexically_normal().string();
+  }
+  line["current_error_m"] = number(v.currentError);
+  line["candidate_error_m"] = number(v.candidateError);
+  line["adopted"] = v.adopted;
+  line["time"] = currentUtcTimestamp();
   std::ofstream(outDir / "guard.jsonl", std::ios::app) << line.dump() << "\n";
 }
 

@@ -26,6 +26,11 @@ struct GuardVerdict {
   double candidateError = 0;
   bool adopted = false;
   std::string reason;           // one line for the CLI and the GUI
+  // Judged by source (core/eval/point_model_guard_by_source.h) instead of on a held-out folder:
+  // the curated objects' sources, dealt into `folds` folds each left out of a fine-tune in turn.
+  bool judgedBySource = false;
+  std::vector<std::string> sources;
+  int folds = 0;
 };
 
 struct GuardOptions {
@@ -56,8 +61,9 @@ GuardVerdict judgeUpdate(const GuardOptions& options,
                          const std::optional<HeldOutError>& current = std::nullopt);
 
 // Puts the verdict into effect in `outDir`: adopted, the candidate's files move there; refused,
-// they move to outDir/refused/ and the current model's files are copied into outDir (unless it is
-// the current folder). Appends the verdict to outDir/guard.jsonl.
+// they move to outDir/refused/ (none when the candidate folder is missing: a guard by source
+// refuses before the final fine-tune) and the current model's files are copied into outDir
+// (unless it is the current folder). Appends the verdict to outDir/guard.jsonl.
 void applyVerdict(const GuardVerdict& verdict, const GuardOptions& options,
                   const std::filesystem::path& outDir);
 
