@@ -65,6 +65,14 @@ std::optional<GuardVerdict> judgeUpdateBySource(const PointModelGuardBySource& g
   v.sources.assign(sources.begin(), sources.end());
   double currentSum = 0, candidateSum = 0;
   fs::remove_all(g.workDir);
+  // The folds' subsets and candidates go when the guard ends, decided or interrupted.
+  struct RemoveWhenDone {
+    fs::path dir;
+    ~RemoveWhenDone() {
+      std::error_code ec;
+      fs::remove_all(dir, ec);
+    }
+  } removeWhenDone{g.workDir};
   for (std::size_t f = 0; f < split.size(); ++f) {
     if (g.onFold) g.onFold(static_cast<int>(f) + 1, static_cast<int>(split.size()));
     std::set<std::string> leftOut;
@@ -119,7 +127,6 @@ std::optional<GuardVerdict> judgeUpdateBySource(const PointModelGuardBySource& g
       v.objects += candidate.objects;
     }
   }
-  fs::remove_all(g.workDir);
   const std::string judgedBy =
       std::to_string(v.objects) + " curated object(s) of " + std::to_string(sources.size()) +
       " sources, each of " + std::to_string(v.folds) +

@@ -141,5 +141,52 @@ TEST(FineTuneCli, AGuardedFineTuneResumesAndRefusesLabelsFarFromTheirMesh) {
   EXPECT_EQ(readFileBytes(out / "stove.togglebutton.pt"), before);
 }
 
+// Without a held-out folder the curated folders judge: the fine-tune is repeated with each
+// source left out, OUT gets the adopted model or the current one, and guard.jsonl says by what.
+// Curated objects of one source cannot judge: a clear error, and nothing is written.
+TEST(FineTuneCli, TheGuardBySourceLeavesEachSourceOutInTurnAndNeedsTwo) {
+  const fs::path dir = test::freshTempDir();
+  gen::generateDataset({{"stove", 1, 27}}, gen::MeshFormat::Obj, dir / "repo-a");
+  gen::generateDataset({{"stove", 1, 28}}, gen::MeshFormat::Obj, dir / "repo-b");
+  gen::generateDataset({{"stove", 1, 26}}, gen::MeshFormat::Obj, dir / "replay");
+  const fs::path models = fs::path(SAGRID_SOURCE_DIR) / "resources/models";
+  const std::string fineTune = "train --init " + shellQuote(models.string()) +
+                               " --model stove.togglebutton --epochs 1 --replay " +
+                               shellQuote((dir / "replay").string()) + " --guard-by-source";
+  const std::string both = " --data " + shellQuote((dir / "repo-a").string()) + " --data " +
+                           shellQuote((dir / "repo-b").string());
+  const fs::path out = dir / "out";
+  auto r = test::runSagrid(fineTune + both + " --out " + shellQuote(out.string()));
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("guard by source: fold 2/2"));
+  EXPECT_THAT(r.output, HasSubstr("on 2 curated object(s) of 2 sources"));
+  const nlohmann::json line = nlohmann::json::parse(readFileBytes(out / "guard.jsonl"));
+  EXPECT_EQ(line.at("judged_by_source"), true);
+  EXPECT_EQ(line.at("sources"), nlohmann::json({"repo-a", "repo-b"}));
+  EXPECT_EQ(line.at("folds"), 2);
+  EXPECT_EQ(line.at("objects"), 2);
+  const bool adopted = line.at("adopted");
+  EXPECT_EQ(adopted, line.at("candidate_error_m").get<double>() < line.at("current_error_m").get<double>());
+  // Refused: the current model in OUT; adopted: the fine-tune on both sources.
+  EXPECT_EQ(readFileBytes(out / "stove.togglebutton.pt") == readFileBytes(models / "stove.togglebutton.pt"),
+            !adopted);
+  EXPECT_FALSE(fs::exists(out / ".candidate.stove.togglebutton"));
+  EXPECT_FALSE(fs::exists(out / ".guard-by-source.stove.togglebutton"));
+  EXPECT_FALSE(fs::exists(out / "refused"));
+
+  const fs::path alone = dir / "alone";
+  r = test::runSagrid(fineTune + " --data " + shellQuote((dir / "repo-a").string()) + " --out " +
+                      shellQuote(alone.string()));
+  EXPECT_EQ(r.exitCode, 1) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("come from one source"));
+  EXPECT_FALSE(fs::exists(alone / "stove.togglebutton.pt"));
+  EXPECT_FALSE(fs::exists(alone / "guard.jsonl"));
+
+  r = test::runSagrid(fineTune + both + " --guard " + shellQuote((dir / "replay").string()) +
+                      " --out " + shellQuote(alone.string()));
+  EXPECT_NE(r.exitCode, 0) << r.output;
+  EXPECT_THAT(r.output, HasSubstr("excludes"));
+}
+
 }  // namespace
 }  // namespace sagrid

@@ -15,6 +15,7 @@
 #include "core/common/error.h"
 #include "core/common/log.h"
 #include "core/dataset/labels_mesh.h"
+#include "core/eval/point_model_guard_by_source.h"
 #include "core/eval/point_scorer_update.h"
 #include "core/eval/size_memory_update.h"
 #include "core/eval/units_cases.h"
@@ -293,7 +294,7 @@ void TrainingWorker::runPointModels(const TrainingRequest& request) {
                           request.category + " object with points; add some first");
   }
   const double steps = double(types.size()) + 1.0;  // models, then the queue
-  if (!request.initDir.empty() && !request.heldOut.empty()) {
+  if (!request.initDir.empty()) {
     update([&](TrainingStatus& s) { s.phase = "checking the curated data and " + request.initDir.string(); });
     checkGuardedUpdate({request.initDir, {}, {}, request.heldOut, {}, {}, {}}, {request.dataset});
   }
@@ -315,22 +316,31 @@ void TrainingWorker::runPointModels(const TrainingRequest& request) {
           options.datasets.push_back(r);
       }
     }
-    const bool guarded = !options.init.empty() && !request.heldOut.empty();
-    options.outDir = guarded ? request.outDir / (".candidate." + options.modelName) : request.outDir;
-    const GuardOptions guard{request.initDir, options.outDir, options.modelName, request.heldOut, {}, {}, {}};
+    // A fine-tune is guarded: by the held-out folder when given, else leaving each fold of the
+    // training set's sources out (a fine-tune per fold; unguarded with one source).
+    const bool fineTune = !options.init.empty();
+    const bool heldOutGuard = fineTune && !request.heldOut.empty();
+    const fs::path candidateDir = request.outDir / (".candidate." + options.modelName);
+    options.outDir = fineTune ? candidateDir : request.outDir;
+    const GuardOptions guard{request.initDir, candidateDir, options.modelName, request.heldOut, {}, {}, {}};
     options.command = options.init.empty() ? "sagrid gui (Train panel)"
                                            : "sagrid gui (Train panel, fine-tune of " +
                                                  request.initDir.string() + ")";
     options.training.minutes = request.minutesPerModel;
     options.training.epochs = request.epochs;
     options.training.cancel = &m_cancel;
+    // This model's share of the bar is split into the guard's folds and the final training.
+    double part = 0, parts = 1;
     options.training.onProgress = [&](const model::TrainingProgress& p) {
       update([&](TrainingStatus& s) {
-        s.phase = "training " + options.modelName + ", epoch " + std::to_string(p.epoch) + "/" +
-                  std::to_string(p.epochs);
+        const std::string fold = part < parts - 1 ? " without fold " + std::to_string(int(part) + 1) +
+                                                        " of the sources (guard)"
+                                                  : "";
+        s.phase = "training " + options.modelName + fold + ", epoch " + std::to_string(p.epoch) +
+                  "/" + std::to_string(p.epochs);
         s.losses.push_back(float(p.loss));
         const double within = p.epochs > 0 ? double(p.epoch) / p.epochs : 0.0;
-        s.fraction = float((double(t) + within) / steps);
+        s.fraction = float((double(t) + (part + within) / parts) / steps);
       });
     };
     options.onFeatureProgress = [&](std::size_t done, std::size_t total, const std::string& id) {
@@ -339,16 +349,44 @@ void TrainingWorker::runPointModels(const TrainingRequest& request) {
       });
     };
     update([&](TrainingStatus& s) { s.losses.clear(); });
-    const auto result = trainFromDataset(options);
-    logger()->info("trained {} on {} objects ({:.0f} s)", result.card.name, result.objectsUsed,
-                   result.trainingSeconds);
-    if (guarded) {
+    std::optional<GuardVerdict> verdict;
+    if (fineTune && !heldOutGuard) {
+      PointModelGuardBySource bySource;
+      bySource.currentDir = request.initDir;
+      bySource.fineTune = options;
+      bySource.workDir = request.outDir / (".guard-by-source." + options.modelName);
+      bySource.seed = options.training.seed;
+      bySource.onFold = [&](int fold, int folds) {
+        part = fold - 1, parts = folds + 1;
+        update([&](TrainingStatus& s) { s.losses.clear(); });
+      };
+      verdict = judgeUpdateBySource(bySource);
+      part = parts - 1;
+      if (!verdict) {
+        // One source: nothing can judge; trained and kept as before guards existed.
+        options.outDir = request.outDir;
+        update([&](TrainingStatus& s) {
+          s.verdicts.push_back(options.modelName +
+                               ": unguarded: the training set's objects of its type come from one "
+                               "source, so none can be left out while another teaches (a "
+                               "held-out folder of other sources guards it)");
+        });
+      }
+    }
+    if (!verdict || verdict->adopted) {
+      const auto result = trainFromDataset(options);
+      logger()->info("trained {} on {} objects ({:.0f} s)", result.card.name, result.objectsUsed,
+                     result.trainingSeconds);
+    }
+    if (heldOutGuard) {
       update([&](TrainingStatus& s) { s.phase = "guard: " + options.modelName + " on held-out objects"; });
-      const GuardVerdict verdict = judgeUpdate(guard);
-      applyVerdict(verdict, guard, request.outDir);
-      fs::remove_all(options.outDir);
-      logger()->info("guard: {}: {}", options.modelName, verdict.reason);
-      update([&](TrainingStatus& s) { s.verdicts.push_back(options.modelName + ": " + verdict.reason); });
+      verdict = judgeUpdate(guard);
+    }
+    if (verdict) {
+      applyVerdict(*verdict, guard, request.outDir);
+      fs::remove_all(candidateDir);
+      logger()->info("guard: {}: {}", options.modelName, verdict->reason);
+      update([&](TrainingStatus& s) { s.verdicts.push_back(options.modelName + ": " + verdict->reason); });
     }
   }
 

@@ -2,9 +2,12 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <fstream>
+#include <nlohmann/json.hpp>
 #include <thread>
 
 #include "core/model/model_card.h"
+#include "support/labelled_objects.h"
 #include "support/test_paths.h"
 #include "ui/app/training_worker.h"
 
@@ -49,6 +52,12 @@ TEST(FineTuneWorker, InitsFromTheLoadedModels) {
   const fs::path shipped = kShipped;
   const TrainingStatus status = fineTune(dir, {}, 60);
   ASSERT_TRUE(status.error.empty()) << status.error;
+  // One object, one source: nothing can judge, and each model's line says so.
+  ASSERT_EQ(status.verdicts.size(), 2u);
+  for (const auto& verdict : status.verdicts)
+    EXPECT_NE(verdict.find("unguarded: the training set's objects of its type come from one source"),
+              std::string::npos)
+        << verdict;
   for (const char* name : {"stove.heatsource", "stove.togglebutton"}) {
     const auto card = model::readModelCard(dir / "models" / (std::string(name) + ".json"));
     const auto init = model::readModelCard(shipped / (std::string(name) + ".json"));
@@ -96,6 +105,38 @@ TEST(FineTuneWorker, GuardsEachModelOnHeldOutObjects) {
     EXPECT_EQ(card.weightsSha256 == init.weightsSha256, refused) << name;
   }
   EXPECT_FALSE(fs::exists(dir / "models" / ".candidate.stove.heatsource"));
+}
+
+// Without a held-out folder the training set's sources judge: each model's fine-tune is repeated
+// with each source left out, one verdict per model says so, and the models folder holds, per
+// model, the adopted fine-tune or the loaded model.
+TEST(FineTuneWorker, GuardsEachModelBySourceWithoutAHeldOutFolder) {
+  const auto dir = sagrid::test::freshTempDir();
+  ASSERT_EQ(sagrid::test::runSagrid("generate --category stove --count 2 --seed 33 --out " +
+                                    sagrid::test::shellQuote((dir / "train").string()))
+                .exitCode,
+            0);
+  sagrid::test::assignSources(dir / "train", {"repo-a", "repo-b"});
+  const TrainingStatus status = fineTune(dir, {}, 300);
+  ASSERT_TRUE(status.error.empty()) << status.error;
+  ASSERT_EQ(status.verdicts.size(), 2u);
+  for (const auto& verdict : status.verdicts)
+    EXPECT_NE(verdict.find("on 2 curated object(s) of 2 sources"), std::string::npos) << verdict;
+  std::ifstream log(dir / "models" / "guard.jsonl");
+  std::string line;
+  int lines = 0;
+  while (std::getline(log, line)) {
+    const auto verdict = nlohmann::json::parse(line);
+    const std::string name = verdict.at("model");
+    EXPECT_EQ(verdict.at("judged_by_source"), true) << name;
+    const auto card = model::readModelCard(dir / "models" / (name + ".json"));
+    const auto init = model::readModelCard(kShipped / (name + ".json"));
+    EXPECT_EQ(card.weightsSha256 == init.weightsSha256, !verdict.at("adopted").get<bool>()) << name;
+    ++lines;
+  }
+  EXPECT_EQ(lines, 2);
+  EXPECT_FALSE(fs::exists(dir / "models" / ".guard-by-source.stove.heatsource"));
+  EXPECT_FALSE(fs::exists(dir / "models" / ".candidate.stove.togglebutton"));
 }
 
 }  // namespace
