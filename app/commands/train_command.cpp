@@ -262,14 +262,16 @@ void setupTrain(CLI::App& root) {
       "repository's); the fine-tuned model replaces the --init one in --out only if "
       "its single-point error there is lower, else the current model is kept and the "
       "candidate goes to OUT/refused/ (OUT/guard.jsonl: the figures)");
-  auto* bySourceFlag = cmd->add_flag("--guard-by-source", o->guardBySource,
-                "With --init, without a held-out folder: the fine-tune is repeated with each fold "
-                "of the sources of --data's curated objects left out (a wild-pool repository, a "
-                "Sweet Home 3D library, else the folder; --guard-folds of them), and is adopted "
-                "only if its single-point error on the left-out objects, over all folds, is lower "
-                "than the --init model's; only then is it fine-tuned on all of --data. Else the "
-                "current model is kept (OUT/guard.jsonl: the figures). Costs a fine-tune per fold")
-      ->excludes(guardOption);
+  auto* bySourceFlag =
+      cmd->add_flag(
+             "--guard-by-source", o->guardBySource,
+             "With --init, without a held-out folder: the fine-tune is repeated with each fold "
+             "of the sources of --data's curated objects left out (a wild-pool repository, a "
+             "Sweet Home 3D library, else the folder; --guard-folds of them), and is adopted "
+             "only if its single-point error on the left-out objects, over all folds, is lower "
+             "than the --init model's; only then is it fine-tuned on all of --data. Else the "
+             "current model is kept (OUT/guard.jsonl: the figures). Costs a fine-tune per fold")
+          ->excludes(guardOption);
   cmd->add_option("--guard-folds", o->guardFolds,
                   "With --guard-by-source: folds of sources (default 3; at most the sources)")
       ->check(CLI::Range(2, 100))
@@ -382,8 +384,9 @@ void setupTrain(CLI::App& root) {
     // Guarded: the candidate trains beside the models, and replaces the current one only where
     // the held-out curated objects say it is better.
     if (o->init.empty())
-      throw sagrid::InvalidArgument(std::string(o->guardBySource ? "--guard-by-source" : "--guard") +
-                                    " is for fine-tuning; give --init too");
+      throw sagrid::InvalidArgument(
+          std::string(o->guardBySource ? "--guard-by-source" : "--guard") +
+          " is for fine-tuning; give --init too");
     sagrid::GuardOptions guard;
     guard.currentDir = fs::is_directory(o->init) ? fs::path(o->init) : fs::path(o->init).parent_path();
     guard.candidateDir = out / (".candidate." + o->model);

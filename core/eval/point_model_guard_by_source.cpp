@@ -44,16 +44,16 @@ std::optional<GuardVerdict> judgeUpdateBySource(const PointModelGuardBySource& g
     for (auto& entry : readDataset(datasets[d].dir, datasets[d].referenceRoot)) {
       const ObjectLabels labels = readLabels(entry.labels);
       if (entry.category.empty()) entry.category = labels.object.category;
-      CuratedObject o{entry, d, objectSource(labels, entry.mesh, datasets[d].dir.filename().string()),
+      CuratedObject o{entry, d,
+                      objectSource(labels, entry.mesh, datasets[d].dir.filename().string()),
                       entry.category == category && !labels.ofType(type).empty()};
       objects.push_back(std::move(o));
     }
   }
   // The folds: the sources of the objects judged; a source without any trains in every fold.
-  std::vector<std::size_t> judged;
   std::vector<std::string> judgedSources;
-  for (std::size_t i = 0; i < objects.size(); ++i)
-    if (objects[i].ofType) judged.push_back(i), judgedSources.push_back(objects[i].source);
+  for (const auto& o : objects)
+    if (o.ofType) judgedSources.push_back(o.source);
   const std::set<std::string> sources(judgedSources.begin(), judgedSources.end());
   if (sources.size() < 2) return std::nullopt;
   const auto split = sourceFoldSplit(judgedSources, g.folds, g.seed);
@@ -83,7 +83,8 @@ std::optional<GuardVerdict> judgeUpdateBySource(const PointModelGuardBySource& g
     DatasetTrainingOptions fineTune = g.fineTune;
     fineTune.datasets.clear();
     fineTune.outDir = foldDir / "candidate";
-    fineTune.command = g.fineTune.command + " (guard by source, fold " + std::to_string(f + 1) + ")";
+    fineTune.command =
+        g.fineTune.command + " (guard by source, fold " + std::to_string(f + 1) + ")";
     std::vector<GuardOptions> tests;
     for (std::size_t d = 0; d < datasets.size(); ++d) {
       const TrainingDataSource& source = datasets[d];
@@ -96,8 +97,10 @@ std::optional<GuardVerdict> judgeUpdateBySource(const PointModelGuardBySource& g
       for (const auto& o : objects) {
         if (o.dataset != d) continue;
         files.push_back(o.entry.mesh), files.push_back(o.entry.labels);
-        if (!leftOut.count(o.source)) training.push_back(&o.entry);
-        else if (o.ofType) test.push_back(&o.entry);
+        if (!leftOut.count(o.source))
+          training.push_back(&o.entry);
+        else if (o.ofType)
+          test.push_back(&o.entry);
       }
       TrainingDataSource subset = source;
       subset.referenceRoot = folderHoldingFiles(source.dir, files);
@@ -127,10 +130,10 @@ std::optional<GuardVerdict> judgeUpdateBySource(const PointModelGuardBySource& g
       v.objects += candidate.objects;
     }
   }
-  const std::string judgedBy =
-      std::to_string(v.objects) + " curated object(s) of " + std::to_string(sources.size()) +
-      " sources, each of " + std::to_string(v.folds) +
-      " folds of sources left out of the fine-tune in turn";
+  const std::string judgedBy = std::to_string(v.objects) + " curated object(s) of " +
+                               std::to_string(sources.size()) + " sources, each of " +
+                               std::to_string(v.folds) +
+                               " folds of sources left out of the fine-tune in turn";
   if (v.objects == 0) {
     v.currentError = v.candidateError = NAN;
     v.reason = "no curated object of its type could be evaluated: current model kept";

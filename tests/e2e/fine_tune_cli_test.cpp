@@ -166,9 +166,11 @@ TEST(FineTuneCli, TheGuardBySourceLeavesEachSourceOutInTurnAndNeedsTwo) {
   EXPECT_EQ(line.at("folds"), 2);
   EXPECT_EQ(line.at("objects"), 2);
   const bool adopted = line.at("adopted");
-  EXPECT_EQ(adopted, line.at("candidate_error_m").get<double>() < line.at("current_error_m").get<double>());
+  EXPECT_EQ(adopted,
+            line.at("candidate_error_m").get<double>() < line.at("current_error_m").get<double>());
   // Refused: the current model in OUT; adopted: the fine-tune on both sources.
-  EXPECT_EQ(readFileBytes(out / "stove.togglebutton.pt") == readFileBytes(models / "stove.togglebutton.pt"),
+  EXPECT_EQ(readFileBytes(out / "stove.togglebutton.pt") ==
+                readFileBytes(models / "stove.togglebutton.pt"),
             !adopted);
   EXPECT_FALSE(fs::exists(out / ".candidate.stove.togglebutton"));
   EXPECT_FALSE(fs::exists(out / ".guard-by-source.stove.togglebutton"));

@@ -1,10 +1,8 @@
 #include "ui/app/training_worker.h"
 
-#include "core/training/guarded_update.h"
-
 #include <algorithm>
-#include <nlohmann/json.hpp>
 #include <map>
+#include <nlohmann/json.hpp>
 #include <set>
 #include <sstream>
 
@@ -21,6 +19,7 @@
 #include "core/eval/units_cases.h"
 #include "core/labels/labels.h"
 #include "core/training/dataset_training.h"
+#include "core/training/guarded_update.h"
 
 namespace sagrid::ui {
 
@@ -322,7 +321,8 @@ void TrainingWorker::runPointModels(const TrainingRequest& request) {
     const bool heldOutGuard = fineTune && !request.heldOut.empty();
     const fs::path candidateDir = request.outDir / (".candidate." + options.modelName);
     options.outDir = fineTune ? candidateDir : request.outDir;
-    const GuardOptions guard{request.initDir, candidateDir, options.modelName, request.heldOut, {}, {}, {}};
+    const GuardOptions guard{
+        request.initDir, candidateDir, options.modelName, request.heldOut, {}, {}, {}};
     options.command = options.init.empty() ? "sagrid gui (Train panel)"
                                            : "sagrid gui (Train panel, fine-tune of " +
                                                  request.initDir.string() + ")";
@@ -333,9 +333,10 @@ void TrainingWorker::runPointModels(const TrainingRequest& request) {
     double part = 0, parts = 1;
     options.training.onProgress = [&](const model::TrainingProgress& p) {
       update([&](TrainingStatus& s) {
-        const std::string fold = part < parts - 1 ? " without fold " + std::to_string(int(part) + 1) +
-                                                        " of the sources (guard)"
-                                                  : "";
+        const std::string fold =
+            part < parts - 1
+                ? " without fold " + std::to_string(int(part) + 1) + " of the sources (guard)"
+                : "";
         s.phase = "training " + options.modelName + fold + ", epoch " + std::to_string(p.epoch) +
                   "/" + std::to_string(p.epochs);
         s.losses.push_back(float(p.loss));
@@ -386,7 +387,9 @@ void TrainingWorker::runPointModels(const TrainingRequest& request) {
       applyVerdict(*verdict, guard, request.outDir);
       fs::remove_all(candidateDir);
       logger()->info("guard: {}: {}", options.modelName, verdict->reason);
-      update([&](TrainingStatus& s) { s.verdicts.push_back(options.modelName + ": " + verdict->reason); });
+      update([&](TrainingStatus& s) {
+        s.verdicts.push_back(options.modelName + ": " + verdict->reason);
+      });
     }
   }
 

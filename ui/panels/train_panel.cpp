@@ -33,10 +33,11 @@ void drawTrainPanel(Session& session, TrainingWorker& worker,
       if (heldOut[0] == '\0')
         ImGui::TextDisabled("Guard: the training set, each fold of its sources left out");
       if (heldOut[0] == '\0' && ImGui::IsItemHovered())
-        ImGui::SetTooltip("Without a held-out folder each model's fine-tune is repeated with each "
-                          "of three folds of the training set's sources left out (a fine-tune per "
-                          "fold) and adopted only where it is better on the left-out objects; a "
-                          "training set of one source is fine-tuned unguarded");
+        ImGui::SetTooltip(
+            "Without a held-out folder each model's fine-tune is repeated with each "
+            "of three folds of the training set's sources left out (a fine-tune per "
+            "fold) and adopted only where it is better on the left-out objects; a "
+            "training set of one source is fine-tuned unguarded");
       ImGui::Checkbox("keep the loaded networks", &keepInit);
       if (ImGui::IsItemHovered())
         ImGui::SetTooltip("Each fine-tuned network joins the loaded model's networks (their "

@@ -92,9 +92,10 @@ TEST(PointModelGuardBySource, AdoptsAFineTuneThatCarriesToTheLeftOutSource) {
   for (const char* repo : {"repo-a", "repo-b"})
     for (const auto& e : fs::directory_iterator(b.dir / repo))
       if (e.is_directory() && e.path().filename().string()[0] != '.')
-        fs::create_directory_symlink(e.path(), both / (std::string(repo) + "-" + e.path().filename().string()));
-  const HeldOutError all =
-      heldOutError(b.current, {b.current, b.dir / "scratch", kModel, both, {}, {}, test::tinyFeatures()});
+        fs::create_directory_symlink(
+            e.path(), both / (std::string(repo) + "-" + e.path().filename().string()));
+  const HeldOutError all = heldOutError(
+      b.current, {b.current, b.dir / "scratch", kModel, both, {}, {}, test::tinyFeatures()});
   EXPECT_EQ(all.objects, 6u);
   EXPECT_NEAR(all.error, verdict->currentError, 1e-6);
 }
@@ -108,7 +109,8 @@ TEST(PointModelGuardBySource, RefusesAFineTuneThatDoesNotCarry) {
   ASSERT_TRUE(verdict);
   EXPECT_FALSE(verdict->adopted) << verdict->reason;
   EXPECT_GT(verdict->candidateError, verdict->currentError);
-  EXPECT_NE(verdict->reason.find("refused, current model kept"), std::string::npos) << verdict->reason;
+  EXPECT_NE(verdict->reason.find("refused, current model kept"), std::string::npos)
+      << verdict->reason;
 }
 
 TEST(PointModelGuardBySource, OneSourceCannotJudgeAndOneFoldIsAnError) {

@@ -55,8 +55,9 @@ TEST(FineTuneWorker, InitsFromTheLoadedModels) {
   // One object, one source: nothing can judge, and each model's line says so.
   ASSERT_EQ(status.verdicts.size(), 2u);
   for (const auto& verdict : status.verdicts)
-    EXPECT_NE(verdict.find("unguarded: the training set's objects of its type come from one source"),
-              std::string::npos)
+    EXPECT_NE(
+        verdict.find("unguarded: the training set's objects of its type come from one source"),
+        std::string::npos)
         << verdict;
   for (const char* name : {"stove.heatsource", "stove.togglebutton"}) {
     const auto card = model::readModelCard(dir / "models" / (std::string(name) + ".json"));
