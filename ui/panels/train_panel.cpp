@@ -31,13 +31,15 @@ void drawTrainPanel(Session& session, TrainingWorker& worker,
         ImGui::SetTooltip("A dataset of curated objects from other sources than the training set: "
                           "each fine-tuned model is adopted only where it is better there");
       if (heldOut[0] == '\0')
-        ImGui::TextDisabled("Guard: the training set, each fold of its sources left out");
+        ImGui::TextDisabled("Guard: the training set's sources left out in turn (about 4x the "
+                            "minutes)");
       if (heldOut[0] == '\0' && ImGui::IsItemHovered())
         ImGui::SetTooltip(
             "Without a held-out folder each model's fine-tune is repeated with each "
             "of three folds of the training set's sources left out (a fine-tune per "
-            "fold) and adopted only where it is better on the left-out objects; a "
-            "training set of one source is fine-tuned unguarded");
+            "fold) and adopted only where it is better on the left-out objects, then "
+            "fine-tuned on the whole set: four fine-tunes where it is adopted, three "
+            "where not. A training set of one source is fine-tuned unguarded");
       ImGui::Checkbox("keep the loaded networks", &keepInit);
       if (ImGui::IsItemHovered())
         ImGui::SetTooltip("Each fine-tuned network joins the loaded model's networks (their "
