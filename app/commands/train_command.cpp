@@ -269,7 +269,8 @@ void setupTrain(CLI::App& root) {
              "of the sources of --data's curated objects left out (a wild-pool repository, a "
              "Sweet Home 3D library, else the folder; --guard-folds of them), and is adopted "
              "only if its single-point error on the left-out objects, over all folds, is lower "
-             "than the --init model's; only then is it fine-tuned on all of --data. Else the "
+             "than the --init model's by more than the standard error of the per-object "
+             "differences; only then is it fine-tuned on all of --data. Else the "
              "current model is kept (OUT/guard.jsonl: the figures). Costs a fine-tune per fold")
           ->excludes(guardOption);
   cmd->add_option("--guard-folds", o->guardFolds,

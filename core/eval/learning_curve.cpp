@@ -353,7 +353,7 @@ LearningCurveReport runLearningCurve(const LearningCurveOptions& options) {
           const GuardVerdict verdict =
               judgeUpdate(guard, init == initOnGuard.end() ? std::nullopt
                                                            : std::optional<HeldOutError>(init->second));
-          initOnGuard[name] = {verdict.currentError, verdict.objects};
+          initOnGuard[name] = {verdict.currentError, verdict.objects, {}};
           applyVerdict(verdict, guard, modelsDir);
           fs::remove_all(t.outDir);
           adopted[key] = verdict.adopted;

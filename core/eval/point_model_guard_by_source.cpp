@@ -11,6 +11,7 @@
 #include "core/dataset/dataset_subset.h"
 #include "core/dataset/object_source.h"
 #include "core/eval/learning_curve.h"
+#include "core/eval/sample_stats.h"
 #include "core/labels/labels.h"
 #include "core/model/model_card.h"
 
@@ -27,6 +28,7 @@ struct CuratedObject {
 };
 
 std::string centimetres(double metres) {
+  if (!std::isfinite(metres)) return "–";
   char text[32];
   std::snprintf(text, sizeof text, "%.1f cm", metres * 100);
   return text;
@@ -63,7 +65,7 @@ std::optional<GuardVerdict> judgeUpdateBySource(const PointModelGuardBySource& g
   v.judgedBySource = true;
   v.folds = static_cast<int>(split.size());
   v.sources.assign(sources.begin(), sources.end());
-  double currentSum = 0, candidateSum = 0;
+  std::vector<double> currentErrors, differences;  // per object judged, paired by id
   fs::remove_all(g.workDir);
   // The folds' subsets and candidates go when the guard ends, decided or interrupted.
   struct RemoveWhenDone {
@@ -124,26 +126,37 @@ std::optional<GuardVerdict> judgeUpdateBySource(const PointModelGuardBySource& g
     for (const GuardOptions& test : tests) {
       const HeldOutError current = heldOutError(g.currentDir, test);
       const HeldOutError candidate = heldOutError(fineTune.outDir, test);
-      if (candidate.objects == 0 || current.objects != candidate.objects) continue;
-      currentSum += current.error * double(current.objects);
-      candidateSum += candidate.error * double(candidate.objects);
-      v.objects += candidate.objects;
+      for (const auto& [id, error] : candidate.byObject)
+        if (const auto it = current.byObject.find(id); it != current.byObject.end()) {
+          currentErrors.push_back(it->second);
+          differences.push_back(error - it->second);
+        }
     }
   }
+  v.objects = differences.size();
   const std::string judgedBy = std::to_string(v.objects) + " curated object(s) of " +
                                std::to_string(sources.size()) + " sources, each of " +
                                std::to_string(v.folds) +
                                " folds of sources left out of the fine-tune in turn";
   if (v.objects == 0) {
-    v.currentError = v.candidateError = NAN;
+    v.currentError = v.candidateError = v.pairedNoise = NAN;
     v.reason = "no curated object of its type could be evaluated: current model kept";
     return v;
   }
-  v.currentError = currentSum / double(v.objects);
-  v.candidateError = candidateSum / double(v.objects);
-  v.adopted = v.candidateError < v.currentError;
-  v.reason = centimetres(v.currentError) + " -> " + centimetres(v.candidateError) + " on " +
-             judgedBy + ": " + (v.adopted ? "adopted" : "refused, current model kept");
+  // A fine-tune's gain of a few millimetres over twenty objects comes and goes with the seed: the
+  // candidate is adopted only where it is better by more than the standard error of the paired
+  // per-object differences.
+  const SampleStats current = sampleStats(currentErrors), change = sampleStats(differences);
+  v.currentError = current.mean;
+  v.candidateError = current.mean + change.mean;
+  v.pairedNoise = v.objects > 1 ? change.sd / std::sqrt(double(v.objects)) : NAN;
+  v.adopted = std::isfinite(v.pairedNoise) && change.mean < -v.pairedNoise;
+  const std::string verdict = v.adopted ? "adopted"
+                              : change.mean < 0
+                                  ? "refused (better by less than its noise), current model kept"
+                                  : "refused, current model kept";
+  v.reason = centimetres(v.currentError) + " -> " + centimetres(v.candidateError) + " (noise " +
+             centimetres(v.pairedNoise) + ") on " + judgedBy + ": " + verdict;
   return v;
 }
 

@@ -4,7 +4,8 @@
 // repository, a Sweet Home 3D library, else the dataset folder; core/dataset/object_source.h),
 // and each fold's candidate and the current model are evaluated with the paper's single-point
 // metric on the fold's objects of the model's type. The update is adopted where the candidate's
-// error over all folds is lower; only then is it fine-tuned on every curated object. `sagrid
+// error over all folds is lower by more than the standard error of the per-object differences
+// (GuardVerdict::pairedNoise); only then is it fine-tuned on every curated object. `sagrid
 // train --init ... --guard-by-source` and the GUI's Train panel (no held-out folder) decide here.
 #pragma once
 
@@ -29,8 +30,8 @@ struct PointModelGuardBySource {
   std::function<void(int fold, int folds)> onFold;  // before each fold's fine-tune
 };
 
-// The verdict (GuardVerdict::judgedBySource; currentError and candidateError the object-weighted
-// means over the folds), or nullopt when the curated objects of the model's type come from fewer
+// The verdict (GuardVerdict::judgedBySource; currentError and candidateError the means over every
+// object judged, pairedNoise the standard error of their per-object differences), or nullopt when the curated objects of the model's type come from fewer
 // than two sources: none can be left out while another teaches. Throws what training and
 // evaluation throw; InvalidArgument for folds < 2.
 std::optional<GuardVerdict> judgeUpdateBySource(const PointModelGuardBySource& guard);

@@ -54,12 +54,16 @@ HeldOutError heldOutError(const fs::path& modelsDir, const GuardOptions& o) {
   e.features.cacheDir = o.cacheDir.empty() ? o.heldOutDir / ".sagrid-cache" : o.cacheDir;
   const EvaluationReport report = evaluateModels(models, e);
   fs::remove_all(scratch);
-  HeldOutError out{NAN, 0};
+  HeldOutError out{NAN, 0, {}};
   const auto& byModel = report.methods.front().byModel;  // "SAGrid argmin (paper)"
   if (const auto it = byModel.find(o.modelName); it != byModel.end() && it->second.objects > 0) {
     out.objects = it->second.objects;
     out.error = it->second.paperError;
   }
+  for (const auto& object : report.perObject)
+    if (object.contains("paper_error_m") && object["paper_error_m"].contains(o.modelName))
+      out.byObject[object.at("id").get<std::string>()] =
+          object["paper_error_m"][o.modelName].get<double>();
   return out;
 }
 
@@ -101,6 +105,7 @@ GuardVerdict judgeUpdate(const GuardOptions& o, const std::optional<HeldOutError
 }
 
 void applyVerdict(const GuardVerdict& v, const GuardOptions& o, const fs::path& outDir) {
+  const auto number = [](double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(); };
   fs::create_directories(outDir);
   if (v.adopted) {
     model::moveModelFiles(o.candidateDir, outDir, o.modelName);
@@ -110,12 +115,12 @@ void applyVerdict(const GuardVerdict& v, const GuardOptions& o, const fs::path& 
     if (fs::weakly_canonical(o.currentDir) != fs::weakly_canonical(outDir))
       model::copyModelFiles(o.currentDir, outDir, o.modelName);
   }
-  const auto number = [](double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(); };
   nlohmann::json line = {{"model", v.model}, {"objects", v.objects}};
   if (v.judgedBySource) {
     line["judged_by_source"] = true;
     line["sources"] = v.sources;
     line["folds"] = v.folds;
+    line["paired_noise_m"] = number(v.pairedNoise);
   } else {
     line["held_out"] = fs::absolute(o.heldOutDir).lexically_normal().string();
   }

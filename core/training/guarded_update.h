@@ -6,6 +6,7 @@
 #pragma once
 
 #include <filesystem>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -18,6 +19,7 @@ namespace sagrid {
 struct HeldOutError {
   double error = 0;         // metres (NaN when no object)
   std::size_t objects = 0;
+  std::map<std::string, double> byObject;  // each object's error (metres) by its id
 };
 struct GuardVerdict {
   std::string model;
@@ -31,6 +33,9 @@ struct GuardVerdict {
   bool judgedBySource = false;
   std::vector<std::string> sources;
   int folds = 0;
+  // Judged by source: the standard error of the per-object differences candidate - current
+  // (metres); the candidate is adopted only where it is better by more than that.
+  double pairedNoise = 0;
 };
 
 struct GuardOptions {

@@ -37,7 +37,8 @@ void drawTrainPanel(Session& session, TrainingWorker& worker,
         ImGui::SetTooltip(
             "Without a held-out folder each model's fine-tune is repeated with each "
             "of three folds of the training set's sources left out (a fine-tune per "
-            "fold) and adopted only where it is better on the left-out objects, then "
+            "fold) and adopted only where it is better on the left-out objects beyond "
+            "their noise, then "
             "fine-tuned on the whole set: four fine-tunes where it is adopted, three "
             "where not. A training set of one source is fine-tuned unguarded");
       ImGui::Checkbox("keep the loaded networks", &keepInit);

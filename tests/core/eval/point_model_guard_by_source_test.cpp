@@ -64,10 +64,11 @@ Bench makeBench(int epochs, bool curatedToo) {
   return b;
 }
 
-// A current model that learned little from four generated stoves: six more teach it, and the
-// guard sees that on each source left out.
+// A current model that learned little from one epoch on four generated stoves: six more teach it,
+// and every left-out stove says so (beyond the paired noise; with six epochs, one stove's 90 cm
+// -> 4 cm made most of the gain, and the guard rightly refused it).
 TEST(PointModelGuardBySource, AdoptsAFineTuneThatCarriesToTheLeftOutSource) {
-  Bench b = makeBench(6, false);
+  Bench b = makeBench(1, false);
   int foldsSeen = 0;
   b.guard.onFold = [&](int fold, int folds) {
     EXPECT_EQ(fold, ++foldsSeen);
@@ -81,7 +82,8 @@ TEST(PointModelGuardBySource, AdoptsAFineTuneThatCarriesToTheLeftOutSource) {
   EXPECT_EQ(verdict->sources, (std::vector<std::string>{"repo-a", "repo-b"}));
   EXPECT_EQ(verdict->objects, 6u);  // every curated stove, each judged once
   EXPECT_TRUE(verdict->adopted) << verdict->reason;
-  EXPECT_LT(verdict->candidateError, verdict->currentError);
+  EXPECT_LT(verdict->candidateError, verdict->currentError - verdict->pairedNoise);
+  EXPECT_GT(verdict->pairedNoise, 0);
   EXPECT_NE(verdict->reason.find("6 curated object(s) of 2 sources"), std::string::npos)
       << verdict->reason;
   EXPECT_FALSE(fs::exists(b.guard.workDir));

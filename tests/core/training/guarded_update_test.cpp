@@ -50,10 +50,10 @@ TEST(GuardedUpdate, AdoptsTheBetterModelAndRefusesTheWorse) {
   EXPECT_LT(adopted.candidateError, adopted.currentError);
   EXPECT_NE(adopted.reason.find("adopted"), std::string::npos);
   // The current model's figure, when the caller has it, is not evaluated again: it decides.
-  const GuardVerdict again = judgeUpdate(ab, HeldOutError{forward.currentError, forward.objects});
+  const GuardVerdict again = judgeUpdate(ab, HeldOutError{forward.currentError, forward.objects, {}});
   EXPECT_EQ(again.adopted, forward.adopted);
   EXPECT_DOUBLE_EQ(again.candidateError, forward.candidateError);
-  EXPECT_FALSE(judgeUpdate(ab, HeldOutError{0.0, forward.objects}).adopted);  // nothing beats 0
+  EXPECT_FALSE(judgeUpdate(ab, HeldOutError{0.0, forward.objects, {}}).adopted);  // nothing beats 0
 
   // The refused one in effect: it goes aside, the current model is what OUT holds.
   const GuardVerdict& refused = forward.adopted ? backward : forward;
