@@ -103,13 +103,6 @@ Overall overallAt(const LearningCurveReport& r, int k) {
   return o;
 }
 
-std::string centimetres(double metres) {
-  if (!std::isfinite(metres)) return "–";
-  char b[32];
-  std::snprintf(b, sizeof b, "%.1f", metres * 100);
-  return b;
-}
-
 }  // namespace
 
 std::vector<std::vector<std::size_t>> kFoldSplit(std::size_t count, int folds, unsigned seed,
@@ -400,7 +393,7 @@ LearningCurveReport runLearningCurve(const LearningCurveOptions& options) {
         p.k = k;
         report.points.push_back(p);
         say("fold " + std::to_string(foldNumber) + " k=" + kLabel(k) + " " + p.model + ": " +
-            centimetres(p.paperError) + " cm on " + std::to_string(p.testObjects) +
+            reportCell(p.paperError * 100, "%.1f") + " cm on " + std::to_string(p.testObjects) +
             " held-out object(s)");
       }
     }
@@ -444,7 +437,7 @@ std::string learningCurveMarkdown(const LearningCurveReport& r) {
     const Overall o = overallAt(r, k);
     char ratio[32] = "–";
     if (std::isfinite(o.ratio)) std::snprintf(ratio, sizeof ratio, "%.2f", o.ratio);
-    md << "| " << kLabel(k) << " | " << o.models << " | " << centimetres(o.mean) << " | " << ratio
+    md << "| " << kLabel(k) << " | " << o.models << " | " << reportCell(o.mean * 100, "%.1f") << " | " << ratio
        << " |\n";
   }
   for (const auto& model : r.modelNames) {
@@ -454,8 +447,8 @@ std::string learningCurveMarkdown(const LearningCurveReport& r) {
       const Stats s = statsOf(r, model, k);
       char used[32];
       std::snprintf(used, sizeof used, "%.1f", s.kUsed);
-      md << "| " << kLabel(k) << " | " << used << " | " << s.folds << " | " << centimetres(s.mean)
-         << " | " << centimetres(s.sd) << " |\n";
+      md << "| " << kLabel(k) << " | " << used << " | " << s.folds << " | " << reportCell(s.mean * 100, "%.1f")
+         << " | " << reportCell(s.sd * 100, "%.1f") << " |\n";
     }
   }
   return md.str();

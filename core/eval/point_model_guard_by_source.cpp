@@ -11,6 +11,7 @@
 #include "core/dataset/dataset_subset.h"
 #include "core/dataset/object_source.h"
 #include "core/eval/learning_curve.h"
+#include "core/eval/report_cell.h"
 #include "core/eval/sample_stats.h"
 #include "core/labels/labels.h"
 #include "core/model/model_card.h"
@@ -26,13 +27,6 @@ struct CuratedObject {
   std::string source;
   bool ofType = false;  // of the model's category, with points of its type: judged
 };
-
-std::string centimetres(double metres) {
-  if (!std::isfinite(metres)) return "–";
-  char text[32];
-  std::snprintf(text, sizeof text, "%.1f cm", metres * 100);
-  return text;
-}
 
 }  // namespace
 
@@ -155,8 +149,8 @@ std::optional<GuardVerdict> judgeUpdateBySource(const PointModelGuardBySource& g
                               : change.mean < 0
                                   ? "refused (better by less than its noise), current model kept"
                                   : "refused, current model kept";
-  v.reason = centimetres(v.currentError) + " -> " + centimetres(v.candidateError) + " (noise " +
-             centimetres(v.pairedNoise) + ") on " + judgedBy + ": " + verdict;
+  v.reason = reportCell(v.currentError * 100, "%.1f cm") + " -> " + reportCell(v.candidateError * 100, "%.1f cm") + " (noise " +
+             reportCell(v.pairedNoise * 100, "%.1f cm") + ") on " + judgedBy + ": " + verdict;
   return v;
 }
 

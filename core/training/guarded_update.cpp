@@ -9,6 +9,7 @@
 #include "core/common/atomic_file.h"
 #include "core/common/error.h"
 #include "core/eval/evaluation.h"
+#include "core/eval/report_cell.h"
 #include "core/labels/labels.h"
 #include "core/dataset/dataset.h"
 #include "core/model/model_card.h"
@@ -20,12 +21,6 @@ namespace sagrid {
 namespace fs = std::filesystem;
 
 namespace {
-
-std::string centimetres(double metres) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.1f cm", metres * 100);
-  return text;
-}
 
 // Held-out objects of the model's category with points of its type.
 std::size_t heldOutObjectsOfType(const GuardOptions& o) {
@@ -98,7 +93,7 @@ GuardVerdict judgeUpdate(const GuardOptions& o, const std::optional<HeldOutError
     return v;
   }
   v.adopted = candidate.error < current.error;
-  v.reason = centimetres(current.error) + " -> " + centimetres(candidate.error) + " on " +
+  v.reason = reportCell(current.error * 100, "%.1f cm") + " -> " + reportCell(candidate.error * 100, "%.1f cm") + " on " +
              std::to_string(candidate.objects) + " held-out object(s): " +
              (v.adopted ? "adopted" : "refused, current model kept");
   return v;
