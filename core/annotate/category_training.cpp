@@ -185,4 +185,22 @@ double balancedShareRight(const CategoryEvaluation& evaluation) {
   return classes ? sum / classes : 0.0;
 }
 
+PairedChange pairedCategoryChange(const CategoryEvaluation& current,
+                                  const CategoryEvaluation& candidate) {
+  // Objects both decided rightly are not listed anywhere: the class totals count them.
+  std::map<std::string, std::map<std::string, ObjectFigures>> wrong;  // class -> object -> figures
+  const auto key = [](const CategoryEvaluation::Miss& m) { return m.group + "\n" + m.id; };
+  for (const auto& m : current.misses) wrong[m.truth][key(m)].current = 1;
+  for (const auto& m : candidate.misses) wrong[m.truth][key(m)].candidate = 1;
+  std::vector<std::vector<ObjectFigures>> classes;
+  for (const auto& [cls, count] : candidate.byClass) {
+    std::vector<ObjectFigures> objects;
+    if (const auto it = wrong.find(cls); it != wrong.end())
+      for (const auto& [object, figures] : it->second) objects.push_back(figures);
+    objects.resize(std::max<std::size_t>(objects.size(), count.total), ObjectFigures{0, 0});
+    classes.push_back(std::move(objects));
+  }
+  return pairedChange(classes);
+}
+
 }  // namespace sagrid

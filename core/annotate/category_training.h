@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "core/annotate/category_classifier.h"
+#include "core/common/paired_change.h"
 #include "core/features/feature_pipeline.h"
 
 namespace sagrid {
@@ -73,6 +74,13 @@ CategoryEvaluation evaluateCategories(
 // The mean over the true classes of the share decided right: stoves, sinks and look-alikes count
 // alike however many of each there are (the guard on classifier updates compares it). 0 when empty.
 double balancedShareRight(const CategoryEvaluation& evaluation);
+
+// Two classifiers decided the same objects: per true class, each object's figure is 1 where it was
+// decided wrongly (objects matched by group and id), the classes counting alike, so 1 - the means
+// are the balanced shares right and the guard adopts the candidate only where its share is higher
+// by more than the standard error of the per-object differences (PairedChange::clearlyBetter).
+PairedChange pairedCategoryChange(const CategoryEvaluation& current,
+                                  const CategoryEvaluation& candidate);
 
 // Markdown: the per-class table (stoves right, sinks right, distractors rejected), per group, the
 // confusion matrix and the list of objects decided wrongly.

@@ -1,6 +1,7 @@
 #include "core/annotate/category_update.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <map>
@@ -11,6 +12,7 @@
 #include "core/annotate/category_cross_validation.h"
 #include "core/annotate/category_training.h"
 #include "core/common/error.h"
+#include "core/common/report_cell.h"
 #include "core/labels/labels.h"
 
 namespace sagrid {
@@ -94,21 +96,31 @@ std::string classFigures(const std::optional<CategoryEvaluation>& before,
 }
 
 // The verdict on the candidate's evaluation `after` against the current classifier's `before`
-// (none: adopted): adopted when the share right averaged over the classes is higher; the reason
-// names both shares, each class's figures and `judgedOn` (where they were measured).
+// (none: adopted): adopted when the share right averaged over the classes is higher by more than
+// its noise (the two paired by object); the reason names both shares, the noise, each class's
+// figures and `judgedOn` (where they were measured).
 CategoryVerdict decide(const std::optional<CategoryEvaluation>& before,
                        const CategoryEvaluation& after, const std::string& judgedOn) {
   CategoryVerdict verdict;
   verdict.after = balancedShareRight(after);
-  if (before) verdict.before = balancedShareRight(*before);
-  verdict.adopted = !verdict.before || verdict.after > *verdict.before;
+  std::string decision = "adopted";
+  if (before) {
+    verdict.before = balancedShareRight(*before);
+    const PairedChange change = pairedCategoryChange(*before, after);
+    verdict.noise = change.noise;
+    verdict.adopted = change.clearlyBetter();
+    if (!verdict.adopted) decision = change.verdict() + ", current classifier kept";
+  } else {
+    verdict.adopted = true;
+  }
   char was[32] = "(none)";
   if (verdict.before) std::snprintf(was, sizeof was, "%.1f %%", 100 * *verdict.before);
   char figures[96];
   std::snprintf(figures, sizeof figures, "%s -> %.1f %%", was, 100 * verdict.after);
-  verdict.reason = std::string("category classifier: share right ") + figures + " (" +
-                   classFigures(before, after) + ") " + judgedOn + ": " +
-                   (verdict.adopted ? "adopted" : "refused, current classifier kept");
+  const std::string noise =
+      verdict.before ? " (noise " + reportCell(100 * verdict.noise, "%.1f %%") + ")" : "";
+  verdict.reason = std::string("category classifier: share right ") + figures + noise + " (" +
+                   classFigures(before, after) + ") " + judgedOn + ": " + decision;
   return verdict;
 }
 
@@ -226,6 +238,7 @@ void recordCategoryVerdict(const CategoryVerdict& verdict, const fs::path& model
       {"adopted", verdict.adopted}, {"candidate_share_right", verdict.after},
       {"reason", verdict.reason},   {"time", currentUtcTimestamp()}};
   if (verdict.before) line["current_share_right"] = *verdict.before;
+  if (std::isfinite(verdict.noise)) line["paired_noise"] = verdict.noise;
   if (verdict.sources) line["sources"] = verdict.sources;
   fs::create_directories(modelsDir);
   std::ofstream(modelsDir / "guard.jsonl", std::ios::app) << line.dump() << "\n";

@@ -1,9 +1,10 @@
 // Updating the category classifier from curated data, guarded: a candidate trained on dataset
 // folders replaces the current classifier only where its share right on curated objects it did
-// not train on (averaged over stoves, sinks and look-alikes) is higher; otherwise the current one
-// stays. Judged on held-out folders, or leaving one source of the curated objects out at a time.
-// `sagrid category train --guard|--guard-by-source` and the GUI's Train panel ("Retrain the
-// category classifier", after the curator confirmed or switched categories) both go through here.
+// not train on (averaged over stoves, sinks and look-alikes) is higher by more than the standard
+// error of the per-object differences (pairedCategoryChange); otherwise the current one stays.
+// Judged on held-out folders, or leaving one source of the curated objects out at a time. `sagrid
+// category train --guard|--guard-by-source` and the GUI's Train panel ("Retrain the category
+// classifier", after the curator confirmed or switched categories) both go through here.
 #pragma once
 
 #include <cstddef>
@@ -53,6 +54,9 @@ struct CategoryVerdict {
   bool adopted = false;
   std::optional<double> before;  // the current classifier's share right; none without one
   double after = 0;              // the candidate's
+  // The standard error of the difference of the two (paired by object); NaN without a current
+  // classifier or where a class has one object.
+  double noise = NAN;
   std::string reason;            // one line: both figures and the decision
   // Judged leaving one source out (judgeCategoryUpdateBySource): over how many sources; 0 when
   // judged on held-out folders.
@@ -60,7 +64,8 @@ struct CategoryVerdict {
 };
 
 // Judges `candidate` against the classifier in `currentFile` (none there: adopted) on the objects
-// of `heldOut`: adopted only when its share right, averaged over the classes, is higher.
+// of `heldOut`: adopted only when its share right, averaged over the classes, is higher by more
+// than its noise.
 CategoryVerdict judgeCategoryUpdate(const CategoryClassifier& candidate,
                                     const std::filesystem::path& currentFile,
                                     const std::vector<WeightedFolder>& heldOut,
@@ -106,8 +111,8 @@ using RecipeFoldProgress = std::function<void(const std::string& recipe, int fol
 // folder of that is here; otherwise as it is, on every curated object (should it have trained on
 // some, the comparison favours it: the guard errs towards keeping it), and the reason says so.
 // The candidate is adopted when its share right, averaged over stoves, sinks and look-alikes, is
-// higher. Throws InvalidArgument (saying the current classifier stays) for curated objects of
-// fewer than two classes, TooFewSources for fewer than two sources.
+// higher by more than its noise. Throws InvalidArgument (saying the current classifier stays) for
+// curated objects of fewer than two classes, TooFewSources for fewer than two sources.
 CategoryVerdict judgeCategoryUpdateBySource(const CategoryRecipe& candidate,
                                             const CategoryClassifier& current,
                                             const std::vector<std::filesystem::path>& curated,

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <sstream>
 
-#include "core/eval/report_cell.h"
+#include "core/common/report_cell.h"
 
 namespace sagrid {
 

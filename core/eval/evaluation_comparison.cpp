@@ -6,8 +6,8 @@
 #include <sstream>
 
 #include "core/common/error.h"
+#include "core/common/report_cell.h"
 #include "core/eval/count_breakdown.h"
-#include "core/eval/report_cell.h"
 
 namespace sagrid {
 namespace {

@@ -12,11 +12,11 @@
 #include "core/annotate/model_set.h"
 #include "core/common/atomic_file.h"
 #include "core/common/error.h"
+#include "core/common/report_cell.h"
 #include "core/dataset/dataset.h"
 #include "core/dataset/dataset_subset.h"
 #include "core/dataset/object_source.h"
 #include "core/eval/evaluation.h"
-#include "core/eval/report_cell.h"
 #include "core/eval/sample_stats.h"
 #include "core/labels/labels.h"
 #include "core/model/model_card.h"
@@ -342,11 +342,8 @@ LearningCurveReport runLearningCurve(const LearningCurveOptions& options) {
         if (options.guarded) {
           const GuardOptions guard{options.initDir, t.outDir, name, guardDir, objectsRoot,
                                    features.cacheDir, features};
-          const auto init = initOnGuard.find(name);
-          const GuardVerdict verdict =
-              judgeUpdate(guard, init == initOnGuard.end() ? std::nullopt
-                                                           : std::optional<HeldOutError>(init->second));
-          initOnGuard[name] = {verdict.currentError, verdict.objects, {}};
+          if (!initOnGuard.count(name)) initOnGuard[name] = heldOutError(options.initDir, guard);
+          const GuardVerdict verdict = judgeUpdate(guard, initOnGuard.at(name));
           applyVerdict(verdict, guard, modelsDir);
           fs::remove_all(t.outDir);
           adopted[key] = verdict.adopted;

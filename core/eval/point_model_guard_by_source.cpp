@@ -1,7 +1,6 @@
 #include "core/eval/point_model_guard_by_source.h"
 
 #include <cmath>
-#include <cstdio>
 #include <map>
 #include <set>
 #include <string>
@@ -11,8 +10,6 @@
 #include "core/dataset/dataset_subset.h"
 #include "core/dataset/object_source.h"
 #include "core/eval/learning_curve.h"
-#include "core/eval/report_cell.h"
-#include "core/eval/sample_stats.h"
 #include "core/labels/labels.h"
 #include "core/model/model_card.h"
 
@@ -59,7 +56,7 @@ std::optional<GuardVerdict> judgeUpdateBySource(const PointModelGuardBySource& g
   v.judgedBySource = true;
   v.folds = static_cast<int>(split.size());
   v.sources.assign(sources.begin(), sources.end());
-  std::vector<double> currentErrors, differences;  // per object judged, paired by id
+  std::vector<ObjectFigures> errors;  // per object judged, paired by id
   fs::remove_all(g.workDir);
   // The folds' subsets and candidates go when the guard ends, decided or interrupted.
   struct RemoveWhenDone {
@@ -120,37 +117,20 @@ std::optional<GuardVerdict> judgeUpdateBySource(const PointModelGuardBySource& g
     for (const GuardOptions& test : tests) {
       const HeldOutError current = heldOutError(g.currentDir, test);
       const HeldOutError candidate = heldOutError(fineTune.outDir, test);
-      for (const auto& [id, error] : candidate.byObject)
-        if (const auto it = current.byObject.find(id); it != current.byObject.end()) {
-          currentErrors.push_back(it->second);
-          differences.push_back(error - it->second);
-        }
+      for (const ObjectFigures& pair : pairById(current.byObject, candidate.byObject))
+        errors.push_back(pair);
     }
   }
-  v.objects = differences.size();
-  const std::string judgedBy = std::to_string(v.objects) + " curated object(s) of " +
+  const std::string judgedBy = std::to_string(errors.size()) + " curated object(s) of " +
                                std::to_string(sources.size()) + " sources, each of " +
                                std::to_string(v.folds) +
                                " folds of sources left out of the fine-tune in turn";
-  if (v.objects == 0) {
+  if (errors.empty()) {
     v.currentError = v.candidateError = v.pairedNoise = NAN;
     v.reason = "no curated object of its type could be evaluated: current model kept";
     return v;
   }
-  // A fine-tune's gain of a few millimetres over twenty objects comes and goes with the seed: the
-  // candidate is adopted only where it is better by more than the standard error of the paired
-  // per-object differences.
-  const SampleStats current = sampleStats(currentErrors), change = sampleStats(differences);
-  v.currentError = current.mean;
-  v.candidateError = current.mean + change.mean;
-  v.pairedNoise = v.objects > 1 ? change.sd / std::sqrt(double(v.objects)) : NAN;
-  v.adopted = std::isfinite(v.pairedNoise) && change.mean < -v.pairedNoise;
-  const std::string verdict = v.adopted ? "adopted"
-                              : change.mean < 0
-                                  ? "refused (better by less than its noise), current model kept"
-                                  : "refused, current model kept";
-  v.reason = reportCell(v.currentError * 100, "%.1f cm") + " -> " + reportCell(v.candidateError * 100, "%.1f cm") + " (noise " +
-             reportCell(v.pairedNoise * 100, "%.1f cm") + ") on " + judgedBy + ": " + verdict;
+  decideOnPairedErrors(v, errors, judgedBy);
   return v;
 }
 

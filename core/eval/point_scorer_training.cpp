@@ -12,9 +12,9 @@
 #include <sstream>
 
 #include "core/common/error.h"
+#include "core/common/report_cell.h"
 #include "core/eval/choice_grid.h"
 #include "core/eval/metrics.h"
-#include "core/eval/report_cell.h"
 #include "core/model/model_card.h"
 #include "core/points/point_count.h"
 
@@ -217,6 +217,16 @@ PointChoiceFigures figuresOf(const std::vector<const CandidateSet*>& sets, const
   f.effort = effort.result();
   f.singleError = f.singleErrors ? errorSum / static_cast<double>(f.singleErrors) : NAN;
   return f;
+}
+
+// Each object's edits (its sets summed), by source/object.
+std::map<std::string, double> editsByObject(const std::vector<const CandidateSet*>& sets,
+                                            const Chooser& choose) {
+  std::map<std::string, double> edits;
+  for (const CandidateSet* set : sets)
+    edits[set->source + "/" + set->object] +=
+        static_cast<double>(editsOf(*set, choose(*set)).total());
+  return edits;
 }
 
 // Figures pooled over several arms on objects (folds' objects, or draws on the same objects):
@@ -710,32 +720,41 @@ ScorerGuard guardPointScorer(const PointScorer* current, const PointScorer& fres
       return std::bitset<kMostGuardedModelsPerCategory>(a).count() <
              std::bitset<kMostGuardedModelsPerCategory>(b).count();
     });
-    // All current and all new are the models' own figures summed; the mixes between are judged.
-    std::size_t currentEdits = 0, newEdits = 0;
-    for (const auto& model : models) {
-      currentEdits += guard.byModel[verdictOf.at(model)].currentEdits;
-      newEdits += guard.byModel[verdictOf.at(model)].newEdits;
-    }
-    const std::size_t allNew = mixes.size() - 1;
+    // Each mix's edits per held-out object of the category; the mix with the fewest in all is
+    // adopted only where it beats the current decisions by more than the standard error of the
+    // per-object differences (core/common/paired_change.h), else the current ones stay.
+    const auto editsOfMix = [&](std::size_t mix) {
+      std::vector<std::string> taken;
+      for (std::size_t i = 0; i < models.size(); ++i)
+        if ((mix >> i) & 1) taken.push_back(models[i]);
+      return editsByObject(sets, scorerChooser(withDecisionsOf(was, fresh, taken), all));
+    };
+    const auto total = [](const std::map<std::string, double>& edits) {
+      double sum = 0;
+      for (const auto& [object, e] : edits) sum += e;
+      return static_cast<std::size_t>(std::lround(sum));
+    };
+    const std::map<std::string, double> current = editsOfMix(0);
+    const std::size_t currentEdits = total(current);
     std::size_t best = 0, bestEdits = currentEdits;
+    std::map<std::string, double> bestByObject = current;
+    const std::size_t allNew = mixes.size() - 1;
     for (std::size_t mix : mixes) {
       if (mix == 0) continue;
-      std::size_t edits = newEdits;
-      if (mix != allNew) {
-        std::vector<std::string> taken;
-        for (std::size_t i = 0; i < models.size(); ++i)
-          if ((mix >> i) & 1) taken.push_back(models[i]);
-        const PointScorer judged = withDecisionsOf(was, fresh, taken);
-        edits = figuresOf(sets, scorerChooser(judged, all)).edits.total();
-      }
-      if (edits < bestEdits) best = mix, bestEdits = edits;
+      std::map<std::string, double> edits = editsOfMix(mix);
+      if (mix == allNew) guard.categoryEdits[category] = pairById(current, edits);
+      if (total(edits) < bestEdits)
+        best = mix, bestEdits = total(edits), bestByObject = std::move(edits);
     }
+    const PairedChange change = pairedChange(pairById(current, bestByObject));
+    if (best != 0 && !change.clearlyBetter()) best = 0, bestEdits = currentEdits;
     for (std::size_t i = 0; i < models.size(); ++i) {
       ScorerVerdict& v = guard.byModel[verdictOf.at(models[i])];
       v.adopted = (best >> i) & 1;
       v.categoryCurrentEdits = currentEdits;
       v.categoryAdoptedEdits = bestEdits;
       v.categoryJudged = models.size();
+      v.categoryNoise = change.noise * static_cast<double>(change.objects);
     }
     guard.adoptedEdits += bestEdits;
     guard.adopted = guard.adopted || best != 0;
@@ -777,24 +796,31 @@ std::string toString(const ScorerVerdict& v) {
   std::string line = v.model + ": " + std::to_string(v.currentEdits) + " -> " +
                      std::to_string(v.newEdits) + " edits on " + std::to_string(v.handPoints) +
                      " held-out points: " + (v.adopted ? "adopted" : "the decision before stays");
+  const std::string noise = "noise " + reportCell(v.categoryNoise, "%.1f") + " edits";
   if (v.categoryJudged > 1)
-    line += " (" + categoryOfModel(v.model) + " judged as a whole: " +
-            std::to_string(v.categoryCurrentEdits) + " -> " +
-            std::to_string(v.categoryAdoptedEdits) + " edits with the decisions adopted)";
+    line += " (" + categoryOfModel(v.model) +
+            " judged as a whole: " + std::to_string(v.categoryCurrentEdits) + " -> " +
+            std::to_string(v.categoryAdoptedEdits) + " edits with the decisions adopted, " + noise +
+            ")";
+  else
+    line += " (" + noise + ")";
   return line;
 }
 
 nlohmann::json toJson(const ScorerGuard& guard) {
   nlohmann::json models = nlohmann::json::array();
   for (const auto& v : guard.byModel)
-    models.push_back({{"model", v.model},
-                      {"current_edits", v.currentEdits},
-                      {"new_edits", v.newEdits},
-                      {"hand_points", v.handPoints},
-                      {"category_current_edits", v.categoryCurrentEdits},
-                      {"category_adopted_edits", v.categoryAdoptedEdits},
-                      {"category_judged", v.categoryJudged},
-                      {"adopted", v.adopted}});
+    models.push_back(
+        {{"model", v.model},
+         {"current_edits", v.currentEdits},
+         {"new_edits", v.newEdits},
+         {"hand_points", v.handPoints},
+         {"category_current_edits", v.categoryCurrentEdits},
+         {"category_adopted_edits", v.categoryAdoptedEdits},
+         {"category_judged", v.categoryJudged},
+         {"category_noise_edits",
+          std::isfinite(v.categoryNoise) ? nlohmann::json(v.categoryNoise) : nlohmann::json()},
+         {"adopted", v.adopted}});
   return {{"current_edits", guard.currentEdits},   {"new_edits", guard.newEdits},
           {"adopted_edits", guard.adoptedEdits},   {"adopted", guard.adopted},
           {"adopted_whole", guard.adoptedWhole()}, {"models", models}};

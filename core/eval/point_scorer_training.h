@@ -9,14 +9,15 @@
 #pragma once
 
 #include <cmath>
+#include <map>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 #include <vector>
 
-#include <nlohmann/json.hpp>
-
 #include "core/annotate/object_confidence.h"
 #include "core/annotate/point_scorer.h"
+#include "core/common/paired_change.h"
 #include "core/eval/candidate_sets.h"
 #include "core/eval/curator_effort.h"
 
@@ -178,8 +179,10 @@ ScorerCrossValidation crossValidatePointScorer(const std::vector<CandidateSet>& 
 // count's). A category's decisions read each other (each model's count reads the category's other
 // models: a knob per burner), so they are judged together: every mix of the category's current
 // and new decisions is judged on the category's held-out objects as a whole, and the mix with the
-// fewest edits is adopted (on ties the one with fewer new decisions, the current ones first): what
-// is adopted is what was judged. A model without held-out objects keeps its current decision
+// fewest edits is adopted (on ties the one with fewer new decisions, the current ones first)
+// where it saves more edits than the noise of the per-object differences from the current
+// decisions (core/common/paired_change.h; else the current ones stay): what is adopted is what
+// was judged. A model without held-out objects keeps its current decision
 // (nothing judged it). The passes the decisions switch off are the same for both (the guard
 // checks), so decisions of two scorers can stand side by side in one file (adoptedScorer).
 struct ScorerVerdict {
@@ -190,6 +193,9 @@ struct ScorerVerdict {
   // Its category's held-out edits with the current decisions and with the mix adopted, and how
   // many of the category's models were judged.
   std::size_t categoryCurrentEdits = 0, categoryAdoptedEdits = 0, categoryJudged = 0;
+  // The standard error of the category's change in edits (summed over its objects): its best mix
+  // is adopted only where it saves more edits than that (NaN for fewer than two objects).
+  double categoryNoise = NAN;
 };
 struct ScorerGuard {
   std::vector<ScorerVerdict> byModel;  // the held-out objects' models, then the new scorer's others
@@ -197,6 +203,9 @@ struct ScorerGuard {
   std::size_t adoptedEdits = 0;  // with the decisions adopted (each category's mix, judged)
   bool adopted = false;          // for at least one model
   bool adoptedWhole() const;     // for every model judged, and the new scorer has no other
+  // Per category, each held-out object's edits with the current decisions and with all the new
+  // ones (the guard by source pairs them over its folds).
+  std::map<std::string, std::vector<ObjectFigures>> categoryEdits;
 };
 // `current` may be null (no scorer yet). Throws InvalidArgument when `heldOut` has no candidate
 // set, when a held-out object is also in `training` (same source and id), or when the held-out

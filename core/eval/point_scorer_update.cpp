@@ -1,6 +1,7 @@
 #include "core/eval/point_scorer_update.h"
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <set>
 
@@ -62,6 +63,7 @@ std::optional<ScorerGuard> guardPointScorerBySource(
     if (!set->generated) sources.insert(set->source);
   if (sources.size() < 2) return std::nullopt;
   std::map<std::string, ScorerVerdict> byModel;  // each model's edits summed over the folds
+  std::map<std::string, std::vector<ObjectFigures>> categoryEdits;  // each held-out object's
   int k = 0;
   for (const std::string& source : sources) {
     if (onFold) onFold(k++, static_cast<int>(sources.size()));
@@ -76,6 +78,8 @@ std::optional<ScorerGuard> guardPointScorerBySource(
     const ScorerGuard fold = guardPointScorer(current, trainPointScorer(rest, options), held, rest);
     std::set<std::string> judged;
     for (const auto& set : held) judged.insert(set.model);
+    for (const auto& [category, pairs] : fold.categoryEdits)
+      categoryEdits[category].insert(categoryEdits[category].end(), pairs.begin(), pairs.end());
     for (const ScorerVerdict& v : fold.byModel) {
       if (!judged.count(v.model)) continue;
       ScorerVerdict& sum = byModel[v.model];
@@ -85,29 +89,29 @@ std::optional<ScorerGuard> guardPointScorerBySource(
       sum.handPoints += v.handPoints;
     }
   }
-  struct CategoryEdits {
-    std::size_t current = 0, fresh = 0, models = 0;
-  };
-  std::map<std::string, CategoryEdits> byCategory;
-  for (const auto& [model, v] : byModel) {
-    CategoryEdits& edits = byCategory[categoryOfModel(model)];
-    edits.current += v.currentEdits;
-    edits.fresh += v.newEdits;
-    ++edits.models;
-  }
+  std::map<std::string, PairedChange> byCategory;  // each object's edits, paired over the folds
+  for (const auto& [category, pairs] : categoryEdits) byCategory[category] = pairedChange(pairs);
+  std::map<std::string, std::size_t> judgedModels;
+  for (const auto& [model, v] : byModel) ++judgedModels[categoryOfModel(model)];
   ScorerGuard guard;
   for (auto& [model, v] : byModel) {
-    const CategoryEdits& category = byCategory.at(categoryOfModel(model));
-    v.adopted = category.fresh < category.current;
-    v.categoryCurrentEdits = category.current;
-    v.categoryAdoptedEdits = std::min(category.current, category.fresh);
-    v.categoryJudged = category.models;
+    const std::string category = categoryOfModel(model);
+    const PairedChange& change = byCategory[category];
+    const auto edits = [&](double mean) {
+      return static_cast<std::size_t>(std::lround(mean * static_cast<double>(change.objects)));
+    };
+    v.adopted = change.clearlyBetter();
+    v.categoryCurrentEdits = edits(change.current);
+    v.categoryAdoptedEdits = v.adopted ? edits(change.candidate) : v.categoryCurrentEdits;
+    v.categoryJudged = judgedModels[category];
+    v.categoryNoise = change.noise * static_cast<double>(change.objects);
     guard.currentEdits += v.currentEdits;
     guard.newEdits += v.newEdits;
     guard.adoptedEdits += v.adopted ? v.newEdits : v.currentEdits;
     guard.adopted = guard.adopted || v.adopted;
     guard.byModel.push_back(v);
   }
+  guard.categoryEdits = std::move(categoryEdits);
   return guard;
 }
 

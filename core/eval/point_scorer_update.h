@@ -54,7 +54,8 @@ struct ScorerUpdate {
 // have been fitted on some of these objects, the comparison favours it), each fold judged as
 // guardPointScorer judges a held-out folder and each model's edits summed over the folds. Every
 // fold has its own new decision, so no one mix of a category's decisions is judged: a category's
-// new decisions are adopted together where its summed edits are fewer, else none of them.
+// new decisions are adopted together where its objects' edits, paired over the folds, are fewer
+// by more than the standard error of their differences (core/common/paired_change.h), else none.
 // nullopt for curated sets of fewer than two sources (none can be left out while another
 // teaches). `onFold(k, folds)` before each fold's fitting.
 std::optional<ScorerGuard> guardPointScorerBySource(

@@ -6,7 +6,7 @@
 #include <sstream>
 
 #include "core/common/error.h"
-#include "core/eval/report_cell.h"
+#include "core/common/report_cell.h"
 #include "core/plot/plot.h"
 
 namespace sagrid {

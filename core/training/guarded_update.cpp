@@ -8,10 +8,10 @@
 #include "core/annotate/model_set.h"
 #include "core/common/atomic_file.h"
 #include "core/common/error.h"
-#include "core/eval/evaluation.h"
-#include "core/eval/report_cell.h"
-#include "core/labels/labels.h"
+#include "core/common/report_cell.h"
 #include "core/dataset/dataset.h"
+#include "core/eval/evaluation.h"
+#include "core/labels/labels.h"
 #include "core/model/model_card.h"
 #include "core/model/model_files.h"
 #include "core/training/curated_data_check.h"
@@ -85,18 +85,33 @@ GuardVerdict judgeUpdate(const GuardOptions& o, const std::optional<HeldOutError
   const HeldOutError candidate = heldOutError(o.candidateDir, o);
   GuardVerdict v;
   v.model = o.modelName;
-  v.objects = candidate.objects;
   v.currentError = current.error;
   v.candidateError = candidate.error;
   if (candidate.objects == 0) {
     v.reason = "no held-out object of its type in " + o.heldOutDir.string() + ": current model kept";
     return v;
   }
-  v.adopted = candidate.error < current.error;
-  v.reason = reportCell(current.error * 100, "%.1f cm") + " -> " + reportCell(candidate.error * 100, "%.1f cm") + " on " +
-             std::to_string(candidate.objects) + " held-out object(s): " +
-             (v.adopted ? "adopted" : "refused, current model kept");
+  decideOnPairedErrors(v, pairById(current.byObject, candidate.byObject),
+                       std::to_string(candidate.objects) + " held-out object(s)");
   return v;
+}
+
+void decideOnPairedErrors(GuardVerdict& v, const std::vector<ObjectFigures>& errors,
+                          const std::string& where) {
+  const PairedChange change = pairedChange(errors);
+  v.objects = change.objects;
+  v.currentError = change.current;
+  v.candidateError = change.candidate;
+  v.pairedNoise = change.noise;
+  v.adopted = change.clearlyBetter();
+  if (errors.empty()) {
+    v.reason = "no object judged by both models on " + where + ": current model kept";
+    return;
+  }
+  v.reason = reportCell(v.currentError * 100, "%.1f cm") + " -> " +
+             reportCell(v.candidateError * 100, "%.1f cm") + " (noise " +
+             reportCell(v.pairedNoise * 100, "%.1f cm") + ") on " + where + ": " +
+             (v.adopted ? "adopted" : change.verdict() + ", current model kept");
 }
 
 void applyVerdict(const GuardVerdict& v, const GuardOptions& o, const fs::path& outDir) {
@@ -115,10 +130,10 @@ void applyVerdict(const GuardVerdict& v, const GuardOptions& o, const fs::path& 
     line["judged_by_source"] = true;
     line["sources"] = v.sources;
     line["folds"] = v.folds;
-    line["paired_noise_m"] = number(v.pairedNoise);
   } else {
     line["held_out"] = fs::absolute(o.heldOutDir).lexically_normal().string();
   }
+  line["paired_noise_m"] = number(v.pairedNoise);
   line["current_error_m"] = number(v.currentError);
   line["candidate_error_m"] = number(v.candidateError);
   line["adopted"] = v.adopted;

@@ -1,8 +1,10 @@
 // Guarded updates (issue 40, DESIGN.md "Updates are guarded"): a model trained or fine-tuned on
 // curated objects replaces the current one only where curated objects it did not train on say it
 // is better. Both are evaluated with the paper's single-point metric (core/eval) on the held-out
-// objects of the model's category and type; the candidate is adopted when its error is lower,
-// else the current model stays and the candidate is kept aside, with the figures that refused it.
+// objects of the model's category and type, paired by object; the candidate is adopted when its
+// mean error is lower by more than the standard error of the per-object differences
+// (core/common/paired_change.h), else the current model stays and the candidate is kept aside,
+// with the figures that refused it.
 #pragma once
 
 #include <filesystem>
@@ -11,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "core/common/paired_change.h"
 #include "core/features/feature_pipeline.h"
 
 namespace sagrid {
@@ -33,10 +36,16 @@ struct GuardVerdict {
   bool judgedBySource = false;
   std::vector<std::string> sources;
   int folds = 0;
-  // Judged by source: the standard error of the per-object differences candidate - current
-  // (metres); the candidate is adopted only where it is better by more than that.
+  // The standard error of the per-object differences candidate - current (metres; NaN for fewer
+  // than two objects); the candidate is adopted only where it is better by more than that.
   double pairedNoise = 0;
 };
+
+// Decides `verdict` from the judged objects' errors (metres) under both models: its objects,
+// figures, noise and adoption, and the reason "a cm -> b cm (noise c cm) on WHERE: adopted" (or
+// refused, and why).
+void decideOnPairedErrors(GuardVerdict& verdict, const std::vector<ObjectFigures>& errors,
+                          const std::string& where);
 
 struct GuardOptions {
   std::filesystem::path currentDir;    // the models folder the update would replace
@@ -61,7 +70,8 @@ void checkGuardedUpdate(const GuardOptions& options,
 HeldOutError heldOutError(const std::filesystem::path& modelsDir, const GuardOptions& options);
 
 // Evaluates both (the current model only when `current` is not given: a caller judging several
-// candidates against one current model on one held-out folder evaluates it once).
+// candidates against one current model on one held-out folder evaluates it once; its byObject
+// pairs the objects, so a figure without them judges nothing and the current model stays).
 GuardVerdict judgeUpdate(const GuardOptions& options,
                          const std::optional<HeldOutError>& current = std::nullopt);
 

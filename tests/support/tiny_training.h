@@ -18,4 +18,8 @@ FeatureOptions tinyFeatures();
 DatasetTrainingOptions tinyTraining(const std::string& modelName, const std::filesystem::path& data,
                                     const std::filesystem::path& out, int epochs = 1);
 
+// Every heat source of `dir`'s objects moved onto the object's first knob: a labelling convention
+// a model trained on it learns and others do not.
+void heatSourcesOnTheKnob(const std::filesystem::path& dir);
+
 }  // namespace sagrid::test

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <fstream>
 #include <functional>
 #include <random>
@@ -362,6 +363,41 @@ TEST(CategoryEvaluation, ListsTheObjectsDecidedWrongly) {
   EXPECT_NE(table.find("| oven | real | none | stove | stove (0.70) |"), std::string::npos)
       << table;
   EXPECT_EQ(table.find("gas_stove"), std::string::npos) << table;
+}
+
+// The category guard's rule: two thresholds decide the same objects; each class counts alike and
+// the candidate wins only beyond the standard error of the per-object differences.
+TEST(CategoryEvaluation, PairsTwoClassifiersObjectByObject) {
+  const auto threshold = [](float t) {
+    return [t](const CategorySample& s) {
+      CategoryDecision r;
+      r.best = "stove";
+      r.score = s.descriptor[0];
+      r.rejected = s.descriptor[0] <= t;
+      r.category = r.rejected ? std::string(kRejectedCategory) : r.best;
+      return r;
+    };
+  };
+  std::vector<CategorySample> samples;
+  for (float d : {0.9f, 0.8f, 0.45f, 0.4f, 0.35f})
+    samples.push_back(test::categorySample("stove" + std::to_string(d), "stove", "real", {d}));
+  for (float d : {0.1f, 0.2f, 0.3f})
+    samples.push_back(test::categorySample("oven" + std::to_string(d), "none", "real", {d}));
+  const auto current = evaluateCategories(threshold(0.5f), samples);  // stoves 2/5, ovens 3/3
+  const auto all = evaluateCategories(threshold(0.33f), samples);     // stoves 5/5
+  const auto one = evaluateCategories(threshold(0.42f), samples);     // stoves 3/5
+  const PairedChange fixesThree = pairedCategoryChange(current, all);
+  EXPECT_EQ(fixesThree.objects, 8u);
+  EXPECT_NEAR(1 - fixesThree.current, balancedShareRight(current), 1e-12);  // 0.7
+  EXPECT_NEAR(1 - fixesThree.candidate, balancedShareRight(all), 1e-12);    // 1.0
+  // Stoves' differences -1, -1, -1, 0, 0 (variance 0.3), ovens' none; halved as two classes.
+  EXPECT_NEAR(fixesThree.noise, std::sqrt(0.3 / 5) / 2, 1e-12);
+  EXPECT_TRUE(fixesThree.clearlyBetter());
+  // One stove of five fixed is as likely noise.
+  const PairedChange fixesOne = pairedCategoryChange(current, one);
+  EXPECT_NEAR(fixesOne.change(), -0.1, 1e-12);
+  EXPECT_FALSE(fixesOne.clearlyBetter());
+  EXPECT_FALSE(pairedCategoryChange(all, current).clearlyBetter());
 }
 
 TEST(CategoryClassifier, AnnotateWritesNoneAndNoPointsForARejectedObject) {

@@ -23,17 +23,6 @@ namespace {
 namespace fs = std::filesystem;
 constexpr const char* kModel = "stove.heatsource";
 
-// Every heat source of `dir`'s objects moved onto the object's first knob.
-void heatSourcesOnTheKnob(const fs::path& dir) {
-  for (const auto& entry : readDataset(dir)) {
-    ObjectLabels labels = readLabels(entry.labels);
-    const Eigen::Vector3f knob = labels.ofType("togglebutton").front()->position;
-    for (auto& point : labels.affordances)
-      if (point.type == "heatsource") point.position = knob;
-    writeLabels(entry.labels, labels);
-  }
-}
-
 struct Bench {
   fs::path dir, current;
   PointModelGuardBySource guard;
@@ -106,7 +95,7 @@ TEST(PointModelGuardBySource, AdoptsAFineTuneThatCarriesToTheLeftOutSource) {
 // knob: what that source teaches does not carry to the other.
 TEST(PointModelGuardBySource, RefusesAFineTuneThatDoesNotCarry) {
   Bench b = makeBench(40, true);
-  heatSourcesOnTheKnob(b.dir / "repo-b");
+  test::heatSourcesOnTheKnob(b.dir / "repo-b");
   const auto verdict = judgeUpdateBySource(b.guard);
   ASSERT_TRUE(verdict);
   EXPECT_FALSE(verdict->adopted) << verdict->reason;

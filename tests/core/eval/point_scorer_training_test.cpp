@@ -565,6 +565,15 @@ TEST(PointScorerTraining, TheGuardAdoptsABetterScorerAndRefusesAWorseOne) {
   // Without a current scorer, against the points the candidates were made with (12 edits).
   EXPECT_TRUE(guardPointScorer(nullptr, good, heldOut, training).adopted);
   EXPECT_FALSE(guardPointScorer(nullptr, poor, heldOut, training).adopted);
+  // One held-out object cannot tell a gain from its noise: the current decision stays.
+  const ScorerGuard lone = guardPointScorer(&poor, good, {heldOut.front()}, training);
+  EXPECT_EQ(lone.currentEdits, 2u);
+  EXPECT_EQ(lone.newEdits, 0u);
+  EXPECT_FALSE(lone.adopted);
+  EXPECT_TRUE(std::isnan(lone.byModel[0].categoryNoise));
+  EXPECT_NE(toString(lone.byModel[0]).find("the decision before stays (noise – edits)"),
+            std::string::npos)
+      << toString(lone.byModel[0]);
   // A held-out object that is also training data, or candidates of other passes: refused.
   std::vector<CandidateSet> leaked = heldOut;
   leaked.push_back(*training.front());
@@ -665,7 +674,7 @@ TEST(PointScorerTraining, TheGuardAdoptsEachCategorysDecisionsOnItsOwnHeldOutObj
   EXPECT_EQ(guard.currentEdits, 12u);
   EXPECT_EQ(guard.newEdits, 12u);     // as many as before summed: a whole-scorer guard refused it
   EXPECT_EQ(toString(guard.byModel[1]),
-            "stove.togglebutton: 12 -> 0 edits on 18 held-out points: adopted");
+            "stove.togglebutton: 12 -> 0 edits on 18 held-out points: adopted (noise 0.0 edits)");
 
   const PointScorer adopted = adoptedScorer(&current, fresh, guard);
   ASSERT_NE(adopted.forModel("stove.togglebutton"), nullptr);
@@ -707,7 +716,7 @@ TEST(PointScorerTraining, TheGuardJudgesEveryMixOfACategorysDecisions) {
   EXPECT_EQ(guard.adoptedEdits, 0u);
   EXPECT_EQ(toString(guard.byModel[1]),
             "stove.togglebutton: 12 -> 0 edits on 18 held-out points: adopted (stove judged as a "
-            "whole: 12 -> 0 edits with the decisions adopted)");
+            "whole: 12 -> 0 edits with the decisions adopted, noise 0.0 edits)");
   EXPECT_EQ(toJson(guard).at("models")[1].at("category_judged"), 2);
   const PointScorer adopted = adoptedScorer(&current, mixed, guard);
   EXPECT_TRUE(sameDecision(adopted.forModel("stove.togglebutton"), good));
