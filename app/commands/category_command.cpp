@@ -239,7 +239,8 @@ void setupCategory(CLI::App& root) {
   train->add_option("--guard", o->guard,
                     "Held-out dataset folders (curated objects of other sources than --data; "
                     "repeat): the new classifier replaces OUT's only if its share right there, "
-                    "averaged over stoves, sinks and look-alikes, is higher; else it goes to "
+                    "averaged over stoves, sinks and look-alikes, is higher by more than the "
+                    "standard error of the per-object differences; else it goes to "
                     "OUT/refused/ (OUT/guard.jsonl: the figures)");
   train
       ->add_option("--guard-by-source", o->guardBySource,
@@ -248,7 +249,8 @@ void setupCategory(CLI::App& root) {
                    "folder of that is not here, the current classifier as it is) are each "
                    "cross-validated leaving one source of these objects out at a time; the new "
                    "one replaces OUT's only if its share right, averaged over stoves, sinks and "
-                   "look-alikes, is higher; else it goes to OUT/refused/ (OUT/guard.jsonl: the "
+                   "look-alikes, is higher by more than the standard error of the per-object "
+                   "differences; else it goes to OUT/refused/ (OUT/guard.jsonl: the "
                    "figures)")
       ->excludes(train->get_option("--guard"))
       ->excludes(train->get_option("--exclude-split"));

@@ -252,8 +252,9 @@ void setupScorer(CLI::App& root) {
                     "training's; repeatable): per category, every mix of --models' decisions "
                     "(without one: the points the held-out candidates were made with) and the new "
                     "ones is judged on the category's held-out objects as a whole (its counts read "
-                    "each other) and the mix with the fewest edits adopted, the current decisions "
-                    "on a tie; refused anywhere, the new scorer also goes to OUT/refused/; "
+                    "each other) and the mix with the fewest edits adopted where it saves more "
+                    "than the standard error of the per-object differences, else the current "
+                    "decisions stay; refused anywhere, the new scorer also goes to OUT/refused/; "
                     "figures per model and category in OUT/scorer_guard.json");
   train->add_option("--without-feature", l->withoutFeatures,
                     "A candidate feature the decision is fitted without (repeatable; "

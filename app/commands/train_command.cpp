@@ -260,7 +260,8 @@ void setupTrain(CLI::App& root) {
       "--guard", o->guard,
       "With --init: curated objects of other sources than --data (e.g. another "
       "repository's); the fine-tuned model replaces the --init one in --out only if "
-      "its single-point error there is lower, else the current model is kept and the "
+      "its single-point error there is lower by more than the standard error of the "
+      "per-object differences, else the current model is kept and the "
       "candidate goes to OUT/refused/ (OUT/guard.jsonl: the figures)");
   auto* bySourceFlag =
       cmd->add_flag(

@@ -417,7 +417,8 @@ std::string learningCurveMarkdown(const LearningCurveReport& r) {
     for (const auto& p : r.points)
       if (p.kUsed > 0) ++tunes, kept += p.adopted ? 1 : 0;
     md << "\nGuarded: each fine-tune was kept only where its error on a guard set (a quarter of the "
-          "training folds' sources, none of them fine-tuned on) was lower than the init model's; "
+          "training folds' sources, none of them fine-tuned on) was lower than the init model's by "
+          "more than the standard error of the per-object differences; "
        << kept << " of " << tunes << " (model, fold, k) results come from a kept fine-tune, the "
        << "others are the init model's.\n";
   }

@@ -29,7 +29,8 @@ void drawTrainPanel(Session& session, TrainingWorker& worker,
       ImGui::InputText("held out", heldOut, sizeof heldOut);
       if (ImGui::IsItemHovered())
         ImGui::SetTooltip("A dataset of curated objects from other sources than the training set: "
-                          "each fine-tuned model is adopted only where it is better there");
+                          "each fine-tuned model is adopted only where it is better there beyond "
+                          "the noise of its objects");
       if (heldOut[0] == '\0')
         ImGui::TextDisabled("Guard: the training set's sources left out in turn (about 4x the "
                             "minutes)");
@@ -84,16 +85,15 @@ void drawTrainPanel(Session& session, TrainingWorker& worker,
     retrainButton("Retrain category classifier", &TrainingRequest::categoryClassifier,
                   "Stove / sink / none, learned again from the training set's curated categories "
                   "and the classifier's own training data; kept only where it decides more "
-                  "right: of the held-out folder when given, else of the training set, each "
+                  "right, beyond the noise of the objects: of the held-out folder when given, else of the training set, each "
                   "source left out of training in turn");
     // The points the curator accepted, moved, added or deleted teach the point decision too.
     retrainButton("Retrain point decision", &TrainingRequest::pointScorer,
                   "Which of the fields' minima and the mesh's small parts are points, learned "
                   "again from the training set's curated points and generated objects (the "
-                  "bench's val split, made once); with a held-out folder, each model's is kept "
-                  "only where it needs fewer edits on that model's held-out objects, else each "
-                  "category's only where it needs fewer edits on the training set, each source "
-                  "left out of the fitting in turn");
+                  "bench's val split, made once); each category's kept only where it needs "
+                  "fewer edits, beyond the noise of the objects, on its held-out objects, else "
+                  "on the training set, each source left out of the fitting in turn");
     // The units the curator set or confirmed teach the units guess's memory of real sizes.
     retrainButton("Grow units memory", &TrainingRequest::unitsMemory,
                   "The real sizes of the training set's objects (their curated units) join the "
