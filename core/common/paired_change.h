@@ -29,7 +29,7 @@ struct PairedChange {
   // Beyond the noise by a relative hair, so that a tie in rounding (one object of n fixed and none
   // broken changes the mean by exactly its standard error, 1/n) is refused on every machine.
   bool clearlyBetter() const {
-    return std::isfinite(noise) && change() < -noise * (1 + 1e-9) && change() < 0;
+    return std::isfinite(noise) && change() < -noise * (1 + 1e-9);
   }
   // "adopted", "refused (better by less than its noise)" or "refused".
   std::string verdict() const;

@@ -737,12 +737,15 @@ ScorerGuard guardPointScorer(const PointScorer* current, const PointScorer& fres
     const std::map<std::string, double> current = editsOfMix(0);
     const std::size_t currentEdits = total(current);
     std::size_t best = 0, bestEdits = currentEdits;
-    std::map<std::string, double> bestByObject = current;
+    std::map<std::string, double> bestByObject;
     const std::size_t allNew = mixes.size() - 1;
     for (std::size_t mix : mixes) {
       if (mix == 0) continue;
       std::map<std::string, double> edits = editsOfMix(mix);
-      if (mix == allNew) guard.categoryEdits[category] = pairById(current, edits);
+      if (mix == allNew) {
+        guard.categoryEdits[category] = pairById(current, edits);
+        if (best == 0) bestByObject = edits;  // judged against, where no mix has fewer edits
+      }
       if (total(edits) < bestEdits)
         best = mix, bestEdits = total(edits), bestByObject = std::move(edits);
     }
