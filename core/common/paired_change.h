@@ -28,9 +28,7 @@ struct PairedChange {
   double change() const { return candidate - current; }
   // Beyond the noise by a relative hair, so that a tie in rounding (one object of n fixed and none
   // broken changes the mean by exactly its standard error, 1/n) is refused on every machine.
-  bool clearlyBetter() const {
-    return std::isfinite(noise) && change() < -noise * (1 + 1e-9);
-  }
+  bool clearlyBetter() const { return std::isfinite(noise) && change() < -noise * (1 + 1e-9); }
   // "adopted", "refused (better by less than its noise)" or "refused".
   std::string verdict() const;
 };
