@@ -416,9 +416,9 @@ std::string learningCurveMarkdown(const LearningCurveReport& r) {
     std::size_t tunes = 0, kept = 0;
     for (const auto& p : r.points)
       if (p.kUsed > 0) ++tunes, kept += p.adopted ? 1 : 0;
-    md << "\nGuarded: each fine-tune was kept only where its error on a guard set (a quarter of the "
-          "training folds' sources, none of them fine-tuned on) was lower than the init model's by "
-          "more than the standard error of the per-object differences; "
+    md << "\nGuarded: each fine-tune was kept only where its error on a guard set (a quarter of "
+          "the training folds' sources, none of them fine-tuned on) was lower than the init "
+          "model's by more than the standard error of the per-object differences; "
        << kept << " of " << tunes << " (model, fold, k) results come from a kept fine-tune, the "
        << "others are the init model's.\n";
   }
@@ -435,8 +435,8 @@ std::string learningCurveMarkdown(const LearningCurveReport& r) {
     const Overall o = overallAt(r, k);
     char ratio[32] = "–";
     if (std::isfinite(o.ratio)) std::snprintf(ratio, sizeof ratio, "%.2f", o.ratio);
-    md << "| " << kLabel(k) << " | " << o.models << " | " << reportCell(o.mean * 100, "%.1f") << " | " << ratio
-       << " |\n";
+    md << "| " << kLabel(k) << " | " << o.models << " | " << reportCell(o.mean * 100, "%.1f")
+       << " | " << ratio << " |\n";
   }
   for (const auto& model : r.modelNames) {
     md << "\n## " << model << "\n\n| k | k used (mean) | folds | error (cm) | sd (cm) |\n"
@@ -445,8 +445,8 @@ std::string learningCurveMarkdown(const LearningCurveReport& r) {
       const Stats s = statsOf(r, model, k);
       char used[32];
       std::snprintf(used, sizeof used, "%.1f", s.kUsed);
-      md << "| " << kLabel(k) << " | " << used << " | " << s.folds << " | " << reportCell(s.mean * 100, "%.1f")
-         << " | " << reportCell(s.sd * 100, "%.1f") << " |\n";
+      md << "| " << kLabel(k) << " | " << used << " | " << s.folds << " | "
+         << reportCell(s.mean * 100, "%.1f") << " | " << reportCell(s.sd * 100, "%.1f") << " |\n";
     }
   }
   return md.str();

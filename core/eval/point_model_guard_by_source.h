@@ -31,9 +31,9 @@ struct PointModelGuardBySource {
 };
 
 // The verdict (GuardVerdict::judgedBySource; currentError and candidateError the means over every
-// object judged, pairedNoise the standard error of their per-object differences), or nullopt when the curated objects of the model's type come from fewer
-// than two sources: none can be left out while another teaches. Throws what training and
-// evaluation throw; InvalidArgument for folds < 2.
+// object judged, pairedNoise the standard error of their per-object differences), or nullopt when
+// the curated objects of the model's type come from fewer than two sources: none can be left out
+// while another teaches. Throws what training and evaluation throw; InvalidArgument for folds < 2.
 std::optional<GuardVerdict> judgeUpdateBySource(const PointModelGuardBySource& guard);
 
 }  // namespace sagrid

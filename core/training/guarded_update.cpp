@@ -115,7 +115,9 @@ void decideOnPairedErrors(GuardVerdict& v, const std::vector<ObjectFigures>& err
 }
 
 void applyVerdict(const GuardVerdict& v, const GuardOptions& o, const fs::path& outDir) {
-  const auto number = [](double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(); };
+  const auto number = [](double x) {
+    return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json();
+  };
   fs::create_directories(outDir);
   if (v.adopted) {
     model::moveModelFiles(o.candidateDir, outDir, o.modelName);

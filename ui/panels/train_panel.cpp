@@ -28,12 +28,14 @@ void drawTrainPanel(Session& session, TrainingWorker& worker,
       ImGui::SetNextItemWidth(-110);
       ImGui::InputText("held out", heldOut, sizeof heldOut);
       if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("A dataset of curated objects from other sources than the training set: "
-                          "each fine-tuned model is adopted only where it is better there beyond "
-                          "the noise of its objects");
+        ImGui::SetTooltip(
+            "A dataset of curated objects from other sources than the training set: "
+            "each fine-tuned model is adopted only where it is better there beyond "
+            "the noise of its objects");
       if (heldOut[0] == '\0')
-        ImGui::TextDisabled("Guard: the training set's sources left out in turn (about 4x the "
-                            "minutes)");
+        ImGui::TextDisabled(
+            "Guard: the training set's sources left out in turn (about 4x the "
+            "minutes)");
       if (heldOut[0] == '\0' && ImGui::IsItemHovered())
         ImGui::SetTooltip(
             "Without a held-out folder each model's fine-tune is repeated with each "
@@ -85,7 +87,8 @@ void drawTrainPanel(Session& session, TrainingWorker& worker,
     retrainButton("Retrain category classifier", &TrainingRequest::categoryClassifier,
                   "Stove / sink / none, learned again from the training set's curated categories "
                   "and the classifier's own training data; kept only where it decides more "
-                  "right, beyond the noise of the objects: of the held-out folder when given, else of the training set, each "
+                  "right, beyond the noise of the objects: of the held-out folder when given, else "
+                  "of the training set, each "
                   "source left out of training in turn");
     // The points the curator accepted, moved, added or deleted teach the point decision too.
     retrainButton("Retrain point decision", &TrainingRequest::pointScorer,
