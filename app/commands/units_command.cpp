@@ -63,11 +63,12 @@ void setupUnits(CLI::App& root) {
   cmd->require_subcommand(1);
   auto o = std::make_shared<MemoryOptions>();
   auto* memory = cmd->add_subcommand(
-      "memory", "Remember the real sizes of the curated objects of --data (their labels' units) "
-                "for the units guess; evaluate it leaving each source out, choose so what it "
-                "recalls (--measures, --neighbours) and its far factor (--factors), and write "
-                "units_memory.json into --out only where it guesses more units right than the "
-                "named units alone");
+      "memory",
+      "Remember the real sizes of the curated objects of --data (their labels' units) "
+      "for the units guess; evaluate it leaving each source out, choose so what it "
+      "recalls (--measures, --neighbours) and its far factor (--factors), and write "
+      "units_memory.json into --out only where it guesses units right more often than "
+      "the named units alone, object by object, beyond the noise of that pairing");
   memory->add_option("--data", o->data, "Curated dataset folder (repeatable)");
   memory->add_option("--into", o->into,
                      "Grow the memory of this models folder: its objects join --data's (an object "

@@ -104,11 +104,13 @@ UnitsLosoReport evaluateSizeMemory(const std::vector<UnitsCase>& cases,
   // right[k][i]: case i's guess with candidate k, its own source left out of the memory.
   std::vector<std::vector<bool>> right(n, std::vector<bool>(cases.size()));
   std::vector<std::vector<double>> guessed(n, std::vector<double>(cases.size()));
+  std::vector<bool> namedRight(cases.size());
   report.byCandidate.assign(n, std::vector<UnitsScore>(report.groups.size() + 1));
   for (std::size_t i = 0; i < cases.size(); ++i) {
     const UnitsCase& c = cases[i];
     const UnitGuess named = guessMetersPerUnit(c.object.units.largestExtent, c.object.category);
     const bool notMetres = scaleRatio(c.object.metersPerUnit, 1.0) > tolerance;
+    namedRight[i] = scaleRatio(named.metersPerUnit, c.object.metersPerUnit) <= tolerance;
     // Recalled once per memory, judged with every factor.
     std::map<MemoryKey, std::optional<ExpectedSize>> expected;
     for (const auto& [key, memory] : memories)
@@ -152,6 +154,7 @@ UnitsLosoReport evaluateSizeMemory(const std::vector<UnitsCase>& cases,
       const bool notMetres = scaleRatio(cases[i].object.metersPerUnit, 1.0) > tolerance;
       count(report.chosenLeavingSourceOut[groupIndex(cases[i].group)], right[k][i], notMetres);
       count(report.chosenLeavingSourceOut.back(), right[k][i], notMetres);
+      report.namedAgainstChosen.push_back({namedRight[i] ? 0.0 : 1.0, right[k][i] ? 0.0 : 1.0});
       if (!right[k][i]) {
         char line[300];
         std::snprintf(line, sizeof line, "%s (%s, %s): guessed %.3g, curated %.3g m per unit",
@@ -197,6 +200,19 @@ std::string unitsLosoMarkdown(const UnitsLosoReport& report) {
   }
   md += " on all of them: " + recallName(report.candidates[report.chosenOnAll]) +
         " (kept in units_memory.json).\n";
+  std::size_t fixed = 0, broken = 0;
+  for (const auto& o : report.namedAgainstChosen) {
+    fixed += o.current > o.candidate;
+    broken += o.current < o.candidate;
+  }
+  const PairedChange change = pairedChange(report.namedAgainstChosen);
+  std::snprintf(
+      line, sizeof line,
+      "\nObject by object against the named units alone: %zu fixed, %zu broken (noise %.1f "
+      "objects): %s.\n",
+      fixed, broken, change.noise * double(report.namedAgainstChosen.size()),
+      change.clearlyBetter() ? "better beyond its noise" : "not better beyond its noise");
+  md += line;
   if (!report.wrongChosen.empty()) md += "\nWrong with the recall chosen leaving the source out:\n\n";
   for (const auto& wrong : report.wrongChosen) md += "- " + wrong + "\n";
   return md;

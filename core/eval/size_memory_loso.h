@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "core/annotate/size_memory.h"
+#include "core/common/paired_change.h"
 
 namespace sagrid {
 
@@ -55,6 +56,9 @@ struct UnitsLosoReport {
   std::vector<std::string> groups;                     // without "all"
   std::vector<std::pair<std::string, std::size_t>> chosenBySource;  // source -> candidate
   std::vector<std::string> wrongChosen;  // "id (source): guessed X, curated Y" with the chosen recall
+  // Per object, 1 where its guess is wrong: with the named units alone (current) and with the
+  // recall chosen leaving its source out (candidate); what the memory's guard pairs.
+  std::vector<ObjectFigures> namedAgainstChosen;
   std::size_t chosenOnAll = 0;           // the candidate the shipped memory keeps
   double tolerance = 1.5;
 };

@@ -17,14 +17,19 @@ SizeMemoryUpdate updateSizeMemory(const SizeMemory* earlier, const std::vector<U
   update.report = evaluateSizeMemory(cases, candidates, featureConfigHash);
   update.objects = cases.size();
   update.rightWithMemory = update.report.chosenLeavingSourceOut.back().right;
-  update.rightNamedOnly = update.report.byCandidate.back().back().right;
+  update.change = pairedChange(update.report.namedAgainstChosen);
+  for (const auto& o : update.report.namedAgainstChosen) update.rightNamedOnly += o.current == 0;
   const MemoryRecall& chosen = update.report.candidates[update.report.chosenOnAll];
+  // The noise in objects, as the counts are.
+  const double noiseObjects = update.change.noise * double(update.objects);
   char line[400];
-  if (update.rightWithMemory <= update.rightNamedOnly || chosen.namedUnitsOnly()) {
-    std::snprintf(line, sizeof line,
-                  "units memory refused: left out by source it guesses %zu of %zu right, the named "
-                  "units alone %zu",
-                  update.rightWithMemory, update.objects, update.rightNamedOnly);
+  if (!update.change.clearlyBetter() || chosen.namedUnitsOnly()) {
+    std::snprintf(
+        line, sizeof line,
+        "units memory refused: left out by source it guesses %zu of %zu right, the named "
+        "units alone %zu (noise %.1f objects)%s",
+        update.rightWithMemory, update.objects, update.rightNamedOnly, noiseObjects,
+        update.rightWithMemory > update.rightNamedOnly ? ", better by less than its noise" : "");
     update.verdict = line;
     return update;
   }
@@ -34,9 +39,9 @@ SizeMemoryUpdate updateSizeMemory(const SizeMemory* earlier, const std::vector<U
                         chosen.measures);
   std::snprintf(line, sizeof line,
                 "units memory adopted: %zu objects, %s (left out by source %zu of %zu right, named "
-                "units alone %zu)",
+                "units alone %zu, noise %.1f objects)",
                 update.objects, recallName(chosen).c_str(), update.rightWithMemory, update.objects,
-                update.rightNamedOnly);
+                update.rightNamedOnly, noiseObjects);
   update.verdict = line;
   return update;
 }

@@ -101,7 +101,8 @@ void drawTrainPanel(Session& session, TrainingWorker& worker,
     retrainButton("Grow units memory", &TrainingRequest::unitsMemory,
                   "The real sizes of the training set's objects (their curated units) join the "
                   "units guess's memory of curated objects; kept only where, each source left "
-                  "out, it guesses more units right than the named units alone");
+                  "out, it guesses units right more often than the named units alone, beyond the "
+                  "noise of the objects");
   } else {
     ImGui::ProgressBar(status.fraction, ImVec2(-70, 0));
     ImGui::SameLine();
