@@ -257,15 +257,30 @@ std::string perObjectMarkdown(const EvaluationReport& r) {
       const bool has = errors != object.end() && errors->contains(n);
       md << ' ' << reportCell(has ? 100 * errors->at(n).get<double>() : NAN, "%.1f") << " |";
     }
-    int edits = 0;
-    if (const auto e = object.find("edits"); e != object.end())
-      for (const auto& [model, kinds] : e->items())
-        for (const auto& [kind, n] : kinds.items()) edits += n.get<int>();
-    md << ' ' << edits << " |\n";
+    md << ' ' << objectEdits(object) << " |\n";
   }
   return md.str();
 }
 }  // namespace
+
+int objectEdits(const nlohmann::json& object) {
+  int edits = 0;
+  if (const auto e = object.find("edits"); e != object.end())
+    for (const auto& [model, kinds] : e->items())
+      for (const auto& [kind, n] : kinds.items())
+        if (n.is_number_integer()) edits += n.get<int>();
+  return edits;
+}
+
+double objectPaperError(const nlohmann::json& object) {
+  const auto errors = object.find("paper_error_m");
+  if (errors == object.end()) return NAN;
+  double sum = 0;
+  int count = 0;
+  for (const auto& [model, e] : errors->items())
+    if (e.is_number() && std::isfinite(e.get<double>())) sum += e.get<double>(), ++count;
+  return count ? sum / count : NAN;
+}
 
 std::string evaluatedData(const EvaluationReport& report) {
   std::string out = report.dataDir.string();

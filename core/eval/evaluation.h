@@ -97,6 +97,11 @@ nlohmann::json evaluationJson(const EvaluationReport& report);
 // Writes eval.md, eval.json and eval.png into `outDir` (atomically).
 void writeEvaluationReport(const EvaluationReport& report, const std::filesystem::path& outDir);
 
+// One record of `EvaluationReport::perObject`: its curator point edits summed over its models, and
+// its paper single-point error averaged over the models that have one (NaN: none).
+int objectEdits(const nlohmann::json& object);
+double objectPaperError(const nlohmann::json& object);
+
 // The paper's column names ("toggle sink", ...) for the four shipped models, else the model name.
 std::string paperColumnName(const std::string& modelName);
 

@@ -2,10 +2,12 @@
 
 #include <cmath>
 #include <cstdio>
+#include <map>
 #include <set>
 #include <sstream>
 
 #include "core/common/error.h"
+#include "core/common/paired_change.h"
 #include "core/common/report_cell.h"
 #include "core/eval/count_breakdown.h"
 
@@ -55,6 +57,60 @@ void checkSameData(const std::vector<LabelledReport>& reports) {
                             evaluatedData(*reports.front().report));
 }
 
+// A set against the first, object by object, on one per-object figure (lower is better).
+struct AgainstFirst {
+  PairedChange change;
+  std::size_t lower = 0, higher = 0;  // objects whose figure went down / up
+};
+
+AgainstFirst againstFirst(const EvaluationReport& first, const EvaluationReport& other,
+                          double (*figure)(const nlohmann::json&)) {
+  auto byId = [&](const EvaluationReport& r) {
+    std::map<std::string, double> out;
+    for (const auto& object : r.perObject)
+      if (const double f = figure(object); std::isfinite(f))
+        out[object.value("id", std::string())] = f;
+    return out;
+  };
+  AgainstFirst a;
+  const auto pairs = pairById(byId(first), byId(other));
+  for (const ObjectFigures& p : pairs) {
+    a.lower += p.candidate < p.current;
+    a.higher += p.candidate > p.current;
+  }
+  a.change = pairedChange(pairs);
+  return a;
+}
+
+double editsFigure(const nlohmann::json& object) { return objectEdits(object); }
+
+// "better beyond its noise", "worse beyond its noise", "within its noise" (the rule of every
+// guard, core/common/paired_change.h, read both ways).
+const char* pairedWords(const PairedChange& c) {
+  if (!std::isfinite(c.noise)) return "too few objects to tell";
+  if (c.clearlyBetter()) return "better beyond its noise";
+  if (c.change() > c.noise * (1 + 1e-9)) return "worse beyond its noise";
+  return "within its noise";
+}
+
+std::string againstFirstCell(const AgainstFirst& a, double scale, const char* format) {
+  return reportCell(scale * a.change.current, format) + " -> " +
+         reportCell(scale * a.change.candidate, format) + " (noise " +
+         reportCell(scale * a.change.noise, format) + "), lower on " + std::to_string(a.lower) +
+         ", higher on " + std::to_string(a.higher) + ": " + pairedWords(a.change);
+}
+
+nlohmann::json againstFirstJson(const AgainstFirst& a) {
+  auto number = [](double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(); };
+  return {{"objects", a.change.objects},
+          {"first", number(a.change.current)},
+          {"this", number(a.change.candidate)},
+          {"noise", number(a.change.noise)},
+          {"lower_on", a.lower},
+          {"higher_on", a.higher},
+          {"verdict", pairedWords(a.change)}};
+}
+
 }  // namespace
 
 std::string comparisonMarkdown(const std::vector<LabelledReport>& reports) {
@@ -99,6 +155,22 @@ std::string comparisonMarkdown(const std::vector<LabelledReport>& reports) {
        << reportCell(e.editsPerObject / e.handPointsPerObject, "%.2f") << " | "
        << reportCell(100 * e.oneKeyShare, "%.1f %%") << " |\n";
   }
+  if (reports.size() > 1) {
+    md << "\n## Against " << reports.front().label
+       << ", object by object\n\nEach object's figure under both sets, paired: the means, the "
+          "standard error of the per-object changes (noise) and the objects whose figure went "
+          "down or up; beyond its noise as every guarded update decides.\n\n| Models | Edits / "
+          "object | Single-point error (cm, the object's models averaged) |\n|---|---|---|\n";
+    for (std::size_t i = 1; i < reports.size(); ++i)
+      md << "| " << reports[i].label << " | "
+         << againstFirstCell(againstFirst(*reports.front().report, *reports[i].report, editsFigure),
+                             1, "%.2f")
+         << " | "
+         << againstFirstCell(
+                againstFirst(*reports.front().report, *reports[i].report, objectPaperError), 100,
+                "%.1f")
+         << " |\n";
+  }
   std::vector<std::string> labels;
   std::vector<CountBreakdown> breakdowns;
   for (const auto& lr : reports) {
@@ -122,6 +194,12 @@ nlohmann::json comparisonJson(const std::vector<LabelledReport>& reports) {
                  {"hand_points_per_object", e.handPointsPerObject},
                  {"one_key_share", e.oneKeyShare},
                  {"report", evaluationJson(*lr.report)}});
+    if (&lr != &reports.front())
+      j.back()["against_first"] = {
+          {"edits",
+           againstFirstJson(againstFirst(*reports.front().report, *lr.report, editsFigure))},
+          {"paper_error_m",
+           againstFirstJson(againstFirst(*reports.front().report, *lr.report, objectPaperError))}};
   }
   return j;
 }
