@@ -79,8 +79,9 @@ std::string classFigures(const std::optional<CategoryEvaluation>& before,
   for (const auto& [cls, name] : {std::pair<const char*, const char*>{"stove", "stoves"},
                                   {"sink", "sinks"},
                                   {kRejectedCategory, "look-alikes"}}) {
+    const std::string key = cls;  // a lambda may not capture a structured binding (C++17)
     const auto count = [&](const CategoryEvaluation& ev) {
-      const auto it = ev.byClass.find(cls);
+      const auto it = ev.byClass.find(key);
       return it == ev.byClass.end() ? CategoryEvaluation::Count{} : it->second;
     };
     const CategoryEvaluation::Count a = count(after);

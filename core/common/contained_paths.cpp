@@ -4,6 +4,7 @@
 #include <cctype>
 #include <system_error>
 
+#include "core/common/ascii_case.h"
 #include "core/common/error.h"
 #include "core/common/sha256.h"
 
@@ -17,11 +18,6 @@ constexpr std::size_t kMaxFileNameBytes = 255;  // NAME_MAX of Linux file system
 
 bool isKeptByte(unsigned char c) {
   return (c < 0x80 && std::isalnum(c)) || c == '-' || c == '_' || c == '.';
-}
-
-std::string lowerCase(std::string text) {
-  for (auto& c : text) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return text;
 }
 
 // Resolves symbolic links of the longest existing prefix (weakly_canonical), without throwing.
@@ -52,11 +48,11 @@ std::string safeFileName(std::string_view text, std::size_t maxLength, std::stri
 std::string UniqueFileNames::claim(std::string_view text, std::string_view fallback) {
   const std::string base = safeFileName(text, m_maxLength, fallback);
   std::string name = base;
-  for (int n = 2; m_taken.count(lowerCase(name)); ++n) {
+  for (int n = 2; m_taken.count(asciiLower(name)); ++n) {
     const std::string suffix = "-" + std::to_string(n);
     name = base.substr(0, std::min(base.size(), m_maxLength - suffix.size())) + suffix;
   }
-  m_taken.insert(lowerCase(name));
+  m_taken.insert(asciiLower(name));
   return name;
 }
 

@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <regex>
 
+#include "core/common/ascii_case.h"
 #include "core/common/error.h"
 #include "core/common/sha256.h"
 
@@ -156,11 +157,6 @@ std::optional<double> number(const std::map<std::string, std::string>& p, const 
   return value;
 }
 
-std::string lowerAscii(std::string text) {
-  for (char& c : text) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return text;
-}
-
 }  // namespace
 
 std::map<std::string, std::string> parseJavaProperties(std::string_view bytes,
@@ -279,7 +275,7 @@ std::optional<CorpusRole> selectCorpusRole(const FurnitureCatalogEntry& entry) {
   if (std::regex_search(name, appliance)) return CorpusRole::None;
   if (std::regex_search(name, stove)) return CorpusRole::Stove;
   if (std::regex_search(name, sink)) {
-    std::string lower = lowerAscii(name);
+    std::string lower = asciiLower(name);
     for (std::size_t at; (at = lower.find("basin")) != std::string::npos;) lower.erase(at, 5);
     if (lower.find("bath") == std::string::npos && lower.find("shower") == std::string::npos)
       return CorpusRole::Sink;

@@ -9,6 +9,7 @@
 #include <set>
 #include <sstream>
 
+#include "core/common/ascii_case.h"
 #include "core/common/atomic_file.h"
 #include "core/common/error.h"
 #include "core/common/sha256.h"
@@ -69,9 +70,7 @@ std::vector<std::string> references(const std::string& text, bool isMtl) {
     if (!isMtl && keyword == "mtllib") {
       names.insert(names.end(), rest.begin(), rest.end());
     } else if (isMtl) {
-      std::string k = keyword;
-      std::transform(k.begin(), k.end(), k.begin(),
-                     [](unsigned char c) { return std::tolower(c); });
+      const std::string k = asciiLower(keyword);
       if (k.rfind("map_", 0) == 0 || k == "bump" || k == "disp" || k == "decal" || k == "refl" ||
           k == "norm") {
         names.push_back(rest.back());  // options (-s 1 1 1, -bm 0.5 ...) come first
@@ -144,10 +143,7 @@ std::size_t objEntriesUnder(const ZipArchive& zip, const std::string& root) {
   std::size_t count = 0;
   for (const ZipEntry& e : zip.entries()) {
     if (e.isDirectory() || e.name.rfind(root, 0) != 0 || e.name.size() < 4) continue;
-    std::string extension = e.name.substr(e.name.size() - 4);
-    std::transform(extension.begin(), extension.end(), extension.begin(),
-                   [](unsigned char c) { return std::tolower(c); });
-    count += extension == ".obj";
+    count += asciiLower(e.name.substr(e.name.size() - 4)) == ".obj";
   }
   return count;
 }
@@ -296,12 +292,7 @@ CorpusSummary buildSweetHome3dCorpus(const SweetHome3dCorpusOptions& options) {
 
     const auto objEntry = normalizeArchivePath(
         p.entry.model.rfind('/', 0) == 0 ? p.entry.model.substr(1) : p.entry.model);
-    const std::string lowerModel = [&] {
-      std::string m = p.entry.model;
-      std::transform(m.begin(), m.end(), m.begin(),
-                     [](unsigned char c) { return std::tolower(c); });
-      return m;
-    }();
+    const std::string lowerModel = asciiLower(p.entry.model);
     if (!objEntry || lowerModel.size() < 4 ||
         lowerModel.compare(lowerModel.size() - 4, 4, ".obj") != 0 || !p.zip->contains(*objEntry)) {
       summary.warnings.push_back(p.id + ": skipped, model '" + p.entry.model +

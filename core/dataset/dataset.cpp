@@ -1,7 +1,6 @@
 #include "core/dataset/dataset.h"
 
 #include <algorithm>
-#include <cctype>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
@@ -13,19 +12,6 @@
 
 namespace sagrid {
 namespace fs = std::filesystem;
-
-namespace {
-std::string lower(std::string s) {
-  for (auto& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return s;
-}
-}  // namespace
-
-bool isMeshFile(const fs::path& path) {
-  const auto& extensions = supportedMeshExtensions();
-  return std::find(extensions.begin(), extensions.end(), lower(path.extension().string())) !=
-         extensions.end();
-}
 
 fs::path findMeshFile(const fs::path& dir) {
   for (const auto& ext : supportedMeshExtensions())

@@ -30,7 +30,4 @@ std::vector<DatasetEntry> readDataset(const std::filesystem::path& directory,
 // the only file with such an extension. Empty path when there is none.
 std::filesystem::path findMeshFile(const std::filesystem::path& objectDirectory);
 
-// True when `path` has a mesh file extension SAGrid imports.
-bool isMeshFile(const std::filesystem::path& path);
-
 }  // namespace sagrid

@@ -9,6 +9,7 @@
 #include "core/common/contained_paths.h"
 #include "core/common/error.h"
 #include "core/dataset/dataset.h"
+#include "core/mesh/mesh_import.h"
 
 namespace sagrid {
 

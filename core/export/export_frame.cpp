@@ -8,6 +8,7 @@
 #include <sstream>
 #include <system_error>
 
+#include "core/common/ascii_case.h"
 #include "core/common/atomic_file.h"
 #include "core/common/contained_paths.h"
 #include "core/common/error.h"
@@ -60,8 +61,7 @@ std::vector<std::string> referencedFiles(const fs::path& file,
 }  // namespace
 
 std::vector<fs::path> containedMeshReferences(const fs::path& mesh) {
-  std::string ext = mesh.extension().string();
-  for (auto& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  const std::string ext = lowerExtension(mesh);
   std::vector<fs::path> files;
   std::error_code ec;
   if (ext != ".obj" || !fs::is_regular_file(mesh, ec)) return files;

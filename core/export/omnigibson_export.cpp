@@ -4,16 +4,17 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "core/common/ascii_case.h"
 #include "core/common/atomic_file.h"
 #include "core/common/contained_paths.h"
 #include "core/common/error.h"
 #include "core/common/json_number.h"
+#include "core/common/staged_folder.h"
 #include "core/export/export_frame.h"
 #include "core/export/omnigibson_meta_links.h"
 #include "core/export/simulator_geometry.h"
 #include "core/export/urdf_controls.h"
 #include "core/export/urdf_xml.h"
-#include "core/common/staged_folder.h"
 #include "core/export/xml_text.h"
 #include "core/mesh/mesh_export.h"
 #include "core/physics/convex_decomposition.h"
@@ -58,11 +59,6 @@ void requireFiniteNumbers(const nlohmann::json& json) {
     for (const auto& item : json) requireFiniteNumbers(item);
 }
 
-std::string lowerCase(std::string text) {
-  for (auto& c : text) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return text;
-}
-
 }  // namespace
 
 SimulatorExport exportOmniGibson(const ObjectLabels& labels, const fs::path& meshPath,
@@ -79,7 +75,7 @@ SimulatorExport exportOmniGibson(const ObjectLabels& labels, const fs::path& mes
   const std::string model = names.models.claim(id, result.warnings);
   if (labels.object.category.empty())
     result.warnings.push_back(id + ": no category; exported under the category 'object'");
-  const std::string category = safeFileName(lowerCase(labels.object.category), 64, "object");
+  const std::string category = safeFileName(asciiLower(labels.object.category), 64, "object");
   StagedFolder staged(outDir / category / model);
   const fs::path root = staged.path();
 

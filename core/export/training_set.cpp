@@ -5,6 +5,7 @@
 #include <sstream>
 #include <system_error>
 
+#include "core/common/ascii_case.h"
 #include "core/common/atomic_file.h"
 #include "core/common/contained_paths.h"
 #include "core/common/error.h"
@@ -38,8 +39,7 @@ TrainingSetEntry addToTrainingSet(const ObjectLabels& labels, const fs::path& me
   fs::create_directories(objectDir, ec);
   if (ec) throw FileError(objectDir, "cannot create folder: " + ec.message());
 
-  std::string ext = meshPath.extension().string();
-  for (auto& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  const std::string ext = lowerExtension(meshPath);
   entry.mesh = exportdetail::copyMeshWithDependencies(meshPath, objectDir, "mesh" + ext);
   // The record of where the mesh comes from goes with it: its source (leave-one-source-out guards
   // fold by it) and what it declares (units, up axis) stay the object's.

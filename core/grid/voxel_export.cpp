@@ -1,8 +1,8 @@
 #include "core/grid/voxel_export.h"
 
-#include <cctype>
 #include <cstdio>
 
+#include "core/common/ascii_case.h"
 #include "core/common/atomic_file.h"
 #include "core/common/error.h"
 #include "core/io/npz.h"
@@ -11,11 +11,6 @@ namespace sagrid {
 namespace fs = std::filesystem;
 
 namespace {
-std::string extensionOf(const fs::path& path) {
-  std::string ext = path.extension().string();
-  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return ext;
-}
 
 void writeNpzVoxels(const fs::path& path, const VoxelGrid& grid, const Normalization& n) {
   const auto voxels = grid.occupiedVoxels();
@@ -56,7 +51,7 @@ void writePlyVoxels(const fs::path& path, const VoxelGrid& grid) {
 }  // namespace
 
 void checkVoxelOutputPath(const fs::path& path) {
-  const std::string ext = extensionOf(path);
+  const std::string ext = lowerExtension(path);
   if (ext != ".npz" && ext != ".ply") {
     throw FileError(path, "unsupported output format '" + ext + "' (use .npz or .ply)");
   }
@@ -67,7 +62,8 @@ void checkVoxelOutputPath(const fs::path& path) {
 
 void writeVoxels(const fs::path& path, const VoxelGrid& grid, const Normalization& normalization) {
   checkVoxelOutputPath(path);
-  if (extensionOf(path) == ".npz") writeNpzVoxels(path, grid, normalization);
+  if (lowerExtension(path) == ".npz")
+    writeNpzVoxels(path, grid, normalization);
   else writePlyVoxels(path, grid);
 }
 

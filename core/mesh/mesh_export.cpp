@@ -1,12 +1,13 @@
 #include "core/mesh/mesh_export.h"
 
+#include <stb_image_write.h>
+
 #include <algorithm>
 #include <charconv>
 #include <cstring>
-
 #include <nlohmann/json.hpp>
-#include <stb_image_write.h>
 
+#include "core/common/ascii_case.h"
 #include "core/common/atomic_file.h"
 #include "core/common/contained_paths.h"
 #include "core/common/error.h"
@@ -307,8 +308,7 @@ void writeEncodedMeshFiles(const EncodedMeshFiles& encoded, const std::filesyste
 }
 
 void exportMesh(const Mesh& mesh, const std::filesystem::path& path) {
-  std::string ext = path.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  const std::string ext = lowerExtension(path);
   if (ext == ".glb") {
     writeFileAtomic(path, encodeGlb(mesh));
   } else if (ext == ".obj") {

@@ -1,9 +1,9 @@
 #include "core/mesh/mesh_files.h"
 
 #include <algorithm>
-#include <cctype>
 #include <set>
 
+#include "core/common/ascii_case.h"
 #include "core/common/atomic_file.h"
 #include "core/common/error.h"
 #include "core/common/sha256.h"
@@ -13,15 +13,6 @@
 namespace sagrid {
 
 namespace {
-std::string lower(std::string s) {
-  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return std::tolower(c); });
-  return s;
-}
-
-bool supported(const std::filesystem::path& p) {
-  const auto& exts = supportedMeshExtensions();
-  return std::find(exts.begin(), exts.end(), lower(p.extension().string())) != exts.end();
-}
 
 // Ids become file and folder names (DIR/<id>/labels.json, <id>.npz) and JSON strings: bytes
 // that are not UTF-8 become '_', and an id longer than kMaxIdLength keeps a prefix plus 8 hex
@@ -52,7 +43,7 @@ std::string usableId(const std::string& raw) {
 // "a/b/mesh.obj" -> "a__b", "a/chair.glb" -> "a__chair" (relative to the listed folder).
 std::string idFor(const std::filesystem::path& relative) {
   std::filesystem::path stemPath = relative.parent_path();
-  if (lower(relative.stem().string()) != "mesh" || stemPath.empty()) {
+  if (asciiLower(relative.stem().string()) != "mesh" || stemPath.empty()) {
     stemPath /= relative.stem();
   }
   std::string id;
@@ -65,9 +56,10 @@ std::string idFor(const std::filesystem::path& relative) {
 }  // namespace
 
 std::string objectIdOfFile(const std::filesystem::path& meshFile) {
-  const std::string stem = lower(meshFile.stem().string()) == "mesh" && meshFile.has_parent_path()
-                               ? meshFile.parent_path().filename().string()
-                               : meshFile.stem().string();
+  const std::string stem =
+      asciiLower(meshFile.stem().string()) == "mesh" && meshFile.has_parent_path()
+          ? meshFile.parent_path().filename().string()
+          : meshFile.stem().string();
   return usableId(stem.empty() ? meshFile.stem().string() : stem);
 }
 
@@ -77,7 +69,7 @@ std::vector<MeshFile> findMeshFiles(const std::filesystem::path& fileOrDir) {
     throw FileError(fileOrDir, "no such file or directory");
   if (!std::filesystem::is_directory(fileOrDir, ec)) {
     requireRegularFile(fileOrDir);  // a FIFO or a device is named as such, whatever its name
-    if (!supported(fileOrDir)) {
+    if (!isMeshFile(fileOrDir)) {
       throw FileError(fileOrDir,
                       "not a supported mesh file (use .obj, .glb, .gltf, .fbx, .dae, "
                       ".ply or .stl)");
@@ -95,7 +87,7 @@ std::vector<MeshFile> findMeshFiles(const std::filesystem::path& fileOrDir) {
       if (it->is_directory()) it.disable_recursion_pending();
       continue;
     }
-    if (it->is_regular_file() && supported(it->path())) found.push_back(it->path());
+    if (it->is_regular_file() && isMeshFile(it->path())) found.push_back(it->path());
   }
   std::sort(found.begin(), found.end());
   std::vector<MeshFile> files;
@@ -103,7 +95,7 @@ std::vector<MeshFile> findMeshFiles(const std::filesystem::path& fileOrDir) {
   for (const auto& p : found) {
     std::string id = idFor(std::filesystem::relative(p, fileOrDir));
     // Two meshes in one object folder (mesh.obj and mesh.glb): keep both, distinguishable.
-    if (used.count(id)) id += "__" + lower(p.extension().string()).substr(1);
+    if (used.count(id)) id += "__" + lowerExtension(p).substr(1);
     used.insert(id);
     files.push_back({p, id});
   }

@@ -17,6 +17,7 @@
 #include <set>
 #include <system_error>
 
+#include "core/common/ascii_case.h"
 #include "core/common/atomic_file.h"
 #include "core/common/contained_paths.h"
 #include "core/common/error.h"
@@ -40,9 +41,13 @@ const std::vector<std::string>& supportedMeshExtensions() {
   return extensions;
 }
 
+bool isMeshFile(const fs::path& path) {
+  const auto& extensions = supportedMeshExtensions();
+  return std::find(extensions.begin(), extensions.end(), lowerExtension(path)) != extensions.end();
+}
+
 std::optional<UpAxis> parseUpAxis(const std::string& text) {
-  std::string t;
-  for (char c : text) t += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  std::string t = asciiLower(text);
   if (!t.empty() && t[0] == '+') t.erase(0, 1);
   if (t == "x") return UpAxis::PosX;
   if (t == "-x") return UpAxis::NegX;
@@ -72,13 +77,6 @@ UpAxis unsureUpAxis(const std::string& extension) {
 }
 
 namespace {
-
-std::string lowerExtension(const fs::path& path) {
-  std::string ext = path.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return ext;
-}
 
 // Assimp's message as one short line of printable ASCII: its parse errors can quote the rest of
 // the file (an ASCII STL error carried 45 KB of it, bytes of any value). Linear in the length.

@@ -53,6 +53,8 @@ Mesh importMesh(const std::filesystem::path& path, const ImportOptions& options 
 
 // Lower-case extensions importMesh accepts, with the dot (".obj", ".glb", ...).
 const std::vector<std::string>& supportedMeshExtensions();
+// True when `path` has one of those extensions (case-blind).
+bool isMeshFile(const std::filesystem::path& path);
 
 // Parses an up axis as in --up and labels object.up: "x", "-x", "y", "-y", "z", "-z" (a leading
 // "+" and upper case accepted); nullopt for anything else.

@@ -16,9 +16,9 @@
 //  - default: 500 kg/m^3, the middle of furniture-like objects (softwood 400-600 kg/m^3, hollow
 //    appliances 100-300 kg/m^3); water is 1000 kg/m^3.
 #include <algorithm>
-#include <cctype>
 #include <string>
 
+#include "core/common/ascii_case.h"
 #include "core/physics/mass_properties.h"
 
 namespace sagrid::physics {
@@ -34,9 +34,7 @@ const std::vector<DensityEntry>& densityTable() {
 }
 
 const DensityEntry& densityFor(std::string_view category) {
-  std::string lower(category);
-  std::transform(lower.begin(), lower.end(), lower.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  const std::string lower = asciiLower(std::string(category));
   const auto& table = densityTable();
   for (const auto& entry : table)
     if (entry.category == lower) return entry;

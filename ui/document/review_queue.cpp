@@ -1,7 +1,6 @@
 #include "ui/document/review_queue.h"
 
 #include <algorithm>
-#include <cctype>
 #include <nlohmann/json.hpp>
 #include <system_error>
 
@@ -36,14 +35,6 @@ QueueState parseQueueState(const std::string& text) {
   if (text == "skipped") return QueueState::Skipped;
   if (text == "in progress") return QueueState::InProgress;
   return QueueState::Unreviewed;
-}
-
-bool isMeshFile(const fs::path& path) {
-  std::string ext = path.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(),
-                 [](unsigned char c) { return std::tolower(c); });
-  const auto& supported = supportedMeshExtensions();
-  return std::find(supported.begin(), supported.end(), ext) != supported.end();
 }
 
 fs::path labelsPathFor(const fs::path& mesh) {

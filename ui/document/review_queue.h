@@ -37,8 +37,6 @@ std::optional<double> recordedObjectConfidence(const std::filesystem::path& labe
 
 inline constexpr const char* kQueueStateFile = ".sagrid-review.json";
 
-// True for the mesh formats the importer reads (by extension, case-insensitive).
-bool isMeshFile(const std::filesystem::path& path);
 // labels.json beside the mesh when the mesh is alone in its folder (the dataset layout), else
 // <stem>.labels.json, so loose meshes in one folder never share a labels file.
 std::filesystem::path labelsPathFor(const std::filesystem::path& mesh);

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "core/mesh/mesh_import.h"
 #include "ui/app/session.h"
 #include "ui/document/review_queue.h"
 

@@ -6,6 +6,7 @@
 #include <fstream>
 
 #include "core/common/error.h"
+#include "core/mesh/mesh_import.h"
 #include "support/test_paths.h"
 
 namespace sagrid {
