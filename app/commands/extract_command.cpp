@@ -13,6 +13,7 @@
 #include "app/commands/up_axis_option.h"
 #include "app/progress_bar.h"
 #include "core/common/atomic_file.h"
+#include "core/common/elapsed.h"
 #include "core/common/error.h"
 #include "core/features/feature_npz.h"
 #include "core/features/feature_pipeline.h"
@@ -172,8 +173,7 @@ void setupExtract(CLI::App& root) {
         sagrid::writeFeatureNpz(fs::path(o->out) / (file.id + ".npz"), grid, meta);
         writeExtras(*o, framed, file, grid);
         cachedCount += cached;
-        seconds.push_back(
-            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+        seconds.push_back(sagrid::secondsSince(start));
       } catch (const sagrid::InvalidArgument&) {
         throw;  // the same for every file: stop at once
       } catch (const sagrid::ModelError&) {

@@ -17,6 +17,7 @@
 #include "core/annotate/object_list.h"
 #include "core/annotate/shard.h"
 #include "core/common/atomic_file.h"
+#include "core/common/elapsed.h"
 #include "core/common/error.h"
 #include "core/common/resource_paths.h"
 #include "core/features/descriptor_cache.h"
@@ -95,8 +96,7 @@ void setupFilter(CLI::App& root) {
     }
     bar.update(files.size());
     bar.finish();
-    const double seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const double seconds = sagrid::secondsSince(start);
     // Objects the category classifier rejects (not a stove or sink) rank after all others,
     // with the same threshold `annotate` uses.
     std::stable_sort(ranked.begin(), ranked.end(), [](const Ranked& a, const Ranked& b) {

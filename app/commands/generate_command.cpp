@@ -2,7 +2,6 @@
 // `--preset bench` writes the fixed train/val split; `sagrid dataset-stats DIR` prints the
 // variety table of a generated dataset.
 #include <CLI/CLI.hpp>
-
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -10,6 +9,7 @@
 
 #include "app/command_registry.h"
 #include "app/progress_bar.h"
+#include "core/common/elapsed.h"
 #include "core/common/error.h"
 #include "core/generate/contact_sheet.h"
 #include "core/generate/dataset_generator.h"
@@ -104,7 +104,7 @@ void setupGenerate(CLI::App& root) {
       written = o->count;
       dirs.push_back(o->out);
     }
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const double seconds = sagrid::secondsSince(start);
     std::fprintf(stderr, "generated %d objects in %.2f s (%.1f objects/s)\n", written, seconds,
                  seconds > 0 ? written / seconds : 0.0);
     if (!o->contactSheet.empty()) {

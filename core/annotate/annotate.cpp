@@ -9,6 +9,7 @@
 #include "core/annotate/suggested_points.h"
 #include "core/annotate/symmetry_averaging.h"
 #include "core/annotate/units_record.h"
+#include "core/common/elapsed.h"
 #include "core/common/error.h"
 #include "core/controls/control_annotation.h"
 #include "core/dataset/object_source.h"
@@ -23,9 +24,6 @@ namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
 
 namespace {
-double secondsSince(Clock::time_point t) {
-  return std::chrono::duration<double>(Clock::now() - t).count();
-}
 
 // How the points were decided, for the curator and the record: the learned decision (what its
 // scorer was trained on, the passes it switched off) or the network's count.

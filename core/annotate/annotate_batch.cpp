@@ -7,6 +7,7 @@
 
 #include "core/annotate/annotation_fingerprint.h"
 #include "core/common/atomic_file.h"
+#include "core/common/elapsed.h"
 #include "core/common/error.h"
 #include "core/common/file_lock.h"
 #include "core/common/sha256.h"
@@ -88,11 +89,10 @@ nlohmann::json annotateOne(const MeshFile& file, const AnnotateBatchSettings& s,
   result["category"] = r.category;
   if (r.rejected) result["closest_category"] = r.closestCategory;
   result["points"] = r.labels.affordances.size();
-  result["seconds"] = {
-      {"import", seconds(r.importSeconds)},
-      {"features", seconds(r.featureSeconds)},
-      {"models", seconds(r.modelSeconds)},
-      {"total", seconds(std::chrono::duration<double>(Clock::now() - start).count())}};
+  result["seconds"] = {{"import", seconds(r.importSeconds)},
+                       {"features", seconds(r.featureSeconds)},
+                       {"models", seconds(r.modelSeconds)},
+                       {"total", seconds(secondsSince(start))}};
   result["rss_mib"] = std::round(residentMiB());
   return result;
 }

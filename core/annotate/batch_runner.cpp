@@ -8,6 +8,7 @@
 
 #include "core/annotate/run_manifest.h"
 #include "core/common/atomic_file.h"
+#include "core/common/elapsed.h"
 #include "core/common/error.h"
 #include "core/common/worker_process.h"
 #include "core/labels/labels.h"
@@ -221,7 +222,7 @@ BatchSummary runBatch(const std::vector<MeshFile>& files, const BatchOptions& op
     worker.kill();
     summary.peakWorkerRssKiB = std::max(summary.peakWorkerRssKiB, worker.peakRssKiB());
   }
-  summary.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  summary.seconds = secondsSince(start);
   if (options.onProgress) options.onProgress(finished, "");
   return summary;
 }

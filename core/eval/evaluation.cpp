@@ -8,6 +8,7 @@
 #include "core/annotate/annotate.h"
 #include "core/annotate/point_passes.h"
 #include "core/common/atomic_file.h"
+#include "core/common/elapsed.h"
 #include "core/common/error.h"
 #include "core/common/log.h"
 #include "core/common/report_cell.h"
@@ -115,7 +116,7 @@ EvaluationReport evaluateModels(const ModelSet& models, const EvaluationOptions&
           predictCategoryPoints(categoryModels, {mesh, grid, scene, objectFeatures}, passes,
                                 InstanceMode::Auto);
       const std::vector<ModelPrediction>& autoPredictions = categoryPoints.predictions;
-      modelSeconds += std::chrono::duration<double>(Clock::now() - t).count();
+      modelSeconds += secondsSince(t);
       auto surfaceOf = [](const ModelPrediction& p) {
         std::vector<Eigen::Vector3f> out;
         for (const auto& s : p.surface) out.push_back(s.position);

@@ -11,6 +11,7 @@
 
 #include "core/annotate/model_set.h"
 #include "core/common/atomic_file.h"
+#include "core/common/elapsed.h"
 #include "core/common/error.h"
 #include "core/common/report_cell.h"
 #include "core/dataset/dataset.h"
@@ -351,14 +352,13 @@ LearningCurveReport runLearningCurve(const LearningCurveOptions& options) {
               ": guard: " + verdict.reason);
         }
         char line[256];
-        std::snprintf(
-            line, sizeof line,
-            "fold %d/%zu k=%s %s: fine-tuned on %d object(s)%s, %d epoch(s), loss "
-            "%.4f, %.0f s",
-            foldNumber, split.size(), kLabel(k).c_str(), name.c_str(), used,
-            options.replay ? " + replay" : "", result.curve.empty() ? 0 : result.curve.back().epoch,
-            result.curve.empty() ? 0.0 : result.curve.back().loss,
-            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+        std::snprintf(line, sizeof line,
+                      "fold %d/%zu k=%s %s: fine-tuned on %d object(s)%s, %d epoch(s), loss "
+                      "%.4f, %.0f s",
+                      foldNumber, split.size(), kLabel(k).c_str(), name.c_str(), used,
+                      options.replay ? " + replay" : "",
+                      result.curve.empty() ? 0 : result.curve.back().epoch,
+                      result.curve.empty() ? 0.0 : result.curve.back().loss, secondsSince(start));
         say(line);
       }
       // Same models as an earlier k of this fold (k beyond what the fold holds): same result.

@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cmath>
 
+#include "core/common/elapsed.h"
 #include "core/common/log.h"
 #include "core/common/thread_count.h"
 #include "core/features/embedded_view_encoder.h"
@@ -228,10 +229,9 @@ Result compute(const Mesh& mesh, const SurfaceScene& scene, const VoxelGrid& gri
   const auto viewsDone = std::chrono::steady_clock::now();
   Result result =
       fromAggregates(mesh, grid, aggregator.sums(), static_cast<int>(cameras.size()), upper);
-  logger()->debug(
-      "embedded features: views {:.3f} s, voxel channels {:.3f} s",
-      std::chrono::duration<double>(viewsDone - start).count(),
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - viewsDone).count());
+  logger()->debug("embedded features: views {:.3f} s, voxel channels {:.3f} s",
+                  std::chrono::duration<double>(viewsDone - start).count(),
+                  secondsSince(viewsDone));
   return result;
 }
 

@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/common/atomic_file.h"
+#include "core/common/elapsed.h"
 #include "core/common/error.h"
 #include "core/common/log.h"
 #include "core/common/sha256.h"
@@ -120,10 +121,6 @@ std::vector<float> appendChannels(const std::vector<float>& a, int aChannels,
     out.insert(out.end(), b.begin() + r * bChannels, b.begin() + (r + 1) * bChannels);
   }
   return out;
-}
-
-double secondsSince(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 }  // namespace
 

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "core/common/atomic_file.h"
+#include "core/common/elapsed.h"
 #include "core/common/error.h"
 #include "core/common/log.h"
 #include "core/common/sha256.h"
@@ -25,10 +26,6 @@ namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
 
 namespace {
-
-double secondsSince(Clock::time_point t) {
-  return std::chrono::duration<double>(Clock::now() - t).count();
-}
 
 // Per-dimension mean and standard deviation of the training objects' descriptors, for category
 // retrieval.

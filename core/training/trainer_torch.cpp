@@ -1,5 +1,3 @@
-#include "core/training/trainer.h"
-
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -8,10 +6,12 @@
 #include <sstream>
 
 #include "core/common/atomic_file.h"
+#include "core/common/elapsed.h"
 #include "core/common/error.h"
 #include "core/common/log.h"
 #include "core/model/affordance_model_impl.h"
 #include "core/training/sample_mixing.h"
+#include "core/training/trainer.h"
 
 namespace sagrid::model {
 namespace fs = std::filesystem;
@@ -218,7 +218,7 @@ std::vector<EpochRecord> trainModel(AffordanceModel& model,
   const double budgetSeconds = options.minutes * 60.0;
   const double secondsBefore = state.curve.empty() ? 0.0 : state.curve.back().seconds;
   const auto start = Clock::now();
-  auto elapsed = [&] { return std::chrono::duration<double>(Clock::now() - start).count(); };
+  auto elapsed = [&] { return secondsSince(start); };
   double lastStepSeconds = 0;  // the pace of the last epoch
 
   net->train();
@@ -294,8 +294,7 @@ std::vector<EpochRecord> trainModel(AffordanceModel& model,
       const auto saveStart = Clock::now();
       saveCheckpoint(options.checkpointFile, net, optimizer, state, impl.card);
       logger()->info("{}: epoch {} loss {:.5f}, checkpoint written in {:.2f} s", impl.card.name,
-                     epoch, state.curve.back().loss,
-                     std::chrono::duration<double>(Clock::now() - saveStart).count());
+                     epoch, state.curve.back().loss, secondsSince(saveStart));
     }
   }
   net->eval();
