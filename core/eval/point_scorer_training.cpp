@@ -723,10 +723,11 @@ ScorerGuard guardPointScorer(const PointScorer* current, const PointScorer& fres
     // Each mix's edits per held-out object of the category; the mix with the fewest in all is
     // adopted only where it beats the current decisions by more than the standard error of the
     // per-object differences (core/common/paired_change.h), else the current ones stay.
+    const std::vector<std::string>& categoryModels = models;  // lambdas may not capture bindings (C++17)
     const auto editsOfMix = [&](std::size_t mix) {
       std::vector<std::string> taken;
-      for (std::size_t i = 0; i < models.size(); ++i)
-        if ((mix >> i) & 1) taken.push_back(models[i]);
+      for (std::size_t i = 0; i < categoryModels.size(); ++i)
+        if ((mix >> i) & 1) taken.push_back(categoryModels[i]);
       return editsByObject(sets, scorerChooser(withDecisionsOf(was, fresh, taken), all));
     };
     const auto total = [](const std::map<std::string, double>& edits) {

@@ -174,10 +174,10 @@ ScorerUpdate updatePointScorer(const ScorerUpdateRequest& request) {
       update.guard = guard;
       // As on a held-out folder: the new scorer's models no curated object judged are listed,
       // not adopted.
-      for (const auto& [model, decision] : update.scorer.byModel)
+      for (const auto& entry : update.scorer.byModel)
         if (std::none_of(guard->byModel.begin(), guard->byModel.end(),
-                         [&](const ScorerVerdict& v) { return v.model == model; }))
-          update.guard->byModel.push_back({model, 0, 0, 0, false});
+                         [&](const ScorerVerdict& v) { return v.model == entry.first; }))
+          update.guard->byModel.push_back({entry.first, 0, 0, 0, false});
       update.adoptedScorer =
           adoptedScorer(current ? &*current : nullptr, update.scorer, *update.guard);
       update.verdict = guardVerdict(*update.guard, current.has_value(),
