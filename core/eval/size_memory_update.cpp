@@ -29,7 +29,9 @@ SizeMemoryUpdate updateSizeMemory(const SizeMemory* earlier, const std::vector<U
         "units memory refused: left out by source it guesses %zu of %zu right, the named "
         "units alone %zu (noise %.1f objects)%s",
         update.rightWithMemory, update.objects, update.rightNamedOnly, noiseObjects,
-        update.rightWithMemory > update.rightNamedOnly ? ", better by less than its noise" : "");
+        update.change.clearlyBetter() ? ", but on all sources the named units alone guess best"
+        : update.rightWithMemory > update.rightNamedOnly ? ", better by less than its noise"
+                                                         : "");
     update.verdict = line;
     return update;
   }
