@@ -7,6 +7,13 @@ std::string PairedChange::verdict() const {
   return change() < 0 ? "refused (better by less than its noise)" : "refused";
 }
 
+std::string PairedChange::comparison() const {
+  if (!std::isfinite(noise)) return "too few objects to tell";
+  if (clearlyBetter()) return "better beyond its noise";
+  if (change() > noise * (1 + 1e-9)) return "worse beyond its noise";
+  return "within its noise";
+}
+
 PairedChange pairedChange(const std::vector<std::vector<ObjectFigures>>& groups) {
   PairedChange out;
   double current = 0, candidate = 0, variance = 0;
@@ -19,6 +26,8 @@ PairedChange pairedChange(const std::vector<std::vector<ObjectFigures>>& groups)
     for (const ObjectFigures& f : group) {
       sumCurrent += f.current;
       sumChange += f.candidate - f.current;
+      out.lower += f.candidate < f.current;
+      out.higher += f.candidate > f.current;
     }
     const double meanChange = sumChange / n;
     double squares = 0;

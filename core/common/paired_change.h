@@ -21,6 +21,7 @@ struct ObjectFigures {
 
 struct PairedChange {
   std::size_t objects = 0;
+  std::size_t lower = 0, higher = 0;      // objects whose figure the candidate lowers / raises
   double current = NAN, candidate = NAN;  // the means (groups weighed equally)
   // The standard error of candidate - current; NaN where a group has fewer than two objects (one
   // object cannot tell a gain from its noise).
@@ -31,6 +32,9 @@ struct PairedChange {
   bool clearlyBetter() const { return std::isfinite(noise) && change() < -noise * (1 + 1e-9); }
   // "adopted", "refused (better by less than its noise)" or "refused".
   std::string verdict() const;
+  // The same rule read both ways, for reports that compare rather than adopt: "better beyond its
+  // noise", "worse beyond its noise", "within its noise" or "too few objects to tell".
+  std::string comparison() const;
 };
 
 // Objects in groups that count equally (stoves, sinks and look-alikes in a share right averaged

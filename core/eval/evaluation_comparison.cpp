@@ -57,13 +57,8 @@ void checkSameData(const std::vector<LabelledReport>& reports) {
                             evaluatedData(*reports.front().report));
 }
 
-// A set against the first, object by object, on one per-object figure (lower is better).
-struct AgainstFirst {
-  PairedChange change;
-  std::size_t lower = 0, higher = 0;  // objects whose figure went down / up
-};
-
-AgainstFirst againstFirst(const EvaluationReport& first, const EvaluationReport& other,
+// Another set against the first, object by object, on one per-object figure (lower is better).
+PairedChange againstFirst(const EvaluationReport& first, const EvaluationReport& other,
                           double (*figure)(const nlohmann::json&)) {
   auto byId = [&](const EvaluationReport& r) {
     std::map<std::string, double> out;
@@ -72,43 +67,23 @@ AgainstFirst againstFirst(const EvaluationReport& first, const EvaluationReport&
         out[object.value("id", std::string())] = f;
     return out;
   };
-  AgainstFirst a;
-  const auto pairs = pairById(byId(first), byId(other));
-  for (const ObjectFigures& p : pairs) {
-    a.lower += p.candidate < p.current;
-    a.higher += p.candidate > p.current;
-  }
-  a.change = pairedChange(pairs);
-  return a;
+  return pairedChange(pairById(byId(first), byId(other)));
 }
 
 double editsFigure(const nlohmann::json& object) { return objectEdits(object); }
 
-// "better beyond its noise", "worse beyond its noise", "within its noise" (the rule of every
-// guard, core/common/paired_change.h, read both ways).
-const char* pairedWords(const PairedChange& c) {
-  if (!std::isfinite(c.noise)) return "too few objects to tell";
-  if (c.clearlyBetter()) return "better beyond its noise";
-  if (c.change() > c.noise * (1 + 1e-9)) return "worse beyond its noise";
-  return "within its noise";
+std::string againstFirstCell(const PairedChange& c, double scale, const char* format) {
+  return reportCell(scale * c.current, format) + " -> " + reportCell(scale * c.candidate, format) +
+         " (noise " + reportCell(scale * c.noise, format) + "), lower on " +
+         std::to_string(c.lower) + ", higher on " + std::to_string(c.higher) + ": " +
+         c.comparison();
 }
 
-std::string againstFirstCell(const AgainstFirst& a, double scale, const char* format) {
-  return reportCell(scale * a.change.current, format) + " -> " +
-         reportCell(scale * a.change.candidate, format) + " (noise " +
-         reportCell(scale * a.change.noise, format) + "), lower on " + std::to_string(a.lower) +
-         ", higher on " + std::to_string(a.higher) + ": " + pairedWords(a.change);
-}
-
-nlohmann::json againstFirstJson(const AgainstFirst& a) {
+nlohmann::json againstFirstJson(const PairedChange& c) {
   auto number = [](double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(); };
-  return {{"objects", a.change.objects},
-          {"first", number(a.change.current)},
-          {"this", number(a.change.candidate)},
-          {"noise", number(a.change.noise)},
-          {"lower_on", a.lower},
-          {"higher_on", a.higher},
-          {"verdict", pairedWords(a.change)}};
+  return {{"objects", c.objects},     {"first", number(c.current)}, {"this", number(c.candidate)},
+          {"noise", number(c.noise)}, {"lower_on", c.lower},        {"higher_on", c.higher},
+          {"verdict", c.comparison()}};
 }
 
 }  // namespace

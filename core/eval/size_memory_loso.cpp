@@ -200,18 +200,13 @@ std::string unitsLosoMarkdown(const UnitsLosoReport& report) {
   }
   md += " on all of them: " + recallName(report.candidates[report.chosenOnAll]) +
         " (kept in units_memory.json).\n";
-  std::size_t fixed = 0, broken = 0;
-  for (const auto& o : report.namedAgainstChosen) {
-    fixed += o.current > o.candidate;
-    broken += o.current < o.candidate;
-  }
   const PairedChange change = pairedChange(report.namedAgainstChosen);
   std::snprintf(
       line, sizeof line,
       "\nObject by object against the named units alone: %zu fixed, %zu broken (noise %.1f "
       "objects): %s.\n",
-      fixed, broken, change.noise * double(report.namedAgainstChosen.size()),
-      change.clearlyBetter() ? "better beyond its noise" : "not better beyond its noise");
+      change.lower, change.higher, change.noise * double(change.objects),
+      change.comparison().c_str());
   md += line;
   if (!report.wrongChosen.empty()) md += "\nWrong with the recall chosen leaving the source out:\n\n";
   for (const auto& wrong : report.wrongChosen) md += "- " + wrong + "\n";

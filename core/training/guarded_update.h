@@ -38,7 +38,7 @@ struct GuardVerdict {
   int folds = 0;
   // The standard error of the per-object differences candidate - current (metres; NaN for fewer
   // than two objects); the candidate is adopted only where it is better by more than that.
-  double pairedNoise = 0;
+  double pairedNoise = NAN;
 };
 
 // Decides `verdict` from the judged objects' errors (metres) under both models: its objects,

@@ -5,7 +5,11 @@ sources stay those of the datasets it came from. A folder without a manifest (re
 subfolders whose labels.json has the category; their source is then OUT's name.
 
     python3 tests/benchmarks/curated_of_category.py CATEGORY OUT DATASET [DATASET ...]
+        [--only MANIFEST | --except MANIFEST]
         e.g. sink OUT W/wild-train W/wild-val SH2/real-train SH2/real-val ../shared/data/real-dev
+        --only / --except: keep only the objects whose id a manifest.jsonl lists, or all but
+        those (e.g. a learning curve's LC/work/foldN/test/manifest.jsonl: the fold's held-out
+        objects, or the objects it trained on).
 """
 import json
 import os
@@ -33,14 +37,26 @@ def entries(dataset):
 def main(argv):
     if len(argv) < 3:
         sys.exit(__doc__)
-    category, out, datasets = argv[0], argv[1], argv[2:]
+    category, out, datasets, only, excluded = argv[0], argv[1], [], None, set()
+    rest = iter(argv[2:])
+    for arg in rest:
+        if arg in ('--only', '--except'):
+            ids = {json.loads(line)['id'] for line in open(next(rest)) if line.strip()}
+            if arg == '--only':
+                only = ids
+            else:
+                excluded = ids
+        else:
+            datasets.append(arg)
     if os.path.exists(out):
         sys.exit(out + ' exists: give a new folder')
     os.makedirs(out)
     kept = []
     for dataset in datasets:
         for entry in entries(dataset):
-            if entry.get('category') != category:
+            if entry.get('category') != category or entry['id'] in excluded:
+                continue
+            if only is not None and entry['id'] not in only:
                 continue
             folder = entry['labels'].split('/')[0]
             if os.path.exists(os.path.join(out, folder)):

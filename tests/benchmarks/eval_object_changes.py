@@ -1,19 +1,27 @@
-"""Object by object, how one model's single point moves between two `sagrid eval` runs on the
-same objects (e.g. a learning curve's held-out fold, before and after its fine-tune), which
-`eval --compare` gives only as means.
+"""Object by object, how one model's single point (or the curator's edits) moves between
+`sagrid eval` runs on the same objects, pooled over several pairs of runs: e.g. each fold of a
+learning curve before and after its fine-tune, each with its own models, which one `eval
+--compare` cannot pool (it pairs the sets of one run).
 
     python3 tests/benchmarks/eval_object_changes.py MODEL BEFORE1,AFTER1 [BEFORE2,AFTER2 ...]
         [--exclude ID ...] [--margin CM]
-        BEFORE / AFTER: eval output folders (their eval.json). Per object the paper's error in
-        cm before and after; then, over the objects not excluded, the means and how many come
-        closer or go farther by more than the margin (default 0.5 cm).
+        MODEL: a model name (the paper's error in cm) or `edits` (the object's point edits, all
+        its models summed). BEFORE / AFTER: eval output folders (their eval.json; for an
+        `eval --compare` run, OUT and OUT/compare-1). Per object the figure before and after;
+        then, over the objects not excluded, the means, the standard error of the per-object
+        differences (the noise the product's guards adopt beyond) and how many go down or up by
+        more than the margin (default 0.5).
 """
 import json
+import math
 import sys
 
 
 def errors(folder, model):
     objects = json.load(open(folder + '/eval.json'))['per_object']
+    if model == 'edits':
+        return {o['id']: sum(n for kinds in o.get('edits', {}).values() for n in kinds.values())
+                for o in objects}
     return {o['id']: o['paper_error_m'][model] * 100 for o in objects
             if model in o.get('paper_error_m', {})}
 
@@ -40,9 +48,15 @@ def main(argv):
         return
     closer = sum(y < x - margin for x, y in kept)
     farther = sum(y > x + margin for x, y in kept)
-    print(f"{len(kept)} objects: {sum(x for x, _ in kept) / len(kept):.1f} -> "
-          f"{sum(y for _, y in kept) / len(kept):.1f} cm; closer {closer}, farther {farther}, "
-          f"within {margin} cm {len(kept) - closer - farther}")
+    n = len(kept)
+    change = [y - x for x, y in kept]
+    mean = sum(change) / n
+    noise = (math.sqrt(sum((d - mean) ** 2 for d in change) / (n - 1) / n) if n > 1
+             else float('nan'))
+    print(f"{n} objects: {sum(x for x, _ in kept) / n:.2f} -> {sum(y for _, y in kept) / n:.2f} "
+          f"(noise {noise:.2f}); sums {sum(x for x, _ in kept):.1f} -> "
+          f"{sum(y for _, y in kept):.1f}; lower {closer}, higher {farther}, "
+          f"within {margin} {n - closer - farther}")
 
 
 if __name__ == '__main__':

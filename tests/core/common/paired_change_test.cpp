@@ -16,6 +16,9 @@ TEST(PairedChange, ABetterMeanBeyondItsStandardErrorIsAdopted) {
   EXPECT_NEAR(c.noise, std::sqrt(1.0 / 3) / 2, 1e-12);
   EXPECT_TRUE(c.clearlyBetter());
   EXPECT_EQ(c.verdict(), "adopted");
+  EXPECT_EQ(c.lower, 2u);
+  EXPECT_EQ(c.higher, 0u);
+  EXPECT_EQ(c.comparison(), "better beyond its noise");
 }
 
 TEST(PairedChange, AGainWithinItsNoiseOrALossIsRefused) {
@@ -24,10 +27,15 @@ TEST(PairedChange, AGainWithinItsNoiseOrALossIsRefused) {
   EXPECT_NEAR(within.noise, 2.5, 1e-12);
   EXPECT_FALSE(within.clearlyBetter());
   EXPECT_EQ(within.verdict(), "refused (better by less than its noise)");
+  EXPECT_EQ(within.comparison(), "within its noise");
+  EXPECT_EQ(within.lower, 1u);
+  EXPECT_EQ(within.higher, 1u);
   const PairedChange worse = pairedChange(std::vector<ObjectFigures>{{1, 2}, {1, 2}, {1, 2}});
   EXPECT_DOUBLE_EQ(worse.noise, 0.0);
   EXPECT_FALSE(worse.clearlyBetter());
   EXPECT_EQ(worse.verdict(), "refused");
+  EXPECT_EQ(worse.comparison(), "worse beyond its noise");
+  EXPECT_EQ(worse.higher, 3u);
   // Equal everywhere: nothing to adopt, though the noise is zero.
   EXPECT_FALSE(pairedChange(std::vector<ObjectFigures>{{1, 1}, {2, 2}}).clearlyBetter());
 }

@@ -62,6 +62,9 @@ TEST(SizeMemoryUpdate, MoreRightByNoMoreThanItsNoiseIsRefused) {
   EXPECT_FALSE(mixed.memory);
   EXPECT_NE(mixed.verdict.find("better by less than its noise"), std::string::npos)
       << mixed.verdict;
+  const std::string md = unitsLosoMarkdown(mixed.report);
+  EXPECT_NE(md.find("3 fixed, 1 broken (noise 2.0 objects): within its noise."), std::string::npos)
+      << md;
   // Two game fridges fixed and nothing broken: beyond the noise.
   const SizeMemoryUpdate clean = updateSizeMemory(nullptr, appliances(3, 2), kCandidates, "hash");
   EXPECT_EQ(clean.rightWithMemory, clean.rightNamedOnly + 2);
