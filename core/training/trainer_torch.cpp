@@ -1,3 +1,5 @@
+#include "core/training/trainer.h"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -11,7 +13,6 @@
 #include "core/common/log.h"
 #include "core/model/affordance_model_impl.h"
 #include "core/training/sample_mixing.h"
-#include "core/training/trainer.h"
 
 namespace sagrid::model {
 namespace fs = std::filesystem;
