@@ -162,6 +162,11 @@ void addTrainingFlags(CLI::App* cmd, Options& o) {
                 "Also read the statistics of the mesh's parts (its families of copies: burner "
                 "caps, rows of knobs, a tap's handles; their size and height), beside the "
                 "descriptor");
+  cmd->add_flag("--file-name", o.inputs.fileName,
+                "Also read the words of the mesh file's name (\"kitchenStove.glb\": kitchen, "
+                "stove), learned from the curated objects' published names (labels holding the "
+                "file's sha256; generated objects do not teach): naive Bayes over the words, "
+                "multiplied into the shape's probabilities");
 }
 
 sagrid::CategoryTrainingOptions trainingOptions(const Options& o) {
@@ -277,15 +282,19 @@ void setupCategory(CLI::App& root) {
                " --l2 " + std::to_string(o->l2) + " --iterations " + std::to_string(o->iterations) +
                (o->linear ? " --linear" : "") + (o->inputs.topRelief ? " --top-relief" : "") +
                (o->inputs.partStatistics ? " --part-statistics" : "") +
+               (o->inputs.fileName ? " --file-name" : "") +
                (o->trees ? " --trees --tree-rounds " + std::to_string(o->treeRounds) +
                                " --tree-depth " + std::to_string(o->treeDepth) +
-                               (o->treeRowShare < 1 ? " --tree-row-share " + std::to_string(o->treeRowShare) : "") +
-                               (o->treeFeatureShare < 1 ? " --tree-feature-share " + std::to_string(o->treeFeatureShare) : "")
+                               (o->treeRowShare < 1
+                                    ? " --tree-row-share " + std::to_string(o->treeRowShare)
+                                    : "") +
+                               (o->treeFeatureShare < 1
+                                    ? " --tree-feature-share " + std::to_string(o->treeFeatureShare)
+                                    : "")
                          : "");
     classifier.training["command"] = command;
     const auto ev = sagrid::evaluateCategories(
-        [&](const sagrid::CategorySample& s) { return classifier.classify(s.descriptor); },
-        samples);
+        [&](const sagrid::CategorySample& s) { return classifier.classify(s); }, samples);
     for (const auto& [cls, c] : ev.byClass)
       classifier.training["train_share_right"][cls] = c.total ? double(c.right) / c.total : 0.0;
     fs::path file = out / sagrid::kCategoryClassifierFile;
@@ -339,7 +348,7 @@ void setupCategory(CLI::App& root) {
         [&](const sagrid::CategorySample& s) {
           if (bar) bar->update(done++);
           if (classifier && !o->retrieval) {
-            const auto d = classifier->classify(s.descriptor, threshold);
+            const auto d = classifier->classify(s.descriptor, s.nameWords, threshold);
             return o->evidence ? evidence.gate(s, d) : d;
           }
           sagrid::CategoryDecision r;
@@ -457,7 +466,7 @@ void setupCategory(CLI::App& root) {
         if (cls != sagrid::kRejectedCategory) {
           if (isGated(cls)) {
             own[cls].push_back(evidence(s, cls));
-            const auto decision = classifier.classify(s.descriptor);
+            const auto decision = classifier.classify(s);
             ownScore[cls].push_back(decision.category == cls ? decision.score : 0.0);
           }
         } else {

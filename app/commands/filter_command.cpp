@@ -86,7 +86,7 @@ void setupFilter(CLI::App& root) {
             files[i].path, features, &source, inputs.topRelief, inputs.partStatistics);
         if (source != sagrid::DescriptorSource::Computed) ++cached;
         const auto& descriptor = object.descriptor;
-        const auto decision = models.decideCategory(object);
+        const auto decision = models.decideCategory(object, files[i].path);
         ranked.push_back({files[i], models.categorySimilarity(descriptor, o->like),
                           decision.category, decision.rejected});
       } catch (const sagrid::Error& e) {

@@ -186,12 +186,13 @@ AnnotationResult annotateMeshFile(const fs::path& meshFile, const std::string& i
     // The classifier with rejection when the models folder has one (reading the mesh's parts
     // where its file says so), else retrieval.
     const CategoryDecision& decision =
-        decided.emplace(models.decideCategory(features, mesh, object.meshParts));
+        decided.emplace(models.decideCategory(features, mesh, object.meshParts, meshFile));
     r.category = decision.category;
     r.categorySimilarity = decision.score;
     r.categoryRetrieved = true;
     r.rejected = decision.rejected;
     r.closestCategory = decision.best;
+    r.categoryNameWords = decision.nameWords;
   } else {
     r.category = options.category;
     r.categorySimilarity = models.categorySimilarity(features.descriptor, options.category);
@@ -212,6 +213,9 @@ AnnotationResult annotateMeshFile(const fs::path& meshFile, const std::string& i
     recordUnitGuess(r.labels.object, unitGuessOf(mesh, features, r.category, models));
   // The model stage's time and the final progress report, on every way out.
   auto finish = [&] {
+    // What of the file's name moved the category (the classifier's known words), for a curator.
+    if (!r.categoryNameWords.empty())
+      r.labels.extra["prediction"]["category_name_words"] = r.categoryNameWords;
     r.modelSeconds = secondsSince(t);
     if (options.onProgress) options.onProgress(1.0f, "done");
   };

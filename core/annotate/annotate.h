@@ -95,6 +95,8 @@ struct AnnotationResult {
   // suggestions (predictions stays empty). closestCategory is its best guess, for a curator.
   bool rejected = false;
   std::string closestCategory;
+  // The words of the mesh file's name that moved the classifier's decision (CategoryDecision).
+  std::vector<std::string> categoryNameWords;
   // Rejected by the evidence gate (EvidenceGate in category_classifier.h): the classifier filed it
   // under closestCategory, but that category's models found too little of it.
   bool rejectedByEvidence = false;

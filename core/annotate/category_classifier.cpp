@@ -134,6 +134,14 @@ CategoryClassifier CategoryClassifier::train(const std::vector<CategorySample>& 
   c.training["objects"] = objects;
   c.training["top_relief"] = options.inputs.topRelief;
   c.training["part_statistics"] = options.inputs.partStatistics;
+  if (options.inputs.fileName) {
+    std::vector<std::pair<std::vector<std::string>, std::string>> named;
+    for (const auto& s : samples)
+      if (s.publishedName) named.emplace_back(s.nameWords, categoryClass(s.category));
+    c.m_names = NameEvidence::count(named, c.m_classes);
+    c.training["file_name"] = true;
+    c.training["named_objects"] = c.m_names.namedObjects();
+  }
   if (options.trees) {
     std::vector<std::vector<float>> rows(n, std::vector<float>(inputs));
     std::vector<float> weight(n);
@@ -192,7 +200,21 @@ CategoryClassifier CategoryClassifier::train(const std::vector<CategorySample>& 
   return c;
 }
 
-std::vector<double> CategoryClassifier::probabilities(const std::vector<float>& descriptor) const {
+std::vector<double> CategoryClassifier::probabilities(
+    const std::vector<float>& descriptor, const std::vector<std::string>& nameWords) const {
+  std::vector<double> p = shapeProbabilities(descriptor);
+  if (!m_inputs.fileName || m_names.empty()) return p;
+  const std::vector<double> ll = m_names.logLikelihoods(nameWords);
+  const double top = *std::max_element(ll.begin(), ll.end());
+  double sum = 0;
+  for (std::size_t a = 0; a < p.size(); ++a) sum += (p[a] *= std::exp(ll[a] - top));
+  if (sum > 0)
+    for (double& v : p) v /= sum;
+  return p;
+}
+
+std::vector<double> CategoryClassifier::shapeProbabilities(
+    const std::vector<float>& descriptor) const {
   if (descriptor.size() != m_centre.size())
     throw InvalidArgument("descriptor of size " + std::to_string(descriptor.size()) +
                           " for a category classifier trained on size " +
@@ -232,13 +254,19 @@ std::vector<double> CategoryClassifier::inputs(const std::vector<float>& descrip
   return out;
 }
 
-CategoryDecision CategoryClassifier::classify(const std::vector<float>& descriptor) const {
-  return classify(descriptor, m_threshold);
+CategoryDecision CategoryClassifier::classify(const std::vector<float>& descriptor,
+                                              const std::vector<std::string>& nameWords) const {
+  return classify(descriptor, nameWords, m_threshold);
+}
+
+CategoryDecision CategoryClassifier::classify(const CategorySample& s) const {
+  return classify(s.descriptor, s.nameWords);
 }
 
 CategoryDecision CategoryClassifier::classify(const std::vector<float>& descriptor,
+                                              const std::vector<std::string>& nameWords,
                                               double threshold) const {
-  const auto p = probabilities(descriptor);
+  const auto p = probabilities(descriptor, nameWords);
   CategoryDecision out;
   double bestAny = -1;
   std::string argmax;
@@ -247,6 +275,7 @@ CategoryDecision CategoryClassifier::classify(const std::vector<float>& descript
     if (m_classes[a] != kRejectedCategory && p[a] > out.score) out.score = p[a], out.best = m_classes[a];
   }
   out.rejected = argmax == kRejectedCategory || out.score < threshold;
+  if (m_inputs.fileName) out.nameWords = m_names.knownWords(nameWords);
   out.category = out.rejected ? kRejectedCategory : out.best;
   return out;
 }
@@ -264,6 +293,7 @@ void CategoryClassifier::save(const std::filesystem::path& file) const {
   j["quadratic"] = m_quadratic;
   j["top_relief"] = m_inputs.topRelief;
   j["part_statistics"] = m_inputs.partStatistics;
+  if (m_inputs.fileName) j["file_name"] = m_names.toJson();
   j["centre"] = m_centre;
   j["scale"] = m_scale;
   if (m_trees.empty()) {
@@ -307,6 +337,14 @@ CategoryClassifier CategoryClassifier::load(const std::filesystem::path& file) {
     c.m_quadratic = j.value("quadratic", false);
     c.m_inputs.topRelief = j.value("top_relief", false);
     c.m_inputs.partStatistics = j.value("part_statistics", false);
+    if (j.contains("file_name")) {
+      c.m_inputs.fileName = true;
+      try {
+        c.m_names = NameEvidence::fromJson(j.at("file_name"));
+      } catch (const InvalidArgument& e) {
+        throw FileError(file, std::string("malformed category classifier: ") + e.what());
+      }
+    }
     if (j.contains("trees")) {
       for (const auto& t : j.at("trees")) {
         try {
@@ -348,6 +386,10 @@ CategoryClassifier CategoryClassifier::load(const std::filesystem::path& file) {
     throw FileError(file,
                     "malformed category classifier: evidence sure_probability is not a "
                     "probability in (0, 1]");
+  if (c.m_inputs.fileName && c.m_names.classes() != c.m_classes)
+    throw FileError(file,
+                    "malformed category classifier: its file-name evidence names other "
+                    "classes than the classifier");
   if (!ok)
     throw FileError(file, "malformed category classifier: classes, centre, scale, weights and bias "
                           "(or trees) do not agree in size");

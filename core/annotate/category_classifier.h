@@ -10,7 +10,9 @@
 // its probability is below `threshold`. Inputs: the descriptor, and as its file says also the
 // relief of the object's top (core/grid/top_relief.h: basins, burner spots, flat lids) and the
 // statistics of the mesh's parts (core/geometry/part_statistics.h: families of copies such as
-// burner caps and rows of knobs), which the descriptor misses. Stored as
+// burner caps and rows of knobs), which the descriptor misses, and the words of the mesh file's
+// name (core/annotate/name_evidence.h: learned from curated objects' names, multiplied into the
+// shape's probabilities). Stored as
 // <models folder>/category.json (kCategoryClassifierFile) next to the model cards.
 #pragma once
 
@@ -22,6 +24,7 @@
 #include <tuple>
 #include <vector>
 
+#include "core/annotate/name_evidence.h"
 #include "core/features/descriptor_cache.h"
 #include "core/points/boosted_trees.h"
 
@@ -34,8 +37,10 @@ inline constexpr const char* kRejectedCategory = "none";
 struct CategoryInputSet {
   bool topRelief = false;       // the relief of the object's top, from its voxels
   bool partStatistics = false;  // the statistics of its mesh's parts
+  bool fileName = false;        // the words of its mesh file's name
   bool operator<(const CategoryInputSet& o) const {
-    return std::tie(topRelief, partStatistics) < std::tie(o.topRelief, o.partStatistics);
+    return std::tie(topRelief, partStatistics, fileName) <
+           std::tie(o.topRelief, o.partStatistics, o.fileName);
   }
 };
 
@@ -44,6 +49,9 @@ struct CategoryDecision {
   double score = 0;      // probability of the best non-"none" class (retrieval: similarity)
   bool rejected = false;
   std::string best;      // the best non-"none" class even when rejected (what a curator may pick)
+  // The words of the file's name that moved the decision beside the shape (those the classifier's
+  // curated names held); empty where it reads no name.
+  std::vector<std::string> nameWords;
 };
 
 struct CategorySample {
@@ -56,6 +64,10 @@ struct CategorySample {
   std::filesystem::path mesh;  // the object's mesh (the evidence gate runs the models on it)
   std::string up;              // its labels' up axis, empty = the caller's
   std::filesystem::path featureCache;  // where its features were cached (the models' runs reuse it)
+  std::vector<std::string> nameWords;  // fileNameWords(mesh)
+  // Its file's name is its publisher's (a curated file, its labels holding the file's sha256):
+  // the name evidence learns from it. Generated objects ("mesh.glb") and renamed ones do not teach.
+  bool publishedName = false;
 };
 
 // The affordance-evidence gate after the classifier (core/annotate/category_evidence.h): an object
@@ -124,10 +136,16 @@ class CategoryClassifier {
                                   const CategoryTrainingOptions& options);
 
   // Class probabilities in classes() order; throws InvalidArgument for a descriptor of the wrong
-  // size.
-  std::vector<double> probabilities(const std::vector<float>& descriptor) const;
-  CategoryDecision classify(const std::vector<float>& descriptor) const;
-  CategoryDecision classify(const std::vector<float>& descriptor, double threshold) const;
+  // size. Where the classifier reads the file's name (inputSet().fileName), the shape's
+  // probabilities times the likelihoods of `nameWords` (fileNameWords of the mesh), normalised.
+  std::vector<double> probabilities(const std::vector<float>& descriptor,
+                                    const std::vector<std::string>& nameWords = {}) const;
+  CategoryDecision classify(const std::vector<float>& descriptor,
+                            const std::vector<std::string>& nameWords = {}) const;
+  CategoryDecision classify(const std::vector<float>& descriptor,
+                            const std::vector<std::string>& nameWords, double threshold) const;
+  // classify(s.descriptor, s.nameWords).
+  CategoryDecision classify(const CategorySample& s) const;
 
   const std::vector<std::string>& classes() const { return m_classes; }
   double threshold() const { return m_threshold; }
@@ -146,6 +164,7 @@ class CategoryClassifier {
  private:
   std::vector<std::string> m_classes;  // "none" always last
   std::vector<float> m_centre, m_scale;
+  std::vector<double> shapeProbabilities(const std::vector<float>& descriptor) const;
   // Standardized (clamped to +-kClamp) descriptor, then its squares when m_quadratic.
   std::vector<double> inputs(const std::vector<float>& descriptor) const;
   bool m_quadratic = false;
@@ -153,6 +172,7 @@ class CategoryClassifier {
   std::vector<std::vector<double>> m_weights;  // classes x inputs (empty with trees)
   std::vector<double> m_bias;
   std::vector<BoostedTrees> m_trees;  // one per class, or none (the softmax decides)
+  NameEvidence m_names;  // counted from the training objects' published names (inputs.fileName)
   double m_threshold = 0.5;
 };
 

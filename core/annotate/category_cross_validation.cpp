@@ -35,7 +35,7 @@ CategoryEvaluation crossValidate(const std::vector<CategorySample>& always, cons
     const auto classifier = CategoryClassifier::train(train, options);
     add(total, evaluateCategories(
                    [&](const CategorySample& s) {
-                     const CategoryDecision d = classifier.classify(s.descriptor);
+                     const CategoryDecision d = classifier.classify(s);
                      return check ? check(s, d) : d;
                    },
                    held));

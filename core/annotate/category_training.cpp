@@ -65,6 +65,9 @@ std::vector<CategorySample> collectCategorySamples(
       s.mesh = entry.mesh;
       s.up = labels.object.up;
       s.featureCache = options.cacheDir;
+      s.nameWords = fileNameWords(entry.mesh);
+      // A curated file keeps its publisher's name; a generated one is "mesh.glb" whatever it is.
+      s.publishedName = !labels.object.sha256.empty() && generator == labels.object.extra.end();
       out.push_back(std::move(s));
     } catch (const Error& err) {
       logger()->warn("category data: skipping {}: {}", entry.id, err.what());

@@ -22,8 +22,9 @@ namespace sagrid {
 // labels.json up axis overrides features.up; objects without labels.json take the manifest's
 // category and features.up. Objects whose features fail are skipped and counted in `failed` (when
 // given). A sample's descriptor is categoryInputs(features, mesh, inputs): the descriptor, then
-// what `inputs` asks for (the relief of the object's top, the statistics of its mesh's parts). Samples keep their mesh, labelled up axis and
-// feature cache.
+// what `inputs` asks for (the relief of the object's top, the statistics of its mesh's parts).
+// Samples keep their mesh, labelled up axis, feature cache and the words of the mesh file's name
+// (a name the classifier learns from where the labels hold the file's sha256 and no generator).
 std::vector<CategorySample> collectCategorySamples(
     const std::filesystem::path& dataDir, const FeatureOptions& features,
     const std::set<std::string>& excludeIds = {},

@@ -222,7 +222,7 @@ CategoryVerdict judgeCategoryUpdate(const CategoryClassifier& candidate, const f
       requireSeveralClasses(samples);
       found = samplesByInputs.emplace(c.inputSet(), std::move(samples)).first;
     }
-    return evaluateCategories([&](const CategorySample& s) { return c.classify(s.descriptor); },
+    return evaluateCategories([&](const CategorySample& s) { return c.classify(s); },
                               found->second);
   };
   const CategoryEvaluation after = evaluate(candidate);
@@ -318,8 +318,8 @@ CategoryVerdict judgeCategoryUpdateBySource(const CategoryRecipe& candidate,
     std::vector<WeightedFolder> judged;
     for (const auto& dir : curated) judged.push_back({dir, 1.0});
     const auto samples = samplesOf(judged, current.inputSet());
-    before = evaluateCategories(
-        [&](const CategorySample& s) { return current.classify(s.descriptor); }, samples);
+    before =
+        evaluateCategories([&](const CategorySample& s) { return current.classify(s); }, samples);
     how += " (the current classifier as it is: " +
            (missing.empty()
                 ? std::string("it records no training folders")

@@ -5,6 +5,7 @@
 #include <map>
 
 #include "core/common/error.h"
+#include "core/common/joined.h"
 #include "core/common/log.h"
 
 namespace sagrid {
@@ -91,20 +92,24 @@ void ModelSet::setCategoryClassifier(CategoryClassifier classifier,
 }
 
 CategoryDecision ModelSet::decideCategory(const FeatureGrid& features, const Mesh& mesh,
-                                          const std::vector<ConnectedPart>* meshParts) const {
+                                          const std::vector<ConnectedPart>* meshParts,
+                                          const std::filesystem::path& meshFile) const {
   if (m_classifier)
     return m_classifier->classify(
-        categoryInputs(features, mesh, m_classifier->inputSet(), meshParts));
+        categoryInputs(features, mesh, m_classifier->inputSet(), meshParts),
+        fileNameWords(meshFile));
   return decideCategory(features.descriptor);
 }
 
-CategoryDecision ModelSet::decideCategory(const ObjectDescriptor& object) const {
+CategoryDecision ModelSet::decideCategory(const ObjectDescriptor& object,
+                                          const std::filesystem::path& meshFile) const {
   if (!m_classifier) return decideCategory(object.descriptor);
   if (m_classifier->inputSet().partStatistics && !object.hasPartStatistics)
     throw InvalidArgument(
         "the category classifier reads the mesh's parts: decide from a descriptor entry that "
         "holds them");
-  return m_classifier->classify(categoryInputs(object, m_classifier->inputSet()));
+  return m_classifier->classify(categoryInputs(object, m_classifier->inputSet()),
+                                fileNameWords(meshFile));
 }
 
 CategoryDecision ModelSet::decideCategory(const std::vector<float>& descriptor) const {
@@ -155,10 +160,8 @@ std::vector<const model::AffordanceModel*> ModelSet::forCategory(
   for (const auto& m : m_models)
     if (m.card().category == category) out.push_back(&m);
   if (out.empty()) {
-    std::string known;
-    for (const auto& c : categories()) known += (known.empty() ? "" : ", ") + c;
-    throw InvalidArgument("no model for category \"" + category + "\" (models exist for: " + known +
-                          ")");
+    throw InvalidArgument("no model for category \"" + category +
+                          "\" (models exist for: " + joined(categories()) + ")");
   }
   return out;
 }

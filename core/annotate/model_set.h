@@ -53,12 +53,15 @@ class ModelSet {
   // The category of an object: the classifier's decision (possibly rejected, category "none")
   // when the folder has one, else the best retrieved category (never rejected).
   // `meshParts`: connectedAndMaterialParts(mesh) where found already (else found here when the
-  // classifier reads them).
+  // classifier reads them). `meshFile`: the file the mesh was read from, whose name's words the
+  // classifier reads where its file says so (empty: the shape alone).
   CategoryDecision decideCategory(const FeatureGrid& features, const Mesh& mesh,
-                                  const std::vector<ConnectedPart>* meshParts = nullptr) const;
+                                  const std::vector<ConnectedPart>* meshParts = nullptr,
+                                  const std::filesystem::path& meshFile = {}) const;
   // The same from what a descriptor cache entry holds (`sagrid filter`): it must hold what the
   // classifier reads (categoryInputSet()).
-  CategoryDecision decideCategory(const ObjectDescriptor& object) const;
+  CategoryDecision decideCategory(const ObjectDescriptor& object,
+                                  const std::filesystem::path& meshFile = {}) const;
   // The same from the descriptor alone; throws InvalidArgument when the classifier also reads the
   // top relief or the parts (categoryInputSet()).
   CategoryDecision decideCategory(const std::vector<float>& descriptor) const;

@@ -10,6 +10,7 @@
 #include "core/annotate/annotate.h"
 #include "core/common/atomic_file.h"
 #include "core/common/error.h"
+#include "core/common/joined.h"
 #include "core/common/log.h"
 #include "core/model/model_card.h"
 
@@ -141,8 +142,7 @@ ConfidenceCalibration readConfidenceCalibration(const std::filesystem::path& mod
   }
   const std::vector<std::string> stale = modelsOfOtherWeights(c, cardWeights);
   if (stale.empty()) return c;
-  std::string models;
-  for (const auto& m : stale) models += (models.empty() ? "" : ", ") + m;
+  const std::string models = joined(stale);
   logger()->warn(
       "{}: the object confidence was fitted on the predictions of other networks than this "
       "folder's cards ({}); it is not used (uncalibrated) until it is fitted again (`sagrid scorer "

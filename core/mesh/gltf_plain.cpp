@@ -12,6 +12,7 @@
 #include "core/common/contained_paths.h"
 #include "core/common/data_uri.h"
 #include "core/common/error.h"
+#include "core/common/joined.h"
 #include "core/common/log.h"
 #include "core/io/json_file.h"
 #include "core/mesh/gltf_asset.h"
@@ -59,10 +60,9 @@ std::vector<std::string> namesIn(const json& document, const char* key) {
 void requireReadableExtensions(const json& document, const fs::path& path) {
   for (const std::string& name : namesIn(document, "extensionsRequired")) {
     if (isRewritten(name) || isSafelyIgnored(name)) continue;
-    std::string readable;
-    for (const auto& r : rewrittenGltfExtensions()) readable += (readable.empty() ? "" : ", ") + r;
     throw FileError(path, "requires the glTF extension " + name +
-                              ", which SAGrid cannot read (it reads " + readable +
+                              ", which SAGrid cannot read (it reads " +
+                              joined(rewrittenGltfExtensions()) +
                               " and ignores material and light extensions)");
   }
 }

@@ -67,7 +67,7 @@ for d in "$work"/sources/*/; do
       --data "$GEN/sinks" --data "$GEN/none" --data "$GEN/glass-stoves" \
       --data "$WILD/wild-train@3" --data "$WILD/wild-val@3" \
       --data "$SH/real-train@3" --data "$SH/real-val@3" --data "$SH/distractors@3" \
-      --data "$root/../shared/data/real-dev@3" --top-relief --part-statistics --trees \
+      --data "$root/../shared/data/real-dev@3" --top-relief --part-statistics --file-name --trees \
       --tree-depth 2 --threshold 0.5 --exclude-split "$d/split.json" --out "$models" \
       > "$d/category.log" 2>&1
   fi

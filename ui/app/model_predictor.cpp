@@ -65,6 +65,7 @@ std::optional<PredictionJob> ModelPredictor::jobFor(const AnnotationDocument& do
     result.category = r.category;
     result.rejected = r.rejected;
     result.closestCategory = r.closestCategory;
+    result.categoryNameWords = r.categoryNameWords;
     result.rejectedByEvidence = r.rejectedByEvidence;
     result.points = r.labels.affordances;
     result.objectConfidence = r.objectConfidence;

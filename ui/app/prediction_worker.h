@@ -24,11 +24,13 @@ struct PredictionResult {
   bool rejected = false;
   std::string closestCategory;
   bool rejectedByEvidence = false;  // filed under closestCategory, whose models found too little
+  std::vector<std::string>
+      categoryNameWords;                // the words of the file's name that moved the category
   std::vector<AffordancePoint> points;  // mesh file coordinates, status "predicted"
   double objectConfidence = 0;          // P(right with one key), core/annotate/object_confidence.h
   std::vector<DistanceField> fields;
-  std::optional<UnitGuess> units;
-  std::optional<std::string> suggestedCategory;  // a rejected object's points are this category's  // from the mesh's size and the category (core/mesh/unit_guess.h)
+  std::optional<UnitGuess> units;  // from the mesh's size and the category (core/mesh/unit_guess.h)
+  std::optional<std::string> suggestedCategory;  // a rejected object's points are this category's
 };
 
 struct PredictionProgress {

@@ -5,6 +5,7 @@
 
 #include "core/annotate/suggested_points.h"
 #include "core/common/error.h"
+#include "core/common/joined.h"
 #include "core/common/log.h"
 #include "core/export/mjcf_export.h"
 #include "core/export/omnigibson_export.h"
@@ -535,6 +536,9 @@ void Session::pollPrediction() {
             ? "shaped like a " + result.closestCategory + ", but the " + result.closestCategory +
                   " models find none of its parts on it: " + points
             : "not a known category (closest: " + result.closestCategory + "): " + points;
+    if (!result.categoryNameWords.empty())
+      m_predictionNote +=
+          " (read from its file's name too: " + joined(result.categoryNameWords) + ")";
     logger()->info("{}: {}; pick the category and run SAGrid, or place the points by hand",
                    m_document->displayName(), m_predictionNote);
   }

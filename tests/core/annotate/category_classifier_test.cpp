@@ -59,8 +59,8 @@ TEST(CategoryClassifier, SeparatesAndRejectsSyntheticClasses) {
   EXPECT_EQ(d.category, "none");
   EXPECT_FALSE(d.best.empty());
   // A threshold above every probability rejects everything.
-  EXPECT_TRUE(c.classify({1, 0, 0, 0, 0, 0}, 1.01).rejected);
-  EXPECT_FALSE(c.classify({1, 0, 0, 0, 0, 0}, 0.5).rejected);
+  EXPECT_TRUE(c.classify({1, 0, 0, 0, 0, 0}, {}, 1.01).rejected);
+  EXPECT_FALSE(c.classify({1, 0, 0, 0, 0, 0}, {}, 0.5).rejected);
   EXPECT_THROW(c.probabilities({1, 2}), InvalidArgument);
 }
 
@@ -283,6 +283,71 @@ TEST(CategoryClassifier, TheMeshsPartsAreStoredAndReadWhenDeciding) {
   EXPECT_EQ(set.decideCategory(entry).category, "stove");
 }
 
+// The shape says nothing (the same noise for every class); the curated objects' file names do.
+std::vector<CategorySample> namedByShapeAlike(std::uint32_t seed) {
+  std::mt19937 rng(seed);
+  std::normal_distribution<float> noise(0.0f, 0.05f);
+  const std::vector<std::pair<std::string, std::string>> kinds = {
+      {"stove", "kitchenStove"}, {"sink", "bathroom_sink"}, {"none", "coffeeMachine"}};
+  std::vector<CategorySample> samples;
+  for (const auto& [category, name] : kinds)
+    for (int i = 0; i < 20; ++i) {
+      CategorySample s = test::categorySample(category + std::to_string(i), category, "test",
+                                              {noise(rng), noise(rng), noise(rng)});
+      s.nameWords = fileNameWords(name + std::to_string(i) + ".glb");
+      s.publishedName = true;
+      samples.push_back(s);
+    }
+  return samples;
+}
+
+TEST(CategoryClassifier, TheFileNamesWordsAreLearnedStoredAndReadWhenDeciding) {
+  auto samples = namedByShapeAlike(13);
+  // Generated objects are "mesh.glb" whatever their class: their name teaches nothing.
+  for (int i = 0; i < 30; ++i) {
+    CategorySample s = test::categorySample("gen" + std::to_string(i), "stove", "gen", {0, 0, 0});
+    s.nameWords = fileNameWords("mesh.glb");
+    samples.push_back(s);
+  }
+  CategoryTrainingOptions options;
+  options.inputs.fileName = true;
+  const ModelSet set = withClassifierReadBack(samples, options);
+  const CategoryClassifier& c = *set.categoryClassifier();
+  EXPECT_TRUE(c.inputSet().fileName);
+  EXPECT_EQ(c.training.at("named_objects"), 60);
+  FeatureGrid grid;
+  grid.descriptor = {0, 0, 0};
+  const Mesh mesh;
+  const CategoryDecision stove = set.decideCategory(grid, mesh, nullptr, "in/my_stove.obj");
+  EXPECT_EQ(stove.category, "stove");
+  EXPECT_EQ(stove.nameWords, std::vector<std::string>{"stove"});  // what moved it, for a curator
+  EXPECT_TRUE(set.decideCategory(grid, mesh, nullptr, "in/model.glb").nameWords.empty());
+  EXPECT_EQ(set.decideCategory(grid, mesh, nullptr, "in/Sink.glb").category, "sink");
+  EXPECT_TRUE(set.decideCategory(grid, mesh, nullptr, "in/coffee.glb").rejected);
+  // Unknown words and the generated objects' "mesh" leave the shape's probabilities as they are.
+  EXPECT_EQ(c.probabilities({0, 0, 0}, fileNameWords("mesh.glb")), c.probabilities({0, 0, 0}));
+  EXPECT_EQ(c.probabilities({0, 0, 0}, {"herd"}), c.probabilities({0, 0, 0}));
+  // Without the input the same samples train a classifier that ignores names.
+  const auto shapeOnly = CategoryClassifier::train(samples, {});
+  EXPECT_FALSE(shapeOnly.inputSet().fileName);
+  EXPECT_EQ(shapeOnly.probabilities({0, 0, 0}, {"stove"}), shapeOnly.probabilities({0, 0, 0}));
+  // A file whose name evidence names other classes than the classifier is refused, named.
+  const auto file = test::freshTempDir() / kCategoryClassifierFile;
+  auto written = CategoryClassifier::train(samples, options);
+  written.save(file);
+  auto j = nlohmann::json::parse(readFileBytes(file));
+  j["file_name"]["classes"] = {"sink", "none", "stove"};
+  j.erase("sha256");
+  writeFileAtomic(file, j.dump());
+  try {
+    CategoryClassifier::load(file);
+    FAIL() << "mismatched name evidence accepted";
+  } catch (const FileError& e) {
+    EXPECT_NE(std::string(e.what()).find(file.string()), std::string::npos);
+    EXPECT_NE(std::string(e.what()).find("file-name evidence"), std::string::npos);
+  }
+}
+
 TEST(CategoryClassifier, ModelSetUsesTheClassifierAndChecksIt) {
   ModelSet set = stoveAndSinkCards();
   auto c = CategoryClassifier::train(blobs(20, 5), {});
@@ -405,7 +470,7 @@ TEST(CategoryClassifier, AnnotateWritesNoneAndNoPointsForARejectedObject) {
   // probability): annotate must not ask any model for points.
   const auto dir = test::freshTempDir();
   auto object = gen::makeObject("none", 5, 0, gen::MeshFormat::Obj);
-  writeEncodedMeshFiles(encodeObj(object.mesh, "mesh"), dir);
+  writeEncodedMeshFiles(encodeObj(object.mesh, "old_toaster"), dir);
   std::vector<model::AffordanceModel> models;
   models.push_back(cardOnly("stove.heatsource", std::vector<float>(64, 0.1f)));
   models.push_back(cardOnly("sink.fluidsource", std::vector<float>(64, 0.2f)));
@@ -417,7 +482,13 @@ TEST(CategoryClassifier, AnnotateWritesNoneAndNoPointsForARejectedObject) {
                                            : i % 3 == 1 ? "sink"
                                                         : "none",
                                            "", std::vector<float>(64, static_cast<float>(i))));
-  auto classifier = CategoryClassifier::train(samples, {});
+  for (auto& s : samples) {  // names too: the words that moved the decision are recorded
+    s.nameWords = {s.category == "none" ? "toaster" : s.category};
+    s.publishedName = true;
+  }
+  CategoryTrainingOptions withNames;
+  withNames.inputs.fileName = true;
+  auto classifier = CategoryClassifier::train(samples, withNames);
   classifier.featureBackend = "embedded";
   classifier.setThreshold(1.01);
   set.setCategoryClassifier(classifier, "category.json");
@@ -426,8 +497,11 @@ TEST(CategoryClassifier, AnnotateWritesNoneAndNoPointsForARejectedObject) {
   options.features.views = 12;
   options.features.renderSize = 32;
   options.suggestions = false;  // the card-only models cannot predict suggestions
-  const auto r = annotateMeshFile(dir / "mesh.obj", "d", set, options, dir);
+  const auto r = annotateMeshFile(dir / "old_toaster.obj", "d", set, options, dir);
   EXPECT_TRUE(r.rejected);
+  EXPECT_EQ(r.categoryNameWords, std::vector<std::string>{"toaster"});
+  EXPECT_EQ(r.labels.extra.at("prediction").at("category_name_words"),
+            nlohmann::json::array({"toaster"}));
   EXPECT_EQ(r.category, "none");
   EXPECT_EQ(r.labels.object.category, "none");
   EXPECT_TRUE(r.labels.affordances.empty());

@@ -1,14 +1,14 @@
 // K-fold cross-validation of the category classifier: balanced deterministic folds, every
 // validated object decided once and never by a classifier that saw it, the other folds teaching
 // the held-out one, and clear errors for impossible fold counts.
-#include "core/annotate/category_cross_validation.h"
-
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <map>
 #include <random>
 #include <set>
 
+#include "core/annotate/category_cross_validation.h"
 #include "core/common/error.h"
 
 namespace sagrid {
@@ -177,6 +177,48 @@ TEST(CategoryCrossValidationBySource, EachSourceIsHeldOutWhole) {
 
   for (auto& s : validated) s.source = "one";
   EXPECT_THROW(crossValidateCategoriesBySource(generated(5), validated, quick()), InvalidArgument);
+}
+
+// The names too are learned without the held-out source: a word only its objects' names hold
+// says nothing of them, one another source's names hold does.
+TEST(CategoryCrossValidationBySource, AHeldOutSourcesNamesTeachNothingOfIt) {
+  std::vector<CategorySample> validated;
+  const auto named = [&](const std::string& source, const std::string& category,
+                         const std::string& name, int i) {
+    CategorySample s = sagrid::sample(source + std::to_string(i), category, 0.0f, 0.0f, "real");
+    s.source = source;
+    s.nameWords = {name};
+    s.publishedName = true;
+    validated.push_back(s);
+  };
+  for (int i = 0; i < 4; ++i) {
+    named("repo/a", "stove", "herd", i);
+    named("repo/b", "stove", "herd", i);
+    named("library/c", "sink", "lavello", i);
+    named("library/d", "none", "kettle", i);
+  }
+  CategoryTrainingOptions options = quick();
+  options.inputs.fileName = true;
+  std::map<std::string, CategoryDecision> withNames, shapeOnly;
+  const auto keep = [](std::map<std::string, CategoryDecision>& into) {
+    return [&into](const CategorySample& s, const CategoryDecision& d) {
+      into[s.id] = d;
+      return d;
+    };
+  };
+  crossValidateCategoriesBySource(generated(20), validated, options, {}, keep(withNames));
+  crossValidateCategoriesBySource(generated(20), validated, quick(), {}, keep(shapeOnly));
+  for (int i = 0; i < 4; ++i) {
+    const std::string k = std::to_string(i);
+    // "herd" is learned from the other stove source.
+    EXPECT_EQ(withNames.at("repo/a" + k).category, "stove");
+    EXPECT_GT(withNames.at("repo/a" + k).score, shapeOnly.at("repo/a" + k).score);
+    // "lavello" and "kettle" only ever named objects of the source held out.
+    for (const std::string& id : {"library/c" + k, "library/d" + k}) {
+      EXPECT_EQ(withNames.at(id).category, shapeOnly.at(id).category) << id;
+      EXPECT_DOUBLE_EQ(withNames.at(id).score, shapeOnly.at(id).score) << id;
+    }
+  }
 }
 
 }  // namespace

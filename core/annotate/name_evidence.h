@@ -1,0 +1,59 @@
+// What the words of a mesh file's name say of its category, learned from curated objects: a
+// publisher names a file "kitchenStove.glb", "coffee_machine.glb" or "lavello.obj" far more often
+// than "model.dae", and a curated set of files from other publishers teaches which words go with
+// which class. Multinomial naive Bayes over the words (each word counted once per object, Laplace
+// smoothing): per class c, log P(words | c) = sum over the object's known words w of
+// log((objects of c whose name holds w + 1) / (words of c's objects + vocabulary size)). Words no
+// curated object's name held say nothing, so a file named "model.glb" is decided by its shape
+// alone. The classifier (category_classifier.h) multiplies its shape probabilities by these
+// likelihoods (the Bayes rule, no weight to tune) where its file says it reads the name.
+#pragma once
+
+#include <filesystem>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+namespace sagrid {
+
+// The words of a file's name without its folder and extension: split at every character that is
+// not a letter and where a lower-case letter meets an upper-case one ("kitchenStoveElectric_2" ->
+// electric, kitchen, stove), lower case (ASCII; UTF-8 bytes stay within their word), words of
+// fewer than three letters dropped; sorted, each once.
+std::vector<std::string> fileNameWords(const std::filesystem::path& file);
+
+class NameEvidence {
+ public:
+  // Counts the words of each named object under its class (`classes` order; an object of another
+  // class is skipped). Objects are (words, class) pairs.
+  static NameEvidence count(
+      const std::vector<std::pair<std::vector<std::string>, std::string>>& objects,
+      const std::vector<std::string>& classes);
+
+  // Per class (the order given to count), the log-likelihood of `words` (duplicates counted once);
+  // all zero when none of them is known, or when nothing was counted.
+  std::vector<double> logLikelihoods(const std::vector<std::string>& words) const;
+
+  // The words of `words` some counted name held (those that move the likelihoods), sorted, once.
+  std::vector<std::string> knownWords(const std::vector<std::string>& words) const;
+
+  bool empty() const { return m_vocabulary == 0; }
+  std::size_t namedObjects() const { return m_objects; }
+  const std::vector<std::string>& classes() const { return m_classes; }
+
+  // {"classes": [...], "objects": N, "words": {class: {word: objects}}}; fromJson throws
+  // InvalidArgument for a record that does not have that shape.
+  nlohmann::json toJson() const;
+  static NameEvidence fromJson(const nlohmann::json& j);
+
+ private:
+  std::vector<std::string> m_classes;
+  std::vector<std::map<std::string, int>>
+      m_words;                   // per class: word -> objects whose name holds it
+  std::vector<double> m_totals;  // per class: words over its objects
+  std::size_t m_vocabulary = 0, m_objects = 0;
+  void finish();  // totals and vocabulary from m_words
+};
+
+}  // namespace sagrid
