@@ -17,6 +17,9 @@
 # CANDIDATES_SH, CANDIDATES_BENCH (`sagrid scorer candidates` files, "point_scorer.json").
 # SCORER_OPTIONS (optional): more options for each repository's `scorer train` (e.g.
 # "--feature-share 1", the decision before session 53), to replay two decisions side by side.
+# CATEGORY_INPUTS (optional): what each repository's classifier reads (default the shipped file's
+# "--top-relief --part-statistics --file-name"; without --file-name: the classifier before session
+# 65), to replay two classifiers side by side.
 # About 6 minutes on 2 cores with cached features (IN_SAMPLE=1: 2).
 set -euo pipefail
 
@@ -67,7 +70,7 @@ for d in "$work"/sources/*/; do
       --data "$GEN/sinks" --data "$GEN/none" --data "$GEN/glass-stoves" \
       --data "$WILD/wild-train@3" --data "$WILD/wild-val@3" \
       --data "$SH/real-train@3" --data "$SH/real-val@3" --data "$SH/distractors@3" \
-      --data "$root/../shared/data/real-dev@3" --top-relief --part-statistics --file-name --trees \
+      --data "$root/../shared/data/real-dev@3" ${CATEGORY_INPUTS:---top-relief --part-statistics --file-name} --trees \
       --tree-depth 2 --threshold 0.5 --exclude-split "$d/split.json" --out "$models" \
       > "$d/category.log" 2>&1
   fi
