@@ -55,7 +55,7 @@ void setupAnnotate(CLI::App& root) {
   struct Options {
     std::string input, list, out, category, models, cache, up, instances = "auto", shard;
     std::vector<std::string> counts;
-    bool force = false, noSuggestions = false;
+    bool force = false, noSuggestions = false, noFileName = false;
     sagrid::PassOptions passes;
     double timeLimit = 600;
   };
@@ -80,6 +80,9 @@ void setupAnnotate(CLI::App& root) {
   cmd->add_flag("--no-suggestions", o->noSuggestions,
                 "An object the category decision rejects gets no points (by default it keeps its "
                 "likeliest category's points, flagged as suggestions, for a curator to confirm)");
+  cmd->add_flag("--no-file-name", o->noFileName,
+                "The category decision reads the shape alone, not the words of the mesh file's "
+                "name (for a collection whose files are named for something else than they hold)");
   cmd->add_option("--models", o->models, "Model folder (default: the installed models)");
   cmd->add_option("--cache", o->cache, "Feature cache folder (default: none)");
   sagrid::app::addUpAxisOption(*cmd, o->up, sagrid::app::kDetectedUpDefault);
@@ -101,6 +104,7 @@ void setupAnnotate(CLI::App& root) {
     options.category = o->category;
     static_cast<sagrid::PassOptions&>(options) = o->passes;
     options.suggestions = !o->noSuggestions;
+    options.readFileName = !o->noFileName;
     // Models, their feature options and confidence map load in the worker process.
     options.features.cacheDir = o->cache;
     if (!o->up.empty()) options.features.up = sagrid::parseUpAxis(o->up);

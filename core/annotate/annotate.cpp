@@ -185,8 +185,8 @@ AnnotationResult annotateMeshFile(const fs::path& meshFile, const std::string& i
   if (options.category.empty()) {
     // The classifier with rejection when the models folder has one (reading the mesh's parts
     // where its file says so), else retrieval.
-    const CategoryDecision& decision =
-        decided.emplace(models.decideCategory(features, mesh, object.meshParts, meshFile));
+    const CategoryDecision& decision = decided.emplace(models.decideCategory(
+        features, mesh, object.meshParts, options.readFileName ? meshFile : fs::path()));
     r.category = decision.category;
     r.categorySimilarity = decision.score;
     r.categoryRetrieved = true;

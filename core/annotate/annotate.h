@@ -71,6 +71,9 @@ struct AnnotateOptions : PassOptions {
   // A rejected object ("none") still gets its likeliest category's points, flagged as suggestions
   // (core/annotate/suggested_points.h); off: no points, as before.
   bool suggestions = true;
+  // The category classifier reads the words of the mesh file's name where its file says so
+  // (core/annotate/name_evidence.h); off: the shape alone (a collection named for other things).
+  bool readFileName = true;
   FeatureOptions features;  // backend must match the cards; cacheDir optional
   InstanceMode mode = InstanceMode::Auto;
   std::map<std::string, int> counts;  // type -> known instance count (InstanceMode::Count)

@@ -33,6 +33,7 @@ std::string annotateOptionsHash(const AnnotateOptions& options) {
       {"symmetries", options.symmetries},
       {"learned_decision", options.learnedDecision},
       {"suggestions", options.suggestions},
+      {"read_file_name", options.readFileName},
       {"passes_version", kPointPassesVersion},
       {"coarse_to_fine",
        options.coarseToFine ? nlohmann::json(*options.coarseToFine) : nlohmann::json("card")},

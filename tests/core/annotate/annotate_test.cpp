@@ -374,15 +374,16 @@ TEST(AnnotationFingerprintTest, EveryPassSwitchChangesTheOptionsHash) {
   // A batch re-annotates an object whose labels were written with other options: switching any
   // pass must change the hash it compares.
   const AnnotateOptions defaults;
-  std::vector<AnnotateOptions> switched(5, defaults);
+  std::vector<AnnotateOptions> switched(6, defaults);
   switched[0].learnedDecision = false;
   switched[1].coarseToFine = false;
   switched[2].coarseToFine = true;
   switched[3].symmetries = 1;
   switched[4].suggestions = false;
+  switched[5].readFileName = false;
   std::set<std::string> hashes{annotateOptionsHash(defaults)};
   for (const auto& options : switched) hashes.insert(annotateOptionsHash(options));
-  EXPECT_EQ(hashes.size(), 6u);
+  EXPECT_EQ(hashes.size(), 7u);
   EXPECT_EQ(annotateOptionsHash(defaults), annotateOptionsHash(AnnotateOptions{}));
 }
 

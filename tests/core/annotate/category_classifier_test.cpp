@@ -502,6 +502,10 @@ TEST(CategoryClassifier, AnnotateWritesNoneAndNoPointsForARejectedObject) {
   EXPECT_EQ(r.categoryNameWords, std::vector<std::string>{"toaster"});
   EXPECT_EQ(r.labels.extra.at("prediction").at("category_name_words"),
             nlohmann::json::array({"toaster"}));
+  options.readFileName = false;  // `annotate --no-file-name`: the shape alone
+  const auto shapeOnly = annotateMeshFile(dir / "old_toaster.obj", "d", set, options, dir);
+  EXPECT_TRUE(shapeOnly.categoryNameWords.empty());
+  EXPECT_FALSE(shapeOnly.labels.extra.at("prediction").contains("category_name_words"));
   EXPECT_EQ(r.category, "none");
   EXPECT_EQ(r.labels.object.category, "none");
   EXPECT_TRUE(r.labels.affordances.empty());
