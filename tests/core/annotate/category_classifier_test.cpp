@@ -335,17 +335,27 @@ TEST(CategoryClassifier, TheFileNamesWordsAreLearnedStoredAndReadWhenDeciding) {
   const auto file = test::freshTempDir() / kCategoryClassifierFile;
   auto written = CategoryClassifier::train(samples, options);
   written.save(file);
-  auto j = nlohmann::json::parse(readFileBytes(file));
-  j["file_name"]["classes"] = {"sink", "none", "stove"};
-  j.erase("sha256");
-  writeFileAtomic(file, j.dump());
-  try {
-    CategoryClassifier::load(file);
-    FAIL() << "mismatched name evidence accepted";
-  } catch (const FileError& e) {
-    EXPECT_NE(std::string(e.what()).find(file.string()), std::string::npos);
-    EXPECT_NE(std::string(e.what()).find("file-name evidence"), std::string::npos);
-  }
+  const auto good = nlohmann::json::parse(readFileBytes(file));
+  const auto refusedNaming = [&](nlohmann::json j, const std::string& problem) {
+    j.erase("sha256");
+    writeFileAtomic(file, j.dump());
+    try {
+      CategoryClassifier::load(file);
+      ADD_FAILURE() << "accepted: " << problem;
+    } catch (const FileError& e) {
+      EXPECT_NE(std::string(e.what()).find(file.string()), std::string::npos);
+      EXPECT_NE(std::string(e.what()).find(problem), std::string::npos) << e.what();
+    }
+  };
+  auto otherClasses = good;
+  otherClasses["file_name"]["classes"] = {"sink", "none", "stove"};
+  refusedNaming(otherClasses, "file-name evidence");
+  auto notCounts = good;
+  notCounts["file_name"]["words"]["stove"] = "kitchen";
+  refusedNaming(notCounts, "malformed name evidence");
+  auto zero = good;
+  zero["file_name"]["words"]["stove"]["kitchen"] = 0;
+  refusedNaming(zero, "counted 0 times");
 }
 
 TEST(CategoryClassifier, ModelSetUsesTheClassifierAndChecksIt) {
