@@ -65,8 +65,8 @@ struct CategorySample {
   std::string up;              // its labels' up axis, empty = the caller's
   std::filesystem::path featureCache;  // where its features were cached (the models' runs reuse it)
   std::vector<std::string> nameWords;  // fileNameWords(mesh)
-  // Its file's name is its publisher's (a curated file, its labels holding the file's sha256):
-  // the name evidence learns from it. Generated objects ("mesh.glb") and renamed ones do not teach.
+  // Its file's name is its publisher's (a curated file: its labels hold the file's sha256 and no
+  // generator record): the name evidence learns from it. Generated objects ("mesh.glb") do not.
   bool publishedName = false;
 };
 

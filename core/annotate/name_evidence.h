@@ -49,9 +49,9 @@ class NameEvidence {
 
  private:
   std::vector<std::string> m_classes;
-  std::vector<std::map<std::string, int>>
-      m_words;                   // per class: word -> objects whose name holds it
-  std::vector<double> m_totals;  // per class: words over its objects
+  // Per class: word -> objects whose name holds it; the sum of those counts; the distinct words.
+  std::vector<std::map<std::string, int>> m_words;
+  std::vector<double> m_totals;
   std::size_t m_vocabulary = 0, m_objects = 0;
   void finish();  // totals and vocabulary from m_words
 };

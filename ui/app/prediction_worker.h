@@ -24,8 +24,8 @@ struct PredictionResult {
   bool rejected = false;
   std::string closestCategory;
   bool rejectedByEvidence = false;  // filed under closestCategory, whose models found too little
-  std::vector<std::string>
-      categoryNameWords;                // the words of the file's name that moved the category
+  // The words of the file's name that moved the category (AnnotationResult::categoryNameWords).
+  std::vector<std::string> categoryNameWords;
   std::vector<AffordancePoint> points;  // mesh file coordinates, status "predicted"
   double objectConfidence = 0;          // P(right with one key), core/annotate/object_confidence.h
   std::vector<DistanceField> fields;
