@@ -16,7 +16,7 @@ void setupGui(CLI::App& root) {
   struct Options {
     std::vector<std::string> paths;
     std::string trainingSet = "training-set";
-    bool noPredict = false;
+    bool noPredict = false, noFileName = false;
     std::string size = "1440x900";
     std::string models;
     std::string curationLog;
@@ -30,6 +30,9 @@ void setupGui(CLI::App& root) {
       ->capture_default_str();
   cmd->add_flag("--no-predict", options->noPredict,
                 "Do not run SAGrid automatically when an object opens");
+  cmd->add_flag("--no-file-name", options->noFileName,
+                "The category decision reads the shape alone, not the words of the mesh file's "
+                "name (for a collection whose files are named for something else than they hold)");
   cmd->add_option("--models", options->models, "Model folder (default resources/models)");
   cmd->add_option("--size", options->size, "Window size WIDTHxHEIGHT")->capture_default_str();
   cmd->add_option("--curation-log", options->curationLog,
@@ -49,6 +52,7 @@ void setupGui(CLI::App& root) {
     appOptions.recentFiles = sagrid::ui::RecentFiles::defaultStorage();
     appOptions.trainingSet = options->trainingSet;
     appOptions.autoPredict = !options->noPredict;
+    appOptions.readFileName = !options->noFileName;
     appOptions.modelsDir = options->models.empty() ? sagrid::ui::ModelPredictor::defaultModelsDir()
                                                    : std::filesystem::path(options->models);
     sagrid::ui::App app(*context, appOptions);

@@ -18,6 +18,7 @@ App::App(GlContext& context, AppOptions options)
       m_predictor(m_options.modelsDir) {
   if (m_options.trainedModelsDir.empty())
     m_options.trainedModelsDir = m_options.trainingSet / "models";
+  m_predictor.setReadFileName(m_options.readFileName);
   if (!m_options.modelsDir.empty()) {
     m_session.setPredictorLookup(
         [this](const AnnotationDocument& doc) { return m_predictor.jobFor(doc); });

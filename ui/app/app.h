@@ -29,6 +29,8 @@ struct AppOptions {
   std::filesystem::path modelsDir;            // model cards for "Run SAGrid"; empty = none
   // Where the Train panel writes models (then used for predictions); empty = trainingSet/models.
   std::filesystem::path trainedModelsDir;
+  // The category classifier reads the words of the mesh file's name (`--no-file-name`: not).
+  bool readFileName = true;
 };
 
 class App {

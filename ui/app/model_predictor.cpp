@@ -48,6 +48,7 @@ std::optional<PredictionJob> ModelPredictor::jobFor(const AnnotationDocument& do
   options.features = m_models->featureOptions();
   options.features.up = document.mesh().fileUp;
   options.confidence = m_confidence;
+  options.readFileName = m_readFileName;
   const fs::path mesh = document.meshPath();
   const fs::path labelsDir = document.labelsPath().parent_path();
   const std::string id = document.labels().object.id;

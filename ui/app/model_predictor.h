@@ -31,11 +31,15 @@ class ModelPredictor {
   const ConfidenceCalibration& confidence() const { return m_confidence; }
   const std::filesystem::path& modelsDir() const { return m_modelsDir; }
   void setModelsDir(std::filesystem::path dir) { m_modelsDir = std::move(dir), reload(); }
+  // Whether the category classifier reads the words of the mesh file's name (AnnotateOptions::
+  // readFileName; `sagrid gui --no-file-name`: the shape alone).
+  void setReadFileName(bool read) { m_readFileName = read; }
 
  private:
   std::filesystem::path m_modelsDir;
   std::shared_ptr<const ModelSet> m_models;
   bool m_loadFailed = false;
+  bool m_readFileName = true;
   ConfidenceCalibration m_confidence;
 };
 

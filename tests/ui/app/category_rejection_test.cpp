@@ -37,6 +37,22 @@ TEST(CategoryRejection, RejectedObjectOpensWithNoPointsAndCuratorPicksCategory) 
   EXPECT_EQ(readLabels(dir / "fresh" / "labels.json").object.category, "stove");
 }
 
+TEST(CategoryRejection, TheNoteNamesTheWordsOfTheFileNameThatMovedTheDecision) {
+  const auto dir = sagrid::test::freshTempDir();
+  ScriptedApp s(dir);
+  auto& session = s.app->session();
+  session.openObject(dir / "mesh.obj", dir / "labels.json");
+  PredictionResult r;
+  r.category = "none";
+  r.rejected = true;
+  r.closestCategory = "sink";
+  r.categoryNameWords = {"coffee", "machine"};
+  s.predict(r);
+  EXPECT_EQ(session.predictionNote(),
+            "not a known category (closest: sink): no points (read from its file's name too: "
+            "coffee, machine)");
+}
+
 TEST(CategoryRejection, TheObjectPanelSaysWhyTheEvidenceGateRejected) {
   const auto dir = sagrid::test::freshTempDir();
   ScriptedApp s(dir);
