@@ -37,15 +37,21 @@ TEST(CategoryRejection, RejectedObjectOpensWithNoPointsAndCuratorPicksCategory) 
   EXPECT_EQ(readLabels(dir / "fresh" / "labels.json").object.category, "stove");
 }
 
+// What annotateMeshFile returns for an object rejected with `closest` its likeliest category.
+PredictionResult rejectedAs(const std::string& closest) {
+  PredictionResult r;
+  r.category = "none";
+  r.rejected = true;
+  r.closestCategory = closest;
+  return r;
+}
+
 TEST(CategoryRejection, TheNoteNamesTheWordsOfTheFileNameThatMovedTheDecision) {
   const auto dir = sagrid::test::freshTempDir();
   ScriptedApp s(dir);
   auto& session = s.app->session();
   session.openObject(dir / "mesh.obj", dir / "labels.json");
-  PredictionResult r;
-  r.category = "none";
-  r.rejected = true;
-  r.closestCategory = "sink";
+  PredictionResult r = rejectedAs("sink");
   r.categoryNameWords = {"coffee", "machine"};
   s.predict(r);
   EXPECT_EQ(session.predictionNote(),
@@ -58,10 +64,8 @@ TEST(CategoryRejection, TheObjectPanelSaysWhyTheEvidenceGateRejected) {
   ScriptedApp s(dir);
   auto& session = s.app->session();
   session.openObject(dir / "mesh.obj", dir / "labels.json");
-  PredictionResult r;
-  r.category = "none";
-  r.rejected = r.rejectedByEvidence = true;
-  r.closestCategory = "sink";
+  PredictionResult r = rejectedAs("sink");
+  r.rejectedByEvidence = true;
   s.predict(r);
   EXPECT_EQ(session.predictionNote(),
             "shaped like a sink, but the sink models find none of its parts on it: no points");
