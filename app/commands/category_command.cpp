@@ -19,6 +19,7 @@
 #include "core/annotate/category_training.h"
 #include "core/annotate/category_update.h"
 #include "core/annotate/model_set.h"
+#include "core/common/atomic_file.h"
 #include "core/common/error.h"
 #include "core/common/resource_paths.h"
 #include "core/dataset/dataset.h"
@@ -74,7 +75,7 @@ struct Options {
   std::vector<std::string> data, validate, gated, guard, guardBySource;
   int folds = 5;
   bool bySource = false;  // category cv: leave one source out
-  std::string out, models, exclude, split, splitOut, up, cache;
+  std::string out, models, exclude, split, splitOut, up, cache, decisions;
   double threshold = -1, l2 = 1e-2, keep = 0.98, sureAbove = 0;
   int iterations = 20000, treeRounds = 100, treeDepth = 3;
   float treeRowShare = 1.0f, treeFeatureShare = 1.0f;
@@ -382,6 +383,10 @@ void setupCategory(CLI::App& root) {
                "fold, decided by a classifier that saw none of its objects");
   cv->add_option("--models", o->models,
                  "Models folder whose feature settings to use (default resources/models)");
+  cv->add_option("--decisions", o->decisions,
+                 "Also write every validated object's decision to this file, one JSON object a "
+                 "line: id, group, source, mesh, truth, decided category, each class's probability "
+                 "as decided and from the shape alone, the words of its file's name that moved it");
   addTrainingFlags(cv, *o);
   addEvidenceFlags(cv, *o);
   cv->callback([o] {
@@ -400,14 +405,29 @@ void setupCategory(CLI::App& root) {
     // Each fold's classifier, then the shipped evidence gate (fitted on objects of the category
     // only: it never saw a distractor).
     const auto onFold = [](int k, int folds) { std::fprintf(stderr, "fold %d/%d: training\n", k + 1, folds); };
+    std::string decisions;  // --decisions: a JSON line per validated object
     sagrid::CategoryCheck check;
-    if (evidence)
+    if (evidence || !o->decisions.empty())
       check = [&](const sagrid::CategorySample& s, const sagrid::CategoryDecision& d) {
-        return evidence->gate(s, d);
+        const sagrid::CategoryDecision decided = evidence ? evidence->gate(s, d) : d;
+        if (!o->decisions.empty())
+          decisions += nlohmann::json{{"id", s.id},
+                                      {"group", s.group},
+                                      {"source", s.source},
+                                      {"mesh", s.mesh.string()},
+                                      {"truth", sagrid::categoryClass(s.category)},
+                                      {"decided", decided.category},
+                                      {"probabilities", decided.probabilities},
+                                      {"shape_probabilities", decided.shapeProbabilities},
+                                      {"name_words", decided.nameWords}}
+                           .dump() +
+                       "\n";
+        return decided;
       };
     const auto ev = o->bySource
                         ? sagrid::crossValidateCategoriesBySource(always, validated, trainingOptions(*o), onFold, check)
                         : sagrid::crossValidateCategories(always, validated, o->folds, trainingOptions(*o), onFold, check);
+    if (!o->decisions.empty()) sagrid::writeFileAtomic(o->decisions, decisions);
     std::cout << "# " << (o->bySource ? std::string("leave-one-source-out") : std::to_string(o->folds) + "-fold")
               << " cross-validation over " << validated.size() << " objects\n\n"
               << sagrid::categoryEvaluationTable(ev);

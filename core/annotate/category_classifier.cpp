@@ -202,7 +202,11 @@ CategoryClassifier CategoryClassifier::train(const std::vector<CategorySample>& 
 
 std::vector<double> CategoryClassifier::probabilities(
     const std::vector<float>& descriptor, const std::vector<std::string>& nameWords) const {
-  std::vector<double> p = shapeProbabilities(descriptor);
+  return withNameEvidence(shapeProbabilities(descriptor), nameWords);
+}
+
+std::vector<double> CategoryClassifier::withNameEvidence(
+    std::vector<double> p, const std::vector<std::string>& nameWords) const {
   if (!m_inputs.fileName || m_names.empty()) return p;
   const std::vector<double> ll = m_names.logLikelihoods(nameWords);
   const double top = *std::max_element(ll.begin(), ll.end());
@@ -266,8 +270,13 @@ CategoryDecision CategoryClassifier::classify(const CategorySample& s) const {
 CategoryDecision CategoryClassifier::classify(const std::vector<float>& descriptor,
                                               const std::vector<std::string>& nameWords,
                                               double threshold) const {
-  const auto p = probabilities(descriptor, nameWords);
+  const auto shape = shapeProbabilities(descriptor);
+  const auto p = withNameEvidence(shape, nameWords);
   CategoryDecision out;
+  for (std::size_t a = 0; a < m_classes.size(); ++a) {
+    out.probabilities[m_classes[a]] = p[a];
+    out.shapeProbabilities[m_classes[a]] = shape[a];
+  }
   double bestAny = -1;
   std::string argmax;
   for (std::size_t a = 0; a < m_classes.size(); ++a) {

@@ -52,6 +52,9 @@ struct CategoryDecision {
   // The words of the file's name that moved the decision beside the shape (those the classifier's
   // curated names held); empty where it reads no name.
   std::vector<std::string> nameWords;
+  // The classifier's probability of each class as decided, and from the shape alone (the same
+  // where no name moved it); empty for retrieval.
+  std::map<std::string, double> probabilities, shapeProbabilities;
 };
 
 struct CategorySample {
@@ -165,6 +168,9 @@ class CategoryClassifier {
   std::vector<std::string> m_classes;  // "none" always last
   std::vector<float> m_centre, m_scale;
   std::vector<double> shapeProbabilities(const std::vector<float>& descriptor) const;
+  // `shape` times the likelihoods of `nameWords` where the classifier reads names, normalised.
+  std::vector<double> withNameEvidence(std::vector<double> shape,
+                                       const std::vector<std::string>& nameWords) const;
   // Standardized (clamped to +-kClamp) descriptor, then its squares when m_quadratic.
   std::vector<double> inputs(const std::vector<float>& descriptor) const;
   bool m_quadratic = false;

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <set>
 
 #include "core/annotate/category_classifier.h"
 #include "core/common/atomic_file.h"
@@ -135,6 +136,42 @@ TEST(CategoryCli, TheGuardBySourceRefusesAWorseRecipe) {
   EXPECT_THAT(r.output, HasSubstr("excludes"));
   EXPECT_EQ(readFileBytes(models / kCategoryClassifierFile), shipped);
   EXPECT_FALSE(fs::exists(models / "refused"));
+}
+
+// `category cv --decisions`: every validated object's decision as a JSON line, with the
+// probabilities as decided and from the shape alone, for analyses outside the product.
+TEST(CategoryCli, CrossValidationWritesEachObjectsDecision) {
+  const fs::path dir = test::freshTempDir();
+  gen::generateDataset({{"stove", 2, 51}, {"sink", 2, 52}, {"none", 2, 53}}, gen::MeshFormat::Obj,
+                       dir / "train");
+  gen::generateDataset({{"stove", 2, 54}, {"sink", 2, 55}, {"none", 2, 56}}, gen::MeshFormat::Obj,
+                       dir / "curated");
+  test::assignSources(dir / "curated", {"repo-a", "repo-b"});
+  const fs::path file = dir / "decisions.jsonl";
+  const auto r = runSagrid("category cv --data " + quotedPath(dir / "train") + " --validate " +
+                           quotedPath(dir / "curated") + " --by-source --iterations 1 --file-name" +
+                           " --decisions " + quotedPath(file));
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  std::ifstream in(file);
+  std::string line;
+  std::set<std::string> sources;
+  int lines = 0;
+  while (std::getline(in, line)) {
+    const auto j = nlohmann::json::parse(line);
+    ++lines;
+    sources.insert(j.at("source").get<std::string>());
+    EXPECT_TRUE(fs::exists(j.at("mesh").get<std::string>()));
+    double sum = 0;
+    for (const auto& [cls, p] : j.at("probabilities").items()) sum += p.get<double>();
+    EXPECT_NEAR(sum, 1.0, 1e-9) << line;
+    EXPECT_EQ(j.at("shape_probabilities").size(), j.at("probabilities").size());
+    // Generated files are all "mesh.obj": no curated name taught a word, so nothing moved them.
+    EXPECT_TRUE(j.at("name_words").empty());
+    EXPECT_EQ(j.at("probabilities"), j.at("shape_probabilities"));
+    EXPECT_THAT(std::string("stove sink none"), HasSubstr(j.at("truth").get<std::string>()));
+  }
+  EXPECT_EQ(lines, 6);
+  EXPECT_EQ(sources, (std::set<std::string>{"repo-a", "repo-b"}));
 }
 
 }  // namespace
