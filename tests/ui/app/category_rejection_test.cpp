@@ -11,6 +11,23 @@ namespace {
 
 using test::ScriptedApp;
 
+// What annotateMeshFile returns for an object rejected with `closest` its likeliest category.
+PredictionResult rejectedAs(const std::string& closest) {
+  PredictionResult r;
+  r.category = "none";
+  r.rejected = true;
+  r.closestCategory = closest;
+  return r;
+}
+
+// A scripted window with the scene's own object open.
+struct OpenScene {
+  std::filesystem::path dir = sagrid::test::freshTempDir();
+  ScriptedApp scripted{dir};
+  OpenScene() { session().openObject(dir / "mesh.obj", dir / "labels.json"); }
+  Session& session() { return scripted.app->session(); }
+};
+
 TEST(CategoryRejection, RejectedObjectOpensWithNoPointsAndCuratorPicksCategory) {
   const auto dir = sagrid::test::freshTempDir();
   ScriptedApp s(dir);
@@ -23,11 +40,7 @@ TEST(CategoryRejection, RejectedObjectOpensWithNoPointsAndCuratorPicksCategory) 
   std::filesystem::copy_file(dir / "mesh.obj", dir / "fresh" / "mesh.obj");
   auto& session = s.app->session();
   session.openObject(dir / "fresh" / "mesh.obj", dir / "fresh" / "labels.json");
-  PredictionResult r;
-  r.category = "none";  // what annotateMeshFile returns for a rejected object
-  r.rejected = true;
-  r.closestCategory = "stove";
-  s.predict(r);
+  s.predict(rejectedAs("stove"));
   EXPECT_EQ(s.document().labels().object.category, "none");
   EXPECT_TRUE(s.document().points().empty());
   EXPECT_EQ(readLabels(dir / "fresh" / "labels.json").object.category, "none");
@@ -37,36 +50,22 @@ TEST(CategoryRejection, RejectedObjectOpensWithNoPointsAndCuratorPicksCategory) 
   EXPECT_EQ(readLabels(dir / "fresh" / "labels.json").object.category, "stove");
 }
 
-// What annotateMeshFile returns for an object rejected with `closest` its likeliest category.
-PredictionResult rejectedAs(const std::string& closest) {
-  PredictionResult r;
-  r.category = "none";
-  r.rejected = true;
-  r.closestCategory = closest;
-  return r;
-}
-
 TEST(CategoryRejection, TheNoteNamesTheWordsOfTheFileNameThatMovedTheDecision) {
-  const auto dir = sagrid::test::freshTempDir();
-  ScriptedApp s(dir);
-  auto& session = s.app->session();
-  session.openObject(dir / "mesh.obj", dir / "labels.json");
+  OpenScene open;
   PredictionResult r = rejectedAs("sink");
   r.categoryNameWords = {"coffee", "machine"};
-  s.predict(r);
-  EXPECT_EQ(session.predictionNote(),
+  open.scripted.predict(r);
+  EXPECT_EQ(open.session().predictionNote(),
             "not a known category (closest: sink): no points (read from its file's name too: "
             "coffee, machine)");
 }
 
 TEST(CategoryRejection, TheObjectPanelSaysWhyTheEvidenceGateRejected) {
-  const auto dir = sagrid::test::freshTempDir();
-  ScriptedApp s(dir);
-  auto& session = s.app->session();
-  session.openObject(dir / "mesh.obj", dir / "labels.json");
+  OpenScene open;
   PredictionResult r = rejectedAs("sink");
   r.rejectedByEvidence = true;
-  s.predict(r);
+  open.scripted.predict(r);
+  auto& session = open.session();
   EXPECT_EQ(session.predictionNote(),
             "shaped like a sink, but the sink models find none of its parts on it: no points");
   // The next prediction (or object) starts without it.
