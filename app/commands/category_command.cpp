@@ -79,6 +79,7 @@ struct Options {
   double threshold = -1, l2 = 1e-2, keep = 0.98, sureAbove = 0;
   int iterations = 20000, treeRounds = 100, treeDepth = 3;
   float treeRowShare = 1.0f, treeFeatureShare = 1.0f;
+  std::optional<double> nameWeight;  // --name-weight: fixed instead of fitted
   bool trees = false;
   bool retrieval = false, linear = false, evidence = false;
   sagrid::CategoryInputSet inputs;
@@ -167,7 +168,12 @@ void addTrainingFlags(CLI::App* cmd, Options& o) {
                 "Also read the words of the mesh file's name (\"kitchenStove.glb\": kitchen, "
                 "stove), learned from the curated objects' published names (labels holding the "
                 "file's sha256; generated objects do not teach): naive Bayes over the words, "
-                "multiplied into the shape's probabilities");
+                "multiplied into the shape's probabilities, their likelihoods weighed as the "
+                "curated objects of each source, decided without it, were likeliest");
+  cmd->add_option("--name-weight", o.nameWeight,
+                  "With --file-name: weigh the words' likelihoods by this power instead of "
+                  "fitting it (1: the Bayes rule, as before session 66)")
+      ->check(CLI::Range(0.0, sagrid::kMaxNameWeight));
 }
 
 sagrid::CategoryTrainingOptions trainingOptions(const Options& o) {
@@ -181,8 +187,30 @@ sagrid::CategoryTrainingOptions trainingOptions(const Options& o) {
   options.boosting.depth = o.treeDepth;
   options.boosting.rowShare = o.treeRowShare;
   options.boosting.featureShare = o.treeFeatureShare;
+  options.nameWeight = o.nameWeight;
   if (o.threshold >= 0) options.threshold = o.threshold;
   return options;
+}
+
+// How a classifier that reads file names weighs them (CategoryClassifier::training's record).
+void printNameWeight(const nlohmann::json& training) {
+  if (!training.contains("file_name_weight")) return;
+  const nlohmann::json& w = training.at("file_name_weight");
+  const double weight = w.value("weight", 1.0);
+  const nlohmann::json likelihood = w.value("log_likelihood", nlohmann::json::object());
+  if (w.value("fixed", false))
+    std::fprintf(stderr, "file names weighed %.3g (--name-weight)\n", weight);
+  else if (w.value("held_out_objects", 0) == 0)
+    std::fprintf(stderr,
+                 "file names weighed 1 (the Bayes rule): no curated names of two sources "
+                 "to learn a weight from\n");
+  else
+    std::fprintf(stderr,
+                 "file names weighed %.3g: the likeliest weight for %d curated objects of %d "
+                 "sources, each decided without its source (log-likelihood %.1f by the Bayes "
+                 "rule, %.1f weighed)\n",
+                 weight, w.value("held_out_objects", 0), w.value("sources", 0),
+                 likelihood.value("bayes_rule", 0.0), likelihood.value("fitted", 0.0));
 }
 
 // The guard on a classifier update (core/annotate/category_update.h): the verdict goes to stdout
@@ -284,6 +312,7 @@ void setupCategory(CLI::App& root) {
                (o->linear ? " --linear" : "") + (o->inputs.topRelief ? " --top-relief" : "") +
                (o->inputs.partStatistics ? " --part-statistics" : "") +
                (o->inputs.fileName ? " --file-name" : "") +
+               (o->nameWeight ? " --name-weight " + std::to_string(*o->nameWeight) : "") +
                (o->trees ? " --trees --tree-rounds " + std::to_string(o->treeRounds) +
                                " --tree-depth " + std::to_string(o->treeDepth) +
                                (o->treeRowShare < 1
@@ -310,6 +339,7 @@ void setupCategory(CLI::App& root) {
     classifier.save(file);
     std::cout << "# training objects\n\n" << sagrid::categoryEvaluationTable(ev) << "\n";
     std::fprintf(stderr, "wrote %s (%zu objects)\n", file.string().c_str(), samples.size());
+    printNameWeight(classifier.training);
   });
 
   auto* eval = cmd->add_subcommand(
@@ -383,10 +413,12 @@ void setupCategory(CLI::App& root) {
                "fold, decided by a classifier that saw none of its objects");
   cv->add_option("--models", o->models,
                  "Models folder whose feature settings to use (default resources/models)");
-  cv->add_option("--decisions", o->decisions,
-                 "Also write every validated object's decision to this file, one JSON object a "
-                 "line: id, group, source, mesh, truth, decided category, each class's probability "
-                 "as decided and from the shape alone, the words of its file's name that moved it");
+  cv->add_option(
+      "--decisions", o->decisions,
+      "Also write every validated object's decision to this file, one JSON object a "
+      "line: id, group, source, mesh, truth, decided category, each class's probability "
+      "as decided and from the shape alone, the words of its file's name that moved it and "
+      "their weight");
   addTrainingFlags(cv, *o);
   addEvidenceFlags(cv, *o);
   cv->callback([o] {
@@ -419,7 +451,8 @@ void setupCategory(CLI::App& root) {
                                       {"decided", decided.category},
                                       {"probabilities", decided.probabilities},
                                       {"shape_probabilities", decided.shapeProbabilities},
-                                      {"name_words", decided.nameWords}}
+                                      {"name_words", decided.nameWords},
+                                      {"name_weight", decided.nameWeight}}
                            .dump() +
                        "\n";
         return decided;

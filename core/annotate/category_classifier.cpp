@@ -5,6 +5,7 @@
 #include <cmath>
 #include <map>
 
+#include "core/annotate/name_weight_fit.h"
 #include "core/common/atomic_file.h"
 #include "core/common/error.h"
 #include "core/common/sha256.h"
@@ -141,6 +142,14 @@ CategoryClassifier CategoryClassifier::train(const std::vector<CategorySample>& 
     c.m_names = NameEvidence::count(named, c.m_classes);
     c.training["file_name"] = true;
     c.training["named_objects"] = c.m_names.namedObjects();
+    if (options.nameWeight) {
+      c.m_names.setWeight(*options.nameWeight);
+      c.training["file_name_weight"] = {{"weight", *options.nameWeight}, {"fixed", true}};
+    } else {
+      const NameWeightFit weight = fitNameWeightBySource(samples, options, c.m_classes);
+      c.m_names.setWeight(weight.weight);
+      c.training["file_name_weight"] = weight.toJson();
+    }
   }
   if (options.trees) {
     std::vector<std::vector<float>> rows(n, std::vector<float>(inputs));
@@ -211,7 +220,8 @@ std::vector<double> CategoryClassifier::withNameEvidence(
   const std::vector<double> ll = m_names.logLikelihoods(nameWords);
   const double top = *std::max_element(ll.begin(), ll.end());
   double sum = 0;
-  for (std::size_t a = 0; a < p.size(); ++a) sum += (p[a] *= std::exp(ll[a] - top));
+  for (std::size_t a = 0; a < p.size(); ++a)
+    sum += (p[a] *= std::exp(m_names.weight() * (ll[a] - top)));
   if (sum > 0)
     for (double& v : p) v /= sum;
   return p;
@@ -284,7 +294,10 @@ CategoryDecision CategoryClassifier::classify(const std::vector<float>& descript
     if (m_classes[a] != kRejectedCategory && p[a] > out.score) out.score = p[a], out.best = m_classes[a];
   }
   out.rejected = argmax == kRejectedCategory || out.score < threshold;
-  if (m_inputs.fileName) out.nameWords = m_names.knownWords(nameWords);
+  if (m_inputs.fileName) {
+    out.nameWords = m_names.knownWords(nameWords);
+    out.nameWeight = m_names.weight();
+  }
   out.category = out.rejected ? kRejectedCategory : out.best;
   return out;
 }

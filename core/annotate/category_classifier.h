@@ -12,7 +12,7 @@
 // statistics of the mesh's parts (core/geometry/part_statistics.h: families of copies such as
 // burner caps and rows of knobs), which the descriptor misses, and the words of the mesh file's
 // name (core/annotate/name_evidence.h: learned from curated objects' names, multiplied into the
-// shape's probabilities). Stored as
+// shape's probabilities with the weight core/annotate/name_weight_fit.h learns). Stored as
 // <models folder>/category.json (kCategoryClassifierFile) next to the model cards.
 #pragma once
 
@@ -52,6 +52,8 @@ struct CategoryDecision {
   // The words of the file's name that moved the decision beside the shape (those the classifier's
   // curated names held); empty where it reads no name.
   std::vector<std::string> nameWords;
+  // The power of those words' likelihoods (name_weight_fit.h); 0 where it reads no name.
+  double nameWeight = 0;
   // The classifier's probability of each class as decided, and from the shape alone (the same
   // where no name moved it); empty for retrieval.
   std::map<std::string, double> probabilities, shapeProbabilities;
@@ -106,6 +108,9 @@ struct CategoryTrainingOptions {
   // What the samples' inputs hold beside the descriptor (categoryInputs); recorded in the file so
   // that classification appends the same.
   CategoryInputSet inputs;
+  // With inputs.fileName: the power of the words' likelihoods, fixed; unset, it is fitted
+  // (name_weight_fit.h).
+  std::optional<double> nameWeight;
   // Boosted trees per class (one against the rest, on the standardized inputs without squares)
   // instead of the softmax; a class's probability is its trees' sigmoid over the classes' sum.
   bool trees = false;

@@ -265,6 +265,15 @@ CategoryRecipe recipeOf(const CategoryClassifier& classifier, std::vector<std::s
   options.quadratic = record.value("quadratic", options.quadratic);
   options.threshold = classifier.threshold();
   options.inputs = classifier.inputSet();
+  // A weight that was fixed stays fixed; a file that read names before the weight was learned
+  // (session 66) read them by the Bayes rule.
+  if (options.inputs.fileName) {
+    const nlohmann::json weight = record.value("file_name_weight", nlohmann::json::object());
+    if (weight.value("fixed", false))
+      options.nameWeight = weight.value("weight", 1.0);
+    else if (!record.contains("file_name_weight"))
+      options.nameWeight = 1.0;
+  }
   if (record.contains("trees")) {  // the same kind of classifier
     const nlohmann::json& trees = record.at("trees");
     options.trees = true;

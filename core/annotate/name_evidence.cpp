@@ -88,10 +88,18 @@ std::vector<double> NameEvidence::logLikelihoods(const std::vector<std::string>&
   return ll;
 }
 
+void NameEvidence::setWeight(double weight) {
+  if (!std::isfinite(weight) || weight < 0)
+    throw InvalidArgument(
+        "the weight of the file-name evidence must be a finite number >= 0, got " +
+        std::to_string(weight));
+  m_weight = weight;
+}
+
 nlohmann::json NameEvidence::toJson() const {
   nlohmann::json words = nlohmann::json::object();
   for (std::size_t c = 0; c < m_classes.size(); ++c) words[m_classes[c]] = m_words[c];
-  return {{"classes", m_classes}, {"objects", m_objects}, {"words", words}};
+  return {{"classes", m_classes}, {"objects", m_objects}, {"words", words}, {"weight", m_weight}};
 }
 
 NameEvidence NameEvidence::fromJson(const nlohmann::json& j) {
@@ -99,6 +107,7 @@ NameEvidence NameEvidence::fromJson(const nlohmann::json& j) {
   try {
     e.m_classes = j.at("classes").get<std::vector<std::string>>();
     e.m_objects = j.at("objects").get<std::size_t>();
+    if (j.contains("weight")) e.setWeight(j.at("weight").get<double>());
     for (const auto& cls : e.m_classes) {
       const auto& counts = j.at("words").at(cls);
       e.m_words.push_back(counts.get<std::map<std::string, int>>());
@@ -112,6 +121,63 @@ NameEvidence NameEvidence::fromJson(const nlohmann::json& j) {
   }
   e.finish();
   return e;
+}
+
+namespace {
+void checkCase(const HeldOutNameCase& c) {
+  if (c.shape.size() != c.logLikelihoods.size() || c.truth >= c.shape.size())
+    throw InvalidArgument("a held-out name case with " + std::to_string(c.shape.size()) +
+                          " shape probabilities, " + std::to_string(c.logLikelihoods.size()) +
+                          " log-likelihoods and true class " + std::to_string(c.truth));
+}
+// The case's class probabilities under weight w (log-space, so a shape probability of 0 stays 0).
+std::vector<double> weighted(const HeldOutNameCase& c, double w) {
+  std::vector<double> log(c.shape.size());
+  for (std::size_t a = 0; a < log.size(); ++a)
+    log[a] = (c.shape[a] > 0 ? std::log(c.shape[a]) : -INFINITY) + w * c.logLikelihoods[a];
+  const double top = *std::max_element(log.begin(), log.end());
+  double sum = 0;
+  for (double& v : log) sum += (v = std::exp(v - top));
+  for (double& v : log) v /= sum;
+  return log;
+}
+// d/dw of heldOutLogLikelihood: sum over cases of ll(truth) - the expected ll under p_w.
+double slope(const std::vector<HeldOutNameCase>& cases, double w) {
+  double g = 0;
+  for (const auto& c : cases) {
+    const auto p = weighted(c, w);
+    g += c.logLikelihoods[c.truth];
+    for (std::size_t a = 0; a < p.size(); ++a) g -= p[a] * c.logLikelihoods[a];
+  }
+  return g;
+}
+}  // namespace
+
+double heldOutLogLikelihood(const std::vector<HeldOutNameCase>& cases, double weight) {
+  double sum = 0;
+  for (const auto& c : cases) {
+    checkCase(c);
+    sum += std::log(std::max(weighted(c, weight)[c.truth], 1e-300));
+  }
+  return sum;
+}
+
+double fitNameWeight(const std::vector<HeldOutNameCase>& cases) {
+  std::vector<HeldOutNameCase> telling;
+  for (const auto& c : cases) {
+    checkCase(c);
+    const auto [low, high] = std::minmax_element(c.logLikelihoods.begin(), c.logLikelihoods.end());
+    if (c.shape[c.truth] > 0 && low != c.logLikelihoods.end() && *high > *low) telling.push_back(c);
+  }
+  if (telling.empty()) return 1.0;
+  if (slope(telling, 0) <= 0) return 0.0;
+  if (slope(telling, kMaxNameWeight) >= 0) return kMaxNameWeight;
+  double low = 0, high = kMaxNameWeight;
+  for (int it = 0; it < 60; ++it) {
+    const double mid = 0.5 * (low + high);
+    (slope(telling, mid) > 0 ? low : high) = mid;
+  }
+  return 0.5 * (low + high);
 }
 
 }  // namespace sagrid

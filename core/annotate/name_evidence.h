@@ -6,7 +6,10 @@
 // log((objects of c whose name holds w + 1) / (words of c's objects + vocabulary size)). Words no
 // curated object's name held say nothing, so a file named "model.glb" is decided by its shape
 // alone. The classifier (category_classifier.h) multiplies its shape probabilities by these
-// likelihoods (the Bayes rule, no weight to tune) where its file says it reads the name.
+// likelihoods raised to a weight where its file says it reads the name: 1 is the Bayes rule as
+// if the shape and the words were independent evidence; the weight the classifier learns
+// (fitNameWeight) is the one under which curated objects, each decided without its source, were
+// likeliest.
 #pragma once
 
 #include <filesystem>
@@ -38,12 +41,18 @@ class NameEvidence {
   // The words of `words` some counted name held (those that move the likelihoods), sorted, once.
   std::vector<std::string> knownWords(const std::vector<std::string>& words) const;
 
+  // The power of the likelihoods beside the shape's probabilities (1: the Bayes rule).
+  double weight() const { return m_weight; }
+  // Throws InvalidArgument for a weight that is not finite or is negative.
+  void setWeight(double weight);
+
   bool empty() const { return m_vocabulary == 0; }
   std::size_t namedObjects() const { return m_objects; }
   const std::vector<std::string>& classes() const { return m_classes; }
 
-  // {"classes": [...], "objects": N, "words": {class: {word: objects}}}; fromJson throws
-  // InvalidArgument for a record that does not have that shape.
+  // {"classes": [...], "objects": N, "words": {class: {word: objects}}, "weight": w}; fromJson
+  // throws InvalidArgument for a record that does not have that shape (a record without a weight,
+  // written before session 66, reads 1).
   nlohmann::json toJson() const;
   static NameEvidence fromJson(const nlohmann::json& j);
 
@@ -53,7 +62,29 @@ class NameEvidence {
   std::vector<std::map<std::string, int>> m_words;
   std::vector<double> m_totals;
   std::size_t m_vocabulary = 0, m_objects = 0;
+  double m_weight = 1.0;
   void finish();  // totals and vocabulary from m_words
 };
+
+// One curated object decided without its source: the class probabilities from its shape, the
+// log-likelihoods of its file's words counted from the other sources' names (both in one class
+// order) and the index of its true class.
+struct HeldOutNameCase {
+  std::vector<double> shape, logLikelihoods;
+  std::size_t truth = 0;
+};
+
+// The most the fitted weight may be: where the held-out names never misled, the likelihood grows
+// with the weight without end, and names would overrule every shape.
+inline constexpr double kMaxNameWeight = 10.0;
+
+// The weight w under which the cases' true classes are likeliest, each decided as
+// p(c) = shape(c) * exp(w * ll(c)) / sum over classes (maximum likelihood; the log-likelihood is
+// concave in w, so the root of its derivative sum(ll(truth) - E_p[ll]) is found by bisection),
+// within [0, kMaxNameWeight]. 1 (the Bayes rule) when no case's words tell its classes apart.
+// Throws InvalidArgument for a case whose vectors differ in size or whose truth is out of range.
+double fitNameWeight(const std::vector<HeldOutNameCase>& cases);
+// The cases' summed log-probability of their true classes under weight w.
+double heldOutLogLikelihood(const std::vector<HeldOutNameCase>& cases, double weight);
 
 }  // namespace sagrid

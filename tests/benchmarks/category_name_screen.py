@@ -1,18 +1,21 @@
 """Screens of what words the category decision could read beside the shape, on the left-out shape
 probabilities of one `category cv --by-source --decisions FILE` run (resources/models/README.md,
-"The shipped file (session 65)"). Each object's words are counted from the other sources' curated
-objects only, as the product's cross-validation does (core/annotate/name_evidence.h: naive Bayes,
+"Session 65's file"; the product weighs the names since "The shipped file (session 66)"). Each
+object's words are counted from the other sources' curated objects only, as the product's
+cross-validation does (core/annotate/name_evidence.h: naive Bayes,
 add-one smoothing, each word once per object; objects whose labels hold no file sha256 or carry a
-generator record teach nothing), and multiplied into its shape probabilities; decided at the
-threshold given (default 0.5, the shipped file's).
+generator record teach nothing), and multiplied into its shape probabilities raised to a weight;
+decided at the threshold given (default 0.5, the shipped file's). The weight is the one the run's
+fold learned for the object (`name_weight` in the decisions file, core/annotate/name_weight_fit.h;
+1 in files written before session 66) unless a row says otherwise.
 
     python3 tests/benchmarks/category_name_screen.py DECISIONS.jsonl [--threshold T]
 
-Rows: the shape alone; the file's words (what `--file-name` ships: the same figures as the run
-with it); the file's words at half weight; the words of the mesh's material names (OBJ `usemtl`,
-glTF binary material names, COLLADA material names) alone, in one bag with the file's, and as a
-second likelihood; each object given the file name of a random object of another class (three
-draws: what a misleading name costs).
+Rows: the shape alone; the file's words by the Bayes rule (weight 1); as the run decided (the
+same figures as the run); at half the learned weight; the words of the mesh's material names (OBJ
+`usemtl`, glTF binary material names, COLLADA material names) alone, in one bag with the file's,
+and as a second likelihood; each object given the file name of a random object of another class
+(three draws: what a misleading name costs).
 """
 import collections
 import json
@@ -65,6 +68,7 @@ def load(path):
             material |= words(name)
         objects.append({'id': d['id'], 'source': d['source'], 'truth': d['truth'],
                         'shape': d['shape_probabilities'], 'published': published,
+                        'weight': d.get('name_weight', 1.0),
                         'file': words(os.path.splitext(os.path.basename(d['mesh']))[0]),
                         'material': material})
     return objects
@@ -114,13 +118,15 @@ def main(argv):
     objects = load(argv[1])
     for o in objects:
         o['both'] = o['file'] | o['material']
-    ll = lambda key, scale=1.0: (lambda o: {c: scale * v for c, v in log_likelihoods(
-        objects, o, key, o[key]).items()})
+    ll = lambda key, scale=1.0: (lambda o: {c: scale * o['weight'] * v for c, v in
+                                            log_likelihoods(objects, o, key, o[key]).items()})
+    bayes_rule = lambda o: log_likelihoods(objects, o, 'file', o['file'])
     print('| words read beside the shape | stoves right | sinks right | look-alikes rejected | share |')
     print('|---|---:|---:|---:|---:|')
     row(objects, 'none (the shape alone)', lambda o: {c: 0.0 for c in CLASSES}, threshold)
-    row(objects, "the file's name", ll('file'), threshold)
-    row(objects, "the file's name at half weight", ll('file', 0.5), threshold)
+    row(objects, "the file's name by the Bayes rule (weight 1)", bayes_rule, threshold)
+    row(objects, "the file's name as the run weighed it", ll('file'), threshold)
+    row(objects, "the file's name at half that weight", ll('file', 0.5), threshold)
     row(objects, 'the material names', ll('material'), threshold)
     row(objects, "the file's and the material names, one bag", ll('both'), threshold)
     both = lambda o: {c: ll('file')(o)[c] + ll('material')(o)[c] for c in CLASSES}
@@ -130,7 +136,8 @@ def main(argv):
         other = {o['id']: rng.choice([x for x in objects if x['truth'] != o['truth']])['file']
                  for o in objects}
         row(objects, "each file named as a random object of another class (draw %d)" % seed,
-            lambda o: log_likelihoods(objects, o, 'file', other[o['id']]), threshold)
+            lambda o: {c: o['weight'] * v for c, v in
+                       log_likelihoods(objects, o, 'file', other[o['id']]).items()}, threshold)
 
 
 if __name__ == '__main__':

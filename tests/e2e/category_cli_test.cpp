@@ -167,6 +167,7 @@ TEST(CategoryCli, CrossValidationWritesEachObjectsDecision) {
     EXPECT_EQ(j.at("shape_probabilities").size(), j.at("probabilities").size());
     // Generated files are all "mesh.obj": no curated name taught a word, so nothing moved them.
     EXPECT_TRUE(j.at("name_words").empty());
+    EXPECT_EQ(j.at("name_weight"), 1.0);  // no curated name to learn a weight from
     EXPECT_EQ(j.at("probabilities"), j.at("shape_probabilities"));
     EXPECT_THAT(std::string("stove sink none"), HasSubstr(j.at("truth").get<std::string>()));
   }

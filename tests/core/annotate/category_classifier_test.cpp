@@ -360,6 +360,68 @@ TEST(CategoryClassifier, TheFileNamesWordsAreLearnedStoredAndReadWhenDeciding) {
   refusedNaming(zero, "counted 0 times");
 }
 
+// The objects of namedByShapeAlike in three sources; where the names do not tell, each file is
+// named for a class drawn regardless of its own.
+std::vector<CategorySample> namedInThreeSources(bool namesTell) {
+  auto samples = namedByShapeAlike(21);
+  std::mt19937 rng(22);
+  const std::vector<std::string> names = {"kitchenStove", "bathroom_sink", "coffeeMachine"};
+  for (std::size_t i = 0; i < samples.size(); ++i) {
+    samples[i].source = "repo-" + std::to_string(i % 3);
+    if (!namesTell) samples[i].nameWords = fileNameWords(names[rng() % 3] + ".glb");
+  }
+  return samples;
+}
+
+// The names' weight beside the shape is learned from each source's objects decided without it:
+// above the Bayes rule's 1 where every source names its files for what they hold (the shapes say
+// nothing), below it where names are drawn regardless of the class; saved, read back and used.
+TEST(CategoryClassifier, TheNamesWeightIsLearnedFromEachSourceDecidedWithoutIt) {
+  CategoryTrainingOptions options;
+  options.inputs.fileName = true;
+  const auto samples = namedInThreeSources(true);
+  const auto telling = CategoryClassifier::train(samples, options);
+  const auto& fit = telling.training.at("file_name_weight");
+  EXPECT_EQ(fit.at("sources"), 3);
+  EXPECT_EQ(fit.at("held_out_objects"), 60);
+  const double w = fit.at("weight").get<double>();
+  EXPECT_GT(w, 1.0);
+  EXPECT_GT(fit.at("log_likelihood").at("fitted").get<double>(),
+            fit.at("log_likelihood").at("bayes_rule").get<double>());
+  // Deciding, two classes' log odds move by w times their words' log-likelihood difference.
+  std::vector<std::pair<std::vector<std::string>, std::string>> named;
+  for (const auto& s : samples) named.emplace_back(s.nameWords, s.category);
+  const auto ll = NameEvidence::count(named, telling.classes()).logLikelihoods({"stove"});
+  const auto shape = telling.probabilities({0, 0, 0});
+  const auto withName = telling.probabilities({0, 0, 0}, {"stove"});
+  const auto logOdds = [](const std::vector<double>& p) { return std::log(p[1] / p[2]); };
+  ASSERT_EQ(telling.classes(), (std::vector<std::string>{"sink", "stove", "none"}));
+  EXPECT_NEAR(logOdds(withName) - logOdds(shape), w * (ll[1] - ll[2]), 1e-9);
+  const auto file = test::freshTempDir() / kCategoryClassifierFile;
+  telling.save(file);
+  EXPECT_EQ(CategoryClassifier::load(file).probabilities({0, 0, 0}, {"stove"}), withName);
+
+  // Retrained (the guard's recipe, the GUI's Train panel), a fitted weight is fitted again, a
+  // fixed one kept, and a file that read names before the weight was learned keeps the Bayes rule.
+  std::vector<std::string> missing;
+  EXPECT_FALSE(recipeOf(telling, missing).options.nameWeight);
+  CategoryTrainingOptions fixed = options;
+  fixed.nameWeight = 0.5;
+  EXPECT_EQ(recipeOf(CategoryClassifier::train(samples, fixed), missing).options.nameWeight, 0.5);
+  CategoryClassifier before = telling;
+  before.training.erase("file_name_weight");
+  EXPECT_EQ(recipeOf(before, missing).options.nameWeight, 1.0);
+
+  const auto drawn = CategoryClassifier::train(namedInThreeSources(false), options);
+  EXPECT_LT(drawn.training.at("file_name_weight").at("weight").get<double>(), 1.0);
+  // Names of one source only: nothing to hold out, the Bayes rule.
+  auto oneSource = samples;
+  for (auto& s : oneSource) s.source = "repo-0";
+  const auto single = CategoryClassifier::train(oneSource, options);
+  EXPECT_EQ(single.training.at("file_name_weight").at("weight"), 1.0);
+  EXPECT_EQ(single.training.at("file_name_weight").at("held_out_objects"), 0);
+}
+
 TEST(CategoryClassifier, ModelSetUsesTheClassifierAndChecksIt) {
   ModelSet set = stoveAndSinkCards();
   auto c = CategoryClassifier::train(blobs(20, 5), {});

@@ -1,6 +1,7 @@
 // The words of a mesh file's name and what curated names teach of a category: the split at
 // separators and case changes, naive Bayes worked by hand, unknown words saying nothing, the
-// record's round trip and a malformed record refused.
+// record's round trip and a malformed record refused; the weight of the names beside the shape
+// fitted by maximum likelihood, worked by hand.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -66,6 +67,50 @@ TEST(NameEvidence, TheRecordRoundTripsAndAMalformedOneIsRefused) {
   nlohmann::json negative = e.toJson();
   negative["words"]["sink"]["sink"] = 0;
   EXPECT_THROW(NameEvidence::fromJson(negative), InvalidArgument);
+  // The weight travels with the counts; a record written before it reads the Bayes rule's 1.
+  NameEvidence weighted = fourNamedObjects();
+  weighted.setWeight(1.75);
+  EXPECT_EQ(NameEvidence::fromJson(weighted.toJson()).weight(), 1.75);
+  nlohmann::json unweighted = e.toJson();
+  unweighted.erase("weight");
+  EXPECT_EQ(NameEvidence::fromJson(unweighted).weight(), 1.0);
+  nlohmann::json below = e.toJson();
+  below["weight"] = -0.5;
+  EXPECT_THROW(NameEvidence::fromJson(below), InvalidArgument);
+  EXPECT_THROW(weighted.setWeight(std::nan("")), InvalidArgument);
+}
+
+// Two classes, shapes that cannot tell them apart, and words whose likelihoods favour class 0 by
+// a factor of 2: under weight w class 0 has probability 2^w / (2^w + 1). Three of four held-out
+// objects are of class 0, so the likeliest weight makes that probability 3/4: w = log2(3).
+std::vector<HeldOutNameCase> threeOfFourAsTheWordsSay() {
+  const HeldOutNameCase zero{{0.5, 0.5}, {std::log(2.0), 0.0}, 0};
+  HeldOutNameCase one = zero;
+  one.truth = 1;
+  return {zero, zero, zero, one};
+}
+
+TEST(FitNameWeight, MaximumLikelihoodWorkedByHand) {
+  const auto cases = threeOfFourAsTheWordsSay();
+  EXPECT_NEAR(fitNameWeight(cases), std::log2(3.0), 1e-9);
+  EXPECT_NEAR(heldOutLogLikelihood(cases, std::log2(3.0)), 3 * std::log(0.75) + std::log(0.25),
+              1e-12);
+  EXPECT_NEAR(heldOutLogLikelihood(cases, 1.0), 3 * std::log(2.0 / 3) + std::log(1.0 / 3), 1e-12);
+}
+
+TEST(FitNameWeight, NamesThatAlwaysMisleadWeighNothingAndNamesNeverWrongTheMost) {
+  auto cases = threeOfFourAsTheWordsSay();
+  for (auto& c : cases) c.truth = 1;  // the words favour the wrong class every time
+  EXPECT_EQ(fitNameWeight(cases), 0.0);
+  for (auto& c : cases) c.truth = 0;  // ... or the right one every time
+  EXPECT_EQ(fitNameWeight(cases), kMaxNameWeight);
+  for (auto& c : cases) c.logLikelihoods = {-3.0, -3.0};  // words known to both classes alike
+  EXPECT_EQ(fitNameWeight(cases), 1.0);
+  EXPECT_EQ(fitNameWeight({}), 1.0);
+  cases.front().truth = 2;
+  EXPECT_THROW(fitNameWeight(cases), InvalidArgument);
+  cases.front() = {{0.5, 0.5}, {0.0}, 0};
+  EXPECT_THROW(fitNameWeight(cases), InvalidArgument);
 }
 
 }  // namespace
