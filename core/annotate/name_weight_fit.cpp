@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <map>
+#include <set>
 
 namespace sagrid {
 
@@ -28,16 +29,20 @@ NameWeightFit fitNameWeightBySource(const std::vector<CategorySample>& samples,
   for (const auto& [source, held] : named) {
     std::vector<CategorySample> rest;
     std::vector<std::pair<std::vector<std::string>, std::string>> otherNames;
+    std::set<std::string> restClasses;
     for (const auto& s : samples) {
       if (s.source == source) continue;
       rest.push_back(s);
+      restClasses.insert(categoryClass(s.category));
       if (s.publishedName) otherNames.emplace_back(s.nameWords, categoryClass(s.category));
     }
+    if (restClasses.size() < 2) continue;  // the other sources cannot train a classifier
     const CategoryClassifier shape = CategoryClassifier::train(rest, shapeOnly);
     const NameEvidence names = NameEvidence::count(otherNames, classes);
     for (const CategorySample* s : held) {
+      // An object of a class only its own source holds cannot be decided without it.
       const auto truth = std::find(classes.begin(), classes.end(), categoryClass(s->category));
-      if (truth == classes.end()) continue;
+      if (truth == classes.end() || !restClasses.count(*truth)) continue;
       HeldOutNameCase c;
       c.truth = static_cast<std::size_t>(truth - classes.begin());
       c.logLikelihoods = names.logLikelihoods(s->nameWords);

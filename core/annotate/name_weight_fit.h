@@ -26,8 +26,10 @@ struct NameWeightFit {
 
 // The fit over `samples` (those with publishedName and a source; `classes` the classifier's class
 // order), each source's shape classifier trained with `options` on every sample of the other
-// sources (options.inputs.fileName off). Where the published names come from fewer than two
-// sources there is nothing to hold out: weight 1, sources as counted, no objects.
+// sources (options.inputs.fileName off; a source whose leaving out leaves one class is skipped,
+// and so is an object of a class only its own source holds).
+// Where the published names come from fewer than two sources there is nothing to hold out:
+// weight 1, sources as counted, no objects.
 NameWeightFit fitNameWeightBySource(const std::vector<CategorySample>& samples,
                                     const CategoryTrainingOptions& options,
                                     const std::vector<std::string>& classes);

@@ -420,6 +420,13 @@ TEST(CategoryClassifier, TheNamesWeightIsLearnedFromEachSourceDecidedWithoutIt) 
   const auto single = CategoryClassifier::train(oneSource, options);
   EXPECT_EQ(single.training.at("file_name_weight").at("weight"), 1.0);
   EXPECT_EQ(single.training.at("file_name_weight").at("held_out_objects"), 0);
+  // One source holds every stove: left out, the others teach no stove; the others left out, the
+  // stoves teach one class. Nothing can be held out, and training goes on with the Bayes rule.
+  auto lopsided = samples;
+  for (auto& s : lopsided) s.source = s.category == "stove" ? "stoves" : "the rest";
+  const auto apart = CategoryClassifier::train(lopsided, options);
+  EXPECT_EQ(apart.training.at("file_name_weight").at("weight"), 1.0);
+  EXPECT_EQ(apart.training.at("file_name_weight").at("held_out_objects"), 0);
 }
 
 TEST(CategoryClassifier, ModelSetUsesTheClassifierAndChecksIt) {
