@@ -193,6 +193,8 @@ AnnotationResult annotateMeshFile(const fs::path& meshFile, const std::string& i
     r.rejected = decision.rejected;
     r.closestCategory = decision.best;
     r.categoryNameWords = decision.nameWords;
+    if (decision.shapeCategory != decision.category)
+      r.categoryByShapeAlone = decision.shapeCategory;
   } else {
     r.category = options.category;
     r.categorySimilarity = models.categorySimilarity(features.descriptor, options.category);
@@ -216,6 +218,8 @@ AnnotationResult annotateMeshFile(const fs::path& meshFile, const std::string& i
     // What of the file's name moved the category (the classifier's known words), for a curator.
     if (!r.categoryNameWords.empty())
       r.labels.extra["prediction"]["category_name_words"] = r.categoryNameWords;
+    if (!r.categoryByShapeAlone.empty())
+      r.labels.extra["prediction"]["category_by_shape_alone"] = r.categoryByShapeAlone;
     r.modelSeconds = secondsSince(t);
     if (options.onProgress) options.onProgress(1.0f, "done");
   };

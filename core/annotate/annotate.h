@@ -100,6 +100,9 @@ struct AnnotationResult {
   std::string closestCategory;
   // The words of the mesh file's name that moved the classifier's decision (CategoryDecision).
   std::vector<std::string> categoryNameWords;
+  // What the shape alone decided (CategoryDecision::shapeCategory), where the name changed it;
+  // empty otherwise.
+  std::string categoryByShapeAlone;
   // Rejected by the evidence gate (EvidenceGate in category_classifier.h): the classifier filed it
   // under closestCategory, but that category's models found too little of it.
   bool rejectedByEvidence = false;

@@ -277,6 +277,19 @@ CategoryDecision CategoryClassifier::classify(const CategorySample& s) const {
   return classify(s.descriptor, s.nameWords);
 }
 
+CategoryClassifier::Verdict CategoryClassifier::verdict(const std::vector<double>& p,
+                                                        double threshold) const {
+  Verdict v;
+  double bestAny = -1;
+  std::string argmax;
+  for (std::size_t a = 0; a < m_classes.size(); ++a) {
+    if (p[a] > bestAny) bestAny = p[a], argmax = m_classes[a];
+    if (m_classes[a] != kRejectedCategory && p[a] > v.score) v.score = p[a], v.best = m_classes[a];
+  }
+  v.rejected = argmax == kRejectedCategory || v.score < threshold;
+  return v;
+}
+
 CategoryDecision CategoryClassifier::classify(const std::vector<float>& descriptor,
                                               const std::vector<std::string>& nameWords,
                                               double threshold) const {
@@ -287,13 +300,11 @@ CategoryDecision CategoryClassifier::classify(const std::vector<float>& descript
     out.probabilities[m_classes[a]] = p[a];
     out.shapeProbabilities[m_classes[a]] = shape[a];
   }
-  double bestAny = -1;
-  std::string argmax;
-  for (std::size_t a = 0; a < m_classes.size(); ++a) {
-    if (p[a] > bestAny) bestAny = p[a], argmax = m_classes[a];
-    if (m_classes[a] != kRejectedCategory && p[a] > out.score) out.score = p[a], out.best = m_classes[a];
-  }
-  out.rejected = argmax == kRejectedCategory || out.score < threshold;
+  const Verdict decided = verdict(p, threshold), byShape = verdict(shape, threshold);
+  out.score = decided.score;
+  out.best = decided.best;
+  out.rejected = decided.rejected;
+  out.shapeCategory = byShape.rejected ? kRejectedCategory : byShape.best;
   if (m_inputs.fileName) {
     out.nameWords = m_names.knownWords(nameWords);
     out.nameWeight = m_names.weight();

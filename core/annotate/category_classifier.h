@@ -54,6 +54,9 @@ struct CategoryDecision {
   std::vector<std::string> nameWords;
   // The power of those words' likelihoods (name_weight_fit.h); 0 where it reads no name.
   double nameWeight = 0;
+  // The category the shape alone decides at the same threshold: where it differs from category,
+  // the file's name decided (a curator may want to know; a misleading name is where it errs).
+  std::string shapeCategory;
   // The classifier's probability of each class as decided, and from the shape alone (the same
   // where no name moved it); empty for retrieval.
   std::map<std::string, double> probabilities, shapeProbabilities;
@@ -173,6 +176,14 @@ class CategoryClassifier {
   std::vector<std::string> m_classes;  // "none" always last
   std::vector<float> m_centre, m_scale;
   std::vector<double> shapeProbabilities(const std::vector<float>& descriptor) const;
+  // The decision on class probabilities `p`: the likeliest known category and its probability,
+  // rejected where "none" is likeliest or that probability is below `threshold`.
+  struct Verdict {
+    std::string best;
+    double score = 0;
+    bool rejected = false;
+  };
+  Verdict verdict(const std::vector<double>& p, double threshold) const;
   // `shape` times the likelihoods of `nameWords` where the classifier reads names, normalised.
   std::vector<double> withNameEvidence(std::vector<double> shape,
                                        const std::vector<std::string>& nameWords) const;

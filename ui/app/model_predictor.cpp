@@ -67,6 +67,7 @@ std::optional<PredictionJob> ModelPredictor::jobFor(const AnnotationDocument& do
     result.rejected = r.rejected;
     result.closestCategory = r.closestCategory;
     result.categoryNameWords = r.categoryNameWords;
+    result.categoryByShapeAlone = r.categoryByShapeAlone;
     result.rejectedByEvidence = r.rejectedByEvidence;
     result.points = r.labels.affordances;
     result.objectConfidence = r.objectConfidence;

@@ -26,6 +26,8 @@ struct PredictionResult {
   bool rejectedByEvidence = false;  // filed under closestCategory, whose models found too little
   // The words of the file's name that moved the category (AnnotationResult::categoryNameWords).
   std::vector<std::string> categoryNameWords;
+  // What the shape alone decided where the name changed it (AnnotationResult); empty otherwise.
+  std::string categoryByShapeAlone;
   std::vector<AffordancePoint> points;  // mesh file coordinates, status "predicted"
   double objectConfidence = 0;          // P(right with one key), core/annotate/object_confidence.h
   std::vector<DistanceField> fields;

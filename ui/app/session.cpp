@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 
+#include "core/annotate/category_classifier.h"
 #include "core/annotate/suggested_points.h"
 #include "core/common/error.h"
 #include "core/common/joined.h"
@@ -27,6 +28,16 @@ double nowSeconds() {
 }  // namespace
 
 namespace sagrid::ui {
+
+namespace {
+// "; by its shape alone: a sink" where the file's name changed the category, else nothing.
+std::string byShapeAlone(const PredictionResult& result) {
+  if (result.categoryByShapeAlone.empty()) return "";
+  return "; by its shape alone: " + (result.categoryByShapeAlone == kRejectedCategory
+                                         ? std::string("not a known category")
+                                         : "a " + result.categoryByShapeAlone);
+}
+}  // namespace
 
 namespace fs = std::filesystem;
 
@@ -537,10 +548,14 @@ void Session::pollPrediction() {
                   " models find none of its parts on it: " + points
             : "not a known category (closest: " + result.closestCategory + "): " + points;
     if (!result.categoryNameWords.empty())
-      m_predictionNote +=
-          " (read from its file's name too: " + joined(result.categoryNameWords) + ")";
+      m_predictionNote += " (read from its file's name too: " + joined(result.categoryNameWords) +
+                          byShapeAlone(result) + ")";
     logger()->info("{}: {}; pick the category and run SAGrid, or place the points by hand",
                    m_document->displayName(), m_predictionNote);
+  } else if (!result.categoryByShapeAlone.empty()) {
+    // Filed by its name where its shape says otherwise: where a misleading name errs.
+    m_predictionNote = "filed as a " + result.category + " by its file's name (" +
+                       joined(result.categoryNameWords) + byShapeAlone(result) + ")";
   }
   // Predictions fill an object with no points yet; existing (reviewed) points are never replaced.
   if (m_document->points().empty() && !result.points.empty()) {

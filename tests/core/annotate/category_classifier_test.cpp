@@ -324,8 +324,17 @@ TEST(CategoryClassifier, TheFileNamesWordsAreLearnedStoredAndReadWhenDeciding) {
   EXPECT_EQ(stove.category, "stove");
   EXPECT_EQ(stove.nameWords, std::vector<std::string>{"stove"});  // what moved it, for a curator
   EXPECT_TRUE(set.decideCategory(grid, mesh, nullptr, "in/model.glb").nameWords.empty());
-  EXPECT_EQ(set.decideCategory(grid, mesh, nullptr, "in/Sink.glb").category, "sink");
+  const CategoryDecision sink = set.decideCategory(grid, mesh, nullptr, "in/Sink.glb");
+  EXPECT_EQ(sink.category, "sink");
   EXPECT_TRUE(set.decideCategory(grid, mesh, nullptr, "in/coffee.glb").rejected);
+  // Each decision says what the shape alone decided: here one category for all three names, so
+  // the name decided at least one of them.
+  const std::string byShape = c.classify(std::vector<float>{0, 0, 0}).category;
+  EXPECT_EQ(stove.shapeCategory, byShape);
+  EXPECT_EQ(sink.shapeCategory, byShape);
+  EXPECT_TRUE(stove.category != byShape || sink.category != byShape);
+  EXPECT_EQ(set.decideCategory(grid, mesh, nullptr, "in/model.glb").shapeCategory,
+            set.decideCategory(grid, mesh, nullptr, "in/model.glb").category);
   // Unknown words and the generated objects' "mesh" leave the shape's probabilities as they are.
   EXPECT_EQ(c.probabilities({0, 0, 0}, fileNameWords("mesh.glb")), c.probabilities({0, 0, 0}));
   EXPECT_EQ(c.probabilities({0, 0, 0}, {"herd"}), c.probabilities({0, 0, 0}));

@@ -60,6 +60,27 @@ TEST(CategoryRejection, TheNoteNamesTheWordsOfTheFileNameThatMovedTheDecision) {
             "coffee, machine)");
 }
 
+// Where the file's name changed the category, the note says so and what the shape alone decided:
+// for a rejected object and for one filed by its name.
+TEST(CategoryRejection, TheNoteSaysWhereTheNameDecidedAgainstTheShape) {
+  OpenScene open;
+  PredictionResult r = rejectedAs("sink");
+  r.categoryNameWords = {"oven"};
+  r.categoryByShapeAlone = "sink";
+  open.scripted.predict(r);
+  EXPECT_EQ(open.session().predictionNote(),
+            "not a known category (closest: sink): no points (read from its file's name too: "
+            "oven; by its shape alone: a sink)");
+  PredictionResult stove;  // the next prediction, filed by its name
+  stove.category = "stove";
+  stove.categoryNameWords = {"kitchen", "stove"};
+  stove.categoryByShapeAlone = "none";
+  open.scripted.predict(stove);
+  EXPECT_EQ(open.session().predictionNote(),
+            "filed as a stove by its file's name (kitchen, stove; by its shape alone: not a known "
+            "category)");
+}
+
 TEST(CategoryRejection, TheObjectPanelSaysWhyTheEvidenceGateRejected) {
   OpenScene open;
   PredictionResult r = rejectedAs("sink");
