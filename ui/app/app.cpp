@@ -18,11 +18,8 @@ App::App(GlContext& context, AppOptions options)
       m_predictor(m_options.modelsDir) {
   if (m_options.trainedModelsDir.empty())
     m_options.trainedModelsDir = m_options.trainingSet / "models";
-  m_predictor.setReadFileName(m_options.readFileName);
-  if (!m_options.modelsDir.empty()) {
-    m_session.setPredictorLookup(
-        [this](const AnnotationDocument& doc) { return m_predictor.jobFor(doc); });
-  }
+  m_session.categoryReadsFileName = m_options.readFileName;
+  if (!m_options.modelsDir.empty()) m_session.setPredictorLookup(predictorLookup());
   m_session.autoPredict = m_options.autoPredict;
   m_session.trainingSetDir = m_options.trainingSet;
   int w = 0, h = 0;
@@ -31,6 +28,13 @@ App::App(GlContext& context, AppOptions options)
 }
 
 App::~App() = default;
+
+PredictorLookup App::predictorLookup() {
+  return [this](const AnnotationDocument& doc) {
+    m_predictor.setReadFileName(m_session.categoryReadsFileName);
+    return m_predictor.jobFor(doc);
+  };
+}
 
 void App::frame(const std::vector<InputEvent>& events, double deltaSeconds) {
   m_imgui.beginFrame(events, deltaSeconds);
@@ -46,8 +50,7 @@ void App::frame(const std::vector<InputEvent>& events, double deltaSeconds) {
     if (m_training.takeFinished()) {
       // The new models predict from now on; the open object shows its new prediction if unreviewed.
       m_predictor.setModelsDir(m_options.trainedModelsDir);
-      m_session.setPredictorLookup(
-          [this](const AnnotationDocument& doc) { return m_predictor.jobFor(doc); });
+      m_session.setPredictorLookup(predictorLookup());
       const auto& queue = m_session.queue();
       if (!queue.empty() &&
           queue.entry(std::size_t(queue.current())).state == QueueState::Unreviewed) {

@@ -52,6 +52,8 @@ class App {
 
  private:
   void layoutPanels();
+  // The session's predictions by the models folder, reading the file's name as the session says.
+  PredictorLookup predictorLookup();
   void drawScene();
 
   GlContext& m_context;

@@ -32,7 +32,7 @@ class ModelPredictor {
   const std::filesystem::path& modelsDir() const { return m_modelsDir; }
   void setModelsDir(std::filesystem::path dir) { m_modelsDir = std::move(dir), reload(); }
   // Whether the category classifier reads the words of the mesh file's name (AnnotateOptions::
-  // readFileName; `sagrid gui --no-file-name`: the shape alone).
+  // readFileName; Session::categoryReadsFileName: off, the shape alone).
   void setReadFileName(bool read) { m_readFileName = read; }
 
  private:

@@ -137,6 +137,10 @@ class Session {
   const PredictionWorker& worker() const { return m_worker; }
   MassEstimate& massEstimate() { return m_massEstimate; }  // the Object panel's mass (export)
   bool autoPredict = true;
+  // Whether the category classifier reads the words of the mesh file's name beside the shape, for
+  // the predictions from now on (the Object panel's checkbox; `sagrid gui --no-file-name` starts
+  // with it off): a collection named for something else than it holds is decided by the shape.
+  bool categoryReadsFileName = true;
   void pollPrediction();  // applies a finished prediction (UI thread, once per frame)
   // Turns the object to another file up axis (an undoable command that drops the predicted
   // points of the old axis) and predicts again.

@@ -160,6 +160,8 @@ void drawObjectPanel(Session& session) {
   } else if (ImGui::Button("Run SAGrid", ImVec2(-1, 0))) {
     session.runPrediction();
   }
+  // Off for a collection whose files are named for something else than they hold.
+  ImGui::Checkbox("category reads the file's name", &session.categoryReadsFileName);
 }
 
 }  // namespace sagrid::ui

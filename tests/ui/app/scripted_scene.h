@@ -46,7 +46,9 @@ inline void writeSceneLabels(const std::filesystem::path& path) {
 
 class ScriptedApp {
  public:
-  explicit ScriptedApp(const std::filesystem::path& dir, int width = 480, int height = 400) {
+  // `modelsDir`: the models "Run SAGrid" predicts with (none by default: tests script predictions).
+  explicit ScriptedApp(const std::filesystem::path& dir, int width = 480, int height = 400,
+                       const std::filesystem::path& modelsDir = {}) {
     writeSceneObj(dir / "mesh.obj");
     writeSceneLabels(dir / "labels.json");
     ContextOptions options;
@@ -55,6 +57,7 @@ class ScriptedApp {
     context = createGlContext(GlBackend::Egl, options);
     AppOptions appOptions;
     appOptions.autoPredict = false;
+    appOptions.modelsDir = modelsDir;
     appOptions.trainingSet = dir / "training";
     appOptions.screenshotDir = dir;
     app = std::make_unique<App>(*context, appOptions);
