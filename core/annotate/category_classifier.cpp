@@ -217,14 +217,7 @@ std::vector<double> CategoryClassifier::probabilities(
 std::vector<double> CategoryClassifier::withNameEvidence(
     std::vector<double> p, const std::vector<std::string>& nameWords) const {
   if (!m_inputs.fileName || m_names.empty()) return p;
-  const std::vector<double> ll = m_names.logLikelihoods(nameWords);
-  const double top = *std::max_element(ll.begin(), ll.end());
-  double sum = 0;
-  for (std::size_t a = 0; a < p.size(); ++a)
-    sum += (p[a] *= std::exp(m_names.weight() * (ll[a] - top)));
-  if (sum > 0)
-    for (double& v : p) v /= sum;
-  return p;
+  return nameWeighted(std::move(p), m_names.logLikelihoods(nameWords), m_names.weight());
 }
 
 std::vector<double> CategoryClassifier::shapeProbabilities(

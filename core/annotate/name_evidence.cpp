@@ -123,6 +123,17 @@ NameEvidence NameEvidence::fromJson(const nlohmann::json& j) {
   return e;
 }
 
+std::vector<double> nameWeighted(std::vector<double> p, const std::vector<double>& logLikelihoods,
+                                 double weight) {
+  const double top = *std::max_element(logLikelihoods.begin(), logLikelihoods.end());
+  double sum = 0;
+  for (std::size_t a = 0; a < p.size(); ++a)
+    sum += (p[a] *= std::exp(weight * (logLikelihoods[a] - top)));
+  if (sum > 0)
+    for (double& v : p) v /= sum;
+  return p;
+}
+
 namespace {
 void checkCase(const HeldOutNameCase& c) {
   if (c.shape.size() != c.logLikelihoods.size() || c.truth >= c.shape.size())
@@ -130,22 +141,11 @@ void checkCase(const HeldOutNameCase& c) {
                           " shape probabilities, " + std::to_string(c.logLikelihoods.size()) +
                           " log-likelihoods and true class " + std::to_string(c.truth));
 }
-// The case's class probabilities under weight w (log-space, so a shape probability of 0 stays 0).
-std::vector<double> weighted(const HeldOutNameCase& c, double w) {
-  std::vector<double> log(c.shape.size());
-  for (std::size_t a = 0; a < log.size(); ++a)
-    log[a] = (c.shape[a] > 0 ? std::log(c.shape[a]) : -INFINITY) + w * c.logLikelihoods[a];
-  const double top = *std::max_element(log.begin(), log.end());
-  double sum = 0;
-  for (double& v : log) sum += (v = std::exp(v - top));
-  for (double& v : log) v /= sum;
-  return log;
-}
 // d/dw of heldOutLogLikelihood: sum over cases of ll(truth) - the expected ll under p_w.
 double slope(const std::vector<HeldOutNameCase>& cases, double w) {
   double g = 0;
   for (const auto& c : cases) {
-    const auto p = weighted(c, w);
+    const auto p = nameWeighted(c.shape, c.logLikelihoods, w);
     g += c.logLikelihoods[c.truth];
     for (std::size_t a = 0; a < p.size(); ++a) g -= p[a] * c.logLikelihoods[a];
   }
@@ -157,7 +157,7 @@ double heldOutLogLikelihood(const std::vector<HeldOutNameCase>& cases, double we
   double sum = 0;
   for (const auto& c : cases) {
     checkCase(c);
-    sum += std::log(std::max(weighted(c, weight)[c.truth], 1e-300));
+    sum += std::log(std::max(nameWeighted(c.shape, c.logLikelihoods, weight)[c.truth], 1e-300));
   }
   return sum;
 }
@@ -167,7 +167,7 @@ double fitNameWeight(const std::vector<HeldOutNameCase>& cases) {
   for (const auto& c : cases) {
     checkCase(c);
     const auto [low, high] = std::minmax_element(c.logLikelihoods.begin(), c.logLikelihoods.end());
-    if (c.shape[c.truth] > 0 && low != c.logLikelihoods.end() && *high > *low) telling.push_back(c);
+    if (c.shape[c.truth] > 0 && *high > *low) telling.push_back(c);
   }
   if (telling.empty()) return 1.0;
   if (slope(telling, 0) <= 0) return 0.0;

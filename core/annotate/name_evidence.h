@@ -66,6 +66,11 @@ class NameEvidence {
   void finish();  // totals and vocabulary from m_words
 };
 
+// `shape` (class probabilities) times exp(weight * logLikelihoods), normalised (classes in one
+// order; left as it is where every product underflows).
+std::vector<double> nameWeighted(std::vector<double> shape,
+                                 const std::vector<double>& logLikelihoods, double weight);
+
 // One curated object decided without its source: the class probabilities from its shape, the
 // log-likelihoods of its file's words counted from the other sources' names (both in one class
 // order) and the index of its true class.

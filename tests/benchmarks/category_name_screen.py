@@ -12,7 +12,7 @@ fold learned for the object (`name_weight` in the decisions file, core/annotate/
     python3 tests/benchmarks/category_name_screen.py DECISIONS.jsonl [--threshold T]
 
 First how often the run's decision differs from its shape's alone, and how often it is right
-there. Rows: the shape alone; the file's words by the Bayes rule (weight 1); as the run decided (the
+there, the range of its folds' weights, and the objects it decides otherwise than the Bayes rule. Rows: the shape alone; the file's words by the Bayes rule (weight 1); as the run decided (the
 same figures as the run); at half the learned weight; the words of the mesh's material names (OBJ
 `usemtl`, glTF binary material names, COLLADA material names) alone, in one bag with the file's,
 and as a second likelihood; each object given the file name of a random object of another class
@@ -96,16 +96,19 @@ def decide(p, threshold):
     return 'none' if rejected else best
 
 
+def weighed(o, ll):
+    """The object's shape probabilities times the likelihoods exp(ll), normalised."""
+    top = max(ll.values())
+    p = {c: o['shape'][c] * math.exp(ll[c] - top) for c in CLASSES}
+    s = sum(p.values())
+    return {c: v / s for c, v in p.items()}
+
+
 def row(objects, name, evidence, threshold):
     right, total = collections.Counter(), collections.Counter()
     for o in objects:
-        ll = evidence(o)
-        top = max(ll.values())
-        p = {c: o['shape'][c] * math.exp(ll[c] - top) for c in CLASSES}
-        s = sum(p.values())
-        p = {c: v / s for c, v in p.items()}
         total[o['truth']] += 1
-        right[o['truth']] += decide(p, threshold) == o['truth']
+        right[o['truth']] += decide(weighed(o, evidence(o)), threshold) == o['truth']
     share = sum(right[c] / total[c] for c in CLASSES if total[c]) / 3
     print('| %s | %d / %d | %d / %d | %d / %d | %.3f |' % (
         name, right['stove'], total['stove'], right['sink'], total['sink'], right['none'],
@@ -123,8 +126,17 @@ def main(argv):
                                             log_likelihoods(objects, o, key, o[key]).items()})
     bayes_rule = lambda o: log_likelihoods(objects, o, 'file', o['file'])
     overruled = [o for o in objects if decide(o['shape'], threshold) != o['decided']]
-    print('The run\'s name overruled the shape on %d of %d objects, right on %d.\n' % (
-        len(overruled), len(objects), sum(o['decided'] == o['truth'] for o in overruled)))
+    print('The run\'s name overruled the shape on %d of %d objects, right on %d; its folds weighed '
+          'the names %.2f to %.2f.' % (
+              len(overruled), len(objects), sum(o['decided'] == o['truth'] for o in overruled),
+              min(o['weight'] for o in objects), max(o['weight'] for o in objects)))
+    print('Decided otherwise than by the Bayes rule (weight 1):')
+    for o in objects:
+        bayes = decide(weighed(o, log_likelihoods(objects, o, 'file', o['file'])), threshold)
+        if bayes != o['decided']:
+            print('  %s (%s): %s -> %s, truly %s' % (o['id'], o['source'], bayes, o['decided'],
+                                                   o['truth']))
+    print()
     print('| words read beside the shape | stoves right | sinks right | look-alikes rejected | share |')
     print('|---|---:|---:|---:|---:|')
     row(objects, 'none (the shape alone)', lambda o: {c: 0.0 for c in CLASSES}, threshold)

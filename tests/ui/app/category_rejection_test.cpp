@@ -50,6 +50,9 @@ TEST(CategoryRejection, RejectedObjectOpensWithNoPointsAndCuratorPicksCategory) 
   EXPECT_EQ(readLabels(dir / "fresh" / "labels.json").object.category, "stove");
 }
 
+// The note names the words of the file's name that moved the decision; where the name changed the
+// category, it also says what the shape alone decided: for a rejected object and for one filed by
+// its name.
 TEST(CategoryRejection, TheNoteNamesTheWordsOfTheFileNameThatMovedTheDecision) {
   OpenScene open;
   PredictionResult r = rejectedAs("sink");
@@ -58,14 +61,7 @@ TEST(CategoryRejection, TheNoteNamesTheWordsOfTheFileNameThatMovedTheDecision) {
   EXPECT_EQ(open.session().predictionNote(),
             "not a known category (closest: sink): no points (read from its file's name too: "
             "coffee, machine)");
-}
-
-// Where the file's name changed the category, the note says so and what the shape alone decided:
-// for a rejected object and for one filed by its name.
-TEST(CategoryRejection, TheNoteSaysWhereTheNameDecidedAgainstTheShape) {
-  OpenScene open;
-  PredictionResult r = rejectedAs("sink");
-  r.categoryNameWords = {"oven"};
+  r.categoryNameWords = {"oven"};  // the next prediction: the shape alone filed it as a sink
   r.categoryByShapeAlone = "sink";
   open.scripted.predict(r);
   EXPECT_EQ(open.session().predictionNote(),
