@@ -9,13 +9,25 @@
 #include "core/annotate/point_scorer.h"
 #include "core/geometry/crease_patches.h"
 #include "core/geometry/material_parts.h"
+#include "core/geometry/surface_openness.h"
 #include "core/geometry/surface_scene.h"
 #include "core/mesh/mesh.h"
-#include "core/points/surface_projection.h"
 
 namespace sagrid {
 
 namespace {
+
+// Where a normalized point meets the z-up mesh of `scene`, in normalized units.
+SurfaceContact surfaceContact(const SurfaceScene& scene, const Normalization& normalization,
+                              const Eigen::Vector3f& at) {
+  // Just off the surface: a quarter of a 64-voxel grid's cell.
+  constexpr float kOffset = 0.004f;
+  const ClosestPoint closest = scene.closestPoint(normalization.toMesh(at));
+  const float scale = normalization.scale;
+  const SurfaceOpenness open = surfaceOpenness(scene, closest, kOffset / scale);
+  return {closest.normal, closest.distance * scale, open.openness, open.below * scale,
+          open.above * scale};
+}
 
 // How one model runs: a type in `counts` takes InstanceMode::Count with its count (k-means), and
 // Count without one falls back to Auto.
@@ -116,9 +128,7 @@ CategoryPoints predictCategoryPoints(const std::vector<const model::AffordanceMo
     found[m] = pointCandidates(
         p.field, p.points, card.extraction.creasePatches ? partsAndPatches : parts,
         [&](const Eigen::Vector3f& at) {
-          const SurfacePoint s = projectToSurface(at, features.normalization, scene, mesh.fileUp);
-          return SurfaceContact{fileToZUpRotation(mesh.fileUp) * s.normal,
-                                s.moved * features.normalization.scale};
+          return surfaceContact(scene, features.normalization, at);
         },
         others);
     scorers[m] = passes.scorer ? passes.scorer->forModel(card.name) : nullptr;

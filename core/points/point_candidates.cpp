@@ -41,11 +41,16 @@ enum Feature {
   kPartByCrease,
   kOtherField,
   kOtherClaim,
+  kOpenness,
+  kClearBelow,
+  kClearAbove,
   kFeatureCount
 };
 
 // Basin depths and distances to other points are capped where they stop telling anything apart.
 constexpr float kDepthCap = 0.2f, kNearCap = 0.3f, kCrowdRadius = 0.08f;
+// Free distances straight down and up are capped at half the object (beyond, all is open).
+constexpr float kClearCap = 0.5f;
 // Parts up to this box diagonal give candidates: larger than the passes' small parts
 // (kSmallPartDiagonal), as a range's burner grate can be.
 constexpr float kCandidatePartDiagonal = 0.35f;
@@ -155,7 +160,8 @@ const std::vector<std::string>& candidateFeatureNames() {
       "part_size",      "part_flatness",       "part_roundness", "part_copies",
       "part_round_flat", "kept_count",         "nearest_kept",   "crowding",
       "best_kept",      "facing_up",           "surface_depth",  "part_by_material",
-      "part_by_crease", "other_field",     "other_claim"};
+      "part_by_crease", "other_field",     "other_claim",    "openness",
+      "clear_below",    "clear_above"};
   // clang-format on
   return names;
 }
@@ -269,6 +275,9 @@ std::vector<PointCandidate> pointCandidates(const PredictedField& field,
     const SurfaceContact surface = contact(p);
     f[kFacingUp] = surface.normal.z();
     f[kSurfaceDepth] = std::min(surface.depth / kNearCap, 1.0f);
+    f[kOpenness] = surface.openness;
+    f[kClearBelow] = std::min(surface.below / kClearCap, 1.0f);
+    f[kClearAbove] = std::min(surface.above / kClearCap, 1.0f);
     f[kOtherField] = 1;
     for (const auto& [other, otherBest] : otherLookups)
       f[kOtherField] = std::min(f[kOtherField], (other.near(p, 1) - otherBest) / kDepthCap);

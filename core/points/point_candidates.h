@@ -4,15 +4,17 @@
 // of their basin), and the small parts of the mesh (a knob, a burner's cap, a handle: connected
 // parts, material parts and, for some models, crease patches, at their centroid). Each carries
 // the field there and around it, where it stands in the object, the part it lies on (size,
-// roundness, flatness, how many copies the part has), the company it keeps and what the
-// category's other models' fields say there. Normalized frame (z up); no torch, no surface.
+// roundness, flatness, how many copies the part has), the company it keeps, what the
+// category's other models' fields say there and how open the space is where it meets the surface
+// (a spout's tip over its basin, a knob on a face; not a place inside a cabinet). Normalized frame
+// (z up); no torch, no surface.
 #pragma once
 
+#include <Eigen/Core>
 #include <functional>
+#include <limits>
 #include <string>
 #include <vector>
-
-#include <Eigen/Core>
 
 #include "core/geometry/connected_parts.h"
 #include "core/points/point_extraction.h"
@@ -36,11 +38,16 @@ const std::vector<std::string>& candidateFeatureNames();
 // The index of a feature in candidateFeatureNames(); throws InvalidArgument for an unknown name.
 std::size_t candidateFeatureIndex(const std::string& name);
 
-// Where a candidate meets the surface: the surface normal there (z up) and how far the candidate
-// lies from it (normalized units; a part's centroid lies inside it).
+// Where a candidate meets the surface: the surface normal there (z up), how far the candidate
+// lies from it (normalized units; a part's centroid lies inside it) and how open the space there
+// is (core/geometry/surface_openness.h): the share of directions that leave the mesh and the free
+// distance straight down and up (normalized units; infinite where nothing lies that way).
 struct SurfaceContact {
   Eigen::Vector3f normal = Eigen::Vector3f::UnitZ();
   float depth = 0;
+  float openness = 1;
+  float below = std::numeric_limits<float>::infinity();
+  float above = std::numeric_limits<float>::infinity();
 };
 using SurfaceContactAt = std::function<SurfaceContact(const Eigen::Vector3f&)>;
 
@@ -60,7 +67,9 @@ constexpr std::size_t kMaxCandidateCopies = 15;
 // 0.2 normalized, capped at 1; 1 without other fields: a knob's candidate on a burner's cap is
 // where the burners' field is lowest), and other_claim, other_field less the candidate's
 // own distance above its field's best in the same units, in [-1, 1] (which model the place
-// belongs to more). Empty for an empty field.
+// belongs to more). `contact` also gives openness as it is and the free distances below and above
+// in units of half the object, capped at 1 (openness, clear_below, clear_above). Empty for an
+// empty field.
 std::vector<PointCandidate> pointCandidates(const PredictedField& field,
                                             const std::vector<ExtractedPoint>& kept,
                                             const std::vector<ConnectedPart>& parts,

@@ -94,6 +94,33 @@ TEST(PointCandidates, KeptPointsFieldMinimaAndSmallPartsAreCandidates) {
                 1.5f / test::kPlateResolution);
 }
 
+TEST(PointCandidates, HowOpenTheSurfaceIsWhereEachCandidateMeetsIt) {
+  // Left of the middle the surface lies under a shelf 0.1 up (a quarter of the sky left open);
+  // right of it, nothing above and 0.8 of free fall below (a spout's tip over its basin).
+  const Eigen::Vector3f covered = onPlate(6, 10), open = onPlate(26, 10);
+  const PredictedField field = test::plateField({covered, open});
+  const float middle = (covered.x() + open.x()) / 2;
+  const auto contact = [&](const Eigen::Vector3f& at) {
+    SurfaceContact c;
+    if (at.x() < middle) {
+      c.openness = 0.25f, c.above = 0.1f, c.below = 0;
+    } else {
+      c.below = 0.8f;
+    }
+    return c;
+  };
+  const auto candidates = pointCandidates(field, {}, {}, contact);
+  const PointCandidate* atCovered = candidateNear(candidates, covered);
+  const PointCandidate* atOpen = candidateNear(candidates, open);
+  ASSERT_TRUE(atCovered && atOpen);
+  EXPECT_EQ(feature(*atCovered, "openness"), 0.25f);
+  EXPECT_NEAR(feature(*atCovered, "clear_above"), 0.1f / 0.5f, 1e-6f);  // in half objects
+  EXPECT_EQ(feature(*atCovered, "clear_below"), 0.0f);
+  EXPECT_EQ(feature(*atOpen, "openness"), 1.0f);
+  EXPECT_EQ(feature(*atOpen, "clear_above"), 1.0f);  // nothing above: capped, finite
+  EXPECT_EQ(feature(*atOpen, "clear_below"), 1.0f);  // beyond half the object: capped
+}
+
 ConnectedPart knobAt(const Eigen::Vector3f& centre, int triangles = 24) {
   ConnectedPart part;
   part.triangles = triangles;
