@@ -50,7 +50,7 @@ SurfaceOpenness surfaceOpenness(const SurfaceScene& scene, const ClosestPoint& a
       leaving += !scene.occluded(origin, d, 0.0f, std::numeric_limits<float>::infinity());
     }
     const float openness = facing ? static_cast<float>(leaving) / facing : 0.0f;
-    if (openness <= best.openness) continue;
+    if (openness <= best.openness) continue;  // a tie: the side the triangle faces, tried first
     best.openness = openness;
     best.below = freeDistance(scene, origin, -Eigen::Vector3f::UnitZ());
     best.above = freeDistance(scene, origin, Eigen::Vector3f::UnitZ());

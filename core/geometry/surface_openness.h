@@ -21,7 +21,8 @@ struct SurfaceOpenness {
 };
 
 // At `at` (a closest point of `scene`), from just off the surface on each side (`offset` mesh
-// units along the normal); the side where more directions leave the mesh is the outside.
+// units along the normal); the side where more directions leave the mesh is the outside (where as
+// many leave on both, the side the triangle faces).
 SurfaceOpenness surfaceOpenness(const SurfaceScene& scene, const ClosestPoint& at, float offset);
 
 }  // namespace sagrid

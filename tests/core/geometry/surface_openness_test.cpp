@@ -59,6 +59,19 @@ TEST(SurfaceOpenness, TrianglesFacingInwardReadTheSame) {
   }
 }
 
+TEST(SurfaceOpenness, WhereNoDirectionLeavesEitherSideTheSideTheTriangleFacesIsRead) {
+  // Two tall blocks 0.04 apart on a floor: from the floor between them none of the directions
+  // leaves (the sky is seen only straight up), as from inside the floor; the floor's top faces up,
+  // so the crevice is read, not the floor's inside.
+  Mesh mesh = test::box({0, 0, 0}, {1, 1, 0.1f});
+  test::append(mesh, test::box({0, 0, 0.1f}, {0.48f, 1, 0.9f}));
+  test::append(mesh, test::box({0.52f, 0, 0.1f}, {1, 1, 0.9f}));
+  const SurfaceScene scene(mesh);
+  const SurfaceOpenness crevice = opennessAt(scene, {0.5f, 0.5f, 0.1f});
+  EXPECT_FLOAT_EQ(crevice.openness, 0.0f);
+  EXPECT_TRUE(std::isinf(crevice.above));
+}
+
 TEST(SurfaceOpenness, InsideAClosedBoxNothingLeaves) {
   // A box inside a larger hollow shell: the gap between them is closed all round.
   Mesh mesh = test::box({0.4f, 0.4f, 0.4f}, {0.6f, 0.6f, 0.6f});
