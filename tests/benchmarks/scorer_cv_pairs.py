@@ -7,7 +7,8 @@
     python3 tests/benchmarks/scorer_cv_pairs.py repeats NEW1,NEW2 OLD1,OLD2
         Two sets of `--repeats` runs, repeat by repeat (paired by seed), for every curated object
         and for the sources not passed as --tuned-on: edits per hand point, one key and the best
-        point's error, with how many repeats moved each way.
+        point's error, with how many repeats moved each way; then per model, each repeat's edits
+        and its decisions whose first point is more than 5 cm off.
 """
 import json
 import math
@@ -22,6 +23,10 @@ def held_out(path):
 
 def edits(d):
     return d['drags'] + d['additions'] + d['deletions']
+
+
+def first_point_off(d):
+    return d['best_point_error_m'] is not None and d['best_point_error_m'] > 0.05
 
 
 def compare_held_out(a_path, b_path, excluded):
@@ -64,6 +69,15 @@ def compare_repeats(new_paths, old_paths):
                   f'{statistics.mean(scale * x[field] for x in n):.3f}{unit} (difference '
                   f'{statistics.mean(diff):+.3f}, sd {sd:.3f}, se {sd / math.sqrt(len(diff)):.3f}; '
                   f'lower in {sum(d < 0 for d in diff)}, higher in {sum(d > 0 for d in diff)})')
+    print('per model, mean over the repeats:')
+    for model in sorted({d['model'] for s in seeds for d in new[s]['held_out_decisions']}):
+        def per_repeat(runs, count):
+            return [sum(count(d) for d in runs[s]['held_out_decisions'] if d['model'] == model)
+                    for s in seeds]
+        for name, count in (('edits', edits), ('first point off', first_point_off)):
+            o, n = per_repeat(old, count), per_repeat(new, count)
+            print(f'  {model} {name}: {statistics.mean(o):.1f} -> {statistics.mean(n):.1f} '
+                  f'(fewer in {sum(y < x for x, y in zip(o, n))}, more in {sum(y > x for x, y in zip(o, n))})')
 
 
 if __name__ == '__main__':
