@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <optional>
 #include <vector>
 
 #include "core/geometry/surface_scene.h"
@@ -38,8 +37,9 @@ float freeDistance(const SurfaceScene& scene, const Eigen::Vector3f& origin,
 }  // namespace
 
 SurfaceOpenness surfaceOpenness(const SurfaceScene& scene, const ClosestPoint& at, float offset) {
-  SurfaceOpenness best;
-  best.openness = -1;
+  SurfaceOpenness open;
+  open.openness = -1;
+  Eigen::Vector3f outside = at.position;
   for (const float side : {1.0f, -1.0f}) {
     const Eigen::Vector3f normal = side * at.normal;
     const Eigen::Vector3f origin = at.position + offset * normal;
@@ -50,12 +50,13 @@ SurfaceOpenness surfaceOpenness(const SurfaceScene& scene, const ClosestPoint& a
       leaving += !scene.occluded(origin, d, 0.0f, std::numeric_limits<float>::infinity());
     }
     const float openness = facing ? static_cast<float>(leaving) / facing : 0.0f;
-    if (openness <= best.openness) continue;  // a tie: the side the triangle faces, tried first
-    best.openness = openness;
-    best.below = freeDistance(scene, origin, -Eigen::Vector3f::UnitZ());
-    best.above = freeDistance(scene, origin, Eigen::Vector3f::UnitZ());
+    if (openness <= open.openness) continue;  // a tie: the side the triangle faces, tried first
+    open.openness = openness;
+    outside = origin;
   }
-  return best;
+  open.below = freeDistance(scene, outside, -Eigen::Vector3f::UnitZ());
+  open.above = freeDistance(scene, outside, Eigen::Vector3f::UnitZ());
+  return open;
 }
 
 }  // namespace sagrid

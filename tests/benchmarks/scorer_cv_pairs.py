@@ -65,9 +65,11 @@ def compare_repeats(new_paths, old_paths):
                                    ('single_error_m', 100, ' cm')):
             diff = [scale * (x[field] - y[field]) for x, y in zip(n, o)]
             sd = statistics.stdev(diff) if len(diff) > 1 else 0.0
+            se = sd / math.sqrt(len(diff))
+            ratio = f'{statistics.mean(diff) / se:+.2f}' if se > 0 else 'no'
             print(f'  {field}: {statistics.mean(scale * y[field] for y in o):.3f} -> '
                   f'{statistics.mean(scale * x[field] for x in n):.3f}{unit} (difference '
-                  f'{statistics.mean(diff):+.3f}, sd {sd:.3f}, se {sd / math.sqrt(len(diff)):.3f}; '
+                  f'{statistics.mean(diff):+.3f}, sd {sd:.3f}, se {se:.3f}, {ratio} standard errors; '
                   f'lower in {sum(d < 0 for d in diff)}, higher in {sum(d > 0 for d in diff)})')
     print('per model, mean over the repeats:')
     for model in sorted({d['model'] for s in seeds for d in new[s]['held_out_decisions']}):
