@@ -28,12 +28,13 @@ run: build
 # settings refitted for curator edits on the bench train split's symmetry-averaged fields (what
 # annotate sees), then the second stove.togglebutton network (trained on the bench train split plus
 # 300 more generated stoves, seed 7001) added to its card as an ensemble, then the learned point
-# decision on these networks' candidates (curated wild-pool, Sweet Home 3D and real-dev objects and
-# the bench val split; the preset sets the stove cards' crease-patch candidates) and the object
-# confidence fitted on its points left out by source, then the units memory (the sizes of the
-# curated real objects; the size it recalls, how many objects and its far factor chosen leaving each
-# source out). The stove models are not fine-tuned: on the five real-train stoves it made the
-# held-out real stoves worse (resources/models/README.md).
+# decision on these networks' candidates (curated wild-pool, Sweet Home 3D and real-dev objects,
+# the bench val split and the 120 generated objects of `generate --preset decision`; the preset
+# sets the stove cards' crease-patch candidates) and the object confidence fitted on its points
+# left out by source, then the units memory (the sizes of the curated real objects; the size it
+# recalls, how many objects and its far factor chosen leaving each source out). The stove models
+# are not fine-tuned: on the five real-train stoves it made the held-out real stoves worse
+# (resources/models/README.md).
 SAGRID_CACHE ?= $(if $(XDG_CACHE_HOME),$(XDG_CACHE_HOME),$(HOME)/.cache)/sagrid
 BENCH_DIR ?= $(SAGRID_CACHE)/bench
 REAL_DIR ?= $(SAGRID_CACHE)/real
@@ -68,8 +69,9 @@ models: build
 	@$(BUILD_DIR)/sagrid scorer candidates --no-coarse-to-fine --data $(WILD_DIR)/wild-train \
 	  --data $(WILD_DIR)/wild-val --data $(REAL_DEV_DIR) --data $(REAL_DIR)/real-train \
 	  --data $(REAL_DIR)/real-val --out $(BUILD_DIR)/scorer-real.json
+	@test -d $(BENCH_DIR)/decision || $(BUILD_DIR)/sagrid generate --preset decision --out $(BENCH_DIR)
 	@$(BUILD_DIR)/sagrid scorer candidates --no-coarse-to-fine --data $(BENCH_DIR) \
-	  --out $(BUILD_DIR)/scorer-bench.json
+	  --data $(BENCH_DIR)/decision --out $(BUILD_DIR)/scorer-bench.json
 	@$(BUILD_DIR)/sagrid scorer train --candidates $(BUILD_DIR)/scorer-real.json \
 	  --candidates $(BUILD_DIR)/scorer-bench.json --out resources/models
 	@$(BUILD_DIR)/sagrid scorer cv --candidates $(BUILD_DIR)/scorer-real.json \

@@ -49,9 +49,11 @@ void setupGenerate(CLI::App& root) {
          "appliances among them; wall-fixtures: "
          "the dressed sinks the shipped sink models also train on (OUT/wall-fixtures 300); "
          "glass-hobs: stoves, half of them bare glass hobs (OUT/glass-hobs 300; the shipped stove "
-         "models do not train on them, README: `generate --glass-hobs`)")
-      ->check(CLI::IsMember(
-          {"bench", "distractors", "distractors-appliances", "wall-fixtures", "glass-hobs"}));
+         "models do not train on them, README: `generate --glass-hobs`); decision: the generated "
+         "objects the point decision learns from beside the bench's val split (OUT/decision "
+         "120)")
+      ->check(CLI::IsMember({"bench", "distractors", "distractors-appliances", "wall-fixtures",
+                             "glass-hobs", "decision"}));
   cmd->add_option(
          "--wall-fixtures", o->wallFixtures,
          "Share of sinks (not bare faucets) given a mirror, lamps, a shelf, a back panel or a "
@@ -84,6 +86,7 @@ void setupGenerate(CLI::App& root) {
                            : o->preset == "distractors-appliances"
                                ? sagrid::gen::applianceDistractorPreset()
                            : o->preset == "glass-hobs" ? sagrid::gen::glassHobPreset()
+                           : o->preset == "decision"   ? sagrid::gen::decisionPreset()
                                                        : sagrid::gen::wallFixturePreset();
       int total = 0;
       for (const auto& s : preset)

@@ -321,8 +321,8 @@ void setupScorer(CLI::App& root) {
                 "OUT/refused/ where any model refused it (figures in OUT/scorer_guard.json)");
   upd->add_option("--data", u->data, "Curated training objects (a dataset)")->required();
   upd->add_option("--generated", u->generated,
-                  "Generated objects the networks were not trained on (default: the bench, its "
-                  "val split)");
+                  "Generated objects the networks were not trained on (default: the bench's val "
+                  "and decision splits, as the shipped decision learned)");
   upd->add_option("--held-out", u->heldOut,
                   "Curated objects of other sources: the guard's (without: --data's objects "
                   "judge, each source left out in turn; unguarded when they are of one source)");

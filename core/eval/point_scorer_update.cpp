@@ -137,13 +137,20 @@ ScorerUpdate updatePointScorer(const ScorerUpdateRequest& request) {
   // Every folder before any candidate is made (minutes of work).
   for (const fs::path& dir : {request.curated, request.generated, request.heldOut})
     if (!dir.empty() && !fs::is_directory(dir)) throw FileError(dir, "dataset folder not found");
-  fs::path generatedDir = request.generated;
-  if (generatedDir.empty()) {
-    generatedDir = defaultBenchDir();
-    if (!fs::exists(generatedDir / "val" / "manifest.jsonl"))
-      gen::generateBenchPreset(generatedDir, [&](int done, int total) {
-        if (request.onProgress) request.onProgress("bench", done, total, "");
-      });
+  std::vector<fs::path> generatedDirs = {request.generated};
+  if (request.generated.empty()) {
+    const fs::path bench = defaultBenchDir();
+    const auto generateMissing = [&](const std::vector<gen::BenchSplit>& preset,
+                                     const fs::path& split) {
+      if (!fs::exists(split / "manifest.jsonl"))
+        gen::generatePreset(preset, bench, [&](int done, int total) {
+          if (request.onProgress) request.onProgress("bench", done, total, "");
+        });
+      return split;
+    };
+    generatedDirs = {
+        generateMissing(gen::benchPreset(), bench / "val"),
+        generateMissing(gen::decisionPreset(), bench / gen::decisionPreset().front().name)};
   }
   const ModelSet models = ModelSet::load(request.models);
   const auto curated = candidatesOf(models, request.curated, "curated", request);
@@ -151,7 +158,10 @@ ScorerUpdate updatePointScorer(const ScorerUpdateRequest& request) {
     throw InvalidArgument("the curated objects of " + request.curated.string() +
                           " give the point decision nothing to learn: no object with points of "
                           "a model in " + request.models.string());
-  const auto generated = candidatesOf(models, generatedDir, "generated", request);
+  std::vector<CandidateSet> generated;
+  for (const fs::path& dir : generatedDirs)
+    for (auto& set : candidatesOf(models, dir, "generated", request))
+      generated.push_back(std::move(set));
   std::vector<const CandidateSet*> training;
   for (const auto& s : curated) training.push_back(&s);
   for (const auto& s : generated) training.push_back(&s);

@@ -22,9 +22,10 @@ namespace sagrid {
 struct ScorerUpdateRequest {
   std::filesystem::path models;     // networks that make the candidates; its scorer is the current one
   std::filesystem::path curated;    // the curated training objects (a dataset)
-  // Generated objects (a dataset; its val/ split when it has one). Empty: the bench
-  // (defaultBenchDir(), its val split: objects the networks were not trained on), generated once
-  // when missing.
+  // Generated objects (a dataset; its val/ split when it has one). Empty: those the shipped
+  // decision learned from, none of which the networks were trained on: the bench's val split and
+  // its decision split (defaultBenchDir(), gen::decisionPreset()), each generated once when
+  // missing.
   std::filesystem::path generated;
   // Curated objects of other sources: the guard's; empty: the curated objects judge, each source
   // left out in turn (guardPointScorerBySource), unguarded when they are of one source.

@@ -215,6 +215,14 @@ const std::vector<BenchSplit>& glassHobPreset() {
   return preset;
 }
 
+const std::vector<BenchSplit>& decisionPreset() {
+  static const std::vector<BenchSplit> preset = {
+      {"decision",
+       {{"stove", 40, 8101}, {"sink", 40, 8102}, {"stove", 40, 8110, GeneratorOptions{0.0, 0.5}}}},
+  };
+  return preset;
+}
+
 void generatePreset(const std::vector<BenchSplit>& preset, const fs::path& outDir,
                     const ProgressCallback& progress) {
   int total = 0;

@@ -103,6 +103,11 @@ const std::vector<BenchSplit>& wallFixturePreset();
 // on them (training on them did not teach the network to read the print; README, the texture
 // pass).
 const std::vector<BenchSplit>& glassHobPreset();
+// Generated objects the point decision learns from beside the bench's val split, none of which a
+// shipped network trains on: outDir/decision (40 stoves, seed 8101; 40 sinks, seed 8102; 40 stoves
+// of which half are glass hobs, seed 8110), mixed OBJ/GLB. Leave one source out over 20 paired
+// repeats they took the curator's edits down (resources/models/README.md, session 68).
+const std::vector<BenchSplit>& decisionPreset();
 // Writes every split of a preset into outDir/<split name>.
 void generatePreset(const std::vector<BenchSplit>& preset, const std::filesystem::path& outDir,
                     const ProgressCallback& progress = {});

@@ -249,7 +249,8 @@ void TrainingWorker::runPointScorer(const TrainingRequest& request) {
     checkGuardedUpdate({from, {}, {}, request.heldOut, {}, {}, {}}, {request.dataset});
   }
   // Beside the curated objects, generated ones the networks were not trained on (request.generated;
-  // empty: the bench's val split, generated once when missing), as the shipped decision was trained.
+  // empty: the bench's val and decision splits, generated once when missing), as the shipped
+  // decision was trained.
   ScorerUpdateRequest scorerRequest{from,  request.dataset, request.generated, request.heldOut,
                                     {},    {},              &m_cancel};
   const std::map<std::string, std::pair<float, float>> span = {{"bench", {0.0f, 0.0f}},

@@ -46,7 +46,8 @@ struct TrainingRequest {
   // source of the training set out (guardPointScorerBySource; unguarded with one source), and the
   // whole new scorer goes to outDir/refused/ where any model's new decision was not taken.
   bool pointScorer = false;
-  std::filesystem::path generated;  // empty: the bench's val split (generated when missing)
+  std::filesystem::path
+      generated;  // empty: the bench's val and decision splits (generated when missing)
   // Instead of point models: grow the units memory of initDir (else outDir; none there: a new one)
   // with the training set's objects and their curated units (core/eval/size_memory_update.h),
   // guarded leaving each source out against the named units; written to outDir when adopted,

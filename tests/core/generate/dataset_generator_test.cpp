@@ -1,22 +1,21 @@
-#include "core/generate/dataset_generator.h"
+#include <gtest/gtest.h>
 
 #include <fstream>
-#include <sstream>
-
 #include <limits>
-
-#include <gtest/gtest.h>
+#include <set>
+#include <sstream>
 
 #include "core/common/atomic_file.h"
 #include "core/common/error.h"
 #include "core/common/sha256.h"
 #include "core/dataset/dataset.h"
+#include "core/generate/dataset_generator.h"
 #include "core/generate/dataset_stats.h"
 #include "core/geometry/closest_point_on_triangle.h"
 #include "core/labels/labels.h"
 #include "core/mesh/mesh_import.h"
-#include "support/test_paths.h"
 #include "support/analytic_meshes.h"
+#include "support/test_paths.h"
 
 namespace sagrid::gen {
 namespace {
@@ -103,6 +102,26 @@ TEST(DatasetGenerator, BenchPresetHasFixedCounts) {
   }
   EXPECT_EQ(train, 400);
   EXPECT_EQ(val, 100);
+}
+
+// The point decision learns from generated objects whose fields read as on objects nobody trained
+// on: no request of the decision preset draws the objects of a split a network trains on or is
+// judged on (the same category and seed), and it has stoves, sinks and glass hobs.
+TEST(DatasetGenerator, DecisionPresetDrawsObjectsNoOtherPresetHas) {
+  std::set<std::pair<std::string, std::uint64_t>> others;
+  for (const auto* preset : {&benchPreset(), &wallFixturePreset(), &glassHobPreset()})
+    for (const auto& split : *preset)
+      for (const auto& r : split.requests) others.insert({r.category, r.seed});
+  int stoves = 0, sinks = 0, glassHobs = 0;
+  for (const auto& split : decisionPreset())
+    for (const auto& r : split.requests) {
+      EXPECT_EQ(others.count({r.category, r.seed}), 0u) << r.category << " seed " << r.seed;
+      (r.category == "sink" ? sinks : stoves) += r.count;
+      if (r.options.glassSlabHobs > 0) glassHobs += r.count;
+    }
+  EXPECT_EQ(stoves, 80);
+  EXPECT_EQ(sinks, 40);
+  EXPECT_EQ(glassHobs, 40);
 }
 
 }  // namespace
