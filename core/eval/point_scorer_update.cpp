@@ -133,25 +133,30 @@ ScorerUpdate judgeScorerUpdate(PointScorer fresh, const std::optional<PointScore
   return update;
 }
 
+std::vector<fs::path> decisionGeneratedDirs(const fs::path& benchDir,
+                                            const std::function<void(int, int)>& progress) {
+  const auto generatedOnce = [&](const std::vector<gen::BenchSplit>& preset,
+                                 const std::string& split) {
+    if (!fs::exists(benchDir / split / "manifest.jsonl"))
+      gen::generatePreset(preset, benchDir, progress);
+    return benchDir / split;
+  };
+  return {generatedOnce(gen::benchPreset(), "val"),
+          generatedOnce(gen::decisionPreset(), gen::decisionPreset().front().name)};
+}
+
 ScorerUpdate updatePointScorer(const ScorerUpdateRequest& request) {
   // Every folder before any candidate is made (minutes of work).
   for (const fs::path& dir : {request.curated, request.generated, request.heldOut})
     if (!dir.empty() && !fs::is_directory(dir)) throw FileError(dir, "dataset folder not found");
-  std::vector<fs::path> generatedDirs = {request.generated};
-  if (request.generated.empty()) {
-    const fs::path bench = defaultBenchDir();
-    const auto generateMissing = [&](const std::vector<gen::BenchSplit>& preset,
-                                     const fs::path& split) {
-      if (!fs::exists(split / "manifest.jsonl"))
-        gen::generatePreset(preset, bench, [&](int done, int total) {
-          if (request.onProgress) request.onProgress("bench", done, total, "");
-        });
-      return split;
-    };
-    generatedDirs = {
-        generateMissing(gen::benchPreset(), bench / "val"),
-        generateMissing(gen::decisionPreset(), bench / gen::decisionPreset().front().name)};
-  }
+  const std::vector<fs::path> generatedDirs =
+      request.generated.empty()
+          ? decisionGeneratedDirs(defaultBenchDir(),
+                                  [&](int done, int total) {
+                                    if (request.onProgress)
+                                      request.onProgress("bench", done, total, "");
+                                  })
+          : std::vector<fs::path>{request.generated};
   const ModelSet models = ModelSet::load(request.models);
   const auto curated = candidatesOf(models, request.curated, "curated", request);
   if (withTruth(curated) == 0)

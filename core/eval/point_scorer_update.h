@@ -14,6 +14,7 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "core/eval/point_scorer_training.h"
 
@@ -36,6 +37,12 @@ struct ScorerUpdateRequest {
   std::function<void(const std::string&, std::size_t, std::size_t, const std::string&)> onProgress;
   const std::atomic<bool>* cancel = nullptr;  // set: Cancelled is thrown between objects
 };
+
+// The generated objects the shipped decision learned from, under `benchDir`: its val split and
+// its decision split (gen::decisionPreset()), each generated first where its manifest is missing
+// (`progress` per object generated).
+std::vector<std::filesystem::path> decisionGeneratedDirs(
+    const std::filesystem::path& benchDir, const std::function<void(int, int)>& progress = {});
 
 struct ScorerUpdate {
   PointScorer scorer;                // the freshly fitted one, adopted or not

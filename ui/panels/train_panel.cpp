@@ -91,12 +91,13 @@ void drawTrainPanel(Session& session, TrainingWorker& worker,
                   "of the training set, each "
                   "source left out of training in turn");
     // The points the curator accepted, moved, added or deleted teach the point decision too.
-    retrainButton("Retrain point decision", &TrainingRequest::pointScorer,
-                  "Which of the fields' minima and the mesh's small parts are points, learned "
-                  "again from the training set's curated points and generated objects (the "
-                  "bench's val split, made once); each category's kept only where it needs "
-                  "fewer edits, beyond the noise of the objects, on its held-out objects, else "
-                  "on the training set, each source left out of the fitting in turn");
+    retrainButton(
+        "Retrain point decision", &TrainingRequest::pointScorer,
+        "Which of the fields' minima and the mesh's small parts are points, learned "
+        "again from the training set's curated points and generated objects (the "
+        "bench's val and decision splits, made once); each category's kept only where it needs "
+        "fewer edits, beyond the noise of the objects, on its held-out objects, else "
+        "on the training set, each source left out of the fitting in turn");
     // The units the curator set or confirmed teach the units guess's memory of real sizes.
     retrainButton("Grow units memory", &TrainingRequest::unitsMemory,
                   "The real sizes of the training set's objects (their curated units) join the "
