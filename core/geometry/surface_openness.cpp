@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 #include "core/geometry/surface_scene.h"
@@ -38,8 +39,8 @@ float freeDistance(const SurfaceScene& scene, const Eigen::Vector3f& origin,
 
 SurfaceOpenness surfaceOpenness(const SurfaceScene& scene, const ClosestPoint& at, float offset) {
   SurfaceOpenness open;
-  open.openness = -1;
   Eigen::Vector3f outside = at.position;
+  float mostOpen = -1;
   for (const float side : {1.0f, -1.0f}) {
     const Eigen::Vector3f normal = side * at.normal;
     const Eigen::Vector3f origin = at.position + offset * normal;
@@ -50,10 +51,11 @@ SurfaceOpenness surfaceOpenness(const SurfaceScene& scene, const ClosestPoint& a
       leaving += !scene.occluded(origin, d, 0.0f, std::numeric_limits<float>::infinity());
     }
     const float openness = facing ? static_cast<float>(leaving) / facing : 0.0f;
-    if (openness <= open.openness) continue;  // a tie: the side the triangle faces, tried first
-    open.openness = openness;
+    if (openness <= mostOpen) continue;  // a tie: the side the triangle faces, tried first
+    mostOpen = openness;
     outside = origin;
   }
+  open.openness = mostOpen;
   open.below = freeDistance(scene, outside, -Eigen::Vector3f::UnitZ());
   open.above = freeDistance(scene, outside, Eigen::Vector3f::UnitZ());
   return open;
